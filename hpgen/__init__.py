@@ -1,0 +1,24 @@
+"""hpgen: a compiler for Hamilton-Pontryagin integrators on Lie groups.
+
+Importing hpgen is cheap and has no side effects: the compile-time stack (sympy, casadi,
+jinja2) is imported only when ``hpgen.compile`` runs; ``hpgen.runtime`` needs numpy only.
+"""
+from __future__ import annotations
+
+from .errors import BuildError, ConvergenceError, DomainError, HpgenError, ModelError
+
+__version__ = "0.1.0"
+__all__ = ["compile", "load", "HpgenError", "ModelError", "BuildError", "ConvergenceError",
+           "DomainError", "__version__"]
+
+
+def compile(model, **options):
+    """Compile a model file (path) into an integrator; see :func:`hpgen.api.compile`."""
+    from .api import compile as _compile
+    return _compile(model, **options)
+
+
+def load(path, backend=None):
+    """Load a generated module directory; see :func:`hpgen.runtime.load`."""
+    from .runtime import load as _load
+    return _load(path, backend=backend)

@@ -1,0 +1,120 @@
+"""Command line: ``hpgen compile``, ``hpgen run``, ``hpgen list``.
+
+Exit status: 0 success, 2 bad input (ModelError; usage errors), 1 any other hpgen failure
+(BuildError, ConvergenceError). Errors are one line on stderr, never a traceback.
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+from . import __version__
+from .errors import HpgenError, ModelError
+
+
+def _add_options(p):
+    p.add_argument("model", help="model file (YAML, schema version 1)")
+    p.add_argument("--tableau", help="catalog name (see `hpgen list`); default: the model's")
+    p.add_argument("--tau", choices=("exp", "cay", "skew"), help="chart map; default: the model's")
+    p.add_argument("--rkmk", choices=("exact", "truncated"),
+                   help="RKMK constraint: exact (keeps the tableau's order) or truncated (q = 0)")
+    p.add_argument("--backend", choices=("c", "python"), default="c")
+    p.add_argument("--cache-dir", help="build cache directory (default ~/.cache/hpgen)")
+
+
+def _parser():
+    ap = argparse.ArgumentParser(prog="hpgen", description=__doc__.splitlines()[0])
+    ap.add_argument("--version", action="version", version=f"hpgen {__version__}")
+    sub = ap.add_subparsers(dest="command", required=True)
+    c = sub.add_parser("compile", help="generate (and build) the integrator module of a model")
+    _add_options(c)
+    c.add_argument("-o", "--out", default="generated", help="output directory (default generated/)")
+    r = sub.add_parser("run", help="simulate the model's scene and save the recorded samples")
+    _add_options(r)
+    r.add_argument("--out", help="output .npz file (default <model name>.npz)")
+    r.add_argument("--h", type=float, help="override scene.h")
+    r.add_argument("--steps", type=int, help="override scene.steps")
+    sub.add_parser("list", help="groups, tableaus and chart maps")
+    return ap
+
+
+def _options(args, out=None):
+    from .api import CompileOptions
+    return CompileOptions(tableau=args.tableau, tau=args.tau, rkmk=args.rkmk,
+                          backend=args.backend, out=out, cache_dir=args.cache_dir)
+
+
+def cmd_compile(args) -> int:
+    from .api import build_module
+    t0 = time.perf_counter()
+    path = build_module(args.model, _options(args, out=args.out))
+    print(f"{path} ({args.backend} backend, {time.perf_counter() - t0:.2f} s)")
+    return 0
+
+
+def cmd_run(args) -> int:
+    from .api import build_module
+    from .runtime import load
+    from .runtime.record import record_arrays
+    from .model import load_model_text
+    from .api import read_model_text
+
+    text = read_model_text(args.model)
+    model = load_model_text(text, filename=args.model)
+    if model.scene is None:
+        raise ModelError("the model has no scene section to run", file=args.model, field="scene")
+    sc = model.scene
+    h = sc.h if args.h is None else args.h
+    steps = sc.steps if args.steps is None else args.steps
+    integ = load(build_module(args.model, _options(args)), backend=args.backend)
+    t0 = time.perf_counter()
+    traj = integ.simulate(g0=sc.g0, h=h, steps=steps, xi0=sc.xi0, mu0=sc.mu0, every=sc.every)
+    wall = time.perf_counter() - t0
+    out = Path(args.out or f"{model.name}.npz")
+    arrays = record_arrays(traj, sc.record)
+    traj.save(out, arrays=arrays)
+    print(f"{model.name}: {steps} steps of h = {h:g} in {wall:.3f} s "
+          f"({wall / max(steps, 1) * 1e6:.2f} us/step, {args.backend}); "
+          f"{len(traj.t)} samples -> {out}")
+    if "energy" in arrays:
+        e = arrays["energy"]
+        print(f"  energy error max |E - E0| = {abs(e - e[0]).max():.3e}")
+    if "momentum" in arrays:
+        m = arrays["momentum"]
+        print(f"  spatial momentum max |m - m0| = {abs(m - m[0]).max():.3e}")
+    return 0
+
+
+def cmd_list(args) -> int:
+    from .groups import GROUP_NAMES
+    from .tableaus import TABLEAU_NAMES, get_tableau
+    print("groups: " + ", ".join(GROUP_NAMES) + " and lists of them (direct products)")
+    print("maps (tau): exp (all groups), cay (all groups), skew (SO2, SO3)")
+    print("rkmk: exact (keeps the tableau's order), truncated (the paper's q = 0, order <= 2)")
+    print("tableaus:")
+    for name in TABLEAU_NAMES:
+        t = get_tableau(name)
+        print(f"  {name:15s} stages {t.stages}  order {t.order}"
+              f"  {'symplectic RK' if t.is_symplectic else ''}")
+    return 0
+
+
+def main(argv=None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        return {"compile": cmd_compile, "run": cmd_run, "list": cmd_list}[args.command](args)
+    except ModelError as e:
+        print(f"hpgen: error: {e}", file=sys.stderr)
+        return 2
+    except HpgenError as e:
+        print(f"hpgen: error: {e}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("hpgen: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

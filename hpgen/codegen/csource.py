@@ -1,0 +1,66 @@
+"""The C backend's inputs: CasADi's own C code for every kernel, and the per-kernel facts the
+``kernels.c.j2`` template needs (work sizes, sparse gather/scatter positions).
+
+CasADi-generated functions read/write only the structural nonzeros of each argument; the
+hpgen wrappers present dense column-major arrays (gathering/scattering when an argument is
+not dense) so that every exported ``hpgen_kernel_<name>`` follows the DiscreteStep contract.
+"""
+from __future__ import annotations
+
+import casadi
+
+from .contract import CodegenError, dense_positions
+
+#: CasADi CodeGenerator options. with_mem False: no memory objects, no static mutable state.
+CG_OPTIONS = {"casadi_real": "double", "casadi_int": "long long int", "with_mem": False,
+              "verbose": False, "cpp": False, "with_header": False, "main": False,
+              "mex": False}
+
+#: op codes whose CasADi C output does not compile as C99 (no erfinv in <math.h>)
+_C_UNSUPPORTED = {casadi.OP_ERFINV: "erfinv"}
+
+
+def casadi_c_code(step, module: str) -> str:
+    """CasADi's C for all kernels of ``step`` in one translation unit (a string).
+
+    Internal CasADi symbols get the prefix ``hpgen_<module>_``; the kernels.c template hides
+    all of CasADi's symbols (GCC visibility) and exports only ``hpgen_*``.
+    """
+    for k in step.kernels:
+        f = k.function
+        for i in range(f.n_instructions()):
+            op = f.instruction_id(i)
+            if op in _C_UNSUPPORTED:
+                raise CodegenError(f"kernel {k.name}: {_C_UNSUPPORTED[op]} is not supported "
+                                   "by hpgen's code generators")
+    opts = dict(CG_OPTIONS, prefix=f"hpgen_{module}_")
+    cg = casadi.CodeGenerator(f"{module}_kernels", opts)
+    for k in step.kernels:
+        cg.add(k.function)
+    code = cg.dump()
+    if not code.endswith("\n"):
+        code += "\n"
+    return code
+
+
+def _arg(f, i: int, out: bool, name: str) -> dict:
+    sp = f.sparsity_out(i) if out else f.sparsity_in(i)
+    numel = sp.numel()
+    dense = sp.is_dense()
+    return {"name": name, "numel": numel, "nnz": sp.nnz(), "dense": dense,
+            "positions": [] if dense else dense_positions(sp)}
+
+
+def work_sizes(f) -> dict[str, int]:
+    """CasADi's work vector sizes (elements) of one function, known at codegen time."""
+    return {"sz_arg": int(f.sz_arg()), "sz_res": int(f.sz_res()), "sz_iw": int(f.sz_iw()),
+            "sz_w": int(f.sz_w())}
+
+
+def c_kernel_context(kernel) -> dict:
+    """What kernels.c.j2 needs to wrap one kernel: symbol, args and work sizes."""
+    f = kernel.function
+    return {"name": kernel.name, "symbol": f.name(),
+            "inputs": [_arg(f, i, False, kernel.inputs[i]) for i in range(f.n_in())],
+            "outputs": [_arg(f, i, True, kernel.outputs[i]) for i in range(f.n_out())],
+            "work": work_sizes(f)}

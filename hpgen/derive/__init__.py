@@ -1,0 +1,76 @@
+"""Stage 3: from a validated Model and integrator options to a DiscreteStep of CasADi kernels.
+
+    derive(model, tableau, tau, rkmk) -> DiscreteStep
+
+tableau: a hpgen.tableaus.ButcherTableau; tau: 'exp' | 'cay' | 'skew';
+rkmk: 'exact' | 'truncated'. A left-invariant Lagrangian (no g in l) gives the reduced
+Euler-Poincare step, whose unknowns live in the algebra only.
+"""
+from __future__ import annotations
+
+import casadi as ca
+
+from ..errors import ModelError
+from .action import step_equations
+from .lagrangian import lagrangian_function
+from .step import KERNEL_NAMES, DiscreteStep, Kernel
+
+__all__ = ["derive", "DiscreteStep", "Kernel", "KERNEL_NAMES"]
+
+
+def _flat(M):
+    """Column-major flattening of an SX matrix into a dense column."""
+    return ca.densify(ca.reshape(M, M.numel(), 1))
+
+
+def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
+    group = model.group
+    if not group.supports(tau):
+        raise ModelError(f"tau = {tau} is not available on {group.name}; use one of "
+                         f"{', '.join(group.tau_kinds)}", field="integrator.tau")
+    if rkmk not in ("exact", "truncated"):
+        raise ModelError(f"expected 'exact' or 'truncated', got {rkmk!r}", field="integrator.rkmk")
+    n, d = group.n, group.d
+    lag = lagrangian_function(model)
+    reduced = model.left_invariant
+    g = ca.SX.sym("g", n, n)
+    p = ca.SX.sym("p", d)
+    h = ca.SX.sym("h", 1)
+    eqs = step_equations(group, lag, tableau, tau, rkmk, reduced, g, p, h)
+    z = eqs.z
+    nz = z.numel()
+    gf = _flat(g)
+    gvec = ca.SX.sym("g", n * n)
+    to_mat = lambda e: ca.substitute(e, gf, gvec)  # noqa: E731  (kernels take g flattened)
+
+    xi = ca.SX.sym("xi", d)
+    lval = lag(g, xi)
+    mu = ca.gradient(lval, xi)
+    hess = ca.jacobian(mu, xi)
+
+    def kernel(name, inputs, outputs):
+        names_in = tuple(nm for nm, _ in inputs)
+        names_out = tuple(nm for nm, _ in outputs)
+        outs = ca.cse([ca.densify(to_mat(e)) for _, e in outputs])  # merge repeated subtrees
+        f = ca.Function(name, [v for _, v in inputs], outs, list(names_in), list(names_out))
+        return Kernel(name, f, names_in, names_out)
+
+    J = ca.jacobian(eqs.residual, z)
+    kernels = (
+        kernel("residual", [("z", z), ("g", gvec), ("p", p), ("h", h)], [("F", eqs.residual)]),
+        kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", h)], [("J", _flat(J))]),
+        kernel("update", [("z", z), ("g", gvec), ("p", p), ("h", h)],
+               [("g1", _flat(eqs.g1)), ("p1", eqs.p1)]),
+        kernel("guess", [("xi", eqs.xi_hat), ("g", gvec), ("p", p), ("h", h)], [("z0", eqs.guess)]),
+        kernel("legendre", [("g", gvec), ("xi", xi)], [("mu", mu)]),
+        kernel("hessian", [("g", gvec), ("xi", xi)], [("H", _flat(hess))]),
+        kernel("energy", [("g", gvec), ("xi", xi)], [("E", ca.dot(mu, xi) - lval)]),
+        kernel("momentum", [("g", gvec), ("p", p)], [("m", group.momentum_map(g, p))]),
+        kernel("defect", [("g", gvec)], [("e", group.group_defect(g))]),
+        kernel("margin", [("z", z), ("h", h)], [("m", eqs.margin)]),
+    )
+    assert tuple(k.name for k in kernels) == KERNEL_NAMES
+    return DiscreteStep(
+        model_name=model.name, group_name=group.name, n=n, d=d, nz=nz,
+        tableau_name=tableau.name, tableau_order=tableau.order, tau=tau, rkmk=rkmk,
+        reduced=reduced, unknowns=eqs.blocks, kernels=kernels)

@@ -1,0 +1,148 @@
+"""Step k of the discrete Hamilton-Pontryagin action sum (eq. hpsumfuture) and its
+stationarity conditions, derived by CasADi's automatic differentiation.
+
+Conventions (../shared/notes/math.md, sections 1, 2, 4, 7):
+- Group variables are parametrized in the chart at g_k: G^i = g_k tau(h Theta^i),
+  g_{k+1} = g_k tau(h xi_{k+1}). Their variations are right-multiplied algebra elements
+  g_k (I + eta_0^), G^i (I + eps_i^), g_{k+1} (I + eta_1^); only first derivatives at 0 are
+  needed, and there  tau^{-1}((I - eta^) tau(a) (I + eps^)) = a + dtau^{-1}_a(-eta)
+  + dtau^{-1}_{-a}(eps), so no matrix logarithm is ever formed.
+- RKMK constraint: R^j = Xi^j ("truncated", the paper's q = 0, order <= 2) or
+  R^j = dtau^{-1}_{-h Theta^j} Xi^j ("exact", keeps the tableau's order). Theta and xi_{k+1}
+  are independent symbols while differentiating; for "truncated" they are replaced by
+  A Xi and b Xi only afterwards (substituting first would kill the constraint's variations).
+- Stage multipliers are scaled, mu^i = h N^i, so that every unknown and equation is O(1).
+- The state is (g_k, p_k) with p_k the node momentum (the discrete Legendre transform at
+  t_k): p_k + ds_k/deta_0 = 0 and p_{k+1} = ds_k/deta_1.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import casadi as ca
+
+
+@dataclass(frozen=True)
+class StepEquations:
+    """Residual, unknowns and explicit outputs of one step, as SX expressions."""
+    z: object            # SX column of unknowns
+    blocks: tuple        # ((label, start, stop), ...)
+    residual: object     # SX column, same length as z
+    g1: object           # SX n x n
+    p1: object           # SX d
+    guess: object        # SX column: z as a function of the velocity estimate xi_hat
+    xi_hat: object       # SX d (input of guess)
+    margin: object       # SX scalar: min over the step's tau arguments of the domain margin
+
+
+def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
+                   g, p, h) -> StepEquations:
+    """Stationarity conditions of s_k for one step.
+
+    group: hpgen.groups.LieGroup; lag: casadi.Function l(g, xi); g (n x n), p (d), h (1):
+    SX symbols of the known state. reduced: l does not depend on g (Euler-Poincare step).
+    """
+    s, d = tableau.stages, group.d
+    A, b, c = tableau.A, tableau.b, tableau.c
+    exact = rkmk == "exact"
+    sym = ca.SX.sym
+    Xi = [sym(f"Xi{i + 1}", d) for i in range(s)]
+    N = [sym(f"N{i + 1}", d) for i in range(s)]
+    mu1 = sym("mu1", d)
+    Th = [sym(f"Theta{i + 1}", d) for i in range(s)]
+    xi1 = sym("xi1", d)
+    eta0, eta1 = sym("eta0", d), sym("eta1", d)
+    eps = [sym(f"eps{i + 1}", d) for i in range(s)]
+    I_n = ca.SX.eye(group.n)
+
+    def dti(x):
+        return group.dtau_inv(tau, x)
+
+    # chart[i] = tau^{-1}(g_k^{-1} G^i) to first order in the variations (= h Theta^i at 0)
+    chart = [h * Th[i] + ca.mtimes(dti(h * Th[i]), -eta0) + ca.mtimes(dti(-h * Th[i]), eps[i])
+             for i in range(s)]
+    # the exact constraint depends on G^j through Theta^j, so it is built on the varied chart
+    R = [ca.mtimes(dti(-chart[j]), Xi[j]) if exact else Xi[j] for j in range(s)]
+    # s_k, eq. hpsumfuture, with the multipliers' constraint terms multiplied through by h
+    action = ca.SX(0)
+    for i in range(s):
+        Gi = ca.mtimes([g, group.tau(tau, h * Th[i]), I_n + group.hat(eps[i])])
+        action += h * b[i] * lag(Gi, Xi[i])
+        action += ca.dot(h * N[i], chart[i] - h * sum((A[i][j] * R[j] for j in range(s)), ca.SX.zeros(d)))
+    chart1 = h * xi1 + ca.mtimes(dti(h * xi1), -eta0) + ca.mtimes(dti(-h * xi1), eta1)
+    action += ca.dot(mu1, chart1 - h * sum((b[j] * R[j] for j in range(s)), ca.SX.zeros(d)))
+
+    zero = [eta0, eta1] + eps
+    at0 = lambda e: ca.substitute(e, ca.vertcat(*zero), ca.SX.zeros(d * (2 + s)))  # noqa: E731
+    grad = lambda v: at0(ca.gradient(action, v))  # noqa: E731
+
+    eq_eps = [grad(eps[i]) / h for i in range(s)]                     # O(1): b_i f_i + ...
+    eq_xi = [grad(Xi[i]) / (h * b[i]) for i in range(s)]              # Legendre conditions
+    R0 = [at0(r) for r in R]
+    eq_th = [Th[i] - sum((A[i][j] * R0[j] for j in range(s)), ca.SX.zeros(d)) for i in range(s)]
+    eq_xi1 = xi1 - sum((b[j] * R0[j] for j in range(s)), ca.SX.zeros(d))
+    eq_g0 = p + grad(eta0)                                            # p_k + ds_k/deta_0 = 0
+    p1 = grad(eta1)                                                   # p_{k+1} = ds_k/deta_1
+    g1 = ca.mtimes(g, group.tau(tau, h * xi1))
+
+    xi_hat = sym("xi_hat", d)
+    if reduced and not exact:
+        # Euler-Poincare, q = 0: N^i = 0, all Xi^i equal (Legendre injective), mu_{k+1} =
+        # dl/dxi(Xi): one unknown Xi in the algebra, equation eq. dlp.
+        Xc = sym("Xi", d)
+        mu_of = ca.gradient(lag(g, Xc), Xc)
+        subs_from = ca.vertcat(*Xi, *N, mu1, *Th, xi1)
+        subs_to = ca.vertcat(*[Xc] * s, ca.SX.zeros(d * s), mu_of,
+                             *[c[i] * Xc for i in range(s)], Xc)
+        sub = lambda e: ca.substitute(e, subs_from, subs_to)  # noqa: E731
+        z, blocks = Xc, (("Xi", 0, d),)
+        residual, g1, p1 = sub(eq_g0), sub(g1), sub(p1)
+        taus = [sub(h * Th[i]) for i in range(s)] + [sub(h * xi1)]
+        guess = xi_hat
+        return _finish(group, tau, z, blocks, residual, g1, p1, guess, xi_hat, taus, h)
+
+    # The stage multipliers stay unknowns here even for a left-invariant l: with the exact
+    # constraint R^j depends on G^j, so the eps_j equations do not force N^j = 0.
+    unknown_blocks = [(f"Xi{i + 1}", Xi[i]) for i in range(s)]
+    unknown_blocks += [(f"N{i + 1}", N[i]) for i in range(s)]
+    equations = list(eq_xi) + eq_eps
+    unknown_blocks.append(("mu1", mu1))
+    equations.append(eq_g0)
+    if exact:
+        unknown_blocks += [(f"Theta{i + 1}", Th[i]) for i in range(s)] + [("xi1", xi1)]
+        equations += eq_th + [eq_xi1]
+    residual = ca.vertcat(*equations)
+    z = ca.vertcat(*[v for _, v in unknown_blocks])
+    blocks, off = [], 0
+    for label, v in unknown_blocks:
+        blocks.append((label, off, off + v.numel()))
+        off += v.numel()
+
+    # what is not an unknown is zero (N in the reduced step) or explicit (Theta, xi1 when q = 0)
+    subs_from, subs_to = [], []
+    if not exact:
+        subs_from += Th + [xi1]
+        subs_to += [sum((A[i][j] * Xi[j] for j in range(s)), ca.SX.zeros(d)) for i in range(s)]
+        subs_to += [sum((b[j] * Xi[j] for j in range(s)), ca.SX.zeros(d))]
+    if subs_from:
+        fr, to = ca.vertcat(*subs_from), ca.vertcat(*subs_to)
+        sub = lambda e: ca.substitute(e, fr, to)  # noqa: E731
+    else:
+        sub = lambda e: e  # noqa: E731
+    residual, g1, p1 = sub(residual), sub(g1), sub(p1)
+    taus = [sub(h * Th[i]) for i in range(s)] + [sub(h * xi1)]
+
+    guess_of = {f"Xi{i + 1}": xi_hat for i in range(s)}
+    guess_of.update({f"N{i + 1}": ca.SX.zeros(d) for i in range(s)})
+    guess_of.update({f"Theta{i + 1}": c[i] * xi_hat for i in range(s)})
+    guess_of.update({"mu1": p, "xi1": xi_hat})
+    guess = ca.vertcat(*[guess_of[label] for label, _ in unknown_blocks])
+    return _finish(group, tau, z, tuple(blocks), residual, g1, p1, guess, xi_hat, taus, h)
+
+
+def _finish(group, tau, z, blocks, residual, g1, p1, guess, xi_hat, taus, h):
+    margin = ca.SX(1.0)
+    for x in taus:
+        margin = ca.fmin(margin, group.tau_margin(tau, x))
+        margin = ca.fmin(margin, group.tau_margin(tau, -x))
+    return StepEquations(z, blocks, residual, g1, p1, guess, xi_hat, margin)

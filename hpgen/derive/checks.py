@@ -1,0 +1,28 @@
+"""Compile-time checks on a derived step."""
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import ModelError
+
+#: a Legendre transform whose Hessian is worse conditioned than this is called singular
+MAX_HESSIAN_CONDITION = 1e12
+
+
+def check_legendre(step, model) -> None:
+    """d^2 l / d xi^2 must be nonsingular at the initial state (the scene's, else g = identity,
+    xi = 0), or the discrete Legendre transform, and with it the step, is not defined."""
+    n, d = step.n, step.d
+    if model.scene is not None:
+        g0 = np.array(model.scene.g0, dtype=float)
+        xi0 = np.array(model.scene.xi0 if model.scene.xi0 is not None else np.zeros(d), float)
+        where = "at the scene's initial state"
+    else:
+        g0, xi0, where = np.eye(n), np.zeros(d), "at g = identity, xi = 0"
+    H = np.array(step.kernel("hessian").function(g0.ravel(order="F"), xi0)).reshape(d, d, order="F")
+    cond = np.linalg.cond(H) if np.all(np.isfinite(H)) else np.inf
+    if not cond < MAX_HESSIAN_CONDITION:
+        raise ModelError(f"the Legendre transform is singular {where}: d2l/dxi2 has condition "
+                         f"number {cond:.3g} (limit {MAX_HESSIAN_CONDITION:.0e}); the Lagrangian "
+                         "must be nondegenerate in xi (e.g. a positive definite kinetic energy)",
+                         file=model.path, field="lagrangian")

@@ -1,0 +1,60 @@
+"""The IR produced by the derive stage: one step of the discrete HP action sum, as CasADi
+functions with a fixed calling convention, ready for code generation.
+
+Calling convention of every kernel: inputs and outputs are dense column vectors of doubles;
+matrices are flattened column-major (g.ravel(order="F")); h is a 1-vector.
+
+    residual(z[nz], g[n*n], p[d], h[1])  -> F[nz]          stationarity conditions of s_k
+    jacobian(z, g, p, h)                 -> J[nz*nz]       dF/dz, dense, column-major
+    update(z, g, p, h)                   -> g1[n*n], p1[d] (g_{k+1}, p_{k+1}), explicit
+    guess(xi[d], g, p, h)                -> z0[nz]         Newton start from a velocity estimate
+    legendre(g, xi)                      -> mu[d]          dl/dxi (Legendre transform)
+    hessian(g, xi)                       -> H[d*d]         d^2 l / dxi^2
+    energy(g, xi)                        -> E[1]           <dl/dxi, xi> - l
+    momentum(g, p)                       -> m[d]           Ad*_{g^{-1}} p (spatial momentum)
+    defect(g)                            -> e[1]           distance of g from the group
+    margin(z, h)                         -> m[1]           > 0 while every tau argument of
+                                                           the step is inside tau's domain
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+KERNEL_NAMES = ("residual", "jacobian", "update", "guess", "legendre", "hessian", "energy",
+                "momentum", "defect", "margin")
+
+
+@dataclass(frozen=True)
+class Kernel:
+    name: str                   # one of KERNEL_NAMES
+    function: Any               # casadi.Function over SX, dense inputs/outputs as above
+    inputs: tuple[str, ...]     # argument names, e.g. ("z", "g", "p", "h")
+    outputs: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class DiscreteStep:
+    """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) of a Lie group VPRK method.
+
+    unknowns: ((label, start, stop), ...) the blocks of z, e.g. ("Xi1", 0, 3).
+    reduced: True for the Euler-Poincare step of a left-invariant Lagrangian (no g in F).
+    """
+    model_name: str
+    group_name: str
+    n: int
+    d: int
+    nz: int
+    tableau_name: str
+    tableau_order: int
+    tau: str
+    rkmk: str
+    reduced: bool
+    unknowns: tuple
+    kernels: tuple               # tuple[Kernel, ...], in KERNEL_NAMES order
+
+    def kernel(self, name: str) -> Kernel:
+        for k in self.kernels:
+            if k.name == name:
+                return k
+        raise KeyError(name)

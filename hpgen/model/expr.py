@@ -1,0 +1,342 @@
+"""The Lagrangian expression: a whitelist parser from text to a sympy expression.
+
+Security: the text goes through ``ast.parse(..., mode="eval")`` only; the tree is checked against
+a whitelist and evaluated by the walker below into sympy objects. Nothing here evaluates strings.
+
+Allowed: int/float literals; names; ``+ - * / **``; unary ``- +``; indexing with non-negative
+integer literals ``v[i]`` / ``M[i, j]``; calls ``sin cos tan exp log sqrt`` (one argument,
+elementwise) and ``dot(u, v)`` (numpy dot: vector.vector, matrix.vector, vector.matrix,
+matrix.matrix). Values are sympy scalars or numpy object arrays (1-D vectors, 2-D matrices) of
+sympy scalars; ``+ - * /`` are elementwise with scalar broadcasting, ``**`` needs a scalar
+exponent. Literal ints stay exact (``1/2`` is Rational(1, 2)); parameters are numbers
+(int -> Integer, float -> Float with the exact binary value), never symbols.
+
+Names: ``xi`` (length d, symbols xi_k), ``g`` (n x n, symbols g_i_j), ``pi``, the parameters, and
+for a single group ``R`` (rotation block: SO2, SO3, SE2, SE3) and ``x`` (translation: SE2, SE3,
+R<n>). For a product group (more than one factor): ``xi_k``, ``g_k`` and, where factor k has
+them, ``R_k``, ``x_k`` (0-based); ``xi``/``g`` are then the concatenated vector and the
+block-diagonal matrix, and plain ``R``/``x`` are undefined.
+
+Limits: text <= 200,000 characters, <= 50,000 syntax nodes, nesting depth <= 200 (left-nested
+chains of + - and of * / count as one level, so a sum of 10^4 terms is fine), <= 50,000
+elementwise operations, final expression tree <= 10^6 nodes. Every constant must be a finite
+real number within double range; the result must be a scalar that depends on xi.
+"""
+from __future__ import annotations
+
+import ast
+import math
+import re
+
+import numpy as np
+import sympy as sp
+
+from ..errors import ModelError
+from .syntax import MAX_DEPTH, fail, parse_checked
+
+MAX_WORK = 50_000
+MAX_TREE = 1_000_000
+MAX_EXACT_BITS = 4096
+
+FUNCTIONS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "exp": sp.exp, "log": sp.log,
+             "sqrt": sp.sqrt, "dot": None}
+_FACTOR_ALIAS = re.compile(r"(R|x)_([0-9]+)")
+_NONFINITE = (sp.S.NaN, sp.S.ComplexInfinity, sp.S.Infinity, sp.S.NegativeInfinity)
+
+
+def _shape(v):
+    return v.shape if isinstance(v, np.ndarray) else ()
+
+
+def _shape_text(shape) -> str:
+    return {0: "scalar", 1: "vector of length {}", 2: "{} x {} matrix"}[len(shape)].format(*shape)
+
+
+def _to_array(values: list, shape) -> np.ndarray:
+    out = np.empty(len(values), dtype=object)
+    out[:] = values
+    return out.reshape(shape)
+
+
+def _as_sympy(v):
+    """A parameter value (int, float, list, list of lists) as a sympy scalar / object array."""
+    if isinstance(v, list):
+        items = [_as_sympy(x) for x in v]
+        if items and isinstance(items[0], np.ndarray):
+            return _to_array([e for row in items for e in row], (len(items), len(items[0])))
+        return _to_array(items, (len(items),))
+    return sp.Integer(v) if type(v) is int else sp.Float(v)
+
+
+class _Evaluator:
+    def __init__(self, group, parameters: dict):
+        from ..groups import group_from_spec
+        n, d = group.n, group.d
+        self.xi = _to_array([sp.Symbol(f"xi_{k}", real=True) for k in range(d)], (d,))
+        self.g = _to_array([sp.Symbol(f"g_{i}_{j}", real=True) for i in range(n)
+                            for j in range(n)], (n, n))
+        self.params, self.cache, self.work = parameters, {}, 0
+        names = {"xi": self.xi, "g": self.g, "pi": sp.pi}
+        factors = self.layouts = group.factors
+        self.product = len(factors) > 1
+        for k, lay in enumerate(factors):
+            fg = group_from_spec(lay.name) if self.product else group
+            blk = self.g[lay.row:lay.row + lay.n, lay.row:lay.row + lay.n]
+            sfx = f"_{k}" if self.product else ""
+            if self.product:
+                names["xi" + sfx] = self.xi[lay.off:lay.off + lay.d]
+                names["g" + sfx] = blk
+            if fg.rotation_block:
+                a, b = fg.rotation_block
+                names["R" + sfx] = blk[a:b, a:b]
+            if fg.translation_block:
+                a, b = fg.translation_block
+                names["x" + sfx] = blk[a:b, lay.n - 1]
+        self.names = names
+
+    # ---- helpers ---------------------------------------------------------------------------
+    def charge(self, node, amount: int):
+        self.work += amount
+        if self.work > MAX_WORK:
+            raise fail(node, f"expression too large: more than {MAX_WORK} elementwise operations "
+                             f"(limit {MAX_WORK})")
+
+    def checked(self, node, v):
+        """Reject a constant scalar that is not a finite real number within double range."""
+        if isinstance(v, np.ndarray):
+            for e in v.flat:
+                self.checked(node, e)
+            return v
+        if v.is_Atom and v.is_number:
+            if v in _NONFINITE or v is sp.S.NaN:
+                raise fail(node, f"the value is not finite ({v}; a division by zero?)")
+            try:
+                f = float(v)
+            except (TypeError, ValueError):
+                raise fail(node, f"the constant {v} is not a real number") from None
+            except OverflowError:
+                f = math.inf
+            if not math.isfinite(f):
+                raise fail(node, "a constant is not finite or exceeds double precision range")
+            if v.is_Rational and max(int(v.p).bit_length(), int(v.q).bit_length()) > MAX_EXACT_BITS:
+                raise fail(node, f"exact number too large (limit {MAX_EXACT_BITS} bits)")
+        return v
+
+    def elementwise(self, node, fn, values, what):
+        shapes = {_shape(v) for v in values} - {()}
+        if not shapes:
+            self.charge(node, len(values))
+            return self.checked(node, fn(*values))
+        if len(shapes) > 1:
+            desc = " and ".join(_shape_text(s) for s in sorted(shapes, key=len))
+            raise fail(node, f"{what}: shapes do not match ({desc}); use dot(...) for products")
+        shape = shapes.pop()
+        size = int(np.prod(shape))
+        self.charge(node, size * len(values))
+        out = [fn(*[v.flat[i] if isinstance(v, np.ndarray) else v for v in values])
+               for i in range(size)]
+        return self.checked(node, _to_array(out, shape))
+
+    # ---- evaluation ------------------------------------------------------------------------
+    def walk(self, node):
+        try:
+            if isinstance(node, ast.BinOp):
+                return self.binop(node)
+            if isinstance(node, ast.UnaryOp):
+                v = self.walk(node.operand)
+                if isinstance(node.op, ast.UAdd):
+                    return v
+                return self.elementwise(node, lambda a: -a, [v], "unary -")
+            if isinstance(node, ast.Constant):
+                return self.constant(node)
+            if isinstance(node, ast.Name):
+                return self.name(node)
+            if isinstance(node, ast.Subscript):
+                return self.subscript(node)
+            if isinstance(node, ast.Call):
+                return self.call(node)
+        except (TypeError, ValueError, AttributeError, ZeroDivisionError) as e:
+            if isinstance(e, ModelError):
+                raise
+            raise fail(node, f"cannot evaluate this expression ({type(e).__name__}: "
+                             f"{str(e).splitlines()[0][:80] if str(e) else ''})") from None
+        raise fail(node, f"{type(node).__name__} is not allowed", allowed=True)
+
+    def binop(self, node):
+        op = type(node.op)
+        if op is ast.Pow:
+            base, expo = self.walk(node.left), self.walk(node.right)
+            if _shape(expo):
+                raise fail(node, f"the exponent of ** must be a scalar, got a "
+                                 f"{_shape_text(_shape(expo))}")
+            if expo.is_Rational and not expo.is_Integer:
+                big = abs(expo.p) // expo.q + 1
+            else:
+                big = abs(int(expo)) if expo.is_Integer else 0
+            for b in (base.flat if isinstance(base, np.ndarray) else [base]):
+                if b.is_Rational and big and b not in (0, 1, -1):
+                    bits = max(int(b.p).bit_length(), int(b.q).bit_length())
+                    if big * bits > MAX_EXACT_BITS:
+                        raise fail(node, f"exact power too large (limit {MAX_EXACT_BITS} bits); "
+                                         "write the base as a float")
+            return self.elementwise(node, lambda a, b: a ** b, [base, expo], "**")
+        # flatten a left-nested chain of + - (or * /) iteratively
+        kinds = (ast.Add, ast.Sub) if op in (ast.Add, ast.Sub) else (ast.Mult, ast.Div)
+        chain, cur = [], node
+        while isinstance(cur, ast.BinOp) and isinstance(cur.op, kinds):
+            chain.append((type(cur.op), cur.right))
+            cur = cur.left
+        operands = [self.walk(cur)]
+        signs = [True]
+        for opk, right in reversed(chain):
+            v = self.walk(right)
+            if opk is ast.Div:
+                v = self.elementwise(right, lambda a: sp.Integer(1) / a, [v], "/")
+            operands.append(v)
+            signs.append(opk is not ast.Sub)
+        if kinds[0] is ast.Add:
+            def fn(*vals):
+                return sp.Add(*[a if s else -a for a, s in zip(vals, signs)])
+            return self.elementwise(node, fn, operands, "+/-")
+        return self.elementwise(node, lambda *vals: sp.Mul(*vals), operands, "*//")
+
+    def constant(self, node):
+        v = node.value
+        if type(v) is int:
+            if v.bit_length() > 1024:
+                raise fail(node, "integer literal too large (exceeds double precision range)")
+            return sp.Integer(v)
+        if type(v) is float:
+            if not math.isfinite(v):
+                raise fail(node, f"number literal {v} is not finite")
+            return sp.Float(v)
+        raise fail(node, f"{type(v).__name__} constant is not allowed", allowed=True)
+
+    def name(self, node):
+        nm = node.id
+        if nm in self.names:
+            return self.names[nm]
+        if nm in self.params:
+            if nm not in self.cache:
+                self.cache[nm] = self.checked(node, _as_sympy(self.params[nm]))
+            return self.cache[nm]
+        if nm in FUNCTIONS:
+            raise fail(node, f"{nm} is a function; call it as {nm}(...)")
+        if self.product and nm in ("R", "x"):
+            avail = sorted(k for k in self.names if k.startswith(nm + "_"))
+            raise fail(node, f"{nm} is not defined for a product group; use the per-factor "
+                             f"names ({', '.join(avail) or 'no factor has one'})")
+        fac = _FACTOR_ALIAS.fullmatch(nm) if self.product else None
+        if fac and int(fac.group(2)) < len(self.layouts):
+            k = int(fac.group(2))
+            raise fail(node, f"{nm} is not defined: factor {k} ({self.layouts[k].name}) has no "
+                             f"{'rotation block' if fac.group(1) == 'R' else 'translation'}")
+        if nm in ("R", "x"):
+            raise fail(node, f"{nm} is not defined for this group "
+                             f"({'no rotation block' if nm == 'R' else 'no translation'})")
+        avail = sorted(self.names) + sorted(self.params)
+        raise fail(node, f"unknown name {nm!r}; available names: {', '.join(avail)}")
+
+    def subscript(self, node):
+        val = self.walk(node.value)
+        sl = node.slice
+        idx_nodes = sl.elts if isinstance(sl, ast.Tuple) else [sl]
+        idx = tuple(n.value for n in idx_nodes)
+        shape = _shape(val)
+        if len(idx) != len(shape):
+            want = {0: "a scalar cannot be indexed", 1: "index a vector with one index v[i]",
+                    2: "index a matrix with two indices M[i, j]"}[len(shape)]
+            raise fail(node, f"wrong number of indices for a {_shape_text(shape)}: {want}")
+        for i, s in zip(idx, shape):
+            if i >= s:
+                raise fail(node, f"index {list(idx)} out of range for a {_shape_text(shape)}")
+        return val[idx]
+
+    def call(self, node):
+        fname = node.func.id
+        if fname == "dot":
+            if len(node.args) != 2:
+                raise fail(node, f"dot takes 2 arguments, got {len(node.args)}")
+            return self.dot(node, self.walk(node.args[0]), self.walk(node.args[1]))
+        if len(node.args) != 1:
+            raise fail(node, f"{fname} takes 1 argument, got {len(node.args)}")
+        return self.elementwise(node, FUNCTIONS[fname], [self.walk(node.args[0])], fname)
+
+    def dot(self, node, a, b):
+        sa, sb = _shape(a), _shape(b)
+        if not sa or not sb or sa[-1] != sb[0]:
+            raise fail(node, f"dot: shapes do not match ({_shape_text(sa)} and "
+                             f"{_shape_text(sb)}); inner dimensions must agree")
+        A = a if len(sa) == 2 else a.reshape(1, -1)
+        B = b if len(sb) == 2 else b.reshape(-1, 1)
+        m, k, n = A.shape[0], A.shape[1], B.shape[1]
+        self.charge(node, m * k * n)
+        out = [sp.Add(*[A[i, t] * B[t, j] for t in range(k)]) for i in range(m) for j in range(n)]
+        res = _to_array(out, (m, n))
+        shape = sa[:-1] + sb[1:]
+        return self.checked(node, res.reshape(shape) if shape else res[0, 0])
+
+
+def _final_checks(expr, xi_syms) -> None:
+    """Tree size, non-finite/complex constants, dependence on xi; iterative over the DAG."""
+    size, const, seen, stack = {}, {}, set(), [(expr, False)]
+    xiset = set(xi_syms)
+    depends = False
+    while stack:
+        e, done = stack.pop()
+        if done:
+            size[id(e)] = min(1 + sum(size[id(a)] for a in e.args), MAX_TREE + 1)
+            const[id(e)] = not e.is_Symbol and all(const[id(a)] for a in e.args)
+            if size[id(e)] > MAX_TREE:
+                raise ModelError(f"expression too large: more than {MAX_TREE} nodes after "
+                                 f"evaluation (limit {MAX_TREE})", field="lagrangian")
+            if e in _NONFINITE or e is sp.S.NaN:
+                raise ModelError(f"the Lagrangian is not finite: it contains {e} (a division by "
+                                 "zero or log(0)?)", field="lagrangian")
+            if e is sp.I:
+                raise ModelError("the Lagrangian is complex (contains the imaginary unit)",
+                                 field="lagrangian")
+            if const[id(e)] and (e.args or e.is_Number):
+                try:
+                    val = complex(e if e.is_Number else e.evalf(30))
+                except (TypeError, ValueError, OverflowError):
+                    val = complex(math.nan)
+                if not (math.isfinite(val.real) and abs(val.imag) <= 1e-12 * max(1, abs(val.real))):
+                    raise ModelError(f"the constant {str(e)[:60]} is not a finite real number "
+                                     "within double range", field="lagrangian")
+            if e in xiset:
+                depends = True
+            continue
+        if id(e) in seen:
+            continue
+        seen.add(id(e))
+        stack.append((e, True))
+        stack.extend((a, False) for a in e.args if id(a) not in seen)
+    if not depends:
+        raise ModelError(f"the Lagrangian does not depend on xi (it is {str(expr)[:60]}); it "
+                         "must contain the velocity xi, e.g. 0.5*xi[0]**2", field="lagrangian")
+
+
+def parse_lagrangian(text: str, group, parameters: dict):
+    """(expr, xi_symbols, g_symbols) for the Lagrangian text on ``group`` (n, d, factors).
+
+    ``parameters`` maps names to validated values (int, float, lists of them). Raises
+    ModelError(field="lagrangian") without file/line (the loader adds them).
+    """
+    tree = parse_checked(text)
+    ev = _Evaluator(group, parameters)
+    try:
+        result = ev.walk(tree.body)
+    except RecursionError:
+        raise ModelError(f"expression too large: nested too deeply (limit {MAX_DEPTH})",
+                         field="lagrangian") from None
+    if isinstance(result, np.ndarray):
+        raise ModelError(f"the Lagrangian must be a scalar, got shape {result.shape} "
+                         f"(a {_shape_text(result.shape)})", field="lagrangian")
+    xi_syms = tuple(ev.xi.tolist())
+    g_syms = tuple(tuple(row) for row in ev.g.tolist())
+    try:
+        _final_checks(result, xi_syms)
+    except RecursionError:
+        raise ModelError("expression too large: nested too deeply", field="lagrangian") from None
+    return result, xi_syms, g_syms

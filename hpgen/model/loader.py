@@ -1,0 +1,230 @@
+"""The model-file schema (version 1): top-level keys, name, group, parameters, integrator.
+
+Conventions:
+- The text is turned into a located document by hpgen.model.yamldoc (lines for every path);
+  the Lagrangian is parsed by hpgen.model.expr, the scene by hpgen.model.scene.
+- Names (model and parameters) are C identifiers ``[A-Za-z][A-Za-z0-9_]*`` of at most 64
+  characters, not C keywords (C99/C11/C23, plus ``main``); parameters may also not be Python
+  keywords or names the Lagrangian reserves (xi, g, R, x, functions, pi, xi_k, g_k, R_k, x_k).
+- Parameter values: numbers, non-empty lists of numbers, rectangular lists of lists; finite.
+  ``Model.parameters`` stores them as floats / tuples; the Lagrangian gets ints as exact Integers.
+- Every problem raises hpgen.errors.ModelError naming file, line, field and what was expected.
+"""
+from __future__ import annotations
+
+import keyword
+import os
+import re
+
+from ..errors import ModelError
+from .types import RESERVED_NAMES, IntegratorChoice, Model
+from .yamldoc import MAX_FILE_BYTES, Doc, compose_document, describe, is_number
+
+MAX_NAME_LEN = 64
+MAX_MATRIX_SIZE = 64                # n and d of the group (g has n*n symbols)
+
+TOP_KEYS = ("schema", "name", "group", "parameters", "lagrangian", "integrator", "scene")
+INTEGRATOR_KEYS = ("tableau", "tau", "rkmk")
+TAU_CHOICES = ("exp", "cay", "skew")
+RKMK_CHOICES = ("exact", "truncated")
+
+C_KEYWORDS = frozenset("""
+auto break case char const continue default do double else enum extern float for goto if inline
+int long register restrict return short signed sizeof static struct switch typedef union unsigned
+void volatile while _Alignas _Alignof _Atomic _Bool _Complex _Generic _Imaginary _Noreturn
+_Static_assert _Thread_local alignas alignof bool constexpr false nullptr static_assert
+thread_local true typeof typeof_unqual main""".split())
+
+_IDENT = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+_FACTOR_NAME = re.compile(r"(xi|g|R|x)_[0-9]+")
+
+
+# ---- the schema --------------------------------------------------------------------------------
+def check_identifier(doc: Doc, path, name, what: str) -> str:
+    if not isinstance(name, str):
+        raise doc.error(path, f"expected {what} (a C identifier), got {describe(name)}")
+    if len(name) > MAX_NAME_LEN:
+        raise doc.error(path, f"{what} {name[:20]!r}... is longer than {MAX_NAME_LEN} characters")
+    if name.startswith("_"):
+        raise doc.error(path, f"{what} {name!r} must not start with '_'")
+    if not _IDENT.fullmatch(name):
+        raise doc.error(path, f"{what} {name!r} is not an identifier: expected a letter followed "
+                              "by letters, digits or '_' ([A-Za-z][A-Za-z0-9_]*)")
+    if name in C_KEYWORDS:
+        raise doc.error(path, f"{what} {name!r} is a C keyword (or 'main'); choose another name")
+    return name
+
+
+def _check_parameter_name(doc: Doc, path, name) -> None:
+    check_identifier(doc, path, name, "parameter name")
+    if name in RESERVED_NAMES or name == "pi" or _FACTOR_NAME.fullmatch(name):
+        raise doc.error(path, f"parameter name {name!r} is reserved for the Lagrangian "
+                              f"(reserved: {', '.join(RESERVED_NAMES)}, pi, xi_k, g_k, R_k, x_k)")
+    if keyword.iskeyword(name):
+        raise doc.error(path, f"parameter name {name!r} is a Python keyword and could not be "
+                              "used in the Lagrangian; choose another name")
+
+
+def _parameter_value(doc: Doc, path, v):
+    if isinstance(v, list) and v and all(isinstance(r, list) for r in v):
+        return doc.matrix(path, v)
+    if isinstance(v, list):
+        if any(isinstance(r, (list, dict)) for r in v):
+            raise doc.error(path, "expected a number, a list of numbers or a list of lists "
+                                  "of numbers (a matrix)")
+        return doc.vector(path, v)
+    if is_number(v):
+        return doc.number(path, v)
+    raise doc.error(path, "expected a number, a non-empty list of numbers or a rectangular list "
+                          f"of lists of numbers, got {describe(v)}"
+                    + (" (quoted strings are not numbers)" if isinstance(v, str) else ""))
+
+
+def _parameters(doc: Doc, raw) -> tuple[tuple, dict]:
+    """((name, stored value), ...) with floats, and {name: exact value} for the expression."""
+    if raw is None:
+        return (), {}
+    if not isinstance(raw, dict):
+        raise doc.error(("parameters",), f"expected a mapping name: value, got {describe(raw)}")
+    stored, exact = [], {}
+    for name, v in raw.items():
+        path = ("parameters", name)
+        _check_parameter_name(doc, path, name)
+        stored.append((name, _parameter_value(doc, path, v)))
+        exact[name] = v                       # ints stay ints (exact sympy Integers)
+    return tuple(stored), exact
+
+
+def _group(doc: Doc, spec):
+    from ..groups import group_from_spec
+    try:
+        group = group_from_spec(spec)
+    except ModelError as e:
+        raise e.located(doc.file, "group", doc.line(("group",))) from None
+    if group.n > MAX_MATRIX_SIZE or group.d > MAX_MATRIX_SIZE:
+        raise doc.error(("group",), f"group too large: matrix size {group.n}, dimension "
+                                    f"{group.d} (limit {MAX_MATRIX_SIZE} each)")
+    return group
+
+
+def _tableau(doc: Doc, raw):
+    from ..tableaus import ButcherTableau, get_tableau
+    path = ("integrator", "tableau")
+    if isinstance(raw, str):
+        try:
+            get_tableau(raw)
+        except ModelError as e:
+            raise ModelError(e.message, file=doc.file, field="integrator.tableau",
+                             line=doc.line(path)) from None
+        return raw
+    if not isinstance(raw, dict):
+        raise doc.error(path, f"expected a tableau name or a mapping {{A: [[...]], b: [...]}} "
+                              f"(c optional), got {describe(raw)}")
+    doc.mapping(path, raw, ("A", "b", "c"))
+    for k in ("A", "b"):
+        if k not in raw:
+            raise doc.error(path, f"a user tableau needs {k}: expected {{A: [[...]], b: [...]}}")
+    A = doc.matrix(path + ("A",), raw["A"])
+    b = doc.vector(path + ("b",), raw["b"])
+    c = doc.vector(path + ("c",), raw["c"]) if raw.get("c") is not None else None
+    try:
+        return ButcherTableau.from_user([list(r) for r in A], list(b),
+                                        None if c is None else list(c))
+    except ModelError as e:
+        raise ModelError(e.message, file=doc.file, field="integrator.tableau",
+                         line=doc.line(path)) from None
+    except (ValueError, TypeError, ArithmeticError) as e:
+        raise doc.error(path, f"invalid tableau: {e}") from None
+
+
+def _integrator(doc: Doc, raw) -> IntegratorChoice:
+    raw = doc.mapping(("integrator",), raw, INTEGRATOR_KEYS)
+    kw = {}
+    for key, choices in (("tau", TAU_CHOICES), ("rkmk", RKMK_CHOICES)):
+        if raw.get(key) is not None:
+            if raw[key] not in choices or not isinstance(raw[key], str):
+                raise doc.error(("integrator", key), f"expected one of {', '.join(choices)}, "
+                                                     f"got {describe(raw[key])}")
+            kw[key] = raw[key]
+    if raw.get("tableau") is not None:
+        kw["tableau"] = _tableau(doc, raw["tableau"])
+    return IntegratorChoice(**kw)
+
+
+def _lagrangian(doc: Doc, text, group, exact_params):
+    from .expr import parse_lagrangian
+    if is_number(text):
+        raise doc.error(("lagrangian",), f"the Lagrangian does not depend on xi (it is the "
+                                         f"constant {text!r}); it must contain the velocity xi")
+    if not isinstance(text, str) or not text.strip():
+        raise doc.error(("lagrangian",), "expected an expression in xi (and g, parameters), "
+                                         f"e.g. 0.5*(xi[0]**2 + xi[1]**2), got {describe(text)}")
+    try:
+        return parse_lagrangian(text, group, exact_params)
+    except ModelError as e:
+        line = doc.line(("lagrangian",))
+        if line and doc.lagrangian_style == "|" and getattr(e, "expr_line", None):
+            line += e.expr_line
+        raise e.located(doc.file, "lagrangian", line) from None
+
+
+def build_model(doc: Doc, text: str) -> Model:
+    data = doc.mapping((), doc.data, TOP_KEYS)
+    if "schema" in data and (type(data["schema"]) is not int or data["schema"] != 1):
+        raise doc.error(("schema",), f"unsupported schema {data['schema']!r}: expected 1")
+    for key in ("name", "group", "lagrangian"):
+        if data.get(key) is None:
+            what = "missing required key" if key not in data else "empty value for required key"
+            raise doc.error((key,), f"{what} {key!r} (a model needs name, group and lagrangian)")
+    name = check_identifier(doc, ("name",), data["name"], "model name")
+    group = _group(doc, data["group"])
+    stored, exact = _parameters(doc, data.get("parameters"))
+    integrator = _integrator(doc, data.get("integrator"))
+    lag, xi_syms, g_syms = _lagrangian(doc, data["lagrangian"], group, exact)
+    scene = None
+    if data.get("scene") is not None:
+        from .scene import parse_scene
+        scene = parse_scene(doc, data["scene"], group)
+    return Model(name=name, path=doc.file, source=text, group_spec=data["group"], group=group,
+                 parameters=stored, lagrangian_text=data["lagrangian"], lagrangian=lag,
+                 xi_symbols=xi_syms, g_symbols=g_syms, integrator=integrator, scene=scene)
+
+
+def load_model_text(text, filename: str = "<string>") -> Model:
+    """Validate model-file text; every problem is a one-line hpgen.errors.ModelError."""
+    file = str(filename)
+    if isinstance(text, (bytes, bytearray)):
+        try:
+            text = bytes(text).decode("utf-8")
+        except UnicodeDecodeError as e:
+            raise ModelError(f"the model file is not UTF-8 text ({e.reason} at byte {e.start})",
+                             file=file) from None
+    if not isinstance(text, str):
+        raise ModelError(f"expected the model file's text, got {type(text).__name__}", file=file)
+    if len(text) > MAX_FILE_BYTES or len(text.encode("utf-8", "surrogatepass")) > MAX_FILE_BYTES:
+        raise ModelError(f"the model file is too large (limit {MAX_FILE_BYTES // 1024 // 1024} MB)",
+                         file=file)
+    try:
+        return build_model(compose_document(text, file), text)
+    except RecursionError:
+        raise ModelError("the model is too deeply nested", file=file) from None
+    except MemoryError:
+        raise ModelError("out of memory while reading the model (is it too large?)",
+                         file=file) from None
+    except (OverflowError, ArithmeticError) as e:
+        raise ModelError(f"numeric overflow while reading the model: {e}", file=file) from None
+
+
+def load_model(path) -> Model:
+    """Read and validate a model file (at most 2 MB of UTF-8 YAML)."""
+    file = os.fspath(path)
+    try:
+        size = os.path.getsize(file)
+        if size > MAX_FILE_BYTES:
+            raise ModelError(f"the model file is too large ({size} bytes; limit "
+                             f"{MAX_FILE_BYTES // 1024 // 1024} MB)", file=file)
+        with open(file, "rb") as fh:
+            data = fh.read(MAX_FILE_BYTES + 1)
+    except OSError as e:
+        raise ModelError(f"cannot read the model file: {e.strerror or e}", file=file) from None
+    return load_model_text(data, filename=file)

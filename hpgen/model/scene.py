@@ -1,0 +1,235 @@
+"""The ``scene:`` section: step size, number of steps, initial state, what to record.
+
+Conventions:
+- ``h`` > 0 finite; ``steps`` an integer >= 0, or ``duration`` > 0 with steps = round(duration/h)
+  integral within 1e-9 relative (exactly one of the two).
+- ``initial.g``: ``identity`` | an n x n matrix | ``{rotvec: [3]}`` (SO3, SE3) or ``{angle: a}``
+  (SO2, SE2), optionally with ``position: [k]`` (SE2, SE3; R<k> takes ``{position: [k]}``).
+  For a product: ``identity``, the full block-diagonal matrix, or a list with one such entry per
+  factor. Rotations come from Rodrigues' formula. The result must be on the group: every
+  rotation block has |R^T R - I|max and |det R - 1| <= 1e-10; the affine bottom row, the identity
+  block of R<k> and the off-diagonal blocks of a product are exact.
+- Exactly one of ``initial.xi`` / ``initial.mu`` (d finite numbers).
+- ``record``: distinct names from RECORDABLE (default g, mu); ``every``: integer >= 1.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .types import Scene
+
+SCENE_KEYS = ("h", "steps", "duration", "initial", "record", "every")
+INITIAL_KEYS = ("g", "xi", "mu")
+RECORDABLE = ("g", "mu", "xi", "energy", "momentum", "defect")
+ON_GROUP_TOL = 1e-10
+MAX_STEPS = 2**31 - 1
+
+
+def _int(doc, path, v, low, what):
+    if type(v) is not int:
+        raise doc.error(path, f"expected {what}, got {_describe(doc, v)}")
+    if v < low or v > MAX_STEPS:
+        raise doc.error(path, f"expected {what}, got {v}")
+    return v
+
+
+def _describe(doc, v):
+    from .yamldoc import describe
+    return describe(v)
+
+
+def _rotation(doc, path, fgroup, spec):
+    """The rotation block (k x k) from {rotvec: [...]} or {angle: a}."""
+    k = fgroup.rotation_block[1] - fgroup.rotation_block[0]
+    if k == 2:
+        if "rotvec" in spec:
+            raise doc.error(path + ("rotvec",), f"{fgroup.name} takes angle: a, not rotvec")
+        if "angle" not in spec:
+            return np.eye(2)
+        a = doc.number(path + ("angle",), spec["angle"])
+        c, s = math.cos(a), math.sin(a)
+        return np.array([[c, -s], [s, c]])
+    if "angle" in spec:
+        raise doc.error(path + ("angle",), f"{fgroup.name} takes rotvec: [3 numbers], not angle")
+    if "rotvec" not in spec:
+        return np.eye(3)
+    w = np.array(doc.vector(path + ("rotvec",), spec["rotvec"], 3))
+    theta = math.hypot(*w)
+    if theta == 0.0:
+        return np.eye(3)
+    u = w / theta
+    K = np.array([[0, -u[2], u[1]], [u[2], 0, -u[0]], [-u[1], u[0], 0]])
+    return np.eye(3) + math.sin(theta) * K + (1 - math.cos(theta)) * (K @ K)
+
+
+def _from_mapping(doc, path, fgroup, spec):
+    rot = fgroup.rotation_block is not None
+    tr = fgroup.translation_block is not None
+    allowed = (("rotvec" if fgroup.rotation_block[1] - fgroup.rotation_block[0] == 3 else "angle",)
+               if rot else ()) + (("position",) if tr else ())
+    if not allowed:
+        raise doc.error(path, f"for {fgroup.name} expected identity or a matrix")
+    doc.mapping(path, spec, allowed)
+    G = np.eye(fgroup.n)
+    if rot:
+        a, b = fgroup.rotation_block
+        G[a:b, a:b] = _rotation(doc, path, fgroup, spec)
+    if tr and spec.get("position") is not None:
+        a, b = fgroup.translation_block
+        G[a:b, fgroup.n - 1] = doc.vector(path + ("position",), spec["position"], b - a)
+    return G
+
+
+def _factor_matrix(doc, path, fgroup, spec):
+    """g0 of one (non-product) group from identity / matrix / mapping."""
+    if spec == "identity":
+        return np.eye(fgroup.n)
+    if isinstance(spec, dict):
+        return _from_mapping(doc, path, fgroup, spec)
+    if isinstance(spec, list):
+        return np.array(doc.matrix(path, spec, (fgroup.n, fgroup.n)), dtype=float)
+    raise doc.error(path, f"expected identity, a {fgroup.n} x {fgroup.n} matrix or a mapping "
+                          f"(rotvec/angle/position) for {fgroup.name}, got {_describe(doc, spec)}")
+
+
+def _is_full_matrix(spec):
+    return isinstance(spec, list) and spec and all(
+        isinstance(r, list) and all(not isinstance(x, (list, dict, str)) for x in r) for r in spec)
+
+
+def _check_on_group(doc, path, fgroup, G, what):
+    n = fgroup.n
+    if fgroup.translation_block is not None:
+        bottom = np.zeros(n)
+        bottom[-1] = 1.0
+        dev = float(np.max(np.abs(G[-1] - bottom)))
+        if dev != 0.0:
+            raise doc.error(path, f"{what} is not on {fgroup.name}: the bottom row must be "
+                                  f"exactly {bottom.astype(int).tolist()} (deviation {dev:.3g}, "
+                                  "tolerance 0)")
+    if fgroup.rotation_block is not None:
+        a, b = fgroup.rotation_block
+        R = G[a:b, a:b]
+        with np.errstate(all="ignore"):
+            dev = max(float(np.max(np.abs(R.T @ R - np.eye(b - a)))),
+                      abs(float(np.linalg.det(R)) - 1.0))
+        if not dev <= ON_GROUP_TOL:
+            raise doc.error(path, f"{what} is not on {fgroup.name}: the rotation block has "
+                                  f"max(|R^T R - I|, |det R - 1|) = {dev:.3g} "
+                                  f"(tolerance {ON_GROUP_TOL:g})")
+    else:  # R<k>: [[I, x], [0, 1]]
+        k = n - 1
+        dev = float(np.max(np.abs(G[:k, :k] - np.eye(k)))) if k else 0.0
+        if dev != 0.0:
+            raise doc.error(path, f"{what} is not on {fgroup.name}: the top-left {k} x {k} "
+                                  f"block must be exactly the identity (deviation {dev:.3g}, "
+                                  "tolerance 0)")
+
+
+def initial_g(doc, path, group, spec):
+    """g0 as an n x n float array on ``group`` (FactorLayout-aware for products)."""
+    from ..groups import group_from_spec
+    factors = group.factors
+    path = tuple(path)
+    if len(factors) == 1:
+        if spec is None:
+            spec = "identity"
+        G = _factor_matrix(doc, path, group, spec)
+        if not np.all(np.isfinite(G)):
+            raise doc.error(path, "the initial g is not finite")
+        _check_on_group(doc, path, group, G, "the initial g")
+        return G
+    n = group.n
+    if spec is None or spec == "identity":
+        return np.eye(n)
+    fgroups = [group_from_spec(f.name) for f in factors]
+    G = np.zeros((n, n))
+    if _is_full_matrix(spec):
+        G[:] = doc.matrix(path, spec, (n, n))
+        mask = np.ones((n, n), dtype=bool)
+        for f in factors:
+            mask[f.row:f.row + f.n, f.row:f.row + f.n] = False
+        dev = float(np.max(np.abs(G[mask]))) if mask.any() else 0.0
+        if dev != 0.0:
+            raise doc.error(path, f"the initial g is not block diagonal for {group.name}: "
+                                  f"off-diagonal entries up to {dev:.3g} (tolerance 0)")
+    elif isinstance(spec, list) and len(spec) == len(factors):
+        for k, (f, fg) in enumerate(zip(factors, fgroups)):
+            G[f.row:f.row + f.n, f.row:f.row + f.n] = _factor_matrix(doc, path + (k,), fg, spec[k])
+    else:
+        raise doc.error(path, f"for the product {group.name} expected identity, the full "
+                              f"{n} x {n} block-diagonal matrix, or a list of {len(factors)} "
+                              "entries (one per factor)")
+    if not np.all(np.isfinite(G)):
+        raise doc.error(path, "the initial g is not finite")
+    for k, (f, fg) in enumerate(zip(factors, fgroups)):
+        sub = path + (k,) if not _is_full_matrix(spec) else path
+        _check_on_group(doc, sub, fg, G[f.row:f.row + f.n, f.row:f.row + f.n],
+                        f"factor {k} of the initial g")
+    return G
+
+
+def _steps(doc, raw, h):
+    has_steps, has_dur = raw.get("steps") is not None, raw.get("duration") is not None
+    if has_steps and has_dur:
+        raise doc.error(("scene", "duration"), "give either steps or duration, not both")
+    if has_steps:
+        return _int(doc, ("scene", "steps"), raw["steps"], 0,
+                    f"an integer number of steps from 0 to {MAX_STEPS}")
+    if not has_dur:
+        raise doc.error(("scene",), "missing steps: expected steps: N (integer >= 0) or "
+                                    "duration: T (> 0)")
+    path = ("scene", "duration")
+    T = doc.number(path, raw["duration"], "a duration > 0")
+    if T <= 0:
+        raise doc.error(path, f"expected a duration > 0, got {T!r}")
+    ratio = T / h
+    if not math.isfinite(ratio) or ratio > MAX_STEPS + 0.5:
+        raise doc.error(path, f"duration / h = {ratio:.6g} steps is too many (limit {MAX_STEPS})")
+    steps = round(ratio)
+    if abs(ratio - steps) > 1e-9 * ratio or steps < 1:
+        raise doc.error(path, f"duration / h = {ratio:.12g} is not an integer number of steps "
+                              "(within 1e-9 relative); adjust duration or h")
+    return int(steps)
+
+
+def parse_scene(doc, raw, group) -> Scene:
+    """Validate the scene mapping ``raw`` for ``group``; doc is the loader's located document."""
+    raw = doc.mapping(("scene",), raw, SCENE_KEYS)
+    if raw.get("h") is None:
+        raise doc.error(("scene", "h"), "missing h: expected a step size h > 0")
+    h = doc.number(("scene", "h"), raw["h"], "a step size h > 0")
+    if h <= 0:
+        raise doc.error(("scene", "h"), f"expected a step size h > 0, got {h!r}")
+    steps = _steps(doc, raw, h)
+    ipath = ("scene", "initial")
+    init = doc.mapping(ipath, raw.get("initial"), INITIAL_KEYS)
+    G = initial_g(doc, ipath + ("g",), group, init.get("g"))
+    has_xi, has_mu = init.get("xi") is not None, init.get("mu") is not None
+    if has_xi == has_mu:
+        raise doc.error(ipath, f"expected exactly one of xi or mu (a list of {group.d} numbers), "
+                               f"got {'both' if has_xi else 'neither'}")
+    key = "xi" if has_xi else "mu"
+    vec = doc.vector(ipath + (key,), init[key], group.d)
+    record = ("g", "mu")
+    if raw.get("record") is not None:
+        rec = raw["record"]
+        rpath = ("scene", "record")
+        if not isinstance(rec, list) or not rec:
+            raise doc.error(rpath, f"expected a non-empty list of names from "
+                                   f"{', '.join(RECORDABLE)}, got {_describe(doc, rec)}")
+        for i, r in enumerate(rec):
+            if r not in RECORDABLE or not isinstance(r, str):
+                raise doc.error(rpath + (i,), f"expected one of {', '.join(RECORDABLE)}, got "
+                                              f"{_describe(doc, r)}")
+            if rec.index(r) != i:
+                raise doc.error(rpath + (i,), f"{r!r} is listed twice")
+        record = tuple(rec)
+    every = 1
+    if raw.get("every") is not None:
+        every = _int(doc, ("scene", "every"), raw["every"], 1, "an integer >= 1")
+    return Scene(h=h, steps=steps, g0=tuple(tuple(float(x) for x in row) for row in G),
+                 xi0=vec if has_xi else None, mu0=vec if has_mu else None,
+                 record=record, every=every)

@@ -1,0 +1,61 @@
+"""The IR produced by the model stage: a validated, immutable description of a model file."""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+#: names the Lagrangian may use besides parameters (see hpgen.model.expr for products)
+RESERVED_NAMES = ("xi", "g", "R", "x", "dot", "sin", "cos", "tan", "exp", "log", "sqrt")
+
+
+@dataclass(frozen=True)
+class IntegratorChoice:
+    """Defaults from the model's ``integrator:`` section (CLI flags / API arguments override).
+
+    tableau: a catalog name (str) or a hpgen.tableaus.ButcherTableau built from {A, b}.
+    tau: 'exp' | 'cay' | 'skew'.  rkmk: 'exact' | 'truncated' (the paper's q = 0).
+    """
+    tableau: Any = "stormer-verlet"
+    tau: str = "cay"
+    rkmk: str = "exact"
+
+
+@dataclass(frozen=True)
+class Scene:
+    """What ``hpgen run`` simulates. g0 is an n x n tuple-of-tuples matrix on the group;
+    exactly one of xi0 / mu0 is set (tuples of length d)."""
+    h: float
+    steps: int
+    g0: tuple
+    xi0: tuple | None = None
+    mu0: tuple | None = None
+    record: tuple[str, ...] = ("g", "mu")
+    every: int = 1
+
+
+@dataclass(frozen=True)
+class Model:
+    """A validated model.
+
+    lagrangian: sympy expression in the symbols ``xi_symbols`` (xi_0 .. xi_{d-1}) and
+    ``g_symbols`` (g_i_j, an n x n tuple of tuples), parameters already substituted as exact
+    binary floats. It was built by hpgen's own whitelist parser, never by eval/sympify.
+    """
+    name: str
+    path: str                      # file name used in error messages ("<string>" if none)
+    source: str                    # the model file's text, copied next to generated code
+    group_spec: Any                # the ``group`` field as written (str or list of str)
+    group: Any                     # hpgen.groups.LieGroup
+    parameters: tuple              # ((name, value), ...), value float | tuple | tuple of tuples
+    lagrangian_text: str
+    lagrangian: Any                # sympy.Expr
+    xi_symbols: tuple
+    g_symbols: tuple
+    integrator: IntegratorChoice = field(default_factory=IntegratorChoice)
+    scene: Scene | None = None
+
+    @property
+    def left_invariant(self) -> bool:
+        """True when l does not depend on g (the Euler-Poincare case)."""
+        gs = {s for row in self.g_symbols for s in row}
+        return not (self.lagrangian.free_symbols & gs)

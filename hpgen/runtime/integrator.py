@@ -1,0 +1,178 @@
+"""Integrator: the public API of a loaded module, the same for the C and Python backends.
+
+Conventions: g is an (n, n) group element (array-like), momenta p/mu and velocities xi are
+length-d vectors (body frame), h > 0 is the step in the model's time unit. Internally and
+across the C boundary matrices are flat column-major (``g.ravel(order="F")``).
+Newton settings default to tol = 1e-14, maxit = 50 (see hpgen.runtime.newton).
+"""
+from __future__ import annotations
+
+import math
+import numbers
+
+import numpy as np
+
+from ..errors import ConvergenceError, DomainError, ModelError
+from . import newton
+from .trajectory import Trajectory
+
+DEFECT_MAX = 1e-10
+COND_MAX = 1e12
+_MESSAGES = {newton.NO_CONVERGENCE: "Newton did not converge",
+             newton.NONFINITE: "a non-finite value (or a singular Jacobian) appeared",
+             newton.DOMAIN: "the chart map tau left its domain (margin(z, h) <= 0)"}
+
+
+def _error(code, step, time, residual, iterations):
+    cls = DomainError if code == newton.DOMAIN else ConvergenceError
+    return cls(_MESSAGES.get(code, f"step failed with status {code}"), step=int(step),
+               time=float(time), residual=float(residual), iterations=int(iterations))
+
+
+def _array(x, shape, field, what):
+    try:
+        a = np.array(x, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ModelError(f"expected {what}, got {type(x).__name__}", field=field) from None
+    if a.shape != shape:
+        raise ModelError(f"expected {what} of shape {shape}, got shape {a.shape}", field=field)
+    if not np.isfinite(a).all():
+        raise ModelError(f"{what} has non-finite entries", field=field)
+    return a
+
+
+def _int(x, field, low):
+    if isinstance(x, bool) or not isinstance(x, numbers.Integral) or x < low:
+        raise ModelError(f"expected an integer >= {low}, got {x!r}", field=field)
+    return int(x)
+
+
+def _positive(x, field):
+    if isinstance(x, bool) or not isinstance(x, numbers.Real) or not (
+            math.isfinite(x) and x > 0):
+        raise ModelError(f"expected a finite number > 0, got {x!r}", field=field)
+    return float(x)
+
+
+class Integrator:
+    """A loaded generated module. Attributes: meta (dict from meta.json), backend ("c" or
+    "python"), n, d, nz."""
+
+    def __init__(self, meta: dict, backend):
+        self.meta, self._b = meta, backend
+        self.backend = backend.name
+        self.n, self.d, self.nz = meta["n"], meta["d"], meta["nz"]
+
+    def __repr__(self):
+        return f"<hpgen Integrator {self.meta['module']} backend={self.backend}>"
+
+    # ---- argument helpers -----------------------------------------------------------
+    def _g(self, g, field="g"):
+        return _array(g, (self.n, self.n), field, "an n x n matrix").ravel(order="F")
+
+    def _v(self, v, field):
+        return _array(v, (self.d,), field, "a vector of length d")
+
+    def kernel(self, name, *args):
+        """Evaluate one kernel on flat column-major arrays; returns its outputs (a list)."""
+        return self._b.call(name, *args)
+
+    # ---- kernels ------------------------------------------------------------------------
+    def legendre(self, g, xi) -> np.ndarray:
+        """mu = dl/dxi (g, xi)."""
+        return self._b.call("legendre", self._g(g), self._v(xi, "xi"))[0]
+
+    def velocity(self, g, mu, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT):
+        """xi with legendre(g, xi) = mu: Newton from xi = 0 with the hessian kernel."""
+        gf, mu = self._g(g), self._v(mu, "mu")
+        d = self.d
+
+        def fun(xi):
+            F = self._b.call("legendre", gf, xi)[0] - mu
+            H = self._b.call("hessian", gf, xi)[0].reshape(d, d, order="F")
+            if np.isfinite(H).all():
+                with np.errstate(all="ignore"):
+                    cond = float(np.linalg.cond(H)) if H.any() else math.inf
+                if not cond <= COND_MAX:
+                    raise ModelError("the Legendre transform is singular at the initial state "
+                                     f"(cond(d2l/dxi2) = {cond:.3g}); check the kinetic "
+                                     "energy terms of the Lagrangian", field="scene.initial")
+            return F, H
+
+        with np.errstate(all="ignore"):
+            code, xi, it, r = newton.newton(fun, np.zeros(d), tol, maxit)
+        if code != newton.OK:
+            raise ConvergenceError("inverting the Legendre transform (velocity from momentum): "
+                                   + _MESSAGES[code], step=0, time=0.0, residual=r,
+                                   iterations=it)
+        return xi
+
+    def energy(self, g, mu) -> float:
+        """Energy <dl/dxi, xi> - l at (g, xi = velocity(g, mu))."""
+        return float(self._b.call("energy", self._g(g), self.velocity(g, mu))[0][0])
+
+    def momentum(self, g, mu) -> np.ndarray:
+        """Spatial momentum Ad*_{g^{-1}} mu."""
+        return self._b.call("momentum", self._g(g), self._v(mu, "mu"))[0]
+
+    def defect(self, g) -> float:
+        """Distance of g from the group (0 on the group)."""
+        return float(self._b.call("defect", self._g(g))[0][0])
+
+    # ---- stepping -----------------------------------------------------------------------
+    def step(self, g, p, h, z=None, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT):
+        """(g_{k+1}, p_{k+1}) from (g_k, p_k). z: Newton start (default: guess from the
+        velocity of (g, p)). Raises ConvergenceError / DomainError (step 0, t = 0)."""
+        gf, p = self._g(g), self._v(p, "p")
+        hv = np.array([_positive(h, "h")])
+        tol, maxit = _positive(tol, "tol"), _int(maxit, "maxit", 1)
+        if z is None:
+            z = self._b.call("guess", self.velocity(g, p), gf, p, hv)[0]
+        else:
+            z = _array(z, (self.nz,), "z", "a vector of length nz")
+        code, g1, p1, _, it, r = self._b.step(gf, p, hv, z, tol, maxit)
+        if code != newton.OK:
+            raise _error(code, 0, 0.0, r, it)
+        return g1.reshape(self.n, self.n, order="F"), p1
+
+    def simulate(self, g0, h, steps, xi0=None, mu0=None, every=1, tol=newton.DEFAULT_TOL,
+                 maxit=newton.DEFAULT_MAXIT) -> Trajectory:
+        """Run ``steps`` steps of size h from g0 with initial velocity xi0 or momentum mu0
+        (exactly one), recording every ``every`` steps. The C backend runs all steps in one
+        call. On a failed step raises ConvergenceError (DomainError for tau) whose
+        ``.partial`` is the Trajectory so far (partial=True)."""
+        g0 = _array(g0, (self.n, self.n), "g0", "an n x n matrix")
+        h = _positive(h, "h")
+        steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
+        tol, maxit = _positive(tol, "tol"), _int(maxit, "maxit", 1)
+        if (xi0 is None) == (mu0 is None):
+            raise ModelError("give exactly one of xi0 (velocity) and mu0 (momentum)",
+                             field="xi0" if xi0 is not None else "mu0")
+        gf = g0.ravel(order="F")
+        e = self.defect(g0)
+        if not e <= DEFECT_MAX:
+            raise ModelError(f"g0 is not on the group (defect {e:.3g} > {DEFECT_MAX:g})",
+                             field="initial g")
+        if xi0 is not None:
+            xi0 = self._v(xi0, "xi0")
+            mu0 = self.legendre(g0, xi0)
+        else:
+            mu0 = self._v(mu0, "mu0")
+            xi0 = self.velocity(g0, mu0)
+        hv = np.array([h])
+        z0 = self._b.call("guess", xi0, gf, mu0, hv)[0]
+        done, g_rec, p_rec, st = self._b.simulate(gf, mu0, h, z0, steps, every, tol, maxit)
+        K = done // every + 1
+        n = self.n
+        g = np.ascontiguousarray(g_rec[:K].reshape(K, n, n).transpose(0, 2, 1))
+        err = None
+        if st["code"] != newton.OK:
+            err = _error(st["code"], st["step"], st["step"] * h, st["residual"],
+                         st["iterations"])
+        traj = Trajectory(t=np.arange(K) * every * h, g=g, mu=np.array(p_rec[:K]), h=h,
+                          every=every, partial=err is not None, error=err,
+                          newton_iterations=int(st["total_iterations"]), integrator=self)
+        if err is not None:
+            err.partial = traj
+            raise err
+        return traj

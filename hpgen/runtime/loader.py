@@ -1,0 +1,94 @@
+"""load(): open a generated module directory as an Integrator.
+
+meta.json (format 1) holds: format, hpgen_version, module, model, options {tableau, tau,
+rkmk}, hash, backend ("c" | "python", the default), n, d, nz, reduced, unknowns
+[[label, start, stop], ...], kernels {name: {"inputs": [[name, size], ...], "outputs": ...}}
+and c_work {name: {sz_arg, sz_res, sz_iw, sz_w}}.
+"""
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+from ..errors import ModelError
+from .backends import CBackend, PythonBackend
+from .integrator import Integrator
+
+META_FORMAT = 1
+BACKENDS = ("c", "python")
+KERNEL_NAMES = ("residual", "jacobian", "update", "guess", "legendre", "hessian", "energy",
+                "momentum", "defect", "margin")
+_SIZES = {"residual": ("nz", "nn", "d", "1", "|", "nz"),
+          "jacobian": ("nz", "nn", "d", "1", "|", "nznz"),
+          "update": ("nz", "nn", "d", "1", "|", "nn", "d"),
+          "guess": ("d", "nn", "d", "1", "|", "nz"), "legendre": ("nn", "d", "|", "d"),
+          "hessian": ("nn", "d", "|", "dd"), "energy": ("nn", "d", "|", "1"),
+          "momentum": ("nn", "d", "|", "d"), "defect": ("nn", "|", "1"),
+          "margin": ("nz", "1", "|", "1")}
+
+
+def read_meta(module_dir) -> dict:
+    """Read and validate meta.json; raises ModelError naming the file and field."""
+    path = Path(module_dir) / "meta.json"
+    try:
+        meta = json.loads(path.read_text())
+    except (OSError, ValueError) as exc:
+        raise ModelError(f"cannot read a generated module's meta.json ({exc}); "
+                         "regenerate the module", file=str(path)) from None
+
+    def bad(field, msg):
+        return ModelError(msg + "; regenerate the module with this hpgen", file=str(path),
+                          field=field)
+
+    if not isinstance(meta, dict) or meta.get("format") != META_FORMAT:
+        raise bad("format", f"unsupported format (expected {META_FORMAT})")
+    for key in ("n", "d", "nz"):
+        if not isinstance(meta.get(key), int) or meta[key] < 1:
+            raise bad(key, "expected a positive integer")
+    for key in ("module", "hash", "backend"):
+        if not isinstance(meta.get(key), str):
+            raise bad(key, "expected a string")
+    if not re.fullmatch(r"[0-9a-f]{16,128}", meta["hash"]):
+        raise bad("hash", "expected 16 to 128 lowercase hex digits")
+    if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,127}", meta["module"]):
+        raise bad("module", "expected an identifier")
+    if meta["backend"] not in BACKENDS:
+        raise bad("backend", f"expected one of {BACKENDS}")
+    n, d, nz = meta["n"], meta["d"], meta["nz"]
+    size = {"nz": nz, "nn": n * n, "d": d, "dd": d * d, "nznz": nz * nz, "1": 1}
+    kernels = meta.get("kernels")
+    if not isinstance(kernels, dict) or set(kernels) != set(KERNEL_NAMES):
+        raise bad("kernels", f"expected the kernels {KERNEL_NAMES}")
+    for name, spec in _SIZES.items():
+        k = kernels[name]
+        cut = spec.index("|")
+        try:
+            got = ([int(s) for _, s in k["inputs"]], [int(s) for _, s in k["outputs"]])
+        except (KeyError, TypeError, ValueError):
+            raise bad(f"kernels.{name}", "malformed signature") from None
+        want = ([size[s] for s in spec[:cut]], [size[s] for s in spec[cut + 1:]])
+        if got != want:
+            raise bad(f"kernels.{name}", f"sizes {got} do not match the contract {want}")
+    return meta
+
+
+def load(path, backend=None, *, cc=None, cflags=None) -> Integrator:
+    """The Integrator of the generated module directory ``path``.
+
+    backend: "c" (compile kernels.c once, load with ctypes) or "python" (import kernels.py
+    from the directory); None = the module's default from meta.json. cc/cflags: see
+    hpgen.runtime.build.build_library. Raises ModelError (bad directory or backend) and
+    BuildError (compiler missing or failing; backend="python" needs no compiler).
+    """
+    module_dir = Path(path)
+    meta = read_meta(module_dir)
+    backend = meta["backend"] if backend is None else backend
+    if backend == "c":
+        impl = CBackend(module_dir, meta, cc=cc, cflags=cflags)
+    elif backend == "python":
+        impl = PythonBackend(module_dir, meta)
+    else:
+        raise ModelError(f"unknown backend {backend!r}; expected one of {BACKENDS}",
+                         field="backend")
+    return Integrator(meta, impl)

@@ -1,0 +1,89 @@
+"""The result of Integrator.simulate.
+
+Records are taken every ``every`` steps, starting with step 0: record k is the state after
+step k*every, at time t_k = k*every*h (time in the model's unit). ``g`` is (K, n, n), ``mu``
+(K, d) the node momenta p_k (body frame, the pairing of g* with the algebra). The last step
+is recorded only if steps % every == 0. A partial trajectory (partial=True, error set) holds
+the records up to the last step completed before a failure.
+"""
+from __future__ import annotations
+
+import os
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+
+@dataclass(frozen=True, eq=False)
+class Trajectory:
+    t: np.ndarray                 # (K,)
+    g: np.ndarray                 # (K, n, n)
+    mu: np.ndarray                # (K, d) node momentum p_k
+    h: float
+    every: int
+    partial: bool = False
+    error: Any = None             # None or the ConvergenceError that stopped the run
+    newton_iterations: int = 0    # total over all steps attempted
+    integrator: Any = field(default=None, repr=False, compare=False)
+
+    def __post_init__(self):
+        for a in (self.t, self.g, self.mu):
+            a.flags.writeable = False
+
+    def __len__(self) -> int:
+        return len(self.t)
+
+    def _need(self):
+        if self.integrator is None:
+            raise ValueError("this Trajectory has no integrator attached")
+        return self.integrator
+
+    def energy(self) -> np.ndarray:
+        """(K,) energy <dl/dxi, xi> - l at each record (xi from the Legendre inverse)."""
+        it = self._need()
+        return np.array([it.energy(g, m) for g, m in zip(self.g, self.mu)])
+
+    def momentum(self) -> np.ndarray:
+        """(K, d) spatial momentum Ad*_{g^{-1}} p at each record."""
+        it = self._need()
+        return np.array([it.momentum(g, m) for g, m in zip(self.g, self.mu)]).reshape(-1, it.d)
+
+    def defect(self) -> np.ndarray:
+        """(K,) distance of g_k from the group."""
+        it = self._need()
+        return np.array([it.defect(g) for g in self.g])
+
+    def xi(self) -> np.ndarray:
+        """(K, d) body velocities xi_k = (dl/dxi)^{-1}(g_k, mu_k)."""
+        it = self._need()
+        return np.array([it.velocity(g, m) for g, m in zip(self.g, self.mu)]).reshape(-1, it.d)
+
+    def save(self, path) -> Path:
+        """Write an .npz (".npz" appended if missing) atomically: temp file + os.replace.
+
+        Arrays t, g, mu; scalars h, every, partial, newton_iterations; error (message or "");
+        module and hash of the generating module when known. Returns the path written.
+        """
+        path = Path(path)
+        if path.suffix != ".npz":
+            path = path.with_name(path.name + ".npz")
+        meta = getattr(self.integrator, "meta", None) or {}
+        data = {"t": self.t, "g": self.g, "mu": self.mu, "h": np.float64(self.h),
+                "every": np.int64(self.every), "partial": np.bool_(self.partial),
+                "newton_iterations": np.int64(self.newton_iterations),
+                "error": np.str_("" if self.error is None else str(self.error)),
+                "module": np.str_(meta.get("module", "")),
+                "hash": np.str_(meta.get("hash", ""))}
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp",
+                                   dir=path.parent if str(path.parent) else ".")
+        try:
+            with os.fdopen(fd, "wb") as fh:
+                np.savez(fh, **data)
+            os.replace(tmp, path)
+        finally:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+        return path

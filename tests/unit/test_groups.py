@@ -1,0 +1,265 @@
+"""Chart maps tau, dtau^{-1}, dtau of every catalog group, checked numerically.
+
+References are independent of the closed forms: scipy expm/logm, finite differences and casadi
+AD of tau (right-trivialized: dtau_x(y) = vee(D tau(x)[y] tau(x)^{-1}), Definition def:dtau),
+the Bernoulli series of eq:dexp, and 50-digit mpmath for the series functions.
+"""
+from __future__ import annotations
+
+import functools
+import math
+
+import casadi as ca
+import mpmath as mp
+import numpy as np
+import pytest
+import scipy.linalg as sla
+
+from hpgen.errors import ModelError
+from hpgen.groups import group_from_spec, series
+
+GROUPS = ("R2", "SO2", "SO3", "SE2", "SE3", ("SO3", "R3"))
+CASES = [(g, k) for g in GROUPS for k in group_from_spec(list(g) if isinstance(g, tuple) else g)
+         .tau_kinds]
+NORMS = (0.0, 1e-9, 0.3, 2.5)
+
+
+def _group(spec):
+    return group_from_spec(list(spec) if isinstance(spec, tuple) else spec)
+
+
+@functools.lru_cache(maxsize=None)
+def _funcs(spec, kind):
+    """Numeric casadi Functions of one (group, kind): maps, derivatives, hat and vee."""
+    G = _group(spec)
+    x = ca.SX.sym("x", G.d)
+    T, Di, D = G.tau(kind, x), G.dtau_inv(kind, x), G.dtau(kind, x)
+    maps = ca.Function("maps", [x], [T, Di, D, G.tau_margin(kind, x), G.group_defect(T)])
+    jT = ca.jacobian(ca.vec(T), x)
+    outs = [ca.vec(T), ca.vec(Di), ca.vec(D)]
+    j1 = [ca.jacobian(o, x) for o in outs]
+    j2 = [ca.jacobian(ca.vec(j), x) for j in j1]
+    derivs = ca.Function("derivs", [x], outs + j1 + j2)
+    M = ca.SX.sym("M", G.n, G.n)
+    return {"G": G, "maps": maps, "jtau": ca.Function("jtau", [x], [jT]), "derivs": derivs,
+            "hat": ca.Function("hat", [x], [G.hat(x)]), "vee": ca.Function("vee", [M], [G.vee(M)]),
+            "ad": ca.Function("ad", [x], [G.ad(x)])}
+
+
+def _ev(f, *args):
+    out = f(*args)
+    out = out if isinstance(out, (list, tuple)) else [out]
+    return [np.array(o, dtype=float) for o in out]
+
+
+def _points(spec, kind, seed=0):
+    """x = 0, then |x| ~ 1e-9, 0.3, 2.5 (skew: 0.9) along seeded random directions."""
+    G = _group(spec)
+    rng = np.random.default_rng(seed + 7 * len(str(spec)) + len(kind))
+    pts = [np.zeros(G.d)]
+    for r in NORMS[1:]:
+        r = min(r, 0.9) if kind == "skew" else r
+        for _ in range(2):
+            u = rng.normal(size=G.d)
+            if kind == "skew":  # the chart constraint is per SO factor
+                pts.append(r * u / np.linalg.norm(u) / math.sqrt(max(1, len(G.factors))))
+            else:
+                pts.append(r * u / np.linalg.norm(u))
+    return pts
+
+
+def _dtau_reference(F, x, h=2e-4):
+    """Right-trivialized tangent by a 4th-order central difference of tau.
+
+    Error ~ h^4 |tau^(5)| + eps |tau| / h: below 1e-11 here (skew at |x| = 0.9 is the worst).
+    """
+    G = F["G"]
+    T = _ev(F["maps"], x)[0]
+    Tinv = np.linalg.inv(T)
+    cols = []
+    for k in range(G.d):
+        e = np.zeros(G.d)
+        e[k] = h
+        tp = [_ev(F["maps"], x + m * e)[0] for m in (-2, -1, 1, 2)]
+        dT = (tp[0] - 8 * tp[1] + 8 * tp[2] - tp[3]) / (12 * h)
+        cols.append(_ev(F["vee"], dT @ Tinv)[0].ravel())
+    return np.column_stack(cols)
+
+
+def _dtau_ad(F, x):
+    G = F["G"]
+    T = _ev(F["maps"], x)[0]
+    J = _ev(F["jtau"], x)[0]
+    Tinv = np.linalg.inv(T)
+    return np.column_stack([_ev(F["vee"], J[:, k].reshape(G.n, G.n, order="F") @ Tinv)[0].ravel()
+                            for k in range(G.d)])
+
+
+@pytest.mark.parametrize("spec,kind", CASES)
+def test_tau_on_group_inverse_and_exp(spec, kind):
+    F = _funcs(spec, kind)
+    for x in _points(spec, kind):
+        T, _, _, margin, defect = _ev(F["maps"], x)
+        assert defect.item() < 1e-14, (x, defect)
+        assert margin.item() > 0
+        Tm = _ev(F["maps"], -x)[0]
+        assert np.max(np.abs(T @ Tm - np.eye(T.shape[0]))) < 1e-14
+        if kind == "exp":
+            ref = sla.expm(_ev(F["hat"], x)[0])
+            assert np.max(np.abs(T - ref)) < 1e-14, (x, np.max(np.abs(T - ref)))
+
+
+@pytest.mark.parametrize("spec,kind", CASES)
+def test_dtau_inv_against_derivative_of_tau(spec, kind):
+    F = _funcs(spec, kind)
+    for x in _points(spec, kind):
+        _, Di, D, _, _ = _ev(F["maps"], x)
+        I = np.eye(D.shape[0])
+        assert np.max(np.abs(D @ Di - I)) < 1e-13
+        fd = _dtau_reference(F, x)
+        assert np.max(np.abs(D - fd)) < 1e-9, (x, np.max(np.abs(D - fd)))
+        assert np.max(np.abs(Di @ fd - I)) < 1e-9
+        ad = _dtau_ad(F, x)  # AD of the tau formula: exact up to round-off
+        assert np.max(np.abs(D - ad)) < 1e-13 * max(1.0, np.max(np.abs(ad)))
+        assert np.max(np.abs(Di @ ad - I)) < 1e-13
+
+
+def _ad_series(adx, coeff, q=40):
+    """sum_{j <= q} coeff(j) ad_x^j."""
+    out, P = np.zeros_like(adx), np.eye(adx.shape[0])
+    for j in range(q + 1):
+        out, P = out + coeff(j) * P, P @ adx
+    return out
+
+
+@pytest.mark.parametrize("spec", GROUPS)
+def test_dexp_against_bernoulli_series(spec):
+    """eq:dexp: dexp^{-1}_x = sum_j B_j/j! ad_x^j (B_1 = -1/2), dexp_x = sum_j ad_x^j/(j+1)!."""
+    F = _funcs(spec, "exp")
+    for x in _points(spec, "exp")[:5]:  # |x| <= 0.3: 40 terms are exact to round-off
+        adx = _ev(F["ad"], x)[0]
+        _, Di, D, _, _ = _ev(F["maps"], x)
+        ref_inv = _ad_series(adx, lambda j: float(mp.bernoulli(j)) / math.factorial(j))
+        ref = _ad_series(adx, lambda j: 1.0 / math.factorial(j + 1))
+        assert np.max(np.abs(Di - ref_inv)) < 1e-14
+        assert np.max(np.abs(D - ref)) < 1e-14
+
+
+def _inv_chart(kind, g, vee):
+    if kind == "cay":  # cay(X) = g  <=>  X = 2 (g - I)(g + I)^{-1}
+        I = np.eye(g.shape[0])
+        return vee(2 * (g - I) @ np.linalg.inv(g + I))
+    return vee(np.real(sla.logm(g)))
+
+
+@pytest.mark.parametrize("spec", ["SO3", "SE3"])
+@pytest.mark.parametrize("kind", ["cay", "exp"])
+def test_first_order_expansion_of_inverse_chart(spec, kind):
+    """tau^{-1}(exp(-eta) tau(a) exp(eps)) = a + dtau^{-1}_a(-eta) + dtau^{-1}_{-a}(eps) + O(2)."""
+    F = _funcs(spec, kind)
+    rng = np.random.default_rng(3)
+    vee = lambda M: _ev(F["vee"], M)[0].ravel()  # noqa: E731
+    hat = lambda v: _ev(F["hat"], v)[0]  # noqa: E731
+    for a in _points(spec, kind)[1:]:
+        eta0, eps0 = rng.normal(size=len(a)), rng.normal(size=len(a))
+        eta0, eps0 = eta0 / np.linalg.norm(eta0), eps0 / np.linalg.norm(eps0)
+        residuals = []
+        for delta in (1e-4, 1e-5):
+            eta, eps = delta * eta0, delta * eps0
+            g = sla.expm(-hat(eta)) @ _ev(F["maps"], a)[0] @ sla.expm(hat(eps))
+            pred = a + _ev(F["maps"], a)[1] @ (-eta) + _ev(F["maps"], -a)[1] @ eps
+            residuals.append(np.linalg.norm(_inv_chart(kind, g, vee) - pred))
+        # O(delta^2): |residual| ~ delta^2 and dividing delta by 10 divides it by ~100
+        assert residuals[0] < 20 * 1e-4**2, residuals
+        assert residuals[0] / 200 < residuals[1] < residuals[0] / 50, residuals
+
+
+def _threshold_points(spec, kind):
+    """x = 0 and x whose rotation part has |w|^2 exactly equal to each series threshold s0."""
+    G = _group(spec)
+    pts = [np.zeros(G.d)]
+    if kind == "skew":
+        return pts + [0.5 * np.ones(G.d) / math.sqrt(G.d)]
+    for s0 in sorted({series.threshold(n) for n in series.SPECS}):
+        r = math.sqrt(s0)
+        assert r * r == s0  # thresholds are squares of doubles: |w|^2 == s0 exactly
+        for below in (False, True):
+            x = np.linspace(0.1, 0.6, G.d)  # translation parts stay generic
+            for L in G.factors:
+                if L.name in ("SO2", "SO3", "SE2", "SE3"):
+                    x[L.off:L.off + (3 if L.name in ("SO3", "SE3") else 1)] = 0.0
+                    x[L.off] = np.nextafter(r, 0.0) if below else r
+            pts.append(x)
+    return pts
+
+
+@pytest.mark.parametrize("spec,kind", CASES)
+def test_no_nan_in_maps_and_two_derivatives(spec, kind):
+    F = _funcs(spec, kind)
+    for x in _threshold_points(spec, kind):
+        for out in _ev(F["derivs"], x):
+            assert np.all(np.isfinite(out)), (spec, kind, x)
+
+
+def test_series_functions_against_mpmath_and_between_branches():
+    t = mp.mpf
+    exact = {
+        "sinc": lambda s: mp.sin(mp.sqrt(s)) / mp.sqrt(s),
+        "cosc": lambda s: (1 - mp.cos(mp.sqrt(s))) / s,
+        "sinc3": lambda s: (mp.sqrt(s) - mp.sin(mp.sqrt(s))) / s**t(1.5),
+        "dexpinv_c": lambda s: (1 - mp.sqrt(s) / 2 * mp.cot(mp.sqrt(s) / 2)) / s,
+    }
+    S = ca.SX.sym("s")
+    for name, spec in series.SPECS.items():
+        fn = ca.Function("f", [S], [series.evaluate(name, S), series.taylor(name, S),
+                                    series.exact(name, S)])
+        base = exact[spec.base]
+        truth = (lambda s, b=base: b(s)) if spec.deriv == 0 else \
+            (lambda s, b=base: mp.diff(b, s))
+        s0 = spec.s0
+        near = [s0 * (1 - 1e-3), np.nextafter(s0, 0), s0, np.nextafter(s0, 1e9), s0 * (1 + 1e-3)]
+        for s in [1e-20, 1e-9, 0.01, 0.2] + near + [1.5 * s0]:
+            val, tay, ex = (float(v) for v in fn(s))
+            with mp.workdps(120):  # enough digits for the cancellation at s = 1e-20
+                ref = float(truth(mp.mpf(s)))
+            assert abs(val - ref) <= 1.5e-15 * abs(ref), (name, s, val, ref)
+            if s in near:  # both branches are accurate on both sides of s0
+                assert abs(tay - ex) <= 1e-15 * abs(ref), (name, s, tay, ex)
+        assert float(fn(0.0)[0]) == series.coefficients(name)[0]
+        assert float(fn(1e-300)[0]) == series.coefficients(name)[0]
+
+
+def test_series_branches_finite_with_two_derivatives():
+    """Each branch on its own (not only the if_else) is NaN-free at s = 0 and s = s0."""
+    S = ca.SX.sym("s")
+    for name, spec in series.SPECS.items():
+        _, lo, hi = series.branches(name, S)
+        outs = [lo, hi]
+        outs += [ca.jacobian(o, S) for o in outs]
+        outs += [ca.jacobian(o, S) for o in outs[2:]]
+        fn = ca.Function("b", [S], outs)
+        for s in (0.0, 1e-300, np.nextafter(spec.s0, 0), spec.s0, 2 * spec.s0):
+            assert all(np.isfinite(float(v)) for v in fn(s)), (name, s)
+
+
+def test_unsupported_kind_raises_model_error():
+    x6 = ca.SX.sym("x", 6)
+    for spec, d in (("SE2", 3), ("SE3", 6), ("R2", 2), (("SO3", "R3"), 6)):
+        G = _group(spec)
+        with pytest.raises(ModelError) as err:
+            G.tau("skew", ca.SX.sym("x", d))
+        assert err.value.field == "integrator.tau"
+        assert "skew is not available" in str(err.value) and "use one of" in str(err.value)
+    with pytest.raises(ModelError, match="exp, cay, skew"):
+        _group("SO3").dtau_inv("rk4", x6[0:3])
+
+
+def test_margins_sign():
+    cases = [("SO3", "exp", [3.0, 0, 0], True), ("SO3", "exp", [3.2, 0, 0], False),
+             ("SE3", "exp", [0, 0, 3.2, 9, 9, 9], False), ("SE2", "exp", [3.1, 5, 5], True),
+             ("SO2", "exp", [3.2], False), ("SO3", "skew", [0.99, 0, 0], True),
+             ("SO3", "skew", [0.6, 0.6, 0.6], False), ("SO2", "skew", [1.01], False),
+             ("SO3", "cay", [100, 0, 0], True), ("SE3", "cay", [0, 0, 50, 1, 1, 1], True)]
+    for spec, kind, x, inside in cases:
+        m = _ev(_funcs(spec, kind)["maps"], np.array(x, float))[3].item()
+        assert (m > 0) == inside, (spec, kind, x, m)
