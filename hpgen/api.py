@@ -75,7 +75,12 @@ def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
                           tuple(cflags) if cflags else None)
     module_dir = build_module(model, opts)
     from .runtime import load
-    return load(module_dir, backend=opts.backend)
+    return load(module_dir, backend=opts.backend, cc=opts.cc, cflags=opts.cflags)
+
+
+def module_key(text: str, opts: CompileOptions) -> str:
+    """Cache key and content hash of a module: model text, code-changing options, version."""
+    return cache.cache_key(CODE_FORMAT, __version__, text, opts.key())
 
 
 def build_module(model, opts: CompileOptions) -> Path:
@@ -83,7 +88,7 @@ def build_module(model, opts: CompileOptions) -> Path:
     opts.validate()
     text = read_model_text(model)
     cache_dir = Path(opts.cache_dir) if opts.cache_dir else cache.default_cache_dir()
-    key = cache.cache_key(CODE_FORMAT, __version__, text, opts.key())
+    key = module_key(text, opts)
     entry = cache_dir / key
     if not cache.is_valid(entry):
         with cache.locked(cache_dir, key):

@@ -61,22 +61,34 @@ class Trajectory:
         it = self._need()
         return np.array([it.velocity(g, m) for g, m in zip(self.g, self.mu)]).reshape(-1, it.d)
 
-    def save(self, path) -> Path:
+    def observables(self, names) -> dict:
+        """The arrays a scene's ``record:`` list asks for, by name: g, mu, xi, energy,
+        momentum (spatial, Ad*_{g^-1} p), defect; t is always included."""
+        compute = {"g": lambda: self.g, "mu": lambda: self.mu, "xi": self.xi,
+                   "energy": self.energy, "momentum": self.momentum, "defect": self.defect}
+        unknown = [n for n in names if n not in compute]
+        if unknown:
+            raise ValueError(f"unknown record names {unknown}; expected some of {sorted(compute)}")
+        return {"t": self.t, **{n: compute[n]() for n in names}}
+
+    def save(self, path, arrays: dict | None = None) -> Path:
         """Write an .npz (".npz" appended if missing) atomically: temp file + os.replace.
 
-        Arrays t, g, mu; scalars h, every, partial, newton_iterations; error (message or "");
-        module and hash of the generating module when known. Returns the path written.
+        Arrays t, g, mu (or, if ``arrays`` is given, those: see ``observables``); scalars h,
+        every, partial, newton_iterations; error (message or ""); module and hash of the
+        generating module when known. Returns the path written.
         """
         path = Path(path)
         if path.suffix != ".npz":
             path = path.with_name(path.name + ".npz")
         meta = getattr(self.integrator, "meta", None) or {}
-        data = {"t": self.t, "g": self.g, "mu": self.mu, "h": np.float64(self.h),
+        data = dict(arrays) if arrays is not None else {"t": self.t, "g": self.g, "mu": self.mu}
+        data.update({"h": np.float64(self.h),
                 "every": np.int64(self.every), "partial": np.bool_(self.partial),
                 "newton_iterations": np.int64(self.newton_iterations),
                 "error": np.str_("" if self.error is None else str(self.error)),
                 "module": np.str_(meta.get("module", "")),
-                "hash": np.str_(meta.get("hash", ""))}
+                "hash": np.str_(meta.get("hash", ""))})
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp",
                                    dir=path.parent if str(path.parent) else ".")
         try:

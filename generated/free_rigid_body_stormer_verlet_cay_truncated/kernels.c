@@ -1,0 +1,1860 @@
+/*
+ * hpgen generated module free_rigid_body_stormer_verlet_cay_truncated -- do not edit, regenerate with hpgen
+ * model: free_rigid_body
+ * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
+ * hpgen version: 0.1.0
+ * content hash: b234f21e301a263f3d3ed1d60c0c09599cdf4d7114b59d4277d609ee7208397b
+ *
+ * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
+ * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
+ * (g[i + j*n]), h is a scalar at the API and a 1-vector for the kernels. No static mutable
+ * state: every function is thread-safe; work arrays live on the stack, sized at codegen time.
+ * Status codes: 0 ok, 1 Newton did not converge, 2 non-finite value (or singular Jacobian),
+ * 3 tau out of its domain (margin(z, h) <= 0 after convergence), -1 invalid argument.
+ */
+/* Standard headers first: the CasADi part below is compiled under hidden visibility. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#if defined(__GNUC__)
+#pragma GCC visibility push(hidden)
+#endif
+/* ======================= CasADi-generated code (casadi.CodeGenerator) ================== */
+/* How to prefix internal symbols */
+#ifdef CASADI_CODEGEN_PREFIX
+  #define CASADI_NAMESPACE_CONCAT(NS, ID) _CASADI_NAMESPACE_CONCAT(NS, ID)
+  #define _CASADI_NAMESPACE_CONCAT(NS, ID) NS ## ID
+  #define CASADI_PREFIX(ID) CASADI_NAMESPACE_CONCAT(CODEGEN_PREFIX, ID)
+#else
+  #define CASADI_PREFIX(ID) hpgen_free_rigid_body_stormer_verlet_cay_truncated__ ## ID
+#endif
+
+#include <math.h>
+
+#ifndef casadi_real
+#define casadi_real double
+#endif
+
+#ifndef casadi_int
+#define casadi_int long long int
+#endif
+
+/* Add prefix to internal symbols */
+#define casadi_f0 CASADI_PREFIX(f0)
+#define casadi_f1 CASADI_PREFIX(f1)
+#define casadi_f2 CASADI_PREFIX(f2)
+#define casadi_f3 CASADI_PREFIX(f3)
+#define casadi_f4 CASADI_PREFIX(f4)
+#define casadi_f5 CASADI_PREFIX(f5)
+#define casadi_f6 CASADI_PREFIX(f6)
+#define casadi_f7 CASADI_PREFIX(f7)
+#define casadi_f8 CASADI_PREFIX(f8)
+#define casadi_f9 CASADI_PREFIX(f9)
+#define casadi_fabs CASADI_PREFIX(fabs)
+#define casadi_fmax CASADI_PREFIX(fmax)
+#define casadi_s0 CASADI_PREFIX(s0)
+#define casadi_s1 CASADI_PREFIX(s1)
+#define casadi_s2 CASADI_PREFIX(s2)
+#define casadi_sq CASADI_PREFIX(sq)
+
+/* Symbol visibility in DLLs */
+#ifndef CASADI_SYMBOL_EXPORT
+  #if defined(_WIN32) || defined(__WIN32__) || defined(__CYGWIN__)
+    #if defined(STATIC_LINKED)
+      #define CASADI_SYMBOL_EXPORT
+    #else
+      #define CASADI_SYMBOL_EXPORT __declspec(dllexport)
+    #endif
+  #elif defined(__GNUC__) && defined(GCC_HASCLASSVISIBILITY)
+    #define CASADI_SYMBOL_EXPORT __attribute__ ((visibility ("default")))
+  #else
+    #define CASADI_SYMBOL_EXPORT
+  #endif
+#endif
+
+casadi_real casadi_sq(casadi_real x) { return x*x;}
+
+casadi_real casadi_fabs(casadi_real x) {
+/* Pre-c99 compatibility */
+#if __STDC_VERSION__ < 199901L
+  return x>0 ? x : -x;
+#else
+  return fabs(x);
+#endif
+}
+
+casadi_real casadi_fmax(casadi_real x, casadi_real y) {
+/* Pre-c99 compatibility */
+#if __STDC_VERSION__ < 199901L
+  return x>y ? x : y;
+#else
+  return fmax(x, y);
+#endif
+}
+
+/* Configuration this file was compiled with */
+CASADI_SYMBOL_EXPORT void hpgen_free_rigid_body_stormer_verlet_cay_truncated__casadi_version(int* major, int* minor, int* patch) {
+  *major = 3;
+  *minor = 8;
+  *patch = 2;
+}
+CASADI_SYMBOL_EXPORT int hpgen_free_rigid_body_stormer_verlet_cay_truncated__casadi_int_size(void) { return (int) sizeof(casadi_int); }
+CASADI_SYMBOL_EXPORT int hpgen_free_rigid_body_stormer_verlet_cay_truncated__casadi_real_size(void) { return (int) sizeof(casadi_real); }
+
+static const casadi_int casadi_s0[3] = {3, 1, 1};
+static const casadi_int casadi_s1[3] = {9, 1, 1};
+static const casadi_int casadi_s2[3] = {1, 1, 1};
+
+/* residual:(z[3],g[9],p[3],h)->(F[3]) */
+static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13;
+  a00=arg[2]? arg[2][0] : 0;
+  a01=arg[3]? arg[3][0] : 0;
+  a02=arg[0]? arg[0][1] : 0;
+  a03=(a01*a02);
+  a04=2.;
+  a05=(a03/a04);
+  a06=arg[0]? arg[0][2] : 0;
+  a07=(a01*a06);
+  a08=arg[0]? arg[0][0] : 0;
+  a01=(a01*a08);
+  a09=(a07*a01);
+  a10=4.;
+  a09=(a09/a10);
+  a09=(a05+a09);
+  a11=6.6666666666666663e-01;
+  a11=(a11*a06);
+  a09=(a09*a11);
+  a06=(a03*a01);
+  a06=(a06/a10);
+  a12=(a07/a04);
+  a06=(a06-a12);
+  a06=(a06*a02);
+  a09=(a09+a06);
+  a06=1.;
+  a13=casadi_sq(a01);
+  a13=(a13/a10);
+  a13=(a06+a13);
+  a08=(2.*a08);
+  a13=(a13*a08);
+  a09=(a09+a13);
+  a00=(a00-a09);
+  if (res[0]!=0) res[0][0]=a00;
+  a00=arg[2]? arg[2][1] : 0;
+  a09=(a07*a03);
+  a09=(a09/a10);
+  a04=(a01/a04);
+  a09=(a09-a04);
+  a09=(a09*a11);
+  a13=casadi_sq(a03);
+  a13=(a13/a10);
+  a13=(a06+a13);
+  a13=(a13*a02);
+  a09=(a09+a13);
+  a13=(a01*a03);
+  a13=(a13/a10);
+  a12=(a12+a13);
+  a12=(a12*a08);
+  a09=(a09+a12);
+  a00=(a00-a09);
+  if (res[0]!=0) res[0][1]=a00;
+  a00=arg[2]? arg[2][2] : 0;
+  a09=casadi_sq(a07);
+  a09=(a09/a10);
+  a06=(a06+a09);
+  a06=(a06*a11);
+  a03=(a03*a07);
+  a03=(a03/a10);
+  a04=(a04+a03);
+  a04=(a04*a02);
+  a06=(a06+a04);
+  a01=(a01*a07);
+  a01=(a01/a10);
+  a01=(a01-a05);
+  a01=(a01*a08);
+  a06=(a06+a01);
+  a00=(a00-a06);
+  if (res[0]!=0) res[0][2]=a00;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int residual(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f0(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int residual_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void residual_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void residual_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void residual_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int residual_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int residual_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real residual_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* residual_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* residual_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "F";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* residual_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s0;
+    case 3: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* residual_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int residual_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int residual_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* jacobian:(z[3],g[9],p[3],h)->(J[9]) */
+static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  a00=6.6666666666666663e-01;
+  a01=arg[0]? arg[0][2] : 0;
+  a02=(a00*a01);
+  a03=2.5000000000000000e-01;
+  a04=arg[3]? arg[3][0] : 0;
+  a01=(a04*a01);
+  a05=(a01*a04);
+  a05=(a03*a05);
+  a06=(a02*a05);
+  a07=arg[0]? arg[0][1] : 0;
+  a08=(a04*a07);
+  a09=(a08*a04);
+  a09=(a03*a09);
+  a10=(a07*a09);
+  a11=(a06+a10);
+  a12=arg[0]? arg[0][0] : 0;
+  a13=(2.*a12);
+  a12=(a04*a12);
+  a14=(2.*a12);
+  a14=(a14*a04);
+  a14=(a03*a14);
+  a14=(a13*a14);
+  a15=1.;
+  a16=casadi_sq(a12);
+  a17=4.;
+  a16=(a16/a17);
+  a16=(a15+a16);
+  a16=(2.*a16);
+  a14=(a14+a16);
+  a11=(a11+a14);
+  a11=(-a11);
+  if (res[0]!=0) res[0][0]=a11;
+  a11=(a13*a09);
+  a14=2.;
+  a16=(a01/a14);
+  a18=(a12*a08);
+  a18=(a18/a17);
+  a18=(a16+a18);
+  a18=(2.*a18);
+  a11=(a11+a18);
+  a18=5.0000000000000000e-01;
+  a18=(a18*a04);
+  a19=(a02*a18);
+  a11=(a11-a19);
+  a11=(-a11);
+  if (res[0]!=0) res[0][1]=a11;
+  a11=(a07*a18);
+  a20=(a13*a05);
+  a21=(a12*a01);
+  a21=(a21/a17);
+  a22=(a08/a14);
+  a21=(a21-a22);
+  a21=(2.*a21);
+  a20=(a20+a21);
+  a20=(a11+a20);
+  a20=(-a20);
+  if (res[0]!=0) res[0][2]=a20;
+  a20=(a12*a04);
+  a20=(a03*a20);
+  a21=(a07*a20);
+  a23=(a08*a12);
+  a23=(a23/a17);
+  a23=(a23-a16);
+  a21=(a21+a23);
+  a19=(a19+a21);
+  a19=(-a19);
+  if (res[0]!=0) res[0][3]=a19;
+  a19=(2.*a08);
+  a19=(a19*a04);
+  a19=(a03*a19);
+  a19=(a07*a19);
+  a21=casadi_sq(a08);
+  a21=(a21/a17);
+  a21=(a15+a21);
+  a19=(a19+a21);
+  a06=(a06+a19);
+  a19=(a13*a20);
+  a06=(a06+a19);
+  a06=(-a06);
+  if (res[0]!=0) res[0][4]=a06;
+  a07=(a07*a05);
+  a14=(a12/a14);
+  a05=(a08*a01);
+  a05=(a05/a17);
+  a05=(a14+a05);
+  a07=(a07+a05);
+  a13=(a13*a18);
+  a07=(a07-a13);
+  a07=(-a07);
+  if (res[0]!=0) res[0][5]=a07;
+  a20=(a02*a20);
+  a12=(a01*a12);
+  a12=(a12/a17);
+  a22=(a22+a12);
+  a22=(a00*a22);
+  a20=(a20+a22);
+  a20=(a20-a11);
+  a20=(-a20);
+  if (res[0]!=0) res[0][6]=a20;
+  a09=(a02*a09);
+  a08=(a01*a08);
+  a08=(a08/a17);
+  a08=(a08-a14);
+  a08=(a00*a08);
+  a09=(a09+a08);
+  a09=(a09+a13);
+  a09=(-a09);
+  if (res[0]!=0) res[0][7]=a09;
+  a09=(2.*a01);
+  a09=(a09*a04);
+  a03=(a03*a09);
+  a02=(a02*a03);
+  a01=casadi_sq(a01);
+  a01=(a01/a17);
+  a15=(a15+a01);
+  a00=(a00*a15);
+  a02=(a02+a00);
+  a02=(a02+a10);
+  a02=(a02+a19);
+  a02=(-a02);
+  if (res[0]!=0) res[0][8]=a02;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int jacobian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f1(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int jacobian_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void jacobian_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void jacobian_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void jacobian_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int jacobian_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int jacobian_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real jacobian_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* jacobian_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* jacobian_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "J";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* jacobian_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s0;
+    case 3: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* jacobian_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int jacobian_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int jacobian_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* update:(z[3],g[9],p[3],h)->(g1[9],p1[3]) */
+static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30;
+  a00=arg[1]? arg[1][0] : 0;
+  a01=1.;
+  a02=4.;
+  a03=arg[3]? arg[3][0] : 0;
+  a04=arg[0]? arg[0][0] : 0;
+  a05=(a03*a04);
+  a06=casadi_sq(a05);
+  a07=arg[0]? arg[0][1] : 0;
+  a08=(a03*a07);
+  a09=casadi_sq(a08);
+  a10=(a06+a09);
+  a11=arg[0]? arg[0][2] : 0;
+  a03=(a03*a11);
+  a12=casadi_sq(a03);
+  a10=(a10+a12);
+  a10=(a02+a10);
+  a10=(a02/a10);
+  a13=(a12+a09);
+  a14=2.;
+  a13=(a13/a14);
+  a13=(a10*a13);
+  a13=(a01-a13);
+  a15=(a00*a13);
+  a16=arg[1]? arg[1][3] : 0;
+  a17=(a05*a08);
+  a18=(a17/a14);
+  a18=(a03+a18);
+  a18=(a10*a18);
+  a19=(a16*a18);
+  a15=(a15+a19);
+  a19=arg[1]? arg[1][6] : 0;
+  a20=(a05*a03);
+  a21=(a20/a14);
+  a21=(a21-a08);
+  a21=(a10*a21);
+  a22=(a19*a21);
+  a15=(a15+a22);
+  if (res[0]!=0) res[0][0]=a15;
+  a15=arg[1]? arg[1][1] : 0;
+  a22=(a15*a13);
+  a23=arg[1]? arg[1][4] : 0;
+  a24=(a23*a18);
+  a22=(a22+a24);
+  a24=arg[1]? arg[1][7] : 0;
+  a25=(a24*a21);
+  a22=(a22+a25);
+  if (res[0]!=0) res[0][1]=a22;
+  a22=arg[1]? arg[1][2] : 0;
+  a13=(a22*a13);
+  a25=arg[1]? arg[1][5] : 0;
+  a18=(a25*a18);
+  a13=(a13+a18);
+  a18=arg[1]? arg[1][8] : 0;
+  a21=(a18*a21);
+  a13=(a13+a21);
+  if (res[0]!=0) res[0][2]=a13;
+  a13=(a08*a05);
+  a21=(a13/a14);
+  a21=(a21-a03);
+  a21=(a10*a21);
+  a26=(a00*a21);
+  a27=(a12+a06);
+  a27=(a27/a14);
+  a27=(a10*a27);
+  a27=(a01-a27);
+  a28=(a16*a27);
+  a26=(a26+a28);
+  a28=(a08*a03);
+  a29=(a28/a14);
+  a29=(a05+a29);
+  a29=(a10*a29);
+  a30=(a19*a29);
+  a26=(a26+a30);
+  if (res[0]!=0) res[0][3]=a26;
+  a26=(a15*a21);
+  a30=(a23*a27);
+  a26=(a26+a30);
+  a30=(a24*a29);
+  a26=(a26+a30);
+  if (res[0]!=0) res[0][4]=a26;
+  a21=(a22*a21);
+  a27=(a25*a27);
+  a21=(a21+a27);
+  a29=(a18*a29);
+  a21=(a21+a29);
+  if (res[0]!=0) res[0][5]=a21;
+  a21=(a03*a05);
+  a29=(a21/a14);
+  a29=(a08+a29);
+  a29=(a10*a29);
+  a00=(a00*a29);
+  a27=(a03*a08);
+  a26=(a27/a14);
+  a26=(a26-a05);
+  a26=(a10*a26);
+  a16=(a16*a26);
+  a00=(a00+a16);
+  a16=(a09+a06);
+  a16=(a16/a14);
+  a10=(a10*a16);
+  a10=(a01-a10);
+  a19=(a19*a10);
+  a00=(a00+a19);
+  if (res[0]!=0) res[0][6]=a00;
+  a15=(a15*a29);
+  a23=(a23*a26);
+  a15=(a15+a23);
+  a24=(a24*a10);
+  a15=(a15+a24);
+  if (res[0]!=0) res[0][7]=a15;
+  a22=(a22*a29);
+  a25=(a25*a26);
+  a22=(a22+a25);
+  a18=(a18*a10);
+  a22=(a22+a18);
+  if (res[0]!=0) res[0][8]=a22;
+  a21=(a21/a02);
+  a08=(a08/a14);
+  a21=(a21-a08);
+  a22=6.6666666666666663e-01;
+  a22=(a22*a11);
+  a21=(a21*a22);
+  a03=(a03/a14);
+  a13=(a13/a02);
+  a13=(a03+a13);
+  a13=(a13*a07);
+  a21=(a21+a13);
+  a06=(a06/a02);
+  a06=(a01+a06);
+  a04=(2.*a04);
+  a06=(a06*a04);
+  a21=(a21+a06);
+  if (res[1]!=0) res[1][0]=a21;
+  a05=(a05/a14);
+  a27=(a27/a02);
+  a27=(a05+a27);
+  a27=(a27*a22);
+  a09=(a09/a02);
+  a09=(a01+a09);
+  a09=(a09*a07);
+  a27=(a27+a09);
+  a17=(a17/a02);
+  a17=(a17-a03);
+  a17=(a17*a04);
+  a27=(a27+a17);
+  if (res[1]!=0) res[1][1]=a27;
+  a12=(a12/a02);
+  a01=(a01+a12);
+  a01=(a01*a22);
+  a28=(a28/a02);
+  a28=(a28-a05);
+  a28=(a28*a07);
+  a01=(a01+a28);
+  a20=(a20/a02);
+  a08=(a08+a20);
+  a08=(a08*a04);
+  a01=(a01+a08);
+  if (res[1]!=0) res[1][2]=a01;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int update(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f2(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int update_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void update_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void update_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void update_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int update_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int update_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real update_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* update_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* update_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "g1";
+    case 1: return "p1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* update_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s0;
+    case 3: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* update_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int update_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int update_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* guess:(xi[3],g[9],p[3],h)->(z0[3]) */
+static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=arg[0]? arg[0][0] : 0;
+  if (res[0]!=0) res[0][0]=a0;
+  a0=arg[0]? arg[0][1] : 0;
+  if (res[0]!=0) res[0][1]=a0;
+  a0=arg[0]? arg[0][2] : 0;
+  if (res[0]!=0) res[0][2]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int guess(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f3(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int guess_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void guess_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void guess_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void guess_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int guess_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int guess_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real guess_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* guess_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xi";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* guess_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "z0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* guess_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s0;
+    case 3: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* guess_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int guess_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int guess_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* legendre:(g[9],xi[3])->(mu[3]) */
+static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1;
+  a0=arg[1]? arg[1][0] : 0;
+  a0=(2.*a0);
+  if (res[0]!=0) res[0][0]=a0;
+  a0=arg[1]? arg[1][1] : 0;
+  if (res[0]!=0) res[0][1]=a0;
+  a0=6.6666666666666663e-01;
+  a1=arg[1]? arg[1][2] : 0;
+  a0=(a0*a1);
+  if (res[0]!=0) res[0][2]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int legendre(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f4(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int legendre_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void legendre_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void legendre_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void legendre_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int legendre_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int legendre_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real legendre_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* legendre_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "xi";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* legendre_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "mu";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* legendre_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* legendre_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int legendre_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int legendre_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* hessian:(g[9],xi[3])->(H[9]) */
+static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1;
+  a0=2.;
+  if (res[0]!=0) res[0][0]=a0;
+  a0=0.;
+  if (res[0]!=0) res[0][1]=a0;
+  if (res[0]!=0) res[0][2]=a0;
+  if (res[0]!=0) res[0][3]=a0;
+  a1=1.;
+  if (res[0]!=0) res[0][4]=a1;
+  if (res[0]!=0) res[0][5]=a0;
+  if (res[0]!=0) res[0][6]=a0;
+  if (res[0]!=0) res[0][7]=a0;
+  a0=6.6666666666666663e-01;
+  if (res[0]!=0) res[0][8]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int hessian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f5(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int hessian_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void hessian_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void hessian_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void hessian_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int hessian_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int hessian_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real hessian_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* hessian_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "xi";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* hessian_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "H";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* hessian_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* hessian_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int hessian_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int hessian_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* energy:(g[9],xi[3])->(E) */
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4;
+  a0=arg[1]? arg[1][0] : 0;
+  a1=(2.*a0);
+  a1=(a1*a0);
+  a2=arg[1]? arg[1][1] : 0;
+  a2=casadi_sq(a2);
+  a1=(a1+a2);
+  a3=6.6666666666666663e-01;
+  a4=arg[1]? arg[1][2] : 0;
+  a3=(a3*a4);
+  a3=(a3*a4);
+  a1=(a1+a3);
+  a3=5.0000000000000000e-01;
+  a3=(a3*a2);
+  a0=casadi_sq(a0);
+  a3=(a3+a0);
+  a0=3.3333333333333331e-01;
+  a4=casadi_sq(a4);
+  a0=(a0*a4);
+  a3=(a3+a0);
+  a1=(a1-a3);
+  if (res[0]!=0) res[0][0]=a1;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f6(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int energy_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void energy_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void energy_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void energy_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int energy_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int energy_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real energy_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* energy_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "xi";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* energy_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "E";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* energy_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* energy_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* momentum:(g[9],p[3])->(m[3]) */
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13;
+  a00=arg[0]? arg[0][8] : 0;
+  a01=arg[0]? arg[0][4] : 0;
+  a02=(a00*a01);
+  a03=arg[0]? arg[0][7] : 0;
+  a04=arg[0]? arg[0][5] : 0;
+  a05=(a03*a04);
+  a02=(a02-a05);
+  a05=arg[1]? arg[1][0] : 0;
+  a02=(a02*a05);
+  a06=arg[0]? arg[0][2] : 0;
+  a07=(a06*a03);
+  a08=arg[0]? arg[0][1] : 0;
+  a09=(a08*a00);
+  a07=(a07-a09);
+  a09=arg[1]? arg[1][1] : 0;
+  a07=(a07*a09);
+  a02=(a02+a07);
+  a07=(a04*a08);
+  a10=(a01*a06);
+  a07=(a07-a10);
+  a10=arg[1]? arg[1][2] : 0;
+  a07=(a07*a10);
+  a02=(a02+a07);
+  if (res[0]!=0) res[0][0]=a02;
+  a02=arg[0]? arg[0][6] : 0;
+  a07=(a02*a04);
+  a11=arg[0]? arg[0][3] : 0;
+  a12=(a00*a11);
+  a07=(a07-a12);
+  a07=(a07*a05);
+  a12=arg[0]? arg[0][0] : 0;
+  a00=(a12*a00);
+  a13=(a06*a02);
+  a00=(a00-a13);
+  a00=(a00*a09);
+  a07=(a07+a00);
+  a06=(a11*a06);
+  a04=(a04*a12);
+  a06=(a06-a04);
+  a06=(a06*a10);
+  a07=(a07+a06);
+  if (res[0]!=0) res[0][1]=a07;
+  a07=(a03*a11);
+  a06=(a02*a01);
+  a07=(a07-a06);
+  a07=(a07*a05);
+  a02=(a08*a02);
+  a03=(a12*a03);
+  a02=(a02-a03);
+  a02=(a02*a09);
+  a07=(a07+a02);
+  a01=(a01*a12);
+  a11=(a11*a08);
+  a01=(a01-a11);
+  a01=(a01*a10);
+  a07=(a07+a01);
+  if (res[0]!=0) res[0][2]=a07;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int momentum(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f7(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int momentum_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void momentum_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void momentum_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void momentum_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int momentum_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int momentum_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real momentum_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* momentum_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* momentum_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "m";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* momentum_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* momentum_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int momentum_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int momentum_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* defect:(g[9])->(e) */
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12;
+  a00=arg[0]? arg[0][0] : 0;
+  a01=casadi_sq(a00);
+  a02=arg[0]? arg[0][1] : 0;
+  a03=casadi_sq(a02);
+  a01=(a01+a03);
+  a03=arg[0]? arg[0][2] : 0;
+  a04=casadi_sq(a03);
+  a01=(a01+a04);
+  a04=1.;
+  a01=(a01-a04);
+  a01=casadi_fabs(a01);
+  a05=arg[0]? arg[0][3] : 0;
+  a06=(a05*a00);
+  a07=arg[0]? arg[0][4] : 0;
+  a08=(a07*a02);
+  a06=(a06+a08);
+  a08=arg[0]? arg[0][5] : 0;
+  a09=(a08*a03);
+  a06=(a06+a09);
+  a06=casadi_fabs(a06);
+  a01=casadi_fmax(a01,a06);
+  a06=arg[0]? arg[0][6] : 0;
+  a09=(a06*a00);
+  a10=arg[0]? arg[0][7] : 0;
+  a11=(a10*a02);
+  a09=(a09+a11);
+  a11=arg[0]? arg[0][8] : 0;
+  a12=(a11*a03);
+  a09=(a09+a12);
+  a09=casadi_fabs(a09);
+  a01=casadi_fmax(a01,a09);
+  a09=(a00*a05);
+  a12=(a02*a07);
+  a09=(a09+a12);
+  a12=(a03*a08);
+  a09=(a09+a12);
+  a09=casadi_fabs(a09);
+  a01=casadi_fmax(a01,a09);
+  a09=casadi_sq(a05);
+  a12=casadi_sq(a07);
+  a09=(a09+a12);
+  a12=casadi_sq(a08);
+  a09=(a09+a12);
+  a09=(a09-a04);
+  a09=casadi_fabs(a09);
+  a01=casadi_fmax(a01,a09);
+  a09=(a06*a05);
+  a12=(a10*a07);
+  a09=(a09+a12);
+  a12=(a11*a08);
+  a09=(a09+a12);
+  a09=casadi_fabs(a09);
+  a01=casadi_fmax(a01,a09);
+  a09=(a00*a06);
+  a12=(a02*a10);
+  a09=(a09+a12);
+  a12=(a03*a11);
+  a09=(a09+a12);
+  a09=casadi_fabs(a09);
+  a01=casadi_fmax(a01,a09);
+  a09=(a05*a06);
+  a12=(a07*a10);
+  a09=(a09+a12);
+  a12=(a08*a11);
+  a09=(a09+a12);
+  a09=casadi_fabs(a09);
+  a01=casadi_fmax(a01,a09);
+  a09=casadi_sq(a06);
+  a12=casadi_sq(a10);
+  a09=(a09+a12);
+  a12=casadi_sq(a11);
+  a09=(a09+a12);
+  a09=(a09-a04);
+  a09=casadi_fabs(a09);
+  a01=casadi_fmax(a01,a09);
+  a09=(a07*a11);
+  a12=(a10*a08);
+  a09=(a09-a12);
+  a00=(a00*a09);
+  a11=(a02*a11);
+  a10=(a10*a03);
+  a11=(a11-a10);
+  a05=(a05*a11);
+  a00=(a00-a05);
+  a02=(a02*a08);
+  a07=(a07*a03);
+  a02=(a02-a07);
+  a06=(a06*a02);
+  a00=(a00+a06);
+  a00=(a00-a04);
+  a00=casadi_fabs(a00);
+  a01=casadi_fmax(a01,a00);
+  if (res[0]!=0) res[0][0]=a01;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int defect(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f8(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int defect_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void defect_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void defect_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void defect_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int defect_n_in(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_int defect_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real defect_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* defect_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* defect_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "e";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* defect_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* defect_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int defect_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int defect_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* margin:(z[3],h)->(m) */
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=1.;
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int margin(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f9(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int margin_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void margin_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void margin_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void margin_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int margin_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int margin_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real margin_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* margin_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* margin_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "m";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* margin_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* margin_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int margin_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int margin_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+
+
+/* ======================= end of CasADi-generated code =================================== */
+#if defined(__GNUC__)
+#pragma GCC visibility pop
+#define HPGEN_EXPORT __attribute__((visibility("default")))
+#else
+#define HPGEN_EXPORT
+#endif
+
+#define HPGEN_ABI 1
+#define HPGEN_N 3
+#define HPGEN_NN (HPGEN_N * HPGEN_N)
+#define HPGEN_D 3
+#define HPGEN_NZ 3
+#define HPGEN_OK 0
+#define HPGEN_NO_CONVERGENCE 1
+#define HPGEN_NONFINITE 2
+#define HPGEN_DOMAIN 3
+#define HPGEN_INVALID (-1)
+/* Newton stalls at round-off: stop when |dz| stopped decreasing while below this * (1+|z|) */
+#define HPGEN_ROUNDOFF_FLOOR 1e-11
+
+typedef struct hpgen_status {
+    long long code;              /* HPGEN_OK, ... */
+    long long step;              /* failing step index, or steps done on success */
+    long long iterations;        /* Newton iterations of the last step attempted */
+    long long total_iterations;  /* Newton iterations over all steps */
+    double residual;             /* inf-norm of the last residual evaluated */
+} hpgen_status;
+
+HPGEN_EXPORT const char* hpgen_hash(void) { return "b234f21e301a263f3d3ed1d60c0c09599cdf4d7114b59d4277d609ee7208397b"; }
+
+/* out[0..3] = ABI version, n, d, nz */
+HPGEN_EXPORT void hpgen_dims(long long* out) {
+    out[0] = HPGEN_ABI; out[1] = HPGEN_N; out[2] = HPGEN_D; out[3] = HPGEN_NZ;
+}
+
+/* ---- kernel wrappers: dense column-major arguments, CasADi work arrays on the stack ---- */
+
+/* residual(z[3], g[9], p[3], h[1]) -> (F[3]) */
+#define HPGEN_RESIDUAL_SZ_ARG 4
+#define HPGEN_RESIDUAL_SZ_RES 1
+#define HPGEN_RESIDUAL_SZ_IW 0
+#define HPGEN_RESIDUAL_SZ_W 14
+HPGEN_EXPORT int hpgen_kernel_residual(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_RESIDUAL_SZ_ARG + 1];
+    casadi_real* res[HPGEN_RESIDUAL_SZ_RES + 1];
+    casadi_int iw[HPGEN_RESIDUAL_SZ_IW + 1];
+    casadi_real w[HPGEN_RESIDUAL_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = residual(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+/* jacobian(z[3], g[9], p[3], h[1]) -> (J[9]) */
+#define HPGEN_JACOBIAN_SZ_ARG 4
+#define HPGEN_JACOBIAN_SZ_RES 1
+#define HPGEN_JACOBIAN_SZ_IW 0
+#define HPGEN_JACOBIAN_SZ_W 24
+HPGEN_EXPORT int hpgen_kernel_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_JACOBIAN_SZ_ARG + 1];
+    casadi_real* res[HPGEN_JACOBIAN_SZ_RES + 1];
+    casadi_int iw[HPGEN_JACOBIAN_SZ_IW + 1];
+    casadi_real w[HPGEN_JACOBIAN_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = jacobian(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+/* update(z[3], g[9], p[3], h[1]) -> (g1[9], p1[3]) */
+#define HPGEN_UPDATE_SZ_ARG 4
+#define HPGEN_UPDATE_SZ_RES 2
+#define HPGEN_UPDATE_SZ_IW 0
+#define HPGEN_UPDATE_SZ_W 31
+HPGEN_EXPORT int hpgen_kernel_update(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1) {
+    const casadi_real* arg[HPGEN_UPDATE_SZ_ARG + 1];
+    casadi_real* res[HPGEN_UPDATE_SZ_RES + 1];
+    casadi_int iw[HPGEN_UPDATE_SZ_IW + 1];
+    casadi_real w[HPGEN_UPDATE_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    res[1] = out1;
+    flag = update(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+/* guess(xi[3], g[9], p[3], h[1]) -> (z0[3]) */
+#define HPGEN_GUESS_SZ_ARG 4
+#define HPGEN_GUESS_SZ_RES 1
+#define HPGEN_GUESS_SZ_IW 0
+#define HPGEN_GUESS_SZ_W 1
+HPGEN_EXPORT int hpgen_kernel_guess(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_GUESS_SZ_ARG + 1];
+    casadi_real* res[HPGEN_GUESS_SZ_RES + 1];
+    casadi_int iw[HPGEN_GUESS_SZ_IW + 1];
+    casadi_real w[HPGEN_GUESS_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = guess(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+/* legendre(g[9], xi[3]) -> (mu[3]) */
+#define HPGEN_LEGENDRE_SZ_ARG 2
+#define HPGEN_LEGENDRE_SZ_RES 1
+#define HPGEN_LEGENDRE_SZ_IW 0
+#define HPGEN_LEGENDRE_SZ_W 2
+HPGEN_EXPORT int hpgen_kernel_legendre(const double* in0, const double* in1, double* out0) {
+    const casadi_real* arg[HPGEN_LEGENDRE_SZ_ARG + 1];
+    casadi_real* res[HPGEN_LEGENDRE_SZ_RES + 1];
+    casadi_int iw[HPGEN_LEGENDRE_SZ_IW + 1];
+    casadi_real w[HPGEN_LEGENDRE_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    res[0] = out0;
+    flag = legendre(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+/* hessian(g[9], xi[3]) -> (H[9]) */
+#define HPGEN_HESSIAN_SZ_ARG 2
+#define HPGEN_HESSIAN_SZ_RES 1
+#define HPGEN_HESSIAN_SZ_IW 0
+#define HPGEN_HESSIAN_SZ_W 2
+HPGEN_EXPORT int hpgen_kernel_hessian(const double* in0, const double* in1, double* out0) {
+    const casadi_real* arg[HPGEN_HESSIAN_SZ_ARG + 1];
+    casadi_real* res[HPGEN_HESSIAN_SZ_RES + 1];
+    casadi_int iw[HPGEN_HESSIAN_SZ_IW + 1];
+    casadi_real w[HPGEN_HESSIAN_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    res[0] = out0;
+    flag = hessian(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+/* energy(g[9], xi[3]) -> (E[1]) */
+#define HPGEN_ENERGY_SZ_ARG 2
+#define HPGEN_ENERGY_SZ_RES 1
+#define HPGEN_ENERGY_SZ_IW 0
+#define HPGEN_ENERGY_SZ_W 5
+HPGEN_EXPORT int hpgen_kernel_energy(const double* in0, const double* in1, double* out0) {
+    const casadi_real* arg[HPGEN_ENERGY_SZ_ARG + 1];
+    casadi_real* res[HPGEN_ENERGY_SZ_RES + 1];
+    casadi_int iw[HPGEN_ENERGY_SZ_IW + 1];
+    casadi_real w[HPGEN_ENERGY_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    res[0] = out0;
+    flag = energy(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+/* momentum(g[9], p[3]) -> (m[3]) */
+#define HPGEN_MOMENTUM_SZ_ARG 2
+#define HPGEN_MOMENTUM_SZ_RES 1
+#define HPGEN_MOMENTUM_SZ_IW 0
+#define HPGEN_MOMENTUM_SZ_W 14
+HPGEN_EXPORT int hpgen_kernel_momentum(const double* in0, const double* in1, double* out0) {
+    const casadi_real* arg[HPGEN_MOMENTUM_SZ_ARG + 1];
+    casadi_real* res[HPGEN_MOMENTUM_SZ_RES + 1];
+    casadi_int iw[HPGEN_MOMENTUM_SZ_IW + 1];
+    casadi_real w[HPGEN_MOMENTUM_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    res[0] = out0;
+    flag = momentum(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+/* defect(g[9]) -> (e[1]) */
+#define HPGEN_DEFECT_SZ_ARG 1
+#define HPGEN_DEFECT_SZ_RES 1
+#define HPGEN_DEFECT_SZ_IW 0
+#define HPGEN_DEFECT_SZ_W 13
+HPGEN_EXPORT int hpgen_kernel_defect(const double* in0, double* out0) {
+    const casadi_real* arg[HPGEN_DEFECT_SZ_ARG + 1];
+    casadi_real* res[HPGEN_DEFECT_SZ_RES + 1];
+    casadi_int iw[HPGEN_DEFECT_SZ_IW + 1];
+    casadi_real w[HPGEN_DEFECT_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    res[0] = out0;
+    flag = defect(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+/* margin(z[3], h[1]) -> (m[1]) */
+#define HPGEN_MARGIN_SZ_ARG 2
+#define HPGEN_MARGIN_SZ_RES 1
+#define HPGEN_MARGIN_SZ_IW 0
+#define HPGEN_MARGIN_SZ_W 1
+HPGEN_EXPORT int hpgen_kernel_margin(const double* in0, const double* in1, double* out0) {
+    const casadi_real* arg[HPGEN_MARGIN_SZ_ARG + 1];
+    casadi_real* res[HPGEN_MARGIN_SZ_RES + 1];
+    casadi_int iw[HPGEN_MARGIN_SZ_IW + 1];
+    casadi_real w[HPGEN_MARGIN_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    res[0] = out0;
+    flag = margin(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+/* ---- dense linear algebra and Newton ---- */
+
+/* max |x_i|; NaN if any x_i is NaN */
+static double hpgen_norm_inf(const double* x, int n) {
+    double m = 0.0;
+    int i;
+    for (i = 0; i < n; ++i) {
+        double a = fabs(x[i]);
+        if (a != a) return a;
+        if (a > m) m = a;
+    }
+    return m;
+}
+
+static int hpgen_all_finite(const double* x, int n) {
+    int i;
+    for (i = 0; i < n; ++i) if (!isfinite(x[i])) return 0;
+    return 1;
+}
+
+/* Solve A x = b in place: LU with partial pivoting (pivot: first row of largest |a_ik|, as
+   LAPACK). A is NZ x NZ column-major and is overwritten; b is overwritten by x.
+   Returns 1 if a pivot is exactly zero (singular A). */
+static int hpgen_lu_solve(double* A, double* b) {
+    const int n = HPGEN_NZ;
+    int i, j, k;
+    for (k = 0; k < n; ++k) {
+        int piv = k;
+        double amax = fabs(A[k + k * n]);
+        for (i = k + 1; i < n; ++i) {
+            double a = fabs(A[i + k * n]);
+            if (a > amax) { amax = a; piv = i; }
+        }
+        if (amax == 0.0) return 1;
+        if (piv != k) {
+            double t;
+            for (j = 0; j < n; ++j) { t = A[k + j * n]; A[k + j * n] = A[piv + j * n]; A[piv + j * n] = t; }
+            t = b[k]; b[k] = b[piv]; b[piv] = t;
+        }
+        for (i = k + 1; i < n; ++i) A[i + k * n] /= A[k + k * n];
+        for (j = k + 1; j < n; ++j) {
+            double a = A[k + j * n];
+            if (a != 0.0) for (i = k + 1; i < n; ++i) A[i + j * n] -= A[i + k * n] * a;
+        }
+        for (i = k + 1; i < n; ++i) b[i] -= A[i + k * n] * b[k];
+    }
+    for (k = n - 1; k >= 0; --k) {
+        double s = b[k];
+        for (j = k + 1; j < n; ++j) s -= A[k + j * n] * b[j];
+        b[k] = s / A[k + k * n];
+    }
+    return 0;
+}
+
+/* Newton on residual(z, g, p, h) = 0 from z (in/out): z <- z - J^{-1} F; converged when
+   |dz| <= tol (1 + |z|), or when |dz| stopped decreasing while |dz| <= 1e-11 (1 + |z|)
+   (round-off floor); inf-norms. Returns a status code. */
+static int hpgen_newton(const double* g, const double* p, const double* hv, double* z,
+                        double tol, long long maxit, long long* iters, double* rnorm) {
+    double F[HPGEN_NZ], J[HPGEN_NZ * HPGEN_NZ];
+    double dprev = HUGE_VAL;
+    long long it;
+    int i;
+    *iters = 0;
+    *rnorm = NAN;
+    for (it = 1; it <= maxit; ++it) {
+        double dn, zn;
+        *iters = it;
+        if (hpgen_kernel_residual(z, g, p, hv, F) || hpgen_kernel_jacobian(z, g, p, hv, J))
+            return HPGEN_NONFINITE;
+        *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
+        if (!isfinite(*rnorm) || !hpgen_all_finite(J, HPGEN_NZ * HPGEN_NZ))
+            return HPGEN_NONFINITE;
+        if (hpgen_lu_solve(J, F)) return HPGEN_NONFINITE;
+        for (i = 0; i < HPGEN_NZ; ++i) z[i] -= F[i];
+        dn = hpgen_norm_inf(F, HPGEN_NZ);
+        zn = hpgen_norm_inf(z, HPGEN_NZ);
+        if (!isfinite(dn) || !isfinite(zn)) return HPGEN_NONFINITE;
+        if (dn <= tol * (1.0 + zn)) return HPGEN_OK;
+        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)) return HPGEN_OK;
+        dprev = dn;
+    }
+    return HPGEN_NO_CONVERGENCE;
+}
+
+/* One step: Newton from z (in/out), then margin(z, h) > 0, then update -> (g1, p1). */
+static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
+                           double tol, long long maxit, double* g1, double* p1,
+                           long long* iters, double* rnorm) {
+    double m[1];
+    int code = hpgen_newton(g, p, hv, z, tol, maxit, iters, rnorm);
+    if (code != HPGEN_OK) return code;
+    if (hpgen_kernel_margin(z, hv, m)) return HPGEN_NONFINITE;
+    if (!(m[0] > 0.0)) return HPGEN_DOMAIN;
+    if (hpgen_kernel_update(z, g, p, hv, g1, p1)) return HPGEN_NONFINITE;
+    if (!hpgen_all_finite(g1, HPGEN_NN) || !hpgen_all_finite(p1, HPGEN_D))
+        return HPGEN_NONFINITE;
+    return HPGEN_OK;
+}
+
+static void hpgen_status_init(hpgen_status* st) {
+    st->code = HPGEN_OK; st->step = 0; st->iterations = 0; st->total_iterations = 0;
+    st->residual = 0.0;
+}
+
+/* One step from (g, p) with step size h; z: Newton start in, solution out. Returns the code. */
+HPGEN_EXPORT int hpgen_step(const double* g, const double* p, double h, double* z, double tol,
+                            long long maxit, double* g1, double* p1, hpgen_status* st) {
+    double hv[1];
+    long long it;
+    double r;
+    int code;
+    hpgen_status_init(st);
+    if (maxit < 1) { st->code = HPGEN_INVALID; return HPGEN_INVALID; }
+    hv[0] = h;
+    code = hpgen_step_core(g, p, hv, z, tol, maxit, g1, p1, &it, &r);
+    st->code = code; st->iterations = it; st->total_iterations = it; st->residual = r;
+    return code;
+}
+
+/* All steps in one call, warm-started (each Newton starts from the previous solution z, in/out).
+   Records (g, p) at steps 0, every, 2 every, ... into g_rec[(steps/every + 1) * NN] and
+   p_rec[(steps/every + 1) * D]. Stops at the first failed step. Returns the steps done. */
+HPGEN_EXPORT long long hpgen_simulate(const double* g0, const double* p0, double h, double* z,
+                                      long long steps, long long every, double tol,
+                                      long long maxit, double* g_rec, double* p_rec,
+                                      hpgen_status* st) {
+    double g[HPGEN_NN], p[HPGEN_D], g1[HPGEN_NN], p1[HPGEN_D], hv[1];
+    long long k, it;
+    double r;
+    hpgen_status_init(st);
+    if (steps < 0 || every < 1 || maxit < 1) { st->code = HPGEN_INVALID; return 0; }
+    hv[0] = h;
+    memcpy(g, g0, sizeof g);
+    memcpy(p, p0, sizeof p);
+    memcpy(g_rec, g, sizeof g);
+    memcpy(p_rec, p, sizeof p);
+    for (k = 0; k < steps; ++k) {
+        int code = hpgen_step_core(g, p, hv, z, tol, maxit, g1, p1, &it, &r);
+        st->iterations = it;
+        st->total_iterations += it;
+        st->residual = r;
+        if (code != HPGEN_OK) { st->code = code; st->step = k; return k; }
+        memcpy(g, g1, sizeof g);
+        memcpy(p, p1, sizeof p);
+        if ((k + 1) % every == 0) {
+            long long rec = (k + 1) / every;
+            memcpy(g_rec + rec * HPGEN_NN, g, sizeof g);
+            memcpy(p_rec + rec * HPGEN_D, p, sizeof p);
+        }
+    }
+    st->step = steps;
+    return steps;
+}
