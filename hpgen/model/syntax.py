@@ -7,7 +7,9 @@ node types (see ALLOWED) and the nesting depth (<= MAX_DEPTH, where a left-neste
 ``* /`` counts as one level). CPython builds left-nested chains recursively, so ast.parse runs
 with a temporarily raised recursion limit (enough for any chain within MAX_NODES); if it still
 fails, a top-level sum is split at its binary ``+``/``-`` tokens and the terms parsed one by one.
-Errors are ModelError(field="lagrangian") naming the construct and its column.
+Errors are ModelError(field="lagrangian") naming the construct and its column; when several
+constructs are not allowed, a dunder name or attribute (``__import__``, ``.__class__``) is
+reported first, then the leftmost one.
 """
 from __future__ import annotations
 
@@ -120,6 +122,10 @@ def syntax_tree(text: str):
     try:
         return _parse(text)
     except SyntaxError as e:
+        if "integer string conversion" in (e.msg or ""):     # a literal of > 4300 digits
+            raise ModelError(f"integer literal too large: more than 4300 digits (column "
+                             f"{e.offset or 1}); it exceeds double precision range",
+                             field="lagrangian") from None
         err = ModelError(f"syntax error: {e.msg} (column {e.offset or 1}"
                          + (f", line {e.lineno}" if (e.lineno or 1) > 1 else "") + f"); {ALLOWED}",
                          field="lagrangian")
@@ -139,6 +145,24 @@ def syntax_tree(text: str):
     return tree
 
 
+def _is_dunder(name: str) -> bool:
+    return name.startswith("__")
+
+
+def _callee(f) -> str:
+    """What a call that is not ``name(...)`` calls, for the error message."""
+    if isinstance(f, ast.Attribute):
+        return f"the attribute '.{f.attr[:40]}'"
+    kind = _CONSTRUCTS.get(type(f), type(f).__name__.lower())
+    return ("a " if kind[0] not in "aeiou" else "an ") + kind
+
+
+def _suspicious(node) -> bool:
+    """A dunder name or attribute: reported before any other problem of the expression."""
+    return (isinstance(node, ast.Name) and _is_dunder(node.id)) or \
+        (isinstance(node, ast.Attribute) and _is_dunder(node.attr))
+
+
 def _disallowed(node, t, allowed_tuples):
     """The message for a node that is not allowed, or None."""
     if t is ast.BinOp:
@@ -146,7 +170,7 @@ def _disallowed(node, t, allowed_tuples):
             return None
         return f"operator {_OPS.get(type(node.op), type(node.op).__name__)} is not allowed"
     if t is ast.Name:
-        if node.id.startswith("__") or not isinstance(node.ctx, ast.Load):
+        if _is_dunder(node.id) or not isinstance(node.ctx, ast.Load):
             return f"name {node.id!r} is not allowed (dunder names are forbidden)"
         return None
     if t is ast.Constant:
@@ -165,10 +189,15 @@ def _disallowed(node, t, allowed_tuples):
                 "R[2, 1] (no slices, negative or computed indices)")
     if t is ast.Call:
         f = node.func
-        if not isinstance(f, ast.Name) or f.id not in FUNCTION_NAMES:
-            return (f"function {f.id!r}" if isinstance(f, ast.Name) else "this call") + \
-                " is not allowed"
-        return "keyword arguments are not allowed" if node.keywords else None
+        if isinstance(f, ast.Name):
+            if f.id not in FUNCTION_NAMES:
+                return f"function {f.id!r} is not allowed"
+            return "keyword arguments are not allowed" if node.keywords else None
+        return (f"this call is not allowed (it calls {_callee(f)}; only the functions "
+                f"{' '.join(FUNCTION_NAMES)} can be called, by name)")
+    if t is ast.Attribute:
+        dunder = "; dunder names are forbidden" if _is_dunder(node.attr) else ""
+        return f"attribute access is not allowed ('.{node.attr[:40]}'{dunder})"
     if t is ast.Tuple and id(node) in allowed_tuples:
         return None
     return f"{_CONSTRUCTS.get(t, t.__name__)} is not allowed"
@@ -192,10 +221,10 @@ def check_tree(tree) -> None:
             msg = _disallowed(node, t, allowed_tuples) if t is not ast.UnaryOp else \
                 f"operator {_OPS.get(type(node.op), '?')} is not allowed"
         if msg:
-            bad.append((getattr(node, "lineno", 10**9), getattr(node, "col_offset", 0),
-                        count, node, msg))
+            bad.append((not _suspicious(node), getattr(node, "lineno", 10**9),
+                        getattr(node, "col_offset", 0), count, node, msg))
     if bad:
-        *_, node, msg = min(bad, key=lambda b: b[:3])
+        *_, node, msg = min(bad, key=lambda b: b[:4])
         raise fail(node, msg, allowed=True)
     stack = [(tree.body, 1)]
     while stack:

@@ -79,7 +79,8 @@ class Doc:
         except OverflowError:
             f = math.inf
         if not math.isfinite(f):
-            raise self.error(path, f"must be finite (expected {what}), got {v!r}")
+            shown = repr(v) if len(repr(v)) <= 40 else f"{repr(v)[:20]}... ({len(repr(v))} digits)"
+            raise self.error(path, f"must be finite (expected {what}), got {shown}")
         return f
 
     def vector(self, path, v, length=None, what="numbers"):
