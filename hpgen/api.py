@@ -12,6 +12,7 @@ from __future__ import annotations
 import hashlib
 import json
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 
 from . import __version__, cache
@@ -78,9 +79,28 @@ def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
     return load(module_dir, backend=opts.backend, cc=opts.cc, cflags=opts.cflags)
 
 
+#: what produces the generated code, besides the model and options (hashed into the key)
+_GENERATOR_SOURCES = ("hpgen/model", "hpgen/groups", "hpgen/tableaus", "hpgen/derive",
+                      "hpgen/codegen", "templates")
+
+
+@lru_cache(maxsize=1)
+def generator_digest() -> str:
+    """sha256 over hpgen's code-generating sources (stages and templates), so that a
+    changed generator never serves a stale cache entry."""
+    root = Path(__file__).resolve().parents[1]
+    h = hashlib.sha256()
+    for folder in _GENERATOR_SOURCES:
+        for f in sorted((root / folder).glob("*")):
+            if f.is_file() and f.suffix in (".py", ".j2"):
+                h.update(f"{folder}/{f.name}".encode() + b"\0" + f.read_bytes())
+    return h.hexdigest()
+
+
 def module_key(text: str, opts: CompileOptions) -> str:
-    """Cache key and content hash of a module: model text, code-changing options, version."""
-    return cache.cache_key(CODE_FORMAT, __version__, text, opts.key())
+    """Cache key and content hash of a module: model text, code-changing options, hpgen
+    version and generator sources."""
+    return cache.cache_key(CODE_FORMAT, __version__, generator_digest(), text, opts.key())
 
 
 def build_module(model, opts: CompileOptions) -> Path:
@@ -139,9 +159,12 @@ def generate_files(path: str, text: str, opts: CompileOptions, key: str) -> dict
     from .model import load_model_text
 
     model_obj = load_model_text(text, filename=path)
-    tab, tau, rkmk = resolve(model_obj, opts)
-    step = derive(model_obj, tab, tau, rkmk)
-    check_legendre(step, model_obj)
+    try:
+        tab, tau, rkmk = resolve(model_obj, opts)
+        step = derive(model_obj, tab, tau, rkmk)
+        check_legendre(step, model_obj)
+    except ModelError as e:          # errors of the options and the derivation name the file too
+        raise e.located(file=path) from None
     name = module_name(model_obj.name, tab.name, tau, rkmk)
     gm = emit(step, {"module": name, "model_name": model_obj.name, "model_source": text,
                      "options": {"tableau": tab.name, "tau": tau, "rkmk": rkmk},

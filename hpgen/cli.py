@@ -11,7 +11,7 @@ import time
 from pathlib import Path
 
 from . import __version__
-from .errors import HpgenError, ModelError
+from .errors import ConvergenceError, HpgenError, ModelError
 
 
 def _add_options(p):
@@ -37,6 +37,19 @@ def _parser():
     r.add_argument("--h", type=float, help="override scene.h")
     r.add_argument("--steps", type=int, help="override scene.steps")
     sub.add_parser("list", help="groups, tableaus and chart maps")
+    k = sub.add_parser("check", help="observed order, energy, momentum map, group and "
+                       "symplecticity defects of an integrator on the model's scene",
+                       epilog="exit status 3 when a structure check fails")
+    _add_options(k)
+    k.add_argument("--scheme", choices=("hpgen", "rkmk-rk4"), default="hpgen",
+                   help="the compiled scheme (default) or the non-variational RKMK-RK4")
+    k.add_argument("--h", type=float, help="override scene.h")
+    k.add_argument("--steps", type=int, help="override scene.steps")
+    k.add_argument("--order-horizon", type=float,
+                   help="time span of the order runs (default min(1, steps h))")
+    k.add_argument("--states", type=int, default=4,
+                   help="states along the run where the symplecticity defect is computed")
+    k.add_argument("--json", help="also write the figures to this JSON file")
     return ap
 
 
@@ -68,10 +81,19 @@ def cmd_run(args) -> int:
     h = sc.h if args.h is None else args.h
     steps = sc.steps if args.steps is None else args.steps
     integ = load(build_module(args.model, _options(args)), backend=args.backend)
-    t0 = time.perf_counter()
-    traj = integ.simulate(g0=sc.g0, h=h, steps=steps, xi0=sc.xi0, mu0=sc.mu0, every=sc.every)
-    wall = time.perf_counter() - t0
     out = Path(args.out or f"{model.name}.npz")
+    t0 = time.perf_counter()
+    try:
+        traj = integ.simulate(g0=sc.g0, h=h, steps=steps, xi0=sc.xi0, mu0=sc.mu0, every=sc.every)
+    except ConvergenceError as e:
+        if e.partial is not None and len(e.partial):
+            path = e.partial.save(out, arrays=e.partial.observables(sc.record))
+            raise type(e)(f"{e.reason}; the {len(e.partial)} samples before the failure were saved "
+                          f"to {path} with partial=True", step=e.step, time=e.time,
+                          residual=e.residual, iterations=e.iterations,
+                          partial=e.partial) from None
+        raise
+    wall = time.perf_counter() - t0
     arrays = traj.observables(sc.record)
     traj.save(out, arrays=arrays)
     print(f"{model.name}: {steps} steps of h = {h:g} in {wall:.3f} s "
@@ -85,6 +107,19 @@ def cmd_run(args) -> int:
         print("  spatial momentum Ad*_{g^-1} p, max change per component: "
               + " ".join(f"{v:.2e}" for v in drift))
     return 0
+
+
+def cmd_check(args) -> int:
+    """``hpgen check``: print the table (hpgen.analysis.check); exit 3 if a check fails."""
+    from .analysis.check import format_report, run_check, write_json
+    report = run_check(args.model, scheme=args.scheme, tableau=args.tableau, tau=args.tau,
+                       rkmk=args.rkmk, h=args.h, steps=args.steps, backend=args.backend,
+                       cache_dir=args.cache_dir, order_horizon=args.order_horizon,
+                       n_states=args.states)
+    print(format_report(report))
+    if args.json:
+        print(f"  figures -> {write_json(report, args.json)}")
+    return 0 if report["passed"] else 3
 
 
 def cmd_list(args) -> int:
@@ -104,7 +139,8 @@ def cmd_list(args) -> int:
 def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     try:
-        return {"compile": cmd_compile, "run": cmd_run, "list": cmd_list}[args.command](args)
+        return {"compile": cmd_compile, "run": cmd_run, "list": cmd_list,
+                "check": cmd_check}[args.command](args)
     except ModelError as e:
         print(f"hpgen: error: {e}", file=sys.stderr)
         return 2

@@ -62,7 +62,7 @@ class ConvergenceError(HpgenError):
     def __init__(self, message: str, *, step: int, time: float, residual: float,
                  iterations: int, partial=None):
         self.step, self.time, self.residual, self.iterations = step, time, residual, iterations
-        self.partial = partial
+        self.reason, self.partial = message, partial
         super().__init__(f"step {step} (t = {time:.6g}): {message}; residual norm {residual:.3e} "
                          f"after {iterations} Newton iterations; try a smaller h")
 

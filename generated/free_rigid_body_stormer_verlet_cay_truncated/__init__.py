@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: b234f21e301a263f3d3ed1d60c0c09599cdf4d7114b59d4277d609ee7208397b
+# content hash: d7c41dbc0c2944711c3459d46e2e7df464580584f355ad3a8a4a90004674a344
 """hpgen integrator free_rigid_body_stormer_verlet_cay_truncated for the model free_rigid_body.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "free_rigid_body_stormer_verlet_cay_truncated"
-HASH = "b234f21e301a263f3d3ed1d60c0c09599cdf4d7114b59d4277d609ee7208397b"
+HASH = "d7c41dbc0c2944711c3459d46e2e7df464580584f355ad3a8a4a90004674a344"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

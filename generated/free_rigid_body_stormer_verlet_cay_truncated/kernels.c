@@ -3,7 +3,7 @@
  * model: free_rigid_body
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: b234f21e301a263f3d3ed1d60c0c09599cdf4d7114b59d4277d609ee7208397b
+ * content hash: d7c41dbc0c2944711c3459d46e2e7df464580584f355ad3a8a4a90004674a344
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -1497,7 +1497,7 @@ typedef struct hpgen_status {
     double residual;             /* inf-norm of the last residual evaluated */
 } hpgen_status;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "b234f21e301a263f3d3ed1d60c0c09599cdf4d7114b59d4277d609ee7208397b"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "d7c41dbc0c2944711c3459d46e2e7df464580584f355ad3a8a4a90004674a344"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -1795,7 +1795,11 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
                            long long* iters, double* rnorm) {
     double m[1];
     int code = hpgen_newton(g, p, hv, z, tol, maxit, iters, rnorm);
-    if (code != HPGEN_OK) return code;
+    if (code != HPGEN_OK) {
+        /* a failure at an iterate outside tau's domain is reported as a domain error */
+        if (!hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) return HPGEN_DOMAIN;
+        return code;
+    }
     if (hpgen_kernel_margin(z, hv, m)) return HPGEN_NONFINITE;
     if (!(m[0] > 0.0)) return HPGEN_DOMAIN;
     if (hpgen_kernel_update(z, g, p, hv, g1, p1)) return HPGEN_NONFINITE;

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: b234f21e301a263f3d3ed1d60c0c09599cdf4d7114b59d4277d609ee7208397b
+# content hash: d7c41dbc0c2944711c3459d46e2e7df464580584f355ad3a8a4a90004674a344
 """Python backend of the hpgen module free_rigid_body_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 

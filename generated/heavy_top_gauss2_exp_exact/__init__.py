@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 15f606c77f5d93e6cd98d5a0ca1ab855735166751c36d95e4a18d920250c1559
+# content hash: b24d2ece11b3f30393767b0441f87a37cdd07aec9dc71e2afc7236b502acd8f7
 """hpgen integrator heavy_top_gauss2_exp_exact for the model heavy_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "heavy_top_gauss2_exp_exact"
-HASH = "15f606c77f5d93e6cd98d5a0ca1ab855735166751c36d95e4a18d920250c1559"
+HASH = "b24d2ece11b3f30393767b0441f87a37cdd07aec9dc71e2afc7236b502acd8f7"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: underwater_vehicle
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: eb38ec3c5fcaa87202f6d909d52026a869d917fa69ed925afde27f72da67df99
+ * content hash: 0fff4164ef686dccbda45ab4eda0a736cffefe1c14455b33309569e911e776ae
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -11317,7 +11317,7 @@ typedef struct hpgen_status {
     double residual;             /* inf-norm of the last residual evaluated */
 } hpgen_status;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "eb38ec3c5fcaa87202f6d909d52026a869d917fa69ed925afde27f72da67df99"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "0fff4164ef686dccbda45ab4eda0a736cffefe1c14455b33309569e911e776ae"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -11615,7 +11615,11 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
                            long long* iters, double* rnorm) {
     double m[1];
     int code = hpgen_newton(g, p, hv, z, tol, maxit, iters, rnorm);
-    if (code != HPGEN_OK) return code;
+    if (code != HPGEN_OK) {
+        /* a failure at an iterate outside tau's domain is reported as a domain error */
+        if (!hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) return HPGEN_DOMAIN;
+        return code;
+    }
     if (hpgen_kernel_margin(z, hv, m)) return HPGEN_NONFINITE;
     if (!(m[0] > 0.0)) return HPGEN_DOMAIN;
     if (hpgen_kernel_update(z, g, p, hv, g1, p1)) return HPGEN_NONFINITE;

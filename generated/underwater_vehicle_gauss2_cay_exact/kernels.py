@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: eb38ec3c5fcaa87202f6d909d52026a869d917fa69ed925afde27f72da67df99
+# content hash: 0fff4164ef686dccbda45ab4eda0a736cffefe1c14455b33309569e911e776ae
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 

@@ -73,29 +73,79 @@ def _blocks(A, B, C, D):
     return ca.vertcat(ca.horzcat(A, B), ca.horzcat(C, D))
 
 
-def _dexpinv_poly(M, s):
-    """f(M), f(z) = z/(e^z - 1), for M with M^3 = -s M (so3, se2)."""
-    return ca.SX.eye(M.shape[0]) - M / 2 + series.dexpinv_c(s) * ca.mtimes(M, M)
+def _outer(a, b):
+    """a b^T + b a^T as a 3 x 3 SX (symmetric: each entry built once); a b^T + b a^T = 2 a a^T
+    when b is a."""
+    if b is a:
+        e = [[None] * 3 for _ in range(3)]
+        for i in range(3):
+            for j in range(i, 3):
+                e[i][j] = e[j][i] = a[i] * a[j]
+        return e
+    e = [[None] * 3 for _ in range(3)]
+    for i in range(3):
+        for j in range(i, 3):
+            e[i][j] = e[j][i] = a[i] * b[j] + b[i] * a[j] if i != j else 2 * a[i] * b[i]
+    return e
 
 
-def _dexp_poly(M, s):
-    """g(M), g(z) = (e^z - 1)/z, for M with M^3 = -s M (so3, se2)."""
-    return ca.SX.eye(M.shape[0]) + series.cosc(s) * M + series.sinc3(s) * ca.mtimes(M, M)
+def _so3_combo(alpha, beta, gamma, w, delta=0, v=None, V_coef=0):
+    """alpha I + beta w^ + gamma w w^T [+ delta (v w^T + w v^T) + V_coef v^], entry by entry.
+
+    Every so3 map is of this form (W^2 = w w^T - s I, WV + VW = v w^T + w v^T - 2 (w.v) I for
+    W = w^, V = v^), which keeps the expression graph small under AD: no 3 x 3 products."""
+    ww = _outer(w, w)
+    vw = _outer(v, w) if v is not None and not _is_zero(delta) else None
+    rows = []
+    for i in range(3):
+        row = []
+        for j in range(3):
+            e = gamma * ww[i][j]
+            if vw is not None:
+                e = e + delta * vw[i][j]
+            if i == j:
+                e = alpha + e
+            else:
+                k = 3 - i - j  # W[i, j] = sign * w[k]
+                sign = 1 if (i, j) in ((1, 0), (0, 2), (2, 1)) else -1
+                if not _is_zero(beta):
+                    e = e + (sign * beta) * w[k]
+                if not _is_zero(V_coef):
+                    e = e + (sign * V_coef) * v[k]
+            row.append(e)
+        rows.append(ca.horzcat(*row))
+    return ca.vertcat(*rows)
+
+
+def _is_zero(c):
+    return isinstance(c, (int, float)) and c == 0
+
+
+def _cross(a, b):
+    return ca.vertcat(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                      a[0] * b[1] - a[1] * b[0])
 
 
 def _exp_margin(s):
     return (math.pi**2 - s) / (2 * math.pi)
 
 
-# ---- so3 building blocks (w a 3-vector, W = w^, s = |w|^2) --------------------------------
-def _so3_exp(W, s):
+# ---- so3 building blocks (w a 3-vector, W = w^, s = |w|^2, P = series.Point(s)) ----------
+def _so3_exp(w, s, P):
     """Rodrigues: I + (sin t/t) W + ((1 - cos t)/t^2) W^2."""
-    return _I3 + series.sinc(s) * W + series.cosc(s) * ca.mtimes(W, W)
+    return _so3_combo(1 - s * P["cosc"], P["sinc"], P["cosc"], w)
 
 
-def _so3_V(W, s):
-    """V = I + ((1 - cos t)/t^2) W + ((t - sin t)/t^3) W^2 (also dexp on so3)."""
-    return _dexp_poly(W, s)
+def _so3_dexp(w, s, P):
+    """dexp = I + cosc W + sinc3 W^2 = sinc I + cosc W + sinc3 w w^T (1 - s sinc3 = sinc);
+    also the V of the se3 exponential."""
+    return _so3_combo(P["sinc"], P["cosc"], P["sinc3"], w)
+
+
+def _so3_dexpinv(w, s, P):
+    """dexp^{-1} = I - W/2 + c W^2 = (1 - s c) I - W/2 + c w w^T."""
+    c = P["dexpinv_c"]
+    return _so3_combo(1 - s * c, -0.5, c, w)
 
 
 def _so3_cay(W, s):
@@ -185,9 +235,10 @@ def so2_margin(group, kind, x):
 # ---- SO3 ---------------------------------------------------------------------------------
 def so3_tau(group, kind, x):
     _check(group, kind, _SO_KINDS)
-    W, s = _hat3(x), ca.dot(x, x)
     if kind == "exp":
-        return _so3_exp(W, s)
+        s = ca.dot(x, x)
+        return _so3_exp(x, s, series.Point(s))
+    W, s = _hat3(x), ca.dot(x, x)
     if kind == "cay":
         return _so3_cay(W, s)
     return _I3 + W + ca.mtimes(W, W) / (1 + ca.sqrt(1 - s))
@@ -195,9 +246,10 @@ def so3_tau(group, kind, x):
 
 def so3_dtau_inv(group, kind, x):
     _check(group, kind, _SO_KINDS)
-    W, s = _hat3(x), ca.dot(x, x)
     if kind == "exp":
-        return _dexpinv_poly(W, s)
+        s = ca.dot(x, x)
+        return _so3_dexpinv(x, s, series.Point(s))
+    W, s = _hat3(x), ca.dot(x, x)
     if kind == "cay":
         return _so3_dcay_inv(x, W)
     r = ca.sqrt(1 - s)
@@ -206,9 +258,10 @@ def so3_dtau_inv(group, kind, x):
 
 def so3_dtau(group, kind, x):
     _check(group, kind, _SO_KINDS)
-    W, s = _hat3(x), ca.dot(x, x)
     if kind == "exp":
-        return _dexp_poly(W, s)
+        s = ca.dot(x, x)
+        return _so3_dexp(x, s, series.Point(s))
+    W, s = _hat3(x), ca.dot(x, x)
     if kind == "cay":
         return _so3_dcay(W, s)
     r = ca.sqrt(1 - s)
@@ -230,18 +283,24 @@ def _se2_parts(x):
     return w, v, w * w, w * _J
 
 
-def _se2_ad(x):
-    """ad_x in (omega, vx, vy): [[0, 0, 0], [vy, 0, -omega], [-vx, omega, 0]]."""
+def _se2_poly(x, s, a, b, c):
+    """a I + b M + c M^2 for M = ad_x = [[0, 0, 0], [vy, 0, -w], [-vx, w, 0]] in
+    (omega, vx, vy), M^2 = [[0, 0, 0], [w vx, -s, 0], [w vy, 0, -s]] (s = w^2), entrywise."""
     w, vx, vy = x[0], x[1], x[2]
-    return ca.vertcat(ca.horzcat(0, 0, 0), ca.horzcat(vy, 0, -w), ca.horzcat(-vx, w, 0))
+    d = a - c * s
+    return ca.vertcat(ca.horzcat(a, 0, 0),
+                      ca.horzcat(b * vy + c * (w * vx), d, -b * w),
+                      ca.horzcat(-b * vx + c * (w * vy), b * w, d))
 
 
 def se2_tau(group, kind, x):
     _check(group, kind, _SE_KINDS)
     w, v, s, W = _se2_parts(x)
-    if kind == "exp":
-        V = series.sinc(s) * _I2 + series.cosc(s) * W
-        return _affine(_so2_rot(ca.cos(w), ca.sin(w)), ca.mtimes(V, v))
+    if kind == "exp":  # R = rot(w), p = (sinc I + cosc W) v, cos w = 1 - s cosc, sin w = w sinc
+        P = series.Point(s)
+        sc, cc = P["sinc"], P["cosc"]
+        Jv = ca.vertcat(-v[1], v[0])
+        return _affine(_so2_rot(1 - s * cc, w * sc), sc * v + (cc * w) * Jv)
     P = (_I2 + W / 2) / (1 + s / 4)  # (I - W/2)^{-1}
     return _affine(so2_tau(group, "cay", x[0:1]), ca.mtimes(P, v))
 
@@ -250,7 +309,8 @@ def se2_dtau_inv(group, kind, x):
     _check(group, kind, _SE_KINDS)
     w, v, s, W = _se2_parts(x)
     if kind == "exp":
-        return _dexpinv_poly(_se2_ad(x), s)
+        c = series.Point(s)["dexpinv_c"]  # f(M) = I - M/2 + c M^2
+        return _se2_poly(x, s, 1, -0.5, c)
     lower = ca.mtimes(_I2 - W / 2, ca.mtimes(_J, v)) / 2
     return _blocks(ca.SX(1 + s / 4), ca.SX.zeros(1, 2), lower, _I2 - W / 2)
 
@@ -259,7 +319,8 @@ def se2_dtau(group, kind, x):
     _check(group, kind, _SE_KINDS)
     w, v, s, W = _se2_parts(x)
     if kind == "exp":
-        return _dexp_poly(_se2_ad(x), s)
+        P = series.Point(s)  # g(M) = I + cosc M + sinc3 M^2
+        return _se2_poly(x, s, 1, P["cosc"], P["sinc3"])
     q = 1 + s / 4
     return _blocks(ca.SX(1 / q), ca.SX.zeros(1, 2), -ca.mtimes(_J, v) / (2 * q),
                    (_I2 + W / 2) / q)
@@ -279,36 +340,52 @@ def _se3_parts(x):
 
 def se3_tau(group, kind, x):
     _check(group, kind, _SE_KINDS)
+    if kind == "exp":  # [[exp(W), V v], [0, 1]], V v = sinc v + cosc w x v + sinc3 (w.v) w
+        w, v = x[0:3], x[3:6]
+        s = ca.dot(w, w)
+        P = series.Point(s)
+        t = P["sinc"] * v + P["cosc"] * _cross(w, v) + (P["sinc3"] * ca.dot(w, v)) * w
+        return _affine(_so3_exp(w, s, P), t)
     w, v, s, W, _ = _se3_parts(x)
-    if kind == "exp":
-        return _affine(_so3_exp(W, s), ca.mtimes(_so3_V(W, s), v))
     return _affine(_so3_cay(W, s), ca.mtimes(_so3_inv_i_minus_half(W, s), v))
 
 
 def se3_dtau_inv(group, kind, x):
     _check(group, kind, _SE_KINDS)
-    w, v, s, W, V = _se3_parts(x)
     Z = ca.SX.zeros(3, 3)
     if kind == "exp":
-        A = _dexpinv_poly(W, s)
-        W2 = ca.mtimes(W, W)
-        C = (-V / 2 + series.dexpinv_c(s) * (ca.mtimes(W, V) + ca.mtimes(V, W))
-             + 2 * ca.dot(w, v) * series.d_dexpinv_c(s) * W2)
+        # C = Df(W)[V] = -V/2 + c (WV + VW) + 2 (w.v) c' W^2
+        #   = -V/2 + c (v w^T + w v^T) + 2 (w.v) c' w w^T - 2 (w.v) (c + s c') I
+        w, v = x[0:3], x[3:6]
+        s, wv = ca.dot(w, w), ca.dot(w, v)
+        P = series.Point(s)
+        c, dc = P["dexpinv_c"], P["d_dexpinv_c"]
+        A = _so3_combo(1 - s * c, -0.5, c, w)
+        k = 2 * wv
+        C = _so3_combo(-k * (c + s * dc), 0, k * dc, w, delta=c, v=v, V_coef=-0.5)
         return _blocks(A, Z, C, A)
+    w, v, s, W, V = _se3_parts(x)
     F = _I3 - W / 2
     return _blocks(_so3_dcay_inv(w, W), Z, -ca.mtimes(F, V) / 2, F)
 
 
 def se3_dtau(group, kind, x):
     _check(group, kind, _SE_KINDS)
-    w, v, s, W, V = _se3_parts(x)
     Z = ca.SX.zeros(3, 3)
     if kind == "exp":
-        A = _dexp_poly(W, s)
-        W2 = ca.mtimes(W, W)
-        C = (series.cosc(s) * V + series.sinc3(s) * (ca.mtimes(W, V) + ca.mtimes(V, W))
-             + 2 * ca.dot(w, v) * (series.d_cosc(s) * W + series.d_sinc3(s) * W2))
+        # C = cosc V + sinc3 (WV + VW) + 2 (w.v) (cosc' W + sinc3' W^2)
+        #   = cosc V + 2 (w.v) cosc' W + sinc3 (v w^T + w v^T) + 2 (w.v) sinc3' w w^T
+        #     - 2 (w.v) (sinc3 + s sinc3') I
+        w, v = x[0:3], x[3:6]
+        s, wv = ca.dot(w, w), ca.dot(w, v)
+        P = series.Point(s)
+        s3, ds3 = P["sinc3"], P["d_sinc3"]
+        A = _so3_combo(P["sinc"], P["cosc"], s3, w)
+        k = 2 * wv
+        C = _so3_combo(-k * (s3 + s * ds3), k * P["d_cosc"], k * ds3, w, delta=s3, v=v,
+                       V_coef=P["cosc"])
         return _blocks(A, Z, C, A)
+    w, v, s, W, V = _se3_parts(x)
     Dinv = _so3_dcay(W, s)
     return _blocks(Dinv, Z, ca.mtimes(V, Dinv) / 2, _so3_inv_i_minus_half(W, s))
 

@@ -122,13 +122,12 @@ def syntax_tree(text: str):
     try:
         return _parse(text)
     except SyntaxError as e:
+        at = f"column {e.offset or 1}" + (f", line {e.lineno}" if (e.lineno or 1) > 1 else "")
         if "integer string conversion" in (e.msg or ""):     # a literal of > 4300 digits
-            raise ModelError(f"integer literal too large: more than 4300 digits (column "
-                             f"{e.offset or 1}); it exceeds double precision range",
-                             field="lagrangian") from None
-        err = ModelError(f"syntax error: {e.msg} (column {e.offset or 1}"
-                         + (f", line {e.lineno}" if (e.lineno or 1) > 1 else "") + f"); {ALLOWED}",
-                         field="lagrangian")
+            err = ModelError(f"integer literal too large: more than 4300 digits ({at}); it "
+                             "exceeds double precision range", field="lagrangian")
+        else:
+            err = ModelError(f"syntax error: {e.msg} ({at}); {ALLOWED}", field="lagrangian")
         err.expr_line = e.lineno
         raise err from None
     except (RecursionError, MemoryError):

@@ -3,7 +3,9 @@
 z <- z - J^{-1} F (numpy.linalg.solve: LAPACK LU with partial pivoting); converged when
 ||dz|| <= tol (1 + ||z||), or when ||dz|| stopped decreasing (||dz_k|| >= ||dz_{k-1}||) while
 ||dz_k|| <= 1e-11 (1 + ||z||) (round-off floor); inf-norms. Non-finite F, J or z, or an
-exactly singular J, give code NONFINITE. After convergence margin(z, h) > 0 else DOMAIN.
+exactly singular J, give code NONFINITE. After convergence margin(z, h) > 0 else DOMAIN; a
+failed Newton whose last iterate lies outside tau's domain (finite margin <= 0, e.g. the
+skew projector's sqrt(1 - |h xi|^2) turning NaN) is reported as DOMAIN too.
 """
 from __future__ import annotations
 
@@ -62,9 +64,10 @@ def step_core(call, nz, g, p, hv, z, tol, maxit):
 
     with np.errstate(all="ignore"):
         code, z, it, r = newton(fun, z, tol, maxit)
-        if code != OK:
-            return code, None, None, z, it, r
         m = call("margin", z, hv)[0][0]
+        if code != OK:
+            # a failure at an iterate outside tau's domain is reported as a domain error
+            return (DOMAIN if m <= 0.0 else code), None, None, z, it, r
         if not m > 0.0:
             return DOMAIN, None, None, z, it, r
         g1, p1 = call("update", z, g, p, hv)

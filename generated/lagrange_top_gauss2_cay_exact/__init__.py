@@ -1,0 +1,42 @@
+# hpgen generated module lagrange_top_gauss2_cay_exact -- do not edit, regenerate with hpgen
+# model: lagrange_top
+# options: tableau=gauss2, tau=cay, rkmk=exact
+# hpgen version: 0.1.0
+# content hash: 4670d13bf2ac9b5bbd5010702460ad8c8ed22b5283edcdc07c601af836c48102
+"""hpgen integrator lagrange_top_gauss2_cay_exact for the model lagrange_top.
+
+Importing this package has no side effects; the first call of integrator(), step() or
+simulate() loads it through hpgen.runtime (needs numpy only) and, for the C backend
+(the default), compiles kernels.c once into this directory.
+Group: n x n = 3 x 3 matrices, algebra dimension d = 3; g is passed as an
+(n, n) array, momenta and velocities as length-d arrays, h in the model's time unit.
+"""
+import threading as _threading
+from pathlib import Path as _Path
+
+MODULE = "lagrange_top_gauss2_cay_exact"
+HASH = "4670d13bf2ac9b5bbd5010702460ad8c8ed22b5283edcdc07c601af836c48102"
+BACKEND = "c"
+_lock = _threading.Lock()
+_loaded = {}
+
+
+def integrator(backend=None):
+    """The hpgen.runtime.Integrator of this module, "c" or "python" (None = BACKEND);
+    loaded on first use and cached per backend."""
+    backend = BACKEND if backend is None else backend
+    with _lock:
+        if backend not in _loaded:
+            from hpgen.runtime import load
+            _loaded[backend] = load(_Path(__file__).parent, backend=backend)
+        return _loaded[backend]
+
+
+def step(g, p, h):
+    """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) with the default backend."""
+    return integrator().step(g, p, h)
+
+
+def simulate(**kw):
+    """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Trajectory."""
+    return integrator().simulate(**kw)

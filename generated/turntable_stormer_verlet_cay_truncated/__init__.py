@@ -1,0 +1,42 @@
+# hpgen generated module turntable_stormer_verlet_cay_truncated -- do not edit, regenerate with hpgen
+# model: turntable
+# options: tableau=stormer-verlet, tau=cay, rkmk=truncated
+# hpgen version: 0.1.0
+# content hash: 05de9e8f33b5ccf128e0cf5c52c38a2eadfd45e6027d470444395b130d93c442
+"""hpgen integrator turntable_stormer_verlet_cay_truncated for the model turntable.
+
+Importing this package has no side effects; the first call of integrator(), step() or
+simulate() loads it through hpgen.runtime (needs numpy only) and, for the C backend
+(the default), compiles kernels.c once into this directory.
+Group: n x n = 3 x 3 matrices, algebra dimension d = 3; g is passed as an
+(n, n) array, momenta and velocities as length-d arrays, h in the model's time unit.
+"""
+import threading as _threading
+from pathlib import Path as _Path
+
+MODULE = "turntable_stormer_verlet_cay_truncated"
+HASH = "05de9e8f33b5ccf128e0cf5c52c38a2eadfd45e6027d470444395b130d93c442"
+BACKEND = "c"
+_lock = _threading.Lock()
+_loaded = {}
+
+
+def integrator(backend=None):
+    """The hpgen.runtime.Integrator of this module, "c" or "python" (None = BACKEND);
+    loaded on first use and cached per backend."""
+    backend = BACKEND if backend is None else backend
+    with _lock:
+        if backend not in _loaded:
+            from hpgen.runtime import load
+            _loaded[backend] = load(_Path(__file__).parent, backend=backend)
+        return _loaded[backend]
+
+
+def step(g, p, h):
+    """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) with the default backend."""
+    return integrator().step(g, p, h)
+
+
+def simulate(**kw):
+    """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Trajectory."""
+    return integrator().simulate(**kw)

@@ -1,0 +1,94 @@
+"""Regenerate ``hpgen/groups/series_data.py``: exact Taylor coefficients of the series functions.
+
+    python -m hpgen.tools.gen_series            # rewrite the data file
+    python -m hpgen.tools.gen_series --check    # exit 1 if the committed file is stale
+
+Each base function f(t) of ``hpgen.groups.series`` is even in t; sympy expands it to
+f(t) = sum_k a_k s^k, s = t^2, and the a_k are written as exact (numerator, denominator)
+pairs, so the output is deterministic and independent of the float formatting. The test
+suite regenerates the text in memory and compares it with the committed file
+(tests/unit/test_groups.py), so the data cannot go stale. sympy is only needed here, never
+when hpgen compiles a model.
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+#: base name -> (sympy expression builder in t, number of coefficients a_0 .. a_{K-1})
+#: K is far more than any Taylor branch uses (see series.SPECS), so derivatives
+#: (k + 1) a_{k + 1} and the accuracy analysis of the truncation have room.
+BASES = {
+    "sinc": (lambda sp, t: sp.sin(t) / t, 16),
+    "cosc": (lambda sp, t: (1 - sp.cos(t)) / t**2, 16),
+    "sinc3": (lambda sp, t: (t - sp.sin(t)) / t**3, 16),
+    "dexpinv_c": (lambda sp, t: (1 - (t / 2) * sp.cot(t / 2)) / t**2, 20),
+}
+
+DATA_PATH = Path(__file__).resolve().parents[1] / "groups" / "series_data.py"
+
+_HEADER = '''"""Exact Taylor coefficients of the series functions (generated, do not edit).
+
+Written by ``python -m hpgen.tools.gen_series`` (sympy). COEFFICIENTS[base][k] = (p, q) means
+a_k = p / q in f(t) = sum_k a_k s^k, s = t^2, for the base functions
+
+    sinc = sin t / t,  cosc = (1 - cos t) / t^2,  sinc3 = (t - sin t) / t^3,
+    dexpinv_c = (1 - (t/2) cot(t/2)) / t^2.
+"""
+
+COEFFICIENTS = {
+'''
+
+
+def base_coefficients(name: str) -> tuple[tuple[int, int], ...]:
+    """(p, q) with a_k = p/q exactly, k < K, from sympy's series of the even function f(t)."""
+    import sympy as sp
+
+    build, kmax = BASES[name]
+    t = sp.Symbol("t", positive=True)
+    ser = sp.series(build(sp, t), t, 0, 2 * kmax).removeO()
+    poly = sp.Poly(sp.expand(ser), t)
+    out = []
+    for k in range(2 * kmax):
+        c = sp.Rational(poly.coeff_monomial(t**k))
+        if k % 2:
+            if c != 0:
+                raise RuntimeError(f"series base {name!r} is not an even function of t")
+            continue
+        out.append((int(c.p), int(c.q)))
+    return tuple(out)
+
+
+def render() -> str:
+    """The full text of series_data.py (deterministic)."""
+    lines = [_HEADER]
+    for name in BASES:
+        lines.append(f"    {name!r}: (\n")
+        for p, q in base_coefficients(name):
+            lines.append(f"        ({p}, {q}),\n")
+        lines.append("    ),\n")
+    lines.append("}\n")
+    return "".join(lines)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(prog="python -m hpgen.tools.gen_series", description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--check", action="store_true", help="only compare with the committed file")
+    ap.add_argument("-o", "--out", type=Path, default=DATA_PATH)
+    args = ap.parse_args(argv)
+    text = render()
+    if args.check:
+        current = args.out.read_text() if args.out.exists() else ""
+        if current != text:
+            print(f"{args.out} is stale; run python -m hpgen.tools.gen_series", file=sys.stderr)
+            return 1
+        return 0
+    args.out.write_text(text)
+    print(f"wrote {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
