@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 05c0c407c549797f48db77cd1c626e9d8eb5077bed9e5a668c9c48c84019522d
+# content hash: b13919eb7f64d637ab953e7b1c302891099d9c1c65acdbbfba2db1cbc26c90e6
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "05c0c407c549797f48db77cd1c626e9d8eb5077bed9e5a668c9c48c84019522d"
+HASH = "b13919eb7f64d637ab953e7b1c302891099d9c1c65acdbbfba2db1cbc26c90e6"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

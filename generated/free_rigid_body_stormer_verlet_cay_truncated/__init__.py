@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: d7c41dbc0c2944711c3459d46e2e7df464580584f355ad3a8a4a90004674a344
+# content hash: 7a7ffc211f57fdd055266c2860f02896121c05557edbf25b1ccb37ff109c7f72
 """hpgen integrator free_rigid_body_stormer_verlet_cay_truncated for the model free_rigid_body.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "free_rigid_body_stormer_verlet_cay_truncated"
-HASH = "d7c41dbc0c2944711c3459d46e2e7df464580584f355ad3a8a4a90004674a344"
+HASH = "7a7ffc211f57fdd055266c2860f02896121c05557edbf25b1ccb37ff109c7f72"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: free_rigid_body
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: d7c41dbc0c2944711c3459d46e2e7df464580584f355ad3a8a4a90004674a344
+ * content hash: 7a7ffc211f57fdd055266c2860f02896121c05557edbf25b1ccb37ff109c7f72
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -1497,7 +1497,7 @@ typedef struct hpgen_status {
     double residual;             /* inf-norm of the last residual evaluated */
 } hpgen_status;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "d7c41dbc0c2944711c3459d46e2e7df464580584f355ad3a8a4a90004674a344"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "7a7ffc211f57fdd055266c2860f02896121c05557edbf25b1ccb37ff109c7f72"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

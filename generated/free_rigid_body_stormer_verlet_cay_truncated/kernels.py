@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: d7c41dbc0c2944711c3459d46e2e7df464580584f355ad3a8a4a90004674a344
+# content hash: 7a7ffc211f57fdd055266c2860f02896121c05557edbf25b1ccb37ff109c7f72
 """Python backend of the hpgen module free_rigid_body_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 

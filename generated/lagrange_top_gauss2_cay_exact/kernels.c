@@ -3,7 +3,7 @@
  * model: lagrange_top
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 4670d13bf2ac9b5bbd5010702460ad8c8ed22b5283edcdc07c601af836c48102
+ * content hash: c7fcfc91b28700a49f445510b32e70a374bf1450500bc7ffc37ab7a0543276e8
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -5067,7 +5067,7 @@ typedef struct hpgen_status {
     double residual;             /* inf-norm of the last residual evaluated */
 } hpgen_status;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "4670d13bf2ac9b5bbd5010702460ad8c8ed22b5283edcdc07c601af836c48102"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "c7fcfc91b28700a49f445510b32e70a374bf1450500bc7ffc37ab7a0543276e8"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 4670d13bf2ac9b5bbd5010702460ad8c8ed22b5283edcdc07c601af836c48102
+# content hash: c7fcfc91b28700a49f445510b32e70a374bf1450500bc7ffc37ab7a0543276e8
 """Python backend of the hpgen module lagrange_top_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 

@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 05de9e8f33b5ccf128e0cf5c52c38a2eadfd45e6027d470444395b130d93c442
+# content hash: 3ead7402a3a916a1b4971bbcc3cd223de37f0aab1c87a9c12925f3a6acf99b6a
 """hpgen integrator turntable_stormer_verlet_cay_truncated for the model turntable.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "turntable_stormer_verlet_cay_truncated"
-HASH = "05de9e8f33b5ccf128e0cf5c52c38a2eadfd45e6027d470444395b130d93c442"
+HASH = "3ead7402a3a916a1b4971bbcc3cd223de37f0aab1c87a9c12925f3a6acf99b6a"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: underwater_vehicle
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 0fff4164ef686dccbda45ab4eda0a736cffefe1c14455b33309569e911e776ae
+ * content hash: 663eb63e33f61ded4fe4ef3c43d452247117683d7fd2b7a218a699daf9807549
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -11317,7 +11317,7 @@ typedef struct hpgen_status {
     double residual;             /* inf-norm of the last residual evaluated */
 } hpgen_status;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "0fff4164ef686dccbda45ab4eda0a736cffefe1c14455b33309569e911e776ae"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "663eb63e33f61ded4fe4ef3c43d452247117683d7fd2b7a218a699daf9807549"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 0fff4164ef686dccbda45ab4eda0a736cffefe1c14455b33309569e911e776ae
+# content hash: 663eb63e33f61ded4fe4ef3c43d452247117683d7fd2b7a218a699daf9807549
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 

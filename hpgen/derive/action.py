@@ -101,6 +101,10 @@ def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
         guess = xi_hat
         return _finish(group, tau, z, blocks, residual, g1, p1, guess, xi_hat, taus, h)
 
+    if not exact:
+        return _truncated_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_g0,
+                               g1, p1, xi_hat, h)
+
     # The stage multipliers stay unknowns here even for a left-invariant l: with the exact
     # constraint R^j depends on G^j, so the eps_j equations do not force N^j = 0.
     unknown_blocks = [(f"Xi{i + 1}", Xi[i]) for i in range(s)]
@@ -108,9 +112,8 @@ def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
     equations = list(eq_xi) + eq_eps
     unknown_blocks.append(("mu1", mu1))
     equations.append(eq_g0)
-    if exact:
-        unknown_blocks += [(f"Theta{i + 1}", Th[i]) for i in range(s)] + [("xi1", xi1)]
-        equations += eq_th + [eq_xi1]
+    unknown_blocks += [(f"Theta{i + 1}", Th[i]) for i in range(s)] + [("xi1", xi1)]
+    equations += eq_th + [eq_xi1]
     residual = ca.vertcat(*equations)
     z = ca.vertcat(*[v for _, v in unknown_blocks])
     blocks, off = [], 0
@@ -118,19 +121,7 @@ def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
         blocks.append((label, off, off + v.numel()))
         off += v.numel()
 
-    # what is not an unknown is zero (N in the reduced step) or explicit (Theta, xi1 when q = 0)
-    subs_from, subs_to = [], []
-    if not exact:
-        subs_from += Th + [xi1]
-        subs_to += [sum((A[i][j] * Xi[j] for j in range(s)), ca.SX.zeros(d)) for i in range(s)]
-        subs_to += [sum((b[j] * Xi[j] for j in range(s)), ca.SX.zeros(d))]
-    if subs_from:
-        fr, to = ca.vertcat(*subs_from), ca.vertcat(*subs_to)
-        sub = lambda e: ca.substitute(e, fr, to)  # noqa: E731
-    else:
-        sub = lambda e: e  # noqa: E731
-    residual, g1, p1 = sub(residual), sub(g1), sub(p1)
-    taus = [sub(h * Th[i]) for i in range(s)] + [sub(h * xi1)]
+    taus = [h * Th[i] for i in range(s)] + [h * xi1]
 
     guess_of = {f"Xi{i + 1}": xi_hat for i in range(s)}
     guess_of.update({f"N{i + 1}": ca.SX.zeros(d) for i in range(s)})
@@ -138,6 +129,38 @@ def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
     guess_of.update({"mu1": p, "xi1": xi_hat})
     guess = ca.vertcat(*[guess_of[label] for label, _ in unknown_blocks])
     return _finish(group, tau, z, tuple(blocks), residual, g1, p1, guess, xi_hat, taus, h)
+
+
+def _truncated_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_g0, g1, p1,
+                    xi_hat, h):
+    """q = 0 with a g-dependent l: eliminate everything but the stage velocities Xi^i.
+
+    Theta^i = sum_j a_ij Xi^j and xi_{k+1} = sum_j b_j Xi^j are explicit, and the multipliers
+    enter linearly through dtau^{-1} factors whose inverses dtau are closed forms:
+        eps_i:  (dtau^{-1}_{-h Theta^i})^T N^i + b_i f_i = 0            -> N^i explicit
+        eta_0:  p - h sum_i (dtau^{-1}_{h Theta^i})^T N^i
+                  - (dtau^{-1}_{h xi_{k+1}})^T mu_{k+1} = 0             -> mu_{k+1} explicit
+    leaving the s d Legendre conditions in Xi (instead of (2s + 1) d unknowns).
+    """
+    s, d, A, b = tableau.stages, group.d, tableau.A, tableau.b
+    zero = ca.SX.zeros(d)
+    theta = [sum((A[i][j] * Xi[j] for j in range(s)), zero) for i in range(s)]
+    xi_next = sum((b[j] * Xi[j] for j in range(s)), zero)
+    explicit = lambda e: ca.substitute(e, ca.vertcat(*Th, xi1), ca.vertcat(*theta, xi_next))  # noqa: E731
+    N_of = []
+    for i in range(s):
+        rest = ca.substitute(explicit(eq_eps[i]), N[i], zero)     # b_i f_i
+        N_of.append(-ca.mtimes(group.dtau(tau, -h * theta[i]).T, rest))
+    with_N = lambda e: ca.substitute(explicit(e), ca.vertcat(*N), ca.vertcat(*N_of))  # noqa: E731
+    rest0 = ca.substitute(with_N(eq_g0), mu1, zero)
+    mu1_of = ca.mtimes(group.dtau(tau, h * xi_next).T, rest0)
+    final = lambda e: ca.substitute(with_N(e), mu1, mu1_of)  # noqa: E731
+    z = ca.vertcat(*Xi)
+    blocks = tuple((f"Xi{i + 1}", i * d, (i + 1) * d) for i in range(s))
+    residual = ca.vertcat(*[final(e) for e in eq_xi])
+    taus = [h * t for t in theta] + [h * xi_next]
+    guess = ca.vertcat(*[xi_hat] * s)
+    return _finish(group, tau, z, blocks, residual, final(g1), final(p1), guess, xi_hat, taus, h)
 
 
 def _finish(group, tau, z, blocks, residual, g1, p1, guess, xi_hat, taus, h):

@@ -130,7 +130,8 @@ class Point:
     transcendental calls of the exact branch (module docstring). ``p[name]`` is the branch
     value; ``p.taylor(name)`` and ``p.exact(name)`` the two branches."""
 
-    def __init__(self, s, s0: float = S0):
+    def __init__(self, s, s0: float | None = None):
+        s0 = S0 if s0 is None else s0
         self.s = s
         self.s0 = s0
         self.small = s < s0

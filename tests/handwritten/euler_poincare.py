@@ -80,7 +80,8 @@ class EulerPoincare:
 
     def simulate(self, g0, p0, steps):
         """From hpgen's state (g_0, p_0); returns g (N+1, 3, 3), node momenta p (N+1, 3) and
-        the paper's multipliers mu (N+1, 3)."""
+        the paper's multipliers mu (N+1, 3). g0 (..., 3, 3), p0 (..., 3) may carry a leading
+        axis of independent initial states (integrated side by side)."""
         g, mu = np.array(g0, dtype=float), self.mu_from_node_momentum(np.asarray(p0, float))
         gs, ps, mus = [g], [self.node_momentum(mu)], [mu]
         for _ in range(steps):

@@ -87,7 +87,8 @@ def lobatto_iiia_iiib3(problem, q0, p0, h, steps, A=LOBATTO_IIIA3, Abar=LOBATTO_
                        b=LOBATTO_B3):
     """The Lobatto IIIA-IIIB pair (any PRK pair (A, Abar, b) in fact); the stage equations are
     solved for the stage positions Q (s x n) by Newton with a complex-step Jacobian, from the
-    explicit-Euler guess Q_i = q + c_i h p."""
+    explicit guess Q_i = q + c_i h p. q0, p0 (..., n) may carry a leading axis of independent
+    initial states."""
     A, Abar, b = (np.asarray(a, float) for a in (A, Abar, b))
     s, n = len(b), problem.n
     c = A.sum(axis=1)
@@ -96,14 +97,16 @@ def lobatto_iiia_iiib3(problem, q0, p0, h, steps, A=LOBATTO_IIIA3, Abar=LOBATTO_
     for _ in range(steps):
         def residual(Qflat):
             Q = Qflat.reshape(Qflat.shape[:-1] + (s, n))
-            FQ = problem.force(Q)                                  # (..., s, n)
-            P = p + h * np.einsum("ij,...jn->...in", Abar, FQ)    # P_i = p + h sum abar_ij F(Q_j)
-            Qnew = q + h * np.einsum("ij,...jn->...in", A, P)     # Q_i = q + h sum a_ij P_j
+            FQ = problem.force(Q)                                              # (..., s, n)
+            P = p[..., None, :] + h * np.einsum("ij,...jn->...in", Abar, FQ)  # P_i
+            Qnew = q[..., None, :] + h * np.einsum("ij,...jn->...in", A, P)   # Q_i
             return (Q - Qnew).reshape(Qflat.shape)
-        Q = newton(residual, (q + h * c[:, None] * p).ravel()).reshape(s, n)
+        guess = q[..., None, :] + h * c[:, None] * p[..., None, :]
+        Q = newton(residual, guess.reshape(q.shape[:-1] + (s * n,))).reshape(guess.shape)
         FQ = problem.force(Q)
-        P = p + h * Abar @ FQ
-        q, p = q + h * b @ P, p + h * b @ FQ
+        P = p[..., None, :] + h * np.einsum("ij,...jn->...in", Abar, FQ)
+        q = q + h * np.einsum("j,...jn->...n", b, P)
+        p = p + h * np.einsum("j,...jn->...n", b, FQ)
         qs.append(q)
         ps.append(p)
     return np.array(qs), np.array(ps)

@@ -39,7 +39,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .lie import TAU, mv, newton, tr
+from .lie import TAU, cross, mv, newton, solve_vec, tr
 
 E3 = np.array([0.0, 0.0, 1.0])
 
@@ -62,11 +62,11 @@ class HeavyTop:
 
     def force(self, g, xi):
         """g dl/dg (g, xi) = Mg (R^T e3) x chi."""
-        return self.Mg * np.cross(tr(g) @ E3, self.chi)
+        return self.Mg * cross(tr(g) @ E3, self.chi)
 
     def energy(self, g, p):
         xi = self.velocity(g, p)
-        return 0.5 * xi @ self.I @ xi + self.Mg * self.chi @ (g.T @ E3)
+        return 0.5 * np.sum(xi * mv(self.I, xi), axis=-1) + self.Mg * ((tr(g) @ E3) @ self.chi)
 
 
 class _Method:
@@ -76,7 +76,9 @@ class _Method:
         self.tau, self.dtau_inv, self.dtau = TAU[tau]
 
     def simulate(self, g0, p0, steps):
-        """From hpgen's (g_0, p_0): g (N+1, 3, 3) and node momenta p (N+1, 3)."""
+        """From hpgen's (g_0, p_0): g (N+1, 3, 3) and node momenta p (N+1, 3). g0 (..., 3, 3),
+        p0 (..., 3) may carry a leading axis of independent initial states (then g is
+        (N+1, S, 3, 3) and p (N+1, S, 3))."""
         state = self.initial(np.array(g0, dtype=float), np.asarray(p0, dtype=float))
         gs, ps = [state[0]], [self.node_momentum(state)]
         for _ in range(steps):
@@ -97,7 +99,7 @@ class StormerVerlet(_Method):
         """(g_0, mu_0, xi_0) with (dtau^{-1}_{-h xi_0})^* mu_0 = p_0; xi_0 is free (default
         I^{-1} p_0, a plausible previous increment)."""
         xi0 = self.P.velocity(g0, p0) if xi0 is None else np.asarray(xi0, float)
-        mu0 = np.linalg.solve(tr(self.dtau_inv(-self.h * xi0)), p0)
+        mu0 = solve_vec(tr(self.dtau_inv(-self.h * xi0)), p0)
         return g0, mu0, xi0
 
     def step(self, state):

@@ -24,7 +24,8 @@ duals (.)^* of the paper are matrix transposes (``tr``, never the conjugate tran
 Every function accepts complex arguments (for complex-step differentiation: analytic
 operations only, no abs/conj on the data path) and leading batch axes: vectors are (..., 3),
 matrices (..., 3, 3), so that the complex-step Jacobian of a residual costs one vectorized
-evaluation (``cs_eval``).
+evaluation (``cs_eval``), and several initial states can be integrated side by side (the
+schemes take states with a leading axis; each state has its own Newton system).
 """
 from __future__ import annotations
 
@@ -219,14 +220,22 @@ CS_STEP = 1e-40
 
 
 def cs_eval(F, z):
-    """(F(z), dF/dz) by complex step in ONE batched call: row j of the batch is
+    """(F(z), dF/dz) by complex step in ONE batched call. z has shape (..., n) (leading axes:
+    independent systems, e.g. several initial states integrated side by side); F maps
+    (k, ..., n) to (k, ..., m) and must be analytic in z (no abs, no conj). Batch row j is
     z + i eps e_j; column j of the Jacobian is Im F(z + i eps e_j) / eps, exact to round-off
     (no subtractive cancellation), and Re F(z + i eps e_j) = F(z) up to O(eps^2) = 1e-80.
-    F must map (..., n) to (..., m) and be analytic in z (no abs, no conj)."""
+    Returns F (..., m) and J (..., m, n)."""
     z = np.asarray(z, dtype=float)
-    Z = z[None, :] + 1j * CS_STEP * np.eye(z.size)
-    Fc = np.asarray(F(Z))
-    return Fc[0].real, (Fc.imag / CS_STEP).T
+    n = z.shape[-1]
+    E = np.eye(n).reshape((n,) + (1,) * (z.ndim - 1) + (n,))
+    Fc = np.asarray(F(z[None] + 1j * CS_STEP * E))
+    return Fc[0].real, np.moveaxis(Fc.imag / CS_STEP, 0, -1)
+
+
+def solve_vec(A, b):
+    """Solve A x = b for stacks of matrices A (..., n, n) and vectors b (..., n)."""
+    return np.linalg.solve(A, b[..., None])[..., 0]
 
 
 class NewtonError(RuntimeError):
@@ -235,6 +244,8 @@ class NewtonError(RuntimeError):
 
 def newton(F, z0, tol=1e-15, maxit=50):
     """Solve F(z) = 0 from z0 by Newton's method, the Jacobian by complex step (``cs_eval``).
+    z0 may carry leading batch axes (independent systems solved side by side, each with its
+    own Jacobian; the iteration stops when all have converged).
 
     Converged when |dz|_inf <= tol * max(1, |z|_inf) (tol = 1e-15: relative), or when the
     steps stopped shrinking quadratically at the round-off floor (|dz| > |dz_prev| / 2 while
@@ -244,7 +255,7 @@ def newton(F, z0, tol=1e-15, maxit=50):
     dprev = np.inf
     for _ in range(maxit):
         Fz, J = cs_eval(F, z)
-        dz = np.linalg.solve(J, Fz)
+        dz = solve_vec(J, Fz)
         z = z - dz
         dn, scale = np.max(np.abs(dz)), max(1.0, np.max(np.abs(z)))
         if not np.isfinite(dn):

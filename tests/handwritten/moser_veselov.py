@@ -71,11 +71,11 @@ class MoserVeselov:
         def F(w):
             f = exp_so3(w)
             return vee(f @ J - J @ tr(f)) - h * p
-        return exp_so3(newton(F, h * np.linalg.solve(self.I, p)))
+        return exp_so3(newton(F, h * mv(np.linalg.inv(self.I), p)))
 
     def step(self, R, p):
         f = self.body_step(p)
-        M1 = f.T @ hat(p) @ f                     # M_{k+1} = Omega_k^T M_k Omega_k
+        M1 = tr(f) @ hat(p) @ f                    # M_{k+1} = Omega_k^T M_k Omega_k
         return R @ f, vee(M1)
 
     def simulate(self, R0, p0, steps):
@@ -130,8 +130,8 @@ class QuaternionChartEP:
 
         def F(xi):
             return mv(tr(dtau_q_inv(h * xi)), mv(I, xi)) - p
-        xi = newton(F, np.linalg.solve(I, p))
-        return R @ tau_q(h * xi), mv(tr(dtau_q_inv(-h * xi)), I @ xi)
+        xi = newton(F, mv(np.linalg.inv(I), p))
+        return R @ tau_q(h * xi), mv(tr(dtau_q_inv(-h * xi)), mv(I, xi))
 
     def simulate(self, R0, p0, steps):
         R, p = np.array(R0, float), np.array(p0, float)
@@ -141,11 +141,3 @@ class QuaternionChartEP:
             Rs.append(R)
             ps.append(p)
         return np.array(Rs), np.array(ps)
-
-
-def modified_lagrangian_model(inertia, h, name="mv_cayley"):
-    """hpgen model text of l_h(xi) = 1/2 xi.I xi / (1 + h^2 |xi|^2 / 4) (finding (a))."""
-    I = [float(v) for v in inertia]
-    return (f"name: {name}\ngroup: SO3\nparameters: {{I: {I}, hs: {float(h)!r}}}\n"
-            "lagrangian: 0.5*(I[0]*xi[0]**2 + I[1]*xi[1]**2 + I[2]*xi[2]**2)"
-            " / (1 + hs**2*(xi[0]**2 + xi[1]**2 + xi[2]**2)/4)\n")

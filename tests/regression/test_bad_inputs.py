@@ -58,11 +58,8 @@ REQUIRED = (
 
 #: case -> (substrings that may be missing, why): a known gap outside hpgen/model turns into an
 #: xfail for exactly those substrings; every other check of the case still runs and must pass.
-KNOWN_GAPS = {
-    "tau_skew_on_se3": (("tau_skew_on_se3.yaml",),
-                        "derive's ModelError carries no file: hpgen.api.generate_files should "
-                        "re-raise errors of resolve/derive/check_legendre with e.located(file=path)"),
-}
+KNOWN_GAPS: dict[str, tuple[tuple[str, ...], str]] = {}
+# (tau_skew_on_se3 was one until hpgen.api.generate_files located derive's errors in the file)
 
 
 # ---- generated cases (too large to commit) -------------------------------------------------
