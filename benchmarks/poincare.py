@@ -14,7 +14,10 @@ Methods, each at h = 0.025 and h = 0.05:
 - VE: hpgen's variational Euler (``--tableau``, default euler-forward) with the Cayley map
   on SE3, compiled from examples/underwater_vehicle.yaml. l is left-invariant, so hpgen
   emits the reduced Euler-Poincare step (one algebra unknown); the section only needs the
-  node momenta p_k = mu.
+  node momenta p_k = mu. For a left-invariant l the momentum updates of euler-forward,
+  euler-backward and stormer-verlet coincide (the paper's eq. dlp; measured: identical to
+  the last digit), and the scheme is of order 2 (observed 2.00 in (g, p) at T = 1), as the
+  paper's Fig. 1 caption says ("second-order accurate variational Euler").
 - RK4: the classical Runge-Kutta method on the 6-dim equations above, plain NumPy,
   vectorized over the states.
 - Benchmark: SciPy DOP853 at rtol 1e-10 (atol 1e-12), all states stacked, crossings refined
@@ -257,7 +260,7 @@ def drift_table(results, T):
     """Rows (method, h, quantity, median and max over states of the drift figures)."""
     rows = []
     for (kind, h), (_, t, inv) in results.items():
-        for q, name in enumerate(("H", "|P|^2", "Pi.P")):
+        for q, name in enumerate(("H", "P.P", "Pi.P")):
             d = np.array([drift(t, inv[:, j, q]) for j in range(inv.shape[1])])
             rows.append((kind, h, name, d))
     return rows
@@ -268,7 +271,6 @@ def plot(results, states, T, path, tableau):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(2, 3, figsize=(13.5, 8.2), sharex=False, sharey=False)
-    bench = results[("DOP853", None)][0]
     panels = [(axes[0, 0], ("DOP853", None), "benchmark: DOP853, rtol 1e-10"),
               (axes[0, 1], ("VE", 0.025), "VE (hpgen), h = 0.025"),
               (axes[0, 2], ("RK4", 0.025), "RK4, h = 0.025"),
@@ -279,7 +281,7 @@ def plot(results, states, T, path, tableau):
         secs = results[key][0]
         npts = 0
         for j, s in enumerate(secs):
-            ax.scatter(s[:, 0], s[:, 1], s=0.15, color=colors[j], marker=".", linewidths=0,
+            ax.scatter(s[:, 0], s[:, 1], s=1.2, color=colors[j], marker=".", linewidths=0,
                        rasterized=True)
             npts += len(s)
         ax.set_title(f"{title} ({npts} points)", fontsize=10)
@@ -287,7 +289,6 @@ def plot(results, states, T, path, tableau):
         ax.set_ylim(-1.0, 1.0)
         ax.set_xlabel("atan2(P2, P1)")
         ax.set_ylabel("Pi3")
-    del bench
     ax = axes[1, 0]
     styles = {("DOP853", None): ("k", "-"), ("VE", 0.025): ("tab:blue", "-"),
               ("VE", 0.05): ("tab:blue", "--"), ("RK4", 0.025): ("tab:red", "-"),
@@ -300,8 +301,19 @@ def plot(results, states, T, path, tableau):
         ax.loglog(t[1:], dH[1:], color=c, ls=ls, label=lab, lw=1.2)
     ax.set_xlabel("t")
     ax.set_ylabel("running max over states of |H - H0|")
-    ax.set_title("energy error", fontsize=10)
-    ax.legend(fontsize=8, loc="lower right")
+    ax.set_ylim(1e-15, 10.0)
+    lines = []
+    for key in (("RK4", 0.05), ("VE", 0.05)):
+        inv = results[key][2]
+        dH, dC = (np.abs(inv[-1, :, q] - inv[0, :, q]).max() for q in (0, 1))
+        dC2 = np.abs(inv[:, :, 1:] - inv[0, :, 1:]).max()
+        lines.append(f"{key[0]} h = 0.05, t = {T:g}: |dH| {dH:.1e}, |d|P|^2| {dC:.1e}"
+                     if key[0] == "RK4" else
+                     f"{key[0]} h = 0.05: max |dCasimirs| {dC2:.1e}")
+    ax.text(0.98, 0.02, "\n".join(lines), transform=ax.transAxes, ha="right", va="bottom",
+            fontsize=7.5, bbox=dict(facecolor="white", edgecolor="0.7", alpha=0.9))
+    ax.set_title("energy error (RK4 drifts ~ t, VE bounded)", fontsize=10)
+    ax.legend(fontsize=8, loc="upper left", ncol=2)
     ax.grid(True, which="major", alpha=0.3)
     fig.suptitle(f"Underwater vehicle, P3 = 0 section (P3' > 0), {len(states)} states on "
                  f"one energy and Casimir level, T = {T:g}; VE = {tableau}, Cayley",
@@ -314,7 +326,7 @@ def plot(results, states, T, path, tableau):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--quick", action="store_true", help="8 states, T = 500")
+    ap.add_argument("--quick", action="store_true", help="8 states, T = 500 (default 32, 5000)")
     ap.add_argument("--states", type=int, default=None)
     ap.add_argument("--T", type=float, default=None)
     ap.add_argument("--tableau", default="euler-forward",
@@ -323,7 +335,7 @@ def main(argv=None):
     ap.add_argument("--workers", type=int, default=2)
     a = ap.parse_args(argv)
     n = a.states or (8 if a.quick else 32)
-    T = a.T or (500.0 if a.quick else 4000.0)
+    T = a.T or (500.0 if a.quick else 5000.0)
     states = initial_states(n)
     t_start = time.perf_counter()
     compile_ve(a.tableau)                      # build once, before the workers fork

@@ -153,12 +153,12 @@ def resolve(model_obj, opts: CompileOptions):
 
 def generate_files(path: str, text: str, opts: CompileOptions, key: str) -> dict[str, str]:
     """Run the pipeline model -> derive -> codegen; the files of the generated module."""
+    from .model import load_model_text
+
+    model_obj = load_model_text(text, filename=path)   # bad input fails before casadi loads
     from .codegen import emit, module_name
     from .derive import derive
     from .derive.checks import check_legendre
-    from .model import load_model_text
-
-    model_obj = load_model_text(text, filename=path)
     try:
         tab, tau, rkmk = resolve(model_obj, opts)
         step = derive(model_obj, tab, tau, rkmk)

@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: b13919eb7f64d637ab953e7b1c302891099d9c1c65acdbbfba2db1cbc26c90e6
+# content hash: 2338b1b57e8ff944df4db4a823ab8d510295d310af46803ff5fda31b642860c1
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 
@@ -5331,6 +5331,63 @@ def margin(z, h):
     h = _vec(h, 1, "margin: h")
     r0 = [0.0] * 1
     w0 = 1.0
+    w1 = 4.0
+    w2 = h[0]
+    w3 = 0.5
+    w4 = z[0]
+    w4 = w3 * w4
+    w5 = z[6]
+    w5 = w3 * w5
+    w4 = w4 + w5
+    w4 = w2 * w4
+    w4 = w4 * w4
+    w5 = z[1]
+    w5 = w3 * w5
+    w6 = z[7]
+    w6 = w3 * w6
+    w5 = w5 + w6
+    w5 = w2 * w5
+    w5 = w5 * w5
+    w4 = w4 + w5
+    w5 = z[2]
+    w5 = w3 * w5
+    w6 = z[8]
+    w6 = w3 * w6
+    w5 = w5 + w6
+    w5 = w2 * w5
+    w5 = w5 * w5
+    w4 = w4 + w5
+    w4 = w1 - w4
+    w4 = _fmin(w0, w4)
+    w5 = z[3]
+    w5 = w3 * w5
+    w6 = z[9]
+    w6 = w3 * w6
+    w5 = w5 + w6
+    w5 = w2 * w5
+    w5 = w5 * w5
+    w6 = z[4]
+    w6 = w3 * w6
+    w7 = z[10]
+    w7 = w3 * w7
+    w6 = w6 + w7
+    w6 = w2 * w6
+    w6 = w6 * w6
+    w5 = w5 + w6
+    w6 = z[5]
+    w6 = w3 * w6
+    w7 = z[11]
+    w3 = w3 * w7
+    w6 = w6 + w3
+    w2 = w2 * w6
+    w2 = w2 * w2
+    w5 = w5 + w2
+    w1 = w1 - w5
+    w4 = _fmin(w4, w1)
+    w0 = _fmin(w0, w4)
+    w0 = _fmin(w0, w4)
+    w0 = _fmin(w0, w4)
+    w0 = _fmin(w0, w4)
     r0[0] = w0
     return [numpy.array(r0, dtype=numpy.float64)]
 

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 7a7ffc211f57fdd055266c2860f02896121c05557edbf25b1ccb37ff109c7f72
+# content hash: 7346728257a2b579b0e874e3a2f45324b95b981ed1615a3d2d0bc1ee644e3fc8
 """Python backend of the hpgen module free_rigid_body_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 
@@ -742,6 +742,24 @@ def margin(z, h):
     h = _vec(h, 1, "margin: h")
     r0 = [0.0] * 1
     w0 = 1.0
+    w1 = 4.0
+    w2 = h[0]
+    w3 = z[0]
+    w3 = w2 * w3
+    w3 = w3 * w3
+    w4 = z[1]
+    w4 = w2 * w4
+    w4 = w4 * w4
+    w3 = w3 + w4
+    w4 = z[2]
+    w2 = w2 * w4
+    w2 = w2 * w2
+    w3 = w3 + w2
+    w1 = w1 - w3
+    w0 = _fmin(w0, w1)
+    w0 = _fmin(w0, w1)
+    w0 = _fmin(w0, w1)
+    w0 = _fmin(w0, w1)
     r0[0] = w0
     return [numpy.array(r0, dtype=numpy.float64)]
 

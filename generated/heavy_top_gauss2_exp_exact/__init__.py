@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 301488605651f87a605806b28f25ce27a2d1e8f7b8ab72de844616707ba543b0
+# content hash: 7c8e27990c3f7d29d99964cfd6481ab9b8691baffd430a8a6aa16c1ec48d6244
 """hpgen integrator heavy_top_gauss2_exp_exact for the model heavy_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "heavy_top_gauss2_exp_exact"
-HASH = "301488605651f87a605806b28f25ce27a2d1e8f7b8ab72de844616707ba543b0"
+HASH = "7c8e27990c3f7d29d99964cfd6481ab9b8691baffd430a8a6aa16c1ec48d6244"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

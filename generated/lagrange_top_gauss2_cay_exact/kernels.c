@@ -3,7 +3,7 @@
  * model: lagrange_top
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: c7fcfc91b28700a49f445510b32e70a374bf1450500bc7ffc37ab7a0543276e8
+ * content hash: 5d7ea74a27ba343cbe32735a75cfb5f8e1596e1103eedb282511e7bce1d4997c
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -54,6 +54,7 @@
 #define casadi_f9 CASADI_PREFIX(f9)
 #define casadi_fabs CASADI_PREFIX(fabs)
 #define casadi_fmax CASADI_PREFIX(fmax)
+#define casadi_fmin CASADI_PREFIX(fmin)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s2 CASADI_PREFIX(s2)
@@ -93,6 +94,15 @@ casadi_real casadi_fmax(casadi_real x, casadi_real y) {
   return x>y ? x : y;
 #else
   return fmax(x, y);
+#endif
+}
+
+casadi_real casadi_fmin(casadi_real x, casadi_real y) {
+/* Pre-c99 compatibility */
+#if __STDC_VERSION__ < 199901L
+  return x<y ? x : y;
+#else
+  return fmin(x, y);
 #endif
 }
 
@@ -4957,8 +4967,52 @@ CASADI_SYMBOL_EXPORT int defect_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 
 /* margin:(z[24],h)->(m) */
 static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0;
+  casadi_real a0, a1, a2, a3, a4;
   a0=1.;
+  a1=4.;
+  a2=arg[1]? arg[1][0] : 0;
+  a3=arg[0]? arg[0][15] : 0;
+  a3=(a2*a3);
+  a3=casadi_sq(a3);
+  a4=arg[0]? arg[0][16] : 0;
+  a4=(a2*a4);
+  a4=casadi_sq(a4);
+  a3=(a3+a4);
+  a4=arg[0]? arg[0][17] : 0;
+  a4=(a2*a4);
+  a4=casadi_sq(a4);
+  a3=(a3+a4);
+  a3=(a1-a3);
+  a0=casadi_fmin(a0,a3);
+  a0=casadi_fmin(a0,a3);
+  a3=arg[0]? arg[0][18] : 0;
+  a3=(a2*a3);
+  a3=casadi_sq(a3);
+  a4=arg[0]? arg[0][19] : 0;
+  a4=(a2*a4);
+  a4=casadi_sq(a4);
+  a3=(a3+a4);
+  a4=arg[0]? arg[0][20] : 0;
+  a4=(a2*a4);
+  a4=casadi_sq(a4);
+  a3=(a3+a4);
+  a3=(a1-a3);
+  a0=casadi_fmin(a0,a3);
+  a0=casadi_fmin(a0,a3);
+  a3=arg[0]? arg[0][21] : 0;
+  a3=(a2*a3);
+  a3=casadi_sq(a3);
+  a4=arg[0]? arg[0][22] : 0;
+  a4=(a2*a4);
+  a4=casadi_sq(a4);
+  a3=(a3+a4);
+  a4=arg[0]? arg[0][23] : 0;
+  a2=(a2*a4);
+  a2=casadi_sq(a2);
+  a3=(a3+a2);
+  a1=(a1-a3);
+  a0=casadi_fmin(a0,a1);
+  a0=casadi_fmin(a0,a1);
   if (res[0]!=0) res[0][0]=a0;
   return 0;
 }
@@ -5067,7 +5121,7 @@ typedef struct hpgen_status {
     double residual;             /* inf-norm of the last residual evaluated */
 } hpgen_status;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "c7fcfc91b28700a49f445510b32e70a374bf1450500bc7ffc37ab7a0543276e8"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "5d7ea74a27ba343cbe32735a75cfb5f8e1596e1103eedb282511e7bce1d4997c"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -5259,7 +5313,7 @@ HPGEN_EXPORT int hpgen_kernel_defect(const double* in0, double* out0) {
 #define HPGEN_MARGIN_SZ_ARG 2
 #define HPGEN_MARGIN_SZ_RES 1
 #define HPGEN_MARGIN_SZ_IW 0
-#define HPGEN_MARGIN_SZ_W 1
+#define HPGEN_MARGIN_SZ_W 5
 HPGEN_EXPORT int hpgen_kernel_margin(const double* in0, const double* in1, double* out0) {
     const casadi_real* arg[HPGEN_MARGIN_SZ_ARG + 1];
     casadi_real* res[HPGEN_MARGIN_SZ_RES + 1];
@@ -5359,12 +5413,20 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
     return HPGEN_NO_CONVERGENCE;
 }
 
-/* One step: Newton from z (in/out), then margin(z, h) > 0, then update -> (g1, p1). */
+/* One step: margin(z, h) > 0 at the start, Newton from z (in/out), margin(z, h) > 0 at the
+   solution, then update -> (g1, p1). */
 static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
                            double tol, long long maxit, double* g1, double* p1,
                            long long* iters, double* rnorm) {
     double m[1];
-    int code = hpgen_newton(g, p, hv, z, tol, maxit, iters, rnorm);
+    int code;
+    /* a start outside tau's domain means h is too large for the chart: do not let Newton
+       wander to a spurious root from there */
+    if (!hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) {
+        *iters = 0; *rnorm = NAN;
+        return HPGEN_DOMAIN;
+    }
+    code = hpgen_newton(g, p, hv, z, tol, maxit, iters, rnorm);
     if (code != HPGEN_OK) {
         /* a failure at an iterate outside tau's domain is reported as a domain error */
         if (!hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) return HPGEN_DOMAIN;

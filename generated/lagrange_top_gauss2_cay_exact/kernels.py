@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: c7fcfc91b28700a49f445510b32e70a374bf1450500bc7ffc37ab7a0543276e8
+# content hash: 5d7ea74a27ba343cbe32735a75cfb5f8e1596e1103eedb282511e7bce1d4997c
 """Python backend of the hpgen module lagrange_top_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 
@@ -4292,6 +4292,50 @@ def margin(z, h):
     h = _vec(h, 1, "margin: h")
     r0 = [0.0] * 1
     w0 = 1.0
+    w1 = 4.0
+    w2 = h[0]
+    w3 = z[15]
+    w3 = w2 * w3
+    w3 = w3 * w3
+    w4 = z[16]
+    w4 = w2 * w4
+    w4 = w4 * w4
+    w3 = w3 + w4
+    w4 = z[17]
+    w4 = w2 * w4
+    w4 = w4 * w4
+    w3 = w3 + w4
+    w3 = w1 - w3
+    w0 = _fmin(w0, w3)
+    w0 = _fmin(w0, w3)
+    w3 = z[18]
+    w3 = w2 * w3
+    w3 = w3 * w3
+    w4 = z[19]
+    w4 = w2 * w4
+    w4 = w4 * w4
+    w3 = w3 + w4
+    w4 = z[20]
+    w4 = w2 * w4
+    w4 = w4 * w4
+    w3 = w3 + w4
+    w3 = w1 - w3
+    w0 = _fmin(w0, w3)
+    w0 = _fmin(w0, w3)
+    w3 = z[21]
+    w3 = w2 * w3
+    w3 = w3 * w3
+    w4 = z[22]
+    w4 = w2 * w4
+    w4 = w4 * w4
+    w3 = w3 + w4
+    w4 = z[23]
+    w2 = w2 * w4
+    w2 = w2 * w2
+    w3 = w3 + w2
+    w1 = w1 - w3
+    w0 = _fmin(w0, w1)
+    w0 = _fmin(w0, w1)
     r0[0] = w0
     return [numpy.array(r0, dtype=numpy.float64)]
 

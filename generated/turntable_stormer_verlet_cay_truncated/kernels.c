@@ -3,7 +3,7 @@
  * model: turntable
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 3ead7402a3a916a1b4971bbcc3cd223de37f0aab1c87a9c12925f3a6acf99b6a
+ * content hash: 6b98ecb73f5f185669d7792e376901f2715f4226785a85bdf14c1a1878e5681d
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -54,6 +54,7 @@
 #define casadi_f9 CASADI_PREFIX(f9)
 #define casadi_fabs CASADI_PREFIX(fabs)
 #define casadi_fmax CASADI_PREFIX(fmax)
+#define casadi_fmin CASADI_PREFIX(fmin)
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s2 CASADI_PREFIX(s2)
@@ -93,6 +94,15 @@ casadi_real casadi_fmax(casadi_real x, casadi_real y) {
   return x>y ? x : y;
 #else
   return fmax(x, y);
+#endif
+}
+
+casadi_real casadi_fmin(casadi_real x, casadi_real y) {
+/* Pre-c99 compatibility */
+#if __STDC_VERSION__ < 199901L
+  return x<y ? x : y;
+#else
+  return fmin(x, y);
 #endif
 }
 
@@ -2846,8 +2856,39 @@ CASADI_SYMBOL_EXPORT int defect_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 
 /* margin:(z[6],h)->(m) */
 static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a0;
+  casadi_real a0, a1, a2, a3, a4, a5, a6;
   a0=1.;
+  a1=4.;
+  a2=arg[1]? arg[1][0] : 0;
+  a3=5.0000000000000000e-01;
+  a4=arg[0]? arg[0][0] : 0;
+  a4=(a3*a4);
+  a5=arg[0]? arg[0][3] : 0;
+  a5=(a3*a5);
+  a4=(a4+a5);
+  a4=(a2*a4);
+  a4=casadi_sq(a4);
+  a5=arg[0]? arg[0][1] : 0;
+  a5=(a3*a5);
+  a6=arg[0]? arg[0][4] : 0;
+  a6=(a3*a6);
+  a5=(a5+a6);
+  a5=(a2*a5);
+  a5=casadi_sq(a5);
+  a4=(a4+a5);
+  a5=arg[0]? arg[0][2] : 0;
+  a5=(a3*a5);
+  a6=arg[0]? arg[0][5] : 0;
+  a3=(a3*a6);
+  a5=(a5+a3);
+  a2=(a2*a5);
+  a2=casadi_sq(a2);
+  a4=(a4+a2);
+  a1=(a1-a4);
+  a0=casadi_fmin(a0,a1);
+  a0=casadi_fmin(a0,a1);
+  a0=casadi_fmin(a0,a1);
+  a0=casadi_fmin(a0,a1);
   if (res[0]!=0) res[0][0]=a0;
   return 0;
 }
@@ -2956,7 +2997,7 @@ typedef struct hpgen_status {
     double residual;             /* inf-norm of the last residual evaluated */
 } hpgen_status;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "3ead7402a3a916a1b4971bbcc3cd223de37f0aab1c87a9c12925f3a6acf99b6a"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "6b98ecb73f5f185669d7792e376901f2715f4226785a85bdf14c1a1878e5681d"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -3148,7 +3189,7 @@ HPGEN_EXPORT int hpgen_kernel_defect(const double* in0, double* out0) {
 #define HPGEN_MARGIN_SZ_ARG 2
 #define HPGEN_MARGIN_SZ_RES 1
 #define HPGEN_MARGIN_SZ_IW 0
-#define HPGEN_MARGIN_SZ_W 1
+#define HPGEN_MARGIN_SZ_W 7
 HPGEN_EXPORT int hpgen_kernel_margin(const double* in0, const double* in1, double* out0) {
     const casadi_real* arg[HPGEN_MARGIN_SZ_ARG + 1];
     casadi_real* res[HPGEN_MARGIN_SZ_RES + 1];
@@ -3248,12 +3289,20 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
     return HPGEN_NO_CONVERGENCE;
 }
 
-/* One step: Newton from z (in/out), then margin(z, h) > 0, then update -> (g1, p1). */
+/* One step: margin(z, h) > 0 at the start, Newton from z (in/out), margin(z, h) > 0 at the
+   solution, then update -> (g1, p1). */
 static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
                            double tol, long long maxit, double* g1, double* p1,
                            long long* iters, double* rnorm) {
     double m[1];
-    int code = hpgen_newton(g, p, hv, z, tol, maxit, iters, rnorm);
+    int code;
+    /* a start outside tau's domain means h is too large for the chart: do not let Newton
+       wander to a spurious root from there */
+    if (!hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) {
+        *iters = 0; *rnorm = NAN;
+        return HPGEN_DOMAIN;
+    }
+    code = hpgen_newton(g, p, hv, z, tol, maxit, iters, rnorm);
     if (code != HPGEN_OK) {
         /* a failure at an iterate outside tau's domain is reported as a domain error */
         if (!hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) return HPGEN_DOMAIN;

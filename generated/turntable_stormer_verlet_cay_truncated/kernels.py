@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 3ead7402a3a916a1b4971bbcc3cd223de37f0aab1c87a9c12925f3a6acf99b6a
+# content hash: 6b98ecb73f5f185669d7792e376901f2715f4226785a85bdf14c1a1878e5681d
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 
@@ -2185,6 +2185,37 @@ def margin(z, h):
     h = _vec(h, 1, "margin: h")
     r0 = [0.0] * 1
     w0 = 1.0
+    w1 = 4.0
+    w2 = h[0]
+    w3 = 0.5
+    w4 = z[0]
+    w4 = w3 * w4
+    w5 = z[3]
+    w5 = w3 * w5
+    w4 = w4 + w5
+    w4 = w2 * w4
+    w4 = w4 * w4
+    w5 = z[1]
+    w5 = w3 * w5
+    w6 = z[4]
+    w6 = w3 * w6
+    w5 = w5 + w6
+    w5 = w2 * w5
+    w5 = w5 * w5
+    w4 = w4 + w5
+    w5 = z[2]
+    w5 = w3 * w5
+    w6 = z[5]
+    w3 = w3 * w6
+    w5 = w5 + w3
+    w2 = w2 * w5
+    w2 = w2 * w2
+    w4 = w4 + w2
+    w1 = w1 - w4
+    w0 = _fmin(w0, w1)
+    w0 = _fmin(w0, w1)
+    w0 = _fmin(w0, w1)
+    w0 = _fmin(w0, w1)
     r0[0] = w0
     return [numpy.array(r0, dtype=numpy.float64)]
 

@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 663eb63e33f61ded4fe4ef3c43d452247117683d7fd2b7a218a699daf9807549
+# content hash: 956af2d93ebc9e6be0a774de78cc0e829033bfa3f1d65738d7c2447231e37fee
 """hpgen integrator underwater_vehicle_gauss2_cay_exact for the model underwater_vehicle.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "underwater_vehicle_gauss2_cay_exact"
-HASH = "663eb63e33f61ded4fe4ef3c43d452247117683d7fd2b7a218a699daf9807549"
+HASH = "956af2d93ebc9e6be0a774de78cc0e829033bfa3f1d65738d7c2447231e37fee"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 663eb63e33f61ded4fe4ef3c43d452247117683d7fd2b7a218a699daf9807549
+# content hash: 956af2d93ebc9e6be0a774de78cc0e829033bfa3f1d65738d7c2447231e37fee
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 
@@ -10527,6 +10527,50 @@ def margin(z, h):
     h = _vec(h, 1, "margin: h")
     r0 = [0.0] * 1
     w0 = 1.0
+    w1 = 4.0
+    w2 = h[0]
+    w3 = z[30]
+    w3 = w2 * w3
+    w3 = w3 * w3
+    w4 = z[31]
+    w4 = w2 * w4
+    w4 = w4 * w4
+    w3 = w3 + w4
+    w4 = z[32]
+    w4 = w2 * w4
+    w4 = w4 * w4
+    w3 = w3 + w4
+    w3 = w1 - w3
+    w0 = _fmin(w0, w3)
+    w0 = _fmin(w0, w3)
+    w3 = z[36]
+    w3 = w2 * w3
+    w3 = w3 * w3
+    w4 = z[37]
+    w4 = w2 * w4
+    w4 = w4 * w4
+    w3 = w3 + w4
+    w4 = z[38]
+    w4 = w2 * w4
+    w4 = w4 * w4
+    w3 = w3 + w4
+    w3 = w1 - w3
+    w0 = _fmin(w0, w3)
+    w0 = _fmin(w0, w3)
+    w3 = z[42]
+    w3 = w2 * w3
+    w3 = w3 * w3
+    w4 = z[43]
+    w4 = w2 * w4
+    w4 = w4 * w4
+    w3 = w3 + w4
+    w4 = z[44]
+    w2 = w2 * w4
+    w2 = w2 * w2
+    w3 = w3 + w2
+    w1 = w1 - w3
+    w0 = _fmin(w0, w1)
+    w0 = _fmin(w0, w1)
     r0[0] = w0
     return [numpy.array(r0, dtype=numpy.float64)]
 

@@ -40,9 +40,28 @@ def _max_abs(M):
     return ca.mmax(ca.fabs(M))
 
 
-class Rn(LieGroup):
+class ChartMapsFromModule(LieGroup):
+    """tau, dtau_inv, dtau and tau_margin from the functions ``<maps_prefix>_tau`` etc. of
+    hpgen.groups.maps (signature ``(group, kind, x)``)."""
+    maps_prefix: str
+
+    def tau(self, kind, x):
+        return getattr(maps, f"{self.maps_prefix}_tau")(self, kind, x)
+
+    def dtau_inv(self, kind, x):
+        return getattr(maps, f"{self.maps_prefix}_dtau_inv")(self, kind, x)
+
+    def dtau(self, kind, x):
+        return getattr(maps, f"{self.maps_prefix}_dtau")(self, kind, x)
+
+    def tau_margin(self, kind, x):
+        return getattr(maps, f"{self.maps_prefix}_margin")(self, kind, x)
+
+
+class Rn(ChartMapsFromModule):
     """Translations of R^n as (n+1) x (n+1) matrices; abelian, every tau is exact (I + x^)."""
     tau_kinds = ("exp", "cay")
+    maps_prefix = "rn"
 
     def __init__(self, k: int):
         self.k, self.n, self.d, self.name = k, k + 1, k, f"R{k}"
@@ -60,20 +79,10 @@ class Rn(LieGroup):
     def group_defect(self, g):
         return _max_abs(g - _affine(ca.SX.eye(self.k), g[0:self.k, self.k]))
 
-    def tau(self, kind, x):
-        return maps.rn_tau(self, kind, x)
-
-    def dtau_inv(self, kind, x):
-        return maps.rn_dtau_inv(self, kind, x)
-
-    def dtau(self, kind, x):
-        return maps.rn_dtau(self, kind, x)
-
-    def tau_margin(self, kind, x):
-        return ca.SX(1.0)
 
 
-class SO2(LieGroup):
+class SO2(ChartMapsFromModule):
+    maps_prefix = "so2"
     name, n, d = "SO2", 2, 1
     tau_kinds = ("exp", "cay", "skew")
     rotation_block = (0, 2)
@@ -90,20 +99,10 @@ class SO2(LieGroup):
     def group_defect(self, g):
         return ca.fmax(_max_abs(ca.mtimes(g.T, g) - ca.SX.eye(2)), ca.fabs(ca.det(g) - 1))
 
-    def tau(self, kind, x):
-        return maps.so2_tau(self, kind, x)
-
-    def dtau_inv(self, kind, x):
-        return maps.so2_dtau_inv(self, kind, x)
-
-    def dtau(self, kind, x):
-        return maps.so2_dtau(self, kind, x)
-
-    def tau_margin(self, kind, x):
-        return maps.so2_margin(self, kind, x)
 
 
-class SO3(LieGroup):
+class SO3(ChartMapsFromModule):
+    maps_prefix = "so3"
     name, n, d = "SO3", 3, 3
     tau_kinds = ("exp", "cay", "skew")
     rotation_block = (0, 3)
@@ -120,20 +119,10 @@ class SO3(LieGroup):
     def group_defect(self, g):
         return ca.fmax(_max_abs(ca.mtimes(g.T, g) - ca.SX.eye(3)), ca.fabs(ca.det(g) - 1))
 
-    def tau(self, kind, x):
-        return maps.so3_tau(self, kind, x)
-
-    def dtau_inv(self, kind, x):
-        return maps.so3_dtau_inv(self, kind, x)
-
-    def dtau(self, kind, x):
-        return maps.so3_dtau(self, kind, x)
-
-    def tau_margin(self, kind, x):
-        return maps.so3_margin(self, kind, x)
 
 
-class SE2(LieGroup):
+class SE2(ChartMapsFromModule):
+    maps_prefix = "se2"
     name, n, d = "SE2", 3, 3
     tau_kinds = ("exp", "cay")
     rotation_block = (0, 2)
@@ -155,20 +144,10 @@ class SE2(LieGroup):
         return ca.fmax(ca.fmax(_max_abs(ca.mtimes(R.T, R) - ca.SX.eye(2)), ca.fabs(ca.det(R) - 1)),
                        _max_abs(g[2, :] - ca.horzcat(0, 0, 1)))
 
-    def tau(self, kind, x):
-        return maps.se2_tau(self, kind, x)
-
-    def dtau_inv(self, kind, x):
-        return maps.se2_dtau_inv(self, kind, x)
-
-    def dtau(self, kind, x):
-        return maps.se2_dtau(self, kind, x)
-
-    def tau_margin(self, kind, x):
-        return maps.se2_margin(self, kind, x)
 
 
-class SE3(LieGroup):
+class SE3(ChartMapsFromModule):
+    maps_prefix = "se3"
     name, n, d = "SE3", 4, 6
     tau_kinds = ("exp", "cay")
     rotation_block = (0, 3)
@@ -189,17 +168,6 @@ class SE3(LieGroup):
         return ca.fmax(ca.fmax(_max_abs(ca.mtimes(R.T, R) - ca.SX.eye(3)), ca.fabs(ca.det(R) - 1)),
                        _max_abs(g[3, :] - ca.horzcat(0, 0, 0, 1)))
 
-    def tau(self, kind, x):
-        return maps.se3_tau(self, kind, x)
-
-    def dtau_inv(self, kind, x):
-        return maps.se3_dtau_inv(self, kind, x)
-
-    def dtau(self, kind, x):
-        return maps.se3_dtau(self, kind, x)
-
-    def tau_margin(self, kind, x):
-        return maps.se3_margin(self, kind, x)
 
 
 class ProductGroup(LieGroup):

@@ -18,19 +18,29 @@ Kinds (``ModelError`` on ``integrator.tau`` for a kind the group does not suppor
   s = |omega|^2, so f(M) = I - M/2 + c(s) M^2 (the odd part of f is exactly -z/2) and
   g(M) = I + cosc(s) M + sinc3(s) M^2 (odd part (cosh z - 1)/z, even part sinh z / z).
   On se3, ad_x = [[W, 0], [V, W]] and f(ad_x) = [[f(W), 0], [Df(W)[V], f(W)]], the Frechet
-  derivative taken through the closed form: Df(W)[V] = -V/2 + c (WV + VW) + 2 (w.v) c' W^2.
+  derivative taken through the closed form: Df(W)[V] = -V/2 + c (WV + VW) + 2 (w.v) c' W^2,
+  and likewise Dg(W)[V] = cosc V + sinc3 (WV + VW) + 2 (w.v) (cosc' W + sinc3' W^2).
+  Everything is assembled entry by entry from W^2 = w w^T - s I and WV + VW =
+  v w^T + w v^T - 2 (w.v) I (no 3 x 3 products, no generic ad matrices), and the scalar
+  functions of s of one map come from one ``series.Point`` (one branch, shared
+  transcendentals): the derive stage differentiates dexp^{-1} up to twice more, through both
+  branches, so the size of these expressions is the size of the generated kernels.
   Margin: the exp chart is injective for |omega| < pi (dexp^{-1} blows up at 2 pi); the
   margin is (pi^2 - |omega|^2) / (2 pi), a smooth function with the sign of pi - |omega|
   and equal to it to first order at the boundary (pi - |omega| itself is not differentiable
   at omega = 0). R<n> and SO2 are abelian: dexp = dexp^{-1} = I.
 - ``cay`` (eq:cay, eq:dcay): cay(X) = (I - X/2)^{-1} (I + X/2), dcay^{-1}_x(y) =
   vee((I - X/2) Y (I + X/2)), dcay_x(y) = vee((I - X/2)^{-1} Y (I + X/2)^{-1}), all in closed
-  form (no symbolic inverse). Margin 1.0: on SO2, SO3, SE2, SE3 the Cayley map and dcay^{-1}
-  are defined and smooth on the whole algebra (every denominator is 4 + |omega|^2 >= 4); the
-  chart only misses the half-turns, reached as |omega| -> infinity, where it degrades
-  gracefully (dcay ~ 1/|omega|), so there is no finite boundary to report.
+  form (no symbolic inverse). The Cayley map and dcay^{-1} are defined and smooth on the
+  whole algebra (every denominator is 4 + |omega|^2 >= 4), but the chart compresses angles:
+  cay(x) rotates by 2 atan(|omega|/2), and cond(dcay^{-1}_x) = 1 + |omega|^2/4. Margin
+  4 - |omega|^2: at most a quarter turn per chart evaluation. Beyond it the step equations
+  were measured to have spurious roots (Gauss 2, exact RKMK, |h omega| = 3 on a spinning
+  body converged to a root rotating 0.04 rad instead of 3); inside it they did not.
 - ``skew`` (eq:dskew, SO2 and SO3 only): tau(x) = X + (X^2 + I)^{1/2} (symmetric square root),
-  the inverse of g -> (g - g^T)/2; defined for |w| < 1, margin 1 - |w|^2. With r = sqrt(1 - s):
+  the inverse of g -> (g - g^T)/2; defined for |w| < 1, but the discrete Legendre map of a
+  spin, p = sqrt(1 - |h xi|^2) I xi, folds at |h xi|^2 = 1/2 (no step exists beyond it, and a
+  spurious branch lies past it), so the margin is 1/2 - |w|^2. With r = sqrt(1 - s):
   dskew^{-1}_x(y) = vee((Y tau - (Y tau)^T)/2) = ((1 + r)/2) I - X/2 - x x^T / (2 (1 + r)) and
   its inverse dskew_x = I + X/(1 + r) + x x^T / (r (1 + r)) (solved in the basis I, X, x x^T;
   x is the eigenvector with eigenvalue r of dskew^{-1}).
@@ -73,52 +83,58 @@ def _blocks(A, B, C, D):
     return ca.vertcat(ca.horzcat(A, B), ca.horzcat(C, D))
 
 
-def _outer(a, b):
-    """a b^T + b a^T as a 3 x 3 SX (symmetric: each entry built once); a b^T + b a^T = 2 a a^T
-    when b is a."""
-    if b is a:
-        e = [[None] * 3 for _ in range(3)]
-        for i in range(3):
-            for j in range(i, 3):
-                e[i][j] = e[j][i] = a[i] * a[j]
-        return e
+# ---- so3 matrices entry by entry ----------------------------------------------------------
+# The exp-chart maps are linear combinations of I, W = w^, W^2 and (se3) V = v^, WV + VW with
+# scalar coefficients of s = |w|^2. They are built entry by entry from the closed forms
+#   W^2     = w w^T - s I   (diagonal -(w_j^2 + w_k^2), no cancellation),
+#   WV + VW = v w^T + w v^T - 2 (w.v) I   (symmetric),
+# which keeps the expression graph, and so its AD, small: no 3 x 3 matrix products.
+_OFF = ((0, 1, -1, 2), (0, 2, 1, 1), (1, 0, 1, 2), (1, 2, -1, 0), (2, 0, -1, 1), (2, 1, 1, 0))
+# (i, j, sign, k): hat(w)[i, j] = sign * w[k] off the diagonal
+
+
+def _sq3(w):
+    """W^2 = hat(w)^2 as a symmetric 3 x 3 list of SX scalars."""
+    q = [w[i] * w[i] for i in range(3)]
     e = [[None] * 3 for _ in range(3)]
     for i in range(3):
-        for j in range(i, 3):
-            e[i][j] = e[j][i] = a[i] * b[j] + b[i] * a[j] if i != j else 2 * a[i] * b[i]
+        e[i][i] = -(q[(i + 1) % 3] + q[(i + 2) % 3])
+        for j in range(i + 1, 3):
+            e[i][j] = e[j][i] = w[i] * w[j]
     return e
 
 
-def _so3_combo(alpha, beta, gamma, w, delta=0, v=None, V_coef=0):
-    """alpha I + beta w^ + gamma w w^T [+ delta (v w^T + w v^T) + V_coef v^], entry by entry.
-
-    Every so3 map is of this form (W^2 = w w^T - s I, WV + VW = v w^T + w v^T - 2 (w.v) I for
-    W = w^, V = v^), which keeps the expression graph small under AD: no 3 x 3 products."""
-    ww = _outer(w, w)
-    vw = _outer(v, w) if v is not None and not _is_zero(delta) else None
-    rows = []
+def _anticomm3(w, v):
+    """WV + VW = v w^T + w v^T - 2 (w.v) I as a symmetric 3 x 3 list of SX scalars."""
+    p = [w[i] * v[i] for i in range(3)]
+    e = [[None] * 3 for _ in range(3)]
     for i in range(3):
-        row = []
-        for j in range(3):
-            e = gamma * ww[i][j]
-            if vw is not None:
-                e = e + delta * vw[i][j]
-            if i == j:
-                e = alpha + e
-            else:
-                k = 3 - i - j  # W[i, j] = sign * w[k]
-                sign = 1 if (i, j) in ((1, 0), (0, 2), (2, 1)) else -1
-                if not _is_zero(beta):
-                    e = e + (sign * beta) * w[k]
-                if not _is_zero(V_coef):
-                    e = e + (sign * V_coef) * v[k]
-            row.append(e)
-        rows.append(ca.horzcat(*row))
-    return ca.vertcat(*rows)
+        e[i][i] = -2 * (p[(i + 1) % 3] + p[(i + 2) % 3])
+        for j in range(i + 1, 3):
+            e[i][j] = e[j][i] = v[i] * w[j] + w[i] * v[j]
+    return e
 
 
-def _is_zero(c):
-    return isinstance(c, (int, float)) and c == 0
+def _so3_matrix(diag, terms):
+    """diag I + sum_k coef_k M_k, terms = [(coef_k, M_k)] with M_k a 3 x 3 list (symmetric
+    parts) or a 3-vector a standing for hat(a) (antisymmetric parts); coef == 0 is skipped."""
+    rows = [[diag if i == j else None for j in range(3)] for i in range(3)]
+
+    def add(i, j, e):
+        rows[i][j] = e if rows[i][j] is None else rows[i][j] + e
+
+    for coef, M in terms:
+        if isinstance(coef, (int, float)) and coef == 0:
+            continue
+        if isinstance(M, list):
+            for i in range(3):
+                for j in range(3):
+                    add(i, j, coef * M[i][j])
+        else:
+            for i, j, sign, k in _OFF:
+                add(i, j, (sign * coef) * M[k] if isinstance(coef, (int, float))
+                    else sign * (coef * M[k]))
+    return ca.vertcat(*[ca.horzcat(*[0 if e is None else e for e in r]) for r in rows])
 
 
 def _cross(a, b):
@@ -130,22 +146,30 @@ def _exp_margin(s):
     return (math.pi**2 - s) / (2 * math.pi)
 
 
-# ---- so3 building blocks (w a 3-vector, W = w^, s = |w|^2, P = series.Point(s)) ----------
-def _so3_exp(w, s, P):
+def _cay_margin(s):
+    """At most a quarter turn, 2 atan(|omega|/2) <= pi/2, per chart evaluation."""
+    return 4 - s
+
+
+def _skew_margin(s):
+    """Inside the fold |omega|^2 = 1/2 of the skew chart's discrete Legendre map."""
+    return 0.5 - s
+
+
+# ---- so3 building blocks (w a 3-vector, s = |w|^2, P = series.Point(s)) --------------------
+def _so3_exp(w, P, W2):
     """Rodrigues: I + (sin t/t) W + ((1 - cos t)/t^2) W^2."""
-    return _so3_combo(1 - s * P["cosc"], P["sinc"], P["cosc"], w)
+    return _so3_matrix(1, [(P["sinc"], w), (P["cosc"], W2)])
 
 
-def _so3_dexp(w, s, P):
-    """dexp = I + cosc W + sinc3 W^2 = sinc I + cosc W + sinc3 w w^T (1 - s sinc3 = sinc);
-    also the V of the se3 exponential."""
-    return _so3_combo(P["sinc"], P["cosc"], P["sinc3"], w)
+def _so3_dexp(w, P, W2):
+    """dexp = I + cosc W + sinc3 W^2 (eq:dexp)."""
+    return _so3_matrix(1, [(P["cosc"], w), (P["sinc3"], W2)])
 
 
-def _so3_dexpinv(w, s, P):
-    """dexp^{-1} = I - W/2 + c W^2 = (1 - s c) I - W/2 + c w w^T."""
-    c = P["dexpinv_c"]
-    return _so3_combo(1 - s * c, -0.5, c, w)
+def _so3_dexpinv(w, P, W2):
+    """dexp^{-1} = I - W/2 + c W^2 (eq:dexp)."""
+    return _so3_matrix(1, [(-0.5, w), (P["dexpinv_c"], W2)])
 
 
 def _so3_cay(W, s):
@@ -229,15 +253,14 @@ def so2_dtau(group, kind, x):
 def so2_margin(group, kind, x):
     _check(group, kind, _SO_KINDS)
     s = x[0] * x[0]
-    return {"exp": _exp_margin(s), "cay": ca.SX(1.0), "skew": 1 - s}[kind]
+    return {"exp": _exp_margin(s), "cay": _cay_margin(s), "skew": _skew_margin(s)}[kind]
 
 
 # ---- SO3 ---------------------------------------------------------------------------------
 def so3_tau(group, kind, x):
     _check(group, kind, _SO_KINDS)
     if kind == "exp":
-        s = ca.dot(x, x)
-        return _so3_exp(x, s, series.Point(s))
+        return _so3_exp(x, series.Point(ca.dot(x, x)), _sq3(x))
     W, s = _hat3(x), ca.dot(x, x)
     if kind == "cay":
         return _so3_cay(W, s)
@@ -247,8 +270,7 @@ def so3_tau(group, kind, x):
 def so3_dtau_inv(group, kind, x):
     _check(group, kind, _SO_KINDS)
     if kind == "exp":
-        s = ca.dot(x, x)
-        return _so3_dexpinv(x, s, series.Point(s))
+        return _so3_dexpinv(x, series.Point(ca.dot(x, x)), _sq3(x))
     W, s = _hat3(x), ca.dot(x, x)
     if kind == "cay":
         return _so3_dcay_inv(x, W)
@@ -259,8 +281,7 @@ def so3_dtau_inv(group, kind, x):
 def so3_dtau(group, kind, x):
     _check(group, kind, _SO_KINDS)
     if kind == "exp":
-        s = ca.dot(x, x)
-        return _so3_dexp(x, s, series.Point(s))
+        return _so3_dexp(x, series.Point(ca.dot(x, x)), _sq3(x))
     W, s = _hat3(x), ca.dot(x, x)
     if kind == "cay":
         return _so3_dcay(W, s)
@@ -271,7 +292,7 @@ def so3_dtau(group, kind, x):
 def so3_margin(group, kind, x):
     _check(group, kind, _SO_KINDS)
     s = ca.dot(x, x)
-    return {"exp": _exp_margin(s), "cay": ca.SX(1.0), "skew": 1 - s}[kind]
+    return {"exp": _exp_margin(s), "cay": _cay_margin(s), "skew": _skew_margin(s)}[kind]
 
 
 # ---- SE2: xi = (omega, vx, vy), g = [[R, p], [0, 1]] --------------------------------------
@@ -329,7 +350,7 @@ def se2_dtau(group, kind, x):
 def se2_margin(group, kind, x):
     _check(group, kind, _SE_KINDS)
     s = x[0] * x[0]
-    return {"exp": _exp_margin(s), "cay": ca.SX(1.0)}[kind]
+    return {"exp": _exp_margin(s), "cay": _cay_margin(s)}[kind]
 
 
 # ---- SE3: xi = (omega, v), g = [[R, p], [0, 1]] -------------------------------------------
@@ -342,10 +363,9 @@ def se3_tau(group, kind, x):
     _check(group, kind, _SE_KINDS)
     if kind == "exp":  # [[exp(W), V v], [0, 1]], V v = sinc v + cosc w x v + sinc3 (w.v) w
         w, v = x[0:3], x[3:6]
-        s = ca.dot(w, w)
-        P = series.Point(s)
+        P = series.Point(ca.dot(w, w))
         t = P["sinc"] * v + P["cosc"] * _cross(w, v) + (P["sinc3"] * ca.dot(w, v)) * w
-        return _affine(_so3_exp(w, s, P), t)
+        return _affine(_so3_exp(w, P, _sq3(w)), t)
     w, v, s, W, _ = _se3_parts(x)
     return _affine(_so3_cay(W, s), ca.mtimes(_so3_inv_i_minus_half(W, s), v))
 
@@ -353,16 +373,13 @@ def se3_tau(group, kind, x):
 def se3_dtau_inv(group, kind, x):
     _check(group, kind, _SE_KINDS)
     Z = ca.SX.zeros(3, 3)
-    if kind == "exp":
-        # C = Df(W)[V] = -V/2 + c (WV + VW) + 2 (w.v) c' W^2
-        #   = -V/2 + c (v w^T + w v^T) + 2 (w.v) c' w w^T - 2 (w.v) (c + s c') I
+    if kind == "exp":  # [[f(W), 0], [Df(W)[V], f(W)]], Df(W)[V] = -V/2 + c S + 2 (w.v) c' W^2
         w, v = x[0:3], x[3:6]
-        s, wv = ca.dot(w, w), ca.dot(w, v)
-        P = series.Point(s)
-        c, dc = P["dexpinv_c"], P["d_dexpinv_c"]
-        A = _so3_combo(1 - s * c, -0.5, c, w)
-        k = 2 * wv
-        C = _so3_combo(-k * (c + s * dc), 0, k * dc, w, delta=c, v=v, V_coef=-0.5)
+        P = series.Point(ca.dot(w, w))
+        W2, S = _sq3(w), _anticomm3(w, v)
+        c = P["dexpinv_c"]
+        A = _so3_matrix(1, [(-0.5, w), (c, W2)])
+        C = _so3_matrix(0, [(-0.5, v), (c, S), ((2 * ca.dot(w, v)) * P["d_dexpinv_c"], W2)])
         return _blocks(A, Z, C, A)
     w, v, s, W, V = _se3_parts(x)
     F = _I3 - W / 2
@@ -372,18 +389,15 @@ def se3_dtau_inv(group, kind, x):
 def se3_dtau(group, kind, x):
     _check(group, kind, _SE_KINDS)
     Z = ca.SX.zeros(3, 3)
-    if kind == "exp":
-        # C = cosc V + sinc3 (WV + VW) + 2 (w.v) (cosc' W + sinc3' W^2)
-        #   = cosc V + 2 (w.v) cosc' W + sinc3 (v w^T + w v^T) + 2 (w.v) sinc3' w w^T
-        #     - 2 (w.v) (sinc3 + s sinc3') I
+    if kind == "exp":  # [[g(W), 0], [Dg(W)[V], g(W)]]
+        # Dg(W)[V] = cosc V + sinc3 S + 2 (w.v) (cosc' W + sinc3' W^2)
         w, v = x[0:3], x[3:6]
-        s, wv = ca.dot(w, w), ca.dot(w, v)
-        P = series.Point(s)
-        s3, ds3 = P["sinc3"], P["d_sinc3"]
-        A = _so3_combo(P["sinc"], P["cosc"], s3, w)
-        k = 2 * wv
-        C = _so3_combo(-k * (s3 + s * ds3), k * P["d_cosc"], k * ds3, w, delta=s3, v=v,
-                       V_coef=P["cosc"])
+        P = series.Point(ca.dot(w, w))
+        W2, S = _sq3(w), _anticomm3(w, v)
+        cc, s3 = P["cosc"], P["sinc3"]
+        k = 2 * ca.dot(w, v)
+        A = _so3_matrix(1, [(cc, w), (s3, W2)])
+        C = _so3_matrix(0, [(cc, v), (s3, S), (k * P["d_cosc"], w), (k * P["d_sinc3"], W2)])
         return _blocks(A, Z, C, A)
     w, v, s, W, V = _se3_parts(x)
     Dinv = _so3_dcay(W, s)
@@ -393,4 +407,4 @@ def se3_dtau(group, kind, x):
 def se3_margin(group, kind, x):
     _check(group, kind, _SE_KINDS)
     s = ca.dot(x[0:3], x[0:3])
-    return {"exp": _exp_margin(s), "cay": ca.SX(1.0)}[kind]
+    return {"exp": _exp_margin(s), "cay": _cay_margin(s)}[kind]

@@ -1,58 +1,68 @@
 """Scalar functions of s = t^2 with removable singularities at s = 0, safe for casadi AD.
 
 The chart maps of ``hpgen.groups.maps`` need functions such as sin t / t whose exact formula
-is 0/0 at t = 0 (math.md section 3). A map evaluates all the functions it needs at one
-``Point(s)``, s = t^2 = dot(w, w), which branches once:
+is 0/0 at t = 0 (math.md section 3). A map evaluates every function it needs at one
+``Point(s)``, s = t^2 = |w|^2, which branches once:
 
-    small   = s < S0
-    s_small = if_else(small, s, 0)      (the polynomials never see a large argument)
-    s_big   = if_else(small, S0, s)     (the exact formulas never see a singular argument)
-    f       = if_else(small, taylor_f(s_small), exact_f(s_big))    for every f the map uses
+    small   = (s < S0)                   a 0/1 value, big = 1 - small
+    s_small = s * small                  the polynomials never see a large argument
+    s_big   = S0 + (s - S0) * big        the exact formulas never see a singular argument
+    f       = taylor_f(s_small) * small + exact_f(s_big) * big     for each f of the map
 
-An AD tool differentiates both branches, and NaN * 0 is NaN (casadi's SX if_else happens to
-mask the unused branch, generated code or other backends need not), so both branches are
-kept finite for every s >= 0: the exact branch is evaluated at s_big >= S0 > 0 (its sqrt,
-1/t, 1/sin are then smooth), the Taylor branch is a polynomial. Hence f, f' and f'' are
-NaN-free at s = 0 and at s = S0 exactly.
+An AD tool differentiates both branches, so both are kept finite, with finite derivatives,
+for every finite s >= 0: the exact branch is evaluated at s_big >= S0 > 0 (its sqrt, 1/s,
+1/tan are then smooth), the Taylor branch is a polynomial at s_small <= S0. Hence f, f' and
+f'' are NaN-free at s = 0 and at s = S0 exactly, and multiplying a branch by 0 is an exact
+selection (NaN * 0 would be NaN; finite * 0 is 0), which needs no masking by the backend.
+s - S0 is exact for S0 <= s < 2^49 (S0 is a multiple of 2^-4), so s_big == s there. The
+derivative of s_small, s_big is the 0/1 mask itself, 1 on the branch in use, also at s = S0
+(unlike fmin/fmax, whose derivative at a tie is 1/2).
 
-Size under AD matters more than anything else here: the derive stage differentiates the
-maps up to three times, through both branches of every if_else. So a Point shares, between
-all the functions of one map,
+Size under AD is what matters here: the derive stage differentiates dexp^{-1} up to twice
+more (the action's variations, then the Jacobian in the unknowns), through both branches.
+So a Point shares one mask and one (s_small, s_big) between all the functions of a map,
+polynomials are plain Horner in s_small, and the exact branches, built on u = t/2, use one
+sqrt, one sin and one cos (sinc, cosc, sinc3 and their derivatives) or one tan (dexpinv_c,
+d_dexpinv_c), with q = sin(u)/u and a single 1/s:
 
-- one condition and one pair (s_small, s_big);
-- the powers s_small^k of the Taylor branch: each polynomial sum_k a_k s^k is then linear
-  in shared nonlinear terms (summed smallest term first);
-- one sqrt, one sin and one cos in the exact branch: with u = t/2, sn = sin u, cs = cos u,
-  r = 1/u, every exact formula below is a rational expression in (u, r, sn, cs):
+=============  ===========================  =================================  ======
+name           f(s), t^2 = s                exact branch                       terms
+=============  ===========================  =================================  ======
+sinc           sin t / t                    q cos u                            10
+cosc           (1 - cos t) / t^2            q^2 / 2                            9
+sinc3          (t - sin t) / t^3            (1 - sinc) / s                     9
+dexpinv_c      (1 - (t/2) cot(t/2)) / t^2   (1 - u / tan u) / s                11
+d_cosc         d/ds cosc                    (sinc / 2 - cosc) / s              9
+d_sinc3        d/ds sinc3                   (cosc / 2 - 3 sinc3 / 2) / s       8
+d_dexpinv_c    d/ds dexpinv_c               (1/8 - 3 c / 2) / s + c^2 / 2      11
+=============  ===========================  =================================  ======
 
-=============  ==========================  =====================================  =====
-name           f(s), t^2 = s               exact branch (u = t/2)                 terms
-=============  ==========================  =====================================  =====
-sinc           sin t / t                   sn cs r                                9
-cosc           (1 - cos t) / t^2           (sn r)^2 / 2                           9
-sinc3          (t - sin t) / t^3           (u - sn cs) r^3 / 4                    8
-dexpinv_c      (1 - (t/2) cot(t/2)) / t^2  (sn - u cs) r^2 / (4 sn)               10
-d_cosc         d/ds cosc                   -sn (sn - u cs) r^4 / 8                8
-d_sinc3        d/ds sinc3                  (2u sn^2 - 3u + 3 sn cs) r^5 / 32      8
-d_dexpinv_c    d/ds dexpinv_c              (u sn cs + u^2 - 2 sn^2) r^4/(32 sn^2) 10
-=============  ==========================  =====================================  =====
+(The derivative formulas are identities: sinc' = (sinc3 - cosc)/2 with 1 - sinc = s sinc3,
+cosc' = (sinc/2 - cosc)/s, and c = dexpinv_c solves the Riccati equation
+8 s c' = 1 - 12 c + 4 s c^2 inherited from cot' = -1 - cot^2.)
 
-Accuracy is judged on the d x d matrices the maps build, not on each function: an error e
-in f costs e |M| in the matrix, M the factor f multiplies (W ~ t, W^2 ~ s, the se3 terms
-(w.v) W^2 ~ t^3 |v|, ...; see ``WEIGHTS``). The terms above are the fewest with a Taylor
-tail below 2^-54 |M| at s = S0 (|v| = 1). The exact branches cancel as s -> 0 (t - sin t,
-sn - u cs, ...), but their absolute error is ~eps / s^k where M ~ s^k, so the matrix-level
-error stays at a few eps down to S0 = 1 (measured, tests/unit/test_groups.py). dexpinv_c
-has poles at t = 2 pi k (k >= 1), where dexp^{-1} is singular; see the exp chart margin in
-``maps``.
+Accuracy is judged on the d x d matrices of the maps, not on each function: an error e in f
+costs e |M| in the matrix, M the factor f multiplies (W ~ t, W^2 ~ s, the se3 terms
+(w.v) W^2 ~ t^3 |v|, ...; ``WEIGHTS``). The terms above are the fewest whose Taylor tail,
+times |M|, is below 2^-54 at s = S0, for the value and for the first derivative (chain rule:
+f'(s) 2 (w.y) M), with |v| = 1 (``hpgen.tools.gen_series.required_terms``; a test checks
+them). The exact branches cancel as s -> 0 (t - sin t, 1 - u cot u), but their absolute
+error is ~eps / s^k where M ~ s^k, so the matrix error stays at a few eps down to small S0;
+only their derivatives degrade (~eps / t0): at S0 = 1/4 the first derivative of the se3
+dexp^{-1} reached 1.3e-15; S0 = 9/16 would be fine and ~5% smaller than S0 = 1, which is
+kept because tests/hard_cases place arguments exactly on s = 1. Measured against 50-digit
+mpmath, SO3 and SE3, |w| in [0, 3], |v| = 1, dense around S0 on both sides (max abs error
+over max(1, max abs entry)): dexp^{-1} <= 2.0e-16, dexp <= 2.8e-16, exp <= 8.9e-16 (at
+|w| = 3, the cancellation of Rodrigues' formula, as before), first derivatives <= 6.3e-16
+(tests/unit/test_groups.py checks 1e-15). dexpinv_c has poles at t = 2 pi k (k >= 1),
+where dexp^{-1} is singular; see the exp chart margin in ``maps``.
 
 The exact Taylor coefficients are precomputed with sympy by ``hpgen.tools.gen_series`` into
-``series_data`` (checked against a fresh run by the test suite); nothing here imports sympy.
+``series_data`` (a test regenerates them and compares); nothing here imports sympy.
 """
 from __future__ import annotations
 
 import functools
-import math
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -60,7 +70,8 @@ import casadi as ca
 
 from .series_data import COEFFICIENTS
 
-#: the branch point of every function: s < S0 uses the Taylor polynomial (|w| < 1 rad)
+#: the branch point of every function, s < S0 (|w| < 1) uses the Taylor polynomials; a
+#: square of a double (the tests put |w| exactly on it) and a multiple of 2^-4 (s_big exact)
 S0 = 1.0
 
 
@@ -74,27 +85,27 @@ class Spec:
 
 
 #: every function of s the chart maps use; adding one is one entry here, one exact formula
-#: in ``Point._exact`` and (for a new base) one entry in ``hpgen.tools.gen_series.BASES``
+#: in ``Point.exact`` and, for a new base, one entry in ``hpgen.tools.gen_series.BASES``
 SPECS = {
-    "sinc": Spec("sinc", 0, 9),
+    "sinc": Spec("sinc", 0, 10),
     "cosc": Spec("cosc", 0, 9),
-    "sinc3": Spec("sinc3", 0, 8),
-    "dexpinv_c": Spec("dexpinv_c", 0, 10),
-    "d_cosc": Spec("cosc", 1, 8),
+    "sinc3": Spec("sinc3", 0, 9),
+    "dexpinv_c": Spec("dexpinv_c", 0, 11),
+    "d_cosc": Spec("cosc", 1, 9),
     "d_sinc3": Spec("sinc3", 1, 8),
-    "d_dexpinv_c": Spec("dexpinv_c", 1, 10),
+    "d_dexpinv_c": Spec("dexpinv_c", 1, 11),
 }
 
-#: size of the matrix factor each function multiplies in the maps, as a function of t = |w|
-#: with |v| = 1 (used to choose the terms and by the accuracy tests)
+#: size of the matrix factor each function multiplies in the maps, as a function of t = |w|,
+#: |v| = 1 (for choosing the terms; see the module docstring)
 WEIGHTS = {
-    "sinc": lambda t: max(1.0, t),          # W in exp, I in dexp, v in the se3 translation
-    "cosc": lambda t: max(1.0, t),          # W^2 in exp, W in dexp, V in se3 dexp
-    "sinc3": lambda t: 2 * t,               # w w^T - s I, v w^T + w v^T
-    "dexpinv_c": lambda t: 2 * t,           # w w^T - s I, v w^T + w v^T
-    "d_cosc": lambda t: 2 * t * t,          # 2 (w.v) W
-    "d_sinc3": lambda t: 2 * t**3,          # 2 (w.v) W^2
-    "d_dexpinv_c": lambda t: 2 * t**3,      # 2 (w.v) W^2
+    "sinc": lambda t: max(1.0, t),      # W in exp; v in the se3 translation
+    "cosc": lambda t: max(1.0, t),      # W^2 in exp, W in dexp, V in se3 dexp, w x v
+    "sinc3": lambda t: 2 * t,           # W^2, WV + VW
+    "dexpinv_c": lambda t: 2 * t,       # W^2, WV + VW
+    "d_cosc": lambda t: 2 * t * t,      # 2 (w.v) W
+    "d_sinc3": lambda t: 2 * t**3,      # 2 (w.v) W^2
+    "d_dexpinv_c": lambda t: 2 * t**3,  # 2 (w.v) W^2
 }
 
 
@@ -110,7 +121,7 @@ def exact_coefficients(name: str) -> tuple[Fraction, ...]:
 
 @functools.lru_cache(maxsize=None)
 def coefficients(name: str) -> tuple[float, ...]:
-    """The Taylor coefficients (in s, correctly rounded floats) used for SPECS[name]."""
+    """The Taylor coefficients (in s, correctly rounded) used for SPECS[name]."""
     a = exact_coefficients(name)
     n = SPECS[name].terms
     if n > len(a):
@@ -119,133 +130,108 @@ def coefficients(name: str) -> tuple[float, ...]:
 
 
 def threshold(name: str | None = None) -> float:
-    """The branch point s0 (the same S0 for every function, so that they share it)."""
+    """The branch point s0 of SPECS[name]: S0 for all, so that a map's functions share it."""
     if name is not None and name not in SPECS:
         raise KeyError(name)
     return S0
 
 
 class Point:
-    """The functions of SPECS at one s >= 0, sharing the branch, the Taylor powers and the
-    transcendental calls of the exact branch (module docstring). ``p[name]`` is the branch
-    value; ``p.taylor(name)`` and ``p.exact(name)`` the two branches."""
+    """The functions of SPECS at one s >= 0 (an SX scalar), sharing the branch and the
+    transcendental calls (module docstring). ``P[name]`` is the value; ``P.taylor(name)`` and
+    ``P.exact(name)`` are the two branches. With ``branch=False`` there is no branch:
+    s_small = s_big = s (for comparing the two formulas at one s)."""
 
-    def __init__(self, s, s0: float | None = None):
-        s0 = S0 if s0 is None else s0
+    def __init__(self, s, branch: bool = True):
         self.s = s
-        self.s0 = s0
-        self.small = s < s0
-        self.s_small = ca.fmin(s, s0)
-        self.s_big = ca.fmax(s, s0)
-        self._powers = [ca.SX(1), self.s_small]
+        if branch:
+            self.small = s < S0
+            self.big = 1 - self.small
+            self.s_small = s * self.small
+            self.s_big = S0 + (s - S0) * self.big
+        else:
+            self.small = self.big = None
+            self.s_small = self.s_big = s
         self._cache: dict = {}
 
-    # ---- Taylor branch ---------------------------------------------------------------
-    def _power(self, k):
-        while len(self._powers) <= k:
-            self._powers.append(self._powers[-1] * self.s_small)
-        return self._powers[k]
+    def _memo(self, key, build):
+        if key not in self._cache:
+            self._cache[key] = build()
+        return self._cache[key]
 
     def taylor(self, name: str):
-        key = ("taylor", name)
-        if key not in self._cache:
+        """Horner polynomial in s_small."""
+        def build():
             c = coefficients(name)
-            out = c[-1]
+            out = ca.SX(c[-1])
             for k in range(len(c) - 2, -1, -1):
                 out = out * self.s_small + c[k]
-            self._cache[key] = ca.SX(out)
-        return self._cache[key]
+            return out
+        return self._memo(("taylor", name), build)
 
-    # ---- exact branch ------------------------------------------------------------------
-    def _q(self, key):
-        """Shared intermediate quantities of the exact branch, built on first use."""
-        if key in self._cache:
-            return self._cache[key]
-        q = self._q
-        if key == "u":
-            v = 0.5 * ca.sqrt(self.s_big)
-        elif key == "cs":
-            v = ca.cos(q("u"))
-        elif key == "q":  # sin(u) / u
-            v = ca.sin(q("u")) / q("u")
-        elif key == "is":
-            v = 1 / self.s_big
-        else:
-            raise KeyError(key)
-        self._cache[key] = v
-        return v
+    def _u(self):
+        return self._memo("u", lambda: 0.5 * ca.sqrt(self.s_big))
+
+    def _q(self):  # sin(u) / u
+        return self._memo("q", lambda: ca.sin(self._u()) / self._u())
+
+    def _cos(self):  # cos(u)
+        return self._memo("cos", lambda: ca.cos(self._u()))
+
+    def _inv_s(self):
+        return self._memo("1/s", lambda: 1 / self.s_big)
 
     def exact(self, name: str):
-        key = ("exact", name)
-        if key in self._cache:
-            return self._cache[key]
-        q, f, inv_s = self._q, self.exact, self._q("is")
-        if name == "sinc":
-            v = q("q") * q("cs")
-        elif name == "cosc":
-            v = 0.5 * (q("q") * q("q"))
-        elif name == "sinc3":
-            v = (1 - f("sinc")) * inv_s
-        elif name == "dexpinv_c":  # (1 - u cot u) / s
-            v = (1 - q("u") / ca.tan(q("u"))) * inv_s
-        elif name == "d_cosc":
-            v = (0.5 * f("sinc") - f("cosc")) * inv_s
-        elif name == "d_sinc3":
-            v = (0.5 * f("cosc") - 1.5 * f("sinc3")) * inv_s
-        elif name == "d_dexpinv_c":
-            c = f("dexpinv_c")
-            v = (0.125 - 1.5 * c) * inv_s + 0.5 * (c * c)
-        else:
+        """The exact formula at s_big (table of the module docstring)."""
+        def build():
+            f, r = self.exact, self._inv_s
+            if name == "sinc":
+                return self._q() * self._cos()
+            if name == "cosc":
+                return 0.5 * (self._q() * self._q())
+            if name == "sinc3":
+                return (1 - f("sinc")) * r()
+            if name == "dexpinv_c":
+                u = self._u()
+                return (1 - u / ca.tan(u)) * r()
+            if name == "d_cosc":
+                return (0.5 * f("sinc") - f("cosc")) * r()
+            if name == "d_sinc3":
+                return (0.5 * f("cosc") - 1.5 * f("sinc3")) * r()
+            if name == "d_dexpinv_c":
+                c = f("dexpinv_c")
+                return (0.125 - 1.5 * c) * r() + 0.5 * (c * c)
             raise KeyError(name)
-        self._cache[key] = v
-        return v
+        return self._memo(("exact", name), build)
 
-    # ---- the branch --------------------------------------------------------------------
     def __getitem__(self, name: str):
-        key = ("value", name)
-        if key not in self._cache:
-            self._cache[key] = ca.if_else(self.small, self.taylor(name), self.exact(name))
-        return self._cache[key]
+        if self.small is None:
+            raise ValueError("an unbranched Point has no value; use taylor() or exact()")
+        return self._memo(("value", name), lambda: (self.taylor(name) * self.small
+                                                    + self.exact(name) * self.big))
 
 
-# ---- single-function interface (tests, one-off use) ------------------------------------------
+# ---- single functions (tests, one-off use; the maps use one Point per map) ------------------
 def taylor(name: str, s):
-    """The Taylor branch of SPECS[name] as a polynomial in s; accurate for 0 <= s < S0."""
-    return Point(s).taylor(name) if not _is_number(s) else _poly(name, s)
+    """The Taylor branch of SPECS[name] at s, unbranched (accurate for 0 <= s < S0)."""
+    return Point(s, branch=False).taylor(name)
 
 
 def exact(name: str, s):
-    """The exact branch of SPECS[name]; only valid (and only used) for s >= S0 > 0.
-
-    Evaluated as is at s (no branch), so it can be compared with the Taylor branch."""
-    p = Point(ca.SX(s) if _is_number(s) else s, s0=-1.0)  # s_big = s
-    return p.exact(name)
+    """The exact branch of SPECS[name] at s, unbranched (valid for s > 0, used for s >= S0)."""
+    return Point(s, branch=False).exact(name)
 
 
 def branches(name: str, s):
-    """(small, taylor(s_small), exact(s_big)): the two branches of ``evaluate``.
-
-    Each branch is finite, with finite derivatives of every order, for every s >= 0, so the
-    result does not rely on how a backend masks the unused branch of if_else.
-    """
-    p = Point(s)
-    return p.small, p.taylor(name), p.exact(name)
+    """(small, taylor(s_small), exact(s_big)): the two branches of ``evaluate``, each finite
+    with finite derivatives of every order for every finite s >= 0."""
+    P = Point(s)
+    return P.small, P.taylor(name), P.exact(name)
 
 
 def evaluate(name: str, s):
-    """f(s) for s = t^2 >= 0 as a NaN-free branch (see the module docstring)."""
+    """f(s) for s = t^2 >= 0, NaN-free with its derivatives (see the module docstring)."""
     return Point(s)[name]
-
-
-def _is_number(s):
-    return isinstance(s, (int, float))
-
-
-def _poly(name, s):
-    out = 0.0
-    for c in reversed(coefficients(name)):
-        out = out * s + c
-    return out
 
 
 def sinc(s):
@@ -281,6 +267,3 @@ def d_sinc3(s):
 def d_dexpinv_c(s):
     """c'(s), d/ds of dexpinv_c."""
     return evaluate("d_dexpinv_c", s)
-
-
-_ = math  # noqa: F841  (kept for the WEIGHTS lambdas' callers)

@@ -3,7 +3,8 @@
 z <- z - J^{-1} F (numpy.linalg.solve: LAPACK LU with partial pivoting); converged when
 ||dz|| <= tol (1 + ||z||), or when ||dz|| stopped decreasing (||dz_k|| >= ||dz_{k-1}||) while
 ||dz_k|| <= 1e-11 (1 + ||z||) (round-off floor); inf-norms. Non-finite F, J or z, or an
-exactly singular J, give code NONFINITE. After convergence margin(z, h) > 0 else DOMAIN; a
+exactly singular J, give code NONFINITE. A start with margin(z, h) <= 0 is DOMAIN at once (h
+too large for the chart). After convergence margin(z, h) > 0 else DOMAIN; a
 failed Newton whose last iterate lies outside tau's domain (finite margin <= 0, e.g. the
 skew projector's sqrt(1 - |h xi|^2) turning NaN) is reported as DOMAIN too.
 """
@@ -63,6 +64,8 @@ def step_core(call, nz, g, p, hv, z, tol, maxit):
         return F, J
 
     with np.errstate(all="ignore"):
+        if call("margin", z, hv)[0][0] <= 0.0:      # h too large for the chart: no Newton
+            return DOMAIN, None, None, z, 0, math.nan
         code, z, it, r = newton(fun, z, tol, maxit)
         m = call("margin", z, hv)[0][0]
         if code != OK:

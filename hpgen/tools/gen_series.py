@@ -60,6 +60,41 @@ def base_coefficients(name: str) -> tuple[tuple[int, int], ...]:
     return tuple(out)
 
 
+#: allowed Taylor tail at s = S0, absolute, after multiplying by the matrix factor (WEIGHTS)
+TAIL_TOL = 2.0**-54
+
+
+def required_terms(name: str, s0: float | None = None, tol: float = TAIL_TOL) -> int:
+    """Fewest Taylor terms N of series.SPECS[name] with, at s = s0 (default series.S0),
+    t = sqrt(s0) and w = series.WEIGHTS[name](t):
+
+        w * sum_{k >= N} |a_k| s0^k <= tol                    (value of the matrix)
+        w * 2 t * sum_{k >= N} k |a_k| s0^(k - 1) <= tol      (its first derivative, unit y)
+
+    (exact rational arithmetic on series_data; for s < s0 the tails only shrink)."""
+    import math
+    from fractions import Fraction
+
+    from hpgen.groups import series
+
+    s0 = series.S0 if s0 is None else s0
+    a = series.exact_coefficients(name)
+    s, t = Fraction(s0), math.sqrt(s0)
+    w = series.WEIGHTS[name](t)
+
+    def ok(n):
+        tail = sum(abs(c) * s**k for k, c in enumerate(a) if k >= n)
+        dtail = sum(k * abs(c) * s**(k - 1) for k, c in enumerate(a) if k >= n)
+        return float(tail) * w <= tol and float(dtail) * 2 * t * w <= tol
+
+    n = len(a)
+    if not ok(n - 1):
+        raise RuntimeError(f"{name}: series_data is too short for s0 = {s0}")
+    while n > 1 and ok(n - 1):
+        n -= 1
+    return n
+
+
 def render() -> str:
     """The full text of series_data.py (deterministic)."""
     lines = [_HEADER]

@@ -12,6 +12,8 @@ in ``tests/regression/test_handwritten.py``.
 - ``heavy_top``     Lie Stormer-Verlet (eqs. sv1-sv5), forward and backward variational Euler
                     for l(R, Omega) = 1/2 Omega.I Omega - Mg chi.(R^T e3), tau = cay or exp.
 - ``flat``          classical Stormer-Verlet and the 3-stage Lobatto IIIA-IIIB pair on R^n.
+- ``vprk``          the general s-stage Lie group VPRK method of the paper's theorem (eqs.
+                    lievprk1 - lievprk, q = 0), any tableau, for the heavy top.
 - ``moser_veselov`` the Moser-Veselov discrete rigid body, and what it coincides with.
 
 Convention shared by all modules (the regression tests depend on it): hpgen's state momentum

@@ -24,7 +24,7 @@ eq. skewprojector it is (mu S + S mu)/2 + h/2 ad*_xi mu with S = (h^2 xi^2 + e)^
 So a run started from hpgen's (g_0, p_0) first solves p_0 = (dtau^{-1}_{-h xi_0})^* mu_0 for
 the paper's mu_0 (xi_0 = I^{-1} mu_0: a virtual previous step), then iterates the scheme;
 the momentum compared with hpgen is p_k, never mu_k (mu_k - p_k = O(h), see
-``test_paper_multiplier_is_not_node_momentum``).
+``test_node_momentum_is_not_the_papers_multiplier``).
 
 Notation of eq. cayhpvi: mu and xi are identified with matrices of so(3) (hat map), ^* is the
 matrix transpose (the dual of dcay^{-1}(x) y = (e - x/2) y (e + x/2) for the trace pairing is
@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .lie import TAU, adstar, dexp_inv, hat, mv, newton, skew_tau, sqrtm_sym, tr, vee
+from .lie import TAU, adstar, dexp_inv, hat, mv, newton, sqrtm_sym, tr, vee
 
 
 def _inertia(I):
@@ -154,5 +154,3 @@ def dlp_node_momentum(tau_name, inertia, h, mu):
     Iinv = np.linalg.inv(_inertia(inertia))
     return mv(tr(TAU[tau_name][1](-h * mv(Iinv, mu))), mu)
 
-
-__all__ = ["CayleyEP", "ExpEP", "SkewEP", "SCHEMES", "dlp_node_momentum", "skew_tau"]

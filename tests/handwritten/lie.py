@@ -165,7 +165,7 @@ def dcay(x):
     return linear_map_matrix(lambda y: vee(Li @ hat(y) @ Ri), X.dtype, X.shape[:-2])
 
 
-# ---- tau = skew (projector) ----------------------------------------------------------------------
+# ---- tau = skew (projector) -------------------------------------------------------------
 def sqrtm_sym(A, iters=50):
     """Principal square root of A (here A = x^2 + e, symmetric positive definite, close to e)
     by Newton's iteration S <- (S + S^{-1} A)/2 from S = e: every iterate is a polynomial in A,
@@ -215,7 +215,7 @@ TAU = {
 }
 
 
-# ---- Newton with complex-step Jacobians ------------------------------------------------------------
+# ---- Newton with complex-step Jacobians --------------------------------------------------
 CS_STEP = 1e-40
 
 

@@ -22,14 +22,36 @@ MV is the DEL map of l_d(f) = (tr J - tr(f J))/h. Writing f = tau(x), x = h xi:
 - tau = cay:  f = e + 4/(4 + |x|^2) (x^ + x^2/2), so tr J - tr(f J) = 2 x.I x / (4 + |x|^2):
               l_d^MV = h/2 xi.I xi / (1 + h^2 |xi|^2 / 4)  versus  l_d^cay = h/2 xi.I xi.
 - tau = exp:  l_d^MV = h/2 xi.I xi * 2 (1 - cos t)/t^2, t = h |xi|.
-- tau = skew: l_d^MV = h/2 xi.I xi * 2 / (1 + sqrt(1 - t^2)).
+- tau = skew: l_d^MV = h/2 xi.I xi * 2 / (1 + sqrt(1 - t^2))
+(for exp and skew: tr(tau(x) J) = tr J - c(|x|) x.I x for any tau(x) = e + a X + c X^2).
 
 So MV coincides with NONE of hpgen's catalog schemes for l = 1/2 xi.I xi: its discrete
-Lagrangian differs from each by a relative O(h^2 |xi|^2) (absolute O(h^3)), hence the one-step
-maps differ by O(h^3) and trajectories on a fixed interval by O(h^2) (both are order 2).
-Measured one-step difference from the same (g, p), I = (2, 1, 2/3), |p| = 1, halving h from
-0.1: ratios 8.0 (order 3) against cay, exp and skew; against exact-RKMK tableaus too (tables
-in the test). But MV is EXACTLY:
+Lagrangian differs from each Euler-Poincare one (rkmk = truncated, any tableau) by a relative
+O(h^2 |xi|^2) (absolute O(h^3)), hence the one-step maps differ by O(h^3) and trajectories on a
+fixed interval by O(h^2) (both are order 2). Measured against every catalog combination
+(I = (2, 1, 2/3), one random state with |p| = 1, one step from the same (g, p) at
+h = 0.1 / 0.05 / 0.025; the T = 2 column is the difference at t = 2 for h = 0.1; ratios when
+halving h in brackets; the regression test re-measures five rows over its three states):
+
+    tau   rkmk       tableau(s)                 one step, h = 0.1      at T = 2
+    cay   truncated  any (SV, midpoint, ...)    1.0e-3 (8.4, 8.2)      2.4e-2 (4.0)
+    exp   truncated  any                        3.4e-4 (8.5, 8.2)      8.2e-3 (4.0)
+    skew  truncated  any                        1.1e-3 (8.7, 8.3)      2.5e-2 (4.1)
+    cay   exact      euler-backward             1.1e-3 (8.7)           2.5e-2
+    cay   exact      stormer-verlet             2.1e-5 (8.3, 8.1)      2.5e-4 (5.5, 4.4)
+    cay   exact      midpoint                   5.1e-4 (8.4)           1.2e-2 (4.0)
+    any   exact      gauss2, gauss3, lobatto3a3 3.3e-4 (8.5, 8.2)      7.9e-3 (4.0)
+    exp   exact      euler-*, SV, midpoint      3.3e-4 - 3.4e-4 (8.5)  8.0e-3 - 8.2e-3 (4.0)
+    skew  exact      euler-backward             2.9e-3 (8.1)           7.0e-2 (3.9)
+    skew  exact      stormer-verlet             9.9e-4 (8.3)           2.4e-2 (4.0)
+    skew  exact      midpoint                   7.5e-6 (34.3, 33.0)    1.8e-4 (16.3, 16.1)
+
+(rkmk = exact with euler-forward is the truncated step, Theta = 0.) The order-4 schemes
+(gauss2, gauss3, lobatto3a3 with the exact constraint) all sit at the same distance: that is
+MV's own error. The closest catalog scheme is skew + exact RKMK + midpoint, which agrees with
+MV to O(h^5) per step and O(h^4) on a fixed interval, but is not MV either.
+
+But MV is EXACTLY:
 
 (a) hpgen's Euler-Poincare Cayley step (tau = cay, rkmk = truncated, any tableau) applied to
     the h-dependent Lagrangian  l_h(xi) = 1/2 xi.I xi / (1 + h^2 |xi|^2 / 4), and
@@ -41,9 +63,9 @@ in the test). But MV is EXACTLY:
     dtau_q^{-1}_x(y) = vee(y^ R + R^T y^)/sqrt(1 + tr R)
                        - vee(R - R^T) tr(y^ R) / (2 (1 + tr R)^{3/2}).
 
-This is consistent with the known relation of MV to RATTLE on the constrained formulation
-(McLachlan-Scovel) and to the Cayley-parametrized discrete Lagrangian: MV is a Cayley scheme,
-but for the modified Lagrangian l_h, not for l.
+MV is also known to be RATTLE applied to the constrained formulation in R^{3x3}
+(McLachlan-Scovel); among hpgen's schemes it is a Cayley Euler-Poincare step, but for the
+modified Lagrangian l_h, not for l.
 """
 from __future__ import annotations
 
