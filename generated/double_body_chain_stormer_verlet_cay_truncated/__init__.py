@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 2338b1b57e8ff944df4db4a823ab8d510295d310af46803ff5fda31b642860c1
+# content hash: 0d9c78fbf0f91b96933146ccbe0158d50eec4cb2ffdebb400ff5fb20ffd27eb0
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "2338b1b57e8ff944df4db4a823ab8d510295d310af46803ff5fda31b642860c1"
+HASH = "0d9c78fbf0f91b96933146ccbe0158d50eec4cb2ffdebb400ff5fb20ffd27eb0"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

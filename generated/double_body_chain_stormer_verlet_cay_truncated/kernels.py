@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 2338b1b57e8ff944df4db4a823ab8d510295d310af46803ff5fda31b642860c1
+# content hash: 0d9c78fbf0f91b96933146ccbe0158d50eec4cb2ffdebb400ff5fb20ffd27eb0
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 

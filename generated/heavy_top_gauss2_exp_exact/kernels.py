@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 7c8e27990c3f7d29d99964cfd6481ab9b8691baffd430a8a6aa16c1ec48d6244
+# content hash: 46f71cef77b1b9e32de4fe2ff0b2eb336c7ac67ffd2a8a4bea56a389c3ca69a5
 """Python backend of the hpgen module heavy_top_gauss2_exp_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 

@@ -3,7 +3,7 @@
  * model: lagrange_top
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 5d7ea74a27ba343cbe32735a75cfb5f8e1596e1103eedb282511e7bce1d4997c
+ * content hash: db5230382775f98282ae41904036d1840a33e101a8a16c37ee276fba0916c4f9
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -5121,7 +5121,7 @@ typedef struct hpgen_status {
     double residual;             /* inf-norm of the last residual evaluated */
 } hpgen_status;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "5d7ea74a27ba343cbe32735a75cfb5f8e1596e1103eedb282511e7bce1d4997c"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "db5230382775f98282ae41904036d1840a33e101a8a16c37ee276fba0916c4f9"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -5417,12 +5417,13 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
    solution, then update -> (g1, p1). */
 static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
                            double tol, long long maxit, double* g1, double* p1,
-                           long long* iters, double* rnorm) {
+                           long long* iters, double* rnorm, int check_start) {
     double m[1];
     int code;
     /* a start outside tau's domain means h is too large for the chart: do not let Newton
-       wander to a spurious root from there */
-    if (!hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) {
+       wander to a spurious root from there. Only needed for a start that is not the previous
+       step's solution (whose margin, same h, was checked after it converged). */
+    if (check_start && !hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) {
         *iters = 0; *rnorm = NAN;
         return HPGEN_DOMAIN;
     }
@@ -5455,7 +5456,7 @@ HPGEN_EXPORT int hpgen_step(const double* g, const double* p, double h, double* 
     hpgen_status_init(st);
     if (maxit < 1) { st->code = HPGEN_INVALID; return HPGEN_INVALID; }
     hv[0] = h;
-    code = hpgen_step_core(g, p, hv, z, tol, maxit, g1, p1, &it, &r);
+    code = hpgen_step_core(g, p, hv, z, tol, maxit, g1, p1, &it, &r, 1);
     st->code = code; st->iterations = it; st->total_iterations = it; st->residual = r;
     return code;
 }
@@ -5478,7 +5479,7 @@ HPGEN_EXPORT long long hpgen_simulate(const double* g0, const double* p0, double
     memcpy(g_rec, g, sizeof g);
     memcpy(p_rec, p, sizeof p);
     for (k = 0; k < steps; ++k) {
-        int code = hpgen_step_core(g, p, hv, z, tol, maxit, g1, p1, &it, &r);
+        int code = hpgen_step_core(g, p, hv, z, tol, maxit, g1, p1, &it, &r, k == 0);
         st->iterations = it;
         st->total_iterations += it;
         st->residual = r;

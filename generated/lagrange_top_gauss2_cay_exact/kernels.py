@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 5d7ea74a27ba343cbe32735a75cfb5f8e1596e1103eedb282511e7bce1d4997c
+# content hash: db5230382775f98282ae41904036d1840a33e101a8a16c37ee276fba0916c4f9
 """Python backend of the hpgen module lagrange_top_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 

@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 6b98ecb73f5f185669d7792e376901f2715f4226785a85bdf14c1a1878e5681d
+# content hash: ecd757ff778bb315f1b25437e76106bf7458a553d7195b9e13905d0857b42be4
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 

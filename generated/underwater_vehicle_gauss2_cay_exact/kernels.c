@@ -3,7 +3,7 @@
  * model: underwater_vehicle
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 956af2d93ebc9e6be0a774de78cc0e829033bfa3f1d65738d7c2447231e37fee
+ * content hash: a5af8285aabd7636a7c82a6974a2851c27461cc2956cf6d35db6a114851f7612
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -11371,7 +11371,7 @@ typedef struct hpgen_status {
     double residual;             /* inf-norm of the last residual evaluated */
 } hpgen_status;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "956af2d93ebc9e6be0a774de78cc0e829033bfa3f1d65738d7c2447231e37fee"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "a5af8285aabd7636a7c82a6974a2851c27461cc2956cf6d35db6a114851f7612"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -11667,12 +11667,13 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
    solution, then update -> (g1, p1). */
 static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
                            double tol, long long maxit, double* g1, double* p1,
-                           long long* iters, double* rnorm) {
+                           long long* iters, double* rnorm, int check_start) {
     double m[1];
     int code;
     /* a start outside tau's domain means h is too large for the chart: do not let Newton
-       wander to a spurious root from there */
-    if (!hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) {
+       wander to a spurious root from there. Only needed for a start that is not the previous
+       step's solution (whose margin, same h, was checked after it converged). */
+    if (check_start && !hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) {
         *iters = 0; *rnorm = NAN;
         return HPGEN_DOMAIN;
     }
@@ -11705,7 +11706,7 @@ HPGEN_EXPORT int hpgen_step(const double* g, const double* p, double h, double* 
     hpgen_status_init(st);
     if (maxit < 1) { st->code = HPGEN_INVALID; return HPGEN_INVALID; }
     hv[0] = h;
-    code = hpgen_step_core(g, p, hv, z, tol, maxit, g1, p1, &it, &r);
+    code = hpgen_step_core(g, p, hv, z, tol, maxit, g1, p1, &it, &r, 1);
     st->code = code; st->iterations = it; st->total_iterations = it; st->residual = r;
     return code;
 }
@@ -11728,7 +11729,7 @@ HPGEN_EXPORT long long hpgen_simulate(const double* g0, const double* p0, double
     memcpy(g_rec, g, sizeof g);
     memcpy(p_rec, p, sizeof p);
     for (k = 0; k < steps; ++k) {
-        int code = hpgen_step_core(g, p, hv, z, tol, maxit, g1, p1, &it, &r);
+        int code = hpgen_step_core(g, p, hv, z, tol, maxit, g1, p1, &it, &r, k == 0);
         st->iterations = it;
         st->total_iterations += it;
         st->residual = r;

@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 956af2d93ebc9e6be0a774de78cc0e829033bfa3f1d65738d7c2447231e37fee
+# content hash: a5af8285aabd7636a7c82a6974a2851c27461cc2956cf6d35db6a114851f7612
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend).
 

@@ -53,7 +53,7 @@ def newton(fun, z, tol=DEFAULT_TOL, maxit=DEFAULT_MAXIT):
     return NO_CONVERGENCE, z, maxit, rnorm
 
 
-def step_core(call, nz, g, p, hv, z, tol, maxit):
+def step_core(call, nz, g, p, hv, z, tol, maxit, check_start=True):
     """One step with kernels ``call(name, *args) -> [outputs]`` (flat column-major args).
 
     Returns (code, g1 flat, p1, z, iterations, residual norm); g1/p1 are None on failure.
@@ -64,7 +64,9 @@ def step_core(call, nz, g, p, hv, z, tol, maxit):
         return F, J
 
     with np.errstate(all="ignore"):
-        if call("margin", z, hv)[0][0] <= 0.0:      # h too large for the chart: no Newton
+        # a start outside the chart (h too large): no Newton. A warm start is the previous
+        # solution, whose margin (same h) was checked after it converged.
+        if check_start and call("margin", z, hv)[0][0] <= 0.0:
             return DOMAIN, None, None, z, 0, math.nan
         code, z, it, r = newton(fun, z, tol, maxit)
         m = call("margin", z, hv)[0][0]
@@ -93,7 +95,7 @@ def simulate(call, nz, d, nn, g0, p0, h, z0, steps, every, tol, maxit):
     z = np.array(z0, dtype=np.float64)
     st = {"code": OK, "step": 0, "iterations": 0, "total_iterations": 0, "residual": 0.0}
     for k in range(steps):
-        code, g1, p1, z, it, r = step_core(call, nz, g, p, hv, z, tol, maxit)
+        code, g1, p1, z, it, r = step_core(call, nz, g, p, hv, z, tol, maxit, k == 0)
         st["iterations"], st["residual"] = it, r
         st["total_iterations"] += it
         if code != OK:
