@@ -2,9 +2,12 @@
 
     python benchmarks/step_times.py [--quick]
 
-Heavy top (examples/heavy_top.yaml) for several (tableau, tau, rkmk); medians of repeats,
-all in one process. Compile time is measured cold (empty cache, including the C build) and
-cached (a second compile of the same input), each in a fresh subprocess as a user runs it.
+Heavy top (examples/heavy_top.yaml) for several (tableau, tau, rkmk), each with its default
+Newton mode (simplified when the Jacobian costs > 4 residuals) and with full Newton; the free
+rigid body's reduced Cayley step one run at a time and as a batched ensemble over threads;
+medians of repeats, all in one process. Compile time is measured cold (empty cache, including
+the C build) and cached (a second compile of the same input), each in a fresh subprocess as
+a user runs it.
 """
 from __future__ import annotations
 
@@ -24,15 +27,44 @@ CONFIGS = [("stormer-verlet", "cay", "truncated"), ("gauss2", "cay", "exact"),
            ("gauss2", "exp", "exact"), ("lobatto3a3", "exp", "exact")]
 
 
-def per_step(integ, steps, repeats):
+def per_step(integ, steps, repeats, **kw):
     from scipy.spatial.transform import Rotation
     g0 = Rotation.from_rotvec([0.3, 0.2, 0.0]).as_matrix()
     times = []
     for _ in range(repeats):
         t0 = time.perf_counter()
-        tr = integ.simulate(g0=g0, xi0=[0.2, 1.0, 3.0], h=0.05, steps=steps, every=steps)
+        tr = integ.simulate(g0=g0, xi0=[0.2, 1.0, 3.0], h=0.05, steps=steps, every=steps, **kw)
         times.append((time.perf_counter() - t0) / steps)
-    return statistics.median(times), tr.newton_iterations / steps
+    return statistics.median(times), tr.newton_iterations / steps, tr.jacobians / steps
+
+
+def free_body(cache, quick):
+    """Reduced Euler-Poincare Cayley step (examples/free_rigid_body.yaml), h = 0.1."""
+    import hpgen
+    integ = hpgen.compile(ROOT / "examples" / "free_rigid_body.yaml", cache_dir=cache)
+    mu0 = [0.4535961214255773, 0.0, 0.8912073600614354]
+    steps = 200_000 if quick else 2_000_000
+    times = []
+    for _ in range(3 if quick else 5):
+        t0 = time.perf_counter()
+        integ.simulate(g0=np.eye(3), mu0=mu0, h=0.1, steps=steps, every=steps)
+        times.append(time.perf_counter() - t0)
+    one = statistics.median(times) / steps
+    B, bsteps = 256, (2_000 if quick else 20_000)
+    rng = np.random.default_rng(0)
+    mus = rng.normal(size=(B, 3))
+    mus /= np.linalg.norm(mus, axis=1)[:, None]
+    res = {}
+    for threads in (1, 2):
+        times = []
+        for _ in range(3):
+            t0 = time.perf_counter()
+            integ.simulate_batch(np.eye(3), 0.1, bsteps, mu0=mus, every=bsteps, threads=threads)
+            times.append(time.perf_counter() - t0)
+        res[threads] = statistics.median(times) / (B * bsteps)
+    print(f"\nfree rigid body, reduced Cayley step (h = 0.1, {integ.nz} unknowns): "
+          f"{one * 1e9:.0f} ns/step = {1 / one / 1e6:.2f} M steps/s; batched ensemble of {B} "
+          f"bodies: {res[1] * 1e9:.0f} ns/body-step on 1 thread, {res[2] * 1e9:.0f} on 2")
 
 
 def compile_seconds(cache: str, args: list[str]) -> float:
@@ -48,15 +80,21 @@ def main():
     a = ap.parse_args()
     import hpgen
     cache = tempfile.mkdtemp(prefix="hpgen-bench-")
-    print("| tableau | tau | rkmk | unknowns | C us/step | Python us/step | Python / C | Newton it/step |")
-    print("|---|---|---|---|---|---|---|---|")
+    print("| tableau | tau | rkmk | unknowns | Newton | C us/step | it/step | J/step "
+          "| C full Newton us/step | it/step | Python us/step |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for tab, tau, rk in CONFIGS:
         opts = dict(tableau=tab, tau=tau, rkmk=rk, cache_dir=cache)
         c = hpgen.compile(MODEL, backend="c", **opts)
         py = hpgen.compile(MODEL, backend="python", **opts)
-        tc, it = per_step(c, 2000 if a.quick else 20000, 3 if a.quick else 7)
-        tp, _ = per_step(py, 10 if a.quick else 50, 3)
-        print(f"| {tab} | {tau} | {rk} | {c.nz} | {tc * 1e6:.2f} | {tp * 1e6:.0f} | {tp / tc:.0f} | {it:.2f} |")
+        n = 2000 if a.quick else 20000
+        tc, it, jac = per_step(c, n, 3 if a.quick else 7)
+        tf, itf, _ = per_step(c, n, 3 if a.quick else 7, simplified=False)
+        tp, _, _ = per_step(py, 10 if a.quick else 50, 3)
+        mode = "simplified" if c.simplified_default else "full"
+        print(f"| {tab} | {tau} | {rk} | {c.nz} | {mode} | {tc * 1e6:.2f} | {it:.2f} | {jac:.2f} "
+              f"| {tf * 1e6:.2f} | {itf:.2f} | {tp * 1e6:.0f} |")
+    free_body(cache, a.quick)
     cold = tempfile.mkdtemp(prefix="hpgen-bench-cold-")
     args = ["--tableau", "gauss2", "--tau", "exp", "--rkmk", "exact"]
     t_cold = compile_seconds(cold, args)

@@ -50,6 +50,8 @@ def _parser():
     k.add_argument("--states", type=int, default=4,
                    help="states along the run where the symplecticity defect is computed")
     k.add_argument("--json", help="also write the figures to this JSON file")
+    from .bench.cli import add_parser as _add_bench_parser
+    _add_bench_parser(sub)
     return ap
 
 
@@ -139,6 +141,9 @@ def cmd_list(args) -> int:
 def main(argv=None) -> int:
     args = _parser().parse_args(argv)
     try:
+        if args.command == "bench":
+            from .bench.cli import cmd_bench
+            return cmd_bench(args)
         return {"compile": cmd_compile, "run": cmd_run, "list": cmd_list,
                 "check": cmd_check}[args.command](args)
     except ModelError as e:

@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 0d9c78fbf0f91b96933146ccbe0158d50eec4cb2ffdebb400ff5fb20ffd27eb0
+# content hash: 326183c09a8597485a29b86c650a4e9592b112d9f2e3df60c506bad412b4b84b
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "0d9c78fbf0f91b96933146ccbe0158d50eec4cb2ffdebb400ff5fb20ffd27eb0"
+HASH = "326183c09a8597485a29b86c650a4e9592b112d9f2e3df60c506bad412b4b84b"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

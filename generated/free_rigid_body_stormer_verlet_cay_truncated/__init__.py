@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 145538a3715a6e7c2cb73ee4ca1806edbe98d1ec1a2858cfb1ace272a30e9a17
+# content hash: a5872ac0585ebc6e4f1146328be1ad7e5c774c60d006c38f4d316270dd49c898
 """hpgen integrator free_rigid_body_stormer_verlet_cay_truncated for the model free_rigid_body.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "free_rigid_body_stormer_verlet_cay_truncated"
-HASH = "145538a3715a6e7c2cb73ee4ca1806edbe98d1ec1a2858cfb1ace272a30e9a17"
+HASH = "a5872ac0585ebc6e4f1146328be1ad7e5c774c60d006c38f4d316270dd49c898"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: free_rigid_body
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 145538a3715a6e7c2cb73ee4ca1806edbe98d1ec1a2858cfb1ace272a30e9a17
+ * content hash: a5872ac0585ebc6e4f1146328be1ad7e5c774c60d006c38f4d316270dd49c898
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -1504,7 +1504,7 @@ CASADI_SYMBOL_EXPORT int margin_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 #define HPGEN_EXPORT
 #endif
 
-#define HPGEN_ABI 1
+#define HPGEN_ABI 2
 #define HPGEN_N 3
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 #define HPGEN_D 3
@@ -1516,6 +1516,11 @@ CASADI_SYMBOL_EXPORT int margin_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 #define HPGEN_INVALID (-1)
 /* Newton stalls at round-off: stop when |dz| stopped decreasing while below this * (1+|z|) */
 #define HPGEN_ROUNDOFF_FLOOR 1e-11
+/* simplified Newton: a contraction rate |dz_k| / |dz_{k-1}| above this refreshes the Jacobian
+   (or, with a Jacobian fresh from this step, switches the step to full Newton) */
+#define HPGEN_THETA_MAX 0.05
+/* simplified Newton stops when its error estimate is below this * tol * (1 + |z|) */
+#define HPGEN_SIMPLIFIED_TOL 0.01
 
 typedef struct hpgen_status {
     long long code;              /* HPGEN_OK, ... */
@@ -1523,9 +1528,31 @@ typedef struct hpgen_status {
     long long iterations;        /* Newton iterations of the last step attempted */
     long long total_iterations;  /* Newton iterations over all steps */
     double residual;             /* inf-norm of the last residual evaluated */
+    long long jacobians;         /* Jacobian evaluations (and LU factorizations), all steps */
 } hpgen_status;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "145538a3715a6e7c2cb73ee4ca1806edbe98d1ec1a2858cfb1ace272a30e9a17"; }
+/* Runtime Newton settings (no recompilation needed to change them). */
+typedef struct hpgen_options {
+    double tol;                  /* converged when |dz| <= tol (1 + |z|), inf-norms */
+    long long maxit;             /* Newton iterations per step, >= 1 */
+    long long simplified;        /* 1: keep the Jacobian's LU across iterations and steps */
+    long long predictor;         /* 1: start step k+1 from 2 z_k - z_{k-1} (else from z_k) */
+} hpgen_options;
+
+/* A run in progress: the state, the Newton start and the Newton memory. Advancing a run by
+   n1 steps and then by n2 steps gives bitwise the same result as by n1 + n2 steps. */
+typedef struct hpgen_run {
+    double g[HPGEN_NN], p[HPGEN_D];  /* (g_k, p_k) */
+    double z[HPGEN_NZ];              /* solution of the last step (or the initial guess) */
+    double zprev[HPGEN_NZ];          /* solution of the step before (predictor) */
+    double lu[HPGEN_NZ * HPGEN_NZ];  /* LU factors of the last Jacobian (simplified Newton) */
+    int piv[HPGEN_NZ];
+    long long k;                     /* steps done */
+    long long have_prev;             /* zprev is valid */
+    long long lu_valid;              /* lu/piv hold a factorization */
+} hpgen_run;
+
+HPGEN_EXPORT const char* hpgen_hash(void) { return "a5872ac0585ebc6e4f1146328be1ad7e5c774c60d006c38f4d316270dd49c898"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -1752,87 +1779,126 @@ static int hpgen_all_finite(const double* x, int n) {
     return 1;
 }
 
-/* Solve A x = b in place: LU with partial pivoting (pivot: first row of largest |a_ik|, as
-   LAPACK). A is NZ x NZ column-major and is overwritten; b is overwritten by x.
-   Returns 1 if a pivot is exactly zero (singular A). */
-static int hpgen_lu_solve(double* A, double* b) {
+/* LU with partial pivoting in place (pivot: first row of largest |a_ik|, as LAPACK), row
+   interchanges in piv. A is NZ x NZ column-major. Returns 1 if a pivot is exactly zero. */
+static int hpgen_lu_factor(double* A, int* piv) {
     const int n = HPGEN_NZ;
     int i, j, k;
     for (k = 0; k < n; ++k) {
-        int piv = k;
+        int pk = k;
         double amax = fabs(A[k + k * n]);
         for (i = k + 1; i < n; ++i) {
             double a = fabs(A[i + k * n]);
-            if (a > amax) { amax = a; piv = i; }
+            if (a > amax) { amax = a; pk = i; }
         }
+        piv[k] = pk;
         if (amax == 0.0) return 1;
-        if (piv != k) {
-            double t;
-            for (j = 0; j < n; ++j) { t = A[k + j * n]; A[k + j * n] = A[piv + j * n]; A[piv + j * n] = t; }
-            t = b[k]; b[k] = b[piv]; b[piv] = t;
+        if (pk != k) {
+            for (j = 0; j < n; ++j) {
+                double t = A[k + j * n]; A[k + j * n] = A[pk + j * n]; A[pk + j * n] = t;
+            }
         }
         for (i = k + 1; i < n; ++i) A[i + k * n] /= A[k + k * n];
         for (j = k + 1; j < n; ++j) {
             double a = A[k + j * n];
             if (a != 0.0) for (i = k + 1; i < n; ++i) A[i + j * n] -= A[i + k * n] * a;
         }
-        for (i = k + 1; i < n; ++i) b[i] -= A[i + k * n] * b[k];
     }
+    return 0;
+}
+
+/* b <- A^{-1} b with the factors of hpgen_lu_factor: all row interchanges first (the
+   factorization swapped whole rows, L included), then L y = P b and U x = y. */
+static void hpgen_lu_apply(const double* A, const int* piv, double* b) {
+    const int n = HPGEN_NZ;
+    int i, j, k;
+    for (k = 0; k < n; ++k)
+        if (piv[k] != k) { double t = b[k]; b[k] = b[piv[k]]; b[piv[k]] = t; }
+    for (k = 0; k < n; ++k)
+        for (i = k + 1; i < n; ++i) b[i] -= A[i + k * n] * b[k];
     for (k = n - 1; k >= 0; --k) {
         double s = b[k];
         for (j = k + 1; j < n; ++j) s -= A[k + j * n] * b[j];
         b[k] = s / A[k + k * n];
     }
-    return 0;
 }
 
-/* Newton on residual(z, g, p, h) = 0 from z (in/out): z <- z - J^{-1} F; converged when
-   |dz| <= tol (1 + |z|), or when |dz| stopped decreasing while |dz| <= 1e-11 (1 + |z|)
-   (round-off floor); inf-norms. Returns a status code. */
+/* Newton on residual(z, g, p, h) = 0 from z (in/out): z <- z - J^{-1} F.
+   Full Newton evaluates J at every iterate. Simplified Newton (o->simplified) keeps the LU of
+   the last J in (lu, piv, *lu_valid), across steps too, and refreshes it when the contraction
+   rate theta = |dz_k| / |dz_{k-1}| exceeds HPGEN_THETA_MAX; if J was already evaluated in
+   this step the rest of the step is full Newton (the fallback).
+   Converged when |dz| <= tol (1 + |z|), or when |dz| stopped decreasing while
+   |dz| <= 1e-11 (1 + |z|) (round-off floor); inf-norms. Returns a status code. */
 static int hpgen_newton(const double* g, const double* p, const double* hv, double* z,
-                        double tol, long long maxit, long long* iters, double* rnorm) {
-    double F[HPGEN_NZ], J[HPGEN_NZ * HPGEN_NZ];
+                        const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
+                        long long* iters, long long* jacs, double* rnorm) {
+    double F[HPGEN_NZ];
     double dprev = HUGE_VAL;
+    int full = !o->simplified, fresh = 0;
     long long it;
     int i;
     *iters = 0;
     *rnorm = NAN;
-    for (it = 1; it <= maxit; ++it) {
+    for (it = 1; it <= o->maxit; ++it) {
         double dn, zn;
         *iters = it;
-        if (hpgen_kernel_residual(z, g, p, hv, F) || hpgen_kernel_jacobian(z, g, p, hv, J))
-            return HPGEN_NONFINITE;
+        if (hpgen_kernel_residual(z, g, p, hv, F)) return HPGEN_NONFINITE;
         *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
-        if (!isfinite(*rnorm) || !hpgen_all_finite(J, HPGEN_NZ * HPGEN_NZ))
-            return HPGEN_NONFINITE;
-        if (hpgen_lu_solve(J, F)) return HPGEN_NONFINITE;
+        if (!isfinite(*rnorm)) return HPGEN_NONFINITE;
+        if (full || !*lu_valid) {
+            *lu_valid = 0;
+            ++*jacs;
+            if (hpgen_kernel_jacobian(z, g, p, hv, lu)) return HPGEN_NONFINITE;
+            if (!hpgen_all_finite(lu, HPGEN_NZ * HPGEN_NZ) || hpgen_lu_factor(lu, piv))
+                return HPGEN_NONFINITE;
+            *lu_valid = 1;
+            fresh = 1;
+        }
+        hpgen_lu_apply(lu, piv, F);
         for (i = 0; i < HPGEN_NZ; ++i) z[i] -= F[i];
         dn = hpgen_norm_inf(F, HPGEN_NZ);
         zn = hpgen_norm_inf(z, HPGEN_NZ);
         if (!isfinite(dn) || !isfinite(zn)) return HPGEN_NONFINITE;
-        if (dn <= tol * (1.0 + zn)) return HPGEN_OK;
         if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)) return HPGEN_OK;
+        if (full) {
+            /* quadratic convergence: the error left after dn <= tol is about C tol^2 */
+            if (dn <= o->tol * (1.0 + zn)) return HPGEN_OK;
+        } else {
+            /* linear convergence: the error left is about theta/(1 - theta) dn; ask it to be
+               <= HPGEN_SIMPLIFIED_TOL tol, the round-off level full Newton reaches */
+            double th = dn / dprev;
+            if (dn <= HPGEN_SIMPLIFIED_TOL * o->tol * (1.0 + zn)) return HPGEN_OK;
+            if (it > 1 && th < 1.0 && th / (1.0 - th) * dn <= HPGEN_SIMPLIFIED_TOL * o->tol * (1.0 + zn))
+                return HPGEN_OK;
+        }
+        if (!full && it > 1 && dn > HPGEN_THETA_MAX * dprev) {
+            if (fresh) full = 1;           /* a fresh J contracts poorly: full Newton */
+            else *lu_valid = 0;            /* a stale J: refresh it at the next iterate */
+        }
         dprev = dn;
     }
     return HPGEN_NO_CONVERGENCE;
 }
 
-/* One step: margin(z, h) > 0 at the start, Newton from z (in/out), margin(z, h) > 0 at the
-   solution, then update -> (g1, p1). */
+/* One step of a run: margin(z, h) > 0 at the start (check_start), Newton from z (in/out),
+   margin(z, h) > 0 at the solution, then update -> (g1, p1). */
 static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
-                           double tol, long long maxit, double* g1, double* p1,
-                           long long* iters, double* rnorm, int check_start) {
+                           const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
+                           double* g1, double* p1, long long* iters, long long* jacs,
+                           double* rnorm, int check_start) {
     double m[1];
     int code;
     /* a start outside tau's domain means h is too large for the chart: do not let Newton
-       wander to a spurious root from there. Only needed for a start that is not the previous
-       step's solution (whose margin, same h, was checked after it converged). */
+       wander to a spurious root from there. Only needed for a start that is not built from
+       the previous steps' solutions (whose margins, same h, were checked). */
     if (check_start && !hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) {
         *iters = 0; *rnorm = NAN;
         return HPGEN_DOMAIN;
     }
-    code = hpgen_newton(g, p, hv, z, tol, maxit, iters, rnorm);
+    code = hpgen_newton(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm);
     if (code != HPGEN_OK) {
+        *lu_valid = 0;
         /* a failure at an iterate outside tau's domain is reported as a domain error */
         if (!hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) return HPGEN_DOMAIN;
         return code;
@@ -1847,55 +1913,106 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
 
 static void hpgen_status_init(hpgen_status* st) {
     st->code = HPGEN_OK; st->step = 0; st->iterations = 0; st->total_iterations = 0;
-    st->residual = 0.0;
+    st->residual = 0.0; st->jacobians = 0;
 }
 
-/* One step from (g, p) with step size h; z: Newton start in, solution out. Returns the code. */
-HPGEN_EXPORT int hpgen_step(const double* g, const double* p, double h, double* z, double tol,
-                            long long maxit, double* g1, double* p1, hpgen_status* st) {
-    double hv[1];
-    long long it;
+static int hpgen_options_ok(const hpgen_options* o) {
+    return o->maxit >= 1 && o->tol > 0.0 && isfinite(o->tol);
+}
+
+/* One step from (g, p) with step size h; z: Newton start in, solution out (no memory from
+   earlier steps; callers normally ask for full Newton here: a cold start). Returns the code. */
+HPGEN_EXPORT int hpgen_step(const double* g, const double* p, double h, double* z,
+                            const hpgen_options* o, double* g1, double* p1, hpgen_status* st) {
+    double hv[1], lu[HPGEN_NZ * HPGEN_NZ];
+    int piv[HPGEN_NZ];
+    long long it, valid = 0;
     double r;
     int code;
     hpgen_status_init(st);
-    if (maxit < 1) { st->code = HPGEN_INVALID; return HPGEN_INVALID; }
+    if (!hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return HPGEN_INVALID; }
     hv[0] = h;
-    code = hpgen_step_core(g, p, hv, z, tol, maxit, g1, p1, &it, &r, 1);
+    code = hpgen_step_core(g, p, hv, z, o, lu, piv, &valid, g1, p1, &it, &st->jacobians, &r, 1);
     st->code = code; st->iterations = it; st->total_iterations = it; st->residual = r;
     return code;
 }
 
-/* All steps in one call, warm-started (each Newton starts from the previous solution z, in/out).
-   Records (g, p) at steps 0, every, 2 every, ... into g_rec[(steps/every + 1) * NN] and
-   p_rec[(steps/every + 1) * D]. Stops at the first failed step. Returns the steps done. */
-HPGEN_EXPORT long long hpgen_simulate(const double* g0, const double* p0, double h, double* z,
-                                      long long steps, long long every, double tol,
-                                      long long maxit, double* g_rec, double* p_rec,
-                                      hpgen_status* st) {
-    double g[HPGEN_NN], p[HPGEN_D], g1[HPGEN_NN], p1[HPGEN_D], hv[1];
-    long long k, it;
-    double r;
+/* sizeof(hpgen_run), for callers that allocate runs as byte buffers */
+HPGEN_EXPORT long long hpgen_run_size(void) { return (long long)sizeof(hpgen_run); }
+
+/* Start a run at (g0, p0) with Newton start z0 for the first step. */
+HPGEN_EXPORT void hpgen_run_init(hpgen_run* r, const double* g0, const double* p0,
+                                 const double* z0) {
+    memset(r, 0, sizeof *r);
+    memcpy(r->g, g0, sizeof r->g);
+    memcpy(r->p, p0, sizeof r->p);
+    memcpy(r->z, z0, sizeof r->z);
+}
+
+/* The run's state (g_k, p_k), last solution z and steps done k. */
+HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, double* z) {
+    memcpy(g, r->g, sizeof r->g);
+    memcpy(p, r->p, sizeof r->p);
+    memcpy(z, r->z, sizeof r->z);
+    return r->k;
+}
+
+/* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
+   solution, or from the linear predictor 2 z_k - z_{k-1}). The state after global step k is
+   recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
+   sizes them for the records falling in this call). Stops at the first failed step (the run
+   keeps the last good state). Returns the steps done in this call. */
+HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, long long every,
+                                     const hpgen_options* o, double* g_rec, double* p_rec,
+                                     hpgen_status* st) {
+    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], hv[1];
+    long long n, it, rec = 0;
+    double res;
+    int i;
+    hpgen_options full;
     hpgen_status_init(st);
-    if (steps < 0 || every < 1 || maxit < 1) { st->code = HPGEN_INVALID; return 0; }
+    if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
     hv[0] = h;
-    memcpy(g, g0, sizeof g);
-    memcpy(p, p0, sizeof p);
-    memcpy(g_rec, g, sizeof g);
-    memcpy(p_rec, p, sizeof p);
-    for (k = 0; k < steps; ++k) {
-        int code = hpgen_step_core(g, p, hv, z, tol, maxit, g1, p1, &it, &r, k == 0);
+    full = *o;
+    full.simplified = 0;
+    for (n = 0; n < steps; ++n) {
+        int code, predicted = o->predictor && r->have_prev;
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = predicted ? 2.0 * r->z[i] - r->zprev[i] : r->z[i];
+        /* the first step starts from the crude guess kernel: full Newton */
+        code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? &full : o, r->lu, r->piv,
+                               &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0);
         st->iterations = it;
         st->total_iterations += it;
-        st->residual = r;
-        if (code != HPGEN_OK) { st->code = code; st->step = k; return k; }
-        memcpy(g, g1, sizeof g);
-        memcpy(p, p1, sizeof p);
-        if ((k + 1) % every == 0) {
-            long long rec = (k + 1) / every;
-            memcpy(g_rec + rec * HPGEN_NN, g, sizeof g);
-            memcpy(p_rec + rec * HPGEN_D, p, sizeof p);
+        st->residual = res;
+        if (code != HPGEN_OK) { st->code = code; st->step = r->k; return n; }
+        memcpy(r->zprev, r->z, sizeof r->z);
+        memcpy(r->z, zs, sizeof r->z);
+        r->have_prev = 1;
+        memcpy(r->g, g1, sizeof g1);
+        memcpy(r->p, p1, sizeof p1);
+        r->k += 1;
+        if (r->k % every == 0) {
+            memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof g1);
+            memcpy(p_rec + rec * HPGEN_D, r->p, sizeof p1);
+            ++rec;
         }
     }
-    st->step = steps;
+    st->step = r->k;
     return steps;
+}
+
+/* Advance B independent runs (runs[0..B-1]) by `steps` steps each, one after the other,
+   exactly as B calls of hpgen_advance: records of run b start at g_rec + b * per_run * NN
+   (p_rec + b * per_run * D), statuses in st[b]. Callers split a batch across threads. */
+HPGEN_EXPORT long long hpgen_advance_batch(hpgen_run* runs, long long B, double h,
+                                           long long steps, long long every,
+                                           const hpgen_options* o, long long per_run,
+                                           double* g_rec, double* p_rec, hpgen_status* st) {
+    long long b, failed = 0;
+    for (b = 0; b < B; ++b) {
+        hpgen_advance(runs + b, h, steps, every, o, g_rec + b * per_run * HPGEN_NN,
+                      p_rec + b * per_run * HPGEN_D, st + b);
+        if (st[b].code != HPGEN_OK) ++failed;
+    }
+    return failed;
 }

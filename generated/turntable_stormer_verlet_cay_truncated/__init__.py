@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: ecd757ff778bb315f1b25437e76106bf7458a553d7195b9e13905d0857b42be4
+# content hash: 7e37e25f3be50528ebca3b19605724dd4315ae95f495bbc7c051bd5f8498089d
 """hpgen integrator turntable_stormer_verlet_cay_truncated for the model turntable.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "turntable_stormer_verlet_cay_truncated"
-HASH = "ecd757ff778bb315f1b25437e76106bf7458a553d7195b9e13905d0857b42be4"
+HASH = "7e37e25f3be50528ebca3b19605724dd4315ae95f495bbc7c051bd5f8498089d"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

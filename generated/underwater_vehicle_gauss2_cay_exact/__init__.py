@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: a5af8285aabd7636a7c82a6974a2851c27461cc2956cf6d35db6a114851f7612
+# content hash: cb9c356895f1bd46d30303256a2e887fedb770d064f38893abc63e0aacbf863b
 """hpgen integrator underwater_vehicle_gauss2_cay_exact for the model underwater_vehicle.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "underwater_vehicle_gauss2_cay_exact"
-HASH = "a5af8285aabd7636a7c82a6974a2851c27461cc2956cf6d35db6a114851f7612"
+HASH = "cb9c356895f1bd46d30303256a2e887fedb770d064f38893abc63e0aacbf863b"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

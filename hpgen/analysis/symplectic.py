@@ -105,7 +105,9 @@ def converged_step(integ, g, p, h, z=None, tol=newton.DEFAULT_TOL, maxit=newton.
     hv = np.array([float(h)])
     if z is None:
         z = integ.kernel("guess", integ.velocity(g, p), gf, p, hv)[0]
-    code, g1, p1, z, it, r = newton.step_core(integ.kernel, integ.nz, gf, p, hv, z, tol, maxit)
+    opts = newton.NewtonOptions(tol, maxit, simplified=False)
+    code, g1, p1, z, it, r, _ = newton.step_core(integ.kernel, integ.nz, gf, p, hv, z, opts,
+                                                 newton.NewtonMemory())
     if code != newton.OK:
         raise ConvergenceError("Newton did not converge in the symplecticity check", step=0,
                                time=0.0, residual=r, iterations=it)

@@ -143,7 +143,8 @@ def meta(step, info: dict) -> dict:
         f = k.function
         kernels[k.name] = {
             "inputs": [[k.inputs[i], int(f.numel_in(i))] for i in range(f.n_in())],
-            "outputs": [[k.outputs[i], int(f.numel_out(i))] for i in range(f.n_out())]}
+            "outputs": [[k.outputs[i], int(f.numel_out(i))] for i in range(f.n_out())],
+            "instructions": int(f.n_instructions())}
     return {"format": META_FORMAT, "hpgen_version": __version__, "module": info["module"],
             "model": info["model_name"], "options": info["options"], "hash": info["hash"],
             "backend": info["backend"], "n": step.n, "d": step.d, "nz": step.nz,

@@ -105,8 +105,13 @@ def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
         return _truncated_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_g0,
                                g1, p1, xi_hat, h)
 
-    # The stage multipliers stay unknowns here even for a left-invariant l: with the exact
-    # constraint R^j depends on G^j, so the eps_j equations do not force N^j = 0.
+    if _invertible(A):
+        return _exact_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_g0,
+                           g1, p1, xi_hat, p, h)
+
+    # Singular A (explicit first stage: Stormer-Verlet, Lobatto IIIA): the stage multipliers
+    # stay unknowns, even for a left-invariant l: with the exact constraint R^j depends on
+    # G^j, so the eps_j equations do not force N^j = 0.
     unknown_blocks = [(f"Xi{i + 1}", Xi[i]) for i in range(s)]
     unknown_blocks += [(f"N{i + 1}", N[i]) for i in range(s)]
     equations = list(eq_xi) + eq_eps
@@ -160,6 +165,50 @@ def _truncated_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_
     residual = ca.vertcat(*[final(e) for e in eq_xi])
     taus = [h * t for t in theta] + [h * xi_next]
     guess = ca.vertcat(*[xi_hat] * s)
+    return _finish(group, tau, z, blocks, residual, final(g1), final(p1), guess, xi_hat, taus, h)
+
+
+def _invertible(A) -> bool:
+    import numpy as np
+    M = np.array(A, dtype=float)
+    return bool(abs(np.linalg.det(M)) > 1e-12 * max(1.0, np.abs(M).max()) ** len(M))
+
+
+def _exact_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_g0, g1, p1,
+                xi_hat, p, h):
+    """Exact RKMK constraint with an invertible A (Gauss, Radau IIA, backward Euler):
+    unknowns (Theta^1..s, mu_{k+1}), (s + 1) d instead of (3 s + 2) d.
+
+    With K^j = R^j = dtau^{-1}_{-h Theta^j} Xi^j (the chart velocities):
+        Theta equations  Theta = A K                 -> K = A^{-1} Theta
+                         Xi^j = dtau_{-h Theta^j} K^j  (closed-form dtau: explicit)
+        xi_{k+1} = sum_j b_j K^j                       (explicit)
+        Xi^j equations   b_j dl/dxi(G^j, Xi^j) = (dtau^{-1}_{-h Theta^j})^T
+                             (h sum_i a_ij N^i + b_j mu_{k+1})
+                         -> h N = A^{-T} (b_j Lambda^j),  Lambda^j = dtau_{-h Theta^j}^T
+                             (dl/dxi(G^j, Xi^j) - (dtau^{-1}_{-h Theta^j})^T mu_{k+1})
+    leaving the eps_i (s d) and eta_0 (d) conditions. h N is formed without dividing by h.
+    """
+    import numpy as np
+    s, d, A, b = tableau.stages, group.d, tableau.A, tableau.b
+    zero = ca.SX.zeros(d)
+    Ainv = np.linalg.inv(np.array(A, dtype=float))
+    K = [sum((float(Ainv[j][i]) * Th[i] for i in range(s)), zero) for j in range(s)]
+    Xi_of = [ca.mtimes(group.dtau(tau, -h * Th[j]), K[j]) for j in range(s)]
+    xi1_of = sum((b[j] * K[j] for j in range(s)), zero)
+    explicit = lambda e: ca.substitute(e, ca.vertcat(*Xi, xi1), ca.vertcat(*Xi_of, xi1_of))  # noqa: E731
+    lam = []
+    for j in range(s):
+        rest = ca.substitute(explicit(eq_xi[j]), ca.vertcat(*N), ca.SX.zeros(s * d))
+        lam.append(b[j] * ca.mtimes(group.dtau(tau, -h * Th[j]).T, rest))
+    hN = [sum((float(Ainv[j][i]) * lam[j] for j in range(s)), zero) for i in range(s)]
+    final = lambda e: ca.substitute(explicit(e), ca.vertcat(*N), ca.vertcat(*hN) / h)  # noqa: E731
+    z = ca.vertcat(*Th, mu1)
+    blocks = tuple((f"Theta{i + 1}", i * d, (i + 1) * d) for i in range(s))
+    blocks += (("mu1", s * d, (s + 1) * d),)
+    residual = ca.vertcat(*[final(e) for e in eq_eps], final(eq_g0))
+    taus = [h * t for t in Th] + [h * xi1_of]
+    guess = ca.vertcat(*[c * xi_hat for c in tableau.c], p)
     return _finish(group, tau, z, blocks, residual, final(g1), final(p1), guess, xi_hat, taus, h)
 
 

@@ -2,11 +2,14 @@
 (the generated kernels.py). Both expose the same small interface:
 
   call(name, *args) -> [outputs]   args/outputs flat float64 arrays (matrices column-major)
-  step(g, p, hv, z, tol, maxit)    -> (code, g1, p1, z, iterations, residual)
-  simulate(g0, p0, h, z0, steps, every, tol, maxit) -> (done, g_rec, p_rec, status)
+  step(g, p, hv, z, opts)          -> (code, g1, p1, z, iterations, residual)
+  start(g0, p0, z0) -> run;  advance(run, h, steps, every, opts) -> (done, g_rec, p_rec, status)
+  state(run) -> (g, p, z, k);  simulate(g0, p0, h, z0, steps, every, opts) (start + advance)
 
-with g_rec (K, n*n) column-major rows and p_rec (K, d), K = steps // every + 1, and status a
-dict (code, step, iterations, total_iterations, residual); codes as in hpgen.runtime.newton.
+opts is a newton.NewtonOptions; g_rec (K, n*n) column-major rows and p_rec (K, d) hold the
+records of the global steps k % every == 0 reached (simulate prepends step 0), status a dict
+(code, step, iterations, total_iterations, residual, jacobians); codes as in
+hpgen.runtime.newton. Advancing a run in chunks gives bitwise the same states as in one call.
 Imports only the standard library and numpy.
 """
 from __future__ import annotations
@@ -22,7 +25,7 @@ from . import newton
 from .build import build_library
 
 _counter = itertools.count()
-_ABI = 1
+_ABI = 2
 
 
 def _flat(a, size: int, what: str) -> np.ndarray:
@@ -34,6 +37,7 @@ def _flat(a, size: int, what: str) -> np.ndarray:
 
 
 class _Backend:
+    """Common driver: simulate = start a run, record step 0, advance."""
     name = ""
 
     def __init__(self, meta: dict):
@@ -42,13 +46,17 @@ class _Backend:
         self._sig = {k: ([s for _, s in v["inputs"]], [s for _, s in v["outputs"]])
                      for k, v in meta["kernels"].items()}
 
-    def step(self, g, p, hv, z, tol, maxit):
-        return newton.step_core(self.call, self.nz, g, p, hv, z, tol, maxit)
+    def records_in(self, k0: int, steps: int, every: int) -> int:
+        """Number of global steps k in (k0, k0 + steps] with k % every == 0."""
+        return (k0 + steps) // every - k0 // every
 
-    def simulate(self, g0, p0, h, z0, steps, every, tol, maxit):
-        return newton.simulate(self.call, self.nz, self.d, self.n * self.n, g0, p0, h, z0,
-                               steps, every, tol, maxit)
-
+    def simulate(self, g0, p0, h, z0, steps, every, opts):
+        run = self.start(g0, p0, z0)
+        done, g_rec, p_rec, st = self.advance(run, h, steps, every, opts)
+        nn = self.n * self.n
+        g_all = np.concatenate([np.asarray(g0, dtype=np.float64).reshape(1, nn), g_rec])
+        p_all = np.concatenate([np.asarray(p0, dtype=np.float64).reshape(1, self.d), p_rec])
+        return done, g_all, p_all, st
 
 class PythonBackend(_Backend):
     """Kernels from the generated kernels.py; Newton and the step loop in numpy."""
@@ -70,14 +78,43 @@ class PythonBackend(_Backend):
     def call(self, name, *args):
         return self._kernels[name](*args)
 
+    def step(self, g, p, hv, z, opts):
+        code, g1, p1, z, it, r, _ = newton.step_core(self.call, self.nz, g, p, hv, z, opts,
+                                                     newton.NewtonMemory())
+        return code, g1, p1, z, it, r
+
+    def start(self, g0, p0, z0):
+        return newton.Run(g0, p0, z0)
+
+    def advance(self, run, h, steps, every, opts):
+        """(steps done, g_rec (K, nn), p_rec (K, d), status); K records of this call."""
+        done, recs, st = newton.advance(self.call, self.nz, run, h, steps, every, opts)
+        K = len(recs)
+        g_rec = np.array([g for g, _ in recs]).reshape(K, self.n * self.n)
+        p_rec = np.array([p for _, p in recs]).reshape(K, self.d)
+        return done, g_rec, p_rec, st
+
+    def state(self, run):
+        """(g flat, p, z, k) of a run."""
+        return run.g.copy(), run.p.copy(), run.z.copy(), run.k
+
 
 class _Status(ctypes.Structure):
     _fields_ = [("code", ctypes.c_longlong), ("step", ctypes.c_longlong),
                 ("iterations", ctypes.c_longlong), ("total_iterations", ctypes.c_longlong),
-                ("residual", ctypes.c_double)]
+                ("residual", ctypes.c_double), ("jacobians", ctypes.c_longlong)]
 
     def as_dict(self) -> dict:
         return {f: getattr(self, f) for f, _ in self._fields_}
+
+
+class _Options(ctypes.Structure):
+    _fields_ = [("tol", ctypes.c_double), ("maxit", ctypes.c_longlong),
+                ("simplified", ctypes.c_longlong), ("predictor", ctypes.c_longlong)]
+
+    @classmethod
+    def of(cls, o: newton.NewtonOptions) -> "_Options":
+        return cls(float(o.tol), int(o.maxit), int(bool(o.simplified)), int(bool(o.predictor)))
 
 
 class CBackend(_Backend):
@@ -108,11 +145,16 @@ class CBackend(_Backend):
             fn.restype = ctypes.c_int
             self._fns[k] = fn
         P, LL, D = ctypes.c_void_p, ctypes.c_longlong, ctypes.c_double
-        lib.hpgen_step.argtypes = [P, P, D, P, D, LL, P, P, ctypes.POINTER(_Status)]
-        lib.hpgen_step.restype = ctypes.c_int
-        lib.hpgen_simulate.argtypes = [P, P, D, P, LL, LL, D, LL, P, P,
-                                       ctypes.POINTER(_Status)]
-        lib.hpgen_simulate.restype = ctypes.c_longlong
+        for name, args, res in (
+                ("hpgen_step", [P, P, D, P, P, P, P, P], ctypes.c_int),
+                ("hpgen_run_size", [], LL),
+                ("hpgen_run_init", [P, P, P, P], None),
+                ("hpgen_run_get", [P, P, P, P], LL),
+                ("hpgen_advance", [P, D, LL, LL, P, P, P, P], LL),
+                ("hpgen_advance_batch", [P, LL, D, LL, LL, P, LL, P, P, P], LL)):
+            fn = getattr(lib, name)
+            fn.argtypes, fn.restype = args, res
+        self.run_size = int(lib.hpgen_run_size())
         self._lib = lib
 
     def call(self, name, *args):
@@ -124,27 +166,79 @@ class CBackend(_Backend):
         self._fns[name](*[x.ctypes.data for x in a + r])
         return r
 
-    def step(self, g, p, hv, z, tol, maxit):
+    def step(self, g, p, hv, z, opts):
         nn, d = self.n * self.n, self.d
         g, p = _flat(g, nn, "g"), _flat(p, d, "p")
         z = np.array(_flat(z, self.nz, "z"))
-        g1, p1, st = np.zeros(nn), np.zeros(d), _Status()
+        g1, p1, st, o = np.zeros(nn), np.zeros(d), _Status(), _Options.of(opts)
         code = self._lib.hpgen_step(g.ctypes.data, p.ctypes.data, float(hv[0]), z.ctypes.data,
-                                    tol, maxit, g1.ctypes.data, p1.ctypes.data,
+                                    ctypes.byref(o), g1.ctypes.data, p1.ctypes.data,
                                     ctypes.byref(st))
+        if code < 0:
+            raise ValueError("hpgen_step rejected its arguments")
         if code != newton.OK:
             return code, None, None, z, st.iterations, st.residual
         return code, g1, p1, z, st.iterations, st.residual
 
-    def simulate(self, g0, p0, h, z0, steps, every, tol, maxit):
+    def start(self, g0, p0, z0):
+        """A run (a ctypes byte buffer holding a C ``hpgen_run``) at (g0, p0), start z0."""
         nn, d = self.n * self.n, self.d
         g0, p0 = _flat(g0, nn, "g0"), _flat(p0, d, "p0")
-        z = np.array(_flat(z0, self.nz, "z0"))
-        K = steps // every + 1
-        g_rec, p_rec, st = np.zeros((K, nn)), np.zeros((K, d)), _Status()
-        done = self._lib.hpgen_simulate(g0.ctypes.data, p0.ctypes.data, h, z.ctypes.data,
-                                        steps, every, tol, maxit, g_rec.ctypes.data,
-                                        p_rec.ctypes.data, ctypes.byref(st))
+        z0 = _flat(z0, self.nz, "z0")
+        run = ctypes.create_string_buffer(self.run_size)
+        self._lib.hpgen_run_init(run, g0.ctypes.data, p0.ctypes.data, z0.ctypes.data)
+        return run
+
+    def state(self, run):
+        """(g flat, p, z, k) of a run."""
+        g, p, z = np.zeros(self.n * self.n), np.zeros(self.d), np.zeros(self.nz)
+        k = self._lib.hpgen_run_get(run, g.ctypes.data, p.ctypes.data, z.ctypes.data)
+        return g, p, z, int(k)
+
+    def advance(self, run, h, steps, every, opts):
+        """(steps done, g_rec (K, nn), p_rec (K, d), status); K records of this call."""
+        nn, d = self.n * self.n, self.d
+        K = self.records_in(self.state(run)[3], steps, every)
+        g_rec, p_rec, st, o = np.zeros((K, nn)), np.zeros((K, d)), _Status(), _Options.of(opts)
+        done = self._lib.hpgen_advance(run, float(h), steps, every, ctypes.byref(o),
+                                       g_rec.ctypes.data, p_rec.ctypes.data, ctypes.byref(st))
         if st.code < 0:
-            raise ValueError("hpgen_simulate rejected its arguments")
-        return int(done), g_rec, p_rec, st.as_dict()
+            raise ValueError("hpgen_advance rejected its arguments")
+        K = self.records_in(self.state(run)[3] - done, done, every)
+        return int(done), g_rec[:K], p_rec[:K], st.as_dict()
+
+    def simulate_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads):
+        """B independent runs; each thread advances a contiguous slice of them with one C
+        call (ctypes releases the GIL). Returns (done (B,), g_rec (B, K, nn), p_rec (B, K, d),
+        statuses); K = steps // every + 1 including step 0; rows after a failure are 0."""
+        from concurrent.futures import ThreadPoolExecutor
+        nn, d, B = self.n * self.n, self.d, len(g0s)
+        K = steps // every + 1
+        runs = ctypes.create_string_buffer(self.run_size * B)
+        base = ctypes.addressof(runs)
+        for b in range(B):
+            g0, p0 = _flat(g0s[b], nn, "g0"), _flat(p0s[b], d, "p0")
+            self._lib.hpgen_run_init(base + b * self.run_size, g0.ctypes.data, p0.ctypes.data,
+                                     _flat(z0s[b], self.nz, "z0").ctypes.data)
+        g_rec, p_rec = np.zeros((B, K, nn)), np.zeros((B, K, d))
+        g_rec[:, 0] = np.asarray(g0s, dtype=np.float64).reshape(B, nn)
+        p_rec[:, 0] = np.asarray(p0s, dtype=np.float64).reshape(B, d)
+        sts, o = (_Status * B)(), _Options.of(opts)
+        threads = max(1, min(int(threads), B))
+        bounds = [B * i // threads for i in range(threads + 1)]
+
+        def work(i):
+            lo, hi = bounds[i], bounds[i + 1]
+            if hi > lo:
+                self._lib.hpgen_advance_batch(
+                    base + lo * self.run_size, hi - lo, float(h), steps, every,
+                    ctypes.byref(o), K, g_rec[lo:, 1:].ctypes.data, p_rec[lo:, 1:].ctypes.data,
+                    ctypes.byref(sts, lo * ctypes.sizeof(_Status)))
+
+        if threads == 1:
+            work(0)
+        else:
+            with ThreadPoolExecutor(threads) as pool:
+                list(pool.map(work, range(threads)))
+        done = np.array([s.step for s in sts])
+        return done, g_rec, p_rec, [s.as_dict() for s in sts]

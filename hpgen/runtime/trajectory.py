@@ -27,6 +27,7 @@ class Trajectory:
     partial: bool = False
     error: Any = None             # None or the ConvergenceError that stopped the run
     newton_iterations: int = 0    # total over all steps attempted
+    jacobians: int = 0            # Jacobian evaluations (LU factorizations) over all steps
     integrator: Any = field(default=None, repr=False, compare=False)
 
     def __post_init__(self):

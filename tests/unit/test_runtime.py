@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import hpgen
+from hpgen.runtime import newton
 from hpgen.errors import BuildError, ConvergenceError, DomainError, ModelError
 from hpgen.runtime import build_library, load
 
@@ -103,7 +104,8 @@ def test_newton_failure_raises_with_partial():
 def test_non_finite_values_give_code_2_in_both_backends():
     for backend in ("c", "python"):
         it = integrator(backend)
-        code, g1, *_ = it._b.step(G0.ravel(), XI0, np.array([0.1]), np.full(3, 1e200), 1e-14, 50)
+        opts = newton.NewtonOptions(1e-14, 50)
+        code, g1, *_ = it._b.step(G0.ravel(), XI0, np.array([0.1]), np.full(3, 1e200), opts)
         assert code == 2 and g1 is None
         with pytest.raises(ConvergenceError, match="non-finite"):
             it.step(G0, XI0, 0.1, z=np.full(3, 1e200))
