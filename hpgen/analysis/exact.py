@@ -186,7 +186,9 @@ class FreeRigidBody:
         theta = np.arccos(np.clip(y[:, 2] / self.M, -1.0, 1.0))
         psi = np.arctan2(y[:, 0], y[:, 1])
         B0 = S @ R0 @ self.P.T
-        C = B0 @ (_rx(theta[0]) @ _rz(psi[0])).T
+        y0 = self.pi0 @ self.P.T                   # the angles at t = 0 (t need not start at 0)
+        theta0 = np.arccos(np.clip(y0[2] / self.M, -1.0, 1.0))
+        C = B0 @ (_rx(theta0) @ _rz(np.arctan2(y0[0], y0[1]))).T
         phi0 = np.arctan2(C[1, 0], C[0, 0])
         phi = phi0 + self._integrate_phidot(t)
         B = _rz(phi) @ _rx(theta) @ _rz(psi)

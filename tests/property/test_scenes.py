@@ -390,3 +390,13 @@ def test_underwater_initial_states_share_the_level_set():
     assert np.all(states[1:, 5] == 0.0)
     assert np.all(pc.rhs(states[1:].T)[5] > 0)
     assert len(np.unique(states.round(12), axis=0)) == 32
+
+
+def test_exact_attitude_does_not_need_t_to_start_at_zero():
+    """Regression: the Euler angles at t = 0 come from pi0, not from the first requested time
+    (before the fix, t = [20] alone was 0.92 away from t = [0, 20])."""
+    from hpgen.analysis.exact import free_rigid_body_attitude
+    pi0 = np.array([0.4535961214255773, 0.0, 0.8912073600614354])
+    both, _ = free_rigid_body_attitude([2.0, 1.0, 2.0 / 3.0], pi0, np.eye(3), [0.0, 20.0])
+    alone, _ = free_rigid_body_attitude([2.0, 1.0, 2.0 / 3.0], pi0, np.eye(3), [20.0])
+    assert np.abs(both[1] - alone[0]).max() <= 1e-14
