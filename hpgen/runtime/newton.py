@@ -57,7 +57,14 @@ def newton(fun, z, tol=DEFAULT_TOL, maxit=DEFAULT_MAXIT):
     Returns (code, z, iterations, last residual inf-norm). ``fun`` may raise; it is not
     caught here (the callers use that for the singular-Legendre check).
     """
-    code, z, it, r, _ = solve(lambda zz: fun(zz)[0], lambda zz: fun(zz)[1], z,
+    last = {}
+
+    def residual(zz):
+        # full Newton asks for J at the iterate whose F it just took: evaluate fun once
+        last["F"], last["J"] = fun(zz)
+        return last["F"]
+
+    code, z, it, r, _ = solve(residual, lambda zz: last["J"], z,
                               NewtonOptions(tol, maxit, simplified=False), NewtonMemory())
     return code, z, it, r
 
