@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 326183c09a8597485a29b86c650a4e9592b112d9f2e3df60c506bad412b4b84b
+# content hash: 8a19943a84e47b340306c3f03856b84c0c37c55e94fd7f35fad6613076b7bb92
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "326183c09a8597485a29b86c650a4e9592b112d9f2e3df60c506bad412b4b84b"
+HASH = "8a19943a84e47b340306c3f03856b84c0c37c55e94fd7f35fad6613076b7bb92"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

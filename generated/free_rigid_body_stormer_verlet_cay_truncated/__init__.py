@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: a5872ac0585ebc6e4f1146328be1ad7e5c774c60d006c38f4d316270dd49c898
+# content hash: 7b0570ba1ca97d47792c8ffe445fd0cd61f8baa2894df9b3e5994b2fde9fbebb
 """hpgen integrator free_rigid_body_stormer_verlet_cay_truncated for the model free_rigid_body.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "free_rigid_body_stormer_verlet_cay_truncated"
-HASH = "a5872ac0585ebc6e4f1146328be1ad7e5c774c60d006c38f4d316270dd49c898"
+HASH = "7b0570ba1ca97d47792c8ffe445fd0cd61f8baa2894df9b3e5994b2fde9fbebb"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

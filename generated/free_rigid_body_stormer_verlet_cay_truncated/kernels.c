@@ -3,7 +3,7 @@
  * model: free_rigid_body
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: a5872ac0585ebc6e4f1146328be1ad7e5c774c60d006c38f4d316270dd49c898
+ * content hash: 7b0570ba1ca97d47792c8ffe445fd0cd61f8baa2894df9b3e5994b2fde9fbebb
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -44,6 +44,7 @@
 /* Add prefix to internal symbols */
 #define casadi_f0 CASADI_PREFIX(f0)
 #define casadi_f1 CASADI_PREFIX(f1)
+#define casadi_f10 CASADI_PREFIX(f10)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -91,7 +92,7 @@ casadi_real casadi_fmax(casadi_real x, casadi_real y) {
 #if __STDC_VERSION__ < 199901L
   return x>y ? x : y;
 #else
-  return fmax(x, y);
+  return (x > y || y != y) ? x : y;
 #endif
 }
 
@@ -100,7 +101,7 @@ casadi_real casadi_fmin(casadi_real x, casadi_real y) {
 #if __STDC_VERSION__ < 199901L
   return x<y ? x : y;
 #else
-  return fmin(x, y);
+  return (x < y || y != y) ? x : y;
 #endif
 }
 
@@ -473,8 +474,239 @@ CASADI_SYMBOL_EXPORT int jacobian_work_bytes(casadi_int *sz_arg, casadi_int* sz_
   return 0;
 }
 
-/* update:(z[3],g[9],p[3],h)->(g1[9],p1[3]) */
+/* residual_jacobian:(z[3],g[9],p[3],h)->(F[3],J[9]) */
 static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  a00=arg[2]? arg[2][0] : 0;
+  a01=arg[3]? arg[3][0] : 0;
+  a02=arg[0]? arg[0][1] : 0;
+  a03=(a01*a02);
+  a04=2.;
+  a05=(a03/a04);
+  a06=arg[0]? arg[0][2] : 0;
+  a07=(a01*a06);
+  a08=arg[0]? arg[0][0] : 0;
+  a09=(a01*a08);
+  a10=(a07*a09);
+  a11=4.;
+  a10=(a10/a11);
+  a10=(a05+a10);
+  a12=6.6666666666666663e-01;
+  a06=(a12*a06);
+  a13=(a10*a06);
+  a14=(a03*a09);
+  a14=(a14/a11);
+  a15=(a07/a04);
+  a14=(a14-a15);
+  a16=(a14*a02);
+  a13=(a13+a16);
+  a16=1.;
+  a17=casadi_sq(a09);
+  a17=(a17/a11);
+  a17=(a16+a17);
+  a08=(2.*a08);
+  a18=(a17*a08);
+  a13=(a13+a18);
+  a00=(a00-a13);
+  if (res[0]!=0) res[0][0]=a00;
+  a00=arg[2]? arg[2][1] : 0;
+  a13=(a07*a03);
+  a13=(a13/a11);
+  a04=(a09/a04);
+  a13=(a13-a04);
+  a18=(a13*a06);
+  a19=casadi_sq(a03);
+  a19=(a19/a11);
+  a19=(a16+a19);
+  a20=(a19*a02);
+  a18=(a18+a20);
+  a20=(a09*a03);
+  a20=(a20/a11);
+  a15=(a15+a20);
+  a20=(a15*a08);
+  a18=(a18+a20);
+  a00=(a00-a18);
+  if (res[0]!=0) res[0][1]=a00;
+  a00=arg[2]? arg[2][2] : 0;
+  a18=casadi_sq(a07);
+  a18=(a18/a11);
+  a16=(a16+a18);
+  a18=(a16*a06);
+  a20=(a03*a07);
+  a20=(a20/a11);
+  a04=(a04+a20);
+  a20=(a04*a02);
+  a18=(a18+a20);
+  a20=(a09*a07);
+  a20=(a20/a11);
+  a20=(a20-a05);
+  a05=(a20*a08);
+  a18=(a18+a05);
+  a00=(a00-a18);
+  if (res[0]!=0) res[0][2]=a00;
+  a00=2.5000000000000000e-01;
+  a18=(a07*a01);
+  a18=(a00*a18);
+  a05=(a06*a18);
+  a11=(a03*a01);
+  a11=(a00*a11);
+  a21=(a02*a11);
+  a22=(a05+a21);
+  a23=(2.*a09);
+  a23=(a23*a01);
+  a23=(a00*a23);
+  a23=(a08*a23);
+  a17=(2.*a17);
+  a23=(a23+a17);
+  a22=(a22+a23);
+  a22=(-a22);
+  if (res[1]!=0) res[1][0]=a22;
+  a22=(a08*a11);
+  a15=(2.*a15);
+  a22=(a22+a15);
+  a15=5.0000000000000000e-01;
+  a15=(a15*a01);
+  a23=(a06*a15);
+  a22=(a22-a23);
+  a22=(-a22);
+  if (res[1]!=0) res[1][1]=a22;
+  a22=(a02*a15);
+  a17=(a08*a18);
+  a20=(2.*a20);
+  a17=(a17+a20);
+  a17=(a22+a17);
+  a17=(-a17);
+  if (res[1]!=0) res[1][2]=a17;
+  a09=(a09*a01);
+  a09=(a00*a09);
+  a17=(a02*a09);
+  a17=(a17+a14);
+  a23=(a23+a17);
+  a23=(-a23);
+  if (res[1]!=0) res[1][3]=a23;
+  a03=(2.*a03);
+  a03=(a03*a01);
+  a03=(a00*a03);
+  a03=(a02*a03);
+  a03=(a03+a19);
+  a05=(a05+a03);
+  a03=(a08*a09);
+  a05=(a05+a03);
+  a05=(-a05);
+  if (res[1]!=0) res[1][4]=a05;
+  a02=(a02*a18);
+  a02=(a02+a04);
+  a08=(a08*a15);
+  a02=(a02-a08);
+  a02=(-a02);
+  if (res[1]!=0) res[1][5]=a02;
+  a09=(a06*a09);
+  a10=(a12*a10);
+  a09=(a09+a10);
+  a09=(a09-a22);
+  a09=(-a09);
+  if (res[1]!=0) res[1][6]=a09;
+  a11=(a06*a11);
+  a13=(a12*a13);
+  a11=(a11+a13);
+  a11=(a11+a08);
+  a11=(-a11);
+  if (res[1]!=0) res[1][7]=a11;
+  a07=(2.*a07);
+  a07=(a07*a01);
+  a00=(a00*a07);
+  a06=(a06*a00);
+  a12=(a12*a16);
+  a06=(a06+a12);
+  a06=(a06+a21);
+  a06=(a06+a03);
+  a06=(-a06);
+  if (res[1]!=0) res[1][8]=a06;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int residual_jacobian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f2(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int residual_jacobian_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void residual_jacobian_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void residual_jacobian_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void residual_jacobian_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int residual_jacobian_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int residual_jacobian_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real residual_jacobian_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* residual_jacobian_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* residual_jacobian_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "F";
+    case 1: return "J";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* residual_jacobian_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s0;
+    case 3: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* residual_jacobian_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int residual_jacobian_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int residual_jacobian_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* update:(z[3],g[9],p[3],h)->(g1[9],p1[3]) */
+static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30;
@@ -640,7 +872,7 @@ static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int update(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f2(arg, res, iw, w, mem);
+  return casadi_f3(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int update_checkout(void) {
@@ -719,7 +951,7 @@ CASADI_SYMBOL_EXPORT int update_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* guess:(xi[3],g[9],p[3],h)->(z0[3]) */
-static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0;
   a0=arg[0]? arg[0][0] : 0;
   if (res[0]!=0) res[0][0]=a0;
@@ -731,7 +963,7 @@ static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int guess(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f3(arg, res, iw, w, mem);
+  return casadi_f4(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int guess_checkout(void) {
@@ -808,7 +1040,7 @@ CASADI_SYMBOL_EXPORT int guess_work_bytes(casadi_int *sz_arg, casadi_int* sz_res
 }
 
 /* legendre:(g[9],xi[3])->(mu[3]) */
-static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=arg[1]? arg[1][0] : 0;
   a0=(2.*a0);
@@ -823,7 +1055,7 @@ static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int legendre(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f4(arg, res, iw, w, mem);
+  return casadi_f5(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int legendre_checkout(void) {
@@ -896,7 +1128,7 @@ CASADI_SYMBOL_EXPORT int legendre_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 }
 
 /* hessian:(g[9],xi[3])->(H[9]) */
-static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=2.;
   if (res[0]!=0) res[0][0]=a0;
@@ -915,7 +1147,7 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int hessian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f5(arg, res, iw, w, mem);
+  return casadi_f6(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int hessian_checkout(void) {
@@ -988,7 +1220,7 @@ CASADI_SYMBOL_EXPORT int hessian_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
 }
 
 /* energy:(g[9],xi[3])->(E) */
-static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4;
   a0=arg[1]? arg[1][0] : 0;
   a1=(2.*a0);
@@ -1015,7 +1247,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int energy_checkout(void) {
@@ -1088,7 +1320,7 @@ CASADI_SYMBOL_EXPORT int energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* momentum:(g[9],p[3])->(m[3]) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=arg[0]? arg[0][8] : 0;
@@ -1152,7 +1384,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int momentum(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int momentum_checkout(void) {
@@ -1225,7 +1457,7 @@ CASADI_SYMBOL_EXPORT int momentum_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 }
 
 /* defect:(g[9])->(e) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12;
   a00=arg[0]? arg[0][0] : 0;
@@ -1325,7 +1557,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int defect(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int defect_checkout(void) {
@@ -1396,7 +1628,7 @@ CASADI_SYMBOL_EXPORT int defect_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* margin:(z[3],h)->(m) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4;
   a0=1.;
   a1=4.;
@@ -1422,7 +1654,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int margin(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int margin_checkout(void) {
@@ -1536,7 +1768,7 @@ typedef struct hpgen_options {
     double tol;                  /* converged when |dz| <= tol (1 + |z|), inf-norms */
     long long maxit;             /* Newton iterations per step, >= 1 */
     long long simplified;        /* 1: keep the Jacobian's LU across iterations and steps */
-    long long predictor;         /* 1: start step k+1 from 2 z_k - z_{k-1} (else from z_k) */
+    long long predictor;         /* 1: start step k+1 from the extrapolated last solutions (else z_k) */
 } hpgen_options;
 
 /* A run in progress: the state, the Newton start and the Newton memory. Advancing a run by
@@ -1544,15 +1776,16 @@ typedef struct hpgen_options {
 typedef struct hpgen_run {
     double g[HPGEN_NN], p[HPGEN_D];  /* (g_k, p_k) */
     double z[HPGEN_NZ];              /* solution of the last step (or the initial guess) */
-    double zprev[HPGEN_NZ];          /* solution of the step before (predictor) */
-    double lu[HPGEN_NZ * HPGEN_NZ];  /* LU factors of the last Jacobian (simplified Newton) */
+    double zprev[HPGEN_NZ];          /* solutions of the two steps before (predictor) */
+    double zprev2[HPGEN_NZ];
+    double lu[HPGEN_NZ * HPGEN_NZ];  /* J^{-1} of the last Jacobian (simplified Newton) */
     int piv[HPGEN_NZ];
     long long k;                     /* steps done */
-    long long have_prev;             /* zprev is valid */
-    long long lu_valid;              /* lu/piv hold a factorization */
+    long long have_prev;             /* how many of zprev, zprev2 are valid (0, 1, 2) */
+    long long lu_valid;              /* lu holds J^{-1} */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "a5872ac0585ebc6e4f1146328be1ad7e5c774c60d006c38f4d316270dd49c898"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "7b0570ba1ca97d47792c8ffe445fd0cd61f8baa2894df9b3e5994b2fde9fbebb"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -1599,6 +1832,28 @@ HPGEN_EXPORT int hpgen_kernel_jacobian(const double* in0, const double* in1, con
     arg[3] = in3;
     res[0] = out0;
     flag = jacobian(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+/* residual_jacobian(z[3], g[9], p[3], h[1]) -> (F[3], J[9]) */
+#define HPGEN_RESIDUAL_JACOBIAN_SZ_ARG 4
+#define HPGEN_RESIDUAL_JACOBIAN_SZ_RES 2
+#define HPGEN_RESIDUAL_JACOBIAN_SZ_IW 0
+#define HPGEN_RESIDUAL_JACOBIAN_SZ_W 24
+HPGEN_EXPORT int hpgen_kernel_residual_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1) {
+    const casadi_real* arg[HPGEN_RESIDUAL_JACOBIAN_SZ_ARG + 1];
+    casadi_real* res[HPGEN_RESIDUAL_JACOBIAN_SZ_RES + 1];
+    casadi_int iw[HPGEN_RESIDUAL_JACOBIAN_SZ_IW + 1];
+    casadi_real w[HPGEN_RESIDUAL_JACOBIAN_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    res[1] = out1;
+    flag = residual_jacobian(arg, res, iw, w, 0);
     (void)i;
     return flag;
 }
@@ -1779,14 +2034,77 @@ static int hpgen_all_finite(const double* x, int n) {
     return 1;
 }
 
+/* The Newton matrix is kept as J^{-1} (explicit, column-major in A; piv is workspace): a
+   simplified-Newton iteration then costs one matrix-vector product, NZ^2 independent
+   multiply-adds, instead of two triangular solves whose divisions and recurrences form a
+   long dependency chain. Newton's fixed point depends on F only; the accuracy of J^{-1}
+   only sets the contraction rate. */
+
+/* b <- A b, A = J^{-1} from hpgen_lu_factor_solve */
+static void hpgen_lu_apply(const double* A, const int* piv, double* b) {
+    double x[HPGEN_NZ];
+    int i, j;
+    (void)piv;
+    for (i = 0; i < HPGEN_NZ; ++i) x[i] = A[i] * b[0];
+    for (j = 1; j < HPGEN_NZ; ++j)
+        for (i = 0; i < HPGEN_NZ; ++i) x[i] += A[i + j * HPGEN_NZ] * b[j];
+    for (i = 0; i < HPGEN_NZ; ++i) b[i] = x[i];
+}
+
+#if HPGEN_NZ <= 3
+/* NZ <= 3: J^{-1} by cofactors (adjugate / det); Cramer's rule is accurate to a few ulps
+   times cond(J) here. A <- J^{-1} and b <- J^{-1} b (the adjugate applied to b alongside
+   the division). Returns 1 if det J is zero or not finite (then so is some entry of J:
+   every entry enters det). */
+static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
+#if HPGEN_NZ == 1
+    double r;
+    if (!(A[0] != 0.0) || !isfinite(A[0])) return 1;
+    r = 1.0 / A[0];
+    A[0] = r;
+    b[0] *= r;
+#elif HPGEN_NZ == 2
+    const double a = A[0], c = A[1], bb = A[2], d = A[3], det = a * d - bb * c;
+    const double x0 = d * b[0] - bb * b[1], x1 = a * b[1] - c * b[0];
+    double r;
+    if (!(det != 0.0) || !isfinite(det)) return 1;
+    r = 1.0 / det;
+    A[0] = d * r; A[2] = -bb * r; A[1] = -c * r; A[3] = a * r;
+    b[0] = x0 * r; b[1] = x1 * r;
+#else
+    /* J[i][j] = A[i + 3 j]; (J^{-1})_ij = C_ji / det, C the cofactors */
+    const double j00 = A[0], j10 = A[1], j20 = A[2], j01 = A[3], j11 = A[4], j21 = A[5],
+                 j02 = A[6], j12 = A[7], j22 = A[8];
+    const double c00 = j11 * j22 - j12 * j21, c01 = j12 * j20 - j10 * j22,
+                 c02 = j10 * j21 - j11 * j20, c10 = j02 * j21 - j01 * j22,
+                 c11 = j00 * j22 - j02 * j20, c12 = j01 * j20 - j00 * j21,
+                 c20 = j01 * j12 - j02 * j11, c21 = j02 * j10 - j00 * j12,
+                 c22 = j00 * j11 - j01 * j10;
+    const double det = j00 * c00 + j01 * c01 + j02 * c02;
+    const double x0 = c00 * b[0] + c10 * b[1] + c20 * b[2],
+                 x1 = c01 * b[0] + c11 * b[1] + c21 * b[2],
+                 x2 = c02 * b[0] + c12 * b[1] + c22 * b[2];
+    double r;
+    if (!(det != 0.0) || !isfinite(det)) return 1;
+    r = 1.0 / det;
+    b[0] = x0 * r; b[1] = x1 * r; b[2] = x2 * r;
+    A[0] = c00 * r; A[1] = c01 * r; A[2] = c02 * r;
+    A[3] = c10 * r; A[4] = c11 * r; A[5] = c12 * r;
+    A[6] = c20 * r; A[7] = c21 * r; A[8] = c22 * r;
+#endif
+    (void)piv; (void)keep;
+    return 0;
+}
+#else
 /* LU with partial pivoting in place (pivot: first row of largest |a_ik|, as LAPACK), row
-   interchanges in piv. A is NZ x NZ column-major. Returns 1 if a pivot is exactly zero. */
+   interchanges in piv; U's diagonal is stored inverted (1 / u_kk). A is NZ x NZ
+   column-major. Returns 1 if a pivot is exactly zero. */
 static int hpgen_lu_factor(double* A, int* piv) {
     const int n = HPGEN_NZ;
     int i, j, k;
     for (k = 0; k < n; ++k) {
         int pk = k;
-        double amax = fabs(A[k + k * n]);
+        double amax = fabs(A[k + k * n]), r;
         for (i = k + 1; i < n; ++i) {
             double a = fabs(A[i + k * n]);
             if (a > amax) { amax = a; pk = i; }
@@ -1798,7 +2116,9 @@ static int hpgen_lu_factor(double* A, int* piv) {
                 double t = A[k + j * n]; A[k + j * n] = A[pk + j * n]; A[pk + j * n] = t;
             }
         }
-        for (i = k + 1; i < n; ++i) A[i + k * n] /= A[k + k * n];
+        r = 1.0 / A[k + k * n];
+        A[k + k * n] = r;
+        for (i = k + 1; i < n; ++i) A[i + k * n] *= r;
         for (j = k + 1; j < n; ++j) {
             double a = A[k + j * n];
             if (a != 0.0) for (i = k + 1; i < n; ++i) A[i + j * n] -= A[i + k * n] * a;
@@ -1807,25 +2127,67 @@ static int hpgen_lu_factor(double* A, int* piv) {
     return 0;
 }
 
-/* b <- A^{-1} b with the factors of hpgen_lu_factor: all row interchanges first (the
+/* b <- J^{-1} b with the factors of hpgen_lu_factor: all row interchanges first (the
    factorization swapped whole rows, L included), then L y = P b and U x = y. */
-static void hpgen_lu_apply(const double* A, const int* piv, double* b) {
+static void hpgen_lu_solve(const double* LU, const int* piv, double* b) {
     const int n = HPGEN_NZ;
     int i, j, k;
     for (k = 0; k < n; ++k)
         if (piv[k] != k) { double t = b[k]; b[k] = b[piv[k]]; b[piv[k]] = t; }
     for (k = 0; k < n; ++k)
-        for (i = k + 1; i < n; ++i) b[i] -= A[i + k * n] * b[k];
+        for (i = k + 1; i < n; ++i) b[i] -= LU[i + k * n] * b[k];
     for (k = n - 1; k >= 0; --k) {
         double s = b[k];
-        for (j = k + 1; j < n; ++j) s -= A[k + j * n] * b[j];
-        b[k] = s / A[k + k * n];
+        for (j = k + 1; j < n; ++j) s -= LU[k + j * n] * b[j];
+        b[k] = s * LU[k + k * n];
     }
 }
 
+/* X <- J^{-1} from the factors: the solve above for all unit vectors at once, ordered so
+   that the columns' recurrences run side by side. X is NZ x NZ column-major. */
+static void hpgen_lu_inverse(const double* LU, const int* piv, double* X) {
+    const int n = HPGEN_NZ;
+    int i, j, k;
+    for (i = 0; i < n * n; ++i) X[i] = 0.0;
+    for (j = 0; j < n; ++j) X[j + j * n] = 1.0;
+    for (k = 0; k < n; ++k)
+        if (piv[k] != k)
+            for (j = 0; j < n; ++j) {
+                double t = X[k + j * n]; X[k + j * n] = X[piv[k] + j * n]; X[piv[k] + j * n] = t;
+            }
+    for (k = 0; k < n; ++k)
+        for (j = 0; j < n; ++j) {
+            const double xk = X[k + j * n];
+            if (xk != 0.0) for (i = k + 1; i < n; ++i) X[i + j * n] -= LU[i + k * n] * xk;
+        }
+    for (k = n - 1; k >= 0; --k)
+        for (j = 0; j < n; ++j) {
+            const double xk = X[k + j * n] * LU[k + k * n];
+            X[k + j * n] = xk;
+            for (i = 0; i < k; ++i) X[i + j * n] -= LU[i + k * n] * xk;
+        }
+}
+
+/* b <- J^{-1} b by the LU of J (A holds J on entry); with keep, A <- J^{-1} (for simplified
+   Newton), else A is left as the LU factors. Returns 1 if J has a non-finite entry or is
+   singular. */
+static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
+    double LU[HPGEN_NZ * HPGEN_NZ];
+    if (!hpgen_all_finite(A, HPGEN_NZ * HPGEN_NZ)) return 1;
+    memcpy(LU, A, sizeof LU);
+    if (hpgen_lu_factor(LU, piv)) return 1;
+    hpgen_lu_solve(LU, piv, b);
+    if (keep) {
+        hpgen_lu_inverse(LU, piv, A);
+        return !hpgen_all_finite(A, HPGEN_NZ * HPGEN_NZ);
+    }
+    return 0;
+}
+#endif
+
 /* Newton on residual(z, g, p, h) = 0 from z (in/out): z <- z - J^{-1} F.
-   Full Newton evaluates J at every iterate. Simplified Newton (o->simplified) keeps the LU of
-   the last J in (lu, piv, *lu_valid), across steps too, and refreshes it when the contraction
+   Full Newton evaluates J at every iterate. Simplified Newton (o->simplified) keeps the last J^{-1}
+   in (lu, *lu_valid), across steps too, and refreshes it when the contraction
    rate theta = |dz_k| / |dz_{k-1}| exceeds HPGEN_THETA_MAX; if J was already evaluated in
    this step the rest of the step is full Newton (the fallback).
    Converged when |dz| <= tol (1 + |z|), or when |dz| stopped decreasing while
@@ -1843,19 +2205,22 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
     for (it = 1; it <= o->maxit; ++it) {
         double dn, zn;
         *iters = it;
-        if (hpgen_kernel_residual(z, g, p, hv, F)) return HPGEN_NONFINITE;
-        *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
-        if (!isfinite(*rnorm)) return HPGEN_NONFINITE;
         if (full || !*lu_valid) {
+            /* F and a fresh J in one evaluation (their common subexpressions once) */
             *lu_valid = 0;
             ++*jacs;
-            if (hpgen_kernel_jacobian(z, g, p, hv, lu)) return HPGEN_NONFINITE;
-            if (!hpgen_all_finite(lu, HPGEN_NZ * HPGEN_NZ) || hpgen_lu_factor(lu, piv))
+            if (hpgen_kernel_residual_jacobian(z, g, p, hv, F, lu)) return HPGEN_NONFINITE;
+            *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
+            if (!isfinite(*rnorm) || hpgen_lu_factor_solve(lu, piv, F, o->simplified))
                 return HPGEN_NONFINITE;
-            *lu_valid = 1;
+            *lu_valid = o->simplified ? 1 : 0;   /* lu holds J^{-1} only when it is kept */
             fresh = 1;
+        } else {
+            if (hpgen_kernel_residual(z, g, p, hv, F)) return HPGEN_NONFINITE;
+            *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
+            if (!isfinite(*rnorm)) return HPGEN_NONFINITE;
+            hpgen_lu_apply(lu, piv, F);
         }
-        hpgen_lu_apply(lu, piv, F);
         for (i = 0; i < HPGEN_NZ; ++i) z[i] -= F[i];
         dn = hpgen_norm_inf(F, HPGEN_NZ);
         zn = hpgen_norm_inf(z, HPGEN_NZ);
@@ -1883,6 +2248,11 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
 
 /* One step of a run: margin(z, h) > 0 at the start (check_start), Newton from z (in/out),
    margin(z, h) > 0 at the solution, then update -> (g1, p1). */
+/* small kernels: inline them and the Newton loop into one body (GCC/Clang), so the compiler
+   schedules the kernels' arithmetic together with the solve */
+#if defined(__GNUC__)
+__attribute__((flatten))
+#endif
 static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
                            const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
                            double* g1, double* p1, long long* iters, long long* jacs,
@@ -1958,7 +2328,7 @@ HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, d
 }
 
 /* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
-   solution, or from the linear predictor 2 z_k - z_{k-1}). The state after global step k is
+   solution, or from the extrapolation of the last three). The state after global step k is
    recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
    sizes them for the records falling in this call). Stops at the first failed step (the run
    keeps the last good state). Returns the steps done in this call. */
@@ -1976,8 +2346,15 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
     full = *o;
     full.simplified = 0;
     for (n = 0; n < steps; ++n) {
-        int code, predicted = o->predictor && r->have_prev;
-        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = predicted ? 2.0 * r->z[i] - r->zprev[i] : r->z[i];
+        int code;
+        /* start: the polynomial through the last solutions, extrapolated one step (quadratic
+           3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before) */
+        if (o->predictor && r->have_prev >= 2)
+            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 3.0 * (r->z[i] - r->zprev[i]) + r->zprev2[i];
+        else if (o->predictor && r->have_prev == 1)
+            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 2.0 * r->z[i] - r->zprev[i];
+        else
+            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
         /* the first step starts from the crude guess kernel: full Newton */
         code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? &full : o, r->lu, r->piv,
                                &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0);
@@ -1985,9 +2362,10 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
         st->total_iterations += it;
         st->residual = res;
         if (code != HPGEN_OK) { st->code = code; st->step = r->k; return n; }
+        memcpy(r->zprev2, r->zprev, sizeof r->z);
         memcpy(r->zprev, r->z, sizeof r->z);
         memcpy(r->z, zs, sizeof r->z);
-        r->have_prev = 1;
+        if (r->have_prev < 2) r->have_prev += 1;
         memcpy(r->g, g1, sizeof g1);
         memcpy(r->p, p1, sizeof p1);
         r->k += 1;

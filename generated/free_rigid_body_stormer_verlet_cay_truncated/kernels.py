@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: a5872ac0585ebc6e4f1146328be1ad7e5c774c60d006c38f4d316270dd49c898
+# content hash: 7b0570ba1ca97d47792c8ffe445fd0cd61f8baa2894df9b3e5994b2fde9fbebb
 """Python backend of the hpgen module free_rigid_body_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -12,6 +12,11 @@ Calling convention: every kernel takes flat float sequences (matrices column-maj
 1-sequence) and returns a list of numpy float64 arrays, one per output, dense column-major.
 Math that would raise in Python (division by zero, log(0), overflow, ...) returns the C99
 IEEE result (inf/nan) instead, so non-finite values surface as they do in C.
+
+RAW[name] is the same kernel without the conversions, for the runtime's Newton loop: it
+takes lists or tuples of exactly the declared sizes holding Python floats (not checked) and
+returns a list of lists of Python floats, one per output; the values are those of the
+public kernel (the public kernel is RAW[name] plus input checks and numpy outputs).
 Imports only math and numpy.
 """
 import math
@@ -152,6 +157,29 @@ def _printme(x, y):
     return x
 
 
+def _raw_residual(z, g, p, h):
+    """residual on lists of Python floats -> [F[3]] as lists (see RAW)"""
+    w2, w0, w1 = z
+    w3, w4, w5 = p
+    w6, = h
+    r0 = [0.0] * 3
+    w7 = w6 * w0
+    w8 = w7 * 0.5
+    w9 = w6 * w1
+    w6 = w6 * w2
+    w10 = (w9 * w6) * 0.25
+    w1 = 0.6666666666666666 * w1
+    w11 = (w7 * w6) * 0.25
+    w12 = w9 * 0.5
+    w2 = 2.0 * w2
+    r0[0] = w3 - ((((w8 + w10) * w1) + ((w11 - w12) * w0)) + ((1.0 + ((w6 * w6) * 0.25)) * w2))
+    w3 = (w9 * w7) * 0.25
+    w6 = w6 * 0.5
+    r0[1] = w4 - ((((w3 - w6) * w1) + ((1.0 + ((w7 * w7) * 0.25)) * w0)) + ((w12 + w11) * w2))
+    r0[2] = w5 - ((((1.0 + ((w9 * w9) * 0.25)) * w1) + ((w6 + w3) * w0)) + ((w10 - w8) * w2))
+    return [r0]
+
+
 def residual(z, g, p, h):
     """residual(z[3], g[9], p[3], h[1]) -> [F[3]]"""
     if _type(z) is _NDARRAY and z.dtype is _F64 and z.shape == (3,):
@@ -170,22 +198,46 @@ def residual(z, g, p, h):
         h = h.tolist()
     else:
         h = _vec(h, 1, "residual: h")
-    w2, w0, w1 = z
-    w3, w4, w5 = p
-    w6, = h
-    r0 = [0.0] * 3
-    w7 = w6 * w0
-    w8 = w7 * 0.5
-    w9 = w6 * w1
-    w6 = w6 * w2
-    w1 = 0.6666666666666666 * w1
-    w10 = w9 * 0.5
-    w2 = 2.0 * w2
-    r0[0] = w3 - ((((w8 + ((w9 * w6) * 0.25)) * w1) + ((((w7 * w6) * 0.25) - w10) * w0)) + ((1.0 + ((w6 * w6) * 0.25)) * w2))
-    w3 = w6 * 0.5
-    r0[1] = w4 - ((((((w9 * w7) * 0.25) - w3) * w1) + ((1.0 + ((w7 * w7) * 0.25)) * w0)) + ((w10 + ((w6 * w7) * 0.25)) * w2))
-    r0[2] = w5 - ((((1.0 + ((w9 * w9) * 0.25)) * w1) + ((w3 + ((w7 * w9) * 0.25)) * w0)) + ((((w6 * w9) * 0.25) - w8) * w2))
-    return [_fromiter(r0, _F64, 3)]
+    _r = _raw_residual(z, g, p, h)
+    return [_fromiter(_r[0], _F64, 3)]
+
+
+def _raw_jacobian(z, g, p, h):
+    """jacobian on lists of Python floats -> [J[9]] as lists (see RAW)"""
+    w2, w1, w0 = z
+    w3, = h
+    r0 = [0.0] * 9
+    w4 = 0.6666666666666666 * w0
+    w0 = w3 * w0
+    w5 = 0.25 * (w0 * w3)
+    w6 = w4 * w5
+    w7 = w3 * w1
+    w8 = 0.25 * (w7 * w3)
+    w9 = w1 * w8
+    w10 = 2.0 * w2
+    w2 = w3 * w2
+    r0[0] = -((w6 + w9) + ((w10 * (0.25 * ((2.0 * w2) * w3))) + (2.0 * (1.0 + ((w2 * w2) * 0.25)))))
+    w11 = w0 * 0.5
+    w12 = (w2 * w7) * 0.25
+    w13 = 0.5 * w3
+    w14 = w4 * w13
+    r0[1] = -(((w10 * w8) + (2.0 * (w11 + w12))) - w14)
+    w15 = w1 * w13
+    w16 = (w2 * w0) * 0.25
+    w17 = w7 * 0.5
+    r0[2] = -(w15 + ((w10 * w5) + (2.0 * (w16 - w17))))
+    w18 = 0.25 * (w2 * w3)
+    r0[3] = -(w14 + ((w1 * w18) + (w12 - w11)))
+    w11 = w10 * w18
+    r0[4] = -((w6 + ((w1 * (0.25 * ((2.0 * w7) * w3))) + (1.0 + ((w7 * w7) * 0.25)))) + w11)
+    w2 = w2 * 0.5
+    w6 = (w7 * w0) * 0.25
+    w7 = w10 * w13
+    r0[5] = -(((w1 * w5) + (w2 + w6)) - w7)
+    r0[6] = -(((w4 * w18) + (0.6666666666666666 * (w17 + w16))) - w15)
+    r0[7] = -(((w4 * w8) + (0.6666666666666666 * (w6 - w2))) + w7)
+    r0[8] = -((((w4 * (0.25 * ((2.0 * w0) * w3))) + (0.6666666666666666 * (1.0 + ((w0 * w0) * 0.25)))) + w9) + w11)
+    return [r0]
 
 
 def jacobian(z, g, p, h):
@@ -206,57 +258,86 @@ def jacobian(z, g, p, h):
         h = h.tolist()
     else:
         h = _vec(h, 1, "jacobian: h")
-    w2, w1, w0 = z
-    w3, = h
-    r0 = [0.0] * 9
-    w4 = 0.6666666666666666 * w0
-    w0 = w3 * w0
-    w5 = 0.25 * (w0 * w3)
-    w6 = w4 * w5
-    w7 = w3 * w1
-    w8 = 0.25 * (w7 * w3)
-    w9 = w1 * w8
-    w10 = 2.0 * w2
-    w2 = w3 * w2
-    r0[0] = -((w6 + w9) + ((w10 * (0.25 * ((2.0 * w2) * w3))) + (2.0 * (1.0 + ((w2 * w2) * 0.25)))))
-    w11 = w0 * 0.5
-    w12 = 0.5 * w3
-    w13 = w4 * w12
-    r0[1] = -(((w10 * w8) + (2.0 * (w11 + ((w2 * w7) * 0.25)))) - w13)
-    w14 = w1 * w12
-    w15 = w7 * 0.5
-    r0[2] = -(w14 + ((w10 * w5) + (2.0 * (((w2 * w0) * 0.25) - w15))))
-    w16 = 0.25 * (w2 * w3)
-    r0[3] = -(w13 + ((w1 * w16) + (((w7 * w2) * 0.25) - w11)))
-    w11 = w10 * w16
-    r0[4] = -((w6 + ((w1 * (0.25 * ((2.0 * w7) * w3))) + (1.0 + ((w7 * w7) * 0.25)))) + w11)
-    w6 = w2 * 0.5
-    w10 = w10 * w12
-    r0[5] = -(((w1 * w5) + (w6 + ((w7 * w0) * 0.25))) - w10)
-    r0[6] = -(((w4 * w16) + (0.6666666666666666 * (w15 + ((w0 * w2) * 0.25)))) - w14)
-    r0[7] = -(((w4 * w8) + (0.6666666666666666 * (((w0 * w7) * 0.25) - w6))) + w10)
-    r0[8] = -((((w4 * (0.25 * ((2.0 * w0) * w3))) + (0.6666666666666666 * (1.0 + ((w0 * w0) * 0.25)))) + w9) + w11)
-    return [_fromiter(r0, _F64, 9)]
+    _r = _raw_jacobian(z, g, p, h)
+    return [_fromiter(_r[0], _F64, 9)]
 
 
-def update(z, g, p, h):
-    """update(z[3], g[9], p[3], h[1]) -> [g1[9], p1[3]]"""
+def _raw_residual_jacobian(z, g, p, h):
+    """residual_jacobian on lists of Python floats -> [F[3], J[9]] as lists (see RAW)"""
+    w2, w0, w1 = z
+    w3, w4, w5 = p
+    w6, = h
+    r0 = [0.0] * 3
+    r1 = [0.0] * 9
+    w7 = w6 * w0
+    w8 = w7 * 0.5
+    w9 = w6 * w1
+    w10 = w6 * w2
+    w11 = (w9 * w10) * 0.25
+    w12 = w8 + w11
+    w1 = 0.6666666666666666 * w1
+    w13 = (w7 * w10) * 0.25
+    w14 = w9 * 0.5
+    w15 = w13 - w14
+    w16 = 1.0 + ((w10 * w10) * 0.25)
+    w2 = 2.0 * w2
+    r0[0] = w3 - (((w12 * w1) + (w15 * w0)) + (w16 * w2))
+    w3 = (w9 * w7) * 0.25
+    w17 = w10 * 0.5
+    w18 = w3 - w17
+    w19 = 1.0 + ((w7 * w7) * 0.25)
+    w13 = w14 + w13
+    r0[1] = w4 - (((w18 * w1) + (w19 * w0)) + (w13 * w2))
+    w4 = 1.0 + ((w9 * w9) * 0.25)
+    w3 = w17 + w3
+    w8 = w11 - w8
+    r0[2] = w5 - (((w4 * w1) + (w3 * w0)) + (w8 * w2))
+    w5 = 0.25 * (w9 * w6)
+    w11 = w1 * w5
+    w14 = 0.25 * (w7 * w6)
+    w17 = w0 * w14
+    r1[0] = -((w11 + w17) + ((w2 * (0.25 * ((2.0 * w10) * w6))) + (2.0 * w16)))
+    w16 = 0.5 * w6
+    w20 = w1 * w16
+    r1[1] = -(((w2 * w14) + (2.0 * w13)) - w20)
+    w13 = w0 * w16
+    r1[2] = -(w13 + ((w2 * w5) + (2.0 * w8)))
+    w8 = 0.25 * (w10 * w6)
+    r1[3] = -(w20 + ((w0 * w8) + w15))
+    w10 = w2 * w8
+    r1[4] = -((w11 + ((w0 * (0.25 * ((2.0 * w7) * w6))) + w19)) + w10)
+    w2 = w2 * w16
+    r1[5] = -(((w0 * w5) + w3) - w2)
+    r1[6] = -(((w1 * w8) + (0.6666666666666666 * w12)) - w13)
+    r1[7] = -(((w1 * w14) + (0.6666666666666666 * w18)) + w2)
+    r1[8] = -((((w1 * (0.25 * ((2.0 * w9) * w6))) + (0.6666666666666666 * w4)) + w17) + w10)
+    return [r0, r1]
+
+
+def residual_jacobian(z, g, p, h):
+    """residual_jacobian(z[3], g[9], p[3], h[1]) -> [F[3], J[9]]"""
     if _type(z) is _NDARRAY and z.dtype is _F64 and z.shape == (3,):
         z = z.tolist()
     else:
-        z = _vec(z, 3, "update: z")
+        z = _vec(z, 3, "residual_jacobian: z")
     if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
         g = g.tolist()
     else:
-        g = _vec(g, 9, "update: g")
+        g = _vec(g, 9, "residual_jacobian: g")
     if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (3,):
         p = p.tolist()
     else:
-        p = _vec(p, 3, "update: p")
+        p = _vec(p, 3, "residual_jacobian: p")
     if _type(h) is _NDARRAY and h.dtype is _F64 and h.shape == (1,):
         h = h.tolist()
     else:
-        h = _vec(h, 1, "update: h")
+        h = _vec(h, 1, "residual_jacobian: h")
+    _r = _raw_residual_jacobian(z, g, p, h)
+    return [_fromiter(_r[0], _F64, 3), _fromiter(_r[1], _F64, 9)]
+
+
+def _raw_update(z, g, p, h):
+    """update on lists of Python floats -> [g1[9], p1[3]] as lists (see RAW)"""
     try:
         w0, w1, w2 = z
         w3, w6, w9, w4, w7, w10, w5, w8, w11 = g
@@ -267,41 +348,45 @@ def update(z, g, p, h):
         w14 = w13 * w13
         w15 = w12 * w1
         w16 = w15 * w15
+        w17 = w14 + w16
         w12 = w12 * w2
-        w17 = w12 * w12
-        w18 = 4.0 / (4.0 + ((w14 + w16) + w17))
-        w19 = 1.0 - (w18 * ((w17 + w16) * 0.5))
-        w20 = w13 * w15
-        w21 = w18 * (w12 + (w20 * 0.5))
-        w22 = w13 * w12
-        w23 = w18 * ((w22 * 0.5) - w15)
-        r0[0] = ((w3 * w19) + (w4 * w21)) + (w5 * w23)
-        r0[1] = ((w6 * w19) + (w7 * w21)) + (w8 * w23)
-        r0[2] = ((w9 * w19) + (w10 * w21)) + (w11 * w23)
-        w19 = w15 * w13
-        w21 = w18 * ((w19 * 0.5) - w12)
-        w23 = 1.0 - (w18 * ((w17 + w14) * 0.5))
-        w24 = w15 * w12
-        w25 = w18 * (w13 + (w24 * 0.5))
-        r0[3] = ((w3 * w21) + (w4 * w23)) + (w5 * w25)
-        r0[4] = ((w6 * w21) + (w7 * w23)) + (w8 * w25)
-        r0[5] = ((w9 * w21) + (w10 * w23)) + (w11 * w25)
-        w21 = w12 * w13
-        w23 = w18 * (w15 + (w21 * 0.5))
-        w25 = w12 * w15
-        w26 = w18 * ((w25 * 0.5) - w13)
-        w18 = 1.0 - (w18 * ((w16 + w14) * 0.5))
-        r0[6] = ((w3 * w23) + (w4 * w26)) + (w5 * w18)
-        r0[7] = ((w6 * w23) + (w7 * w26)) + (w8 * w18)
-        r0[8] = ((w9 * w23) + (w10 * w26)) + (w11 * w18)
-        w3 = w15 * 0.5
+        w18 = w12 * w12
+        w19 = 4.0 / (4.0 + (w17 + w18))
+        w20 = 1.0 - (w19 * ((w18 + w16) * 0.5))
+        w21 = w13 * w15
+        w22 = w21 * 0.5
+        w23 = w19 * (w12 + w22)
+        w24 = w13 * w12
+        w25 = w24 * 0.5
+        w26 = w19 * (w25 - w15)
+        r0[0] = ((w3 * w20) + (w4 * w23)) + (w5 * w26)
+        r0[1] = ((w6 * w20) + (w7 * w23)) + (w8 * w26)
+        r0[2] = ((w9 * w20) + (w10 * w23)) + (w11 * w26)
+        w20 = w19 * (w22 - w12)
+        w22 = 1.0 - (w19 * ((w18 + w14) * 0.5))
+        w23 = w15 * w12
+        w26 = w23 * 0.5
+        w27 = w19 * (w13 + w26)
+        r0[3] = ((w3 * w20) + (w4 * w22)) + (w5 * w27)
+        r0[4] = ((w6 * w20) + (w7 * w22)) + (w8 * w27)
+        r0[5] = ((w9 * w20) + (w10 * w22)) + (w11 * w27)
+        w20 = w19 * (w15 + w25)
+        w22 = w19 * (w26 - w13)
+        w17 = 1.0 - (w19 * (w17 * 0.5))
+        r0[6] = ((w3 * w20) + (w4 * w22)) + (w5 * w17)
+        r0[7] = ((w6 * w20) + (w7 * w22)) + (w8 * w17)
+        r0[8] = ((w9 * w20) + (w10 * w22)) + (w11 * w17)
+        w3 = w24 * 0.25
+        w4 = w15 * 0.5
         w2 = 0.6666666666666666 * w2
-        w4 = w12 * 0.5
+        w5 = w12 * 0.5
+        w6 = w21 * 0.25
         w0 = 2.0 * w0
-        r1[0] = ((((w21 * 0.25) - w3) * w2) + ((w4 + (w19 * 0.25)) * w1)) + ((1.0 + (w14 * 0.25)) * w0)
-        w5 = w13 * 0.5
-        r1[1] = (((w5 + (w25 * 0.25)) * w2) + ((1.0 + (w16 * 0.25)) * w1)) + (((w20 * 0.25) - w4) * w0)
-        r1[2] = (((1.0 + (w17 * 0.25)) * w2) + (((w24 * 0.25) - w5) * w1)) + ((w3 + (w22 * 0.25)) * w0)
+        r1[0] = (((w3 - w4) * w2) + ((w5 + w6) * w1)) + ((1.0 + (w14 * 0.25)) * w0)
+        w7 = w13 * 0.5
+        w8 = w23 * 0.25
+        r1[1] = (((w7 + w8) * w2) + ((1.0 + (w16 * 0.25)) * w1)) + ((w6 - w5) * w0)
+        r1[2] = (((1.0 + (w18 * 0.25)) * w2) + ((w8 - w7) * w1)) + ((w4 + w3) * w0)
     except (ArithmeticError, ValueError):
         # a zero divisor or a math domain/range error: recompute with C semantics
         r0 = [0.0] * 9
@@ -464,7 +549,39 @@ def update(z, g, p, h):
         w8 = w8 * w4
         w1 = w1 + w8
         r1[2] = w1
-    return [_fromiter(r0, _F64, 9), _fromiter(r1, _F64, 3)]
+    return [r0, r1]
+
+
+def update(z, g, p, h):
+    """update(z[3], g[9], p[3], h[1]) -> [g1[9], p1[3]]"""
+    if _type(z) is _NDARRAY and z.dtype is _F64 and z.shape == (3,):
+        z = z.tolist()
+    else:
+        z = _vec(z, 3, "update: z")
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "update: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (3,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 3, "update: p")
+    if _type(h) is _NDARRAY and h.dtype is _F64 and h.shape == (1,):
+        h = h.tolist()
+    else:
+        h = _vec(h, 1, "update: h")
+    _r = _raw_update(z, g, p, h)
+    return [_fromiter(_r[0], _F64, 9), _fromiter(_r[1], _F64, 3)]
+
+
+def _raw_guess(xi, g, p, h):
+    """guess on lists of Python floats -> [z0[3]] as lists (see RAW)"""
+    w0, w1, w2 = xi
+    r0 = [0.0] * 3
+    r0[0] = w0
+    r0[1] = w1
+    r0[2] = w2
+    return [r0]
 
 
 def guess(xi, g, p, h):
@@ -485,12 +602,18 @@ def guess(xi, g, p, h):
         h = h.tolist()
     else:
         h = _vec(h, 1, "guess: h")
+    _r = _raw_guess(xi, g, p, h)
+    return [_fromiter(_r[0], _F64, 3)]
+
+
+def _raw_legendre(g, xi):
+    """legendre on lists of Python floats -> [mu[3]] as lists (see RAW)"""
     w0, w1, w2 = xi
     r0 = [0.0] * 3
-    r0[0] = w0
+    r0[0] = 2.0 * w0
     r0[1] = w1
-    r0[2] = w2
-    return [_fromiter(r0, _F64, 3)]
+    r0[2] = 0.6666666666666666 * w2
+    return [r0]
 
 
 def legendre(g, xi):
@@ -503,12 +626,23 @@ def legendre(g, xi):
         xi = xi.tolist()
     else:
         xi = _vec(xi, 3, "legendre: xi")
-    w0, w1, w2 = xi
-    r0 = [0.0] * 3
-    r0[0] = 2.0 * w0
-    r0[1] = w1
-    r0[2] = 0.6666666666666666 * w2
-    return [_fromiter(r0, _F64, 3)]
+    _r = _raw_legendre(g, xi)
+    return [_fromiter(_r[0], _F64, 3)]
+
+
+def _raw_hessian(g, xi):
+    """hessian on lists of Python floats -> [H[9]] as lists (see RAW)"""
+    r0 = [0.0] * 9
+    r0[0] = 2.0
+    r0[1] = 0.0
+    r0[2] = 0.0
+    r0[3] = 0.0
+    r0[4] = 1.0
+    r0[5] = 0.0
+    r0[6] = 0.0
+    r0[7] = 0.0
+    r0[8] = 0.6666666666666666
+    return [r0]
 
 
 def hessian(g, xi):
@@ -521,17 +655,17 @@ def hessian(g, xi):
         xi = xi.tolist()
     else:
         xi = _vec(xi, 3, "hessian: xi")
-    r0 = [0.0] * 9
-    r0[0] = 2.0
-    r0[1] = 0.0
-    r0[2] = 0.0
-    r0[3] = 0.0
-    r0[4] = 1.0
-    r0[5] = 0.0
-    r0[6] = 0.0
-    r0[7] = 0.0
-    r0[8] = 0.6666666666666666
-    return [_fromiter(r0, _F64, 9)]
+    _r = _raw_hessian(g, xi)
+    return [_fromiter(_r[0], _F64, 9)]
+
+
+def _raw_energy(g, xi):
+    """energy on lists of Python floats -> [E[1]] as lists (see RAW)"""
+    w0, w1, w2 = xi
+    r0 = [0.0] * 1
+    w1 = w1 * w1
+    r0[0] = ((((2.0 * w0) * w0) + w1) + ((0.6666666666666666 * w2) * w2)) - (((0.5 * w1) + (w0 * w0)) + (0.3333333333333333 * (w2 * w2)))
+    return [r0]
 
 
 def energy(g, xi):
@@ -544,11 +678,19 @@ def energy(g, xi):
         xi = xi.tolist()
     else:
         xi = _vec(xi, 3, "energy: xi")
-    w0, w1, w2 = xi
-    r0 = [0.0] * 1
-    w1 = w1 * w1
-    r0[0] = ((((2.0 * w0) * w0) + w1) + ((0.6666666666666666 * w2) * w2)) - (((0.5 * w1) + (w0 * w0)) + (0.3333333333333333 * (w2 * w2)))
-    return [_fromiter(r0, _F64, 1)]
+    _r = _raw_energy(g, xi)
+    return [_fromiter(_r[0], _F64, 1)]
+
+
+def _raw_momentum(g, p):
+    """momentum on lists of Python floats -> [m[3]] as lists (see RAW)"""
+    w8, w5, w4, w7, w1, w3, w6, w2, w0 = g
+    w9, w10, w11 = p
+    r0 = [0.0] * 3
+    r0[0] = ((((w0 * w1) - (w2 * w3)) * w9) + (((w4 * w2) - (w5 * w0)) * w10)) + (((w3 * w5) - (w1 * w4)) * w11)
+    r0[1] = ((((w6 * w3) - (w0 * w7)) * w9) + (((w8 * w0) - (w4 * w6)) * w10)) + (((w7 * w4) - (w3 * w8)) * w11)
+    r0[2] = ((((w2 * w7) - (w6 * w1)) * w9) + (((w5 * w6) - (w8 * w2)) * w10)) + (((w1 * w8) - (w7 * w5)) * w11)
+    return [r0]
 
 
 def momentum(g, p):
@@ -561,13 +703,19 @@ def momentum(g, p):
         p = p.tolist()
     else:
         p = _vec(p, 3, "momentum: p")
-    w8, w5, w4, w7, w1, w3, w6, w2, w0 = g
-    w9, w10, w11 = p
-    r0 = [0.0] * 3
-    r0[0] = ((((w0 * w1) - (w2 * w3)) * w9) + (((w4 * w2) - (w5 * w0)) * w10)) + (((w3 * w5) - (w1 * w4)) * w11)
-    r0[1] = ((((w6 * w3) - (w0 * w7)) * w9) + (((w8 * w0) - (w4 * w6)) * w10)) + (((w7 * w4) - (w3 * w8)) * w11)
-    r0[2] = ((((w2 * w7) - (w6 * w1)) * w9) + (((w5 * w6) - (w8 * w2)) * w10)) + (((w1 * w8) - (w7 * w5)) * w11)
-    return [_fromiter(r0, _F64, 3)]
+    _r = _raw_momentum(g, p)
+    return [_fromiter(_r[0], _F64, 3)]
+
+
+def _raw_defect(g):
+    """defect on lists of Python floats -> [e[1]] as lists (see RAW)"""
+    w0, w1, w2, w3, w4, w5, w6, w7, w8 = g
+    r0 = [0.0] * 1
+    w9 = _f_fabs((((w3 * w0) + (w4 * w1)) + (w5 * w2)))
+    w10 = _f_fabs((((w6 * w0) + (w7 * w1)) + (w8 * w2)))
+    w11 = _f_fabs((((w6 * w3) + (w7 * w4)) + (w8 * w5)))
+    r0[0] = _fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_f_fabs(((((w0 * w0) + (w1 * w1)) + (w2 * w2)) - 1.0))), w9)), w10)), w9)), (_f_fabs(((((w3 * w3) + (w4 * w4)) + (w5 * w5)) - 1.0))))), w11)), w10)), w11)), (_f_fabs(((((w6 * w6) + (w7 * w7)) + (w8 * w8)) - 1.0))))), (_f_fabs(((((w0 * ((w4 * w8) - (w7 * w5))) - (w3 * ((w1 * w8) - (w7 * w2)))) + (w6 * ((w1 * w5) - (w4 * w2)))) - 1.0))))
+    return [r0]
 
 
 def defect(g):
@@ -576,10 +724,21 @@ def defect(g):
         g = g.tolist()
     else:
         g = _vec(g, 9, "defect: g")
-    w0, w1, w2, w3, w4, w5, w6, w7, w8 = g
+    _r = _raw_defect(g)
+    return [_fromiter(_r[0], _F64, 1)]
+
+
+def _raw_margin(z, h):
+    """margin on lists of Python floats -> [m[1]] as lists (see RAW)"""
+    w0, w1, w2 = z
+    w3, = h
     r0 = [0.0] * 1
-    r0[0] = _fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_f_fabs(((((w0 * w0) + (w1 * w1)) + (w2 * w2)) - 1.0))), (_f_fabs((((w3 * w0) + (w4 * w1)) + (w5 * w2)))))), (_f_fabs((((w6 * w0) + (w7 * w1)) + (w8 * w2)))))), (_f_fabs((((w0 * w3) + (w1 * w4)) + (w2 * w5)))))), (_f_fabs(((((w3 * w3) + (w4 * w4)) + (w5 * w5)) - 1.0))))), (_f_fabs((((w6 * w3) + (w7 * w4)) + (w8 * w5)))))), (_f_fabs((((w0 * w6) + (w1 * w7)) + (w2 * w8)))))), (_f_fabs((((w3 * w6) + (w4 * w7)) + (w5 * w8)))))), (_f_fabs(((((w6 * w6) + (w7 * w7)) + (w8 * w8)) - 1.0))))), (_f_fabs(((((w0 * ((w4 * w8) - (w7 * w5))) - (w3 * ((w1 * w8) - (w7 * w2)))) + (w6 * ((w1 * w5) - (w4 * w2)))) - 1.0))))
-    return [_fromiter(r0, _F64, 1)]
+    w0 = w3 * w0
+    w1 = w3 * w1
+    w2 = w3 * w2
+    w0 = 4.0 - (((w0 * w0) + (w1 * w1)) + (w2 * w2))
+    r0[0] = _fmin((_fmin((_fmin((_fmin(1.0, w0)), w0)), w0)), w0)
+    return [r0]
 
 
 def margin(z, h):
@@ -592,20 +751,14 @@ def margin(z, h):
         h = h.tolist()
     else:
         h = _vec(h, 1, "margin: h")
-    w0, w1, w2 = z
-    w3, = h
-    r0 = [0.0] * 1
-    w0 = w3 * w0
-    w1 = w3 * w1
-    w2 = w3 * w2
-    w0 = 4.0 - (((w0 * w0) + (w1 * w1)) + (w2 * w2))
-    r0[0] = _fmin((_fmin((_fmin((_fmin(1.0, w0)), w0)), w0)), w0)
-    return [_fromiter(r0, _F64, 1)]
+    _r = _raw_margin(z, h)
+    return [_fromiter(_r[0], _F64, 1)]
 
 
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
+    "residual_jacobian": residual_jacobian,
     "update": update,
     "guess": guess,
     "legendre": legendre,
@@ -614,4 +767,18 @@ KERNELS = {
     "momentum": momentum,
     "defect": defect,
     "margin": margin,
+}
+
+RAW = {
+    "residual": _raw_residual,
+    "jacobian": _raw_jacobian,
+    "residual_jacobian": _raw_residual_jacobian,
+    "update": _raw_update,
+    "guess": _raw_guess,
+    "legendre": _raw_legendre,
+    "hessian": _raw_hessian,
+    "energy": _raw_energy,
+    "momentum": _raw_momentum,
+    "defect": _raw_defect,
+    "margin": _raw_margin,
 }

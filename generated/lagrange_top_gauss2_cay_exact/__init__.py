@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: c955eeac87881600afa9d49fb6a402a93d59109fd2a196ac7cec4cb0a612f983
+# content hash: dcd8de5ce61197b56d68cf73c788dcc76463963e7a7fd913718b2538ec9a6c63
 """hpgen integrator lagrange_top_gauss2_cay_exact for the model lagrange_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "lagrange_top_gauss2_cay_exact"
-HASH = "c955eeac87881600afa9d49fb6a402a93d59109fd2a196ac7cec4cb0a612f983"
+HASH = "dcd8de5ce61197b56d68cf73c788dcc76463963e7a7fd913718b2538ec9a6c63"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: turntable
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 7e37e25f3be50528ebca3b19605724dd4315ae95f495bbc7c051bd5f8498089d
+ * content hash: 863173fe2451ed38e2a0de316d2cf6c7838f7294b8dd28286d91226d5ff25819
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -44,6 +44,7 @@
 /* Add prefix to internal symbols */
 #define casadi_f0 CASADI_PREFIX(f0)
 #define casadi_f1 CASADI_PREFIX(f1)
+#define casadi_f10 CASADI_PREFIX(f10)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -93,7 +94,7 @@ casadi_real casadi_fmax(casadi_real x, casadi_real y) {
 #if __STDC_VERSION__ < 199901L
   return x>y ? x : y;
 #else
-  return fmax(x, y);
+  return (x > y || y != y) ? x : y;
 #endif
 }
 
@@ -102,7 +103,7 @@ casadi_real casadi_fmin(casadi_real x, casadi_real y) {
 #if __STDC_VERSION__ < 199901L
   return x<y ? x : y;
 #else
-  return fmin(x, y);
+  return (x < y || y != y) ? x : y;
 #endif
 }
 
@@ -1755,8 +1756,1340 @@ CASADI_SYMBOL_EXPORT int jacobian_work_bytes(casadi_int *sz_arg, casadi_int* sz_
   return 0;
 }
 
-/* update:(z[6],g[9],p[3],h)->(g1[9],p1[3]) */
+/* residual_jacobian:(z[6],g[9],p[3],h)->(F[6],J[36]) */
 static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
+  casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
+  casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
+  casadi_real a036, a037, a038, a039, a040, a041, a042, a043, a044, a045, a046, a047;
+  casadi_real a048, a049, a050, a051, a052, a053, a054, a055, a056, a057, a058, a059;
+  casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
+  casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
+  casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
+  casadi_real a096, a097, a098, a099, a100, a101, a102, a103, a104, a105, a106, a107;
+  casadi_real a108, a109, a110, a111, a112, a113, a114, a115, a116, a117, a118, a119;
+  casadi_real a120, a121, a122, a123, a124, a125, a126;
+  a000=arg[0]? arg[0][0] : 0;
+  a001=5.0000000000000000e-01;
+  a002=arg[1]? arg[1][2] : 0;
+  a003=(a001*a002);
+  a003=(a000+a003);
+  a003=(2.*a003);
+  a004=arg[3]? arg[3][0] : 0;
+  a005=(a001*a004);
+  a003=(a003*a005);
+  a006=4.;
+  a000=(a001*a000);
+  a007=arg[0]? arg[0][3] : 0;
+  a008=(a001*a007);
+  a000=(a000+a008);
+  a000=(a004*a000);
+  a008=casadi_sq(a000);
+  a009=arg[0]? arg[0][1] : 0;
+  a010=(a001*a009);
+  a011=arg[0]? arg[0][4] : 0;
+  a012=(a001*a011);
+  a010=(a010+a012);
+  a010=(a004*a010);
+  a012=casadi_sq(a010);
+  a013=(a008+a012);
+  a014=arg[0]? arg[0][2] : 0;
+  a015=(a001*a014);
+  a016=arg[0]? arg[0][5] : 0;
+  a017=(a001*a016);
+  a015=(a015+a017);
+  a015=(a004*a015);
+  a017=casadi_sq(a015);
+  a013=(a013+a017);
+  a013=(a006+a013);
+  a018=(a006/a013);
+  a019=arg[2]? arg[2][0] : 0;
+  a020=2.;
+  a021=(a010/a020);
+  a022=(a015*a000);
+  a023=(a022/a006);
+  a023=(a021+a023);
+  a024=(a000/a020);
+  a025=(a018*a024);
+  a026=1.;
+  a027=(a017+a012);
+  a027=(a027/a020);
+  a028=(a018*a027);
+  a028=(a026-a028);
+  a028=(a002*a028);
+  a029=arg[1]? arg[1][5] : 0;
+  a030=(a000*a010);
+  a031=(a030/a020);
+  a031=(a015+a031);
+  a032=(a018*a031);
+  a032=(a029*a032);
+  a028=(a028+a032);
+  a032=arg[1]? arg[1][8] : 0;
+  a033=(a000*a015);
+  a034=(a033/a020);
+  a034=(a034-a010);
+  a035=(a018*a034);
+  a035=(a032*a035);
+  a028=(a028+a035);
+  a035=-7.4999999999999997e-02;
+  a035=(a035*a004);
+  a022=(a022/a020);
+  a022=(a010+a022);
+  a036=(a018*a022);
+  a036=(a002*a036);
+  a037=(a015*a010);
+  a038=(a037/a020);
+  a038=(a038-a000);
+  a039=(a018*a038);
+  a039=(a029*a039);
+  a036=(a036+a039);
+  a039=(a012+a008);
+  a039=(a039/a020);
+  a040=(a018*a039);
+  a040=(a026-a040);
+  a040=(a032*a040);
+  a036=(a036+a040);
+  a040=(a001*a036);
+  a016=(a016+a040);
+  a016=(2.*a016);
+  a040=1.6666666666666666e-01;
+  a040=(a040*a004);
+  a016=(a016*a040);
+  a041=(a001*a016);
+  a041=(a035+a041);
+  a042=(a028*a041);
+  a043=-4.4999999999999998e-02;
+  a043=(a043*a004);
+  a044=(a001*a028);
+  a007=(a007+a044);
+  a007=(2.*a007);
+  a007=(a007*a005);
+  a044=(a001*a007);
+  a044=(a043+a044);
+  a045=(a036*a044);
+  a042=(a042-a045);
+  a042=(a042/a004);
+  a045=(a025*a042);
+  a046=(a018*a021);
+  a047=2.9999999999999999e-02;
+  a047=(a047*a004);
+  a048=(a010*a000);
+  a049=(a048/a020);
+  a049=(a049-a015);
+  a050=(a018*a049);
+  a050=(a002*a050);
+  a051=(a017+a008);
+  a051=(a051/a020);
+  a052=(a018*a051);
+  a052=(a026-a052);
+  a052=(a029*a052);
+  a050=(a050+a052);
+  a052=(a010*a015);
+  a053=(a052/a020);
+  a053=(a000+a053);
+  a054=(a018*a053);
+  a054=(a032*a054);
+  a050=(a050+a054);
+  a054=(a001*a050);
+  a011=(a011+a054);
+  a011=(2.*a011);
+  a054=2.5000000000000000e-01;
+  a055=(a054*a004);
+  a011=(a011*a055);
+  a056=(a001*a011);
+  a056=(a047+a056);
+  a057=(a036*a056);
+  a058=(a050*a041);
+  a057=(a057-a058);
+  a057=(a057/a004);
+  a058=(a046*a057);
+  a045=(a045-a058);
+  a058=(a050*a044);
+  a059=(a028*a056);
+  a058=(a058-a059);
+  a058=(a058/a004);
+  a059=(a018*a058);
+  a045=(a045+a059);
+  a045=(a004*a045);
+  a059=(a023*a045);
+  a048=(a048/a006);
+  a020=(a015/a020);
+  a048=(a048-a020);
+  a060=(a018*a020);
+  a061=(a060*a057);
+  a062=(a018*a042);
+  a061=(a061+a062);
+  a062=(a025*a058);
+  a061=(a061-a062);
+  a061=(a004*a061);
+  a062=(a048*a061);
+  a059=(a059+a062);
+  a008=(a008/a006);
+  a008=(a026+a008);
+  a062=(a018*a057);
+  a063=(a060*a042);
+  a062=(a062-a063);
+  a063=(a046*a058);
+  a062=(a062+a063);
+  a062=(a004*a062);
+  a063=(a008*a062);
+  a059=(a059+a063);
+  a063=(a001*a029);
+  a009=(a009+a063);
+  a009=(2.*a009);
+  a009=(a009*a055);
+  a063=(a001*a009);
+  a047=(a047+a063);
+  a063=(a032*a047);
+  a064=(a001*a032);
+  a014=(a014+a064);
+  a014=(2.*a014);
+  a014=(a014*a040);
+  a064=(a001*a014);
+  a035=(a035+a064);
+  a064=(a029*a035);
+  a063=(a063-a064);
+  a059=(a059+a063);
+  a019=(a019+a059);
+  a059=(a018*a019);
+  a063=arg[2]? arg[2][1] : 0;
+  a037=(a037/a006);
+  a037=(a037-a024);
+  a064=(a037*a045);
+  a012=(a012/a006);
+  a012=(a026+a012);
+  a065=(a012*a061);
+  a064=(a064+a065);
+  a030=(a030/a006);
+  a030=(a020+a030);
+  a065=(a030*a062);
+  a064=(a064+a065);
+  a035=(a002*a035);
+  a065=(a001*a003);
+  a043=(a043+a065);
+  a065=(a032*a043);
+  a035=(a035-a065);
+  a064=(a064+a035);
+  a063=(a063+a064);
+  a064=(a060*a063);
+  a059=(a059+a064);
+  a064=arg[2]? arg[2][2] : 0;
+  a017=(a017/a006);
+  a017=(a026+a017);
+  a035=(a017*a045);
+  a052=(a052/a006);
+  a052=(a024+a052);
+  a065=(a052*a061);
+  a035=(a035+a065);
+  a033=(a033/a006);
+  a033=(a033-a021);
+  a006=(a033*a062);
+  a035=(a035+a006);
+  a043=(a029*a043);
+  a047=(a002*a047);
+  a043=(a043-a047);
+  a035=(a035+a043);
+  a064=(a064+a035);
+  a035=(a046*a064);
+  a059=(a059-a035);
+  a059=(a004*a059);
+  a059=(a001*a059);
+  a035=(a004*a062);
+  a035=(a001*a035);
+  a059=(a059-a035);
+  a003=(a003-a059);
+  a003=(a003/a005);
+  if (res[0]!=0) res[0][0]=a003;
+  a003=(a018*a063);
+  a035=(a060*a019);
+  a003=(a003-a035);
+  a035=(a025*a064);
+  a003=(a003+a035);
+  a003=(a004*a003);
+  a003=(a001*a003);
+  a035=(a004*a061);
+  a035=(a001*a035);
+  a003=(a003-a035);
+  a009=(a009-a003);
+  a009=(a009/a005);
+  if (res[0]!=0) res[0][1]=a009;
+  a009=(a046*a019);
+  a035=(a025*a063);
+  a009=(a009-a035);
+  a035=(a018*a064);
+  a009=(a009+a035);
+  a009=(a004*a009);
+  a009=(a001*a009);
+  a035=(a004*a045);
+  a035=(a001*a035);
+  a009=(a009-a035);
+  a014=(a014-a009);
+  a014=(a014/a005);
+  if (res[0]!=0) res[0][2]=a014;
+  a007=(a007-a059);
+  a007=(a007/a005);
+  if (res[0]!=0) res[0][3]=a007;
+  a011=(a011-a003);
+  a011=(a011/a005);
+  if (res[0]!=0) res[0][4]=a011;
+  a016=(a016-a009);
+  a016=(a016/a005);
+  if (res[0]!=0) res[0][5]=a016;
+  a016=(a015*a005);
+  a009=(a054*a016);
+  a011=(a045*a009);
+  a003=(a018*a055);
+  a013=(a018/a013);
+  a007=(2.*a000);
+  a007=(a007*a005);
+  a059=(a013*a007);
+  a014=(a024*a059);
+  a014=(a003-a014);
+  a035=(a042*a014);
+  a043=(a027*a059);
+  a043=(a002*a043);
+  a047=(a010*a005);
+  a006=(a001*a047);
+  a006=(a018*a006);
+  a065=(a031*a059);
+  a065=(a006-a065);
+  a065=(a029*a065);
+  a043=(a043+a065);
+  a016=(a001*a016);
+  a016=(a018*a016);
+  a065=(a034*a059);
+  a065=(a016-a065);
+  a065=(a032*a065);
+  a043=(a043+a065);
+  a065=(a041*a043);
+  a066=(a022*a059);
+  a066=(a016-a066);
+  a066=(a002*a066);
+  a067=(a038*a059);
+  a068=(a018*a005);
+  a067=(a067+a068);
+  a067=(a029*a067);
+  a066=(a066-a067);
+  a067=(a001*a007);
+  a067=(a018*a067);
+  a069=(a039*a059);
+  a069=(a067-a069);
+  a069=(a032*a069);
+  a066=(a066-a069);
+  a069=(a040*a066);
+  a070=(a001*a069);
+  a071=(a028*a070);
+  a065=(a065+a071);
+  a071=(a044*a066);
+  a072=(a005*a043);
+  a073=(a001*a072);
+  a074=(a036*a073);
+  a074=(a071+a074);
+  a074=(a065-a074);
+  a074=(a074/a004);
+  a075=(a025*a074);
+  a075=(a035+a075);
+  a066=(a056*a066);
+  a076=(a049*a059);
+  a076=(a006-a076);
+  a076=(a002*a076);
+  a077=(a051*a059);
+  a067=(a067-a077);
+  a067=(a029*a067);
+  a076=(a076-a067);
+  a067=(a053*a059);
+  a067=(a068-a067);
+  a067=(a032*a067);
+  a076=(a076+a067);
+  a067=(a055*a076);
+  a077=(a001*a067);
+  a078=(a036*a077);
+  a066=(a066+a078);
+  a078=(a041*a076);
+  a070=(a050*a070);
+  a078=(a078+a070);
+  a066=(a066-a078);
+  a066=(a066/a004);
+  a078=(a046*a066);
+  a070=(a021*a059);
+  a079=(a057*a070);
+  a078=(a078-a079);
+  a075=(a075-a078);
+  a076=(a044*a076);
+  a073=(a050*a073);
+  a073=(a076+a073);
+  a079=(a056*a043);
+  a077=(a028*a077);
+  a079=(a079+a077);
+  a073=(a073-a079);
+  a073=(a073/a004);
+  a077=(a018*a073);
+  a080=(a058*a059);
+  a077=(a077-a080);
+  a075=(a075+a077);
+  a075=(a004*a075);
+  a077=(a023*a075);
+  a077=(a011+a077);
+  a047=(a054*a047);
+  a081=(a061*a047);
+  a082=(a060*a066);
+  a083=(a020*a059);
+  a084=(a057*a083);
+  a082=(a082-a084);
+  a084=(a018*a074);
+  a085=(a042*a059);
+  a084=(a084-a085);
+  a084=(a082+a084);
+  a086=(a058*a014);
+  a087=(a025*a073);
+  a087=(a086+a087);
+  a084=(a084-a087);
+  a084=(a004*a084);
+  a087=(a048*a084);
+  a087=(a081+a087);
+  a077=(a077+a087);
+  a007=(a054*a007);
+  a007=(a062*a007);
+  a066=(a018*a066);
+  a087=(a057*a059);
+  a066=(a066-a087);
+  a074=(a060*a074);
+  a087=(a042*a083);
+  a074=(a074-a087);
+  a074=(a066-a074);
+  a073=(a046*a073);
+  a088=(a058*a070);
+  a073=(a073-a088);
+  a074=(a074+a073);
+  a074=(a004*a074);
+  a073=(a008*a074);
+  a073=(a007+a073);
+  a077=(a077+a073);
+  a073=(a018*a077);
+  a089=(a019*a059);
+  a073=(a073-a089);
+  a090=(a037*a075);
+  a091=(a045*a055);
+  a090=(a090-a091);
+  a092=(a012*a084);
+  a090=(a090+a092);
+  a092=(a062*a047);
+  a093=(a030*a074);
+  a093=(a092+a093);
+  a090=(a090+a093);
+  a093=(a032*a005);
+  a090=(a090-a093);
+  a093=(a060*a090);
+  a094=(a063*a083);
+  a093=(a093-a094);
+  a073=(a073+a093);
+  a093=(a017*a075);
+  a095=(a061*a055);
+  a096=(a052*a084);
+  a096=(a095+a096);
+  a093=(a093+a096);
+  a096=(a062*a009);
+  a097=(a033*a074);
+  a097=(a096+a097);
+  a093=(a093+a097);
+  a097=(a029*a005);
+  a093=(a093+a097);
+  a097=(a046*a093);
+  a098=(a064*a070);
+  a097=(a097-a098);
+  a073=(a073-a097);
+  a073=(a004*a073);
+  a073=(a001*a073);
+  a074=(a004*a074);
+  a074=(a001*a074);
+  a073=(a073-a074);
+  a074=(a004-a073);
+  a074=(a074/a005);
+  if (res[1]!=0) res[1][0]=a074;
+  a074=(a018*a090);
+  a097=(a063*a059);
+  a074=(a074-a097);
+  a099=(a060*a077);
+  a083=(a019*a083);
+  a099=(a099-a083);
+  a074=(a074-a099);
+  a099=(a064*a014);
+  a100=(a025*a093);
+  a100=(a099+a100);
+  a074=(a074+a100);
+  a074=(a004*a074);
+  a074=(a001*a074);
+  a084=(a004*a084);
+  a084=(a001*a084);
+  a074=(a074-a084);
+  a084=(a074/a005);
+  a084=(-a084);
+  if (res[1]!=0) res[1][1]=a084;
+  a077=(a046*a077);
+  a070=(a019*a070);
+  a077=(a077-a070);
+  a014=(a063*a014);
+  a090=(a025*a090);
+  a090=(a014+a090);
+  a077=(a077-a090);
+  a093=(a018*a093);
+  a059=(a064*a059);
+  a093=(a093-a059);
+  a077=(a077+a093);
+  a077=(a004*a077);
+  a077=(a001*a077);
+  a075=(a004*a075);
+  a075=(a001*a075);
+  a077=(a077-a075);
+  a075=(a077/a005);
+  a075=(-a075);
+  if (res[1]!=0) res[1][2]=a075;
+  a072=(a072-a073);
+  a072=(a072/a005);
+  if (res[1]!=0) res[1][3]=a072;
+  a074=(a067-a074);
+  a074=(a074/a005);
+  if (res[1]!=0) res[1][4]=a074;
+  a077=(a069-a077);
+  a077=(a077/a005);
+  if (res[1]!=0) res[1][5]=a077;
+  a000=(a000*a005);
+  a077=(a001*a000);
+  a077=(a018*a077);
+  a010=(2.*a010);
+  a010=(a010*a005);
+  a074=(a013*a010);
+  a072=(a031*a074);
+  a072=(a077-a072);
+  a072=(a029*a072);
+  a073=(a001*a010);
+  a073=(a018*a073);
+  a075=(a027*a074);
+  a075=(a073-a075);
+  a075=(a002*a075);
+  a072=(a072-a075);
+  a075=(a034*a074);
+  a075=(a075+a068);
+  a075=(a032*a075);
+  a072=(a072-a075);
+  a075=(a041*a072);
+  a093=(a022*a074);
+  a093=(a068-a093);
+  a093=(a002*a093);
+  a090=(a038*a074);
+  a090=(a016-a090);
+  a090=(a029*a090);
+  a093=(a093+a090);
+  a090=(a039*a074);
+  a073=(a073-a090);
+  a073=(a032*a073);
+  a093=(a093-a073);
+  a073=(a040*a093);
+  a090=(a001*a073);
+  a084=(a028*a090);
+  a075=(a075+a084);
+  a084=(a044*a093);
+  a100=(a005*a072);
+  a101=(a001*a100);
+  a102=(a036*a101);
+  a084=(a084+a102);
+  a075=(a075-a084);
+  a075=(a075/a004);
+  a084=(a025*a075);
+  a102=(a024*a074);
+  a103=(a042*a102);
+  a084=(a084-a103);
+  a103=(a021*a074);
+  a103=(a003-a103);
+  a104=(a057*a103);
+  a093=(a056*a093);
+  a105=(a049*a074);
+  a105=(a077-a105);
+  a105=(a002*a105);
+  a106=(a051*a074);
+  a106=(a029*a106);
+  a105=(a105+a106);
+  a106=(a053*a074);
+  a016=(a016-a106);
+  a016=(a032*a016);
+  a105=(a105+a016);
+  a016=(a055*a105);
+  a106=(a001*a016);
+  a107=(a036*a106);
+  a107=(a093+a107);
+  a108=(a041*a105);
+  a090=(a050*a090);
+  a108=(a108+a090);
+  a107=(a107-a108);
+  a107=(a107/a004);
+  a090=(a046*a107);
+  a090=(a104+a090);
+  a090=(a084-a090);
+  a109=(a044*a105);
+  a101=(a050*a101);
+  a109=(a109+a101);
+  a072=(a056*a072);
+  a106=(a028*a106);
+  a106=(a072+a106);
+  a106=(a109-a106);
+  a106=(a106/a004);
+  a101=(a018*a106);
+  a110=(a058*a074);
+  a101=(a101-a110);
+  a090=(a090+a101);
+  a090=(a004*a090);
+  a101=(a023*a090);
+  a101=(a091+a101);
+  a000=(a054*a000);
+  a111=(a061*a000);
+  a112=(a060*a107);
+  a113=(a020*a074);
+  a114=(a057*a113);
+  a112=(a112-a114);
+  a115=(a018*a075);
+  a116=(a042*a074);
+  a115=(a115-a116);
+  a112=(a112+a115);
+  a116=(a025*a106);
+  a117=(a058*a102);
+  a116=(a116-a117);
+  a112=(a112-a116);
+  a112=(a004*a112);
+  a116=(a048*a112);
+  a116=(a111+a116);
+  a101=(a101+a116);
+  a107=(a018*a107);
+  a116=(a057*a074);
+  a107=(a107-a116);
+  a075=(a060*a075);
+  a118=(a042*a113);
+  a075=(a075-a118);
+  a107=(a107-a075);
+  a118=(a058*a103);
+  a106=(a046*a106);
+  a106=(a118+a106);
+  a107=(a107+a106);
+  a107=(a004*a107);
+  a106=(a008*a107);
+  a101=(a101+a106);
+  a106=(a032*a055);
+  a101=(a101+a106);
+  a106=(a018*a101);
+  a119=(a019*a074);
+  a106=(a106-a119);
+  a120=(a037*a090);
+  a120=(a011+a120);
+  a010=(a054*a010);
+  a010=(a061*a010);
+  a121=(a012*a112);
+  a121=(a010+a121);
+  a120=(a120+a121);
+  a121=(a062*a000);
+  a122=(a030*a107);
+  a122=(a121+a122);
+  a120=(a120+a122);
+  a122=(a060*a120);
+  a123=(a063*a113);
+  a122=(a122-a123);
+  a106=(a106+a122);
+  a122=(a064*a103);
+  a124=(a017*a090);
+  a061=(a061*a009);
+  a009=(a052*a112);
+  a009=(a061+a009);
+  a124=(a124+a009);
+  a009=(a033*a107);
+  a062=(a062*a055);
+  a009=(a009-a062);
+  a124=(a124+a009);
+  a009=(a002*a055);
+  a124=(a124-a009);
+  a009=(a046*a124);
+  a009=(a122+a009);
+  a106=(a106-a009);
+  a106=(a004*a106);
+  a106=(a001*a106);
+  a107=(a004*a107);
+  a107=(a001*a107);
+  a106=(a106-a107);
+  a107=(a106/a005);
+  a107=(-a107);
+  if (res[1]!=0) res[1][6]=a107;
+  a107=(a018*a120);
+  a009=(a063*a074);
+  a107=(a107-a009);
+  a125=(a060*a101);
+  a113=(a019*a113);
+  a125=(a125-a113);
+  a107=(a107-a125);
+  a125=(a025*a124);
+  a126=(a064*a102);
+  a125=(a125-a126);
+  a107=(a107+a125);
+  a107=(a004*a107);
+  a107=(a001*a107);
+  a112=(a004*a112);
+  a112=(a001*a112);
+  a107=(a107-a112);
+  a112=(a005-a107);
+  a112=(a112/a005);
+  if (res[1]!=0) res[1][7]=a112;
+  a103=(a019*a103);
+  a101=(a046*a101);
+  a101=(a103+a101);
+  a120=(a025*a120);
+  a102=(a063*a102);
+  a120=(a120-a102);
+  a101=(a101-a120);
+  a124=(a018*a124);
+  a074=(a064*a074);
+  a124=(a124-a074);
+  a101=(a101+a124);
+  a101=(a004*a101);
+  a101=(a001*a101);
+  a090=(a004*a090);
+  a090=(a001*a090);
+  a101=(a101-a090);
+  a090=(a101/a005);
+  a090=(-a090);
+  if (res[1]!=0) res[1][8]=a090;
+  a106=(a100-a106);
+  a106=(a106/a005);
+  if (res[1]!=0) res[1][9]=a106;
+  a016=(a016-a107);
+  a016=(a016/a005);
+  if (res[1]!=0) res[1][10]=a016;
+  a101=(a073-a101);
+  a101=(a101/a005);
+  if (res[1]!=0) res[1][11]=a101;
+  a000=(a045*a000);
+  a015=(2.*a015);
+  a015=(a015*a005);
+  a013=(a013*a015);
+  a031=(a031*a013);
+  a031=(a068-a031);
+  a031=(a029*a031);
+  a101=(a001*a015);
+  a101=(a018*a101);
+  a027=(a027*a013);
+  a027=(a101-a027);
+  a027=(a002*a027);
+  a031=(a031-a027);
+  a034=(a034*a013);
+  a034=(a077-a034);
+  a034=(a032*a034);
+  a031=(a031+a034);
+  a034=(a041*a031);
+  a022=(a022*a013);
+  a077=(a077-a022);
+  a077=(a002*a077);
+  a038=(a038*a013);
+  a038=(a006-a038);
+  a038=(a029*a038);
+  a077=(a077+a038);
+  a039=(a039*a013);
+  a039=(a032*a039);
+  a077=(a077+a039);
+  a039=(a040*a077);
+  a038=(a001*a039);
+  a022=(a028*a038);
+  a022=(a034+a022);
+  a027=(a044*a077);
+  a016=(a005*a031);
+  a107=(a001*a016);
+  a106=(a036*a107);
+  a027=(a027+a106);
+  a022=(a022-a027);
+  a022=(a022/a004);
+  a106=(a025*a022);
+  a024=(a024*a013);
+  a090=(a042*a024);
+  a106=(a106-a090);
+  a124=(a056*a077);
+  a053=(a053*a013);
+  a006=(a006-a053);
+  a032=(a032*a006);
+  a049=(a049*a013);
+  a049=(a049+a068);
+  a049=(a002*a049);
+  a051=(a051*a013);
+  a101=(a101-a051);
+  a101=(a029*a101);
+  a049=(a049+a101);
+  a032=(a032-a049);
+  a049=(a055*a032);
+  a101=(a001*a049);
+  a051=(a036*a101);
+  a124=(a124+a051);
+  a041=(a041*a032);
+  a038=(a050*a038);
+  a038=(a041+a038);
+  a038=(a124-a038);
+  a038=(a038/a004);
+  a051=(a046*a038);
+  a021=(a021*a013);
+  a068=(a057*a021);
+  a051=(a051-a068);
+  a106=(a106-a051);
+  a044=(a044*a032);
+  a107=(a050*a107);
+  a044=(a044+a107);
+  a056=(a056*a031);
+  a101=(a028*a101);
+  a056=(a056+a101);
+  a044=(a044-a056);
+  a044=(a044/a004);
+  a056=(a018*a044);
+  a101=(a058*a013);
+  a056=(a056-a101);
+  a106=(a106+a056);
+  a106=(a004*a106);
+  a101=(a023*a106);
+  a101=(a000+a101);
+  a020=(a020*a013);
+  a003=(a003-a020);
+  a020=(a057*a003);
+  a031=(a060*a038);
+  a031=(a020+a031);
+  a107=(a018*a022);
+  a032=(a042*a013);
+  a107=(a107-a032);
+  a031=(a031+a107);
+  a107=(a025*a044);
+  a051=(a058*a024);
+  a107=(a107-a051);
+  a031=(a031-a107);
+  a031=(a004*a031);
+  a051=(a048*a031);
+  a051=(a051-a095);
+  a101=(a101+a051);
+  a038=(a018*a038);
+  a057=(a057*a013);
+  a038=(a038-a057);
+  a042=(a042*a003);
+  a022=(a060*a022);
+  a022=(a042+a022);
+  a038=(a038-a022);
+  a044=(a046*a044);
+  a058=(a058*a021);
+  a044=(a044-a058);
+  a038=(a038+a044);
+  a038=(a004*a038);
+  a058=(a008*a038);
+  a101=(a101+a058);
+  a029=(a029*a040);
+  a101=(a101-a029);
+  a029=(a018*a101);
+  a058=(a019*a013);
+  a029=(a029-a058);
+  a022=(a063*a003);
+  a047=(a045*a047);
+  a051=(a037*a106);
+  a051=(a047+a051);
+  a006=(a012*a031);
+  a051=(a051+a006);
+  a006=(a030*a038);
+  a006=(a062+a006);
+  a051=(a051+a006);
+  a002=(a002*a040);
+  a051=(a051+a002);
+  a002=(a060*a051);
+  a002=(a022+a002);
+  a029=(a029+a002);
+  a054=(a054*a015);
+  a045=(a045*a054);
+  a054=(a017*a106);
+  a054=(a045+a054);
+  a015=(a052*a031);
+  a015=(a081+a015);
+  a054=(a054+a015);
+  a015=(a033*a038);
+  a015=(a121+a015);
+  a054=(a054+a015);
+  a015=(a046*a054);
+  a002=(a064*a021);
+  a015=(a015-a002);
+  a029=(a029-a015);
+  a029=(a004*a029);
+  a029=(a001*a029);
+  a038=(a004*a038);
+  a038=(a001*a038);
+  a029=(a029-a038);
+  a038=(a029/a005);
+  a038=(-a038);
+  if (res[1]!=0) res[1][12]=a038;
+  a038=(a018*a051);
+  a015=(a063*a013);
+  a038=(a038-a015);
+  a003=(a019*a003);
+  a006=(a060*a101);
+  a006=(a003+a006);
+  a038=(a038-a006);
+  a006=(a025*a054);
+  a053=(a064*a024);
+  a006=(a006-a053);
+  a038=(a038+a006);
+  a038=(a004*a038);
+  a038=(a001*a038);
+  a031=(a004*a031);
+  a031=(a001*a031);
+  a038=(a038-a031);
+  a031=(a038/a005);
+  a031=(-a031);
+  if (res[1]!=0) res[1][13]=a031;
+  a031=3.3333333333333331e-01;
+  a031=(a031*a004);
+  a101=(a046*a101);
+  a019=(a019*a021);
+  a101=(a101-a019);
+  a051=(a025*a051);
+  a063=(a063*a024);
+  a051=(a051-a063);
+  a101=(a101-a051);
+  a054=(a018*a054);
+  a064=(a064*a013);
+  a054=(a054-a064);
+  a101=(a101+a054);
+  a101=(a004*a101);
+  a101=(a001*a101);
+  a106=(a004*a106);
+  a106=(a001*a106);
+  a101=(a101-a106);
+  a031=(a031-a101);
+  a031=(a031/a005);
+  if (res[1]!=0) res[1][14]=a031;
+  a029=(a016-a029);
+  a029=(a029/a005);
+  if (res[1]!=0) res[1][15]=a029;
+  a038=(a049-a038);
+  a038=(a038/a005);
+  if (res[1]!=0) res[1][16]=a038;
+  a039=(a039-a101);
+  a039=(a039/a005);
+  if (res[1]!=0) res[1][17]=a039;
+  a043=(a001*a043);
+  a043=(a026+a043);
+  a043=(2.*a043);
+  a043=(a005*a043);
+  a039=(a001*a043);
+  a101=(a036*a039);
+  a071=(a071+a101);
+  a065=(a065-a071);
+  a065=(a065/a004);
+  a071=(a025*a065);
+  a035=(a035+a071);
+  a035=(a035-a078);
+  a039=(a050*a039);
+  a076=(a076+a039);
+  a076=(a076-a079);
+  a076=(a076/a004);
+  a079=(a018*a076);
+  a079=(a079-a080);
+  a035=(a035+a079);
+  a035=(a004*a035);
+  a079=(a023*a035);
+  a079=(a011+a079);
+  a080=(a018*a065);
+  a080=(a080-a085);
+  a082=(a082+a080);
+  a080=(a025*a076);
+  a086=(a086+a080);
+  a082=(a082-a086);
+  a082=(a004*a082);
+  a086=(a048*a082);
+  a086=(a081+a086);
+  a079=(a079+a086);
+  a065=(a060*a065);
+  a065=(a065-a087);
+  a066=(a066-a065);
+  a076=(a046*a076);
+  a076=(a076-a088);
+  a066=(a066+a076);
+  a066=(a004*a066);
+  a076=(a008*a066);
+  a007=(a007+a076);
+  a079=(a079+a007);
+  a007=(a018*a079);
+  a007=(a007-a089);
+  a089=(a037*a035);
+  a089=(a089-a091);
+  a076=(a012*a082);
+  a089=(a089+a076);
+  a076=(a030*a066);
+  a092=(a092+a076);
+  a089=(a089+a092);
+  a092=(a060*a089);
+  a092=(a092-a094);
+  a007=(a007+a092);
+  a092=(a017*a035);
+  a094=(a052*a082);
+  a094=(a095+a094);
+  a092=(a092+a094);
+  a094=(a033*a066);
+  a096=(a096+a094);
+  a092=(a092+a096);
+  a096=(a046*a092);
+  a096=(a096-a098);
+  a007=(a007-a096);
+  a007=(a004*a007);
+  a007=(a001*a007);
+  a066=(a004*a066);
+  a066=(a001*a066);
+  a007=(a007-a066);
+  a066=(a007/a005);
+  a066=(-a066);
+  if (res[1]!=0) res[1][18]=a066;
+  a066=(a018*a089);
+  a066=(a066-a097);
+  a097=(a060*a079);
+  a097=(a097-a083);
+  a066=(a066-a097);
+  a097=(a025*a092);
+  a099=(a099+a097);
+  a066=(a066+a099);
+  a066=(a004*a066);
+  a066=(a001*a066);
+  a082=(a004*a082);
+  a082=(a001*a082);
+  a066=(a066-a082);
+  a082=(a066/a005);
+  a082=(-a082);
+  if (res[1]!=0) res[1][19]=a082;
+  a079=(a046*a079);
+  a079=(a079-a070);
+  a089=(a025*a089);
+  a014=(a014+a089);
+  a079=(a079-a014);
+  a092=(a018*a092);
+  a092=(a092-a059);
+  a079=(a079+a092);
+  a079=(a004*a079);
+  a079=(a001*a079);
+  a035=(a004*a035);
+  a035=(a001*a035);
+  a079=(a079-a035);
+  a035=(a079/a005);
+  a035=(-a035);
+  if (res[1]!=0) res[1][20]=a035;
+  a043=(a043-a007);
+  a043=(a043/a005);
+  if (res[1]!=0) res[1][21]=a043;
+  a067=(a067-a066);
+  a067=(a067/a005);
+  if (res[1]!=0) res[1][22]=a067;
+  a069=(a069-a079);
+  a069=(a069/a005);
+  if (res[1]!=0) res[1][23]=a069;
+  a105=(a001*a105);
+  a105=(a026+a105);
+  a105=(2.*a105);
+  a055=(a055*a105);
+  a105=(a001*a055);
+  a036=(a036*a105);
+  a093=(a093+a036);
+  a093=(a093-a108);
+  a093=(a093/a004);
+  a108=(a046*a093);
+  a104=(a104+a108);
+  a084=(a084-a104);
+  a105=(a028*a105);
+  a072=(a072+a105);
+  a109=(a109-a072);
+  a109=(a109/a004);
+  a072=(a018*a109);
+  a072=(a072-a110);
+  a084=(a084+a072);
+  a084=(a004*a084);
+  a072=(a023*a084);
+  a091=(a091+a072);
+  a072=(a060*a093);
+  a072=(a072-a114);
+  a072=(a072+a115);
+  a115=(a025*a109);
+  a115=(a115-a117);
+  a072=(a072-a115);
+  a072=(a004*a072);
+  a115=(a048*a072);
+  a111=(a111+a115);
+  a091=(a091+a111);
+  a093=(a018*a093);
+  a093=(a093-a116);
+  a093=(a093-a075);
+  a109=(a046*a109);
+  a118=(a118+a109);
+  a093=(a093+a118);
+  a093=(a004*a093);
+  a118=(a008*a093);
+  a091=(a091+a118);
+  a118=(a018*a091);
+  a118=(a118-a119);
+  a119=(a037*a084);
+  a011=(a011+a119);
+  a119=(a012*a072);
+  a010=(a010+a119);
+  a011=(a011+a010);
+  a010=(a030*a093);
+  a010=(a121+a010);
+  a011=(a011+a010);
+  a010=(a060*a011);
+  a010=(a010-a123);
+  a118=(a118+a010);
+  a010=(a017*a084);
+  a123=(a052*a072);
+  a061=(a061+a123);
+  a010=(a010+a061);
+  a061=(a033*a093);
+  a061=(a061-a062);
+  a010=(a010+a061);
+  a061=(a046*a010);
+  a122=(a122+a061);
+  a118=(a118-a122);
+  a118=(a004*a118);
+  a118=(a001*a118);
+  a093=(a004*a093);
+  a093=(a001*a093);
+  a118=(a118-a093);
+  a093=(a118/a005);
+  a093=(-a093);
+  if (res[1]!=0) res[1][24]=a093;
+  a093=(a018*a011);
+  a093=(a093-a009);
+  a009=(a060*a091);
+  a009=(a009-a113);
+  a093=(a093-a009);
+  a009=(a025*a010);
+  a009=(a009-a126);
+  a093=(a093+a009);
+  a093=(a004*a093);
+  a093=(a001*a093);
+  a072=(a004*a072);
+  a072=(a001*a072);
+  a093=(a093-a072);
+  a072=(a093/a005);
+  a072=(-a072);
+  if (res[1]!=0) res[1][25]=a072;
+  a091=(a046*a091);
+  a103=(a103+a091);
+  a011=(a025*a011);
+  a011=(a011-a102);
+  a103=(a103-a011);
+  a010=(a018*a010);
+  a010=(a010-a074);
+  a103=(a103+a010);
+  a103=(a004*a103);
+  a103=(a001*a103);
+  a084=(a004*a084);
+  a084=(a001*a084);
+  a103=(a103-a084);
+  a084=(a103/a005);
+  a084=(-a084);
+  if (res[1]!=0) res[1][26]=a084;
+  a100=(a100-a118);
+  a100=(a100/a005);
+  if (res[1]!=0) res[1][27]=a100;
+  a055=(a055-a093);
+  a055=(a055/a005);
+  if (res[1]!=0) res[1][28]=a055;
+  a073=(a073-a103);
+  a073=(a073/a005);
+  if (res[1]!=0) res[1][29]=a073;
+  a077=(a001*a077);
+  a026=(a026+a077);
+  a026=(2.*a026);
+  a040=(a040*a026);
+  a026=(a001*a040);
+  a028=(a028*a026);
+  a034=(a034+a028);
+  a034=(a034-a027);
+  a034=(a034/a004);
+  a027=(a025*a034);
+  a027=(a027-a090);
+  a050=(a050*a026);
+  a041=(a041+a050);
+  a124=(a124-a041);
+  a124=(a124/a004);
+  a041=(a046*a124);
+  a041=(a041-a068);
+  a027=(a027-a041);
+  a027=(a027+a056);
+  a027=(a004*a027);
+  a023=(a023*a027);
+  a000=(a000+a023);
+  a023=(a060*a124);
+  a020=(a020+a023);
+  a023=(a018*a034);
+  a023=(a023-a032);
+  a020=(a020+a023);
+  a020=(a020-a107);
+  a020=(a004*a020);
+  a048=(a048*a020);
+  a048=(a048-a095);
+  a000=(a000+a048);
+  a124=(a018*a124);
+  a124=(a124-a057);
+  a034=(a060*a034);
+  a042=(a042+a034);
+  a124=(a124-a042);
+  a124=(a124+a044);
+  a124=(a004*a124);
+  a008=(a008*a124);
+  a000=(a000+a008);
+  a008=(a018*a000);
+  a008=(a008-a058);
+  a037=(a037*a027);
+  a047=(a047+a037);
+  a012=(a012*a020);
+  a047=(a047+a012);
+  a030=(a030*a124);
+  a062=(a062+a030);
+  a047=(a047+a062);
+  a062=(a060*a047);
+  a022=(a022+a062);
+  a008=(a008+a022);
+  a017=(a017*a027);
+  a045=(a045+a017);
+  a052=(a052*a020);
+  a081=(a081+a052);
+  a045=(a045+a081);
+  a033=(a033*a124);
+  a121=(a121+a033);
+  a045=(a045+a121);
+  a121=(a046*a045);
+  a121=(a121-a002);
+  a008=(a008-a121);
+  a008=(a004*a008);
+  a008=(a001*a008);
+  a124=(a004*a124);
+  a124=(a001*a124);
+  a008=(a008-a124);
+  a124=(a008/a005);
+  a124=(-a124);
+  if (res[1]!=0) res[1][30]=a124;
+  a124=(a018*a047);
+  a124=(a124-a015);
+  a060=(a060*a000);
+  a003=(a003+a060);
+  a124=(a124-a003);
+  a003=(a025*a045);
+  a003=(a003-a053);
+  a124=(a124+a003);
+  a124=(a004*a124);
+  a124=(a001*a124);
+  a020=(a004*a020);
+  a020=(a001*a020);
+  a124=(a124-a020);
+  a020=(a124/a005);
+  a020=(-a020);
+  if (res[1]!=0) res[1][31]=a020;
+  a046=(a046*a000);
+  a046=(a046-a019);
+  a025=(a025*a047);
+  a025=(a025-a063);
+  a046=(a046-a025);
+  a018=(a018*a045);
+  a018=(a018-a064);
+  a046=(a046+a018);
+  a046=(a004*a046);
+  a046=(a001*a046);
+  a004=(a004*a027);
+  a001=(a001*a004);
+  a046=(a046-a001);
+  a001=(a046/a005);
+  a001=(-a001);
+  if (res[1]!=0) res[1][32]=a001;
+  a016=(a016-a008);
+  a016=(a016/a005);
+  if (res[1]!=0) res[1][33]=a016;
+  a049=(a049-a124);
+  a049=(a049/a005);
+  if (res[1]!=0) res[1][34]=a049;
+  a040=(a040-a046);
+  a040=(a040/a005);
+  if (res[1]!=0) res[1][35]=a040;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int residual_jacobian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f2(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int residual_jacobian_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void residual_jacobian_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void residual_jacobian_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void residual_jacobian_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int residual_jacobian_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int residual_jacobian_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real residual_jacobian_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* residual_jacobian_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* residual_jacobian_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "F";
+    case 1: return "J";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* residual_jacobian_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s2;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* residual_jacobian_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int residual_jacobian_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int residual_jacobian_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* update:(z[6],g[9],p[3],h)->(g1[9],p1[3]) */
+static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -2067,7 +3400,7 @@ static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int update(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f2(arg, res, iw, w, mem);
+  return casadi_f3(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int update_checkout(void) {
@@ -2146,7 +3479,7 @@ CASADI_SYMBOL_EXPORT int update_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* guess:(xi[3],g[9],p[3],h)->(z0[6]) */
-static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2;
   a0=arg[0]? arg[0][0] : 0;
   if (res[0]!=0) res[0][0]=a0;
@@ -2161,7 +3494,7 @@ static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int guess(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f3(arg, res, iw, w, mem);
+  return casadi_f4(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int guess_checkout(void) {
@@ -2238,7 +3571,7 @@ CASADI_SYMBOL_EXPORT int guess_work_bytes(casadi_int *sz_arg, casadi_int* sz_res
 }
 
 /* legendre:(g[9],xi[3])->(mu[3]) */
-static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=arg[1]? arg[1][0] : 0;
   a1=5.0000000000000000e-01;
@@ -2263,7 +3596,7 @@ static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int legendre(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f4(arg, res, iw, w, mem);
+  return casadi_f5(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int legendre_checkout(void) {
@@ -2336,7 +3669,7 @@ CASADI_SYMBOL_EXPORT int legendre_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 }
 
 /* hessian:(g[9],xi[3])->(H[9]) */
-static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=2.;
   if (res[0]!=0) res[0][0]=a0;
@@ -2355,7 +3688,7 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int hessian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f5(arg, res, iw, w, mem);
+  return casadi_f6(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int hessian_checkout(void) {
@@ -2428,7 +3761,7 @@ CASADI_SYMBOL_EXPORT int hessian_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
 }
 
 /* energy:(g[9],xi[3])->(E) */
-static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8, a9;
   a0=arg[1]? arg[1][0] : 0;
   a1=5.0000000000000000e-01;
@@ -2474,7 +3807,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int energy_checkout(void) {
@@ -2547,7 +3880,7 @@ CASADI_SYMBOL_EXPORT int energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* momentum:(g[9],p[3])->(m[3]) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=arg[0]? arg[0][8] : 0;
@@ -2611,7 +3944,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int momentum(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int momentum_checkout(void) {
@@ -2684,7 +4017,7 @@ CASADI_SYMBOL_EXPORT int momentum_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 }
 
 /* defect:(g[9])->(e) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12;
   a00=arg[0]? arg[0][0] : 0;
@@ -2784,7 +4117,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int defect(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int defect_checkout(void) {
@@ -2855,7 +4188,7 @@ CASADI_SYMBOL_EXPORT int defect_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* margin:(z[6],h)->(m) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6;
   a0=1.;
   a1=4.;
@@ -2894,7 +4227,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int margin(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f10(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int margin_checkout(void) {
@@ -3008,7 +4341,7 @@ typedef struct hpgen_options {
     double tol;                  /* converged when |dz| <= tol (1 + |z|), inf-norms */
     long long maxit;             /* Newton iterations per step, >= 1 */
     long long simplified;        /* 1: keep the Jacobian's LU across iterations and steps */
-    long long predictor;         /* 1: start step k+1 from 2 z_k - z_{k-1} (else from z_k) */
+    long long predictor;         /* 1: start step k+1 from the extrapolated last solutions (else z_k) */
 } hpgen_options;
 
 /* A run in progress: the state, the Newton start and the Newton memory. Advancing a run by
@@ -3016,15 +4349,16 @@ typedef struct hpgen_options {
 typedef struct hpgen_run {
     double g[HPGEN_NN], p[HPGEN_D];  /* (g_k, p_k) */
     double z[HPGEN_NZ];              /* solution of the last step (or the initial guess) */
-    double zprev[HPGEN_NZ];          /* solution of the step before (predictor) */
-    double lu[HPGEN_NZ * HPGEN_NZ];  /* LU factors of the last Jacobian (simplified Newton) */
+    double zprev[HPGEN_NZ];          /* solutions of the two steps before (predictor) */
+    double zprev2[HPGEN_NZ];
+    double lu[HPGEN_NZ * HPGEN_NZ];  /* J^{-1} of the last Jacobian (simplified Newton) */
     int piv[HPGEN_NZ];
     long long k;                     /* steps done */
-    long long have_prev;             /* zprev is valid */
-    long long lu_valid;              /* lu/piv hold a factorization */
+    long long have_prev;             /* how many of zprev, zprev2 are valid (0, 1, 2) */
+    long long lu_valid;              /* lu holds J^{-1} */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "7e37e25f3be50528ebca3b19605724dd4315ae95f495bbc7c051bd5f8498089d"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "863173fe2451ed38e2a0de316d2cf6c7838f7294b8dd28286d91226d5ff25819"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -3071,6 +4405,28 @@ HPGEN_EXPORT int hpgen_kernel_jacobian(const double* in0, const double* in1, con
     arg[3] = in3;
     res[0] = out0;
     flag = jacobian(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+/* residual_jacobian(z[6], g[9], p[3], h[1]) -> (F[6], J[36]) */
+#define HPGEN_RESIDUAL_JACOBIAN_SZ_ARG 4
+#define HPGEN_RESIDUAL_JACOBIAN_SZ_RES 2
+#define HPGEN_RESIDUAL_JACOBIAN_SZ_IW 0
+#define HPGEN_RESIDUAL_JACOBIAN_SZ_W 127
+HPGEN_EXPORT int hpgen_kernel_residual_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1) {
+    const casadi_real* arg[HPGEN_RESIDUAL_JACOBIAN_SZ_ARG + 1];
+    casadi_real* res[HPGEN_RESIDUAL_JACOBIAN_SZ_RES + 1];
+    casadi_int iw[HPGEN_RESIDUAL_JACOBIAN_SZ_IW + 1];
+    casadi_real w[HPGEN_RESIDUAL_JACOBIAN_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    res[1] = out1;
+    flag = residual_jacobian(arg, res, iw, w, 0);
     (void)i;
     return flag;
 }
@@ -3251,14 +4607,77 @@ static int hpgen_all_finite(const double* x, int n) {
     return 1;
 }
 
+/* The Newton matrix is kept as J^{-1} (explicit, column-major in A; piv is workspace): a
+   simplified-Newton iteration then costs one matrix-vector product, NZ^2 independent
+   multiply-adds, instead of two triangular solves whose divisions and recurrences form a
+   long dependency chain. Newton's fixed point depends on F only; the accuracy of J^{-1}
+   only sets the contraction rate. */
+
+/* b <- A b, A = J^{-1} from hpgen_lu_factor_solve */
+static void hpgen_lu_apply(const double* A, const int* piv, double* b) {
+    double x[HPGEN_NZ];
+    int i, j;
+    (void)piv;
+    for (i = 0; i < HPGEN_NZ; ++i) x[i] = A[i] * b[0];
+    for (j = 1; j < HPGEN_NZ; ++j)
+        for (i = 0; i < HPGEN_NZ; ++i) x[i] += A[i + j * HPGEN_NZ] * b[j];
+    for (i = 0; i < HPGEN_NZ; ++i) b[i] = x[i];
+}
+
+#if HPGEN_NZ <= 3
+/* NZ <= 3: J^{-1} by cofactors (adjugate / det); Cramer's rule is accurate to a few ulps
+   times cond(J) here. A <- J^{-1} and b <- J^{-1} b (the adjugate applied to b alongside
+   the division). Returns 1 if det J is zero or not finite (then so is some entry of J:
+   every entry enters det). */
+static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
+#if HPGEN_NZ == 1
+    double r;
+    if (!(A[0] != 0.0) || !isfinite(A[0])) return 1;
+    r = 1.0 / A[0];
+    A[0] = r;
+    b[0] *= r;
+#elif HPGEN_NZ == 2
+    const double a = A[0], c = A[1], bb = A[2], d = A[3], det = a * d - bb * c;
+    const double x0 = d * b[0] - bb * b[1], x1 = a * b[1] - c * b[0];
+    double r;
+    if (!(det != 0.0) || !isfinite(det)) return 1;
+    r = 1.0 / det;
+    A[0] = d * r; A[2] = -bb * r; A[1] = -c * r; A[3] = a * r;
+    b[0] = x0 * r; b[1] = x1 * r;
+#else
+    /* J[i][j] = A[i + 3 j]; (J^{-1})_ij = C_ji / det, C the cofactors */
+    const double j00 = A[0], j10 = A[1], j20 = A[2], j01 = A[3], j11 = A[4], j21 = A[5],
+                 j02 = A[6], j12 = A[7], j22 = A[8];
+    const double c00 = j11 * j22 - j12 * j21, c01 = j12 * j20 - j10 * j22,
+                 c02 = j10 * j21 - j11 * j20, c10 = j02 * j21 - j01 * j22,
+                 c11 = j00 * j22 - j02 * j20, c12 = j01 * j20 - j00 * j21,
+                 c20 = j01 * j12 - j02 * j11, c21 = j02 * j10 - j00 * j12,
+                 c22 = j00 * j11 - j01 * j10;
+    const double det = j00 * c00 + j01 * c01 + j02 * c02;
+    const double x0 = c00 * b[0] + c10 * b[1] + c20 * b[2],
+                 x1 = c01 * b[0] + c11 * b[1] + c21 * b[2],
+                 x2 = c02 * b[0] + c12 * b[1] + c22 * b[2];
+    double r;
+    if (!(det != 0.0) || !isfinite(det)) return 1;
+    r = 1.0 / det;
+    b[0] = x0 * r; b[1] = x1 * r; b[2] = x2 * r;
+    A[0] = c00 * r; A[1] = c01 * r; A[2] = c02 * r;
+    A[3] = c10 * r; A[4] = c11 * r; A[5] = c12 * r;
+    A[6] = c20 * r; A[7] = c21 * r; A[8] = c22 * r;
+#endif
+    (void)piv; (void)keep;
+    return 0;
+}
+#else
 /* LU with partial pivoting in place (pivot: first row of largest |a_ik|, as LAPACK), row
-   interchanges in piv. A is NZ x NZ column-major. Returns 1 if a pivot is exactly zero. */
+   interchanges in piv; U's diagonal is stored inverted (1 / u_kk). A is NZ x NZ
+   column-major. Returns 1 if a pivot is exactly zero. */
 static int hpgen_lu_factor(double* A, int* piv) {
     const int n = HPGEN_NZ;
     int i, j, k;
     for (k = 0; k < n; ++k) {
         int pk = k;
-        double amax = fabs(A[k + k * n]);
+        double amax = fabs(A[k + k * n]), r;
         for (i = k + 1; i < n; ++i) {
             double a = fabs(A[i + k * n]);
             if (a > amax) { amax = a; pk = i; }
@@ -3270,7 +4689,9 @@ static int hpgen_lu_factor(double* A, int* piv) {
                 double t = A[k + j * n]; A[k + j * n] = A[pk + j * n]; A[pk + j * n] = t;
             }
         }
-        for (i = k + 1; i < n; ++i) A[i + k * n] /= A[k + k * n];
+        r = 1.0 / A[k + k * n];
+        A[k + k * n] = r;
+        for (i = k + 1; i < n; ++i) A[i + k * n] *= r;
         for (j = k + 1; j < n; ++j) {
             double a = A[k + j * n];
             if (a != 0.0) for (i = k + 1; i < n; ++i) A[i + j * n] -= A[i + k * n] * a;
@@ -3279,25 +4700,67 @@ static int hpgen_lu_factor(double* A, int* piv) {
     return 0;
 }
 
-/* b <- A^{-1} b with the factors of hpgen_lu_factor: all row interchanges first (the
+/* b <- J^{-1} b with the factors of hpgen_lu_factor: all row interchanges first (the
    factorization swapped whole rows, L included), then L y = P b and U x = y. */
-static void hpgen_lu_apply(const double* A, const int* piv, double* b) {
+static void hpgen_lu_solve(const double* LU, const int* piv, double* b) {
     const int n = HPGEN_NZ;
     int i, j, k;
     for (k = 0; k < n; ++k)
         if (piv[k] != k) { double t = b[k]; b[k] = b[piv[k]]; b[piv[k]] = t; }
     for (k = 0; k < n; ++k)
-        for (i = k + 1; i < n; ++i) b[i] -= A[i + k * n] * b[k];
+        for (i = k + 1; i < n; ++i) b[i] -= LU[i + k * n] * b[k];
     for (k = n - 1; k >= 0; --k) {
         double s = b[k];
-        for (j = k + 1; j < n; ++j) s -= A[k + j * n] * b[j];
-        b[k] = s / A[k + k * n];
+        for (j = k + 1; j < n; ++j) s -= LU[k + j * n] * b[j];
+        b[k] = s * LU[k + k * n];
     }
 }
 
+/* X <- J^{-1} from the factors: the solve above for all unit vectors at once, ordered so
+   that the columns' recurrences run side by side. X is NZ x NZ column-major. */
+static void hpgen_lu_inverse(const double* LU, const int* piv, double* X) {
+    const int n = HPGEN_NZ;
+    int i, j, k;
+    for (i = 0; i < n * n; ++i) X[i] = 0.0;
+    for (j = 0; j < n; ++j) X[j + j * n] = 1.0;
+    for (k = 0; k < n; ++k)
+        if (piv[k] != k)
+            for (j = 0; j < n; ++j) {
+                double t = X[k + j * n]; X[k + j * n] = X[piv[k] + j * n]; X[piv[k] + j * n] = t;
+            }
+    for (k = 0; k < n; ++k)
+        for (j = 0; j < n; ++j) {
+            const double xk = X[k + j * n];
+            if (xk != 0.0) for (i = k + 1; i < n; ++i) X[i + j * n] -= LU[i + k * n] * xk;
+        }
+    for (k = n - 1; k >= 0; --k)
+        for (j = 0; j < n; ++j) {
+            const double xk = X[k + j * n] * LU[k + k * n];
+            X[k + j * n] = xk;
+            for (i = 0; i < k; ++i) X[i + j * n] -= LU[i + k * n] * xk;
+        }
+}
+
+/* b <- J^{-1} b by the LU of J (A holds J on entry); with keep, A <- J^{-1} (for simplified
+   Newton), else A is left as the LU factors. Returns 1 if J has a non-finite entry or is
+   singular. */
+static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
+    double LU[HPGEN_NZ * HPGEN_NZ];
+    if (!hpgen_all_finite(A, HPGEN_NZ * HPGEN_NZ)) return 1;
+    memcpy(LU, A, sizeof LU);
+    if (hpgen_lu_factor(LU, piv)) return 1;
+    hpgen_lu_solve(LU, piv, b);
+    if (keep) {
+        hpgen_lu_inverse(LU, piv, A);
+        return !hpgen_all_finite(A, HPGEN_NZ * HPGEN_NZ);
+    }
+    return 0;
+}
+#endif
+
 /* Newton on residual(z, g, p, h) = 0 from z (in/out): z <- z - J^{-1} F.
-   Full Newton evaluates J at every iterate. Simplified Newton (o->simplified) keeps the LU of
-   the last J in (lu, piv, *lu_valid), across steps too, and refreshes it when the contraction
+   Full Newton evaluates J at every iterate. Simplified Newton (o->simplified) keeps the last J^{-1}
+   in (lu, *lu_valid), across steps too, and refreshes it when the contraction
    rate theta = |dz_k| / |dz_{k-1}| exceeds HPGEN_THETA_MAX; if J was already evaluated in
    this step the rest of the step is full Newton (the fallback).
    Converged when |dz| <= tol (1 + |z|), or when |dz| stopped decreasing while
@@ -3315,19 +4778,22 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
     for (it = 1; it <= o->maxit; ++it) {
         double dn, zn;
         *iters = it;
-        if (hpgen_kernel_residual(z, g, p, hv, F)) return HPGEN_NONFINITE;
-        *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
-        if (!isfinite(*rnorm)) return HPGEN_NONFINITE;
         if (full || !*lu_valid) {
+            /* F and a fresh J in one evaluation (their common subexpressions once) */
             *lu_valid = 0;
             ++*jacs;
-            if (hpgen_kernel_jacobian(z, g, p, hv, lu)) return HPGEN_NONFINITE;
-            if (!hpgen_all_finite(lu, HPGEN_NZ * HPGEN_NZ) || hpgen_lu_factor(lu, piv))
+            if (hpgen_kernel_residual_jacobian(z, g, p, hv, F, lu)) return HPGEN_NONFINITE;
+            *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
+            if (!isfinite(*rnorm) || hpgen_lu_factor_solve(lu, piv, F, o->simplified))
                 return HPGEN_NONFINITE;
-            *lu_valid = 1;
+            *lu_valid = o->simplified ? 1 : 0;   /* lu holds J^{-1} only when it is kept */
             fresh = 1;
+        } else {
+            if (hpgen_kernel_residual(z, g, p, hv, F)) return HPGEN_NONFINITE;
+            *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
+            if (!isfinite(*rnorm)) return HPGEN_NONFINITE;
+            hpgen_lu_apply(lu, piv, F);
         }
-        hpgen_lu_apply(lu, piv, F);
         for (i = 0; i < HPGEN_NZ; ++i) z[i] -= F[i];
         dn = hpgen_norm_inf(F, HPGEN_NZ);
         zn = hpgen_norm_inf(z, HPGEN_NZ);
@@ -3355,6 +4821,11 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
 
 /* One step of a run: margin(z, h) > 0 at the start (check_start), Newton from z (in/out),
    margin(z, h) > 0 at the solution, then update -> (g1, p1). */
+/* small kernels: inline them and the Newton loop into one body (GCC/Clang), so the compiler
+   schedules the kernels' arithmetic together with the solve */
+#if defined(__GNUC__)
+__attribute__((flatten))
+#endif
 static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
                            const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
                            double* g1, double* p1, long long* iters, long long* jacs,
@@ -3430,7 +4901,7 @@ HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, d
 }
 
 /* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
-   solution, or from the linear predictor 2 z_k - z_{k-1}). The state after global step k is
+   solution, or from the extrapolation of the last three). The state after global step k is
    recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
    sizes them for the records falling in this call). Stops at the first failed step (the run
    keeps the last good state). Returns the steps done in this call. */
@@ -3448,8 +4919,15 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
     full = *o;
     full.simplified = 0;
     for (n = 0; n < steps; ++n) {
-        int code, predicted = o->predictor && r->have_prev;
-        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = predicted ? 2.0 * r->z[i] - r->zprev[i] : r->z[i];
+        int code;
+        /* start: the polynomial through the last solutions, extrapolated one step (quadratic
+           3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before) */
+        if (o->predictor && r->have_prev >= 2)
+            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 3.0 * (r->z[i] - r->zprev[i]) + r->zprev2[i];
+        else if (o->predictor && r->have_prev == 1)
+            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 2.0 * r->z[i] - r->zprev[i];
+        else
+            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
         /* the first step starts from the crude guess kernel: full Newton */
         code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? &full : o, r->lu, r->piv,
                                &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0);
@@ -3457,9 +4935,10 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
         st->total_iterations += it;
         st->residual = res;
         if (code != HPGEN_OK) { st->code = code; st->step = r->k; return n; }
+        memcpy(r->zprev2, r->zprev, sizeof r->z);
         memcpy(r->zprev, r->z, sizeof r->z);
         memcpy(r->z, zs, sizeof r->z);
-        r->have_prev = 1;
+        if (r->have_prev < 2) r->have_prev += 1;
         memcpy(r->g, g1, sizeof g1);
         memcpy(r->p, p1, sizeof p1);
         r->k += 1;

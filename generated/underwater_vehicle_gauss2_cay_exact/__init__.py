@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: cb9c356895f1bd46d30303256a2e887fedb770d064f38893abc63e0aacbf863b
+# content hash: 8ba679686f98ad28f7f12c6863c33fd02f5a166fcdd8179902c7396de43b842e
 """hpgen integrator underwater_vehicle_gauss2_cay_exact for the model underwater_vehicle.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "underwater_vehicle_gauss2_cay_exact"
-HASH = "cb9c356895f1bd46d30303256a2e887fedb770d064f38893abc63e0aacbf863b"
+HASH = "8ba679686f98ad28f7f12c6863c33fd02f5a166fcdd8179902c7396de43b842e"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -21,6 +21,7 @@ _RESERVED_ARG = re.compile(r"([wr][0-9]+|math|numpy)\Z")
 SIGNATURES = {
     "residual": (("nz", "nn", "d", "1"), ("nz",)),
     "jacobian": (("nz", "nn", "d", "1"), ("nznz",)),
+    "residual_jacobian": (("nz", "nn", "d", "1"), ("nz", "nznz")),
     "update": (("nz", "nn", "d", "1"), ("nn", "d")),
     "guess": (("d", "nn", "d", "1"), ("nz",)),
     "legendre": (("nn", "d"), ("d",)),

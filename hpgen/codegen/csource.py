@@ -16,6 +16,11 @@ CG_OPTIONS = {"casadi_real": "double", "casadi_int": "long long int", "with_mem"
               "verbose": False, "cpp": False, "with_header": False, "main": False,
               "mex": False}
 
+#: CasADi's fmin/fmax helpers call libm (not inlined without -ffinite-math-only); the same
+#: IEEE semantics (a NaN argument yields the other one) as plain comparisons
+_INLINE_MINMAX = {"  return fmin(x, y);\n": "  return (x < y || y != y) ? x : y;\n",
+                  "  return fmax(x, y);\n": "  return (x > y || y != y) ? x : y;\n"}
+
 #: op codes whose CasADi C output does not compile as C99 (no erfinv in <math.h>)
 _C_UNSUPPORTED = {casadi.OP_ERFINV: "erfinv"}
 
@@ -38,6 +43,8 @@ def casadi_c_code(step, module: str) -> str:
     for k in step.kernels:
         cg.add(k.function)
     code = cg.dump()
+    for call, inline in _INLINE_MINMAX.items():
+        code = code.replace(call, inline)
     if not code.endswith("\n"):
         code += "\n"
     return code

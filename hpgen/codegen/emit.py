@@ -34,6 +34,10 @@ SAFE_UNARY = (("exp", "exp"), ("log", "log"), ("sqrt", "sqrt"), ("sin", "sin"),
               ("cos", "cos"), ("tan", "tan"), ("asin", "arcsin"), ("acos", "arccos"),
               ("sinh", "sinh"), ("cosh", "cosh"), ("acosh", "arccosh"),
               ("atanh", "arctanh"), ("log1p", "log1p"), ("expm1", "expm1"))
+#: kernels the C step calls; when their CasADi instructions total at most
+#: FLATTEN_MAX_INSTRUCTIONS they are inlined into the step (faster, compile time stays small)
+STEP_KERNELS = ("residual", "residual_jacobian", "update", "margin")
+FLATTEN_MAX_INSTRUCTIONS = 2000
 _SAFE_CHARS = re.compile(r"[^A-Za-z0-9 _.,:;=+\-()\[\]{}<>#@%&!?'|^~$]")
 
 
@@ -117,6 +121,11 @@ def header_lines(info: dict) -> list[str]:
             f"content hash: {info['hash']}"]
 
 
+def _step_instructions(step) -> int:
+    """CasADi instructions of the kernels one C step calls."""
+    return sum(step.kernel(k).function.n_instructions() for k in STEP_KERNELS)
+
+
 def template_contexts(step, info: dict) -> dict[str, dict]:
     """The context passed to each template, keyed by template file name."""
     check_step(step)
@@ -126,7 +135,8 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
     return {
         "kernels.c.j2": dict(common, nz=step.nz, hash=info["hash"],
                              casadi_code=casadi_c_code(step, info["module"]),
-                             kernels=[c_kernel_context(k) for k in step.kernels]),
+                             kernels=[c_kernel_context(k) for k in step.kernels],
+                             flatten=_step_instructions(step) <= FLATTEN_MAX_INSTRUCTIONS),
         "kernels.py.j2": dict(common, nz=step.nz, module=info["module"],
                               safe_unary=[list(p) for p in SAFE_UNARY],
                               kernels=[py_kernel_context(k) for k in step.kernels]),

@@ -10,10 +10,13 @@ two versions of the same instruction list:
   aliases, a value used exactly once is folded into the expression that uses it (nesting
   depth at most MAX_DEPTH), each input is unpacked once into locals, outputs are stored where
   CasADi writes them, and work variables ``w<k>`` are reused by a linear-scan allocation over
-  the values' live ranges. Only where values are kept changes: every value is still the
-  result of the same operation on the same operand values (evaluation order among
-  independent pure subexpressions cannot change a rounded result; nothing is re-associated
-  or merged). One substitution: ``x / c`` for a constant c = +-2^k with a normal reciprocal
+  the values' live ranges. An operation that CasADi repeats on the same operands is computed
+  once (common subexpressions; ``x + y`` and ``y + x``, ``x * y`` and ``y * x`` count as the
+  same, IEEE addition and multiplication being commutative), equal constants are one value.
+  Only where and how often values are kept changes: every value is still the result of the
+  same operation on the same operand values (evaluation order among independent pure
+  subexpressions cannot change a rounded result; nothing is re-associated). One
+  substitution: ``x / c`` for a constant c = +-2^k with a normal reciprocal
   is printed ``x * (1/c)``, the same IEEE result for every x (gcc makes that replacement in
   the C backend). ``/`` and the math functions are called directly, so a zero divisor or a
   domain/range error raises;
@@ -88,6 +91,7 @@ def _table(spec: dict) -> dict[int, str]:
 UNARY, BINARY = _table(_UNARY), _table(_BINARY)
 FAST_UNARY, FAST_BINARY = _table(_FAST_UNARY), _table(_FAST_BINARY)
 RAISING = {getattr(casadi, k) for k in _RAISING if hasattr(casadi, k)}
+_COMMUTATIVE = {casadi.OP_ADD, casadi.OP_MUL}
 _OP_NAMES = {getattr(casadi, k): k for k in dir(casadi) if k.startswith("OP_")}
 _SIMPLE = re.compile(r"[A-Za-z_][A-Za-z0-9_.]*\Z|[0-9][0-9.e+]*\Z|@[0-9]+@\Z")
 _REF = re.compile(r"@([0-9]+)@")
@@ -171,6 +175,8 @@ def fast_lines(kernel) -> tuple[list[str], bool]:
     vals: list[_Value] = []
     slot: dict[int, int] = {}                 # CasADi work slot -> its current value
     inputs: dict[tuple[int, int], int] = {}   # (argument, dense position) -> value
+    consts: dict[str, int] = {}               # literal -> value
+    known: dict[tuple, int] = {}              # (format, operands) -> value computed before
     order = []                                # ("op", value) / ("out", output, position, value)
     raising = False
 
@@ -191,7 +197,10 @@ def fast_lines(kernel) -> tuple[list[str], bool]:
             order.append(("out", i_out[0], outs[i_out[0]][i_out[1]], slot[i_in[0]]))
         elif op == casadi.OP_CONST:
             c = f.instruction_constant(k)
-            slot[i_out[0]] = new(_Value("const", text=float_literal(c), value=float(c)))
+            lit = float_literal(c)
+            if lit not in consts:
+                consts[lit] = new(_Value("const", text=lit, value=float(c)))
+            slot[i_out[0]] = consts[lit]
         elif op == casadi.OP_ASSIGN:
             slot[i_out[0]] = slot[i_in[0]]
         elif op in FAST_UNARY or op in FAST_BINARY:
@@ -201,11 +210,17 @@ def fast_lines(kernel) -> tuple[list[str], bool]:
             recip = exact_reciprocal(vals[args[1]].value) if op == casadi.OP_DIV else None
             if recip is not None:              # x / 2^k -> x * 2^-k (same result)
                 fmt, args = "{x} * " + _wrap(float_literal(recip)), args[:1]
-            else:
+            # the same operation on the same operands was computed before: reuse it (x + y
+            # and y + x, x * y and y * x are the same IEEE result)
+            key = (fmt, tuple(sorted(args)) if op in _COMMUTATIVE else args)
+            if key in known:
+                slot[i_out[0]] = known[key]
+                continue
+            if recip is None:
                 raising = raising or op in RAISING
             for name, a in zip("xy", args):
                 vals[a].uses += fmt.count("{" + name + "}")
-            slot[i_out[0]] = new(_Value("op", fmt=fmt, args=args))
+            slot[i_out[0]] = known[key] = new(_Value("op", fmt=fmt, args=args))
             order.append(("op", slot[i_out[0]]))
         else:
             raise _unsupported(kernel, k, op)

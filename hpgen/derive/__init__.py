@@ -59,6 +59,9 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     kernels = (
         kernel("residual", [("z", z), ("g", gvec), ("p", p), ("h", h)], [("F", eqs.residual)]),
         kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", h)], [("J", _flat(J))]),
+        # F and J in one pass (shared subexpressions): full Newton's iteration
+        kernel("residual_jacobian", [("z", z), ("g", gvec), ("p", p), ("h", h)],
+               [("F", eqs.residual), ("J", _flat(J))]),
         kernel("update", [("z", z), ("g", gvec), ("p", p), ("h", h)],
                [("g1", _flat(eqs.g1)), ("p1", eqs.p1)]),
         kernel("guess", [("xi", eqs.xi_hat), ("g", gvec), ("p", p), ("h", h)], [("z0", eqs.guess)]),

@@ -102,6 +102,12 @@ def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
         return _finish(group, tau, z, blocks, residual, g1, p1, guess, xi_hat, taus, h)
 
     if not exact:
+        xs = sym("xs", d)
+        common = (_rows_proportional_to_b(A, b)
+                  and not ca.depends_on(ca.gradient(lag(g, xs), xs), g))
+        if common:
+            return _common_velocity_step(group, lag, tau, tableau, Xi, N, Th, xi1, eq_eps, g,
+                                         p, h, xi_hat)
         return _truncated_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_g0,
                                g1, p1, xi_hat, h)
 
@@ -146,6 +152,7 @@ def _truncated_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_
         eta_0:  p - h sum_i (dtau^{-1}_{h Theta^i})^T N^i
                   - (dtau^{-1}_{h xi_{k+1}})^T mu_{k+1} = 0             -> mu_{k+1} explicit
     leaving the s d Legendre conditions in Xi (instead of (2s + 1) d unknowns).
+
     """
     s, d, A, b = tableau.stages, group.d, tableau.A, tableau.b
     zero = ca.SX.zeros(d)
@@ -166,6 +173,55 @@ def _truncated_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_
     taus = [h * t for t in theta] + [h * xi_next]
     guess = ca.vertcat(*[xi_hat] * s)
     return _finish(group, tau, z, blocks, residual, final(g1), final(p1), guess, xi_hat, taus, h)
+
+
+def _common_velocity_step(group, lag, tau, tableau, Xi, N, Th, xi1, eq_eps, g, p, h, xi_hat):
+    """q = 0, rows of A multiples of b (a_ij = c_i b_j: Stormer-Verlet, the midpoint rule,
+    symplectic Euler) and dl/dxi independent of g: d unknowns.
+
+    The Legendre conditions read dl/dxi(Xi^j) = sum_i (a_ij / b_j) h N^i + mu_{k+1}
+    = sum_i c_i h N^i + mu_{k+1} =: M, the same for every j, so every Xi^j is one X
+    (Legendre injective, as the reduced step assumes), Theta^i = c_i X, xi_{k+1} = X and
+    M = dl/dxi(X). With D_a := (dtau^{-1}_a)^T, the eps_i conditions give
+        h N^i = -h (dtau_{-h c_i X})^T b_i f_i(G^i, X)                       (explicit)
+    and eta_0's condition p = sum_i D_{h c_i X} h N^i + D_{hX} mu_{k+1}, with
+    mu_{k+1} = M - sum_i c_i h N^i, becomes the d equations in X
+        p - D_{hX} M - sum_i (D_{h c_i X} - c_i D_{hX}) h N^i = 0,
+    whose stage terms vanish identically for c_i = 1 and have D_0 = I for c_i = 0; likewise
+    p_{k+1} = D_{-hX} mu_{k+1} = D_{-hX} (M - sum_{c_i != 1} c_i h N^i) + sum_{c_i = 1} h b_i f_i.
+    For Stormer-Verlet (c = 0, 1) these are the paper's eqs. sv3 and sv5: a half kick, a
+    d-unknown chart solve, a half kick, with the force taken at g_k and g_{k+1} only.
+    """
+    s, d = tableau.stages, group.d
+    X = ca.SX.sym("Xi", d)
+    c = [float(ci) for ci in tableau.c]
+    at_X = lambda e: ca.substitute(e, ca.vertcat(*Xi, *Th, xi1),  # noqa: E731
+                                   ca.vertcat(*[X] * s, *[ci * X for ci in c], X))
+    M = ca.gradient(lag(g, X), X)
+    D_hX = group.dtau_inv(tau, h * X).T
+    residual, mu1, kick = p - ca.mtimes(D_hX, M), M, ca.SX.zeros(d)
+    for i in range(s):
+        bf = at_X(ca.substitute(eq_eps[i], N[i], ca.SX.zeros(d)))        # b_i f_i(G^i, X)
+        if c[i] == 1.0:
+            kick += h * bf
+            continue
+        hN = -h * bf if c[i] == 0.0 else -h * ca.mtimes(group.dtau(tau, -c[i] * h * X).T, bf)
+        D_i = ca.SX.eye(d) if c[i] == 0.0 else group.dtau_inv(tau, c[i] * h * X).T
+        if c[i] == 0.0:
+            residual -= hN
+        else:
+            residual -= ca.mtimes(D_i - c[i] * D_hX, hN)
+            mu1 = mu1 - c[i] * hN
+    p1 = ca.mtimes(group.dtau_inv(tau, -h * X).T, mu1) + kick
+    g1 = ca.mtimes(g, group.tau(tau, h * X))
+    taus = [ci * h * X for ci in c] + [h * X]
+    return _finish(group, tau, X, (("Xi", 0, d),), residual, g1, p1, xi_hat, xi_hat, taus, h)
+
+
+def _rows_proportional_to_b(A, b) -> bool:
+    """a_ij = c_i b_j for all i, j (exactly, as the catalog's rational entries give)."""
+    return all(abs(A[i][j] * b[0] - A[i][0] * b[j]) <= 1e-15 * max(1.0, abs(A[i][0] * b[j]))
+               for i in range(len(A)) for j in range(len(b)))
 
 
 def _invertible(A) -> bool:

@@ -6,6 +6,7 @@ matrices are flattened column-major (g.ravel(order="F")); h is a 1-vector.
 
     residual(z[nz], g[n*n], p[d], h[1])  -> F[nz]          stationarity conditions of s_k
     jacobian(z, g, p, h)                 -> J[nz*nz]       dF/dz, dense, column-major
+    residual_jacobian(z, g, p, h)        -> F[nz], J[nz*nz] both in one evaluation
     update(z, g, p, h)                   -> g1[n*n], p1[d] (g_{k+1}, p_{k+1}), explicit
     guess(xi[d], g, p, h)                -> z0[nz]         Newton start from a velocity estimate
     legendre(g, xi)                      -> mu[d]          dl/dxi (Legendre transform)
@@ -21,8 +22,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-KERNEL_NAMES = ("residual", "jacobian", "update", "guess", "legendre", "hessian", "energy",
-                "momentum", "defect", "margin")
+KERNEL_NAMES = ("residual", "jacobian", "residual_jacobian", "update", "guess", "legendre",
+                "hessian", "energy", "momentum", "defect", "margin")
 
 
 @dataclass(frozen=True)

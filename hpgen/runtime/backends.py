@@ -59,7 +59,8 @@ class _Backend:
         return done, g_all, p_all, st
 
 class PythonBackend(_Backend):
-    """Kernels from the generated kernels.py; Newton and the step loop in numpy."""
+    """Kernels from the generated kernels.py; Newton and the step loop in Python
+    (hpgen.runtime.newton) on lists of floats with the module's raw kernels (RAW)."""
     name = "python"
 
     def __init__(self, module_dir, meta: dict):
@@ -74,29 +75,43 @@ class PythonBackend(_Backend):
         if (mod.N, mod.D, mod.NZ) != (self.n, self.d, self.nz):
             raise ImportError(f"{path} does not match meta.json (n, d, nz)")
         self._kernels = {k: mod.KERNELS[k] for k in self._sig}
+        raw = getattr(mod, "RAW", None)
+        if raw is None:   # a kernels.py from before RAW: lists through the public kernels
+            raw = {k: (lambda f: lambda *a: [o.tolist() for o in f(*a)])(f)
+                   for k, f in self._kernels.items()}
+        self._raw = {k: raw[k] for k in self._sig}
+        self._newton = newton.Kernels.from_raw(self.nz, self._raw)
 
     def call(self, name, *args):
         return self._kernels[name](*args)
 
+    def _lists(self, g, p, z):
+        nn, d = self.n * self.n, self.d
+        return (_flat(g, nn, "g").tolist(), _flat(p, d, "p").tolist(),
+                _flat(z, self.nz, "z").tolist())
+
     def step(self, g, p, hv, z, opts):
-        code, g1, p1, z, it, r, _ = newton.step_core(self.call, self.nz, g, p, hv, z, opts,
-                                                     newton.NewtonMemory())
+        g, p, z = self._lists(g, p, z)
+        hv = [float(np.asarray(hv, dtype=np.float64).reshape(-1)[0])]
+        code, g1, p1, z, it, r, _ = newton._arrays(newton.step_lists(
+            self._newton, g, p, hv, z, opts, newton.NewtonMemory()))
         return code, g1, p1, z, it, r
 
     def start(self, g0, p0, z0):
-        return newton.Run(g0, p0, z0)
+        return newton.Run(*self._lists(g0, p0, z0))
 
     def advance(self, run, h, steps, every, opts):
         """(steps done, g_rec (K, nn), p_rec (K, d), status); K records of this call."""
-        done, recs, st = newton.advance(self.call, self.nz, run, h, steps, every, opts)
+        done, recs, st = newton.advance(self._newton, run, h, steps, every, opts)
         K = len(recs)
-        g_rec = np.array([g for g, _ in recs]).reshape(K, self.n * self.n)
-        p_rec = np.array([p for _, p in recs]).reshape(K, self.d)
+        g_rec = np.array([g for g, _ in recs], dtype=np.float64).reshape(K, self.n * self.n)
+        p_rec = np.array([p for _, p in recs], dtype=np.float64).reshape(K, self.d)
         return done, g_rec, p_rec, st
 
     def state(self, run):
         """(g flat, p, z, k) of a run."""
-        return run.g.copy(), run.p.copy(), run.z.copy(), run.k
+        return (np.array(run.g, dtype=np.float64), np.array(run.p, dtype=np.float64),
+                np.array(run.z, dtype=np.float64), run.k)
 
 
 class _Status(ctypes.Structure):

@@ -3,8 +3,9 @@
 Conventions: g is an (n, n) group element (array-like), momenta p/mu and velocities xi are
 length-d vectors (body frame), h > 0 is the step in the model's time unit. Internally and
 across the C boundary matrices are flat column-major (``g.ravel(order="F")``).
-Newton settings default to tol = 1e-14, maxit = 50 and a linear predictor (see
-hpgen.runtime.newton). ``simplified`` (reuse the Jacobian's factorization across iterations
+Newton settings default to tol = 1e-14, maxit = 50 and a predictor extrapolating the last
+solutions (quadratic once three exist; see hpgen.runtime.newton). ``simplified`` (reuse the
+Jacobian's inverse across iterations
 and steps) defaults to True when the Jacobian kernel costs more than SIMPLIFIED_RATIO times
 the residual kernel (CasADi instruction counts in meta.json), where it is the faster choice
 (Gauss 2 exact: 7.5 residual evaluations and 0.14 Jacobians per step instead of 2.8 of each).

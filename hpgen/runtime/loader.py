@@ -17,10 +17,11 @@ from .integrator import Integrator
 
 META_FORMAT = 1
 BACKENDS = ("c", "python")
-KERNEL_NAMES = ("residual", "jacobian", "update", "guess", "legendre", "hessian", "energy",
-                "momentum", "defect", "margin")
+KERNEL_NAMES = ("residual", "jacobian", "residual_jacobian", "update", "guess", "legendre",
+                "hessian", "energy", "momentum", "defect", "margin")
 _SIZES = {"residual": ("nz", "nn", "d", "1", "|", "nz"),
           "jacobian": ("nz", "nn", "d", "1", "|", "nznz"),
+          "residual_jacobian": ("nz", "nn", "d", "1", "|", "nz", "nznz"),
           "update": ("nz", "nn", "d", "1", "|", "nn", "d"),
           "guess": ("d", "nn", "d", "1", "|", "nz"), "legendre": ("nn", "d", "|", "d"),
           "hessian": ("nn", "d", "|", "dd"), "energy": ("nn", "d", "|", "1"),

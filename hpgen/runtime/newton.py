@@ -9,16 +9,30 @@ z <- z - J^{-1} F, inf-norms, theta = ||dz_k|| / ||dz_{k-1}||.
   converges when the linear-rate bound theta/(1 - theta) ||dz|| (or ||dz|| itself) is
   <= SIMPLIFIED_TOL tol (1 + ||z||): the round-off level full Newton's stop leaves.
 - Both stop when ||dz|| stopped decreasing while ||dz|| <= 1e-11 (1 + ||z||) (round-off floor).
+- An iterate that needs J takes F and J from one ``residual_jacobian`` evaluation when the
+  module has that kernel (else ``residual`` then ``jacobian``), the others ``residual`` only.
 Non-finite F, J or z, or an exactly singular J, give code NONFINITE. A first step whose start
 has margin(z, h) <= 0 is DOMAIN at once (h too large for the chart). After convergence
 margin(z, h) > 0 else DOMAIN; a failed Newton whose last iterate lies outside tau's domain
 (finite margin <= 0) is reported as DOMAIN too. Steps after the first start from the previous
-solution z_k, or from the linear predictor 2 z_k - z_{k-1} (options.predictor).
+solution z_k, or with options.predictor from the extrapolation of the last solutions:
+2 z_k - z_{k-1} after one step, 3 (z_k - z_{k-1}) + z_{k-2} after two or more.
+
+The loop runs on lists of Python floats with the generated module's raw kernels
+(``kernels.py`` RAW: lists in, lists out): no numpy array is made per iteration. The linear
+algebra is that of the C template operation for operation (``linear_solver``): an iterate with
+a fresh J solves J dz = F (nz <= 3 by cofactors, else by the LU with partial pivoting) and,
+for simplified Newton, forms J^{-1}, which the other iterates apply as a matrix-vector
+product. For nz <= UNROLL_MAX these are printed once per nz as straight-line Python, so that
+with the same kernels (the backends' kernels are bitwise equal) the Python backend computes
+the same doubles as the C backend; above UNROLL_MAX numpy/LAPACK does the linear algebra,
+which agrees with C to round-off.
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -28,6 +42,13 @@ THETA_MAX = 0.05
 SIMPLIFIED_TOL = 0.01
 DEFAULT_TOL = 1e-14
 DEFAULT_MAXIT = 50
+#: largest nz whose linear algebra is printed as straight-line Python (above: LAPACK)
+UNROLL_MAX = 12
+#: largest nz whose "LU" is the inverse by cofactors in the C template (HPGEN_NZ <= 3)
+COFACTOR_MAX = 3
+
+_INF, _NAN = math.inf, math.nan
+_isfinite = math.isfinite
 
 
 @dataclass(frozen=True)
@@ -35,132 +56,446 @@ class NewtonOptions:
     """Runtime Newton settings (the C backend's ``hpgen_options``)."""
     tol: float = DEFAULT_TOL
     maxit: int = DEFAULT_MAXIT
-    simplified: bool = True      # reuse J (its inverse / LU) across iterations and steps
-    predictor: bool = True       # start step k+1 from 2 z_k - z_{k-1}
+    simplified: bool = True      # reuse J^{-1} across iterations and steps
+    predictor: bool = True       # start step k+1 from the extrapolated last solutions
 
 
 class NewtonMemory:
-    """The Jacobian kept by simplified Newton (None: evaluate at the next iterate)."""
-    __slots__ = ("jinv",)
+    """J^{-1} kept by simplified Newton (None: evaluate J at the next iterate), as
+    ``linear_solver(nz).factor_solve`` returned it."""
+    __slots__ = ("lu",)
 
     def __init__(self):
-        self.jinv = None
+        self.lu = None
 
 
 def norm_inf(x) -> float:
-    return float(np.max(np.abs(x))) if x.size else 0.0
+    """max |x_i| of a sequence of floats, NaN if some x_i is NaN (hpgen_norm_inf); 0 if empty."""
+    if len(x) == 0:
+        return 0.0
+    m = max(map(abs, x))
+    s = sum(x)
+    if s - s == 0.0:        # the sum is finite, so every x_i is (a NaN or inf would not be)
+        return m
+    m = 0.0                 # some x_i non-finite (or the sum overflowed): C's loop
+    for v in x:
+        a = abs(v)
+        if a != a:
+            return a
+        if a > m:
+            m = a
+    return m
 
 
-def newton(fun, z, tol=DEFAULT_TOL, maxit=DEFAULT_MAXIT):
-    """Full Newton for F(z) = 0 from z; ``fun(z) -> (F (m,), J (m, m))``.
+def all_finite(x) -> bool:
+    s = sum(x)
+    return s - s == 0.0 or all(map(_isfinite, x))
 
-    Returns (code, z, iterations, last residual inf-norm). ``fun`` may raise; it is not
-    caught here (the callers use that for the singular-Legendre check).
+
+# ---- linear algebra (templates/kernels.c.j2: hpgen_lu_factor_solve, hpgen_lu_apply) -------
+#
+# The C template keeps the Newton matrix as J^{-1} (explicit, column-major): an iterate with a
+# fresh J solves J dz = F (nz <= 3: cofactors; else the LU with partial pivoting, the diagonal
+# of U stored inverted) and, for simplified Newton, forms J^{-1} from the factors; the other
+# iterates take dz = J^{-1} F, a matrix-vector product. The functions below are printed as
+# straight-line Python for one n (entries as local variables), every operation that of the C
+# loops in the same order.
+
+def _a(i, j):
+    return f"a{i}_{j}"
+
+
+def _x(i, j):
+    return f"x{i}_{j}"
+
+
+def _names(prefix, n):
+    return ", ".join(f"{prefix}{i}" for i in range(n))
+
+
+def _all(n):
+    return [_a(i, j) for j in range(n) for i in range(n)]       # column-major: A[i + j n]
+
+
+def _cofactor_factor_solve(n: int) -> list[str]:
+    """nz <= 3: J^{-1} by cofactors (adjugate / det) and J^{-1} F from the adjugate applied to
+    F then scaled; None when det is zero or not finite (then some entry of J is not finite,
+    or J is singular)."""
+    L = ["def factor_solve(J, F, keep):"]
+    if n == 1:
+        L += ["    a, = J",
+              "    if not a != 0.0 or not _isfinite(a):",
+              "        return None",
+              "    r = 1.0 / a",
+              "    return [F[0] * r], (r,)"]
+    elif n == 2:
+        L += ["    a, c, bb, d = J",
+              "    b0, b1 = F",
+              "    det = a * d - bb * c",
+              "    x0 = d * b0 - bb * b1",
+              "    x1 = a * b1 - c * b0",
+              "    if not det != 0.0 or not _isfinite(det):",
+              "        return None",
+              "    r = 1.0 / det",
+              "    return [x0 * r, x1 * r], (d * r, -c * r, -bb * r, a * r)"]
+    else:
+        L += ["    j00, j10, j20, j01, j11, j21, j02, j12, j22 = J",
+              "    b0, b1, b2 = F",
+              "    c00 = j11 * j22 - j12 * j21",
+              "    c01 = j12 * j20 - j10 * j22",
+              "    c02 = j10 * j21 - j11 * j20",
+              "    c10 = j02 * j21 - j01 * j22",
+              "    c11 = j00 * j22 - j02 * j20",
+              "    c12 = j01 * j20 - j00 * j21",
+              "    c20 = j01 * j12 - j02 * j11",
+              "    c21 = j02 * j10 - j00 * j12",
+              "    c22 = j00 * j11 - j01 * j10",
+              "    det = j00 * c00 + j01 * c01 + j02 * c02",
+              "    x0 = c00 * b0 + c10 * b1 + c20 * b2",
+              "    x1 = c01 * b0 + c11 * b1 + c21 * b2",
+              "    x2 = c02 * b0 + c12 * b1 + c22 * b2",
+              "    if not det != 0.0 or not _isfinite(det):",
+              "        return None",
+              "    r = 1.0 / det",
+              "    return [x0 * r, x1 * r, x2 * r], (c00 * r, c01 * r, c02 * r, c10 * r, "
+              "c11 * r, c12 * r, c20 * r, c21 * r, c22 * r)"]
+    return L
+
+
+def _lu_factor_solve(n: int) -> list[str]:
+    """nz > 3: None if J has a non-finite entry; LU with partial pivoting (pivot: the first
+    row of largest |a_ik|; whole rows interchanged; r = 1 / u_kk stored on the diagonal and
+    the column below scaled by r; column j's update skipped where a_kj = 0); a zero pivot:
+    None. Then dz = J^{-1} F (interchanges, L y = P F, u_kk x_k = y_k - sum_j>k u_kj x_j taken
+    as (...) * r); with keep also J^{-1} from the factors (hpgen_lu_inverse: the columns of
+    P I through the same recurrences, the back substitution column-oriented), None if it has
+    a non-finite entry. Returns (dz, J^{-1} column-major or None)."""
+    names = _all(n)
+    L = ["def factor_solve(J, F, keep):",
+         "    s = sum(J)",
+         "    if not s - s == 0.0 and not all(map(_isfinite, J)):",
+         "        return None",
+         f"    {', '.join(names)}, = J"]
+    for k in range(n):
+        L += [f"    m = abs({_a(k, k)})", f"    q = {k}"]
+        for i in range(k + 1, n):
+            L += [f"    t = abs({_a(i, k)})", "    if t > m:", "        m = t",
+                  f"        q = {i}"]
+        L += ["    if m == 0.0:", "        return None", f"    p{k} = q"]
+        for i in range(k + 1, n):
+            rk = ", ".join(_a(k, j) for j in range(n))
+            ri = ", ".join(_a(i, j) for j in range(n))
+            L += [f"    {'if' if i == k + 1 else 'elif'} q == {i}:",
+                  f"        {rk}, {ri} = {ri}, {rk}"]
+        L += [f"    r = 1.0 / {_a(k, k)}", f"    {_a(k, k)} = r"]
+        L += [f"    {_a(i, k)} = {_a(i, k)} * r" for i in range(k + 1, n)]
+        for j in range(k + 1, n):
+            L.append(f"    if {_a(k, j)} != 0.0:")
+            L += [f"        {_a(i, j)} = {_a(i, j)} - {_a(i, k)} * {_a(k, j)}"
+                  for i in range(k + 1, n)]
+    # the interchanges b_k <-> b_piv[k] (k = 0, 1, ...) composed: P b = [b[perm[i]] for i]
+    L.append(f"    perm = list(range({n}))")
+    L += [f"    perm[{k}], perm[p{k}] = perm[p{k}], perm[{k}]" for k in range(n)]
+    L.append(f"    {_names('b', n)}, = [F[i] for i in perm]")
+    for k in range(n):
+        L += [f"    b{i} = b{i} - {_a(i, k)} * b{k}" for i in range(k + 1, n)]
+    for k in range(n - 1, -1, -1):
+        rhs = f"b{k}" + "".join(f" - {_a(k, j)} * b{j}" for j in range(k + 1, n))
+        L.append(f"    b{k} = ({rhs}) * {_a(k, k)}" if k + 1 < n else
+                 f"    b{k} = {rhs} * {_a(k, k)}")
+    L += [f"    dz = [{_names('b', n)}]", "    if not keep:", "        return dz, None"]
+    # J^{-1}: column j starts as column j of P I, the unit vector e_m with perm[m] = j
+    L.append(f"    inv = [0] * {n}")
+    L += ["    for i, q in enumerate(perm):", "        inv[q] = i"]
+    for j in range(n):
+        L.append(f"    {', '.join(_x(i, j) for i in range(n))}, = _UNIT{n}[inv[{j}]]")
+        for k in range(n - 1):
+            L.append(f"    if {_x(k, j)} != 0.0:")
+            L += [f"        {_x(i, j)} = {_x(i, j)} - {_a(i, k)} * {_x(k, j)}"
+                  for i in range(k + 1, n)]
+        for k in range(n - 1, -1, -1):
+            L.append(f"    {_x(k, j)} = {_x(k, j)} * {_a(k, k)}")
+            L += [f"    {_x(i, j)} = {_x(i, j)} - {_a(i, k)} * {_x(k, j)}" for i in range(k)]
+    L.append(f"    X = ({', '.join(_x(i, j) for j in range(n) for i in range(n))},)")
+    L += ["    s = sum(X)", "    if not s - s == 0.0 and not all(map(_isfinite, X)):",
+          "        return None", "    return dz, X"]
+    return L
+
+
+def _matvec(n: int) -> list[str]:
+    """x = A b, A = J^{-1} column-major in f, b in F: x_i = A_i0 b_0, then x_i += A_ij b_j for
+    j = 1, 2, ... (hpgen_lu_apply)."""
+    return [f"    {', '.join(_all(n))}, = f", f"    {_names('c', n)}, = F"] + [
+        f"    b{i} = " + " + ".join(f"{_a(i, j)} * c{j}" for j in range(n)) for i in range(n)]
+
+
+def _finish(n: int) -> list[str]:
+    """z - dz (dz in b0..) and the inf-norms of dz and of the new z; None if some entry is
+    not finite (or a sum of entries overflows): the caller then takes the general path."""
+    return [f"    {_names('z', n)}, = z"] + [f"    z{i} = z{i} - b{i}" for i in range(n)] + [
+        f"    s = {' + '.join(f'b{i}' for i in range(n))}",
+        f"    t = {' + '.join(f'z{i}' for i in range(n))}",
+        "    if not (s - s == 0.0 and t - t == 0.0):", "        return None"
+    ] + _max_abs("b", "dn", n) + _max_abs("z", "zn", n) + [
+        f"    return [{_names('z', n)}], dn, zn"]
+
+
+def _max_abs(v, m, n):
+    """m = max |v_i| over finite v_i, as hpgen_norm_inf (from 0.0 up; a -0.0 entry gives
+    t = -0.0, which is not > m)."""
+    L = [f"    {m} = 0.0"]
+    for i in range(n):
+        L += [f"    t = {v}{i} if {v}{i} >= 0.0 else -{v}{i}", f"    if t > {m}:",
+              f"        {m} = t"]
+    return L
+
+
+@lru_cache(maxsize=None)
+def linear_solver_source(n: int) -> str:
+    """The Python source of ``factor_solve``, ``apply``, ``update`` and ``finish`` for
+    nz = n <= UNROLL_MAX (deterministic): see linear_solver."""
+    if not 1 <= n <= UNROLL_MAX:
+        raise ValueError(f"no straight-line solver for n = {n}")
+    L = _cofactor_factor_solve(n) if n <= COFACTOR_MAX else _lu_factor_solve(n)
+    L += ["", "", "def apply(f, F):"] + _matvec(n) + [f"    return [{_names('b', n)}]"]
+    # a non-finite F_j makes every entry of f F non-finite (finite * inf is inf or nan): the
+    # check of f F in _finish covers F
+    L += ["", "", "def update(f, F, z):"] + _matvec(n) + _finish(n)
+    L += ["", "", "def finish(dz, z):", f"    {_names('b', n)}, = dz"] + _finish(n)
+    return "\n".join(L) + "\n"
+
+
+class LinearSolver:
+    """The linear algebra of Newton for n x n systems (linear_solver)."""
+    __slots__ = ("n", "factor_solve", "apply", "update", "finish")
+
+    def __init__(self, n, factor_solve, apply, update=None, finish=None):
+        self.n, self.factor_solve, self.apply = n, factor_solve, apply
+        self.update, self.finish = update, finish
+
+
+def _numpy_solver(n: int) -> LinearSolver:
+    """Above UNROLL_MAX: LAPACK through numpy (agrees with the C template to round-off)."""
+    def factor_solve(J, F, keep):
+        if not all_finite(J):
+            return None
+        A = np.array(J, dtype=np.float64).reshape(n, n, order="F")
+        with np.errstate(all="ignore"):
+            try:
+                if not keep:
+                    return np.linalg.solve(A, np.array(F, dtype=np.float64)).tolist(), None
+                X = np.linalg.inv(A)
+            except np.linalg.LinAlgError:
+                return None
+            if not np.isfinite(X).all():
+                return None
+            return (X @ np.array(F, dtype=np.float64)).tolist(), X
+
+    def apply(X, F):
+        with np.errstate(all="ignore"):
+            return (X @ np.array(F, dtype=np.float64)).tolist()
+    return LinearSolver(n, factor_solve, apply)
+
+
+@lru_cache(maxsize=None)
+def linear_solver(n: int) -> LinearSolver:
+    """The Newton linear algebra for n x n systems, as in the C template:
+    factor_solve(J flat column-major, F, keep) -> (J^{-1} F as a list, J^{-1} if keep else
+    None), or None when J has a non-finite entry or is singular; apply(f, F) -> f F (f a
+    kept J^{-1}); update(f, F, z) -> (z - f F, |f F|, |z - f F|) and finish(dz, z) -> (z - dz,
+    |dz|, |z - dz|) (inf-norms), each None when some entry is not finite (or a sum of
+    entries overflows), where the caller takes the general path. For n > UNROLL_MAX:
+    numpy/LAPACK, update and finish None."""
+    if n > UNROLL_MAX:
+        return _numpy_solver(n)
+    ns = {"_isfinite": _isfinite,
+          f"_UNIT{n}": tuple(tuple(1.0 if i == m else 0.0 for i in range(n)) for m in range(n))}
+    exec(compile(linear_solver_source(n), f"<hpgen linear solver n={n}>", "exec"), ns)
+    return LinearSolver(n, ns["factor_solve"], ns["apply"], ns["update"], ns["finish"])
+
+
+# ---- Newton --------------------------------------------------------------------------------
+
+class Kernels:
+    """The kernels the Newton loop calls, on lists of Python floats (``kernels.py`` RAW):
+    name(*args) -> list of output lists. residual_jacobian may be None (then residual and
+    jacobian are called in turn); update and margin are needed by step_lists only. Holds the
+    linear solver for nz (linear_solver)."""
+    __slots__ = ("residual", "jacobian", "residual_jacobian", "update", "margin", "linear",
+                 "nz")
+
+    def __init__(self, nz, residual, jacobian, residual_jacobian=None, update=None,
+                 margin=None):
+        self.nz = nz
+        self.residual, self.jacobian = residual, jacobian
+        self.residual_jacobian = residual_jacobian
+        self.update, self.margin = update, margin
+        self.linear = linear_solver(nz)
+
+    @classmethod
+    def from_raw(cls, nz, raw: dict) -> "Kernels":
+        return cls(nz, raw["residual"], raw["jacobian"], raw.get("residual_jacobian"),
+                   raw.get("update"), raw.get("margin"))
+
+
+def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory):
+    """Newton (full or simplified, see the module docstring) from z (a list of floats) on
+    kern.residual(z, g, p, hv) = 0: the C template's hpgen_newton.
+
+    Returns (code, z (list), iterations, last residual inf-norm, Jacobian evaluations).
     """
-    last = {}
-
-    def residual(zz):
-        # full Newton asks for J at the iterate whose F it just took: evaluate fun once
-        last["F"], last["J"] = fun(zz)
-        return last["F"]
-
-    code, z, it, r, _ = solve(residual, lambda zz: last["J"], z,
-                              NewtonOptions(tol, maxit, simplified=False), NewtonMemory())
-    return code, z, it, r
-
-
-def solve(residual, jacobian, z, opts: NewtonOptions, memory: NewtonMemory):
-    """Newton (full or simplified, see the module docstring) from z.
-
-    Returns (code, z, iterations, last residual inf-norm, Jacobian evaluations).
-    """
-    z = np.array(z, dtype=np.float64)
-    dprev, rnorm, jacs = math.inf, math.nan, 0
+    residual, jacobian, both = kern.residual, kern.jacobian, kern.residual_jacobian
+    lin = kern.linear
+    factor_solve, apply, update, finish = lin.factor_solve, lin.apply, lin.update, lin.finish
+    tol, keep = opts.tol, opts.simplified
+    stol = SIMPLIFIED_TOL * tol
+    dprev, jacs, F = _INF, 0, None
     full, fresh = not opts.simplified, False
     for it in range(1, opts.maxit + 1):
-        F = residual(z)
-        rnorm = norm_inf(F)
-        if not math.isfinite(rnorm):
-            return NONFINITE, z, it, rnorm, jacs
-        if full or memory.jinv is None:
-            memory.jinv = None
+        if full or memory.lu is None:
+            # F and a fresh J (one evaluation when the module has residual_jacobian)
+            memory.lu = None
             jacs += 1
-            J = jacobian(z)
-            if not np.isfinite(J).all():
-                return NONFINITE, z, it, rnorm, jacs
-            try:
-                memory.jinv = np.linalg.inv(J)
-            except np.linalg.LinAlgError:
-                return NONFINITE, z, it, rnorm, jacs
+            if both is not None:
+                F, J = both(z, g, p, hv)
+            else:
+                F = residual(z, g, p, hv)[0]
+                J = jacobian(z, g, p, hv)[0]
+            if not all_finite(F):
+                return NONFINITE, z, it, norm_inf(F), jacs
+            res = factor_solve(J, F, keep)
+            if res is None:
+                return NONFINITE, z, it, norm_inf(F), jacs
+            dz = res[0]
+            if keep:                     # J^{-1} kept only for simplified Newton
+                memory.lu = res[1]
             fresh = True
-        dz = memory.jinv @ F
-        z = z - dz
-        dn, zn = norm_inf(dz), norm_inf(z)
-        if not (math.isfinite(dn) and math.isfinite(zn)):
-            return NONFINITE, z, it, rnorm, jacs
+            new = finish(dz, z) if finish is not None else None
+        else:
+            F = residual(z, g, p, hv)[0]
+            new = update(memory.lu, F, z) if update is not None else None
+            dz = None
+        # the residual's norm is only reported: it is taken when returning (the same value)
+        if new is not None:
+            z, dn, zn = new
+        else:
+            # some entry not finite (or a sum overflowed): step by step as in C
+            rnorm = norm_inf(F)
+            if not rnorm < _INF:
+                return NONFINITE, z, it, rnorm, jacs
+            if dz is None:
+                dz = apply(memory.lu, F)
+            z = [a - b for a, b in zip(z, dz)]
+            dn, zn = norm_inf(dz), norm_inf(z)
+            if not (dn < _INF and zn < _INF):
+                return NONFINITE, z, it, rnorm, jacs
         if it > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + zn):
-            return OK, z, it, rnorm, jacs
+            return OK, z, it, norm_inf(F), jacs
         if full:
             # quadratic convergence: the error left after dn <= tol is about C tol^2
-            if dn <= opts.tol * (1.0 + zn):
-                return OK, z, it, rnorm, jacs
+            if dn <= tol * (1.0 + zn):
+                return OK, z, it, norm_inf(F), jacs
         else:
             # linear convergence: the error left is about theta/(1 - theta) dn
             th = dn / dprev
-            if dn <= SIMPLIFIED_TOL * opts.tol * (1.0 + zn):
-                return OK, z, it, rnorm, jacs
-            if it > 1 and th < 1.0 and th / (1.0 - th) * dn <= SIMPLIFIED_TOL * opts.tol * (1.0 + zn):
-                return OK, z, it, rnorm, jacs
+            if dn <= stol * (1.0 + zn):
+                return OK, z, it, norm_inf(F), jacs
+            if it > 1 and th < 1.0 and th / (1.0 - th) * dn <= stol * (1.0 + zn):
+                return OK, z, it, norm_inf(F), jacs
         if not full and it > 1 and dn > THETA_MAX * dprev:
             if fresh:
                 full = True          # a fresh J contracts poorly: full Newton
             else:
-                memory.jinv = None   # a stale J: refresh it at the next iterate
+                memory.lu = None     # a stale J: refresh it at the next iterate
         dprev = dn
-    return NO_CONVERGENCE, z, opts.maxit, rnorm, jacs
+    return NO_CONVERGENCE, z, opts.maxit, (_NAN if F is None else norm_inf(F)), jacs
+
+
+def newton(fun, z, tol=DEFAULT_TOL, maxit=DEFAULT_MAXIT):
+    """Full Newton for F(z) = 0 from z; ``fun(z (m,) array) -> (F (m,), J (m, m))``.
+
+    Returns (code, z (m,) array, iterations, last residual inf-norm). ``fun`` may raise; it
+    is not caught here (the callers use that for the singular-Legendre check).
+    """
+    z = np.array(z, dtype=np.float64)
+    m = z.shape[0]
+
+    def both(zz, *_):
+        F, J = fun(np.array(zz, dtype=np.float64))
+        return (np.asarray(F, dtype=np.float64).tolist(),
+                np.asarray(J, dtype=np.float64).ravel(order="F").tolist())
+
+    code, zl, it, r, _ = solve(Kernels(m, None, None, both), z.tolist(), None, None, None,
+                               NewtonOptions(tol, maxit, simplified=False), NewtonMemory())
+    return code, np.array(zl, dtype=np.float64), it, r
+
+
+def step_lists(kern: Kernels, g, p, hv, z, opts: NewtonOptions, memory: NewtonMemory,
+               check_start=True):
+    """One step on lists of floats (the C template's hpgen_step_core): margin at the start
+    (check_start), Newton from z, margin at the solution, update.
+
+    Returns (code, g1, p1, z, iterations, residual norm, Jacobian evaluations); g1/p1 are
+    lists, None on failure.
+    """
+    margin = kern.margin
+    # a start outside the chart (h too large): no Newton. Later starts are built from earlier
+    # solutions, whose margins (same h) were checked after they converged.
+    if check_start and margin(z, hv)[0][0] <= 0.0:
+        return DOMAIN, None, None, z, 0, _NAN, 0
+    code, z, it, r, jacs = solve(kern, z, g, p, hv, opts, memory)
+    m = margin(z, hv)[0][0]
+    if code != OK:
+        memory.lu = None
+        # a failure at an iterate outside tau's domain is reported as a domain error
+        return (DOMAIN if m <= 0.0 else code), None, None, z, it, r, jacs
+    if not m > 0.0:
+        return DOMAIN, None, None, z, it, r, jacs
+    g1, p1 = kern.update(z, g, p, hv)
+    if not (all_finite(g1) and all_finite(p1)):
+        return NONFINITE, None, None, z, it, r, jacs
+    return OK, g1, p1, z, it, r, jacs
+
+
+def _floats(x) -> list:
+    return np.asarray(x, dtype=np.float64).ravel().tolist()
+
+
+def kernels_from_call(call, nz: int) -> Kernels:
+    """Kernels from ``call(name, *args) -> [outputs]`` (any array-likes, e.g.
+    Integrator.kernel of either backend)."""
+    def raw(name):
+        return lambda *args: [_floats(o) for o in call(name, *args)]
+    return Kernels(nz, raw("residual"), raw("jacobian"), None, raw("update"), raw("margin"))
 
 
 def step_core(call, nz, g, p, hv, z, opts: NewtonOptions, memory: NewtonMemory,
               check_start=True):
     """One step with kernels ``call(name, *args) -> [outputs]`` (flat column-major args).
 
-    Returns (code, g1 flat, p1, z, iterations, residual norm, Jacobian evaluations); g1/p1
-    are None on failure.
+    Returns (code, g1 flat, p1, z, iterations, residual norm, Jacobian evaluations) as numpy
+    arrays; g1/p1 are None on failure.
     """
-    def residual(zz):
-        return call("residual", zz, g, p, hv)[0]
+    return _arrays(step_lists(kernels_from_call(call, nz), _floats(g), _floats(p),
+                              _floats(hv), _floats(z), opts, memory, check_start))
 
-    def jacobian(zz):
-        return call("jacobian", zz, g, p, hv)[0].reshape(nz, nz, order="F")
 
-    with np.errstate(all="ignore"):
-        # a start outside the chart (h too large): no Newton. Later starts are built from
-        # earlier solutions, whose margins (same h) were checked after they converged.
-        if check_start and call("margin", z, hv)[0][0] <= 0.0:
-            return DOMAIN, None, None, z, 0, math.nan, 0
-        code, z, it, r, jacs = solve(residual, jacobian, z, opts, memory)
-        m = call("margin", z, hv)[0][0]
-        if code != OK:
-            memory.jinv = None
-            # a failure at an iterate outside tau's domain is reported as a domain error
-            return (DOMAIN if m <= 0.0 else code), None, None, z, it, r, jacs
-        if not m > 0.0:
-            return DOMAIN, None, None, z, it, r, jacs
-        g1, p1 = call("update", z, g, p, hv)
-        if not (np.isfinite(g1).all() and np.isfinite(p1).all()):
-            return NONFINITE, None, None, z, it, r, jacs
-    return OK, g1, p1, z, it, r, jacs
+def _arrays(res):
+    code, g1, p1, z, it, r, jacs = res
+    if g1 is not None:
+        g1, p1 = np.array(g1, dtype=np.float64), np.array(p1, dtype=np.float64)
+    return code, g1, p1, np.array(z, dtype=np.float64), it, r, jacs
 
 
 class Run:
     """A run in progress (the C backend's ``hpgen_run``): state (g_k, p_k) flat, the last
-    solution z, the one before (predictor), the Newton memory and the steps done k."""
+    solution z, the two before (zprev, zprev2: predictor; have_prev of them valid), the Newton
+    memory and the steps done k; vectors are lists of Python floats."""
 
     def __init__(self, g0, p0, z0):
-        self.g = np.array(g0, dtype=np.float64)
-        self.p = np.array(p0, dtype=np.float64)
-        self.z = np.array(z0, dtype=np.float64)
-        self.zprev = None
+        self.g, self.p, self.z = _floats(g0), _floats(p0), _floats(z0)
+        self.zprev = self.zprev2 = None
+        self.have_prev = 0
         self.memory = NewtonMemory()
         self.k = 0
 
@@ -170,31 +505,43 @@ def new_status() -> dict:
             "jacobians": 0}
 
 
-def advance(call, nz, run: Run, h, steps, every, opts: NewtonOptions):
+def advance(kern: Kernels, run: Run, h, steps, every, opts: NewtonOptions):
     """Advance ``run`` by ``steps`` steps like ``hpgen_advance`` in C.
 
-    Returns (steps done, records [(g flat, p)] of the global steps k % every == 0 reached,
-    status dict with code, step, iterations, total_iterations, residual, jacobians).
+    Returns (steps done, records [(g flat, p)] (lists) of the global steps k % every == 0
+    reached, status dict with code, step, iterations, total_iterations, residual, jacobians).
     """
-    hv = np.array([h], dtype=np.float64)
+    hv = [float(h)]
     st, recs = new_status(), []
     full = NewtonOptions(opts.tol, opts.maxit, False, opts.predictor)
+    predictor = opts.predictor
+    total = jacobians = 0
     for n in range(steps):
-        zs = run.z if not (opts.predictor and run.zprev is not None) else 2.0 * run.z - run.zprev
+        # start: the polynomial through the last solutions, extrapolated one step (quadratic
+        # 3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before)
+        if predictor and run.have_prev >= 2:
+            zs = [3.0 * (a - b) + c for a, b, c in zip(run.z, run.zprev, run.zprev2)]
+        elif predictor and run.have_prev == 1:
+            zs = [2.0 * a - b for a, b in zip(run.z, run.zprev)]
+        else:
+            zs = run.z
+        first = run.k == 0
         # the first step starts from the crude guess kernel: full Newton
-        code, g1, p1, zs, it, r, jacs = step_core(call, nz, run.g, run.p, hv, zs,
-                                                  full if run.k == 0 else opts, run.memory,
-                                                  run.k == 0)
-        st["iterations"], st["residual"] = it, r
-        st["total_iterations"] += it
-        st["jacobians"] += jacs
+        code, g1, p1, zs, it, r, jacs = step_lists(kern, run.g, run.p, hv, zs,
+                                                   full if first else opts, run.memory, first)
+        total += it
+        jacobians += jacs
         if code != OK:
-            st["code"], st["step"] = code, run.k
+            st.update(code=code, step=run.k, iterations=it, residual=r,
+                      total_iterations=total, jacobians=jacobians)
             return n, recs, st
-        run.zprev, run.z = run.z, zs
+        run.zprev2, run.zprev, run.z = run.zprev, run.z, zs
+        if run.have_prev < 2:
+            run.have_prev += 1
         run.g, run.p = g1, p1
         run.k += 1
         if run.k % every == 0:
             recs.append((g1, p1))
-    st["step"] = run.k
+        st["iterations"], st["residual"] = it, r
+    st.update(step=run.k, total_iterations=total, jacobians=jacobians)
     return steps, recs, st

@@ -47,6 +47,8 @@ def toy_step(margin=None, name="free_rigid_body", inertia=INERTIA) -> DiscreteSt
     defs = {
         "residual": ((z, g, p, h), ("z", "g", "p", "h"), [F], ("F",)),
         "jacobian": ((z, g, p, h), ("z", "g", "p", "h"), [ca.vec(ca.jacobian(F, z))], ("J",)),
+        "residual_jacobian": ((z, g, p, h), ("z", "g", "p", "h"),
+                              [F, ca.vec(ca.jacobian(F, z))], ("F", "J")),
         "update": ((z, g, p, h), ("z", "g", "p", "h"),
                    [ca.vec(ca.mtimes(G, cay(h * z))), ca.mtimes(dcayinv(-h * z).T, Iz)],
                    ("g1", "p1")),
