@@ -3,7 +3,7 @@
  * model: double_body_chain
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 8a19943a84e47b340306c3f03856b84c0c37c55e94fd7f35fad6613076b7bb92
+ * content hash: 08b5ad8b29d4065dec52af7e613a126f48221075f3032a67bdb3649b7193f6bc
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -3214,7 +3214,7 @@ typedef struct hpgen_run {
     long long lu_valid;              /* lu holds J^{-1} */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "8a19943a84e47b340306c3f03856b84c0c37c55e94fd7f35fad6613076b7bb92"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "08b5ad8b29d4065dec52af7e613a126f48221075f3032a67bdb3649b7193f6bc"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -3228,7 +3228,9 @@ HPGEN_EXPORT void hpgen_dims(long long* out) {
 #define HPGEN_RESIDUAL_SZ_RES 1
 #define HPGEN_RESIDUAL_SZ_IW 0
 #define HPGEN_RESIDUAL_SZ_W 42
-HPGEN_EXPORT int hpgen_kernel_residual(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_residual exports it */
+static int hpgen_k_residual(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
     const casadi_real* arg[HPGEN_RESIDUAL_SZ_ARG + 1];
     casadi_real* res[HPGEN_RESIDUAL_SZ_RES + 1];
     casadi_int iw[HPGEN_RESIDUAL_SZ_IW + 1];
@@ -3244,12 +3246,18 @@ HPGEN_EXPORT int hpgen_kernel_residual(const double* in0, const double* in1, con
     return flag;
 }
 
+HPGEN_EXPORT int hpgen_kernel_residual(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_residual(in0, in1, in2, in3, out0);
+}
+
 /* jacobian(z[6], g[36], p[6], h[1]) -> (J[36]) */
 #define HPGEN_JACOBIAN_SZ_ARG 4
 #define HPGEN_JACOBIAN_SZ_RES 1
 #define HPGEN_JACOBIAN_SZ_IW 0
 #define HPGEN_JACOBIAN_SZ_W 26
-HPGEN_EXPORT int hpgen_kernel_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_jacobian exports it */
+static int hpgen_k_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
     const casadi_real* arg[HPGEN_JACOBIAN_SZ_ARG + 1];
     casadi_real* res[HPGEN_JACOBIAN_SZ_RES + 1];
     casadi_int iw[HPGEN_JACOBIAN_SZ_IW + 1];
@@ -3265,12 +3273,18 @@ HPGEN_EXPORT int hpgen_kernel_jacobian(const double* in0, const double* in1, con
     return flag;
 }
 
+HPGEN_EXPORT int hpgen_kernel_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_jacobian(in0, in1, in2, in3, out0);
+}
+
 /* residual_jacobian(z[6], g[36], p[6], h[1]) -> (F[6], J[36]) */
 #define HPGEN_RESIDUAL_JACOBIAN_SZ_ARG 4
 #define HPGEN_RESIDUAL_JACOBIAN_SZ_RES 2
 #define HPGEN_RESIDUAL_JACOBIAN_SZ_IW 0
 #define HPGEN_RESIDUAL_JACOBIAN_SZ_W 51
-HPGEN_EXPORT int hpgen_kernel_residual_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1) {
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_residual_jacobian exports it */
+static int hpgen_k_residual_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1) {
     const casadi_real* arg[HPGEN_RESIDUAL_JACOBIAN_SZ_ARG + 1];
     casadi_real* res[HPGEN_RESIDUAL_JACOBIAN_SZ_RES + 1];
     casadi_int iw[HPGEN_RESIDUAL_JACOBIAN_SZ_IW + 1];
@@ -3287,12 +3301,18 @@ HPGEN_EXPORT int hpgen_kernel_residual_jacobian(const double* in0, const double*
     return flag;
 }
 
+HPGEN_EXPORT int hpgen_kernel_residual_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1) {
+    return hpgen_k_residual_jacobian(in0, in1, in2, in3, out0, out1);
+}
+
 /* update(z[6], g[36], p[6], h[1]) -> (g1[36], p1[6]) */
 #define HPGEN_UPDATE_SZ_ARG 4
 #define HPGEN_UPDATE_SZ_RES 2
 #define HPGEN_UPDATE_SZ_IW 0
 #define HPGEN_UPDATE_SZ_W 70
-HPGEN_EXPORT int hpgen_kernel_update(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1) {
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_update exports it */
+static int hpgen_k_update(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1) {
     const casadi_real* arg[HPGEN_UPDATE_SZ_ARG + 1];
     casadi_real* res[HPGEN_UPDATE_SZ_RES + 1];
     casadi_int iw[HPGEN_UPDATE_SZ_IW + 1];
@@ -3309,12 +3329,18 @@ HPGEN_EXPORT int hpgen_kernel_update(const double* in0, const double* in1, const
     return flag;
 }
 
+HPGEN_EXPORT int hpgen_kernel_update(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1) {
+    return hpgen_k_update(in0, in1, in2, in3, out0, out1);
+}
+
 /* guess(xi[6], g[36], p[6], h[1]) -> (z0[6]) */
 #define HPGEN_GUESS_SZ_ARG 4
 #define HPGEN_GUESS_SZ_RES 1
 #define HPGEN_GUESS_SZ_IW 0
 #define HPGEN_GUESS_SZ_W 1
-HPGEN_EXPORT int hpgen_kernel_guess(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_guess exports it */
+static int hpgen_k_guess(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
     const casadi_real* arg[HPGEN_GUESS_SZ_ARG + 1];
     casadi_real* res[HPGEN_GUESS_SZ_RES + 1];
     casadi_int iw[HPGEN_GUESS_SZ_IW + 1];
@@ -3330,12 +3356,18 @@ HPGEN_EXPORT int hpgen_kernel_guess(const double* in0, const double* in1, const 
     return flag;
 }
 
+HPGEN_EXPORT int hpgen_kernel_guess(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_guess(in0, in1, in2, in3, out0);
+}
+
 /* legendre(g[36], xi[6]) -> (mu[6]) */
 #define HPGEN_LEGENDRE_SZ_ARG 2
 #define HPGEN_LEGENDRE_SZ_RES 1
 #define HPGEN_LEGENDRE_SZ_IW 0
 #define HPGEN_LEGENDRE_SZ_W 2
-HPGEN_EXPORT int hpgen_kernel_legendre(const double* in0, const double* in1, double* out0) {
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_legendre exports it */
+static int hpgen_k_legendre(const double* in0, const double* in1, double* out0) {
     const casadi_real* arg[HPGEN_LEGENDRE_SZ_ARG + 1];
     casadi_real* res[HPGEN_LEGENDRE_SZ_RES + 1];
     casadi_int iw[HPGEN_LEGENDRE_SZ_IW + 1];
@@ -3349,12 +3381,18 @@ HPGEN_EXPORT int hpgen_kernel_legendre(const double* in0, const double* in1, dou
     return flag;
 }
 
+HPGEN_EXPORT int hpgen_kernel_legendre(const double* in0, const double* in1, double* out0) {
+    return hpgen_k_legendre(in0, in1, out0);
+}
+
 /* hessian(g[36], xi[6]) -> (H[36]) */
 #define HPGEN_HESSIAN_SZ_ARG 2
 #define HPGEN_HESSIAN_SZ_RES 1
 #define HPGEN_HESSIAN_SZ_IW 0
 #define HPGEN_HESSIAN_SZ_W 2
-HPGEN_EXPORT int hpgen_kernel_hessian(const double* in0, const double* in1, double* out0) {
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_hessian exports it */
+static int hpgen_k_hessian(const double* in0, const double* in1, double* out0) {
     const casadi_real* arg[HPGEN_HESSIAN_SZ_ARG + 1];
     casadi_real* res[HPGEN_HESSIAN_SZ_RES + 1];
     casadi_int iw[HPGEN_HESSIAN_SZ_IW + 1];
@@ -3368,12 +3406,18 @@ HPGEN_EXPORT int hpgen_kernel_hessian(const double* in0, const double* in1, doub
     return flag;
 }
 
+HPGEN_EXPORT int hpgen_kernel_hessian(const double* in0, const double* in1, double* out0) {
+    return hpgen_k_hessian(in0, in1, out0);
+}
+
 /* energy(g[36], xi[6]) -> (E[1]) */
 #define HPGEN_ENERGY_SZ_ARG 2
 #define HPGEN_ENERGY_SZ_RES 1
 #define HPGEN_ENERGY_SZ_IW 0
 #define HPGEN_ENERGY_SZ_W 11
-HPGEN_EXPORT int hpgen_kernel_energy(const double* in0, const double* in1, double* out0) {
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_energy exports it */
+static int hpgen_k_energy(const double* in0, const double* in1, double* out0) {
     const casadi_real* arg[HPGEN_ENERGY_SZ_ARG + 1];
     casadi_real* res[HPGEN_ENERGY_SZ_RES + 1];
     casadi_int iw[HPGEN_ENERGY_SZ_IW + 1];
@@ -3387,12 +3431,18 @@ HPGEN_EXPORT int hpgen_kernel_energy(const double* in0, const double* in1, doubl
     return flag;
 }
 
+HPGEN_EXPORT int hpgen_kernel_energy(const double* in0, const double* in1, double* out0) {
+    return hpgen_k_energy(in0, in1, out0);
+}
+
 /* momentum(g[36], p[6]) -> (m[6]) */
 #define HPGEN_MOMENTUM_SZ_ARG 2
 #define HPGEN_MOMENTUM_SZ_RES 1
 #define HPGEN_MOMENTUM_SZ_IW 0
 #define HPGEN_MOMENTUM_SZ_W 14
-HPGEN_EXPORT int hpgen_kernel_momentum(const double* in0, const double* in1, double* out0) {
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_momentum exports it */
+static int hpgen_k_momentum(const double* in0, const double* in1, double* out0) {
     const casadi_real* arg[HPGEN_MOMENTUM_SZ_ARG + 1];
     casadi_real* res[HPGEN_MOMENTUM_SZ_RES + 1];
     casadi_int iw[HPGEN_MOMENTUM_SZ_IW + 1];
@@ -3406,12 +3456,18 @@ HPGEN_EXPORT int hpgen_kernel_momentum(const double* in0, const double* in1, dou
     return flag;
 }
 
+HPGEN_EXPORT int hpgen_kernel_momentum(const double* in0, const double* in1, double* out0) {
+    return hpgen_k_momentum(in0, in1, out0);
+}
+
 /* defect(g[36]) -> (e[1]) */
 #define HPGEN_DEFECT_SZ_ARG 1
 #define HPGEN_DEFECT_SZ_RES 1
 #define HPGEN_DEFECT_SZ_IW 0
 #define HPGEN_DEFECT_SZ_W 14
-HPGEN_EXPORT int hpgen_kernel_defect(const double* in0, double* out0) {
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_defect exports it */
+static int hpgen_k_defect(const double* in0, double* out0) {
     const casadi_real* arg[HPGEN_DEFECT_SZ_ARG + 1];
     casadi_real* res[HPGEN_DEFECT_SZ_RES + 1];
     casadi_int iw[HPGEN_DEFECT_SZ_IW + 1];
@@ -3424,12 +3480,18 @@ HPGEN_EXPORT int hpgen_kernel_defect(const double* in0, double* out0) {
     return flag;
 }
 
+HPGEN_EXPORT int hpgen_kernel_defect(const double* in0, double* out0) {
+    return hpgen_k_defect(in0, out0);
+}
+
 /* margin(z[6], h[1]) -> (m[1]) */
 #define HPGEN_MARGIN_SZ_ARG 2
 #define HPGEN_MARGIN_SZ_RES 1
 #define HPGEN_MARGIN_SZ_IW 0
 #define HPGEN_MARGIN_SZ_W 6
-HPGEN_EXPORT int hpgen_kernel_margin(const double* in0, const double* in1, double* out0) {
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_margin exports it */
+static int hpgen_k_margin(const double* in0, const double* in1, double* out0) {
     const casadi_real* arg[HPGEN_MARGIN_SZ_ARG + 1];
     casadi_real* res[HPGEN_MARGIN_SZ_RES + 1];
     casadi_int iw[HPGEN_MARGIN_SZ_IW + 1];
@@ -3441,6 +3503,10 @@ HPGEN_EXPORT int hpgen_kernel_margin(const double* in0, const double* in1, doubl
     flag = margin(arg, res, iw, w, 0);
     (void)i;
     return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_margin(const double* in0, const double* in1, double* out0) {
+    return hpgen_k_margin(in0, in1, out0);
 }
 
 /* ---- dense linear algebra and Newton ---- */
@@ -3638,14 +3704,14 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
             /* F and a fresh J in one evaluation (their common subexpressions once) */
             *lu_valid = 0;
             ++*jacs;
-            if (hpgen_kernel_residual_jacobian(z, g, p, hv, F, lu)) return HPGEN_NONFINITE;
+            if (hpgen_k_residual_jacobian(z, g, p, hv, F, lu)) return HPGEN_NONFINITE;
             *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
             if (!isfinite(*rnorm) || hpgen_lu_factor_solve(lu, piv, F, o->simplified))
                 return HPGEN_NONFINITE;
             *lu_valid = o->simplified ? 1 : 0;   /* lu holds J^{-1} only when it is kept */
             fresh = 1;
         } else {
-            if (hpgen_kernel_residual(z, g, p, hv, F)) return HPGEN_NONFINITE;
+            if (hpgen_k_residual(z, g, p, hv, F)) return HPGEN_NONFINITE;
             *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
             if (!isfinite(*rnorm)) return HPGEN_NONFINITE;
             hpgen_lu_apply(lu, piv, F);
@@ -3691,7 +3757,7 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
     /* a start outside tau's domain means h is too large for the chart: do not let Newton
        wander to a spurious root from there. Only needed for a start that is not built from
        the previous steps' solutions (whose margins, same h, were checked). */
-    if (check_start && !hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) {
+    if (check_start && !hpgen_k_margin(z, hv, m) && m[0] <= 0.0) {
         *iters = 0; *rnorm = NAN;
         return HPGEN_DOMAIN;
     }
@@ -3699,12 +3765,12 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
     if (code != HPGEN_OK) {
         *lu_valid = 0;
         /* a failure at an iterate outside tau's domain is reported as a domain error */
-        if (!hpgen_kernel_margin(z, hv, m) && m[0] <= 0.0) return HPGEN_DOMAIN;
+        if (!hpgen_k_margin(z, hv, m) && m[0] <= 0.0) return HPGEN_DOMAIN;
         return code;
     }
-    if (hpgen_kernel_margin(z, hv, m)) return HPGEN_NONFINITE;
+    if (hpgen_k_margin(z, hv, m)) return HPGEN_NONFINITE;
     if (!(m[0] > 0.0)) return HPGEN_DOMAIN;
-    if (hpgen_kernel_update(z, g, p, hv, g1, p1)) return HPGEN_NONFINITE;
+    if (hpgen_k_update(z, g, p, hv, g1, p1)) return HPGEN_NONFINITE;
     if (!hpgen_all_finite(g1, HPGEN_NN) || !hpgen_all_finite(p1, HPGEN_D))
         return HPGEN_NONFINITE;
     return HPGEN_OK;

@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 8a19943a84e47b340306c3f03856b84c0c37c55e94fd7f35fad6613076b7bb92
+# content hash: 08b5ad8b29d4065dec52af7e613a126f48221075f3032a67bdb3649b7193f6bc
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 7b0570ba1ca97d47792c8ffe445fd0cd61f8baa2894df9b3e5994b2fde9fbebb
+# content hash: 56bcf0c51f7b20c3f48ddab4898fbba5a0b70ef00166d813871d2d1e7088d4af
 """Python backend of the hpgen module free_rigid_body_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

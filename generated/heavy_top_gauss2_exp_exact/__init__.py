@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: c5a097bf506d08a5ef3ced683fc5f9699822784cc2225d595345068db0474af3
+# content hash: 1b34bf5e817e82bfd02b627dc026ac2aaf6eead4ca42f261939c2225b9785df0
 """hpgen integrator heavy_top_gauss2_exp_exact for the model heavy_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "heavy_top_gauss2_exp_exact"
-HASH = "c5a097bf506d08a5ef3ced683fc5f9699822784cc2225d595345068db0474af3"
+HASH = "1b34bf5e817e82bfd02b627dc026ac2aaf6eead4ca42f261939c2225b9785df0"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

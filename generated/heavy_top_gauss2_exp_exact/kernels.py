@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: c5a097bf506d08a5ef3ced683fc5f9699822784cc2225d595345068db0474af3
+# content hash: 1b34bf5e817e82bfd02b627dc026ac2aaf6eead4ca42f261939c2225b9785df0
 """Python backend of the hpgen module heavy_top_gauss2_exp_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

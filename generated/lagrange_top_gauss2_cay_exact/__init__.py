@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: dcd8de5ce61197b56d68cf73c788dcc76463963e7a7fd913718b2538ec9a6c63
+# content hash: 04980e47b8ef48ab78c6826a2804f39019d570ee52f724a7e8fe36972807f8c0
 """hpgen integrator lagrange_top_gauss2_cay_exact for the model lagrange_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "lagrange_top_gauss2_cay_exact"
-HASH = "dcd8de5ce61197b56d68cf73c788dcc76463963e7a7fd913718b2538ec9a6c63"
+HASH = "04980e47b8ef48ab78c6826a2804f39019d570ee52f724a7e8fe36972807f8c0"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: dcd8de5ce61197b56d68cf73c788dcc76463963e7a7fd913718b2538ec9a6c63
+# content hash: 04980e47b8ef48ab78c6826a2804f39019d570ee52f724a7e8fe36972807f8c0
 """Python backend of the hpgen module lagrange_top_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

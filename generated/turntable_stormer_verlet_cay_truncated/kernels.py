@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 863173fe2451ed38e2a0de316d2cf6c7838f7294b8dd28286d91226d5ff25819
+# content hash: 5db7336b6d4b2f2af7bb77f0cf03f73613c8e7fd40c2b0884ae5121cba07bbde
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

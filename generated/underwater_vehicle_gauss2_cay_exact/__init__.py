@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 8ba679686f98ad28f7f12c6863c33fd02f5a166fcdd8179902c7396de43b842e
+# content hash: 25a1365071ef578aa271d95ae96b63b7a8a08b7a1abfd5c5c76cdcaca2e4e548
 """hpgen integrator underwater_vehicle_gauss2_cay_exact for the model underwater_vehicle.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "underwater_vehicle_gauss2_cay_exact"
-HASH = "8ba679686f98ad28f7f12c6863c33fd02f5a166fcdd8179902c7396de43b842e"
+HASH = "25a1365071ef578aa271d95ae96b63b7a8a08b7a1abfd5c5c76cdcaca2e4e548"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 8ba679686f98ad28f7f12c6863c33fd02f5a166fcdd8179902c7396de43b842e
+# content hash: 25a1365071ef578aa271d95ae96b63b7a8a08b7a1abfd5c5c76cdcaca2e4e548
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
