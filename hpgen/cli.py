@@ -36,6 +36,8 @@ def _parser():
     r.add_argument("--out", help="output .npz file (default <model name>.npz)")
     r.add_argument("--h", type=float, help="override scene.h")
     r.add_argument("--steps", type=int, help="override scene.steps")
+    r.add_argument("--chunk", type=int, default=1_000_000,
+                   help="steps per C call; memory holds one chunk's records (default 10^6)")
     sub.add_parser("list", help="groups, tableaus and chart maps")
     k = sub.add_parser("check", help="observed order, energy, momentum map, group and "
                        "symplecticity defects of an integrator on the model's scene",
@@ -72,6 +74,7 @@ def cmd_compile(args) -> int:
 def cmd_run(args) -> int:
     from .api import build_module
     from .runtime import load
+    from .runtime.recorder import record_to_npz
     from .model import load_model_text
     from .api import read_model_text
 
@@ -84,30 +87,56 @@ def cmd_run(args) -> int:
     steps = sc.steps if args.steps is None else args.steps
     integ = load(build_module(args.model, _options(args)), backend=args.backend)
     out = Path(args.out or f"{model.name}.npz")
+    if getattr(sc, "section", None) is not None:
+        return _run_sections(integ, model, sc, h, steps, out, args)
     t0 = time.perf_counter()
     try:
-        traj = integ.simulate(g0=sc.g0, h=h, steps=steps, xi0=sc.xi0, mu0=sc.mu0, every=sc.every)
+        path, summary = record_to_npz(integ, out, sc.record, g0=sc.g0, h=h, steps=steps,
+                                      xi0=sc.xi0, mu0=sc.mu0, every=sc.every, chunk=args.chunk)
     except ConvergenceError as e:
-        if e.partial is not None and len(e.partial):
-            path = e.partial.save(out, arrays=e.partial.observables(sc.record))
-            raise type(e)(f"{e.reason}; the {len(e.partial)} samples before the failure were saved "
-                          f"to {path} with partial=True", step=e.step, time=e.time,
+        saved = getattr(e, "saved", None)
+        if saved is not None and saved[1]:
+            raise type(e)(f"{e.reason}; the {saved[1]} samples before the failure were saved "
+                          f"to {saved[0]} with partial=True", step=e.step, time=e.time,
                           residual=e.residual, iterations=e.iterations,
                           partial=e.partial) from None
         raise
     wall = time.perf_counter() - t0
-    arrays = traj.observables(sc.record)
-    traj.save(out, arrays=arrays)
     print(f"{model.name}: {steps} steps of h = {h:g} in {wall:.3f} s "
           f"({wall / max(steps, 1) * 1e6:.2f} us/step, {args.backend}); "
-          f"{len(traj.t)} samples -> {out}")
-    if "energy" in arrays:
-        e = arrays["energy"]
-        print(f"  energy error max |E - E0| = {abs(e - e[0]).max():.3e}")
-    if "momentum" in arrays:
-        drift = abs(arrays["momentum"] - arrays["momentum"][0]).max(axis=0)
+          f"{summary['samples']} samples -> {path}")
+    if summary["energy_max_change"] is not None:
+        print(f"  energy error max |E - E0| = {float(summary['energy_max_change']):.3e}")
+    if summary["momentum_max_change"] is not None:
         print("  spatial momentum Ad*_{g^-1} p, max change per component: "
-              + " ".join(f"{v:.2e}" for v in drift))
+              + " ".join(f"{v:.2e}" for v in summary["momentum_max_change"]))
+    return 0
+
+
+def _run_sections(integ, model, sc, h, steps, out, args) -> int:
+    """``hpgen run`` of a scene with a ``section``: only the crossings are kept (t, g, mu,
+    step; see hpgen.runtime.trajectory.SectionCrossings), saved like a trajectory."""
+    from .runtime.trajectory import npz_path, run_metadata, write_npz
+    t0 = time.perf_counter()
+    path = npz_path(out)
+    try:
+        cr = integ.sections(g0=sc.g0, h=h, steps=steps, xi0=sc.xi0, mu0=sc.mu0,
+                            chunk=args.chunk)
+    except ConvergenceError as e:
+        cr = e.partial
+        if cr is None:
+            raise
+        write_npz(path, {"t": cr.t, "g": cr.g, "mu": cr.mu, "step": cr.step,
+                         **run_metadata(integ, h, 1, True, cr.newton_iterations, e)})
+        raise type(e)(f"{e.reason}; the {len(cr)} section crossings before the failure were "
+                      f"saved to {path} with partial=True", step=e.step, time=e.time,
+                      residual=e.residual, iterations=e.iterations, partial=cr) from None
+    wall = time.perf_counter() - t0
+    write_npz(path, {"t": cr.t, "g": cr.g, "mu": cr.mu, "step": cr.step,
+                     **run_metadata(integ, h, 1, False, cr.newton_iterations, None)})
+    print(f"{model.name}: {steps} steps of h = {h:g} in {wall:.3f} s "
+          f"({wall / max(steps, 1) * 1e6:.2f} us/step, {args.backend}); "
+          f"{len(cr)} crossings of the section {sc.section.text!r} -> {path}")
     return 0
 
 

@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 08b5ad8b29d4065dec52af7e613a126f48221075f3032a67bdb3649b7193f6bc
+# content hash: db5fdd466f0698ecbf022c2a11b9ff23272534df86a7ea51e0ce76e5046a5ecd
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "08b5ad8b29d4065dec52af7e613a126f48221075f3032a67bdb3649b7193f6bc"
+HASH = "db5fdd466f0698ecbf022c2a11b9ff23272534df86a7ea51e0ce76e5046a5ecd"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: double_body_chain
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 08b5ad8b29d4065dec52af7e613a126f48221075f3032a67bdb3649b7193f6bc
+ * content hash: db5fdd466f0698ecbf022c2a11b9ff23272534df86a7ea51e0ce76e5046a5ecd
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -45,6 +45,7 @@
 #define casadi_f0 CASADI_PREFIX(f0)
 #define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_f10 CASADI_PREFIX(f10)
+#define casadi_f11 CASADI_PREFIX(f11)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -475,353 +476,8 @@ CASADI_SYMBOL_EXPORT int residual_work_bytes(casadi_int *sz_arg, casadi_int* sz_
   return 0;
 }
 
-/* jacobian:(z[6],g[36],p[6],h)->(J[36]) */
-static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
-  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
-  casadi_real a24, a25;
-  a00=9.0000000000000002e-01;
-  a01=arg[0]? arg[0][0] : 0;
-  a02=(a00*a01);
-  a03=2.5000000000000000e-01;
-  a04=arg[3]? arg[3][0] : 0;
-  a01=(a04*a01);
-  a05=(2.*a01);
-  a05=(a05*a04);
-  a05=(a03*a05);
-  a05=(a02*a05);
-  a06=1.;
-  a07=casadi_sq(a01);
-  a08=4.;
-  a07=(a07/a08);
-  a07=(a06+a07);
-  a07=(a00*a07);
-  a05=(a05+a07);
-  a07=arg[0]? arg[0][1] : 0;
-  a09=(a04*a07);
-  a10=(a09*a04);
-  a10=(a03*a10);
-  a11=(a07*a10);
-  a05=(a05+a11);
-  a12=2.0000000000000001e-01;
-  a13=arg[0]? arg[0][2] : 0;
-  a14=(a12*a13);
-  a13=(a04*a13);
-  a15=(a13*a04);
-  a15=(a03*a15);
-  a16=(a14*a15);
-  a05=(a05+a16);
-  a05=(-a05);
-  if (res[0]!=0) res[0][0]=a05;
-  a05=(a02*a10);
-  a17=2.;
-  a18=(a13/a17);
-  a19=(a01*a09);
-  a19=(a19/a08);
-  a19=(a18+a19);
-  a19=(a00*a19);
-  a05=(a05+a19);
-  a19=5.0000000000000000e-01;
-  a20=(a19*a04);
-  a21=(a14*a20);
-  a05=(a05-a21);
-  a05=(-a05);
-  if (res[0]!=0) res[0][1]=a05;
-  a05=(a02*a15);
-  a22=(a01*a13);
-  a22=(a22/a08);
-  a23=(a09/a17);
-  a22=(a22-a23);
-  a00=(a00*a22);
-  a05=(a05+a00);
-  a00=(a07*a20);
-  a05=(a05+a00);
-  a05=(-a05);
-  if (res[0]!=0) res[0][2]=a05;
-  a05=0.;
-  if (res[0]!=0) res[0][3]=a05;
-  if (res[0]!=0) res[0][4]=a05;
-  if (res[0]!=0) res[0][5]=a05;
-  a22=(a01*a04);
-  a22=(a03*a22);
-  a24=(a07*a22);
-  a25=(a09*a01);
-  a25=(a25/a08);
-  a25=(a25-a18);
-  a24=(a24+a25);
-  a24=(a24+a21);
-  a24=(-a24);
-  if (res[0]!=0) res[0][6]=a24;
-  a24=(a02*a22);
-  a21=(2.*a09);
-  a21=(a21*a04);
-  a21=(a03*a21);
-  a21=(a07*a21);
-  a25=casadi_sq(a09);
-  a25=(a25/a08);
-  a25=(a06+a25);
-  a21=(a21+a25);
-  a21=(a24+a21);
-  a21=(a21+a16);
-  a21=(-a21);
-  if (res[0]!=0) res[0][7]=a21;
-  a07=(a07*a15);
-  a15=(a01/a17);
-  a21=(a09*a13);
-  a21=(a21/a08);
-  a21=(a15+a21);
-  a07=(a07+a21);
-  a02=(a02*a20);
-  a07=(a07-a02);
-  a07=(-a07);
-  if (res[0]!=0) res[0][8]=a07;
-  if (res[0]!=0) res[0][9]=a05;
-  if (res[0]!=0) res[0][10]=a05;
-  if (res[0]!=0) res[0][11]=a05;
-  a22=(a14*a22);
-  a01=(a13*a01);
-  a01=(a01/a08);
-  a23=(a23+a01);
-  a23=(a12*a23);
-  a22=(a22+a23);
-  a22=(a22-a00);
-  a22=(-a22);
-  if (res[0]!=0) res[0][12]=a22;
-  a10=(a14*a10);
-  a09=(a13*a09);
-  a09=(a09/a08);
-  a09=(a09-a15);
-  a09=(a12*a09);
-  a10=(a10+a09);
-  a02=(a02+a10);
-  a02=(-a02);
-  if (res[0]!=0) res[0][13]=a02;
-  a24=(a24+a11);
-  a11=(2.*a13);
-  a11=(a11*a04);
-  a11=(a03*a11);
-  a14=(a14*a11);
-  a13=casadi_sq(a13);
-  a13=(a13/a08);
-  a13=(a06+a13);
-  a12=(a12*a13);
-  a14=(a14+a12);
-  a24=(a24+a14);
-  a24=(-a24);
-  if (res[0]!=0) res[0][14]=a24;
-  if (res[0]!=0) res[0][15]=a05;
-  if (res[0]!=0) res[0][16]=a05;
-  if (res[0]!=0) res[0][17]=a05;
-  if (res[0]!=0) res[0][18]=a05;
-  if (res[0]!=0) res[0][19]=a05;
-  if (res[0]!=0) res[0][20]=a05;
-  a24=5.9999999999999998e-01;
-  a14=arg[0]? arg[0][3] : 0;
-  a12=(a24*a14);
-  a14=(a04*a14);
-  a13=(2.*a14);
-  a13=(a13*a04);
-  a13=(a03*a13);
-  a13=(a12*a13);
-  a11=casadi_sq(a14);
-  a11=(a11/a08);
-  a11=(a06+a11);
-  a11=(a24*a11);
-  a13=(a13+a11);
-  a11=arg[0]? arg[0][4] : 0;
-  a02=(a19*a11);
-  a11=(a04*a11);
-  a10=(a11*a04);
-  a10=(a03*a10);
-  a09=(a02*a10);
-  a13=(a13+a09);
-  a15=1.4999999999999999e-01;
-  a22=arg[0]? arg[0][5] : 0;
-  a00=(a15*a22);
-  a22=(a04*a22);
-  a23=(a22*a04);
-  a23=(a03*a23);
-  a01=(a00*a23);
-  a13=(a13+a01);
-  a13=(-a13);
-  if (res[0]!=0) res[0][21]=a13;
-  a13=(a12*a10);
-  a07=(a22/a17);
-  a21=(a14*a11);
-  a21=(a21/a08);
-  a21=(a07+a21);
-  a21=(a24*a21);
-  a13=(a13+a21);
-  a21=(a00*a20);
-  a13=(a13-a21);
-  a13=(-a13);
-  if (res[0]!=0) res[0][22]=a13;
-  a13=(a12*a23);
-  a16=(a14*a22);
-  a16=(a16/a08);
-  a25=(a11/a17);
-  a16=(a16-a25);
-  a24=(a24*a16);
-  a13=(a13+a24);
-  a24=(a02*a20);
-  a13=(a13+a24);
-  a13=(-a13);
-  if (res[0]!=0) res[0][23]=a13;
-  if (res[0]!=0) res[0][24]=a05;
-  if (res[0]!=0) res[0][25]=a05;
-  if (res[0]!=0) res[0][26]=a05;
-  a13=(a14*a04);
-  a13=(a03*a13);
-  a16=(a02*a13);
-  a18=(a11*a14);
-  a18=(a18/a08);
-  a18=(a18-a07);
-  a18=(a19*a18);
-  a16=(a16+a18);
-  a16=(a16+a21);
-  a16=(-a16);
-  if (res[0]!=0) res[0][27]=a16;
-  a16=(a12*a13);
-  a21=(2.*a11);
-  a21=(a21*a04);
-  a21=(a03*a21);
-  a21=(a02*a21);
-  a18=casadi_sq(a11);
-  a18=(a18/a08);
-  a18=(a06+a18);
-  a18=(a19*a18);
-  a21=(a21+a18);
-  a21=(a16+a21);
-  a21=(a21+a01);
-  a21=(-a21);
-  if (res[0]!=0) res[0][28]=a21;
-  a02=(a02*a23);
-  a17=(a14/a17);
-  a23=(a11*a22);
-  a23=(a23/a08);
-  a23=(a17+a23);
-  a19=(a19*a23);
-  a02=(a02+a19);
-  a12=(a12*a20);
-  a02=(a02-a12);
-  a02=(-a02);
-  if (res[0]!=0) res[0][29]=a02;
-  if (res[0]!=0) res[0][30]=a05;
-  if (res[0]!=0) res[0][31]=a05;
-  if (res[0]!=0) res[0][32]=a05;
-  a13=(a00*a13);
-  a14=(a22*a14);
-  a14=(a14/a08);
-  a25=(a25+a14);
-  a25=(a15*a25);
-  a13=(a13+a25);
-  a13=(a13-a24);
-  a13=(-a13);
-  if (res[0]!=0) res[0][33]=a13;
-  a10=(a00*a10);
-  a11=(a22*a11);
-  a11=(a11/a08);
-  a11=(a11-a17);
-  a11=(a15*a11);
-  a10=(a10+a11);
-  a12=(a12+a10);
-  a12=(-a12);
-  if (res[0]!=0) res[0][34]=a12;
-  a16=(a16+a09);
-  a09=(2.*a22);
-  a09=(a09*a04);
-  a03=(a03*a09);
-  a00=(a00*a03);
-  a22=casadi_sq(a22);
-  a22=(a22/a08);
-  a06=(a06+a22);
-  a15=(a15*a06);
-  a00=(a00+a15);
-  a16=(a16+a00);
-  a16=(-a16);
-  if (res[0]!=0) res[0][35]=a16;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int jacobian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f1(arg, res, iw, w, mem);
-}
-
-CASADI_SYMBOL_EXPORT int jacobian_checkout(void) {
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT void jacobian_release(int mem) {
-}
-
-CASADI_SYMBOL_EXPORT void jacobian_incref(void) {
-}
-
-CASADI_SYMBOL_EXPORT void jacobian_decref(void) {
-}
-
-CASADI_SYMBOL_EXPORT casadi_int jacobian_n_in(void) { return 4;}
-
-CASADI_SYMBOL_EXPORT casadi_int jacobian_n_out(void) { return 1;}
-
-CASADI_SYMBOL_EXPORT casadi_real jacobian_default_in(casadi_int i) {
-  switch (i) {
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* jacobian_name_in(casadi_int i) {
-  switch (i) {
-    case 0: return "z";
-    case 1: return "g";
-    case 2: return "p";
-    case 3: return "h";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* jacobian_name_out(casadi_int i) {
-  switch (i) {
-    case 0: return "J";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* jacobian_sparsity_in(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s0;
-    case 1: return casadi_s1;
-    case 2: return casadi_s0;
-    case 3: return casadi_s2;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* jacobian_sparsity_out(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s1;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT int jacobian_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4;
-  if (sz_res) *sz_res = 1;
-  if (sz_iw) *sz_iw = 0;
-  if (sz_w) *sz_w = 0;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int jacobian_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
-  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
-  if (sz_w) *sz_w = 0*sizeof(casadi_real);
-  return 0;
-}
-
 /* residual_jacobian:(z[6],g[36],p[6],h)->(F[6],J[36]) */
-static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -1275,7 +931,7 @@ static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int residual_jacobian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f2(arg, res, iw, w, mem);
+  return casadi_f1(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int residual_jacobian_checkout(void) {
@@ -1354,7 +1010,7 @@ CASADI_SYMBOL_EXPORT int residual_jacobian_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* update:(z[6],g[36],p[6],h)->(g1[36],p1[6]) */
-static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -1926,7 +1582,7 @@ static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int update(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f3(arg, res, iw, w, mem);
+  return casadi_f2(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int update_checkout(void) {
@@ -2005,7 +1661,7 @@ CASADI_SYMBOL_EXPORT int update_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* guess:(xi[6],g[36],p[6],h)->(z0[6]) */
-static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0;
   a0=arg[0]? arg[0][0] : 0;
   if (res[0]!=0) res[0][0]=a0;
@@ -2023,7 +1679,7 @@ static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int guess(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f4(arg, res, iw, w, mem);
+  return casadi_f3(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int guess_checkout(void) {
@@ -2100,7 +1756,7 @@ CASADI_SYMBOL_EXPORT int guess_work_bytes(casadi_int *sz_arg, casadi_int* sz_res
 }
 
 /* legendre:(g[36],xi[6])->(mu[6]) */
-static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=9.0000000000000002e-01;
   a1=arg[1]? arg[1][0] : 0;
@@ -2128,7 +1784,7 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int legendre(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f5(arg, res, iw, w, mem);
+  return casadi_f4(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int legendre_checkout(void) {
@@ -2201,7 +1857,7 @@ CASADI_SYMBOL_EXPORT int legendre_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 }
 
 /* hessian:(g[36],xi[6])->(H[36]) */
-static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=9.0000000000000002e-01;
   if (res[0]!=0) res[0][0]=a0;
@@ -2250,7 +1906,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int hessian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f5(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int hessian_checkout(void) {
@@ -2323,7 +1979,7 @@ CASADI_SYMBOL_EXPORT int hessian_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
 }
 
 /* energy:(g[36],xi[6])->(E) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10;
   a00=9.0000000000000002e-01;
   a01=arg[1]? arg[1][0] : 0;
@@ -2442,7 +2098,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f6(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int energy_checkout(void) {
@@ -2515,7 +2171,7 @@ CASADI_SYMBOL_EXPORT int energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* momentum:(g[36],p[6])->(m[6]) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=arg[0]? arg[0][14] : 0;
@@ -2636,7 +2292,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int momentum(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int momentum_checkout(void) {
@@ -2709,7 +2365,7 @@ CASADI_SYMBOL_EXPORT int momentum_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 }
 
 /* defect:(g[36])->(e) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=0.;
@@ -2972,7 +2628,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int defect(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int defect_checkout(void) {
@@ -3043,7 +2699,7 @@ CASADI_SYMBOL_EXPORT int defect_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* margin:(z[6],h)->(m) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5;
   a0=1.;
   a1=4.;
@@ -3083,7 +2739,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int margin(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int margin_checkout(void) {
@@ -3155,6 +2811,533 @@ CASADI_SYMBOL_EXPORT int margin_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
   return 0;
 }
 
+/* section:(g[36],p[6])->(s) */
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=1.;
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int section(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f10(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int section_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void section_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void section_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void section_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int section_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int section_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real section_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* section_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* section_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "s";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* section_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* section_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int section_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int section_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* chart_point:(z[6],g[36],h,theta)->(g_theta[36]) */
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33;
+  a00=arg[1]? arg[1][0] : 0;
+  a01=1.;
+  a02=4.;
+  a03=arg[3]? arg[3][0] : 0;
+  a04=arg[2]? arg[2][0] : 0;
+  a05=arg[0]? arg[0][0] : 0;
+  a05=(a04*a05);
+  a05=(a03*a05);
+  a06=casadi_sq(a05);
+  a07=arg[0]? arg[0][1] : 0;
+  a07=(a04*a07);
+  a07=(a03*a07);
+  a08=casadi_sq(a07);
+  a09=(a06+a08);
+  a10=arg[0]? arg[0][2] : 0;
+  a10=(a04*a10);
+  a10=(a03*a10);
+  a11=casadi_sq(a10);
+  a09=(a09+a11);
+  a09=(a02+a09);
+  a09=(a02/a09);
+  a12=(a11+a08);
+  a13=2.;
+  a12=(a12/a13);
+  a12=(a09*a12);
+  a12=(a01-a12);
+  a14=(a00*a12);
+  a15=arg[1]? arg[1][6] : 0;
+  a16=(a05*a07);
+  a16=(a16/a13);
+  a16=(a10+a16);
+  a16=(a09*a16);
+  a17=(a15*a16);
+  a14=(a14+a17);
+  a17=arg[1]? arg[1][12] : 0;
+  a18=(a05*a10);
+  a18=(a18/a13);
+  a18=(a18-a07);
+  a18=(a09*a18);
+  a19=(a17*a18);
+  a14=(a14+a19);
+  if (res[0]!=0) res[0][0]=a14;
+  a14=arg[1]? arg[1][1] : 0;
+  a19=(a14*a12);
+  a20=arg[1]? arg[1][7] : 0;
+  a21=(a20*a16);
+  a19=(a19+a21);
+  a21=arg[1]? arg[1][13] : 0;
+  a22=(a21*a18);
+  a19=(a19+a22);
+  if (res[0]!=0) res[0][1]=a19;
+  a19=arg[1]? arg[1][2] : 0;
+  a22=(a19*a12);
+  a23=arg[1]? arg[1][8] : 0;
+  a24=(a23*a16);
+  a22=(a22+a24);
+  a24=arg[1]? arg[1][14] : 0;
+  a25=(a24*a18);
+  a22=(a22+a25);
+  if (res[0]!=0) res[0][2]=a22;
+  a22=arg[1]? arg[1][3] : 0;
+  a25=(a22*a12);
+  a26=arg[1]? arg[1][9] : 0;
+  a27=(a26*a16);
+  a25=(a25+a27);
+  a27=arg[1]? arg[1][15] : 0;
+  a28=(a27*a18);
+  a25=(a25+a28);
+  if (res[0]!=0) res[0][3]=a25;
+  a25=arg[1]? arg[1][4] : 0;
+  a28=(a25*a12);
+  a29=arg[1]? arg[1][10] : 0;
+  a30=(a29*a16);
+  a28=(a28+a30);
+  a30=arg[1]? arg[1][16] : 0;
+  a31=(a30*a18);
+  a28=(a28+a31);
+  if (res[0]!=0) res[0][4]=a28;
+  a28=arg[1]? arg[1][5] : 0;
+  a12=(a28*a12);
+  a31=arg[1]? arg[1][11] : 0;
+  a16=(a31*a16);
+  a12=(a12+a16);
+  a16=arg[1]? arg[1][17] : 0;
+  a18=(a16*a18);
+  a12=(a12+a18);
+  if (res[0]!=0) res[0][5]=a12;
+  a12=(a07*a05);
+  a12=(a12/a13);
+  a12=(a12-a10);
+  a12=(a09*a12);
+  a18=(a00*a12);
+  a11=(a11+a06);
+  a11=(a11/a13);
+  a11=(a09*a11);
+  a11=(a01-a11);
+  a32=(a15*a11);
+  a18=(a18+a32);
+  a32=(a07*a10);
+  a32=(a32/a13);
+  a32=(a05+a32);
+  a32=(a09*a32);
+  a33=(a17*a32);
+  a18=(a18+a33);
+  if (res[0]!=0) res[0][6]=a18;
+  a18=(a14*a12);
+  a33=(a20*a11);
+  a18=(a18+a33);
+  a33=(a21*a32);
+  a18=(a18+a33);
+  if (res[0]!=0) res[0][7]=a18;
+  a18=(a19*a12);
+  a33=(a23*a11);
+  a18=(a18+a33);
+  a33=(a24*a32);
+  a18=(a18+a33);
+  if (res[0]!=0) res[0][8]=a18;
+  a18=(a22*a12);
+  a33=(a26*a11);
+  a18=(a18+a33);
+  a33=(a27*a32);
+  a18=(a18+a33);
+  if (res[0]!=0) res[0][9]=a18;
+  a18=(a25*a12);
+  a33=(a29*a11);
+  a18=(a18+a33);
+  a33=(a30*a32);
+  a18=(a18+a33);
+  if (res[0]!=0) res[0][10]=a18;
+  a12=(a28*a12);
+  a11=(a31*a11);
+  a12=(a12+a11);
+  a32=(a16*a32);
+  a12=(a12+a32);
+  if (res[0]!=0) res[0][11]=a12;
+  a12=(a10*a05);
+  a12=(a12/a13);
+  a12=(a07+a12);
+  a12=(a09*a12);
+  a00=(a00*a12);
+  a10=(a10*a07);
+  a10=(a10/a13);
+  a10=(a10-a05);
+  a10=(a09*a10);
+  a15=(a15*a10);
+  a00=(a00+a15);
+  a08=(a08+a06);
+  a08=(a08/a13);
+  a09=(a09*a08);
+  a09=(a01-a09);
+  a17=(a17*a09);
+  a00=(a00+a17);
+  if (res[0]!=0) res[0][12]=a00;
+  a14=(a14*a12);
+  a20=(a20*a10);
+  a14=(a14+a20);
+  a21=(a21*a09);
+  a14=(a14+a21);
+  if (res[0]!=0) res[0][13]=a14;
+  a19=(a19*a12);
+  a23=(a23*a10);
+  a19=(a19+a23);
+  a24=(a24*a09);
+  a19=(a19+a24);
+  if (res[0]!=0) res[0][14]=a19;
+  a22=(a22*a12);
+  a26=(a26*a10);
+  a22=(a22+a26);
+  a27=(a27*a09);
+  a22=(a22+a27);
+  if (res[0]!=0) res[0][15]=a22;
+  a25=(a25*a12);
+  a29=(a29*a10);
+  a25=(a25+a29);
+  a30=(a30*a09);
+  a25=(a25+a30);
+  if (res[0]!=0) res[0][16]=a25;
+  a28=(a28*a12);
+  a31=(a31*a10);
+  a28=(a28+a31);
+  a16=(a16*a09);
+  a28=(a28+a16);
+  if (res[0]!=0) res[0][17]=a28;
+  a28=arg[1]? arg[1][18] : 0;
+  a16=arg[0]? arg[0][3] : 0;
+  a16=(a04*a16);
+  a16=(a03*a16);
+  a09=casadi_sq(a16);
+  a31=arg[0]? arg[0][4] : 0;
+  a31=(a04*a31);
+  a31=(a03*a31);
+  a10=casadi_sq(a31);
+  a12=(a09+a10);
+  a25=arg[0]? arg[0][5] : 0;
+  a04=(a04*a25);
+  a03=(a03*a04);
+  a04=casadi_sq(a03);
+  a12=(a12+a04);
+  a12=(a02+a12);
+  a02=(a02/a12);
+  a12=(a04+a10);
+  a12=(a12/a13);
+  a12=(a02*a12);
+  a12=(a01-a12);
+  a25=(a28*a12);
+  a30=arg[1]? arg[1][24] : 0;
+  a29=(a16*a31);
+  a29=(a29/a13);
+  a29=(a03+a29);
+  a29=(a02*a29);
+  a22=(a30*a29);
+  a25=(a25+a22);
+  a22=arg[1]? arg[1][30] : 0;
+  a27=(a16*a03);
+  a27=(a27/a13);
+  a27=(a27-a31);
+  a27=(a02*a27);
+  a26=(a22*a27);
+  a25=(a25+a26);
+  if (res[0]!=0) res[0][18]=a25;
+  a25=arg[1]? arg[1][19] : 0;
+  a26=(a25*a12);
+  a19=arg[1]? arg[1][25] : 0;
+  a24=(a19*a29);
+  a26=(a26+a24);
+  a24=arg[1]? arg[1][31] : 0;
+  a23=(a24*a27);
+  a26=(a26+a23);
+  if (res[0]!=0) res[0][19]=a26;
+  a26=arg[1]? arg[1][20] : 0;
+  a23=(a26*a12);
+  a14=arg[1]? arg[1][26] : 0;
+  a21=(a14*a29);
+  a23=(a23+a21);
+  a21=arg[1]? arg[1][32] : 0;
+  a20=(a21*a27);
+  a23=(a23+a20);
+  if (res[0]!=0) res[0][20]=a23;
+  a23=arg[1]? arg[1][21] : 0;
+  a20=(a23*a12);
+  a00=arg[1]? arg[1][27] : 0;
+  a17=(a00*a29);
+  a20=(a20+a17);
+  a17=arg[1]? arg[1][33] : 0;
+  a08=(a17*a27);
+  a20=(a20+a08);
+  if (res[0]!=0) res[0][21]=a20;
+  a20=arg[1]? arg[1][22] : 0;
+  a08=(a20*a12);
+  a06=arg[1]? arg[1][28] : 0;
+  a15=(a06*a29);
+  a08=(a08+a15);
+  a15=arg[1]? arg[1][34] : 0;
+  a05=(a15*a27);
+  a08=(a08+a05);
+  if (res[0]!=0) res[0][22]=a08;
+  a08=arg[1]? arg[1][23] : 0;
+  a12=(a08*a12);
+  a05=arg[1]? arg[1][29] : 0;
+  a29=(a05*a29);
+  a12=(a12+a29);
+  a29=arg[1]? arg[1][35] : 0;
+  a27=(a29*a27);
+  a12=(a12+a27);
+  if (res[0]!=0) res[0][23]=a12;
+  a12=(a31*a16);
+  a12=(a12/a13);
+  a12=(a12-a03);
+  a12=(a02*a12);
+  a27=(a28*a12);
+  a04=(a04+a09);
+  a04=(a04/a13);
+  a04=(a02*a04);
+  a04=(a01-a04);
+  a07=(a30*a04);
+  a27=(a27+a07);
+  a07=(a31*a03);
+  a07=(a07/a13);
+  a07=(a16+a07);
+  a07=(a02*a07);
+  a32=(a22*a07);
+  a27=(a27+a32);
+  if (res[0]!=0) res[0][24]=a27;
+  a27=(a25*a12);
+  a32=(a19*a04);
+  a27=(a27+a32);
+  a32=(a24*a07);
+  a27=(a27+a32);
+  if (res[0]!=0) res[0][25]=a27;
+  a27=(a26*a12);
+  a32=(a14*a04);
+  a27=(a27+a32);
+  a32=(a21*a07);
+  a27=(a27+a32);
+  if (res[0]!=0) res[0][26]=a27;
+  a27=(a23*a12);
+  a32=(a00*a04);
+  a27=(a27+a32);
+  a32=(a17*a07);
+  a27=(a27+a32);
+  if (res[0]!=0) res[0][27]=a27;
+  a27=(a20*a12);
+  a32=(a06*a04);
+  a27=(a27+a32);
+  a32=(a15*a07);
+  a27=(a27+a32);
+  if (res[0]!=0) res[0][28]=a27;
+  a12=(a08*a12);
+  a04=(a05*a04);
+  a12=(a12+a04);
+  a07=(a29*a07);
+  a12=(a12+a07);
+  if (res[0]!=0) res[0][29]=a12;
+  a12=(a03*a16);
+  a12=(a12/a13);
+  a12=(a31+a12);
+  a12=(a02*a12);
+  a28=(a28*a12);
+  a03=(a03*a31);
+  a03=(a03/a13);
+  a03=(a03-a16);
+  a03=(a02*a03);
+  a30=(a30*a03);
+  a28=(a28+a30);
+  a10=(a10+a09);
+  a10=(a10/a13);
+  a02=(a02*a10);
+  a01=(a01-a02);
+  a22=(a22*a01);
+  a28=(a28+a22);
+  if (res[0]!=0) res[0][30]=a28;
+  a25=(a25*a12);
+  a19=(a19*a03);
+  a25=(a25+a19);
+  a24=(a24*a01);
+  a25=(a25+a24);
+  if (res[0]!=0) res[0][31]=a25;
+  a26=(a26*a12);
+  a14=(a14*a03);
+  a26=(a26+a14);
+  a21=(a21*a01);
+  a26=(a26+a21);
+  if (res[0]!=0) res[0][32]=a26;
+  a23=(a23*a12);
+  a00=(a00*a03);
+  a23=(a23+a00);
+  a17=(a17*a01);
+  a23=(a23+a17);
+  if (res[0]!=0) res[0][33]=a23;
+  a20=(a20*a12);
+  a06=(a06*a03);
+  a20=(a20+a06);
+  a15=(a15*a01);
+  a20=(a20+a15);
+  if (res[0]!=0) res[0][34]=a20;
+  a08=(a08*a12);
+  a05=(a05*a03);
+  a08=(a08+a05);
+  a29=(a29*a01);
+  a08=(a08+a29);
+  if (res[0]!=0) res[0][35]=a08;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int chart_point(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f11(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int chart_point_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void chart_point_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void chart_point_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void chart_point_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int chart_point_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int chart_point_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real chart_point_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* chart_point_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "h";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* chart_point_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "g_theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* chart_point_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s2;
+    case 3: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* chart_point_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int chart_point_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int chart_point_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
 
 
 /* ======================= end of CasADi-generated code =================================== */
@@ -3212,9 +3395,11 @@ typedef struct hpgen_run {
     long long k;                     /* steps done */
     long long have_prev;             /* how many of zprev, zprev2 are valid (0, 1, 2) */
     long long lu_valid;              /* lu holds J^{-1} */
+    double s;                        /* section(g_k, p_k), when s_valid */
+    long long s_valid;
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "08b5ad8b29d4065dec52af7e613a126f48221075f3032a67bdb3649b7193f6bc"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "db5fdd466f0698ecbf022c2a11b9ff23272534df86a7ea51e0ce76e5046a5ecd"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -3222,6 +3407,18 @@ HPGEN_EXPORT void hpgen_dims(long long* out) {
 }
 
 /* ---- kernel wrappers: dense column-major arguments, CasADi work arrays on the stack ---- */
+static int hpgen_k_residual(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_residual_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1);
+static int hpgen_k_update(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1);
+static int hpgen_k_guess(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_legendre(const double* in0, const double* in1, double* out0);
+static int hpgen_k_hessian(const double* in0, const double* in1, double* out0);
+static int hpgen_k_energy(const double* in0, const double* in1, double* out0);
+static int hpgen_k_momentum(const double* in0, const double* in1, double* out0);
+static int hpgen_k_defect(const double* in0, double* out0);
+static int hpgen_k_margin(const double* in0, const double* in1, double* out0);
+static int hpgen_k_section(const double* in0, const double* in1, double* out0);
+static int hpgen_k_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
 
 /* residual(z[6], g[36], p[6], h[1]) -> (F[6]) */
 #define HPGEN_RESIDUAL_SZ_ARG 4
@@ -3251,30 +3448,11 @@ HPGEN_EXPORT int hpgen_kernel_residual(const double* in0, const double* in1, con
 }
 
 /* jacobian(z[6], g[36], p[6], h[1]) -> (J[36]) */
-#define HPGEN_JACOBIAN_SZ_ARG 4
-#define HPGEN_JACOBIAN_SZ_RES 1
-#define HPGEN_JACOBIAN_SZ_IW 0
-#define HPGEN_JACOBIAN_SZ_W 26
-/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
-   interposed, so calls to it are never inlined); hpgen_kernel_jacobian exports it */
-static int hpgen_k_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
-    const casadi_real* arg[HPGEN_JACOBIAN_SZ_ARG + 1];
-    casadi_real* res[HPGEN_JACOBIAN_SZ_RES + 1];
-    casadi_int iw[HPGEN_JACOBIAN_SZ_IW + 1];
-    casadi_real w[HPGEN_JACOBIAN_SZ_W + 1];
-    int flag, i = 0;
-    arg[0] = in0;
-    arg[1] = in1;
-    arg[2] = in2;
-    arg[3] = in3;
-    res[0] = out0;
-    flag = jacobian(arg, res, iw, w, 0);
-    (void)i;
-    return flag;
-}
-
+/* = output 1 of residual_jacobian (the same CasADi algorithm; its other outputs are
+   computed into scratch and dropped) */
 HPGEN_EXPORT int hpgen_kernel_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
-    return hpgen_k_jacobian(in0, in1, in2, in3, out0);
+    double scratch[HPGEN_NZ];
+    return hpgen_k_residual_jacobian(in0, in1, in2, in3, scratch, out0);
 }
 
 /* residual_jacobian(z[6], g[36], p[6], h[1]) -> (F[6], J[36]) */
@@ -3507,6 +3685,58 @@ static int hpgen_k_margin(const double* in0, const double* in1, double* out0) {
 
 HPGEN_EXPORT int hpgen_kernel_margin(const double* in0, const double* in1, double* out0) {
     return hpgen_k_margin(in0, in1, out0);
+}
+
+/* section(g[36], p[6]) -> (s[1]) */
+#define HPGEN_SECTION_SZ_ARG 2
+#define HPGEN_SECTION_SZ_RES 1
+#define HPGEN_SECTION_SZ_IW 0
+#define HPGEN_SECTION_SZ_W 1
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_section exports it */
+static int hpgen_k_section(const double* in0, const double* in1, double* out0) {
+    const casadi_real* arg[HPGEN_SECTION_SZ_ARG + 1];
+    casadi_real* res[HPGEN_SECTION_SZ_RES + 1];
+    casadi_int iw[HPGEN_SECTION_SZ_IW + 1];
+    casadi_real w[HPGEN_SECTION_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    res[0] = out0;
+    flag = section(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_section(const double* in0, const double* in1, double* out0) {
+    return hpgen_k_section(in0, in1, out0);
+}
+
+/* chart_point(z[6], g[36], h[1], theta[1]) -> (g_theta[36]) */
+#define HPGEN_CHART_POINT_SZ_ARG 4
+#define HPGEN_CHART_POINT_SZ_RES 1
+#define HPGEN_CHART_POINT_SZ_IW 0
+#define HPGEN_CHART_POINT_SZ_W 34
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_chart_point exports it */
+static int hpgen_k_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_CHART_POINT_SZ_ARG + 1];
+    casadi_real* res[HPGEN_CHART_POINT_SZ_RES + 1];
+    casadi_int iw[HPGEN_CHART_POINT_SZ_IW + 1];
+    casadi_real w[HPGEN_CHART_POINT_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = chart_point(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_chart_point(in0, in1, in2, in3, out0);
 }
 
 /* ---- dense linear algebra and Newton ---- */
@@ -3827,13 +4057,44 @@ HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, d
    recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
    sizes them for the records falling in this call). Stops at the first failed step (the run
    keeps the last good state). Returns the steps done in this call. */
+/* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
+   success the run moved to (g_{k+1}, p_{k+1}); o for the steps after the first, full (o with
+   full Newton) for the first. Updates the counters of st; returns the status code. */
+static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
+                          const hpgen_options* full, hpgen_status* st) {
+    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], res;
+    long long it;
+    int i, code;
+    /* start: the polynomial through the last solutions, extrapolated one step (quadratic
+       3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before) */
+    if (o->predictor && r->have_prev >= 2)
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 3.0 * (r->z[i] - r->zprev[i]) + r->zprev2[i];
+    else if (o->predictor && r->have_prev == 1)
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 2.0 * r->z[i] - r->zprev[i];
+    else
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
+    /* the first step starts from the crude guess kernel: full Newton */
+    code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? full : o, r->lu, r->piv,
+                           &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0);
+    st->iterations = it;
+    st->total_iterations += it;
+    st->residual = res;
+    if (code != HPGEN_OK) { st->code = code; st->step = r->k; return code; }
+    memcpy(r->zprev2, r->zprev, sizeof r->z);
+    memcpy(r->zprev, r->z, sizeof r->z);
+    memcpy(r->z, zs, sizeof r->z);
+    if (r->have_prev < 2) r->have_prev += 1;
+    memcpy(r->g, g1, sizeof g1);
+    memcpy(r->p, p1, sizeof p1);
+    r->k += 1;
+    return HPGEN_OK;
+}
+
 HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, long long every,
                                      const hpgen_options* o, double* g_rec, double* p_rec,
                                      hpgen_status* st) {
-    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], hv[1];
-    long long n, it, rec = 0;
-    double res;
-    int i;
+    double hv[1];
+    long long n, rec = 0;
     hpgen_options full;
     hpgen_status_init(st);
     if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
@@ -3841,37 +4102,72 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
     full = *o;
     full.simplified = 0;
     for (n = 0; n < steps; ++n) {
-        int code;
-        /* start: the polynomial through the last solutions, extrapolated one step (quadratic
-           3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before) */
-        if (o->predictor && r->have_prev >= 2)
-            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 3.0 * (r->z[i] - r->zprev[i]) + r->zprev2[i];
-        else if (o->predictor && r->have_prev == 1)
-            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 2.0 * r->z[i] - r->zprev[i];
-        else
-            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
-        /* the first step starts from the crude guess kernel: full Newton */
-        code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? &full : o, r->lu, r->piv,
-                               &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0);
-        st->iterations = it;
-        st->total_iterations += it;
-        st->residual = res;
-        if (code != HPGEN_OK) { st->code = code; st->step = r->k; return n; }
-        memcpy(r->zprev2, r->zprev, sizeof r->z);
-        memcpy(r->zprev, r->z, sizeof r->z);
-        memcpy(r->z, zs, sizeof r->z);
-        if (r->have_prev < 2) r->have_prev += 1;
-        memcpy(r->g, g1, sizeof g1);
-        memcpy(r->p, p1, sizeof p1);
-        r->k += 1;
+        if (hpgen_run_step(r, hv, o, &full, st) != HPGEN_OK) return n;
         if (r->k % every == 0) {
-            memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof g1);
-            memcpy(p_rec + rec * HPGEN_D, r->p, sizeof p1);
+            memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof r->g);
+            memcpy(p_rec + rec * HPGEN_D, r->p, sizeof r->p);
             ++rec;
         }
     }
     st->step = r->k;
     return steps;
+}
+
+/* Advance a run by up to `steps` steps of size h, recording the upward crossings of the
+   scene's Poincare section s(g, p) = 0 (kernel section): when s_k < 0 <= s_{k+1}, with
+   theta = s_k / (s_k - s_{k+1}) in (0, 1], record j holds
+     k_rec[j] = k,  t_rec[j] = (k + theta) h,
+     p_rec[j * D] = (1 - theta) p_k + theta p_{k+1}      (linear in the step: O(h^2)),
+     g_rec[j * NN] = g_k tau(theta h xi_{k+1})            (kernel chart_point: on the group).
+   s of the run's current state is kept in the run, so calls chain (a crossing between two
+   calls is found). Stops after `cap` records (the crossing step included), at a failed step,
+   or after `steps` steps; *n_rec: the records written. Returns the steps done in this call. */
+HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long steps,
+                                              const hpgen_options* o, long long cap,
+                                              double* t_rec, double* g_rec, double* p_rec,
+                                              long long* k_rec, long long* n_rec,
+                                              hpgen_status* st) {
+    double hv[1], g0[HPGEN_NN], p0[HPGEN_D], s1[1], th[1];
+    long long n;
+    int i;
+    hpgen_options full;
+    hpgen_status_init(st);
+    *n_rec = 0;
+    if (steps < 0 || cap < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    hv[0] = h;
+    full = *o;
+    full.simplified = 0;
+    if (!r->s_valid) {
+        if (hpgen_k_section(r->g, r->p, s1)) { st->code = HPGEN_NONFINITE; return 0; }
+        r->s = s1[0];
+        r->s_valid = 1;
+    }
+    for (n = 0; n < steps && *n_rec < cap; ++n) {
+        const double s0 = r->s;
+        const long long k = r->k;
+        memcpy(g0, r->g, sizeof g0);
+        memcpy(p0, r->p, sizeof p0);
+        if (hpgen_run_step(r, hv, o, &full, st) != HPGEN_OK) return n;
+        if (hpgen_k_section(r->g, r->p, s1) || !isfinite(s1[0])) {
+            st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
+        }
+        r->s = s1[0];
+        if (s0 < 0.0 && s1[0] >= 0.0) {
+            const long long j = *n_rec;
+            const double theta = s0 / (s0 - s1[0]);
+            th[0] = theta;
+            k_rec[j] = k;
+            t_rec[j] = ((double)k + theta) * h;
+            for (i = 0; i < HPGEN_D; ++i)
+                p_rec[j * HPGEN_D + i] = (1.0 - theta) * p0[i] + theta * r->p[i];
+            if (hpgen_k_chart_point(r->z, g0, hv, th, g_rec + j * HPGEN_NN)) {
+                st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
+            }
+            *n_rec = j + 1;
+        }
+    }
+    st->step = r->k;
+    return n;
 }
 
 /* Advance B independent runs (runs[0..B-1]) by `steps` steps each, one after the other,

@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 08b5ad8b29d4065dec52af7e613a126f48221075f3032a67bdb3649b7193f6bc
+# content hash: db5fdd466f0698ecbf022c2a11b9ff23272534df86a7ea51e0ce76e5046a5ecd
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -1457,6 +1457,500 @@ def margin(z, h):
     return [_fromiter(_r[0], _F64, 1)]
 
 
+def _raw_section(g, p):
+    """section on lists of Python floats -> [s[1]] as lists (see RAW)"""
+    r0 = [0.0] * 1
+    r0[0] = 1.0
+    return [r0]
+
+
+def section(g, p):
+    """section(g[36], p[6]) -> [s[1]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (36,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 36, "section: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (6,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 6, "section: p")
+    _r = _raw_section(g, p)
+    return [_fromiter(_r[0], _F64, 1)]
+
+
+def _raw_chart_point(z, g, h, theta):
+    """chart_point on lists of Python floats -> [g_theta[36]] as lists (see RAW)"""
+    try:
+        w0, w1, w2, w3, w4, w5 = z
+        w6, w9, w12, w15, w18, w21, w7, w10, w13, w16, w19, w22, w8, w11, w14, w17, w20, w23, w24, w27, w30, w33, w36, w39, w25, w28, w31, w34, w37, w40, w26, w29, w32, w35, w38, w41 = g
+        w42, = h
+        w43, = theta
+        r0 = [0.0] * 36
+        w0 = w43 * (w42 * w0)
+        w44 = w0 * w0
+        w1 = w43 * (w42 * w1)
+        w45 = w1 * w1
+        w46 = w44 + w45
+        w2 = w43 * (w42 * w2)
+        w47 = w2 * w2
+        w48 = 4.0 / (4.0 + (w46 + w47))
+        w45 = 1.0 - (w48 * ((w47 + w45) * 0.5))
+        w49 = (w0 * w1) * 0.5
+        w50 = w48 * (w2 + w49)
+        w51 = (w0 * w2) * 0.5
+        w52 = w48 * (w51 - w1)
+        r0[0] = ((w6 * w45) + (w7 * w50)) + (w8 * w52)
+        r0[1] = ((w9 * w45) + (w10 * w50)) + (w11 * w52)
+        r0[2] = ((w12 * w45) + (w13 * w50)) + (w14 * w52)
+        r0[3] = ((w15 * w45) + (w16 * w50)) + (w17 * w52)
+        r0[4] = ((w18 * w45) + (w19 * w50)) + (w20 * w52)
+        r0[5] = ((w21 * w45) + (w22 * w50)) + (w23 * w52)
+        w45 = w48 * (w49 - w2)
+        w44 = 1.0 - (w48 * ((w47 + w44) * 0.5))
+        w2 = (w1 * w2) * 0.5
+        w47 = w48 * (w0 + w2)
+        r0[6] = ((w6 * w45) + (w7 * w44)) + (w8 * w47)
+        r0[7] = ((w9 * w45) + (w10 * w44)) + (w11 * w47)
+        r0[8] = ((w12 * w45) + (w13 * w44)) + (w14 * w47)
+        r0[9] = ((w15 * w45) + (w16 * w44)) + (w17 * w47)
+        r0[10] = ((w18 * w45) + (w19 * w44)) + (w20 * w47)
+        r0[11] = ((w21 * w45) + (w22 * w44)) + (w23 * w47)
+        w1 = w48 * (w1 + w51)
+        w0 = w48 * (w2 - w0)
+        w2 = 1.0 - (w48 * (w46 * 0.5))
+        r0[12] = ((w6 * w1) + (w7 * w0)) + (w8 * w2)
+        r0[13] = ((w9 * w1) + (w10 * w0)) + (w11 * w2)
+        r0[14] = ((w12 * w1) + (w13 * w0)) + (w14 * w2)
+        r0[15] = ((w15 * w1) + (w16 * w0)) + (w17 * w2)
+        r0[16] = ((w18 * w1) + (w19 * w0)) + (w20 * w2)
+        r0[17] = ((w21 * w1) + (w22 * w0)) + (w23 * w2)
+        w0 = w43 * (w42 * w3)
+        w1 = w0 * w0
+        w2 = w43 * (w42 * w4)
+        w3 = w2 * w2
+        w4 = w1 + w3
+        w5 = w43 * (w42 * w5)
+        w6 = w5 * w5
+        w7 = 4.0 / (4.0 + (w4 + w6))
+        w3 = 1.0 - (w7 * ((w6 + w3) * 0.5))
+        w8 = (w0 * w2) * 0.5
+        w9 = w7 * (w5 + w8)
+        w10 = (w0 * w5) * 0.5
+        w11 = w7 * (w10 - w2)
+        r0[18] = ((w24 * w3) + (w25 * w9)) + (w26 * w11)
+        r0[19] = ((w27 * w3) + (w28 * w9)) + (w29 * w11)
+        r0[20] = ((w30 * w3) + (w31 * w9)) + (w32 * w11)
+        r0[21] = ((w33 * w3) + (w34 * w9)) + (w35 * w11)
+        r0[22] = ((w36 * w3) + (w37 * w9)) + (w38 * w11)
+        r0[23] = ((w39 * w3) + (w40 * w9)) + (w41 * w11)
+        w3 = w7 * (w8 - w5)
+        w1 = 1.0 - (w7 * ((w6 + w1) * 0.5))
+        w5 = (w2 * w5) * 0.5
+        w6 = w7 * (w0 + w5)
+        r0[24] = ((w24 * w3) + (w25 * w1)) + (w26 * w6)
+        r0[25] = ((w27 * w3) + (w28 * w1)) + (w29 * w6)
+        r0[26] = ((w30 * w3) + (w31 * w1)) + (w32 * w6)
+        r0[27] = ((w33 * w3) + (w34 * w1)) + (w35 * w6)
+        r0[28] = ((w36 * w3) + (w37 * w1)) + (w38 * w6)
+        r0[29] = ((w39 * w3) + (w40 * w1)) + (w41 * w6)
+        w1 = w7 * (w2 + w10)
+        w0 = w7 * (w5 - w0)
+        w2 = 1.0 - (w7 * (w4 * 0.5))
+        r0[30] = ((w24 * w1) + (w25 * w0)) + (w26 * w2)
+        r0[31] = ((w27 * w1) + (w28 * w0)) + (w29 * w2)
+        r0[32] = ((w30 * w1) + (w31 * w0)) + (w32 * w2)
+        r0[33] = ((w33 * w1) + (w34 * w0)) + (w35 * w2)
+        r0[34] = ((w36 * w1) + (w37 * w0)) + (w38 * w2)
+        r0[35] = ((w39 * w1) + (w40 * w0)) + (w41 * w2)
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 36
+        w0 = g[0]
+        w1 = 1.0
+        w2 = 4.0
+        w3 = theta[0]
+        w4 = h[0]
+        w5 = z[0]
+        w5 = w4 * w5
+        w5 = w3 * w5
+        w6 = w5 * w5
+        w7 = z[1]
+        w7 = w4 * w7
+        w7 = w3 * w7
+        w8 = w7 * w7
+        w9 = w6 + w8
+        w10 = z[2]
+        w10 = w4 * w10
+        w10 = w3 * w10
+        w11 = w10 * w10
+        w9 = w9 + w11
+        w9 = w2 + w9
+        w9 = w2 / w9 if w9 else _div(w2, w9)
+        w12 = w11 + w8
+        w13 = 2.0
+        w12 = w12 / w13 if w13 else _div(w12, w13)
+        w12 = w9 * w12
+        w12 = w1 - w12
+        w14 = w0 * w12
+        w15 = g[6]
+        w16 = w5 * w7
+        w16 = w16 / w13 if w13 else _div(w16, w13)
+        w16 = w10 + w16
+        w16 = w9 * w16
+        w17 = w15 * w16
+        w14 = w14 + w17
+        w17 = g[12]
+        w18 = w5 * w10
+        w18 = w18 / w13 if w13 else _div(w18, w13)
+        w18 = w18 - w7
+        w18 = w9 * w18
+        w19 = w17 * w18
+        w14 = w14 + w19
+        r0[0] = w14
+        w14 = g[1]
+        w19 = w14 * w12
+        w20 = g[7]
+        w21 = w20 * w16
+        w19 = w19 + w21
+        w21 = g[13]
+        w22 = w21 * w18
+        w19 = w19 + w22
+        r0[1] = w19
+        w19 = g[2]
+        w22 = w19 * w12
+        w23 = g[8]
+        w24 = w23 * w16
+        w22 = w22 + w24
+        w24 = g[14]
+        w25 = w24 * w18
+        w22 = w22 + w25
+        r0[2] = w22
+        w22 = g[3]
+        w25 = w22 * w12
+        w26 = g[9]
+        w27 = w26 * w16
+        w25 = w25 + w27
+        w27 = g[15]
+        w28 = w27 * w18
+        w25 = w25 + w28
+        r0[3] = w25
+        w25 = g[4]
+        w28 = w25 * w12
+        w29 = g[10]
+        w30 = w29 * w16
+        w28 = w28 + w30
+        w30 = g[16]
+        w31 = w30 * w18
+        w28 = w28 + w31
+        r0[4] = w28
+        w28 = g[5]
+        w12 = w28 * w12
+        w31 = g[11]
+        w16 = w31 * w16
+        w12 = w12 + w16
+        w16 = g[17]
+        w18 = w16 * w18
+        w12 = w12 + w18
+        r0[5] = w12
+        w12 = w7 * w5
+        w12 = w12 / w13 if w13 else _div(w12, w13)
+        w12 = w12 - w10
+        w12 = w9 * w12
+        w18 = w0 * w12
+        w11 = w11 + w6
+        w11 = w11 / w13 if w13 else _div(w11, w13)
+        w11 = w9 * w11
+        w11 = w1 - w11
+        w32 = w15 * w11
+        w18 = w18 + w32
+        w32 = w7 * w10
+        w32 = w32 / w13 if w13 else _div(w32, w13)
+        w32 = w5 + w32
+        w32 = w9 * w32
+        w33 = w17 * w32
+        w18 = w18 + w33
+        r0[6] = w18
+        w18 = w14 * w12
+        w33 = w20 * w11
+        w18 = w18 + w33
+        w33 = w21 * w32
+        w18 = w18 + w33
+        r0[7] = w18
+        w18 = w19 * w12
+        w33 = w23 * w11
+        w18 = w18 + w33
+        w33 = w24 * w32
+        w18 = w18 + w33
+        r0[8] = w18
+        w18 = w22 * w12
+        w33 = w26 * w11
+        w18 = w18 + w33
+        w33 = w27 * w32
+        w18 = w18 + w33
+        r0[9] = w18
+        w18 = w25 * w12
+        w33 = w29 * w11
+        w18 = w18 + w33
+        w33 = w30 * w32
+        w18 = w18 + w33
+        r0[10] = w18
+        w12 = w28 * w12
+        w11 = w31 * w11
+        w12 = w12 + w11
+        w32 = w16 * w32
+        w12 = w12 + w32
+        r0[11] = w12
+        w12 = w10 * w5
+        w12 = w12 / w13 if w13 else _div(w12, w13)
+        w12 = w7 + w12
+        w12 = w9 * w12
+        w0 = w0 * w12
+        w10 = w10 * w7
+        w10 = w10 / w13 if w13 else _div(w10, w13)
+        w10 = w10 - w5
+        w10 = w9 * w10
+        w15 = w15 * w10
+        w0 = w0 + w15
+        w8 = w8 + w6
+        w8 = w8 / w13 if w13 else _div(w8, w13)
+        w9 = w9 * w8
+        w9 = w1 - w9
+        w17 = w17 * w9
+        w0 = w0 + w17
+        r0[12] = w0
+        w14 = w14 * w12
+        w20 = w20 * w10
+        w14 = w14 + w20
+        w21 = w21 * w9
+        w14 = w14 + w21
+        r0[13] = w14
+        w19 = w19 * w12
+        w23 = w23 * w10
+        w19 = w19 + w23
+        w24 = w24 * w9
+        w19 = w19 + w24
+        r0[14] = w19
+        w22 = w22 * w12
+        w26 = w26 * w10
+        w22 = w22 + w26
+        w27 = w27 * w9
+        w22 = w22 + w27
+        r0[15] = w22
+        w25 = w25 * w12
+        w29 = w29 * w10
+        w25 = w25 + w29
+        w30 = w30 * w9
+        w25 = w25 + w30
+        r0[16] = w25
+        w28 = w28 * w12
+        w31 = w31 * w10
+        w28 = w28 + w31
+        w16 = w16 * w9
+        w28 = w28 + w16
+        r0[17] = w28
+        w28 = g[18]
+        w16 = z[3]
+        w16 = w4 * w16
+        w16 = w3 * w16
+        w9 = w16 * w16
+        w31 = z[4]
+        w31 = w4 * w31
+        w31 = w3 * w31
+        w10 = w31 * w31
+        w12 = w9 + w10
+        w25 = z[5]
+        w4 = w4 * w25
+        w3 = w3 * w4
+        w4 = w3 * w3
+        w12 = w12 + w4
+        w12 = w2 + w12
+        w2 = w2 / w12 if w12 else _div(w2, w12)
+        w12 = w4 + w10
+        w12 = w12 / w13 if w13 else _div(w12, w13)
+        w12 = w2 * w12
+        w12 = w1 - w12
+        w25 = w28 * w12
+        w30 = g[24]
+        w29 = w16 * w31
+        w29 = w29 / w13 if w13 else _div(w29, w13)
+        w29 = w3 + w29
+        w29 = w2 * w29
+        w22 = w30 * w29
+        w25 = w25 + w22
+        w22 = g[30]
+        w27 = w16 * w3
+        w27 = w27 / w13 if w13 else _div(w27, w13)
+        w27 = w27 - w31
+        w27 = w2 * w27
+        w26 = w22 * w27
+        w25 = w25 + w26
+        r0[18] = w25
+        w25 = g[19]
+        w26 = w25 * w12
+        w19 = g[25]
+        w24 = w19 * w29
+        w26 = w26 + w24
+        w24 = g[31]
+        w23 = w24 * w27
+        w26 = w26 + w23
+        r0[19] = w26
+        w26 = g[20]
+        w23 = w26 * w12
+        w14 = g[26]
+        w21 = w14 * w29
+        w23 = w23 + w21
+        w21 = g[32]
+        w20 = w21 * w27
+        w23 = w23 + w20
+        r0[20] = w23
+        w23 = g[21]
+        w20 = w23 * w12
+        w0 = g[27]
+        w17 = w0 * w29
+        w20 = w20 + w17
+        w17 = g[33]
+        w8 = w17 * w27
+        w20 = w20 + w8
+        r0[21] = w20
+        w20 = g[22]
+        w8 = w20 * w12
+        w6 = g[28]
+        w15 = w6 * w29
+        w8 = w8 + w15
+        w15 = g[34]
+        w5 = w15 * w27
+        w8 = w8 + w5
+        r0[22] = w8
+        w8 = g[23]
+        w12 = w8 * w12
+        w5 = g[29]
+        w29 = w5 * w29
+        w12 = w12 + w29
+        w29 = g[35]
+        w27 = w29 * w27
+        w12 = w12 + w27
+        r0[23] = w12
+        w12 = w31 * w16
+        w12 = w12 / w13 if w13 else _div(w12, w13)
+        w12 = w12 - w3
+        w12 = w2 * w12
+        w27 = w28 * w12
+        w4 = w4 + w9
+        w4 = w4 / w13 if w13 else _div(w4, w13)
+        w4 = w2 * w4
+        w4 = w1 - w4
+        w7 = w30 * w4
+        w27 = w27 + w7
+        w7 = w31 * w3
+        w7 = w7 / w13 if w13 else _div(w7, w13)
+        w7 = w16 + w7
+        w7 = w2 * w7
+        w32 = w22 * w7
+        w27 = w27 + w32
+        r0[24] = w27
+        w27 = w25 * w12
+        w32 = w19 * w4
+        w27 = w27 + w32
+        w32 = w24 * w7
+        w27 = w27 + w32
+        r0[25] = w27
+        w27 = w26 * w12
+        w32 = w14 * w4
+        w27 = w27 + w32
+        w32 = w21 * w7
+        w27 = w27 + w32
+        r0[26] = w27
+        w27 = w23 * w12
+        w32 = w0 * w4
+        w27 = w27 + w32
+        w32 = w17 * w7
+        w27 = w27 + w32
+        r0[27] = w27
+        w27 = w20 * w12
+        w32 = w6 * w4
+        w27 = w27 + w32
+        w32 = w15 * w7
+        w27 = w27 + w32
+        r0[28] = w27
+        w12 = w8 * w12
+        w4 = w5 * w4
+        w12 = w12 + w4
+        w7 = w29 * w7
+        w12 = w12 + w7
+        r0[29] = w12
+        w12 = w3 * w16
+        w12 = w12 / w13 if w13 else _div(w12, w13)
+        w12 = w31 + w12
+        w12 = w2 * w12
+        w28 = w28 * w12
+        w3 = w3 * w31
+        w3 = w3 / w13 if w13 else _div(w3, w13)
+        w3 = w3 - w16
+        w3 = w2 * w3
+        w30 = w30 * w3
+        w28 = w28 + w30
+        w10 = w10 + w9
+        w10 = w10 / w13 if w13 else _div(w10, w13)
+        w2 = w2 * w10
+        w1 = w1 - w2
+        w22 = w22 * w1
+        w28 = w28 + w22
+        r0[30] = w28
+        w25 = w25 * w12
+        w19 = w19 * w3
+        w25 = w25 + w19
+        w24 = w24 * w1
+        w25 = w25 + w24
+        r0[31] = w25
+        w26 = w26 * w12
+        w14 = w14 * w3
+        w26 = w26 + w14
+        w21 = w21 * w1
+        w26 = w26 + w21
+        r0[32] = w26
+        w23 = w23 * w12
+        w0 = w0 * w3
+        w23 = w23 + w0
+        w17 = w17 * w1
+        w23 = w23 + w17
+        r0[33] = w23
+        w20 = w20 * w12
+        w6 = w6 * w3
+        w20 = w20 + w6
+        w15 = w15 * w1
+        w20 = w20 + w15
+        r0[34] = w20
+        w8 = w8 * w12
+        w5 = w5 * w3
+        w8 = w8 + w5
+        w29 = w29 * w1
+        w8 = w8 + w29
+        r0[35] = w8
+    return [r0]
+
+
+def chart_point(z, g, h, theta):
+    """chart_point(z[6], g[36], h[1], theta[1]) -> [g_theta[36]]"""
+    if _type(z) is _NDARRAY and z.dtype is _F64 and z.shape == (6,):
+        z = z.tolist()
+    else:
+        z = _vec(z, 6, "chart_point: z")
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (36,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 36, "chart_point: g")
+    if _type(h) is _NDARRAY and h.dtype is _F64 and h.shape == (1,):
+        h = h.tolist()
+    else:
+        h = _vec(h, 1, "chart_point: h")
+    if _type(theta) is _NDARRAY and theta.dtype is _F64 and theta.shape == (1,):
+        theta = theta.tolist()
+    else:
+        theta = _vec(theta, 1, "chart_point: theta")
+    _r = _raw_chart_point(z, g, h, theta)
+    return [_fromiter(_r[0], _F64, 36)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -1469,6 +1963,8 @@ KERNELS = {
     "momentum": momentum,
     "defect": defect,
     "margin": margin,
+    "section": section,
+    "chart_point": chart_point,
 }
 
 RAW = {
@@ -1483,4 +1979,6 @@ RAW = {
     "momentum": _raw_momentum,
     "defect": _raw_defect,
     "margin": _raw_margin,
+    "section": _raw_section,
+    "chart_point": _raw_chart_point,
 }

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 56bcf0c51f7b20c3f48ddab4898fbba5a0b70ef00166d813871d2d1e7088d4af
+# content hash: cd778340fac0d9651a8d8f3395dc442cb5048971248c03505ddf2541482f9684
 """hpgen integrator free_rigid_body_stormer_verlet_cay_truncated for the model free_rigid_body.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "free_rigid_body_stormer_verlet_cay_truncated"
-HASH = "56bcf0c51f7b20c3f48ddab4898fbba5a0b70ef00166d813871d2d1e7088d4af"
+HASH = "cd778340fac0d9651a8d8f3395dc442cb5048971248c03505ddf2541482f9684"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: free_rigid_body
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 56bcf0c51f7b20c3f48ddab4898fbba5a0b70ef00166d813871d2d1e7088d4af
+ * content hash: cd778340fac0d9651a8d8f3395dc442cb5048971248c03505ddf2541482f9684
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -45,6 +45,7 @@
 #define casadi_f0 CASADI_PREFIX(f0)
 #define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_f10 CASADI_PREFIX(f10)
+#define casadi_f11 CASADI_PREFIX(f11)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -269,213 +270,8 @@ CASADI_SYMBOL_EXPORT int residual_work_bytes(casadi_int *sz_arg, casadi_int* sz_
   return 0;
 }
 
-/* jacobian:(z[3],g[9],p[3],h)->(J[9]) */
-static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
-  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
-  a00=6.6666666666666663e-01;
-  a01=arg[0]? arg[0][2] : 0;
-  a02=(a00*a01);
-  a03=2.5000000000000000e-01;
-  a04=arg[3]? arg[3][0] : 0;
-  a01=(a04*a01);
-  a05=(a01*a04);
-  a05=(a03*a05);
-  a06=(a02*a05);
-  a07=arg[0]? arg[0][1] : 0;
-  a08=(a04*a07);
-  a09=(a08*a04);
-  a09=(a03*a09);
-  a10=(a07*a09);
-  a11=(a06+a10);
-  a12=arg[0]? arg[0][0] : 0;
-  a13=(2.*a12);
-  a12=(a04*a12);
-  a14=(2.*a12);
-  a14=(a14*a04);
-  a14=(a03*a14);
-  a14=(a13*a14);
-  a15=1.;
-  a16=casadi_sq(a12);
-  a17=4.;
-  a16=(a16/a17);
-  a16=(a15+a16);
-  a16=(2.*a16);
-  a14=(a14+a16);
-  a11=(a11+a14);
-  a11=(-a11);
-  if (res[0]!=0) res[0][0]=a11;
-  a11=(a13*a09);
-  a14=2.;
-  a16=(a01/a14);
-  a18=(a12*a08);
-  a18=(a18/a17);
-  a18=(a16+a18);
-  a18=(2.*a18);
-  a11=(a11+a18);
-  a18=5.0000000000000000e-01;
-  a18=(a18*a04);
-  a19=(a02*a18);
-  a11=(a11-a19);
-  a11=(-a11);
-  if (res[0]!=0) res[0][1]=a11;
-  a11=(a07*a18);
-  a20=(a13*a05);
-  a21=(a12*a01);
-  a21=(a21/a17);
-  a22=(a08/a14);
-  a21=(a21-a22);
-  a21=(2.*a21);
-  a20=(a20+a21);
-  a20=(a11+a20);
-  a20=(-a20);
-  if (res[0]!=0) res[0][2]=a20;
-  a20=(a12*a04);
-  a20=(a03*a20);
-  a21=(a07*a20);
-  a23=(a08*a12);
-  a23=(a23/a17);
-  a23=(a23-a16);
-  a21=(a21+a23);
-  a19=(a19+a21);
-  a19=(-a19);
-  if (res[0]!=0) res[0][3]=a19;
-  a19=(2.*a08);
-  a19=(a19*a04);
-  a19=(a03*a19);
-  a19=(a07*a19);
-  a21=casadi_sq(a08);
-  a21=(a21/a17);
-  a21=(a15+a21);
-  a19=(a19+a21);
-  a06=(a06+a19);
-  a19=(a13*a20);
-  a06=(a06+a19);
-  a06=(-a06);
-  if (res[0]!=0) res[0][4]=a06;
-  a07=(a07*a05);
-  a14=(a12/a14);
-  a05=(a08*a01);
-  a05=(a05/a17);
-  a05=(a14+a05);
-  a07=(a07+a05);
-  a13=(a13*a18);
-  a07=(a07-a13);
-  a07=(-a07);
-  if (res[0]!=0) res[0][5]=a07;
-  a20=(a02*a20);
-  a12=(a01*a12);
-  a12=(a12/a17);
-  a22=(a22+a12);
-  a22=(a00*a22);
-  a20=(a20+a22);
-  a20=(a20-a11);
-  a20=(-a20);
-  if (res[0]!=0) res[0][6]=a20;
-  a09=(a02*a09);
-  a08=(a01*a08);
-  a08=(a08/a17);
-  a08=(a08-a14);
-  a08=(a00*a08);
-  a09=(a09+a08);
-  a09=(a09+a13);
-  a09=(-a09);
-  if (res[0]!=0) res[0][7]=a09;
-  a09=(2.*a01);
-  a09=(a09*a04);
-  a03=(a03*a09);
-  a02=(a02*a03);
-  a01=casadi_sq(a01);
-  a01=(a01/a17);
-  a15=(a15+a01);
-  a00=(a00*a15);
-  a02=(a02+a00);
-  a02=(a02+a10);
-  a02=(a02+a19);
-  a02=(-a02);
-  if (res[0]!=0) res[0][8]=a02;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int jacobian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f1(arg, res, iw, w, mem);
-}
-
-CASADI_SYMBOL_EXPORT int jacobian_checkout(void) {
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT void jacobian_release(int mem) {
-}
-
-CASADI_SYMBOL_EXPORT void jacobian_incref(void) {
-}
-
-CASADI_SYMBOL_EXPORT void jacobian_decref(void) {
-}
-
-CASADI_SYMBOL_EXPORT casadi_int jacobian_n_in(void) { return 4;}
-
-CASADI_SYMBOL_EXPORT casadi_int jacobian_n_out(void) { return 1;}
-
-CASADI_SYMBOL_EXPORT casadi_real jacobian_default_in(casadi_int i) {
-  switch (i) {
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* jacobian_name_in(casadi_int i) {
-  switch (i) {
-    case 0: return "z";
-    case 1: return "g";
-    case 2: return "p";
-    case 3: return "h";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* jacobian_name_out(casadi_int i) {
-  switch (i) {
-    case 0: return "J";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* jacobian_sparsity_in(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s0;
-    case 1: return casadi_s1;
-    case 2: return casadi_s0;
-    case 3: return casadi_s2;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* jacobian_sparsity_out(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s1;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT int jacobian_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4;
-  if (sz_res) *sz_res = 1;
-  if (sz_iw) *sz_iw = 0;
-  if (sz_w) *sz_w = 0;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int jacobian_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
-  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
-  if (sz_w) *sz_w = 0*sizeof(casadi_real);
-  return 0;
-}
-
 /* residual_jacobian:(z[3],g[9],p[3],h)->(F[3],J[9]) */
-static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   a00=arg[2]? arg[2][0] : 0;
@@ -627,7 +423,7 @@ static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int residual_jacobian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f2(arg, res, iw, w, mem);
+  return casadi_f1(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int residual_jacobian_checkout(void) {
@@ -706,7 +502,7 @@ CASADI_SYMBOL_EXPORT int residual_jacobian_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* update:(z[3],g[9],p[3],h)->(g1[9],p1[3]) */
-static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30;
@@ -872,7 +668,7 @@ static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int update(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f3(arg, res, iw, w, mem);
+  return casadi_f2(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int update_checkout(void) {
@@ -951,7 +747,7 @@ CASADI_SYMBOL_EXPORT int update_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* guess:(xi[3],g[9],p[3],h)->(z0[3]) */
-static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0;
   a0=arg[0]? arg[0][0] : 0;
   if (res[0]!=0) res[0][0]=a0;
@@ -963,7 +759,7 @@ static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int guess(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f4(arg, res, iw, w, mem);
+  return casadi_f3(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int guess_checkout(void) {
@@ -1040,7 +836,7 @@ CASADI_SYMBOL_EXPORT int guess_work_bytes(casadi_int *sz_arg, casadi_int* sz_res
 }
 
 /* legendre:(g[9],xi[3])->(mu[3]) */
-static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=arg[1]? arg[1][0] : 0;
   a0=(2.*a0);
@@ -1055,7 +851,7 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int legendre(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f5(arg, res, iw, w, mem);
+  return casadi_f4(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int legendre_checkout(void) {
@@ -1128,7 +924,7 @@ CASADI_SYMBOL_EXPORT int legendre_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 }
 
 /* hessian:(g[9],xi[3])->(H[9]) */
-static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=2.;
   if (res[0]!=0) res[0][0]=a0;
@@ -1147,7 +943,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int hessian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f5(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int hessian_checkout(void) {
@@ -1220,7 +1016,7 @@ CASADI_SYMBOL_EXPORT int hessian_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
 }
 
 /* energy:(g[9],xi[3])->(E) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4;
   a0=arg[1]? arg[1][0] : 0;
   a1=(2.*a0);
@@ -1247,7 +1043,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f6(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int energy_checkout(void) {
@@ -1320,7 +1116,7 @@ CASADI_SYMBOL_EXPORT int energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* momentum:(g[9],p[3])->(m[3]) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=arg[0]? arg[0][8] : 0;
@@ -1384,7 +1180,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int momentum(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int momentum_checkout(void) {
@@ -1457,7 +1253,7 @@ CASADI_SYMBOL_EXPORT int momentum_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 }
 
 /* defect:(g[9])->(e) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12;
   a00=arg[0]? arg[0][0] : 0;
@@ -1557,7 +1353,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int defect(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int defect_checkout(void) {
@@ -1628,7 +1424,7 @@ CASADI_SYMBOL_EXPORT int defect_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* margin:(z[3],h)->(m) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4;
   a0=1.;
   a1=4.;
@@ -1654,7 +1450,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int margin(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int margin_checkout(void) {
@@ -1726,6 +1522,291 @@ CASADI_SYMBOL_EXPORT int margin_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
   return 0;
 }
 
+/* section:(g[9],p[3])->(s) */
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=1.;
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int section(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f10(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int section_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void section_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void section_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void section_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int section_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int section_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real section_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* section_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* section_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "s";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* section_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* section_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int section_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int section_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* chart_point:(z[3],g[9],h,theta)->(g_theta[9]) */
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21;
+  a00=arg[1]? arg[1][0] : 0;
+  a01=1.;
+  a02=4.;
+  a03=arg[3]? arg[3][0] : 0;
+  a04=arg[2]? arg[2][0] : 0;
+  a05=arg[0]? arg[0][0] : 0;
+  a05=(a04*a05);
+  a05=(a03*a05);
+  a06=casadi_sq(a05);
+  a07=arg[0]? arg[0][1] : 0;
+  a07=(a04*a07);
+  a07=(a03*a07);
+  a08=casadi_sq(a07);
+  a09=(a06+a08);
+  a10=arg[0]? arg[0][2] : 0;
+  a04=(a04*a10);
+  a03=(a03*a04);
+  a04=casadi_sq(a03);
+  a09=(a09+a04);
+  a09=(a02+a09);
+  a02=(a02/a09);
+  a09=(a04+a08);
+  a10=2.;
+  a09=(a09/a10);
+  a09=(a02*a09);
+  a09=(a01-a09);
+  a11=(a00*a09);
+  a12=arg[1]? arg[1][3] : 0;
+  a13=(a05*a07);
+  a13=(a13/a10);
+  a13=(a03+a13);
+  a13=(a02*a13);
+  a14=(a12*a13);
+  a11=(a11+a14);
+  a14=arg[1]? arg[1][6] : 0;
+  a15=(a05*a03);
+  a15=(a15/a10);
+  a15=(a15-a07);
+  a15=(a02*a15);
+  a16=(a14*a15);
+  a11=(a11+a16);
+  if (res[0]!=0) res[0][0]=a11;
+  a11=arg[1]? arg[1][1] : 0;
+  a16=(a11*a09);
+  a17=arg[1]? arg[1][4] : 0;
+  a18=(a17*a13);
+  a16=(a16+a18);
+  a18=arg[1]? arg[1][7] : 0;
+  a19=(a18*a15);
+  a16=(a16+a19);
+  if (res[0]!=0) res[0][1]=a16;
+  a16=arg[1]? arg[1][2] : 0;
+  a09=(a16*a09);
+  a19=arg[1]? arg[1][5] : 0;
+  a13=(a19*a13);
+  a09=(a09+a13);
+  a13=arg[1]? arg[1][8] : 0;
+  a15=(a13*a15);
+  a09=(a09+a15);
+  if (res[0]!=0) res[0][2]=a09;
+  a09=(a07*a05);
+  a09=(a09/a10);
+  a09=(a09-a03);
+  a09=(a02*a09);
+  a15=(a00*a09);
+  a04=(a04+a06);
+  a04=(a04/a10);
+  a04=(a02*a04);
+  a04=(a01-a04);
+  a20=(a12*a04);
+  a15=(a15+a20);
+  a20=(a07*a03);
+  a20=(a20/a10);
+  a20=(a05+a20);
+  a20=(a02*a20);
+  a21=(a14*a20);
+  a15=(a15+a21);
+  if (res[0]!=0) res[0][3]=a15;
+  a15=(a11*a09);
+  a21=(a17*a04);
+  a15=(a15+a21);
+  a21=(a18*a20);
+  a15=(a15+a21);
+  if (res[0]!=0) res[0][4]=a15;
+  a09=(a16*a09);
+  a04=(a19*a04);
+  a09=(a09+a04);
+  a20=(a13*a20);
+  a09=(a09+a20);
+  if (res[0]!=0) res[0][5]=a09;
+  a09=(a03*a05);
+  a09=(a09/a10);
+  a09=(a07+a09);
+  a09=(a02*a09);
+  a00=(a00*a09);
+  a03=(a03*a07);
+  a03=(a03/a10);
+  a03=(a03-a05);
+  a03=(a02*a03);
+  a12=(a12*a03);
+  a00=(a00+a12);
+  a08=(a08+a06);
+  a08=(a08/a10);
+  a02=(a02*a08);
+  a01=(a01-a02);
+  a14=(a14*a01);
+  a00=(a00+a14);
+  if (res[0]!=0) res[0][6]=a00;
+  a11=(a11*a09);
+  a17=(a17*a03);
+  a11=(a11+a17);
+  a18=(a18*a01);
+  a11=(a11+a18);
+  if (res[0]!=0) res[0][7]=a11;
+  a16=(a16*a09);
+  a19=(a19*a03);
+  a16=(a16+a19);
+  a13=(a13*a01);
+  a16=(a16+a13);
+  if (res[0]!=0) res[0][8]=a16;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int chart_point(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f11(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int chart_point_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void chart_point_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void chart_point_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void chart_point_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int chart_point_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int chart_point_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real chart_point_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* chart_point_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "h";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* chart_point_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "g_theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* chart_point_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s2;
+    case 3: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* chart_point_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int chart_point_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int chart_point_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
 
 
 /* ======================= end of CasADi-generated code =================================== */
@@ -1783,9 +1864,11 @@ typedef struct hpgen_run {
     long long k;                     /* steps done */
     long long have_prev;             /* how many of zprev, zprev2 are valid (0, 1, 2) */
     long long lu_valid;              /* lu holds J^{-1} */
+    double s;                        /* section(g_k, p_k), when s_valid */
+    long long s_valid;
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "56bcf0c51f7b20c3f48ddab4898fbba5a0b70ef00166d813871d2d1e7088d4af"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "cd778340fac0d9651a8d8f3395dc442cb5048971248c03505ddf2541482f9684"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -1793,6 +1876,18 @@ HPGEN_EXPORT void hpgen_dims(long long* out) {
 }
 
 /* ---- kernel wrappers: dense column-major arguments, CasADi work arrays on the stack ---- */
+static int hpgen_k_residual(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_residual_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1);
+static int hpgen_k_update(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1);
+static int hpgen_k_guess(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_legendre(const double* in0, const double* in1, double* out0);
+static int hpgen_k_hessian(const double* in0, const double* in1, double* out0);
+static int hpgen_k_energy(const double* in0, const double* in1, double* out0);
+static int hpgen_k_momentum(const double* in0, const double* in1, double* out0);
+static int hpgen_k_defect(const double* in0, double* out0);
+static int hpgen_k_margin(const double* in0, const double* in1, double* out0);
+static int hpgen_k_section(const double* in0, const double* in1, double* out0);
+static int hpgen_k_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
 
 /* residual(z[3], g[9], p[3], h[1]) -> (F[3]) */
 #define HPGEN_RESIDUAL_SZ_ARG 4
@@ -1822,30 +1917,11 @@ HPGEN_EXPORT int hpgen_kernel_residual(const double* in0, const double* in1, con
 }
 
 /* jacobian(z[3], g[9], p[3], h[1]) -> (J[9]) */
-#define HPGEN_JACOBIAN_SZ_ARG 4
-#define HPGEN_JACOBIAN_SZ_RES 1
-#define HPGEN_JACOBIAN_SZ_IW 0
-#define HPGEN_JACOBIAN_SZ_W 24
-/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
-   interposed, so calls to it are never inlined); hpgen_kernel_jacobian exports it */
-static int hpgen_k_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
-    const casadi_real* arg[HPGEN_JACOBIAN_SZ_ARG + 1];
-    casadi_real* res[HPGEN_JACOBIAN_SZ_RES + 1];
-    casadi_int iw[HPGEN_JACOBIAN_SZ_IW + 1];
-    casadi_real w[HPGEN_JACOBIAN_SZ_W + 1];
-    int flag, i = 0;
-    arg[0] = in0;
-    arg[1] = in1;
-    arg[2] = in2;
-    arg[3] = in3;
-    res[0] = out0;
-    flag = jacobian(arg, res, iw, w, 0);
-    (void)i;
-    return flag;
-}
-
+/* = output 1 of residual_jacobian (the same CasADi algorithm; its other outputs are
+   computed into scratch and dropped) */
 HPGEN_EXPORT int hpgen_kernel_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
-    return hpgen_k_jacobian(in0, in1, in2, in3, out0);
+    double scratch[HPGEN_NZ];
+    return hpgen_k_residual_jacobian(in0, in1, in2, in3, scratch, out0);
 }
 
 /* residual_jacobian(z[3], g[9], p[3], h[1]) -> (F[3], J[9]) */
@@ -2078,6 +2154,58 @@ static int hpgen_k_margin(const double* in0, const double* in1, double* out0) {
 
 HPGEN_EXPORT int hpgen_kernel_margin(const double* in0, const double* in1, double* out0) {
     return hpgen_k_margin(in0, in1, out0);
+}
+
+/* section(g[9], p[3]) -> (s[1]) */
+#define HPGEN_SECTION_SZ_ARG 2
+#define HPGEN_SECTION_SZ_RES 1
+#define HPGEN_SECTION_SZ_IW 0
+#define HPGEN_SECTION_SZ_W 1
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_section exports it */
+static int hpgen_k_section(const double* in0, const double* in1, double* out0) {
+    const casadi_real* arg[HPGEN_SECTION_SZ_ARG + 1];
+    casadi_real* res[HPGEN_SECTION_SZ_RES + 1];
+    casadi_int iw[HPGEN_SECTION_SZ_IW + 1];
+    casadi_real w[HPGEN_SECTION_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    res[0] = out0;
+    flag = section(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_section(const double* in0, const double* in1, double* out0) {
+    return hpgen_k_section(in0, in1, out0);
+}
+
+/* chart_point(z[3], g[9], h[1], theta[1]) -> (g_theta[9]) */
+#define HPGEN_CHART_POINT_SZ_ARG 4
+#define HPGEN_CHART_POINT_SZ_RES 1
+#define HPGEN_CHART_POINT_SZ_IW 0
+#define HPGEN_CHART_POINT_SZ_W 22
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_chart_point exports it */
+static int hpgen_k_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_CHART_POINT_SZ_ARG + 1];
+    casadi_real* res[HPGEN_CHART_POINT_SZ_RES + 1];
+    casadi_int iw[HPGEN_CHART_POINT_SZ_IW + 1];
+    casadi_real w[HPGEN_CHART_POINT_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = chart_point(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_chart_point(in0, in1, in2, in3, out0);
 }
 
 /* ---- dense linear algebra and Newton ---- */
@@ -2398,13 +2526,44 @@ HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, d
    recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
    sizes them for the records falling in this call). Stops at the first failed step (the run
    keeps the last good state). Returns the steps done in this call. */
+/* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
+   success the run moved to (g_{k+1}, p_{k+1}); o for the steps after the first, full (o with
+   full Newton) for the first. Updates the counters of st; returns the status code. */
+static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
+                          const hpgen_options* full, hpgen_status* st) {
+    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], res;
+    long long it;
+    int i, code;
+    /* start: the polynomial through the last solutions, extrapolated one step (quadratic
+       3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before) */
+    if (o->predictor && r->have_prev >= 2)
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 3.0 * (r->z[i] - r->zprev[i]) + r->zprev2[i];
+    else if (o->predictor && r->have_prev == 1)
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 2.0 * r->z[i] - r->zprev[i];
+    else
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
+    /* the first step starts from the crude guess kernel: full Newton */
+    code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? full : o, r->lu, r->piv,
+                           &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0);
+    st->iterations = it;
+    st->total_iterations += it;
+    st->residual = res;
+    if (code != HPGEN_OK) { st->code = code; st->step = r->k; return code; }
+    memcpy(r->zprev2, r->zprev, sizeof r->z);
+    memcpy(r->zprev, r->z, sizeof r->z);
+    memcpy(r->z, zs, sizeof r->z);
+    if (r->have_prev < 2) r->have_prev += 1;
+    memcpy(r->g, g1, sizeof g1);
+    memcpy(r->p, p1, sizeof p1);
+    r->k += 1;
+    return HPGEN_OK;
+}
+
 HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, long long every,
                                      const hpgen_options* o, double* g_rec, double* p_rec,
                                      hpgen_status* st) {
-    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], hv[1];
-    long long n, it, rec = 0;
-    double res;
-    int i;
+    double hv[1];
+    long long n, rec = 0;
     hpgen_options full;
     hpgen_status_init(st);
     if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
@@ -2412,37 +2571,72 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
     full = *o;
     full.simplified = 0;
     for (n = 0; n < steps; ++n) {
-        int code;
-        /* start: the polynomial through the last solutions, extrapolated one step (quadratic
-           3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before) */
-        if (o->predictor && r->have_prev >= 2)
-            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 3.0 * (r->z[i] - r->zprev[i]) + r->zprev2[i];
-        else if (o->predictor && r->have_prev == 1)
-            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 2.0 * r->z[i] - r->zprev[i];
-        else
-            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
-        /* the first step starts from the crude guess kernel: full Newton */
-        code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? &full : o, r->lu, r->piv,
-                               &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0);
-        st->iterations = it;
-        st->total_iterations += it;
-        st->residual = res;
-        if (code != HPGEN_OK) { st->code = code; st->step = r->k; return n; }
-        memcpy(r->zprev2, r->zprev, sizeof r->z);
-        memcpy(r->zprev, r->z, sizeof r->z);
-        memcpy(r->z, zs, sizeof r->z);
-        if (r->have_prev < 2) r->have_prev += 1;
-        memcpy(r->g, g1, sizeof g1);
-        memcpy(r->p, p1, sizeof p1);
-        r->k += 1;
+        if (hpgen_run_step(r, hv, o, &full, st) != HPGEN_OK) return n;
         if (r->k % every == 0) {
-            memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof g1);
-            memcpy(p_rec + rec * HPGEN_D, r->p, sizeof p1);
+            memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof r->g);
+            memcpy(p_rec + rec * HPGEN_D, r->p, sizeof r->p);
             ++rec;
         }
     }
     st->step = r->k;
     return steps;
+}
+
+/* Advance a run by up to `steps` steps of size h, recording the upward crossings of the
+   scene's Poincare section s(g, p) = 0 (kernel section): when s_k < 0 <= s_{k+1}, with
+   theta = s_k / (s_k - s_{k+1}) in (0, 1], record j holds
+     k_rec[j] = k,  t_rec[j] = (k + theta) h,
+     p_rec[j * D] = (1 - theta) p_k + theta p_{k+1}      (linear in the step: O(h^2)),
+     g_rec[j * NN] = g_k tau(theta h xi_{k+1})            (kernel chart_point: on the group).
+   s of the run's current state is kept in the run, so calls chain (a crossing between two
+   calls is found). Stops after `cap` records (the crossing step included), at a failed step,
+   or after `steps` steps; *n_rec: the records written. Returns the steps done in this call. */
+HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long steps,
+                                              const hpgen_options* o, long long cap,
+                                              double* t_rec, double* g_rec, double* p_rec,
+                                              long long* k_rec, long long* n_rec,
+                                              hpgen_status* st) {
+    double hv[1], g0[HPGEN_NN], p0[HPGEN_D], s1[1], th[1];
+    long long n;
+    int i;
+    hpgen_options full;
+    hpgen_status_init(st);
+    *n_rec = 0;
+    if (steps < 0 || cap < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    hv[0] = h;
+    full = *o;
+    full.simplified = 0;
+    if (!r->s_valid) {
+        if (hpgen_k_section(r->g, r->p, s1)) { st->code = HPGEN_NONFINITE; return 0; }
+        r->s = s1[0];
+        r->s_valid = 1;
+    }
+    for (n = 0; n < steps && *n_rec < cap; ++n) {
+        const double s0 = r->s;
+        const long long k = r->k;
+        memcpy(g0, r->g, sizeof g0);
+        memcpy(p0, r->p, sizeof p0);
+        if (hpgen_run_step(r, hv, o, &full, st) != HPGEN_OK) return n;
+        if (hpgen_k_section(r->g, r->p, s1) || !isfinite(s1[0])) {
+            st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
+        }
+        r->s = s1[0];
+        if (s0 < 0.0 && s1[0] >= 0.0) {
+            const long long j = *n_rec;
+            const double theta = s0 / (s0 - s1[0]);
+            th[0] = theta;
+            k_rec[j] = k;
+            t_rec[j] = ((double)k + theta) * h;
+            for (i = 0; i < HPGEN_D; ++i)
+                p_rec[j * HPGEN_D + i] = (1.0 - theta) * p0[i] + theta * r->p[i];
+            if (hpgen_k_chart_point(r->z, g0, hv, th, g_rec + j * HPGEN_NN)) {
+                st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
+            }
+            *n_rec = j + 1;
+        }
+    }
+    st->step = r->k;
+    return n;
 }
 
 /* Advance B independent runs (runs[0..B-1]) by `steps` steps each, one after the other,

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 56bcf0c51f7b20c3f48ddab4898fbba5a0b70ef00166d813871d2d1e7088d4af
+# content hash: cd778340fac0d9651a8d8f3395dc442cb5048971248c03505ddf2541482f9684
 """Python backend of the hpgen module free_rigid_body_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -755,6 +755,212 @@ def margin(z, h):
     return [_fromiter(_r[0], _F64, 1)]
 
 
+def _raw_section(g, p):
+    """section on lists of Python floats -> [s[1]] as lists (see RAW)"""
+    r0 = [0.0] * 1
+    r0[0] = 1.0
+    return [r0]
+
+
+def section(g, p):
+    """section(g[9], p[3]) -> [s[1]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "section: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (3,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 3, "section: p")
+    _r = _raw_section(g, p)
+    return [_fromiter(_r[0], _F64, 1)]
+
+
+def _raw_chart_point(z, g, h, theta):
+    """chart_point on lists of Python floats -> [g_theta[9]] as lists (see RAW)"""
+    try:
+        w0, w1, w2 = z
+        w3, w6, w9, w4, w7, w10, w5, w8, w11 = g
+        w12, = h
+        w13, = theta
+        r0 = [0.0] * 9
+        w0 = w13 * (w12 * w0)
+        w14 = w0 * w0
+        w1 = w13 * (w12 * w1)
+        w15 = w1 * w1
+        w16 = w14 + w15
+        w2 = w13 * (w12 * w2)
+        w12 = w2 * w2
+        w13 = 4.0 / (4.0 + (w16 + w12))
+        w15 = 1.0 - (w13 * ((w12 + w15) * 0.5))
+        w17 = (w0 * w1) * 0.5
+        w18 = w13 * (w2 + w17)
+        w19 = (w0 * w2) * 0.5
+        w20 = w13 * (w19 - w1)
+        r0[0] = ((w3 * w15) + (w4 * w18)) + (w5 * w20)
+        r0[1] = ((w6 * w15) + (w7 * w18)) + (w8 * w20)
+        r0[2] = ((w9 * w15) + (w10 * w18)) + (w11 * w20)
+        w15 = w13 * (w17 - w2)
+        w12 = 1.0 - (w13 * ((w12 + w14) * 0.5))
+        w2 = (w1 * w2) * 0.5
+        w14 = w13 * (w0 + w2)
+        r0[3] = ((w3 * w15) + (w4 * w12)) + (w5 * w14)
+        r0[4] = ((w6 * w15) + (w7 * w12)) + (w8 * w14)
+        r0[5] = ((w9 * w15) + (w10 * w12)) + (w11 * w14)
+        w1 = w13 * (w1 + w19)
+        w0 = w13 * (w2 - w0)
+        w2 = 1.0 - (w13 * (w16 * 0.5))
+        r0[6] = ((w3 * w1) + (w4 * w0)) + (w5 * w2)
+        r0[7] = ((w6 * w1) + (w7 * w0)) + (w8 * w2)
+        r0[8] = ((w9 * w1) + (w10 * w0)) + (w11 * w2)
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 9
+        w0 = g[0]
+        w1 = 1.0
+        w2 = 4.0
+        w3 = theta[0]
+        w4 = h[0]
+        w5 = z[0]
+        w5 = w4 * w5
+        w5 = w3 * w5
+        w6 = w5 * w5
+        w7 = z[1]
+        w7 = w4 * w7
+        w7 = w3 * w7
+        w8 = w7 * w7
+        w9 = w6 + w8
+        w10 = z[2]
+        w4 = w4 * w10
+        w3 = w3 * w4
+        w4 = w3 * w3
+        w9 = w9 + w4
+        w9 = w2 + w9
+        w2 = w2 / w9 if w9 else _div(w2, w9)
+        w9 = w4 + w8
+        w10 = 2.0
+        w9 = w9 / w10 if w10 else _div(w9, w10)
+        w9 = w2 * w9
+        w9 = w1 - w9
+        w11 = w0 * w9
+        w12 = g[3]
+        w13 = w5 * w7
+        w13 = w13 / w10 if w10 else _div(w13, w10)
+        w13 = w3 + w13
+        w13 = w2 * w13
+        w14 = w12 * w13
+        w11 = w11 + w14
+        w14 = g[6]
+        w15 = w5 * w3
+        w15 = w15 / w10 if w10 else _div(w15, w10)
+        w15 = w15 - w7
+        w15 = w2 * w15
+        w16 = w14 * w15
+        w11 = w11 + w16
+        r0[0] = w11
+        w11 = g[1]
+        w16 = w11 * w9
+        w17 = g[4]
+        w18 = w17 * w13
+        w16 = w16 + w18
+        w18 = g[7]
+        w19 = w18 * w15
+        w16 = w16 + w19
+        r0[1] = w16
+        w16 = g[2]
+        w9 = w16 * w9
+        w19 = g[5]
+        w13 = w19 * w13
+        w9 = w9 + w13
+        w13 = g[8]
+        w15 = w13 * w15
+        w9 = w9 + w15
+        r0[2] = w9
+        w9 = w7 * w5
+        w9 = w9 / w10 if w10 else _div(w9, w10)
+        w9 = w9 - w3
+        w9 = w2 * w9
+        w15 = w0 * w9
+        w4 = w4 + w6
+        w4 = w4 / w10 if w10 else _div(w4, w10)
+        w4 = w2 * w4
+        w4 = w1 - w4
+        w20 = w12 * w4
+        w15 = w15 + w20
+        w20 = w7 * w3
+        w20 = w20 / w10 if w10 else _div(w20, w10)
+        w20 = w5 + w20
+        w20 = w2 * w20
+        w21 = w14 * w20
+        w15 = w15 + w21
+        r0[3] = w15
+        w15 = w11 * w9
+        w21 = w17 * w4
+        w15 = w15 + w21
+        w21 = w18 * w20
+        w15 = w15 + w21
+        r0[4] = w15
+        w9 = w16 * w9
+        w4 = w19 * w4
+        w9 = w9 + w4
+        w20 = w13 * w20
+        w9 = w9 + w20
+        r0[5] = w9
+        w9 = w3 * w5
+        w9 = w9 / w10 if w10 else _div(w9, w10)
+        w9 = w7 + w9
+        w9 = w2 * w9
+        w0 = w0 * w9
+        w3 = w3 * w7
+        w3 = w3 / w10 if w10 else _div(w3, w10)
+        w3 = w3 - w5
+        w3 = w2 * w3
+        w12 = w12 * w3
+        w0 = w0 + w12
+        w8 = w8 + w6
+        w8 = w8 / w10 if w10 else _div(w8, w10)
+        w2 = w2 * w8
+        w1 = w1 - w2
+        w14 = w14 * w1
+        w0 = w0 + w14
+        r0[6] = w0
+        w11 = w11 * w9
+        w17 = w17 * w3
+        w11 = w11 + w17
+        w18 = w18 * w1
+        w11 = w11 + w18
+        r0[7] = w11
+        w16 = w16 * w9
+        w19 = w19 * w3
+        w16 = w16 + w19
+        w13 = w13 * w1
+        w16 = w16 + w13
+        r0[8] = w16
+    return [r0]
+
+
+def chart_point(z, g, h, theta):
+    """chart_point(z[3], g[9], h[1], theta[1]) -> [g_theta[9]]"""
+    if _type(z) is _NDARRAY and z.dtype is _F64 and z.shape == (3,):
+        z = z.tolist()
+    else:
+        z = _vec(z, 3, "chart_point: z")
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "chart_point: g")
+    if _type(h) is _NDARRAY and h.dtype is _F64 and h.shape == (1,):
+        h = h.tolist()
+    else:
+        h = _vec(h, 1, "chart_point: h")
+    if _type(theta) is _NDARRAY and theta.dtype is _F64 and theta.shape == (1,):
+        theta = theta.tolist()
+    else:
+        theta = _vec(theta, 1, "chart_point: theta")
+    _r = _raw_chart_point(z, g, h, theta)
+    return [_fromiter(_r[0], _F64, 9)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -767,6 +973,8 @@ KERNELS = {
     "momentum": momentum,
     "defect": defect,
     "margin": margin,
+    "section": section,
+    "chart_point": chart_point,
 }
 
 RAW = {
@@ -781,4 +989,6 @@ RAW = {
     "momentum": _raw_momentum,
     "defect": _raw_defect,
     "margin": _raw_margin,
+    "section": _raw_section,
+    "chart_point": _raw_chart_point,
 }

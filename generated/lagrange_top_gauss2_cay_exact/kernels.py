@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 04980e47b8ef48ab78c6826a2804f39019d570ee52f724a7e8fe36972807f8c0
+# content hash: 8f01c28e2945b0904eb2a017b0b3e5eb0a30a14020998b1ad35760adf5dcda01
 """Python backend of the hpgen module lagrange_top_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -11778,6 +11778,246 @@ def margin(z, h):
     return [_fromiter(_r[0], _F64, 1)]
 
 
+def _raw_section(g, p):
+    """section on lists of Python floats -> [s[1]] as lists (see RAW)"""
+    r0 = [0.0] * 1
+    r0[0] = 1.0
+    return [r0]
+
+
+def section(g, p):
+    """section(g[9], p[3]) -> [s[1]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "section: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (3,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 3, "section: p")
+    _r = _raw_section(g, p)
+    return [_fromiter(_r[0], _F64, 1)]
+
+
+def _raw_chart_point(z, g, h, theta):
+    """chart_point on lists of Python floats -> [g_theta[9]] as lists (see RAW)"""
+    try:
+        w0, w2, w4, w1, w3, w5, _, _, _ = z
+        w6, w9, w12, w7, w10, w13, w8, w11, w14 = g
+        w15, = h
+        w16, = theta
+        r0 = [0.0] * 9
+        w0 = w16 * (w15 * ((0.5 * ((3.0000000000000004 * w0) + (0.4641016151377544 * w1))) + (0.5 * (((-6.464101615137755) * w0) + (3.0000000000000004 * w1)))))
+        w1 = w0 * w0
+        w2 = w16 * (w15 * ((0.5 * ((3.0000000000000004 * w2) + (0.4641016151377544 * w3))) + (0.5 * (((-6.464101615137755) * w2) + (3.0000000000000004 * w3)))))
+        w3 = w2 * w2
+        w17 = w1 + w3
+        w4 = w16 * (w15 * ((0.5 * ((3.0000000000000004 * w4) + (0.4641016151377544 * w5))) + (0.5 * (((-6.464101615137755) * w4) + (3.0000000000000004 * w5)))))
+        w5 = w4 * w4
+        w15 = 4.0 / (4.0 + (w17 + w5))
+        w3 = 1.0 - (w15 * ((w5 + w3) * 0.5))
+        w16 = (w0 * w2) * 0.5
+        w18 = w15 * (w4 + w16)
+        w19 = (w0 * w4) * 0.5
+        w20 = w15 * (w19 - w2)
+        r0[0] = ((w6 * w3) + (w7 * w18)) + (w8 * w20)
+        r0[1] = ((w9 * w3) + (w10 * w18)) + (w11 * w20)
+        r0[2] = ((w12 * w3) + (w13 * w18)) + (w14 * w20)
+        w3 = w15 * (w16 - w4)
+        w1 = 1.0 - (w15 * ((w5 + w1) * 0.5))
+        w4 = (w2 * w4) * 0.5
+        w5 = w15 * (w0 + w4)
+        r0[3] = ((w6 * w3) + (w7 * w1)) + (w8 * w5)
+        r0[4] = ((w9 * w3) + (w10 * w1)) + (w11 * w5)
+        r0[5] = ((w12 * w3) + (w13 * w1)) + (w14 * w5)
+        w1 = w15 * (w2 + w19)
+        w0 = w15 * (w4 - w0)
+        w2 = 1.0 - (w15 * (w17 * 0.5))
+        r0[6] = ((w6 * w1) + (w7 * w0)) + (w8 * w2)
+        r0[7] = ((w9 * w1) + (w10 * w0)) + (w11 * w2)
+        r0[8] = ((w12 * w1) + (w13 * w0)) + (w14 * w2)
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 9
+        w0 = g[0]
+        w1 = 1.0
+        w2 = 4.0
+        w3 = theta[0]
+        w4 = h[0]
+        w5 = 0.5
+        w6 = 3.0000000000000004
+        w7 = z[0]
+        w8 = w6 * w7
+        w9 = 0.4641016151377544
+        w10 = z[3]
+        w11 = w9 * w10
+        w8 = w8 + w11
+        w8 = w5 * w8
+        w11 = -6.464101615137755
+        w7 = w11 * w7
+        w10 = w6 * w10
+        w7 = w7 + w10
+        w7 = w5 * w7
+        w8 = w8 + w7
+        w8 = w4 * w8
+        w8 = w3 * w8
+        w7 = w8 * w8
+        w10 = z[1]
+        w12 = w6 * w10
+        w13 = z[4]
+        w14 = w9 * w13
+        w12 = w12 + w14
+        w12 = w5 * w12
+        w10 = w11 * w10
+        w13 = w6 * w13
+        w10 = w10 + w13
+        w10 = w5 * w10
+        w12 = w12 + w10
+        w12 = w4 * w12
+        w12 = w3 * w12
+        w10 = w12 * w12
+        w13 = w7 + w10
+        w14 = z[2]
+        w15 = w6 * w14
+        w16 = z[5]
+        w9 = w9 * w16
+        w15 = w15 + w9
+        w15 = w5 * w15
+        w11 = w11 * w14
+        w6 = w6 * w16
+        w11 = w11 + w6
+        w5 = w5 * w11
+        w15 = w15 + w5
+        w4 = w4 * w15
+        w3 = w3 * w4
+        w4 = w3 * w3
+        w13 = w13 + w4
+        w13 = w2 + w13
+        w2 = w2 / w13 if w13 else _div(w2, w13)
+        w13 = w4 + w10
+        w15 = 2.0
+        w13 = w13 / w15 if w15 else _div(w13, w15)
+        w13 = w2 * w13
+        w13 = w1 - w13
+        w5 = w0 * w13
+        w11 = g[3]
+        w6 = w8 * w12
+        w6 = w6 / w15 if w15 else _div(w6, w15)
+        w6 = w3 + w6
+        w6 = w2 * w6
+        w16 = w11 * w6
+        w5 = w5 + w16
+        w16 = g[6]
+        w14 = w8 * w3
+        w14 = w14 / w15 if w15 else _div(w14, w15)
+        w14 = w14 - w12
+        w14 = w2 * w14
+        w9 = w16 * w14
+        w5 = w5 + w9
+        r0[0] = w5
+        w5 = g[1]
+        w9 = w5 * w13
+        w17 = g[4]
+        w18 = w17 * w6
+        w9 = w9 + w18
+        w18 = g[7]
+        w19 = w18 * w14
+        w9 = w9 + w19
+        r0[1] = w9
+        w9 = g[2]
+        w13 = w9 * w13
+        w19 = g[5]
+        w6 = w19 * w6
+        w13 = w13 + w6
+        w6 = g[8]
+        w14 = w6 * w14
+        w13 = w13 + w14
+        r0[2] = w13
+        w13 = w12 * w8
+        w13 = w13 / w15 if w15 else _div(w13, w15)
+        w13 = w13 - w3
+        w13 = w2 * w13
+        w14 = w0 * w13
+        w4 = w4 + w7
+        w4 = w4 / w15 if w15 else _div(w4, w15)
+        w4 = w2 * w4
+        w4 = w1 - w4
+        w20 = w11 * w4
+        w14 = w14 + w20
+        w20 = w12 * w3
+        w20 = w20 / w15 if w15 else _div(w20, w15)
+        w20 = w8 + w20
+        w20 = w2 * w20
+        w21 = w16 * w20
+        w14 = w14 + w21
+        r0[3] = w14
+        w14 = w5 * w13
+        w21 = w17 * w4
+        w14 = w14 + w21
+        w21 = w18 * w20
+        w14 = w14 + w21
+        r0[4] = w14
+        w13 = w9 * w13
+        w4 = w19 * w4
+        w13 = w13 + w4
+        w20 = w6 * w20
+        w13 = w13 + w20
+        r0[5] = w13
+        w13 = w3 * w8
+        w13 = w13 / w15 if w15 else _div(w13, w15)
+        w13 = w12 + w13
+        w13 = w2 * w13
+        w0 = w0 * w13
+        w3 = w3 * w12
+        w3 = w3 / w15 if w15 else _div(w3, w15)
+        w3 = w3 - w8
+        w3 = w2 * w3
+        w11 = w11 * w3
+        w0 = w0 + w11
+        w10 = w10 + w7
+        w10 = w10 / w15 if w15 else _div(w10, w15)
+        w2 = w2 * w10
+        w1 = w1 - w2
+        w16 = w16 * w1
+        w0 = w0 + w16
+        r0[6] = w0
+        w5 = w5 * w13
+        w17 = w17 * w3
+        w5 = w5 + w17
+        w18 = w18 * w1
+        w5 = w5 + w18
+        r0[7] = w5
+        w9 = w9 * w13
+        w19 = w19 * w3
+        w9 = w9 + w19
+        w6 = w6 * w1
+        w9 = w9 + w6
+        r0[8] = w9
+    return [r0]
+
+
+def chart_point(z, g, h, theta):
+    """chart_point(z[9], g[9], h[1], theta[1]) -> [g_theta[9]]"""
+    if _type(z) is _NDARRAY and z.dtype is _F64 and z.shape == (9,):
+        z = z.tolist()
+    else:
+        z = _vec(z, 9, "chart_point: z")
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "chart_point: g")
+    if _type(h) is _NDARRAY and h.dtype is _F64 and h.shape == (1,):
+        h = h.tolist()
+    else:
+        h = _vec(h, 1, "chart_point: h")
+    if _type(theta) is _NDARRAY and theta.dtype is _F64 and theta.shape == (1,):
+        theta = theta.tolist()
+    else:
+        theta = _vec(theta, 1, "chart_point: theta")
+    _r = _raw_chart_point(z, g, h, theta)
+    return [_fromiter(_r[0], _F64, 9)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -11790,6 +12030,8 @@ KERNELS = {
     "momentum": momentum,
     "defect": defect,
     "margin": margin,
+    "section": section,
+    "chart_point": chart_point,
 }
 
 RAW = {
@@ -11804,4 +12046,6 @@ RAW = {
     "momentum": _raw_momentum,
     "defect": _raw_defect,
     "margin": _raw_margin,
+    "section": _raw_section,
+    "chart_point": _raw_chart_point,
 }

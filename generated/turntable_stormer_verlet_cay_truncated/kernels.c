@@ -3,7 +3,7 @@
  * model: turntable
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 5db7336b6d4b2f2af7bb77f0cf03f73613c8e7fd40c2b0884ae5121cba07bbde
+ * content hash: cbf3ed60df4e1dd6e4f93c7712713daf2e442c0f327521e2eeab7d1abe7ac562
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -45,6 +45,7 @@
 #define casadi_f0 CASADI_PREFIX(f0)
 #define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_f10 CASADI_PREFIX(f10)
+#define casadi_f11 CASADI_PREFIX(f11)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -474,1290 +475,8 @@ CASADI_SYMBOL_EXPORT int residual_work_bytes(casadi_int *sz_arg, casadi_int* sz_
   return 0;
 }
 
-/* jacobian:(z[6],g[9],p[3],h)->(J[36]) */
-static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
-  casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
-  casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
-  casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
-  casadi_real a036, a037, a038, a039, a040, a041, a042, a043, a044, a045, a046, a047;
-  casadi_real a048, a049, a050, a051, a052, a053, a054, a055, a056, a057, a058, a059;
-  casadi_real a060, a061, a062, a063, a064, a065, a066, a067, a068, a069, a070, a071;
-  casadi_real a072, a073, a074, a075, a076, a077, a078, a079, a080, a081, a082, a083;
-  casadi_real a084, a085, a086, a087, a088, a089, a090, a091, a092, a093, a094, a095;
-  casadi_real a096, a097, a098, a099, a100, a101, a102, a103, a104, a105, a106, a107;
-  casadi_real a108, a109, a110, a111, a112, a113, a114, a115, a116, a117, a118, a119;
-  casadi_real a120, a121, a122, a123, a124, a125, a126;
-  a000=arg[3]? arg[3][0] : 0;
-  a001=5.0000000000000000e-01;
-  a002=4.;
-  a003=arg[0]? arg[0][0] : 0;
-  a004=(a001*a003);
-  a005=arg[0]? arg[0][3] : 0;
-  a006=(a001*a005);
-  a004=(a004+a006);
-  a004=(a000*a004);
-  a006=casadi_sq(a004);
-  a007=arg[0]? arg[0][1] : 0;
-  a008=(a001*a007);
-  a009=arg[0]? arg[0][4] : 0;
-  a010=(a001*a009);
-  a008=(a008+a010);
-  a008=(a000*a008);
-  a010=casadi_sq(a008);
-  a011=(a006+a010);
-  a012=arg[0]? arg[0][2] : 0;
-  a013=(a001*a012);
-  a014=arg[0]? arg[0][5] : 0;
-  a015=(a001*a014);
-  a013=(a013+a015);
-  a013=(a000*a013);
-  a015=casadi_sq(a013);
-  a011=(a011+a015);
-  a011=(a002+a011);
-  a016=(a002/a011);
-  a017=2.;
-  a018=(a004/a017);
-  a019=(a016*a018);
-  a020=arg[1]? arg[1][2] : 0;
-  a021=1.;
-  a022=(a015+a010);
-  a022=(a022/a017);
-  a023=(a016*a022);
-  a023=(a021-a023);
-  a023=(a020*a023);
-  a024=arg[1]? arg[1][5] : 0;
-  a025=(a004*a008);
-  a026=(a025/a017);
-  a026=(a013+a026);
-  a027=(a016*a026);
-  a027=(a024*a027);
-  a023=(a023+a027);
-  a027=arg[1]? arg[1][8] : 0;
-  a028=(a004*a013);
-  a029=(a028/a017);
-  a029=(a029-a008);
-  a030=(a016*a029);
-  a030=(a027*a030);
-  a023=(a023+a030);
-  a030=-7.4999999999999997e-02;
-  a030=(a030*a000);
-  a031=(a013*a004);
-  a032=(a031/a017);
-  a032=(a008+a032);
-  a033=(a016*a032);
-  a033=(a020*a033);
-  a034=(a013*a008);
-  a035=(a034/a017);
-  a035=(a035-a004);
-  a036=(a016*a035);
-  a036=(a024*a036);
-  a033=(a033+a036);
-  a036=(a010+a006);
-  a036=(a036/a017);
-  a037=(a016*a036);
-  a037=(a021-a037);
-  a037=(a027*a037);
-  a033=(a033+a037);
-  a037=(a001*a033);
-  a014=(a014+a037);
-  a014=(2.*a014);
-  a037=1.6666666666666666e-01;
-  a037=(a037*a000);
-  a014=(a014*a037);
-  a014=(a001*a014);
-  a014=(a030+a014);
-  a038=(a023*a014);
-  a039=-4.4999999999999998e-02;
-  a039=(a039*a000);
-  a040=(a001*a023);
-  a005=(a005+a040);
-  a005=(2.*a005);
-  a040=(a001*a000);
-  a005=(a005*a040);
-  a005=(a001*a005);
-  a005=(a039+a005);
-  a041=(a033*a005);
-  a038=(a038-a041);
-  a038=(a038/a000);
-  a041=(a019*a038);
-  a042=(a008/a017);
-  a043=(a016*a042);
-  a044=2.9999999999999999e-02;
-  a044=(a044*a000);
-  a045=(a008*a004);
-  a046=(a045/a017);
-  a046=(a046-a013);
-  a047=(a016*a046);
-  a047=(a020*a047);
-  a048=(a015+a006);
-  a048=(a048/a017);
-  a049=(a016*a048);
-  a049=(a021-a049);
-  a049=(a024*a049);
-  a047=(a047+a049);
-  a049=(a008*a013);
-  a050=(a049/a017);
-  a050=(a004+a050);
-  a051=(a016*a050);
-  a051=(a027*a051);
-  a047=(a047+a051);
-  a051=(a001*a047);
-  a009=(a009+a051);
-  a009=(2.*a009);
-  a051=2.5000000000000000e-01;
-  a052=(a051*a000);
-  a009=(a009*a052);
-  a009=(a001*a009);
-  a009=(a044+a009);
-  a053=(a033*a009);
-  a054=(a047*a014);
-  a053=(a053-a054);
-  a053=(a053/a000);
-  a054=(a043*a053);
-  a041=(a041-a054);
-  a054=(a047*a005);
-  a055=(a023*a009);
-  a054=(a054-a055);
-  a054=(a054/a000);
-  a055=(a016*a054);
-  a041=(a041+a055);
-  a041=(a000*a041);
-  a055=(a013*a040);
-  a056=(a051*a055);
-  a057=(a041*a056);
-  a031=(a031/a002);
-  a031=(a042+a031);
-  a058=(a016*a052);
-  a011=(a016/a011);
-  a059=(2.*a004);
-  a059=(a059*a040);
-  a060=(a011*a059);
-  a061=(a018*a060);
-  a061=(a058-a061);
-  a062=(a038*a061);
-  a063=(a022*a060);
-  a063=(a020*a063);
-  a064=(a008*a040);
-  a065=(a001*a064);
-  a065=(a016*a065);
-  a066=(a026*a060);
-  a066=(a065-a066);
-  a066=(a024*a066);
-  a063=(a063+a066);
-  a055=(a001*a055);
-  a055=(a016*a055);
-  a066=(a029*a060);
-  a066=(a055-a066);
-  a066=(a027*a066);
-  a063=(a063+a066);
-  a066=(a014*a063);
-  a067=(a032*a060);
-  a067=(a055-a067);
-  a067=(a020*a067);
-  a068=(a035*a060);
-  a069=(a016*a040);
-  a068=(a068+a069);
-  a068=(a024*a068);
-  a067=(a067-a068);
-  a068=(a001*a059);
-  a068=(a016*a068);
-  a070=(a036*a060);
-  a070=(a068-a070);
-  a070=(a027*a070);
-  a067=(a067-a070);
-  a070=(a037*a067);
-  a071=(a001*a070);
-  a072=(a023*a071);
-  a066=(a066+a072);
-  a072=(a005*a067);
-  a073=(a040*a063);
-  a074=(a001*a073);
-  a075=(a033*a074);
-  a075=(a072+a075);
-  a075=(a066-a075);
-  a075=(a075/a000);
-  a076=(a019*a075);
-  a076=(a062+a076);
-  a067=(a009*a067);
-  a077=(a046*a060);
-  a077=(a065-a077);
-  a077=(a020*a077);
-  a078=(a048*a060);
-  a068=(a068-a078);
-  a068=(a024*a068);
-  a077=(a077-a068);
-  a068=(a050*a060);
-  a068=(a069-a068);
-  a068=(a027*a068);
-  a077=(a077+a068);
-  a068=(a052*a077);
-  a078=(a001*a068);
-  a079=(a033*a078);
-  a067=(a067+a079);
-  a079=(a014*a077);
-  a071=(a047*a071);
-  a079=(a079+a071);
-  a067=(a067-a079);
-  a067=(a067/a000);
-  a079=(a043*a067);
-  a071=(a042*a060);
-  a080=(a053*a071);
-  a079=(a079-a080);
-  a076=(a076-a079);
-  a077=(a005*a077);
-  a074=(a047*a074);
-  a074=(a077+a074);
-  a080=(a009*a063);
-  a078=(a023*a078);
-  a080=(a080+a078);
-  a074=(a074-a080);
-  a074=(a074/a000);
-  a078=(a016*a074);
-  a081=(a054*a060);
-  a078=(a078-a081);
-  a076=(a076+a078);
-  a076=(a000*a076);
-  a078=(a031*a076);
-  a078=(a057+a078);
-  a017=(a013/a017);
-  a082=(a016*a017);
-  a083=(a082*a053);
-  a084=(a016*a038);
-  a083=(a083+a084);
-  a084=(a019*a054);
-  a083=(a083-a084);
-  a083=(a000*a083);
-  a064=(a051*a064);
-  a084=(a083*a064);
-  a045=(a045/a002);
-  a045=(a045-a017);
-  a085=(a082*a067);
-  a086=(a017*a060);
-  a087=(a053*a086);
-  a085=(a085-a087);
-  a087=(a016*a075);
-  a088=(a038*a060);
-  a087=(a087-a088);
-  a087=(a085+a087);
-  a089=(a054*a061);
-  a090=(a019*a074);
-  a090=(a089+a090);
-  a087=(a087-a090);
-  a087=(a000*a087);
-  a090=(a045*a087);
-  a090=(a084+a090);
-  a078=(a078+a090);
-  a090=(a016*a053);
-  a091=(a082*a038);
-  a090=(a090-a091);
-  a091=(a043*a054);
-  a090=(a090+a091);
-  a090=(a000*a090);
-  a059=(a051*a059);
-  a059=(a090*a059);
-  a006=(a006/a002);
-  a006=(a021+a006);
-  a067=(a016*a067);
-  a091=(a053*a060);
-  a067=(a067-a091);
-  a075=(a082*a075);
-  a091=(a038*a086);
-  a075=(a075-a091);
-  a075=(a067-a075);
-  a074=(a043*a074);
-  a092=(a054*a071);
-  a074=(a074-a092);
-  a075=(a075+a074);
-  a075=(a000*a075);
-  a074=(a006*a075);
-  a074=(a059+a074);
-  a078=(a078+a074);
-  a074=(a016*a078);
-  a093=arg[2]? arg[2][0] : 0;
-  a094=(a031*a041);
-  a095=(a045*a083);
-  a094=(a094+a095);
-  a095=(a006*a090);
-  a094=(a094+a095);
-  a095=(a001*a024);
-  a007=(a007+a095);
-  a007=(2.*a007);
-  a007=(a007*a052);
-  a007=(a001*a007);
-  a044=(a044+a007);
-  a007=(a027*a044);
-  a095=(a001*a027);
-  a012=(a012+a095);
-  a012=(2.*a012);
-  a012=(a012*a037);
-  a012=(a001*a012);
-  a030=(a030+a012);
-  a012=(a024*a030);
-  a007=(a007-a012);
-  a094=(a094+a007);
-  a093=(a093+a094);
-  a094=(a093*a060);
-  a074=(a074-a094);
-  a034=(a034/a002);
-  a034=(a034-a018);
-  a007=(a034*a076);
-  a012=(a041*a052);
-  a007=(a007-a012);
-  a010=(a010/a002);
-  a010=(a021+a010);
-  a095=(a010*a087);
-  a007=(a007+a095);
-  a095=(a090*a064);
-  a025=(a025/a002);
-  a025=(a017+a025);
-  a096=(a025*a075);
-  a096=(a095+a096);
-  a007=(a007+a096);
-  a096=(a027*a040);
-  a007=(a007-a096);
-  a096=(a082*a007);
-  a097=arg[2]? arg[2][1] : 0;
-  a098=(a034*a041);
-  a099=(a010*a083);
-  a098=(a098+a099);
-  a099=(a025*a090);
-  a098=(a098+a099);
-  a030=(a020*a030);
-  a099=(a001*a020);
-  a003=(a003+a099);
-  a003=(2.*a003);
-  a003=(a003*a040);
-  a003=(a001*a003);
-  a039=(a039+a003);
-  a003=(a027*a039);
-  a030=(a030-a003);
-  a098=(a098+a030);
-  a097=(a097+a098);
-  a098=(a097*a086);
-  a096=(a096-a098);
-  a074=(a074+a096);
-  a015=(a015/a002);
-  a015=(a021+a015);
-  a096=(a015*a076);
-  a030=(a083*a052);
-  a049=(a049/a002);
-  a049=(a018+a049);
-  a003=(a049*a087);
-  a003=(a030+a003);
-  a096=(a096+a003);
-  a003=(a090*a056);
-  a028=(a028/a002);
-  a028=(a028-a042);
-  a002=(a028*a075);
-  a002=(a003+a002);
-  a096=(a096+a002);
-  a002=(a024*a040);
-  a096=(a096+a002);
-  a002=(a043*a096);
-  a099=arg[2]? arg[2][2] : 0;
-  a100=(a015*a041);
-  a101=(a049*a083);
-  a100=(a100+a101);
-  a101=(a028*a090);
-  a100=(a100+a101);
-  a039=(a024*a039);
-  a044=(a020*a044);
-  a039=(a039-a044);
-  a100=(a100+a039);
-  a099=(a099+a100);
-  a100=(a099*a071);
-  a002=(a002-a100);
-  a074=(a074-a002);
-  a074=(a000*a074);
-  a074=(a001*a074);
-  a075=(a000*a075);
-  a075=(a001*a075);
-  a074=(a074-a075);
-  a075=(a000-a074);
-  a075=(a075/a040);
-  if (res[0]!=0) res[0][0]=a075;
-  a075=(a016*a007);
-  a002=(a097*a060);
-  a075=(a075-a002);
-  a039=(a082*a078);
-  a086=(a093*a086);
-  a039=(a039-a086);
-  a075=(a075-a039);
-  a039=(a099*a061);
-  a044=(a019*a096);
-  a044=(a039+a044);
-  a075=(a075+a044);
-  a075=(a000*a075);
-  a075=(a001*a075);
-  a087=(a000*a087);
-  a087=(a001*a087);
-  a075=(a075-a087);
-  a087=(a075/a040);
-  a087=(-a087);
-  if (res[0]!=0) res[0][1]=a087;
-  a078=(a043*a078);
-  a071=(a093*a071);
-  a078=(a078-a071);
-  a061=(a097*a061);
-  a007=(a019*a007);
-  a007=(a061+a007);
-  a078=(a078-a007);
-  a096=(a016*a096);
-  a060=(a099*a060);
-  a096=(a096-a060);
-  a078=(a078+a096);
-  a078=(a000*a078);
-  a078=(a001*a078);
-  a076=(a000*a076);
-  a076=(a001*a076);
-  a078=(a078-a076);
-  a076=(a078/a040);
-  a076=(-a076);
-  if (res[0]!=0) res[0][2]=a076;
-  a073=(a073-a074);
-  a073=(a073/a040);
-  if (res[0]!=0) res[0][3]=a073;
-  a075=(a068-a075);
-  a075=(a075/a040);
-  if (res[0]!=0) res[0][4]=a075;
-  a078=(a070-a078);
-  a078=(a078/a040);
-  if (res[0]!=0) res[0][5]=a078;
-  a004=(a004*a040);
-  a078=(a001*a004);
-  a078=(a016*a078);
-  a008=(2.*a008);
-  a008=(a008*a040);
-  a075=(a011*a008);
-  a073=(a026*a075);
-  a073=(a078-a073);
-  a073=(a024*a073);
-  a074=(a001*a008);
-  a074=(a016*a074);
-  a076=(a022*a075);
-  a076=(a074-a076);
-  a076=(a020*a076);
-  a073=(a073-a076);
-  a076=(a029*a075);
-  a076=(a076+a069);
-  a076=(a027*a076);
-  a073=(a073-a076);
-  a076=(a014*a073);
-  a096=(a032*a075);
-  a096=(a069-a096);
-  a096=(a020*a096);
-  a007=(a035*a075);
-  a007=(a055-a007);
-  a007=(a024*a007);
-  a096=(a096+a007);
-  a007=(a036*a075);
-  a074=(a074-a007);
-  a074=(a027*a074);
-  a096=(a096-a074);
-  a074=(a037*a096);
-  a007=(a001*a074);
-  a087=(a023*a007);
-  a076=(a076+a087);
-  a087=(a005*a096);
-  a044=(a040*a073);
-  a101=(a001*a044);
-  a102=(a033*a101);
-  a087=(a087+a102);
-  a076=(a076-a087);
-  a076=(a076/a000);
-  a087=(a019*a076);
-  a102=(a018*a075);
-  a103=(a038*a102);
-  a087=(a087-a103);
-  a103=(a042*a075);
-  a103=(a058-a103);
-  a104=(a053*a103);
-  a096=(a009*a096);
-  a105=(a046*a075);
-  a105=(a078-a105);
-  a105=(a020*a105);
-  a106=(a048*a075);
-  a106=(a024*a106);
-  a105=(a105+a106);
-  a106=(a050*a075);
-  a055=(a055-a106);
-  a055=(a027*a055);
-  a105=(a105+a055);
-  a055=(a052*a105);
-  a106=(a001*a055);
-  a107=(a033*a106);
-  a107=(a096+a107);
-  a108=(a014*a105);
-  a007=(a047*a007);
-  a108=(a108+a007);
-  a107=(a107-a108);
-  a107=(a107/a000);
-  a007=(a043*a107);
-  a007=(a104+a007);
-  a007=(a087-a007);
-  a109=(a005*a105);
-  a101=(a047*a101);
-  a109=(a109+a101);
-  a073=(a009*a073);
-  a106=(a023*a106);
-  a106=(a073+a106);
-  a106=(a109-a106);
-  a106=(a106/a000);
-  a101=(a016*a106);
-  a110=(a054*a075);
-  a101=(a101-a110);
-  a007=(a007+a101);
-  a007=(a000*a007);
-  a101=(a031*a007);
-  a101=(a012+a101);
-  a004=(a051*a004);
-  a111=(a083*a004);
-  a112=(a082*a107);
-  a113=(a017*a075);
-  a114=(a053*a113);
-  a112=(a112-a114);
-  a115=(a016*a076);
-  a116=(a038*a075);
-  a115=(a115-a116);
-  a112=(a112+a115);
-  a116=(a019*a106);
-  a117=(a054*a102);
-  a116=(a116-a117);
-  a112=(a112-a116);
-  a112=(a000*a112);
-  a116=(a045*a112);
-  a116=(a111+a116);
-  a101=(a101+a116);
-  a107=(a016*a107);
-  a116=(a053*a075);
-  a107=(a107-a116);
-  a076=(a082*a076);
-  a118=(a038*a113);
-  a076=(a076-a118);
-  a107=(a107-a076);
-  a118=(a054*a103);
-  a106=(a043*a106);
-  a106=(a118+a106);
-  a107=(a107+a106);
-  a107=(a000*a107);
-  a106=(a006*a107);
-  a101=(a101+a106);
-  a106=(a027*a052);
-  a101=(a101+a106);
-  a106=(a016*a101);
-  a119=(a093*a075);
-  a106=(a106-a119);
-  a120=(a034*a007);
-  a120=(a057+a120);
-  a008=(a051*a008);
-  a008=(a083*a008);
-  a121=(a010*a112);
-  a121=(a008+a121);
-  a120=(a120+a121);
-  a121=(a090*a004);
-  a122=(a025*a107);
-  a122=(a121+a122);
-  a120=(a120+a122);
-  a122=(a082*a120);
-  a123=(a097*a113);
-  a122=(a122-a123);
-  a106=(a106+a122);
-  a122=(a099*a103);
-  a124=(a015*a007);
-  a083=(a083*a056);
-  a056=(a049*a112);
-  a056=(a083+a056);
-  a124=(a124+a056);
-  a056=(a028*a107);
-  a090=(a090*a052);
-  a056=(a056-a090);
-  a124=(a124+a056);
-  a056=(a020*a052);
-  a124=(a124-a056);
-  a056=(a043*a124);
-  a056=(a122+a056);
-  a106=(a106-a056);
-  a106=(a000*a106);
-  a106=(a001*a106);
-  a107=(a000*a107);
-  a107=(a001*a107);
-  a106=(a106-a107);
-  a107=(a106/a040);
-  a107=(-a107);
-  if (res[0]!=0) res[0][6]=a107;
-  a107=(a016*a120);
-  a056=(a097*a075);
-  a107=(a107-a056);
-  a125=(a082*a101);
-  a113=(a093*a113);
-  a125=(a125-a113);
-  a107=(a107-a125);
-  a125=(a019*a124);
-  a126=(a099*a102);
-  a125=(a125-a126);
-  a107=(a107+a125);
-  a107=(a000*a107);
-  a107=(a001*a107);
-  a112=(a000*a112);
-  a112=(a001*a112);
-  a107=(a107-a112);
-  a112=(a040-a107);
-  a112=(a112/a040);
-  if (res[0]!=0) res[0][7]=a112;
-  a103=(a093*a103);
-  a101=(a043*a101);
-  a101=(a103+a101);
-  a120=(a019*a120);
-  a102=(a097*a102);
-  a120=(a120-a102);
-  a101=(a101-a120);
-  a124=(a016*a124);
-  a075=(a099*a075);
-  a124=(a124-a075);
-  a101=(a101+a124);
-  a101=(a000*a101);
-  a101=(a001*a101);
-  a007=(a000*a007);
-  a007=(a001*a007);
-  a101=(a101-a007);
-  a007=(a101/a040);
-  a007=(-a007);
-  if (res[0]!=0) res[0][8]=a007;
-  a106=(a044-a106);
-  a106=(a106/a040);
-  if (res[0]!=0) res[0][9]=a106;
-  a055=(a055-a107);
-  a055=(a055/a040);
-  if (res[0]!=0) res[0][10]=a055;
-  a101=(a074-a101);
-  a101=(a101/a040);
-  if (res[0]!=0) res[0][11]=a101;
-  a004=(a041*a004);
-  a013=(2.*a013);
-  a013=(a013*a040);
-  a011=(a011*a013);
-  a026=(a026*a011);
-  a026=(a069-a026);
-  a026=(a024*a026);
-  a101=(a001*a013);
-  a101=(a016*a101);
-  a022=(a022*a011);
-  a022=(a101-a022);
-  a022=(a020*a022);
-  a026=(a026-a022);
-  a029=(a029*a011);
-  a029=(a078-a029);
-  a029=(a027*a029);
-  a026=(a026+a029);
-  a029=(a014*a026);
-  a032=(a032*a011);
-  a078=(a078-a032);
-  a078=(a020*a078);
-  a035=(a035*a011);
-  a035=(a065-a035);
-  a035=(a024*a035);
-  a078=(a078+a035);
-  a036=(a036*a011);
-  a036=(a027*a036);
-  a078=(a078+a036);
-  a036=(a037*a078);
-  a035=(a001*a036);
-  a032=(a023*a035);
-  a032=(a029+a032);
-  a022=(a005*a078);
-  a055=(a040*a026);
-  a107=(a001*a055);
-  a106=(a033*a107);
-  a022=(a022+a106);
-  a032=(a032-a022);
-  a032=(a032/a000);
-  a106=(a019*a032);
-  a018=(a018*a011);
-  a007=(a038*a018);
-  a106=(a106-a007);
-  a124=(a009*a078);
-  a050=(a050*a011);
-  a065=(a065-a050);
-  a027=(a027*a065);
-  a046=(a046*a011);
-  a046=(a046+a069);
-  a046=(a020*a046);
-  a048=(a048*a011);
-  a101=(a101-a048);
-  a101=(a024*a101);
-  a046=(a046+a101);
-  a027=(a027-a046);
-  a046=(a052*a027);
-  a101=(a001*a046);
-  a048=(a033*a101);
-  a124=(a124+a048);
-  a014=(a014*a027);
-  a035=(a047*a035);
-  a035=(a014+a035);
-  a035=(a124-a035);
-  a035=(a035/a000);
-  a048=(a043*a035);
-  a042=(a042*a011);
-  a069=(a053*a042);
-  a048=(a048-a069);
-  a106=(a106-a048);
-  a005=(a005*a027);
-  a107=(a047*a107);
-  a005=(a005+a107);
-  a009=(a009*a026);
-  a101=(a023*a101);
-  a009=(a009+a101);
-  a005=(a005-a009);
-  a005=(a005/a000);
-  a009=(a016*a005);
-  a101=(a054*a011);
-  a009=(a009-a101);
-  a106=(a106+a009);
-  a106=(a000*a106);
-  a101=(a031*a106);
-  a101=(a004+a101);
-  a017=(a017*a011);
-  a058=(a058-a017);
-  a017=(a053*a058);
-  a026=(a082*a035);
-  a026=(a017+a026);
-  a107=(a016*a032);
-  a027=(a038*a011);
-  a107=(a107-a027);
-  a026=(a026+a107);
-  a107=(a019*a005);
-  a048=(a054*a018);
-  a107=(a107-a048);
-  a026=(a026-a107);
-  a026=(a000*a026);
-  a048=(a045*a026);
-  a048=(a048-a030);
-  a101=(a101+a048);
-  a035=(a016*a035);
-  a053=(a053*a011);
-  a035=(a035-a053);
-  a038=(a038*a058);
-  a032=(a082*a032);
-  a032=(a038+a032);
-  a035=(a035-a032);
-  a005=(a043*a005);
-  a054=(a054*a042);
-  a005=(a005-a054);
-  a035=(a035+a005);
-  a035=(a000*a035);
-  a054=(a006*a035);
-  a101=(a101+a054);
-  a024=(a024*a037);
-  a101=(a101-a024);
-  a024=(a016*a101);
-  a054=(a093*a011);
-  a024=(a024-a054);
-  a032=(a097*a058);
-  a064=(a041*a064);
-  a048=(a034*a106);
-  a048=(a064+a048);
-  a065=(a010*a026);
-  a048=(a048+a065);
-  a065=(a025*a035);
-  a065=(a090+a065);
-  a048=(a048+a065);
-  a020=(a020*a037);
-  a048=(a048+a020);
-  a020=(a082*a048);
-  a020=(a032+a020);
-  a024=(a024+a020);
-  a051=(a051*a013);
-  a041=(a041*a051);
-  a051=(a015*a106);
-  a051=(a041+a051);
-  a013=(a049*a026);
-  a013=(a084+a013);
-  a051=(a051+a013);
-  a013=(a028*a035);
-  a013=(a121+a013);
-  a051=(a051+a013);
-  a013=(a043*a051);
-  a020=(a099*a042);
-  a013=(a013-a020);
-  a024=(a024-a013);
-  a024=(a000*a024);
-  a024=(a001*a024);
-  a035=(a000*a035);
-  a035=(a001*a035);
-  a024=(a024-a035);
-  a035=(a024/a040);
-  a035=(-a035);
-  if (res[0]!=0) res[0][12]=a035;
-  a035=(a016*a048);
-  a013=(a097*a011);
-  a035=(a035-a013);
-  a058=(a093*a058);
-  a065=(a082*a101);
-  a065=(a058+a065);
-  a035=(a035-a065);
-  a065=(a019*a051);
-  a050=(a099*a018);
-  a065=(a065-a050);
-  a035=(a035+a065);
-  a035=(a000*a035);
-  a035=(a001*a035);
-  a026=(a000*a026);
-  a026=(a001*a026);
-  a035=(a035-a026);
-  a026=(a035/a040);
-  a026=(-a026);
-  if (res[0]!=0) res[0][13]=a026;
-  a026=3.3333333333333331e-01;
-  a026=(a026*a000);
-  a101=(a043*a101);
-  a093=(a093*a042);
-  a101=(a101-a093);
-  a048=(a019*a048);
-  a097=(a097*a018);
-  a048=(a048-a097);
-  a101=(a101-a048);
-  a051=(a016*a051);
-  a099=(a099*a011);
-  a051=(a051-a099);
-  a101=(a101+a051);
-  a101=(a000*a101);
-  a101=(a001*a101);
-  a106=(a000*a106);
-  a106=(a001*a106);
-  a101=(a101-a106);
-  a026=(a026-a101);
-  a026=(a026/a040);
-  if (res[0]!=0) res[0][14]=a026;
-  a024=(a055-a024);
-  a024=(a024/a040);
-  if (res[0]!=0) res[0][15]=a024;
-  a035=(a046-a035);
-  a035=(a035/a040);
-  if (res[0]!=0) res[0][16]=a035;
-  a036=(a036-a101);
-  a036=(a036/a040);
-  if (res[0]!=0) res[0][17]=a036;
-  a063=(a001*a063);
-  a063=(a021+a063);
-  a063=(2.*a063);
-  a063=(a040*a063);
-  a036=(a001*a063);
-  a101=(a033*a036);
-  a072=(a072+a101);
-  a066=(a066-a072);
-  a066=(a066/a000);
-  a072=(a019*a066);
-  a062=(a062+a072);
-  a062=(a062-a079);
-  a036=(a047*a036);
-  a077=(a077+a036);
-  a077=(a077-a080);
-  a077=(a077/a000);
-  a080=(a016*a077);
-  a080=(a080-a081);
-  a062=(a062+a080);
-  a062=(a000*a062);
-  a080=(a031*a062);
-  a080=(a057+a080);
-  a081=(a016*a066);
-  a081=(a081-a088);
-  a085=(a085+a081);
-  a081=(a019*a077);
-  a089=(a089+a081);
-  a085=(a085-a089);
-  a085=(a000*a085);
-  a089=(a045*a085);
-  a089=(a084+a089);
-  a080=(a080+a089);
-  a066=(a082*a066);
-  a066=(a066-a091);
-  a067=(a067-a066);
-  a077=(a043*a077);
-  a077=(a077-a092);
-  a067=(a067+a077);
-  a067=(a000*a067);
-  a077=(a006*a067);
-  a059=(a059+a077);
-  a080=(a080+a059);
-  a059=(a016*a080);
-  a059=(a059-a094);
-  a094=(a034*a062);
-  a094=(a094-a012);
-  a077=(a010*a085);
-  a094=(a094+a077);
-  a077=(a025*a067);
-  a095=(a095+a077);
-  a094=(a094+a095);
-  a095=(a082*a094);
-  a095=(a095-a098);
-  a059=(a059+a095);
-  a095=(a015*a062);
-  a098=(a049*a085);
-  a098=(a030+a098);
-  a095=(a095+a098);
-  a098=(a028*a067);
-  a003=(a003+a098);
-  a095=(a095+a003);
-  a003=(a043*a095);
-  a003=(a003-a100);
-  a059=(a059-a003);
-  a059=(a000*a059);
-  a059=(a001*a059);
-  a067=(a000*a067);
-  a067=(a001*a067);
-  a059=(a059-a067);
-  a067=(a059/a040);
-  a067=(-a067);
-  if (res[0]!=0) res[0][18]=a067;
-  a067=(a016*a094);
-  a067=(a067-a002);
-  a002=(a082*a080);
-  a002=(a002-a086);
-  a067=(a067-a002);
-  a002=(a019*a095);
-  a039=(a039+a002);
-  a067=(a067+a039);
-  a067=(a000*a067);
-  a067=(a001*a067);
-  a085=(a000*a085);
-  a085=(a001*a085);
-  a067=(a067-a085);
-  a085=(a067/a040);
-  a085=(-a085);
-  if (res[0]!=0) res[0][19]=a085;
-  a080=(a043*a080);
-  a080=(a080-a071);
-  a094=(a019*a094);
-  a061=(a061+a094);
-  a080=(a080-a061);
-  a095=(a016*a095);
-  a095=(a095-a060);
-  a080=(a080+a095);
-  a080=(a000*a080);
-  a080=(a001*a080);
-  a062=(a000*a062);
-  a062=(a001*a062);
-  a080=(a080-a062);
-  a062=(a080/a040);
-  a062=(-a062);
-  if (res[0]!=0) res[0][20]=a062;
-  a063=(a063-a059);
-  a063=(a063/a040);
-  if (res[0]!=0) res[0][21]=a063;
-  a068=(a068-a067);
-  a068=(a068/a040);
-  if (res[0]!=0) res[0][22]=a068;
-  a070=(a070-a080);
-  a070=(a070/a040);
-  if (res[0]!=0) res[0][23]=a070;
-  a105=(a001*a105);
-  a105=(a021+a105);
-  a105=(2.*a105);
-  a052=(a052*a105);
-  a105=(a001*a052);
-  a033=(a033*a105);
-  a096=(a096+a033);
-  a096=(a096-a108);
-  a096=(a096/a000);
-  a108=(a043*a096);
-  a104=(a104+a108);
-  a087=(a087-a104);
-  a105=(a023*a105);
-  a073=(a073+a105);
-  a109=(a109-a073);
-  a109=(a109/a000);
-  a073=(a016*a109);
-  a073=(a073-a110);
-  a087=(a087+a073);
-  a087=(a000*a087);
-  a073=(a031*a087);
-  a012=(a012+a073);
-  a073=(a082*a096);
-  a073=(a073-a114);
-  a073=(a073+a115);
-  a115=(a019*a109);
-  a115=(a115-a117);
-  a073=(a073-a115);
-  a073=(a000*a073);
-  a115=(a045*a073);
-  a111=(a111+a115);
-  a012=(a012+a111);
-  a096=(a016*a096);
-  a096=(a096-a116);
-  a096=(a096-a076);
-  a109=(a043*a109);
-  a118=(a118+a109);
-  a096=(a096+a118);
-  a096=(a000*a096);
-  a118=(a006*a096);
-  a012=(a012+a118);
-  a118=(a016*a012);
-  a118=(a118-a119);
-  a119=(a034*a087);
-  a057=(a057+a119);
-  a119=(a010*a073);
-  a008=(a008+a119);
-  a057=(a057+a008);
-  a008=(a025*a096);
-  a008=(a121+a008);
-  a057=(a057+a008);
-  a008=(a082*a057);
-  a008=(a008-a123);
-  a118=(a118+a008);
-  a008=(a015*a087);
-  a123=(a049*a073);
-  a083=(a083+a123);
-  a008=(a008+a083);
-  a083=(a028*a096);
-  a083=(a083-a090);
-  a008=(a008+a083);
-  a083=(a043*a008);
-  a122=(a122+a083);
-  a118=(a118-a122);
-  a118=(a000*a118);
-  a118=(a001*a118);
-  a096=(a000*a096);
-  a096=(a001*a096);
-  a118=(a118-a096);
-  a096=(a118/a040);
-  a096=(-a096);
-  if (res[0]!=0) res[0][24]=a096;
-  a096=(a016*a057);
-  a096=(a096-a056);
-  a056=(a082*a012);
-  a056=(a056-a113);
-  a096=(a096-a056);
-  a056=(a019*a008);
-  a056=(a056-a126);
-  a096=(a096+a056);
-  a096=(a000*a096);
-  a096=(a001*a096);
-  a073=(a000*a073);
-  a073=(a001*a073);
-  a096=(a096-a073);
-  a073=(a096/a040);
-  a073=(-a073);
-  if (res[0]!=0) res[0][25]=a073;
-  a012=(a043*a012);
-  a103=(a103+a012);
-  a057=(a019*a057);
-  a057=(a057-a102);
-  a103=(a103-a057);
-  a008=(a016*a008);
-  a008=(a008-a075);
-  a103=(a103+a008);
-  a103=(a000*a103);
-  a103=(a001*a103);
-  a087=(a000*a087);
-  a087=(a001*a087);
-  a103=(a103-a087);
-  a087=(a103/a040);
-  a087=(-a087);
-  if (res[0]!=0) res[0][26]=a087;
-  a044=(a044-a118);
-  a044=(a044/a040);
-  if (res[0]!=0) res[0][27]=a044;
-  a052=(a052-a096);
-  a052=(a052/a040);
-  if (res[0]!=0) res[0][28]=a052;
-  a074=(a074-a103);
-  a074=(a074/a040);
-  if (res[0]!=0) res[0][29]=a074;
-  a078=(a001*a078);
-  a021=(a021+a078);
-  a021=(2.*a021);
-  a037=(a037*a021);
-  a021=(a001*a037);
-  a023=(a023*a021);
-  a029=(a029+a023);
-  a029=(a029-a022);
-  a029=(a029/a000);
-  a022=(a019*a029);
-  a022=(a022-a007);
-  a047=(a047*a021);
-  a014=(a014+a047);
-  a124=(a124-a014);
-  a124=(a124/a000);
-  a014=(a043*a124);
-  a014=(a014-a069);
-  a022=(a022-a014);
-  a022=(a022+a009);
-  a022=(a000*a022);
-  a031=(a031*a022);
-  a004=(a004+a031);
-  a031=(a082*a124);
-  a017=(a017+a031);
-  a031=(a016*a029);
-  a031=(a031-a027);
-  a017=(a017+a031);
-  a017=(a017-a107);
-  a017=(a000*a017);
-  a045=(a045*a017);
-  a045=(a045-a030);
-  a004=(a004+a045);
-  a124=(a016*a124);
-  a124=(a124-a053);
-  a029=(a082*a029);
-  a038=(a038+a029);
-  a124=(a124-a038);
-  a124=(a124+a005);
-  a124=(a000*a124);
-  a006=(a006*a124);
-  a004=(a004+a006);
-  a006=(a016*a004);
-  a006=(a006-a054);
-  a034=(a034*a022);
-  a064=(a064+a034);
-  a010=(a010*a017);
-  a064=(a064+a010);
-  a025=(a025*a124);
-  a090=(a090+a025);
-  a064=(a064+a090);
-  a090=(a082*a064);
-  a032=(a032+a090);
-  a006=(a006+a032);
-  a015=(a015*a022);
-  a041=(a041+a015);
-  a049=(a049*a017);
-  a084=(a084+a049);
-  a041=(a041+a084);
-  a028=(a028*a124);
-  a121=(a121+a028);
-  a041=(a041+a121);
-  a121=(a043*a041);
-  a121=(a121-a020);
-  a006=(a006-a121);
-  a006=(a000*a006);
-  a006=(a001*a006);
-  a124=(a000*a124);
-  a124=(a001*a124);
-  a006=(a006-a124);
-  a124=(a006/a040);
-  a124=(-a124);
-  if (res[0]!=0) res[0][30]=a124;
-  a124=(a016*a064);
-  a124=(a124-a013);
-  a082=(a082*a004);
-  a058=(a058+a082);
-  a124=(a124-a058);
-  a058=(a019*a041);
-  a058=(a058-a050);
-  a124=(a124+a058);
-  a124=(a000*a124);
-  a124=(a001*a124);
-  a017=(a000*a017);
-  a017=(a001*a017);
-  a124=(a124-a017);
-  a017=(a124/a040);
-  a017=(-a017);
-  if (res[0]!=0) res[0][31]=a017;
-  a043=(a043*a004);
-  a043=(a043-a093);
-  a019=(a019*a064);
-  a019=(a019-a097);
-  a043=(a043-a019);
-  a016=(a016*a041);
-  a016=(a016-a099);
-  a043=(a043+a016);
-  a043=(a000*a043);
-  a043=(a001*a043);
-  a000=(a000*a022);
-  a001=(a001*a000);
-  a043=(a043-a001);
-  a001=(a043/a040);
-  a001=(-a001);
-  if (res[0]!=0) res[0][32]=a001;
-  a055=(a055-a006);
-  a055=(a055/a040);
-  if (res[0]!=0) res[0][33]=a055;
-  a046=(a046-a124);
-  a046=(a046/a040);
-  if (res[0]!=0) res[0][34]=a046;
-  a037=(a037-a043);
-  a037=(a037/a040);
-  if (res[0]!=0) res[0][35]=a037;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int jacobian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f1(arg, res, iw, w, mem);
-}
-
-CASADI_SYMBOL_EXPORT int jacobian_checkout(void) {
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT void jacobian_release(int mem) {
-}
-
-CASADI_SYMBOL_EXPORT void jacobian_incref(void) {
-}
-
-CASADI_SYMBOL_EXPORT void jacobian_decref(void) {
-}
-
-CASADI_SYMBOL_EXPORT casadi_int jacobian_n_in(void) { return 4;}
-
-CASADI_SYMBOL_EXPORT casadi_int jacobian_n_out(void) { return 1;}
-
-CASADI_SYMBOL_EXPORT casadi_real jacobian_default_in(casadi_int i) {
-  switch (i) {
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* jacobian_name_in(casadi_int i) {
-  switch (i) {
-    case 0: return "z";
-    case 1: return "g";
-    case 2: return "p";
-    case 3: return "h";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const char* jacobian_name_out(casadi_int i) {
-  switch (i) {
-    case 0: return "J";
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* jacobian_sparsity_in(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s0;
-    case 1: return casadi_s1;
-    case 2: return casadi_s2;
-    case 3: return casadi_s3;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT const casadi_int* jacobian_sparsity_out(casadi_int i) {
-  switch (i) {
-    case 0: return casadi_s4;
-    default: return 0;
-  }
-}
-
-CASADI_SYMBOL_EXPORT int jacobian_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4;
-  if (sz_res) *sz_res = 1;
-  if (sz_iw) *sz_iw = 0;
-  if (sz_w) *sz_w = 0;
-  return 0;
-}
-
-CASADI_SYMBOL_EXPORT int jacobian_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
-  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
-  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
-  if (sz_w) *sz_w = 0*sizeof(casadi_real);
-  return 0;
-}
-
 /* residual_jacobian:(z[6],g[9],p[3],h)->(F[6],J[36]) */
-static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a000, a001, a002, a003, a004, a005, a006, a007, a008, a009, a010, a011;
   casadi_real a012, a013, a014, a015, a016, a017, a018, a019, a020, a021, a022, a023;
   casadi_real a024, a025, a026, a027, a028, a029, a030, a031, a032, a033, a034, a035;
@@ -3010,7 +1729,7 @@ static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int residual_jacobian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f2(arg, res, iw, w, mem);
+  return casadi_f1(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int residual_jacobian_checkout(void) {
@@ -3089,7 +1808,7 @@ CASADI_SYMBOL_EXPORT int residual_jacobian_work_bytes(casadi_int *sz_arg, casadi
 }
 
 /* update:(z[6],g[9],p[3],h)->(g1[9],p1[3]) */
-static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
   casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
@@ -3400,7 +2119,7 @@ static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int update(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f3(arg, res, iw, w, mem);
+  return casadi_f2(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int update_checkout(void) {
@@ -3479,7 +2198,7 @@ CASADI_SYMBOL_EXPORT int update_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* guess:(xi[3],g[9],p[3],h)->(z0[6]) */
-static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2;
   a0=arg[0]? arg[0][0] : 0;
   if (res[0]!=0) res[0][0]=a0;
@@ -3494,7 +2213,7 @@ static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int guess(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f4(arg, res, iw, w, mem);
+  return casadi_f3(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int guess_checkout(void) {
@@ -3571,7 +2290,7 @@ CASADI_SYMBOL_EXPORT int guess_work_bytes(casadi_int *sz_arg, casadi_int* sz_res
 }
 
 /* legendre:(g[9],xi[3])->(mu[3]) */
-static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3;
   a0=arg[1]? arg[1][0] : 0;
   a1=5.0000000000000000e-01;
@@ -3596,7 +2315,7 @@ static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int legendre(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f5(arg, res, iw, w, mem);
+  return casadi_f4(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int legendre_checkout(void) {
@@ -3669,7 +2388,7 @@ CASADI_SYMBOL_EXPORT int legendre_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 }
 
 /* hessian:(g[9],xi[3])->(H[9]) */
-static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1;
   a0=2.;
   if (res[0]!=0) res[0][0]=a0;
@@ -3688,7 +2407,7 @@ static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int hessian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f6(arg, res, iw, w, mem);
+  return casadi_f5(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int hessian_checkout(void) {
@@ -3761,7 +2480,7 @@ CASADI_SYMBOL_EXPORT int hessian_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
 }
 
 /* energy:(g[9],xi[3])->(E) */
-static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8, a9;
   a0=arg[1]? arg[1][0] : 0;
   a1=5.0000000000000000e-01;
@@ -3807,7 +2526,7 @@ static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f7(arg, res, iw, w, mem);
+  return casadi_f6(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int energy_checkout(void) {
@@ -3880,7 +2599,7 @@ CASADI_SYMBOL_EXPORT int energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* momentum:(g[9],p[3])->(m[3]) */
-static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13;
   a00=arg[0]? arg[0][8] : 0;
@@ -3944,7 +2663,7 @@ static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int momentum(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f8(arg, res, iw, w, mem);
+  return casadi_f7(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int momentum_checkout(void) {
@@ -4017,7 +2736,7 @@ CASADI_SYMBOL_EXPORT int momentum_work_bytes(casadi_int *sz_arg, casadi_int* sz_
 }
 
 /* defect:(g[9])->(e) */
-static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12;
   a00=arg[0]? arg[0][0] : 0;
@@ -4117,7 +2836,7 @@ static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw,
 }
 
 CASADI_SYMBOL_EXPORT int defect(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f9(arg, res, iw, w, mem);
+  return casadi_f8(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int defect_checkout(void) {
@@ -4188,7 +2907,7 @@ CASADI_SYMBOL_EXPORT int defect_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 }
 
 /* margin:(z[6],h)->(m) */
-static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a0, a1, a2, a3, a4, a5, a6;
   a0=1.;
   a1=4.;
@@ -4227,7 +2946,7 @@ static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw
 }
 
 CASADI_SYMBOL_EXPORT int margin(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
-  return casadi_f10(arg, res, iw, w, mem);
+  return casadi_f9(arg, res, iw, w, mem);
 }
 
 CASADI_SYMBOL_EXPORT int margin_checkout(void) {
@@ -4299,6 +3018,304 @@ CASADI_SYMBOL_EXPORT int margin_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
   return 0;
 }
 
+/* section:(g[9],p[3])->(s) */
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=1.;
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int section(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f10(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int section_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void section_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void section_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void section_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int section_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int section_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real section_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* section_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* section_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "s";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* section_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* section_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int section_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int section_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* chart_point:(z[6],g[9],h,theta)->(g_theta[9]) */
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21;
+  a00=arg[1]? arg[1][0] : 0;
+  a01=1.;
+  a02=4.;
+  a03=arg[3]? arg[3][0] : 0;
+  a04=arg[2]? arg[2][0] : 0;
+  a05=5.0000000000000000e-01;
+  a06=arg[0]? arg[0][0] : 0;
+  a06=(a05*a06);
+  a07=arg[0]? arg[0][3] : 0;
+  a07=(a05*a07);
+  a06=(a06+a07);
+  a06=(a04*a06);
+  a06=(a03*a06);
+  a07=casadi_sq(a06);
+  a08=arg[0]? arg[0][1] : 0;
+  a08=(a05*a08);
+  a09=arg[0]? arg[0][4] : 0;
+  a09=(a05*a09);
+  a08=(a08+a09);
+  a08=(a04*a08);
+  a08=(a03*a08);
+  a09=casadi_sq(a08);
+  a10=(a07+a09);
+  a11=arg[0]? arg[0][2] : 0;
+  a11=(a05*a11);
+  a12=arg[0]? arg[0][5] : 0;
+  a05=(a05*a12);
+  a11=(a11+a05);
+  a04=(a04*a11);
+  a03=(a03*a04);
+  a04=casadi_sq(a03);
+  a10=(a10+a04);
+  a10=(a02+a10);
+  a02=(a02/a10);
+  a10=(a04+a09);
+  a11=2.;
+  a10=(a10/a11);
+  a10=(a02*a10);
+  a10=(a01-a10);
+  a05=(a00*a10);
+  a12=arg[1]? arg[1][3] : 0;
+  a13=(a06*a08);
+  a13=(a13/a11);
+  a13=(a03+a13);
+  a13=(a02*a13);
+  a14=(a12*a13);
+  a05=(a05+a14);
+  a14=arg[1]? arg[1][6] : 0;
+  a15=(a06*a03);
+  a15=(a15/a11);
+  a15=(a15-a08);
+  a15=(a02*a15);
+  a16=(a14*a15);
+  a05=(a05+a16);
+  if (res[0]!=0) res[0][0]=a05;
+  a05=arg[1]? arg[1][1] : 0;
+  a16=(a05*a10);
+  a17=arg[1]? arg[1][4] : 0;
+  a18=(a17*a13);
+  a16=(a16+a18);
+  a18=arg[1]? arg[1][7] : 0;
+  a19=(a18*a15);
+  a16=(a16+a19);
+  if (res[0]!=0) res[0][1]=a16;
+  a16=arg[1]? arg[1][2] : 0;
+  a10=(a16*a10);
+  a19=arg[1]? arg[1][5] : 0;
+  a13=(a19*a13);
+  a10=(a10+a13);
+  a13=arg[1]? arg[1][8] : 0;
+  a15=(a13*a15);
+  a10=(a10+a15);
+  if (res[0]!=0) res[0][2]=a10;
+  a10=(a08*a06);
+  a10=(a10/a11);
+  a10=(a10-a03);
+  a10=(a02*a10);
+  a15=(a00*a10);
+  a04=(a04+a07);
+  a04=(a04/a11);
+  a04=(a02*a04);
+  a04=(a01-a04);
+  a20=(a12*a04);
+  a15=(a15+a20);
+  a20=(a08*a03);
+  a20=(a20/a11);
+  a20=(a06+a20);
+  a20=(a02*a20);
+  a21=(a14*a20);
+  a15=(a15+a21);
+  if (res[0]!=0) res[0][3]=a15;
+  a15=(a05*a10);
+  a21=(a17*a04);
+  a15=(a15+a21);
+  a21=(a18*a20);
+  a15=(a15+a21);
+  if (res[0]!=0) res[0][4]=a15;
+  a10=(a16*a10);
+  a04=(a19*a04);
+  a10=(a10+a04);
+  a20=(a13*a20);
+  a10=(a10+a20);
+  if (res[0]!=0) res[0][5]=a10;
+  a10=(a03*a06);
+  a10=(a10/a11);
+  a10=(a08+a10);
+  a10=(a02*a10);
+  a00=(a00*a10);
+  a03=(a03*a08);
+  a03=(a03/a11);
+  a03=(a03-a06);
+  a03=(a02*a03);
+  a12=(a12*a03);
+  a00=(a00+a12);
+  a09=(a09+a07);
+  a09=(a09/a11);
+  a02=(a02*a09);
+  a01=(a01-a02);
+  a14=(a14*a01);
+  a00=(a00+a14);
+  if (res[0]!=0) res[0][6]=a00;
+  a05=(a05*a10);
+  a17=(a17*a03);
+  a05=(a05+a17);
+  a18=(a18*a01);
+  a05=(a05+a18);
+  if (res[0]!=0) res[0][7]=a05;
+  a16=(a16*a10);
+  a19=(a19*a03);
+  a16=(a16+a19);
+  a13=(a13*a01);
+  a16=(a16+a13);
+  if (res[0]!=0) res[0][8]=a16;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int chart_point(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f11(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int chart_point_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void chart_point_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void chart_point_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void chart_point_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int chart_point_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int chart_point_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real chart_point_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* chart_point_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "h";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* chart_point_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "g_theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* chart_point_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s3;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* chart_point_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int chart_point_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int chart_point_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
 
 
 /* ======================= end of CasADi-generated code =================================== */
@@ -4356,9 +3373,11 @@ typedef struct hpgen_run {
     long long k;                     /* steps done */
     long long have_prev;             /* how many of zprev, zprev2 are valid (0, 1, 2) */
     long long lu_valid;              /* lu holds J^{-1} */
+    double s;                        /* section(g_k, p_k), when s_valid */
+    long long s_valid;
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "5db7336b6d4b2f2af7bb77f0cf03f73613c8e7fd40c2b0884ae5121cba07bbde"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "cbf3ed60df4e1dd6e4f93c7712713daf2e442c0f327521e2eeab7d1abe7ac562"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -4366,6 +3385,18 @@ HPGEN_EXPORT void hpgen_dims(long long* out) {
 }
 
 /* ---- kernel wrappers: dense column-major arguments, CasADi work arrays on the stack ---- */
+static int hpgen_k_residual(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_residual_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1);
+static int hpgen_k_update(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1);
+static int hpgen_k_guess(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_legendre(const double* in0, const double* in1, double* out0);
+static int hpgen_k_hessian(const double* in0, const double* in1, double* out0);
+static int hpgen_k_energy(const double* in0, const double* in1, double* out0);
+static int hpgen_k_momentum(const double* in0, const double* in1, double* out0);
+static int hpgen_k_defect(const double* in0, double* out0);
+static int hpgen_k_margin(const double* in0, const double* in1, double* out0);
+static int hpgen_k_section(const double* in0, const double* in1, double* out0);
+static int hpgen_k_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
 
 /* residual(z[6], g[9], p[3], h[1]) -> (F[6]) */
 #define HPGEN_RESIDUAL_SZ_ARG 4
@@ -4395,30 +3426,11 @@ HPGEN_EXPORT int hpgen_kernel_residual(const double* in0, const double* in1, con
 }
 
 /* jacobian(z[6], g[9], p[3], h[1]) -> (J[36]) */
-#define HPGEN_JACOBIAN_SZ_ARG 4
-#define HPGEN_JACOBIAN_SZ_RES 1
-#define HPGEN_JACOBIAN_SZ_IW 0
-#define HPGEN_JACOBIAN_SZ_W 127
-/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
-   interposed, so calls to it are never inlined); hpgen_kernel_jacobian exports it */
-static int hpgen_k_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
-    const casadi_real* arg[HPGEN_JACOBIAN_SZ_ARG + 1];
-    casadi_real* res[HPGEN_JACOBIAN_SZ_RES + 1];
-    casadi_int iw[HPGEN_JACOBIAN_SZ_IW + 1];
-    casadi_real w[HPGEN_JACOBIAN_SZ_W + 1];
-    int flag, i = 0;
-    arg[0] = in0;
-    arg[1] = in1;
-    arg[2] = in2;
-    arg[3] = in3;
-    res[0] = out0;
-    flag = jacobian(arg, res, iw, w, 0);
-    (void)i;
-    return flag;
-}
-
+/* = output 1 of residual_jacobian (the same CasADi algorithm; its other outputs are
+   computed into scratch and dropped) */
 HPGEN_EXPORT int hpgen_kernel_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
-    return hpgen_k_jacobian(in0, in1, in2, in3, out0);
+    double scratch[HPGEN_NZ];
+    return hpgen_k_residual_jacobian(in0, in1, in2, in3, scratch, out0);
 }
 
 /* residual_jacobian(z[6], g[9], p[3], h[1]) -> (F[6], J[36]) */
@@ -4651,6 +3663,58 @@ static int hpgen_k_margin(const double* in0, const double* in1, double* out0) {
 
 HPGEN_EXPORT int hpgen_kernel_margin(const double* in0, const double* in1, double* out0) {
     return hpgen_k_margin(in0, in1, out0);
+}
+
+/* section(g[9], p[3]) -> (s[1]) */
+#define HPGEN_SECTION_SZ_ARG 2
+#define HPGEN_SECTION_SZ_RES 1
+#define HPGEN_SECTION_SZ_IW 0
+#define HPGEN_SECTION_SZ_W 1
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_section exports it */
+static int hpgen_k_section(const double* in0, const double* in1, double* out0) {
+    const casadi_real* arg[HPGEN_SECTION_SZ_ARG + 1];
+    casadi_real* res[HPGEN_SECTION_SZ_RES + 1];
+    casadi_int iw[HPGEN_SECTION_SZ_IW + 1];
+    casadi_real w[HPGEN_SECTION_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    res[0] = out0;
+    flag = section(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_section(const double* in0, const double* in1, double* out0) {
+    return hpgen_k_section(in0, in1, out0);
+}
+
+/* chart_point(z[6], g[9], h[1], theta[1]) -> (g_theta[9]) */
+#define HPGEN_CHART_POINT_SZ_ARG 4
+#define HPGEN_CHART_POINT_SZ_RES 1
+#define HPGEN_CHART_POINT_SZ_IW 0
+#define HPGEN_CHART_POINT_SZ_W 22
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_chart_point exports it */
+static int hpgen_k_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_CHART_POINT_SZ_ARG + 1];
+    casadi_real* res[HPGEN_CHART_POINT_SZ_RES + 1];
+    casadi_int iw[HPGEN_CHART_POINT_SZ_IW + 1];
+    casadi_real w[HPGEN_CHART_POINT_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = chart_point(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_chart_point(in0, in1, in2, in3, out0);
 }
 
 /* ---- dense linear algebra and Newton ---- */
@@ -4971,13 +4035,44 @@ HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, d
    recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
    sizes them for the records falling in this call). Stops at the first failed step (the run
    keeps the last good state). Returns the steps done in this call. */
+/* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
+   success the run moved to (g_{k+1}, p_{k+1}); o for the steps after the first, full (o with
+   full Newton) for the first. Updates the counters of st; returns the status code. */
+static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
+                          const hpgen_options* full, hpgen_status* st) {
+    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], res;
+    long long it;
+    int i, code;
+    /* start: the polynomial through the last solutions, extrapolated one step (quadratic
+       3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before) */
+    if (o->predictor && r->have_prev >= 2)
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 3.0 * (r->z[i] - r->zprev[i]) + r->zprev2[i];
+    else if (o->predictor && r->have_prev == 1)
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 2.0 * r->z[i] - r->zprev[i];
+    else
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
+    /* the first step starts from the crude guess kernel: full Newton */
+    code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? full : o, r->lu, r->piv,
+                           &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0);
+    st->iterations = it;
+    st->total_iterations += it;
+    st->residual = res;
+    if (code != HPGEN_OK) { st->code = code; st->step = r->k; return code; }
+    memcpy(r->zprev2, r->zprev, sizeof r->z);
+    memcpy(r->zprev, r->z, sizeof r->z);
+    memcpy(r->z, zs, sizeof r->z);
+    if (r->have_prev < 2) r->have_prev += 1;
+    memcpy(r->g, g1, sizeof g1);
+    memcpy(r->p, p1, sizeof p1);
+    r->k += 1;
+    return HPGEN_OK;
+}
+
 HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, long long every,
                                      const hpgen_options* o, double* g_rec, double* p_rec,
                                      hpgen_status* st) {
-    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], hv[1];
-    long long n, it, rec = 0;
-    double res;
-    int i;
+    double hv[1];
+    long long n, rec = 0;
     hpgen_options full;
     hpgen_status_init(st);
     if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
@@ -4985,37 +4080,72 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
     full = *o;
     full.simplified = 0;
     for (n = 0; n < steps; ++n) {
-        int code;
-        /* start: the polynomial through the last solutions, extrapolated one step (quadratic
-           3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before) */
-        if (o->predictor && r->have_prev >= 2)
-            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 3.0 * (r->z[i] - r->zprev[i]) + r->zprev2[i];
-        else if (o->predictor && r->have_prev == 1)
-            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 2.0 * r->z[i] - r->zprev[i];
-        else
-            for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
-        /* the first step starts from the crude guess kernel: full Newton */
-        code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? &full : o, r->lu, r->piv,
-                               &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0);
-        st->iterations = it;
-        st->total_iterations += it;
-        st->residual = res;
-        if (code != HPGEN_OK) { st->code = code; st->step = r->k; return n; }
-        memcpy(r->zprev2, r->zprev, sizeof r->z);
-        memcpy(r->zprev, r->z, sizeof r->z);
-        memcpy(r->z, zs, sizeof r->z);
-        if (r->have_prev < 2) r->have_prev += 1;
-        memcpy(r->g, g1, sizeof g1);
-        memcpy(r->p, p1, sizeof p1);
-        r->k += 1;
+        if (hpgen_run_step(r, hv, o, &full, st) != HPGEN_OK) return n;
         if (r->k % every == 0) {
-            memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof g1);
-            memcpy(p_rec + rec * HPGEN_D, r->p, sizeof p1);
+            memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof r->g);
+            memcpy(p_rec + rec * HPGEN_D, r->p, sizeof r->p);
             ++rec;
         }
     }
     st->step = r->k;
     return steps;
+}
+
+/* Advance a run by up to `steps` steps of size h, recording the upward crossings of the
+   scene's Poincare section s(g, p) = 0 (kernel section): when s_k < 0 <= s_{k+1}, with
+   theta = s_k / (s_k - s_{k+1}) in (0, 1], record j holds
+     k_rec[j] = k,  t_rec[j] = (k + theta) h,
+     p_rec[j * D] = (1 - theta) p_k + theta p_{k+1}      (linear in the step: O(h^2)),
+     g_rec[j * NN] = g_k tau(theta h xi_{k+1})            (kernel chart_point: on the group).
+   s of the run's current state is kept in the run, so calls chain (a crossing between two
+   calls is found). Stops after `cap` records (the crossing step included), at a failed step,
+   or after `steps` steps; *n_rec: the records written. Returns the steps done in this call. */
+HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long steps,
+                                              const hpgen_options* o, long long cap,
+                                              double* t_rec, double* g_rec, double* p_rec,
+                                              long long* k_rec, long long* n_rec,
+                                              hpgen_status* st) {
+    double hv[1], g0[HPGEN_NN], p0[HPGEN_D], s1[1], th[1];
+    long long n;
+    int i;
+    hpgen_options full;
+    hpgen_status_init(st);
+    *n_rec = 0;
+    if (steps < 0 || cap < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    hv[0] = h;
+    full = *o;
+    full.simplified = 0;
+    if (!r->s_valid) {
+        if (hpgen_k_section(r->g, r->p, s1)) { st->code = HPGEN_NONFINITE; return 0; }
+        r->s = s1[0];
+        r->s_valid = 1;
+    }
+    for (n = 0; n < steps && *n_rec < cap; ++n) {
+        const double s0 = r->s;
+        const long long k = r->k;
+        memcpy(g0, r->g, sizeof g0);
+        memcpy(p0, r->p, sizeof p0);
+        if (hpgen_run_step(r, hv, o, &full, st) != HPGEN_OK) return n;
+        if (hpgen_k_section(r->g, r->p, s1) || !isfinite(s1[0])) {
+            st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
+        }
+        r->s = s1[0];
+        if (s0 < 0.0 && s1[0] >= 0.0) {
+            const long long j = *n_rec;
+            const double theta = s0 / (s0 - s1[0]);
+            th[0] = theta;
+            k_rec[j] = k;
+            t_rec[j] = ((double)k + theta) * h;
+            for (i = 0; i < HPGEN_D; ++i)
+                p_rec[j * HPGEN_D + i] = (1.0 - theta) * p0[i] + theta * r->p[i];
+            if (hpgen_k_chart_point(r->z, g0, hv, th, g_rec + j * HPGEN_NN)) {
+                st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
+            }
+            *n_rec = j + 1;
+        }
+    }
+    st->step = r->k;
+    return n;
 }
 
 /* Advance B independent runs (runs[0..B-1]) by `steps` steps each, one after the other,

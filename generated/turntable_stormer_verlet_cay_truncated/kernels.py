@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 5db7336b6d4b2f2af7bb77f0cf03f73613c8e7fd40c2b0884ae5121cba07bbde
+# content hash: cbf3ed60df4e1dd6e4f93c7712713daf2e442c0f327521e2eeab7d1abe7ac562
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -4274,6 +4274,225 @@ def margin(z, h):
     return [_fromiter(_r[0], _F64, 1)]
 
 
+def _raw_section(g, p):
+    """section on lists of Python floats -> [s[1]] as lists (see RAW)"""
+    r0 = [0.0] * 1
+    r0[0] = 1.0
+    return [r0]
+
+
+def section(g, p):
+    """section(g[9], p[3]) -> [s[1]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "section: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (3,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 3, "section: p")
+    _r = _raw_section(g, p)
+    return [_fromiter(_r[0], _F64, 1)]
+
+
+def _raw_chart_point(z, g, h, theta):
+    """chart_point on lists of Python floats -> [g_theta[9]] as lists (see RAW)"""
+    try:
+        w0, w2, w4, w1, w3, w5 = z
+        w6, w9, w12, w7, w10, w13, w8, w11, w14 = g
+        w15, = h
+        w16, = theta
+        r0 = [0.0] * 9
+        w0 = w16 * (w15 * ((0.5 * w0) + (0.5 * w1)))
+        w1 = w0 * w0
+        w2 = w16 * (w15 * ((0.5 * w2) + (0.5 * w3)))
+        w3 = w2 * w2
+        w17 = w1 + w3
+        w4 = w16 * (w15 * ((0.5 * w4) + (0.5 * w5)))
+        w5 = w4 * w4
+        w15 = 4.0 / (4.0 + (w17 + w5))
+        w3 = 1.0 - (w15 * ((w5 + w3) * 0.5))
+        w16 = (w0 * w2) * 0.5
+        w18 = w15 * (w4 + w16)
+        w19 = (w0 * w4) * 0.5
+        w20 = w15 * (w19 - w2)
+        r0[0] = ((w6 * w3) + (w7 * w18)) + (w8 * w20)
+        r0[1] = ((w9 * w3) + (w10 * w18)) + (w11 * w20)
+        r0[2] = ((w12 * w3) + (w13 * w18)) + (w14 * w20)
+        w3 = w15 * (w16 - w4)
+        w1 = 1.0 - (w15 * ((w5 + w1) * 0.5))
+        w4 = (w2 * w4) * 0.5
+        w5 = w15 * (w0 + w4)
+        r0[3] = ((w6 * w3) + (w7 * w1)) + (w8 * w5)
+        r0[4] = ((w9 * w3) + (w10 * w1)) + (w11 * w5)
+        r0[5] = ((w12 * w3) + (w13 * w1)) + (w14 * w5)
+        w1 = w15 * (w2 + w19)
+        w0 = w15 * (w4 - w0)
+        w2 = 1.0 - (w15 * (w17 * 0.5))
+        r0[6] = ((w6 * w1) + (w7 * w0)) + (w8 * w2)
+        r0[7] = ((w9 * w1) + (w10 * w0)) + (w11 * w2)
+        r0[8] = ((w12 * w1) + (w13 * w0)) + (w14 * w2)
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 9
+        w0 = g[0]
+        w1 = 1.0
+        w2 = 4.0
+        w3 = theta[0]
+        w4 = h[0]
+        w5 = 0.5
+        w6 = z[0]
+        w6 = w5 * w6
+        w7 = z[3]
+        w7 = w5 * w7
+        w6 = w6 + w7
+        w6 = w4 * w6
+        w6 = w3 * w6
+        w7 = w6 * w6
+        w8 = z[1]
+        w8 = w5 * w8
+        w9 = z[4]
+        w9 = w5 * w9
+        w8 = w8 + w9
+        w8 = w4 * w8
+        w8 = w3 * w8
+        w9 = w8 * w8
+        w10 = w7 + w9
+        w11 = z[2]
+        w11 = w5 * w11
+        w12 = z[5]
+        w5 = w5 * w12
+        w11 = w11 + w5
+        w4 = w4 * w11
+        w3 = w3 * w4
+        w4 = w3 * w3
+        w10 = w10 + w4
+        w10 = w2 + w10
+        w2 = w2 / w10 if w10 else _div(w2, w10)
+        w10 = w4 + w9
+        w11 = 2.0
+        w10 = w10 / w11 if w11 else _div(w10, w11)
+        w10 = w2 * w10
+        w10 = w1 - w10
+        w5 = w0 * w10
+        w12 = g[3]
+        w13 = w6 * w8
+        w13 = w13 / w11 if w11 else _div(w13, w11)
+        w13 = w3 + w13
+        w13 = w2 * w13
+        w14 = w12 * w13
+        w5 = w5 + w14
+        w14 = g[6]
+        w15 = w6 * w3
+        w15 = w15 / w11 if w11 else _div(w15, w11)
+        w15 = w15 - w8
+        w15 = w2 * w15
+        w16 = w14 * w15
+        w5 = w5 + w16
+        r0[0] = w5
+        w5 = g[1]
+        w16 = w5 * w10
+        w17 = g[4]
+        w18 = w17 * w13
+        w16 = w16 + w18
+        w18 = g[7]
+        w19 = w18 * w15
+        w16 = w16 + w19
+        r0[1] = w16
+        w16 = g[2]
+        w10 = w16 * w10
+        w19 = g[5]
+        w13 = w19 * w13
+        w10 = w10 + w13
+        w13 = g[8]
+        w15 = w13 * w15
+        w10 = w10 + w15
+        r0[2] = w10
+        w10 = w8 * w6
+        w10 = w10 / w11 if w11 else _div(w10, w11)
+        w10 = w10 - w3
+        w10 = w2 * w10
+        w15 = w0 * w10
+        w4 = w4 + w7
+        w4 = w4 / w11 if w11 else _div(w4, w11)
+        w4 = w2 * w4
+        w4 = w1 - w4
+        w20 = w12 * w4
+        w15 = w15 + w20
+        w20 = w8 * w3
+        w20 = w20 / w11 if w11 else _div(w20, w11)
+        w20 = w6 + w20
+        w20 = w2 * w20
+        w21 = w14 * w20
+        w15 = w15 + w21
+        r0[3] = w15
+        w15 = w5 * w10
+        w21 = w17 * w4
+        w15 = w15 + w21
+        w21 = w18 * w20
+        w15 = w15 + w21
+        r0[4] = w15
+        w10 = w16 * w10
+        w4 = w19 * w4
+        w10 = w10 + w4
+        w20 = w13 * w20
+        w10 = w10 + w20
+        r0[5] = w10
+        w10 = w3 * w6
+        w10 = w10 / w11 if w11 else _div(w10, w11)
+        w10 = w8 + w10
+        w10 = w2 * w10
+        w0 = w0 * w10
+        w3 = w3 * w8
+        w3 = w3 / w11 if w11 else _div(w3, w11)
+        w3 = w3 - w6
+        w3 = w2 * w3
+        w12 = w12 * w3
+        w0 = w0 + w12
+        w9 = w9 + w7
+        w9 = w9 / w11 if w11 else _div(w9, w11)
+        w2 = w2 * w9
+        w1 = w1 - w2
+        w14 = w14 * w1
+        w0 = w0 + w14
+        r0[6] = w0
+        w5 = w5 * w10
+        w17 = w17 * w3
+        w5 = w5 + w17
+        w18 = w18 * w1
+        w5 = w5 + w18
+        r0[7] = w5
+        w16 = w16 * w10
+        w19 = w19 * w3
+        w16 = w16 + w19
+        w13 = w13 * w1
+        w16 = w16 + w13
+        r0[8] = w16
+    return [r0]
+
+
+def chart_point(z, g, h, theta):
+    """chart_point(z[6], g[9], h[1], theta[1]) -> [g_theta[9]]"""
+    if _type(z) is _NDARRAY and z.dtype is _F64 and z.shape == (6,):
+        z = z.tolist()
+    else:
+        z = _vec(z, 6, "chart_point: z")
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "chart_point: g")
+    if _type(h) is _NDARRAY and h.dtype is _F64 and h.shape == (1,):
+        h = h.tolist()
+    else:
+        h = _vec(h, 1, "chart_point: h")
+    if _type(theta) is _NDARRAY and theta.dtype is _F64 and theta.shape == (1,):
+        theta = theta.tolist()
+    else:
+        theta = _vec(theta, 1, "chart_point: theta")
+    _r = _raw_chart_point(z, g, h, theta)
+    return [_fromiter(_r[0], _F64, 9)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -4286,6 +4505,8 @@ KERNELS = {
     "momentum": momentum,
     "defect": defect,
     "margin": margin,
+    "section": section,
+    "chart_point": chart_point,
 }
 
 RAW = {
@@ -4300,4 +4521,6 @@ RAW = {
     "momentum": _raw_momentum,
     "defect": _raw_defect,
     "margin": _raw_margin,
+    "section": _raw_section,
+    "chart_point": _raw_chart_point,
 }

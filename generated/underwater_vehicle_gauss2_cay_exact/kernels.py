@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 25a1365071ef578aa271d95ae96b63b7a8a08b7a1abfd5c5c76cdcaca2e4e548
+# content hash: b202a2ca77f260bf6af9785da57504da637f6cc718cbc0079e48da2385313f33
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -40001,6 +40001,399 @@ def margin(z, h):
     return [_fromiter(_r[0], _F64, 1)]
 
 
+def _raw_section(g, p):
+    """section on lists of Python floats -> [s[1]] as lists (see RAW)"""
+    r0 = [0.0] * 1
+    r0[0] = 1.0
+    return [r0]
+
+
+def section(g, p):
+    """section(g[16], p[6]) -> [s[1]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (16,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 16, "section: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (6,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 6, "section: p")
+    _r = _raw_section(g, p)
+    return [_fromiter(_r[0], _F64, 1)]
+
+
+def _raw_chart_point(z, g, h, theta):
+    """chart_point on lists of Python floats -> [g_theta[16]] as lists (see RAW)"""
+    try:
+        w0, w2, w4, w6, w8, w10, w1, w3, w5, w7, w9, w11, _, _, _, _, _, _ = z
+        w12, w15, w18, w21, w13, w16, w19, w22, w14, w17, w20, w23, w24, w25, w26, w27 = g
+        w28, = h
+        w29, = theta
+        r0 = [0.0] * 16
+        w0 = w29 * (w28 * ((0.5 * ((3.0000000000000004 * w0) + (0.4641016151377544 * w1))) + (0.5 * (((-6.464101615137755) * w0) + (3.0000000000000004 * w1)))))
+        w1 = w0 * w0
+        w2 = w29 * (w28 * ((0.5 * ((3.0000000000000004 * w2) + (0.4641016151377544 * w3))) + (0.5 * (((-6.464101615137755) * w2) + (3.0000000000000004 * w3)))))
+        w3 = w2 * w2
+        w30 = w1 + w3
+        w4 = w29 * (w28 * ((0.5 * ((3.0000000000000004 * w4) + (0.4641016151377544 * w5))) + (0.5 * (((-6.464101615137755) * w4) + (3.0000000000000004 * w5)))))
+        w5 = w4 * w4
+        w31 = 4.0 + (w30 + w5)
+        w32 = 4.0 / w31
+        w3 = w5 + w3
+        w33 = 1.0 - (w32 * (w3 * 0.5))
+        w34 = w0 * w2
+        w35 = w34 * 0.5
+        w36 = w32 * (w4 + w35)
+        w37 = w0 * w4
+        w38 = w37 * 0.5
+        w39 = w32 * (w38 - w2)
+        r0[0] = ((w12 * w33) + (w13 * w36)) + (w14 * w39)
+        r0[1] = ((w15 * w33) + (w16 * w36)) + (w17 * w39)
+        r0[2] = ((w18 * w33) + (w19 * w36)) + (w20 * w39)
+        r0[3] = ((w21 * w33) + (w22 * w36)) + (w23 * w39)
+        w33 = w32 * (w35 - w4)
+        w1 = w5 + w1
+        w5 = 1.0 - (w32 * (w1 * 0.5))
+        w35 = w2 * w4
+        w36 = w35 * 0.5
+        w39 = w32 * (w0 + w36)
+        r0[4] = ((w12 * w33) + (w13 * w5)) + (w14 * w39)
+        r0[5] = ((w15 * w33) + (w16 * w5)) + (w17 * w39)
+        r0[6] = ((w18 * w33) + (w19 * w5)) + (w20 * w39)
+        r0[7] = ((w21 * w33) + (w22 * w5)) + (w23 * w39)
+        w5 = w32 * (w2 + w38)
+        w33 = w32 * (w36 - w0)
+        w32 = 1.0 - (w32 * (w30 * 0.5))
+        r0[8] = ((w12 * w5) + (w13 * w33)) + (w14 * w32)
+        r0[9] = ((w15 * w5) + (w16 * w33)) + (w17 * w32)
+        r0[10] = ((w18 * w5) + (w19 * w33)) + (w20 * w32)
+        r0[11] = ((w21 * w5) + (w22 * w33)) + (w23 * w32)
+        w5 = w29 * (w28 * ((0.5 * ((3.0000000000000004 * w6) + (0.4641016151377544 * w7))) + (0.5 * (((-6.464101615137755) * w6) + (3.0000000000000004 * w7)))))
+        w6 = w29 * (w28 * ((0.5 * ((3.0000000000000004 * w8) + (0.4641016151377544 * w9))) + (0.5 * (((-6.464101615137755) * w8) + (3.0000000000000004 * w9)))))
+        w7 = w29 * (w28 * ((0.5 * ((3.0000000000000004 * w10) + (0.4641016151377544 * w11))) + (0.5 * (((-6.464101615137755) * w10) + (3.0000000000000004 * w11)))))
+        w3 = (((1.0 - (w3 / w31)) * w5) + ((((2.0 * (-w4)) + w34) / w31) * w6)) + ((((2.0 * w2) + w37) / w31) * w7)
+        w1 = (((((2.0 * w4) + w34) / w31) * w5) + ((1.0 - (w1 / w31)) * w6)) + ((((2.0 * (-w0)) + w35) / w31) * w7)
+        w0 = (((((2.0 * (-w2)) + w37) / w31) * w5) + ((((2.0 * w0) + w35) / w31) * w6)) + ((1.0 - (w30 / w31)) * w7)
+        r0[12] = (((w12 * w3) + (w13 * w1)) + (w14 * w0)) + w24
+        r0[13] = (((w15 * w3) + (w16 * w1)) + (w17 * w0)) + w25
+        r0[14] = (((w18 * w3) + (w19 * w1)) + (w20 * w0)) + w26
+        r0[15] = (((w21 * w3) + (w22 * w1)) + (w23 * w0)) + w27
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 16
+        w0 = g[0]
+        w1 = 1.0
+        w2 = 4.0
+        w3 = theta[0]
+        w4 = h[0]
+        w5 = 0.5
+        w6 = 3.0000000000000004
+        w7 = z[0]
+        w8 = w6 * w7
+        w9 = 0.4641016151377544
+        w10 = z[6]
+        w11 = w9 * w10
+        w8 = w8 + w11
+        w8 = w5 * w8
+        w11 = -6.464101615137755
+        w7 = w11 * w7
+        w10 = w6 * w10
+        w7 = w7 + w10
+        w7 = w5 * w7
+        w8 = w8 + w7
+        w8 = w4 * w8
+        w8 = w3 * w8
+        w7 = w8 * w8
+        w10 = z[1]
+        w12 = w6 * w10
+        w13 = z[7]
+        w14 = w9 * w13
+        w12 = w12 + w14
+        w12 = w5 * w12
+        w10 = w11 * w10
+        w13 = w6 * w13
+        w10 = w10 + w13
+        w10 = w5 * w10
+        w12 = w12 + w10
+        w12 = w4 * w12
+        w12 = w3 * w12
+        w10 = w12 * w12
+        w13 = w7 + w10
+        w14 = z[2]
+        w15 = w6 * w14
+        w16 = z[8]
+        w17 = w9 * w16
+        w15 = w15 + w17
+        w15 = w5 * w15
+        w14 = w11 * w14
+        w16 = w6 * w16
+        w14 = w14 + w16
+        w14 = w5 * w14
+        w15 = w15 + w14
+        w15 = w4 * w15
+        w15 = w3 * w15
+        w14 = w15 * w15
+        w13 = w13 + w14
+        w13 = w2 + w13
+        w2 = w2 / w13 if w13 else _div(w2, w13)
+        w16 = w14 + w10
+        w17 = 2.0
+        w18 = w16 / w17 if w17 else _div(w16, w17)
+        w18 = w2 * w18
+        w18 = w1 - w18
+        w19 = w0 * w18
+        w20 = g[4]
+        w21 = w8 * w12
+        w22 = w21 / w17 if w17 else _div(w21, w17)
+        w22 = w15 + w22
+        w22 = w2 * w22
+        w23 = w20 * w22
+        w19 = w19 + w23
+        w23 = g[8]
+        w24 = w8 * w15
+        w25 = w24 / w17 if w17 else _div(w24, w17)
+        w25 = w25 - w12
+        w25 = w2 * w25
+        w26 = w23 * w25
+        w19 = w19 + w26
+        r0[0] = w19
+        w19 = g[1]
+        w26 = w19 * w18
+        w27 = g[5]
+        w28 = w27 * w22
+        w26 = w26 + w28
+        w28 = g[9]
+        w29 = w28 * w25
+        w26 = w26 + w29
+        r0[1] = w26
+        w26 = g[2]
+        w29 = w26 * w18
+        w30 = g[6]
+        w31 = w30 * w22
+        w29 = w29 + w31
+        w31 = g[10]
+        w32 = w31 * w25
+        w29 = w29 + w32
+        r0[2] = w29
+        w29 = g[3]
+        w18 = w29 * w18
+        w32 = g[7]
+        w22 = w32 * w22
+        w18 = w18 + w22
+        w22 = g[11]
+        w25 = w22 * w25
+        w18 = w18 + w25
+        r0[3] = w18
+        w18 = w12 * w8
+        w25 = w18 / w17 if w17 else _div(w18, w17)
+        w25 = w25 - w15
+        w25 = w2 * w25
+        w33 = w0 * w25
+        w14 = w14 + w7
+        w34 = w14 / w17 if w17 else _div(w14, w17)
+        w34 = w2 * w34
+        w34 = w1 - w34
+        w35 = w20 * w34
+        w33 = w33 + w35
+        w35 = w12 * w15
+        w36 = w35 / w17 if w17 else _div(w35, w17)
+        w36 = w8 + w36
+        w36 = w2 * w36
+        w37 = w23 * w36
+        w33 = w33 + w37
+        r0[4] = w33
+        w33 = w19 * w25
+        w37 = w27 * w34
+        w33 = w33 + w37
+        w37 = w28 * w36
+        w33 = w33 + w37
+        r0[5] = w33
+        w33 = w26 * w25
+        w37 = w30 * w34
+        w33 = w33 + w37
+        w37 = w31 * w36
+        w33 = w33 + w37
+        r0[6] = w33
+        w25 = w29 * w25
+        w34 = w32 * w34
+        w25 = w25 + w34
+        w36 = w22 * w36
+        w25 = w25 + w36
+        r0[7] = w25
+        w25 = w15 * w8
+        w36 = w25 / w17 if w17 else _div(w25, w17)
+        w36 = w12 + w36
+        w36 = w2 * w36
+        w34 = w0 * w36
+        w33 = w15 * w12
+        w37 = w33 / w17 if w17 else _div(w33, w17)
+        w37 = w37 - w8
+        w37 = w2 * w37
+        w38 = w20 * w37
+        w34 = w34 + w38
+        w10 = w10 + w7
+        w17 = w10 / w17 if w17 else _div(w10, w17)
+        w2 = w2 * w17
+        w2 = w1 - w2
+        w17 = w23 * w2
+        w34 = w34 + w17
+        r0[8] = w34
+        w34 = w19 * w36
+        w17 = w27 * w37
+        w34 = w34 + w17
+        w17 = w28 * w2
+        w34 = w34 + w17
+        r0[9] = w34
+        w34 = w26 * w36
+        w17 = w30 * w37
+        w34 = w34 + w17
+        w17 = w31 * w2
+        w34 = w34 + w17
+        r0[10] = w34
+        w36 = w29 * w36
+        w37 = w32 * w37
+        w36 = w36 + w37
+        w2 = w22 * w2
+        w36 = w36 + w2
+        r0[11] = w36
+        w16 = w16 / w13 if w13 else _div(w16, w13)
+        w16 = w1 - w16
+        w36 = z[3]
+        w2 = w6 * w36
+        w37 = z[9]
+        w34 = w9 * w37
+        w2 = w2 + w34
+        w2 = w5 * w2
+        w36 = w11 * w36
+        w37 = w6 * w37
+        w36 = w36 + w37
+        w36 = w5 * w36
+        w2 = w2 + w36
+        w2 = w4 * w2
+        w2 = w3 * w2
+        w16 = w16 * w2
+        w36 = -w15
+        w36 = 2.0 * w36
+        w36 = w36 + w18
+        w36 = w36 / w13 if w13 else _div(w36, w13)
+        w18 = z[4]
+        w37 = w6 * w18
+        w34 = z[10]
+        w17 = w9 * w34
+        w37 = w37 + w17
+        w37 = w5 * w37
+        w18 = w11 * w18
+        w34 = w6 * w34
+        w18 = w18 + w34
+        w18 = w5 * w18
+        w37 = w37 + w18
+        w37 = w4 * w37
+        w37 = w3 * w37
+        w36 = w36 * w37
+        w16 = w16 + w36
+        w36 = 2.0 * w12
+        w36 = w36 + w25
+        w36 = w36 / w13 if w13 else _div(w36, w13)
+        w25 = z[5]
+        w18 = w6 * w25
+        w34 = z[11]
+        w9 = w9 * w34
+        w18 = w18 + w9
+        w18 = w5 * w18
+        w11 = w11 * w25
+        w6 = w6 * w34
+        w11 = w11 + w6
+        w5 = w5 * w11
+        w18 = w18 + w5
+        w4 = w4 * w18
+        w3 = w3 * w4
+        w36 = w36 * w3
+        w16 = w16 + w36
+        w0 = w0 * w16
+        w15 = 2.0 * w15
+        w15 = w15 + w21
+        w15 = w15 / w13 if w13 else _div(w15, w13)
+        w15 = w15 * w2
+        w14 = w14 / w13 if w13 else _div(w14, w13)
+        w14 = w1 - w14
+        w14 = w14 * w37
+        w15 = w15 + w14
+        w14 = -w8
+        w14 = 2.0 * w14
+        w14 = w14 + w33
+        w14 = w14 / w13 if w13 else _div(w14, w13)
+        w14 = w14 * w3
+        w15 = w15 + w14
+        w20 = w20 * w15
+        w0 = w0 + w20
+        w12 = -w12
+        w12 = 2.0 * w12
+        w12 = w12 + w24
+        w12 = w12 / w13 if w13 else _div(w12, w13)
+        w12 = w12 * w2
+        w8 = 2.0 * w8
+        w8 = w8 + w35
+        w8 = w8 / w13 if w13 else _div(w8, w13)
+        w8 = w8 * w37
+        w12 = w12 + w8
+        w10 = w10 / w13 if w13 else _div(w10, w13)
+        w1 = w1 - w10
+        w1 = w1 * w3
+        w12 = w12 + w1
+        w23 = w23 * w12
+        w0 = w0 + w23
+        w23 = g[12]
+        w0 = w0 + w23
+        r0[12] = w0
+        w19 = w19 * w16
+        w27 = w27 * w15
+        w19 = w19 + w27
+        w28 = w28 * w12
+        w19 = w19 + w28
+        w28 = g[13]
+        w19 = w19 + w28
+        r0[13] = w19
+        w26 = w26 * w16
+        w30 = w30 * w15
+        w26 = w26 + w30
+        w31 = w31 * w12
+        w26 = w26 + w31
+        w31 = g[14]
+        w26 = w26 + w31
+        r0[14] = w26
+        w29 = w29 * w16
+        w32 = w32 * w15
+        w29 = w29 + w32
+        w22 = w22 * w12
+        w29 = w29 + w22
+        w22 = g[15]
+        w29 = w29 + w22
+        r0[15] = w29
+    return [r0]
+
+
+def chart_point(z, g, h, theta):
+    """chart_point(z[18], g[16], h[1], theta[1]) -> [g_theta[16]]"""
+    if _type(z) is _NDARRAY and z.dtype is _F64 and z.shape == (18,):
+        z = z.tolist()
+    else:
+        z = _vec(z, 18, "chart_point: z")
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (16,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 16, "chart_point: g")
+    if _type(h) is _NDARRAY and h.dtype is _F64 and h.shape == (1,):
+        h = h.tolist()
+    else:
+        h = _vec(h, 1, "chart_point: h")
+    if _type(theta) is _NDARRAY and theta.dtype is _F64 and theta.shape == (1,):
+        theta = theta.tolist()
+    else:
+        theta = _vec(theta, 1, "chart_point: theta")
+    _r = _raw_chart_point(z, g, h, theta)
+    return [_fromiter(_r[0], _F64, 16)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -40013,6 +40406,8 @@ KERNELS = {
     "momentum": momentum,
     "defect": defect,
     "margin": margin,
+    "section": section,
+    "chart_point": chart_point,
 }
 
 RAW = {
@@ -40027,4 +40422,6 @@ RAW = {
     "momentum": _raw_momentum,
     "defect": _raw_defect,
     "margin": _raw_margin,
+    "section": _raw_section,
+    "chart_point": _raw_chart_point,
 }

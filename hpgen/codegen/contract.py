@@ -30,6 +30,8 @@ SIGNATURES = {
     "momentum": (("nn", "d"), ("d",)),
     "defect": (("nn",), ("1",)),
     "margin": (("nz", "1"), ("1",)),
+    "section": (("nn", "d"), ("1",)),
+    "chart_point": (("nz", "nn", "1", "1"), ("nn",)),
 }
 
 

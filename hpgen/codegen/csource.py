@@ -21,6 +21,11 @@ CG_OPTIONS = {"casadi_real": "double", "casadi_int": "long long int", "with_mem"
 _INLINE_MINMAX = {"  return fmin(x, y);\n": "  return (x < y || y != y) ? x : y;\n",
                   "  return fmax(x, y);\n": "  return (x > y || y != y) ? x : y;\n"}
 
+#: kernels whose C body is not generated separately but taken from a fused kernel's outputs:
+#: name -> (fused kernel, index of the output). jacobian is residual_jacobian's J: one copy of
+#: the (largest) Jacobian code in kernels.c halves gcc's time on big steps.
+C_FROM_FUSED = {"jacobian": ("residual_jacobian", 1)}
+
 #: op codes whose CasADi C output does not compile as C99 (no erfinv in <math.h>)
 _C_UNSUPPORTED = {casadi.OP_ERFINV: "erfinv"}
 
@@ -41,7 +46,8 @@ def casadi_c_code(step, module: str) -> str:
     opts = dict(CG_OPTIONS, prefix=f"hpgen_{module}_")
     cg = casadi.CodeGenerator(f"{module}_kernels", opts)
     for k in step.kernels:
-        cg.add(k.function)
+        if k.name not in C_FROM_FUSED:
+            cg.add(k.function)
     code = cg.dump()
     for call, inline in _INLINE_MINMAX.items():
         code = code.replace(call, inline)
@@ -67,7 +73,9 @@ def work_sizes(f) -> dict[str, int]:
 def c_kernel_context(kernel) -> dict:
     """What kernels.c.j2 needs to wrap one kernel: symbol, args and work sizes."""
     f = kernel.function
+    fused = C_FROM_FUSED.get(kernel.name)
     return {"name": kernel.name, "symbol": f.name(),
+            "fused": None if fused is None else {"name": fused[0], "output": fused[1]},
             "inputs": [_arg(f, i, False, kernel.inputs[i]) for i in range(f.n_in())],
             "outputs": [_arg(f, i, True, kernel.outputs[i]) for i in range(f.n_out())],
             "work": work_sizes(f)}

@@ -158,7 +158,7 @@ def meta(step, info: dict) -> dict:
     return {"format": META_FORMAT, "hpgen_version": __version__, "module": info["module"],
             "model": info["model_name"], "options": info["options"], "hash": info["hash"],
             "backend": info["backend"], "n": step.n, "d": step.d, "nz": step.nz,
-            "reduced": bool(step.reduced),
+            "reduced": bool(step.reduced), "section": step.section,
             "unknowns": [[str(u[0]), int(u[1]), int(u[2])] for u in step.unknowns],
             "kernels": kernels,
             "c_work": {k.name: work_sizes(k.function) for k in step.kernels}}

@@ -12,7 +12,7 @@ import casadi as ca
 
 from ..errors import ModelError
 from .action import step_equations
-from .lagrangian import lagrangian_function
+from .lagrangian import lagrangian_function, to_casadi
 from .step import KERNEL_NAMES, DiscreteStep, Kernel
 
 __all__ = ["derive", "DiscreteStep", "Kernel", "KERNEL_NAMES"]
@@ -21,6 +21,19 @@ __all__ = ["derive", "DiscreteStep", "Kernel", "KERNEL_NAMES"]
 def _flat(M):
     """Column-major flattening of an SX matrix into a dense column."""
     return ca.densify(ca.reshape(M, M.numel(), 1))
+
+
+def section_function(model, g, p):
+    """SX of the scene's Poincare section s(g, mu) at (g, p) (p the node momentum), or the
+    constant 1 (never crosses) when the model's scene has no ``section``."""
+    spec = getattr(getattr(model, "scene", None), "section", None)
+    if spec is None:
+        return ca.SX(1.0)
+    mapping = {sym: p[k] for k, sym in enumerate(spec.mu_symbols)}
+    for i, row in enumerate(spec.g_symbols):
+        for j, sym in enumerate(row):
+            mapping[sym] = g[i, j]
+    return to_casadi(spec.expr, mapping)
 
 
 def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
@@ -56,6 +69,8 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
         return Kernel(name, f, names_in, names_out)
 
     J = ca.jacobian(eqs.residual, z)
+    theta = ca.SX.sym("theta", 1)
+    chart_point = ca.mtimes(g, group.tau(tau, theta * eqs.chart_step))
     kernels = (
         kernel("residual", [("z", z), ("g", gvec), ("p", p), ("h", h)], [("F", eqs.residual)]),
         kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", h)], [("J", _flat(J))]),
@@ -71,9 +86,13 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
         kernel("momentum", [("g", gvec), ("p", p)], [("m", group.momentum_map(g, p))]),
         kernel("defect", [("g", gvec)], [("e", group.group_defect(g))]),
         kernel("margin", [("z", z), ("h", h)], [("m", eqs.margin)]),
+        kernel("section", [("g", gvec), ("p", p)], [("s", section_function(model, g, p))]),
+        kernel("chart_point", [("z", z), ("g", gvec), ("h", h), ("theta", theta)],
+               [("g_theta", _flat(chart_point))]),
     )
     assert tuple(k.name for k in kernels) == KERNEL_NAMES
     return DiscreteStep(
         model_name=model.name, group_name=group.name, n=n, d=d, nz=nz,
         tableau_name=tableau.name, tableau_order=tableau.order, tau=tau, rkmk=rkmk,
-        reduced=reduced, unknowns=eqs.blocks, kernels=kernels)
+        reduced=reduced, unknowns=eqs.blocks, kernels=kernels,
+        section=getattr(getattr(getattr(model, "scene", None), "section", None), "text", None))

@@ -33,6 +33,7 @@ class StepEquations:
     guess: object        # SX column: z as a function of the velocity estimate xi_hat
     xi_hat: object       # SX d (input of guess)
     margin: object       # SX scalar: min over the step's tau arguments of the domain margin
+    chart_step: object   # SX d: h xi_{k+1} as a function of z (g_{k+1} = g_k tau(chart_step))
 
 
 def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
@@ -269,8 +270,9 @@ def _exact_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_g0, 
 
 
 def _finish(group, tau, z, blocks, residual, g1, p1, guess, xi_hat, taus, h):
+    """taus: the step's chart arguments, the last one h xi_{k+1}."""
     margin = ca.SX(1.0)
     for x in taus:
         margin = ca.fmin(margin, group.tau_margin(tau, x))
         margin = ca.fmin(margin, group.tau_margin(tau, -x))
-    return StepEquations(z, blocks, residual, g1, p1, guess, xi_hat, margin)
+    return StepEquations(z, blocks, residual, g1, p1, guess, xi_hat, margin, taus[-1])

@@ -16,6 +16,10 @@ matrices are flattened column-major (g.ravel(order="F")); h is a 1-vector.
     defect(g)                            -> e[1]           distance of g from the group
     margin(z, h)                         -> m[1]           > 0 while every tau argument of
                                                            the step is inside tau's domain
+    section(g, p)                        -> s[1]           the scene's Poincare section
+                                                           s(g, mu = p) (1 without one)
+    chart_point(z, g, h, theta)          -> g_theta[n*n]   g tau(theta h xi_{k+1}(z)): the
+                                                           step's chart curve, theta in [0, 1]
 """
 from __future__ import annotations
 
@@ -23,7 +27,7 @@ from dataclasses import dataclass
 from typing import Any
 
 KERNEL_NAMES = ("residual", "jacobian", "residual_jacobian", "update", "guess", "legendre",
-                "hessian", "energy", "momentum", "defect", "margin")
+                "hessian", "energy", "momentum", "defect", "margin", "section", "chart_point")
 
 
 @dataclass(frozen=True)
@@ -53,6 +57,7 @@ class DiscreteStep:
     reduced: bool
     unknowns: tuple
     kernels: tuple               # tuple[Kernel, ...], in KERNEL_NAMES order
+    section: str | None = None   # the scene's Poincare section text (None: kernel section = 1)
 
     def kernel(self, name: str) -> Kernel:
         for k in self.kernels:

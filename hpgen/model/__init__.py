@@ -9,12 +9,13 @@ Every problem raises hpgen.errors.ModelError with a one-line message
 Python's ``ast`` (see hpgen.model.expr); nothing is ever evaluated as code.
 
 Modules: yamldoc (YAML -> values with lines), loader (schema), syntax (ast parse + whitelist),
-expr (ast -> sympy), scene (scene / initial state), types (the frozen IR dataclasses).
+expr (ast -> sympy: Lagrangian and scene section), scene (scene / initial state), types (the
+frozen IR dataclasses).
 """
 from __future__ import annotations
 
 from .loader import load_model, load_model_text
-from .types import RESERVED_NAMES, IntegratorChoice, Model, Scene
+from .types import RESERVED_NAMES, IntegratorChoice, Model, Scene, SectionSpec
 
-__all__ = ["load_model", "load_model_text", "Model", "Scene", "IntegratorChoice",
+__all__ = ["load_model", "load_model_text", "Model", "Scene", "SectionSpec", "IntegratorChoice",
            "RESERVED_NAMES"]

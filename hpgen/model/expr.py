@@ -1,4 +1,4 @@
-"""The Lagrangian expression: a whitelist parser from text to a sympy expression.
+"""The Lagrangian and the scene's Poincare section: a whitelist parser from text to sympy.
 
 Security: the text goes through ``ast.parse(..., mode="eval")`` only; the tree is checked against
 a whitelist and evaluated by the walker below into sympy objects. Nothing here evaluates strings.
@@ -21,6 +21,12 @@ Limits: text <= 200,000 characters, <= 50,000 syntax nodes, nesting depth <= 200
 chains of + - and of * / count as one level, so a sum of 10^4 terms is fine), <= 50,000
 elementwise operations, final expression tree <= 10^6 nodes. Every constant must be a finite
 real number within double range; the result must be a scalar that depends on xi.
+
+The section s(g, mu) (``parse_section``) is parsed the same way with ``mu`` (the node momentum,
+length d, symbols mu_k; ``mu_k`` slices for products) in place of ``xi``; ``xi``/``xi_k`` are
+refused, and the result must be a scalar that depends on mu or on an entry of g that varies on
+the group (rotation / translation blocks). Its g symbols are equal (==, same hash) to the
+Lagrangian's: same names, same ``real=True`` assumption. Errors have field "scene.section".
 """
 from __future__ import annotations
 
@@ -41,6 +47,8 @@ MAX_EXACT_BITS = 4096
 FUNCTIONS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "exp": sp.exp, "log": sp.log,
              "sqrt": sp.sqrt, "dot": None}
 _FACTOR_ALIAS = re.compile(r"(R|x)_([0-9]+)")
+SECTION_FIELD = "scene.section"
+_XI_NAME = re.compile(r"xi(_[0-9]+)?")
 _NONFINITE = (sp.S.NaN, sp.S.ComplexInfinity, sp.S.Infinity, sp.S.NegativeInfinity)
 
 
@@ -69,30 +77,41 @@ def _as_sympy(v):
 
 
 class _Evaluator:
-    def __init__(self, group, parameters: dict):
+    """Evaluates a checked tree. ``variables``: the algebra-length vectors the expression may use
+    (("xi",) for the Lagrangian, ("mu",) for the section), symbols ``<name>_k``, with ``<name>_k``
+    factor slices for products. ``forbidden``: (regex, message) for names refused with a
+    dedicated message (the section's xi)."""
+
+    def __init__(self, group, parameters: dict, variables=("xi",), forbidden=None):
         from ..groups import group_from_spec
         n, d = group.n, group.d
-        self.xi = _to_array([sp.Symbol(f"xi_{k}", real=True) for k in range(d)], (d,))
+        self.vars = {v: _to_array([sp.Symbol(f"{v}_{k}", real=True) for k in range(d)], (d,))
+                     for v in variables}
         self.g = _to_array([sp.Symbol(f"g_{i}_{j}", real=True) for i in range(n)
                             for j in range(n)], (n, n))
         self.params, self.cache, self.work = parameters, {}, 0
-        names = {"xi": self.xi, "g": self.g, "pi": sp.pi}
+        self.forbidden = forbidden
+        names = {**self.vars, "g": self.g, "pi": sp.pi}
         factors = self.layouts = group.factors
         self.product = len(factors) > 1
+        varying = set()                     # entries of g that vary on the group
         for k, lay in enumerate(factors):
             fg = group_from_spec(lay.name) if self.product else group
             blk = self.g[lay.row:lay.row + lay.n, lay.row:lay.row + lay.n]
             sfx = f"_{k}" if self.product else ""
             if self.product:
-                names["xi" + sfx] = self.xi[lay.off:lay.off + lay.d]
+                for v, arr in self.vars.items():
+                    names[v + sfx] = arr[lay.off:lay.off + lay.d]
                 names["g" + sfx] = blk
             if fg.rotation_block:
                 a, b = fg.rotation_block
                 names["R" + sfx] = blk[a:b, a:b]
+                varying.update(blk[a:b, a:b].flat)
             if fg.translation_block:
                 a, b = fg.translation_block
                 names["x" + sfx] = blk[a:b, lay.n - 1]
-        self.names = names
+                varying.update(blk[a:b, lay.n - 1].flat)
+        self.names, self.varying_g = names, varying
 
     # ---- helpers ---------------------------------------------------------------------------
     def charge(self, node, amount: int):
@@ -216,6 +235,8 @@ class _Evaluator:
         nm = node.id
         if nm in self.names:
             return self.names[nm]
+        if self.forbidden and self.forbidden[0].fullmatch(nm):
+            raise fail(node, self.forbidden[1])
         if nm in self.params:
             if nm not in self.cache:
                 self.cache[nm] = self.checked(node, _as_sympy(self.params[nm]))
@@ -277,10 +298,11 @@ class _Evaluator:
         return self.checked(node, res.reshape(shape) if shape else res[0, 0])
 
 
-def _final_checks(expr, xi_syms) -> None:
-    """Tree size, non-finite/complex constants, dependence on xi; iterative over the DAG."""
+def _final_checks(expr, required, field="lagrangian", what="the Lagrangian") -> bool:
+    """Tree size, non-finite/complex constants; iterative over the DAG. True when ``expr``
+    contains one of the symbols ``required`` (the caller reports the missing dependence)."""
     size, const, seen, stack = {}, {}, set(), [(expr, False)]
-    xiset = set(xi_syms)
+    xiset = set(required)
     depends = False
     while stack:
         e, done = stack.pop()
@@ -289,13 +311,13 @@ def _final_checks(expr, xi_syms) -> None:
             const[id(e)] = not e.is_Symbol and all(const[id(a)] for a in e.args)
             if size[id(e)] > MAX_TREE:
                 raise ModelError(f"expression too large: more than {MAX_TREE} nodes after "
-                                 f"evaluation (limit {MAX_TREE})", field="lagrangian")
+                                 f"evaluation (limit {MAX_TREE})", field=field)
             if e in _NONFINITE or e is sp.S.NaN:
-                raise ModelError(f"the Lagrangian is not finite: it contains {e} (a division by "
-                                 "zero or log(0)?)", field="lagrangian")
+                raise ModelError(f"{what} is not finite: it contains {e} (a division by "
+                                 "zero or log(0)?)", field=field)
             if e is sp.I:
-                raise ModelError("the Lagrangian is complex (contains the imaginary unit)",
-                                 field="lagrangian")
+                raise ModelError(f"{what} is complex (contains the imaginary unit)",
+                                 field=field)
             if const[id(e)] and (e.args or e.is_Number):
                 try:
                     val = complex(e if e.is_Number else e.evalf(30))
@@ -303,7 +325,7 @@ def _final_checks(expr, xi_syms) -> None:
                     val = complex(math.nan)
                 if not (math.isfinite(val.real) and abs(val.imag) <= 1e-12 * max(1, abs(val.real))):
                     raise ModelError(f"the constant {str(e)[:60]} is not a finite real number "
-                                     "within double range", field="lagrangian")
+                                     "within double range", field=field)
             if e in xiset:
                 depends = True
             continue
@@ -312,9 +334,7 @@ def _final_checks(expr, xi_syms) -> None:
         seen.add(id(e))
         stack.append((e, True))
         stack.extend((a, False) for a in e.args if id(a) not in seen)
-    if not depends:
-        raise ModelError(f"the Lagrangian does not depend on xi (it is {str(expr)[:60]}); it "
-                         "must contain the velocity xi, e.g. 0.5*xi[0]**2", field="lagrangian")
+    return depends
 
 
 def parse_lagrangian(text: str, group, parameters: dict):
@@ -333,10 +353,66 @@ def parse_lagrangian(text: str, group, parameters: dict):
     if isinstance(result, np.ndarray):
         raise ModelError(f"the Lagrangian must be a scalar, got shape {result.shape} "
                          f"(a {_shape_text(result.shape)})", field="lagrangian")
-    xi_syms = tuple(ev.xi.tolist())
+    xi_syms = tuple(ev.vars["xi"].tolist())
     g_syms = tuple(tuple(row) for row in ev.g.tolist())
     try:
-        _final_checks(result, xi_syms)
+        depends = _final_checks(result, xi_syms)
     except RecursionError:
         raise ModelError("expression too large: nested too deeply", field="lagrangian") from None
+    if not depends:
+        raise ModelError(f"the Lagrangian does not depend on xi (it is {str(result)[:60]}); it "
+                         "must contain the velocity xi, e.g. 0.5*xi[0]**2", field="lagrangian")
     return result, xi_syms, g_syms
+
+
+def _as_section_error(e: ModelError) -> ModelError:
+    """The shared parser's errors carry field "lagrangian"; relabel them for the section."""
+    if e.field not in (None, "lagrangian"):
+        return e
+    out = ModelError(e.message, file=e.file, field=SECTION_FIELD, line=e.line)
+    out.expr_line = getattr(e, "expr_line", None)
+    return out
+
+
+def parse_section(text: str, group, parameters: dict):
+    """(expr, mu_symbols, g_symbols) for the scene's Poincare section s(g, mu) on ``group``.
+
+    Same grammar, functions and limits as the Lagrangian (parse_lagrangian) with ``mu`` (length
+    d, symbols mu_k real) in place of ``xi``. mu_symbols is a d-tuple; g_symbols an n-tuple of
+    n-tuples equal to the Lagrangian's (Model.g_symbols). The result must be a scalar depending
+    on mu or on an entry of g that varies on the group. Raises ModelError(field="scene.section")
+    without file/line (the scene parser adds them; ``expr_line`` as for the Lagrangian).
+    """
+    mu_like = sorted(p for p in parameters if p == "mu" or re.fullmatch(r"mu_[0-9]+", p))
+    if mu_like:
+        raise ModelError(f"the parameter {mu_like[0]!r} has the name of the momentum mu that "
+                         "the section uses; rename the parameter", field=SECTION_FIELD)
+    try:
+        tree = parse_checked(text)
+        forbidden = (_XI_NAME, "the section may use mu (the node momentum) and g, not xi; "
+                               "write it in terms of mu, e.g. mu[0]")
+        ev = _Evaluator(group, parameters, variables=("mu",), forbidden=forbidden)
+        try:
+            result = ev.walk(tree.body)
+        except RecursionError:
+            raise ModelError(f"expression too large: nested too deeply (limit {MAX_DEPTH})",
+                             field=SECTION_FIELD) from None
+        if isinstance(result, np.ndarray):
+            raise ModelError(f"the section must be a scalar, got shape {result.shape} "
+                             f"(a {_shape_text(result.shape)})", field=SECTION_FIELD)
+        mu_syms = tuple(ev.vars["mu"].tolist())
+        g_syms = tuple(tuple(row) for row in ev.g.tolist())
+        try:
+            depends = _final_checks(result, set(mu_syms) | ev.varying_g, SECTION_FIELD,
+                                    "the section")
+        except RecursionError:
+            raise ModelError("expression too large: nested too deeply",
+                             field=SECTION_FIELD) from None
+    except ModelError as e:
+        raise _as_section_error(e) from None
+    if not depends:
+        raise ModelError(f"the section is constant on the group (it is {str(result)[:60]}; no "
+                         "mu and no varying entry of g) and would never cross zero; expected an "
+                         "expression in mu and/or g, e.g. mu[0] or R[2, 2] - 0.5",
+                         field=SECTION_FIELD)
+    return result, mu_syms, g_syms

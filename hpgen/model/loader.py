@@ -184,7 +184,7 @@ def build_model(doc: Doc, text: str) -> Model:
     scene = None
     if data.get("scene") is not None:
         from .scene import parse_scene
-        scene = parse_scene(doc, data["scene"], group)
+        scene = parse_scene(doc, data["scene"], group, exact)
     return Model(name=name, path=doc.file, source=text, group_spec=data["group"], group=group,
                  parameters=stored, lagrangian_text=data["lagrangian"], lagrangian=lag,
                  xi_symbols=xi_syms, g_symbols=g_syms, integrator=integrator, scene=scene)

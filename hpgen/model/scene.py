@@ -11,6 +11,8 @@ Conventions:
   block of R<k> and the off-diagonal blocks of a product are exact.
 - Exactly one of ``initial.xi`` / ``initial.mu`` (d finite numbers).
 - ``record``: distinct names from RECORDABLE (default g, mu); ``every``: integer >= 1.
+- ``section``: optional Poincare section s(g, mu), an expression text parsed like the Lagrangian
+  with ``mu`` instead of ``xi`` (hpgen.model.expr.parse_section) into a SectionSpec.
 """
 from __future__ import annotations
 
@@ -18,9 +20,10 @@ import math
 
 import numpy as np
 
-from .types import Scene
+from ..errors import ModelError
+from .types import Scene, SectionSpec
 
-SCENE_KEYS = ("h", "steps", "duration", "initial", "record", "every")
+SCENE_KEYS = ("h", "steps", "duration", "initial", "record", "every", "section")
 INITIAL_KEYS = ("g", "xi", "mu")
 RECORDABLE = ("g", "mu", "xi", "energy", "momentum", "defect")
 ON_GROUP_TOL = 1e-10
@@ -195,8 +198,28 @@ def _steps(doc, raw, h):
     return int(steps)
 
 
-def parse_scene(doc, raw, group) -> Scene:
-    """Validate the scene mapping ``raw`` for ``group``; doc is the loader's located document."""
+def _section(doc, text, group, parameters) -> SectionSpec:
+    from .expr import SECTION_FIELD, parse_section
+    path = ("scene", "section")
+    if type(text) in (int, float):
+        raise doc.error(path, f"the section is the constant {text!r} and would never cross zero; "
+                              "expected an expression in mu and/or g, e.g. mu[0]")
+    if not isinstance(text, str) or not text.strip():
+        raise doc.error(path, "expected an expression s(g, mu) in mu and/or g (and parameters), "
+                              f"e.g. mu[0] or R[2, 2] - 0.5, got {_describe(doc, text)}")
+    try:
+        expr, mu_syms, g_syms = parse_section(text, group, parameters)
+    except ModelError as e:
+        line = doc.line(path)
+        if line and getattr(doc, "section_style", None) == "|" and getattr(e, "expr_line", None):
+            line += e.expr_line
+        raise e.located(doc.file, SECTION_FIELD, line) from None
+    return SectionSpec(text=text, expr=expr, mu_symbols=mu_syms, g_symbols=g_syms)
+
+
+def parse_scene(doc, raw, group, parameters=None) -> Scene:
+    """Validate the scene mapping ``raw`` for ``group``; doc is the loader's located document.
+    ``parameters``: the exact parameter values ({name: int | float | lists}) for the section."""
     raw = doc.mapping(("scene",), raw, SCENE_KEYS)
     if raw.get("h") is None:
         raise doc.error(("scene", "h"), "missing h: expected a step size h > 0")
@@ -230,6 +253,9 @@ def parse_scene(doc, raw, group) -> Scene:
     every = 1
     if raw.get("every") is not None:
         every = _int(doc, ("scene", "every"), raw["every"], 1, "an integer >= 1")
+    section = None
+    if raw.get("section") is not None:
+        section = _section(doc, raw["section"], group, parameters or {})
     return Scene(h=h, steps=steps, g0=tuple(tuple(float(x) for x in row) for row in G),
                  xi0=vec if has_xi else None, mu0=vec if has_mu else None,
-                 record=record, every=every)
+                 record=record, every=every, section=section)

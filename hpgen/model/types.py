@@ -21,9 +21,27 @@ class IntegratorChoice:
 
 
 @dataclass(frozen=True)
+class SectionSpec:
+    """The scene's Poincare section s(g, mu): the runtime records its upward zero crossings
+    (s < 0 at one node, s >= 0 at the next).
+
+    text: the expression as written. expr: sympy scalar in ``mu_symbols`` (mu_0 .. mu_{d-1},
+    real; the node momentum) and ``g_symbols`` (g_i_j, real, an n x n tuple of tuples),
+    parameters substituted as for the Lagrangian; never xi. The g symbols are equal (==, same
+    hash) to Model.g_symbols (same names and assumptions). expr depends on mu or on an entry of
+    g that varies on the group. Built by hpgen.model.expr.parse_section (whitelist parser).
+    """
+    text: str
+    expr: Any                      # sympy.Expr
+    mu_symbols: tuple
+    g_symbols: tuple
+
+
+@dataclass(frozen=True)
 class Scene:
     """What ``hpgen run`` simulates. g0 is an n x n tuple-of-tuples matrix on the group;
-    exactly one of xi0 / mu0 is set (tuples of length d)."""
+    exactly one of xi0 / mu0 is set (tuples of length d); section: the optional Poincare
+    section (SectionSpec) or None."""
     h: float
     steps: int
     g0: tuple
@@ -31,6 +49,7 @@ class Scene:
     mu0: tuple | None = None
     record: tuple[str, ...] = ("g", "mu")
     every: int = 1
+    section: SectionSpec | None = None
 
 
 @dataclass(frozen=True)

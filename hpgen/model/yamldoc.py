@@ -237,10 +237,14 @@ def compose_document(text: str, file: str) -> Doc:
 
     doc = Doc(file, None, lines)
     doc.data = build(root, (), frozenset())
-    doc.lagrangian_style = None
+    doc.lagrangian_style = doc.section_style = None
     for knode, vnode in root.value:
         if knode.value == "lagrangian" and isinstance(vnode, yaml.ScalarNode):
             doc.lagrangian_style = vnode.style
+        if knode.value == "scene" and isinstance(vnode, yaml.MappingNode):
+            for sk, sv in vnode.value:
+                if sk.value == "section" and isinstance(sv, yaml.ScalarNode):
+                    doc.section_style = sv.style
     return doc
 
 

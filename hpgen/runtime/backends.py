@@ -113,6 +113,21 @@ class PythonBackend(_Backend):
         return (np.array(run.g, dtype=np.float64), np.array(run.p, dtype=np.float64),
                 np.array(run.z, dtype=np.float64), run.k)
 
+    def advance_sections(self, run, h, steps, cap, opts):
+        """(steps done, k_rec (K,), t_rec (K,), g_rec (K, nn), p_rec (K, d), status)."""
+        done, recs, st = newton.advance_sections(self._newton, self._raw["section"],
+                                                 self._raw["chart_point"], run, h, steps, cap,
+                                                 opts)
+        return _section_arrays(done, recs, st, self.n * self.n, self.d)
+
+
+def _section_arrays(done, recs, st, nn, d):
+    K = len(recs)
+    return (done, np.array([r[0] for r in recs], dtype=np.int64),
+            np.array([r[1] for r in recs], dtype=np.float64),
+            np.array([r[2] for r in recs], dtype=np.float64).reshape(K, nn),
+            np.array([r[3] for r in recs], dtype=np.float64).reshape(K, d), st)
+
 
 class _Status(ctypes.Structure):
     _fields_ = [("code", ctypes.c_longlong), ("step", ctypes.c_longlong),
@@ -166,6 +181,7 @@ class CBackend(_Backend):
                 ("hpgen_run_init", [P, P, P, P], None),
                 ("hpgen_run_get", [P, P, P, P], LL),
                 ("hpgen_advance", [P, D, LL, LL, P, P, P, P], LL),
+                ("hpgen_advance_sections", [P, D, LL, P, LL, P, P, P, P, P, P], LL),
                 ("hpgen_advance_batch", [P, LL, D, LL, LL, P, LL, P, P, P], LL)):
             fn = getattr(lib, name)
             fn.argtypes, fn.restype = args, res
@@ -221,6 +237,21 @@ class CBackend(_Backend):
             raise ValueError("hpgen_advance rejected its arguments")
         K = self.records_in(self.state(run)[3] - done, done, every)
         return int(done), g_rec[:K], p_rec[:K], st.as_dict()
+
+    def advance_sections(self, run, h, steps, cap, opts):
+        """(steps done, k_rec (K,), t_rec (K,), g_rec (K, nn), p_rec (K, d), status): the
+        section crossings of this call, at most cap."""
+        nn, d = self.n * self.n, self.d
+        k_rec, t_rec = np.zeros(cap, dtype=np.int64), np.zeros(cap)
+        g_rec, p_rec = np.zeros((cap, nn)), np.zeros((cap, d))
+        n_rec, st, o = ctypes.c_longlong(0), _Status(), _Options.of(opts)
+        done = self._lib.hpgen_advance_sections(
+            run, float(h), steps, ctypes.byref(o), cap, t_rec.ctypes.data, g_rec.ctypes.data,
+            p_rec.ctypes.data, k_rec.ctypes.data, ctypes.byref(n_rec), ctypes.byref(st))
+        if st.code < 0:
+            raise ValueError("hpgen_advance_sections rejected its arguments")
+        K = n_rec.value
+        return int(done), k_rec[:K], t_rec[:K], g_rec[:K], p_rec[:K], st.as_dict()
 
     def simulate_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads):
         """B independent runs; each thread advances a contiguous slice of them with one C

@@ -20,7 +20,7 @@ import numpy as np
 
 from ..errors import ConvergenceError, DomainError, ModelError
 from . import newton
-from .trajectory import Trajectory
+from .trajectory import SectionCrossings, Trajectory
 
 DEFECT_MAX = 1e-10
 COND_MAX = 1e12
@@ -242,6 +242,51 @@ class Integrator:
             yield traj
             k += done
             first = False
+
+    def sections(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
+                 tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
+                 predictor=True, chunk=100_000) -> SectionCrossings:
+        """Run up to ``steps`` steps and return the upward crossings of the model's
+        ``scene.section`` s(g, mu) = 0 (compiled into the step loop: nothing else is kept), at
+        most ``max_crossings`` (then the run stops at that crossing's step). The states are
+        bitwise those of ``simulate``. A failed step raises ConvergenceError / DomainError
+        with ``.partial`` the crossings found before it."""
+        if not self.meta.get("section"):
+            raise ModelError("the model's scene has no section; add `section: <expression in "
+                             "mu and g>` to the scene and recompile", field="scene.section")
+        h = _positive(h, "h")
+        steps = _int(steps, "steps", 0)
+        cap_total = None if max_crossings is None else _int(max_crossings, "max_crossings", 1)
+        chunk = _int(chunk, "chunk", 1)
+        opts = self._options(tol, maxit, simplified, predictor)
+        gf, mu0, xi0 = self._initial(g0, xi0, mu0)
+        z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
+        run = self._b.start(gf, mu0, z0)
+        parts, k, iters, err = [], 0, 0, None
+        found = 0
+        while k < steps:
+            cap = chunk if cap_total is None else min(chunk, cap_total - found)
+            if cap < 1:
+                break
+            done, ks, ts, gs, ps, st = self._b.advance_sections(run, h, steps - k, cap, opts)
+            parts.append((ks, ts, gs, ps))
+            k, found, iters = k + done, found + len(ts), iters + int(st["total_iterations"])
+            if st["code"] != newton.OK:
+                err = _error(st["code"], st["step"], st["step"] * h, st["residual"],
+                             st["iterations"])
+                break
+        n = self.n
+        cat = lambda i, shape: (np.concatenate([q[i] for q in parts]) if parts  # noqa: E731
+                                else np.zeros(shape))
+        gs = cat(2, (0, n * n)).reshape(-1, n, n).transpose(0, 2, 1)
+        out = SectionCrossings(t=cat(1, (0,)), g=np.ascontiguousarray(gs),
+                               mu=cat(3, (0, self.d)).reshape(-1, self.d),
+                               step=cat(0, (0,)).astype(np.int64), h=h, steps=k,
+                               partial=err is not None, error=err, newton_iterations=iters)
+        if err is not None:
+            err.partial = out
+            raise err
+        return out
 
     def simulate_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None,
                        tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,

@@ -498,11 +498,42 @@ class Run:
         self.have_prev = 0
         self.memory = NewtonMemory()
         self.k = 0
+        self.s = None            # section(g_k, p_k) once evaluated (advance_sections)
 
 
 def new_status() -> dict:
     return {"code": OK, "step": 0, "iterations": 0, "total_iterations": 0, "residual": 0.0,
             "jacobians": 0}
+
+
+def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOptions, st):
+    """One step of ``run`` like ``hpgen_run_step`` in C: predictor, step, run moved on success;
+    st's counters updated (iterations, residual, total_iterations, jacobians; code and step on
+    failure). Returns the status code."""
+    # start: the polynomial through the last solutions, extrapolated one step (quadratic
+    # 3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before)
+    if opts.predictor and run.have_prev >= 2:
+        zs = [3.0 * (a - b) + c for a, b, c in zip(run.z, run.zprev, run.zprev2)]
+    elif opts.predictor and run.have_prev == 1:
+        zs = [2.0 * a - b for a, b in zip(run.z, run.zprev)]
+    else:
+        zs = run.z
+    first = run.k == 0
+    # the first step starts from the crude guess kernel: full Newton
+    code, g1, p1, zs, it, r, jacs = step_lists(kern, run.g, run.p, hv, zs,
+                                               full if first else opts, run.memory, first)
+    st["iterations"], st["residual"] = it, r
+    st["total_iterations"] += it
+    st["jacobians"] += jacs
+    if code != OK:
+        st.update(code=code, step=run.k)
+        return code
+    run.zprev2, run.zprev, run.z = run.zprev, run.z, zs
+    if run.have_prev < 2:
+        run.have_prev += 1
+    run.g, run.p = g1, p1
+    run.k += 1
+    return OK
 
 
 def advance(kern: Kernels, run: Run, h, steps, every, opts: NewtonOptions):
@@ -514,34 +545,41 @@ def advance(kern: Kernels, run: Run, h, steps, every, opts: NewtonOptions):
     hv = [float(h)]
     st, recs = new_status(), []
     full = NewtonOptions(opts.tol, opts.maxit, False, opts.predictor)
-    predictor = opts.predictor
-    total = jacobians = 0
     for n in range(steps):
-        # start: the polynomial through the last solutions, extrapolated one step (quadratic
-        # 3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before)
-        if predictor and run.have_prev >= 2:
-            zs = [3.0 * (a - b) + c for a, b, c in zip(run.z, run.zprev, run.zprev2)]
-        elif predictor and run.have_prev == 1:
-            zs = [2.0 * a - b for a, b in zip(run.z, run.zprev)]
-        else:
-            zs = run.z
-        first = run.k == 0
-        # the first step starts from the crude guess kernel: full Newton
-        code, g1, p1, zs, it, r, jacs = step_lists(kern, run.g, run.p, hv, zs,
-                                                   full if first else opts, run.memory, first)
-        total += it
-        jacobians += jacs
-        if code != OK:
-            st.update(code=code, step=run.k, iterations=it, residual=r,
-                      total_iterations=total, jacobians=jacobians)
+        if _run_step(kern, run, hv, opts, full, st) != OK:
             return n, recs, st
-        run.zprev2, run.zprev, run.z = run.zprev, run.z, zs
-        if run.have_prev < 2:
-            run.have_prev += 1
-        run.g, run.p = g1, p1
-        run.k += 1
         if run.k % every == 0:
-            recs.append((g1, p1))
-        st["iterations"], st["residual"] = it, r
-    st.update(step=run.k, total_iterations=total, jacobians=jacobians)
+            recs.append((run.g, run.p))
+    st["step"] = run.k
     return steps, recs, st
+
+
+def advance_sections(kern: Kernels, section, chart_point, run: Run, h, steps, cap,
+                     opts: NewtonOptions):
+    """Advance ``run`` by up to ``steps`` steps recording the upward crossings of
+    section(g, p) = 0, like ``hpgen_advance_sections`` in C (same formulas, same order of
+    operations). section(g, p) -> [[s]], chart_point(z, g, hv, [theta]) -> [g_theta] (raw
+    kernels). Returns (steps done, records [(k, t, g flat, p)], status dict)."""
+    hv = [float(h)]
+    st, recs = new_status(), []
+    full = NewtonOptions(opts.tol, opts.maxit, False, opts.predictor)
+    if run.s is None:
+        run.s = section(run.g, run.p)[0][0]
+    n = 0
+    while n < steps and len(recs) < cap:
+        s0, k, g0, p0 = run.s, run.k, run.g, run.p
+        if _run_step(kern, run, hv, opts, full, st) != OK:
+            return n, recs, st
+        n += 1
+        s1 = section(run.g, run.p)[0][0]
+        if not _isfinite(s1):
+            st.update(code=NONFINITE, step=run.k)
+            return n, recs, st
+        run.s = s1
+        if s0 < 0.0 and s1 >= 0.0:
+            theta = s0 / (s0 - s1)
+            p_c = [(1.0 - theta) * a + theta * b for a, b in zip(p0, run.p)]
+            g_c = chart_point(run.z, g0, hv, [theta])[0]
+            recs.append((k, (float(k) + theta) * float(h), g_c, p_c))
+    st["step"] = run.k
+    return n, recs, st

@@ -79,24 +79,66 @@ class Trajectory:
         every, partial, newton_iterations; error (message or ""); module and hash of the
         generating module when known. Returns the path written.
         """
-        path = Path(path)
-        if path.suffix != ".npz":
-            path = path.with_name(path.name + ".npz")
-        meta = getattr(self.integrator, "meta", None) or {}
+        path = npz_path(path)
         data = dict(arrays) if arrays is not None else {"t": self.t, "g": self.g, "mu": self.mu}
-        data.update({"h": np.float64(self.h),
-                "every": np.int64(self.every), "partial": np.bool_(self.partial),
-                "newton_iterations": np.int64(self.newton_iterations),
-                "error": np.str_("" if self.error is None else str(self.error)),
-                "module": np.str_(meta.get("module", "")),
-                "hash": np.str_(meta.get("hash", ""))})
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp",
-                                   dir=path.parent if str(path.parent) else ".")
-        try:
-            with os.fdopen(fd, "wb") as fh:
-                np.savez(fh, **data)
-            os.replace(tmp, path)
-        finally:
-            if os.path.exists(tmp):
-                os.unlink(tmp)
+        data.update(run_metadata(self.integrator, self.h, self.every, self.partial,
+                                 self.newton_iterations, self.error))
+        write_npz(path, data)
         return path
+
+
+def npz_path(path) -> Path:
+    """``path`` with ".npz" appended unless it already ends so."""
+    path = Path(path)
+    return path if path.suffix == ".npz" else path.with_name(path.name + ".npz")
+
+
+def run_metadata(integrator, h, every, partial, newton_iterations, error) -> dict:
+    """The scalars a saved run carries next to its arrays."""
+    meta = getattr(integrator, "meta", None) or {}
+    return {"h": np.float64(h), "every": np.int64(every), "partial": np.bool_(partial),
+            "newton_iterations": np.int64(newton_iterations),
+            "error": np.str_("" if error is None else str(error)),
+            "module": np.str_(meta.get("module", "")), "hash": np.str_(meta.get("hash", ""))}
+
+
+def write_npz(path: Path, data: dict) -> None:
+    """np.savez to a temp file in path's directory, then os.replace (atomic). Arrays may be
+    memory maps: np.savez streams them in buffers."""
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp",
+                               dir=path.parent if str(path.parent) else ".")
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            np.savez(fh, **data)
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+
+
+@dataclass(frozen=True, eq=False)
+class SectionCrossings:
+    """Upward crossings of the scene's Poincare section s(g, mu) = 0 (Integrator.sections).
+
+    Crossing j lies in step ``step[j]`` -> step[j] + 1 at the fraction theta of the step:
+    ``t`` (K,) = (step + theta) h; ``mu`` (K, d) the node momenta interpolated linearly in
+    the step (an O(h^2) estimate of the momentum on the section); ``g`` (K, n, n) the point
+    g_k tau(theta h xi_{k+1}) of the step's own chart curve (on the group). ``steps`` is the
+    number of steps run; on a failure partial is True and error is set.
+    """
+    t: np.ndarray
+    g: np.ndarray
+    mu: np.ndarray
+    step: np.ndarray
+    h: float
+    steps: int
+    partial: bool = False
+    error: Any = None
+    newton_iterations: int = 0
+
+    def __post_init__(self):
+        for a in (self.t, self.g, self.mu, self.step):
+            a.flags.writeable = False
+
+    def __len__(self) -> int:
+        return len(self.t)

@@ -37,8 +37,8 @@ def cay(x):
 
 
 def toy_step(margin=None, name="free_rigid_body", inertia=INERTIA) -> DiscreteStep:
-    z, g, p, h, xi = (ca.SX.sym(s, k) for s, k in (("z", 3), ("g", 9), ("p", 3), ("h", 1),
-                                                    ("xi", 3)))
+    z, g, p, h, xi, th = (ca.SX.sym(s, k) for s, k in (("z", 3), ("g", 9), ("p", 3), ("h", 1),
+                                                        ("xi", 3), ("theta", 1)))
     inertia = ca.SX(list(inertia))
     G = ca.reshape(g, 3, 3)
     Iz = inertia * z
@@ -61,6 +61,9 @@ def toy_step(margin=None, name="free_rigid_body", inertia=INERTIA) -> DiscreteSt
                    ("e",)),
         "margin": ((z, h), ("z", "h"), [ca.SX(1.0) if margin is None else margin(z, h)],
                    ("m",)),
+        "section": ((g, p), ("g", "p"), [p[2]], ("s",)),
+        "chart_point": ((z, g, h, th), ("z", "g", "h", "theta"),
+                        [ca.vec(ca.mtimes(G, cay(th * h * z)))], ("g_theta",)),
     }
     kernels = tuple(Kernel(k, ca.Function(k, list(a), outs, list(an), list(on)), an, on)
                     for k, (a, an, outs, on) in defs.items())
