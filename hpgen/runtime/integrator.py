@@ -251,15 +251,68 @@ class Integrator:
         most ``max_crossings`` (then the run stops at that crossing's step). The states are
         bitwise those of ``simulate``. A failed step raises ConvergenceError / DomainError
         with ``.partial`` the crossings found before it."""
-        if not self.meta.get("section"):
-            raise ModelError("the model's scene has no section; add `section: <expression in "
-                             "mu and g>` to the scene and recompile", field="scene.section")
+        self._need_section()
         h = _positive(h, "h")
         steps = _int(steps, "steps", 0)
         cap_total = None if max_crossings is None else _int(max_crossings, "max_crossings", 1)
         chunk = _int(chunk, "chunk", 1)
         opts = self._options(tol, maxit, simplified, predictor)
         gf, mu0, xi0 = self._initial(g0, xi0, mu0)
+        out = self._sections_run(gf, mu0, xi0, h, steps, cap_total, chunk, opts)
+        if out.error is not None:
+            raise out.error
+        return out
+
+    def sections_batch(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
+                       threads=None, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT,
+                       simplified=None, predictor=True, chunk=100_000) -> list:
+        """``sections`` for B initial states (g0 (n, n) shared or (B, n, n); xi0 or mu0
+        (B, d)), the runs spread over ``threads`` threads (default: the CPU count); each
+        result is bitwise that of ``sections`` on its own. A failed run's SectionCrossings
+        is partial with ``.error`` set (nothing is raised)."""
+        from concurrent.futures import ThreadPoolExecutor
+        self._need_section()
+        h = _positive(h, "h")
+        steps = _int(steps, "steps", 0)
+        cap_total = None if max_crossings is None else _int(max_crossings, "max_crossings", 1)
+        chunk = _int(chunk, "chunk", 1)
+        opts = self._options(tol, maxit, simplified, predictor)
+        starts = self._batch_starts(g0, xi0, mu0)
+        threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
+
+        def one(start):
+            gf, m0, x0 = start
+            return self._sections_run(gf, m0, x0, h, steps, cap_total, chunk, opts)
+
+        if threads == 1 or self.backend != "c":
+            return [one(st) for st in starts]
+        with ThreadPoolExecutor(min(threads, len(starts))) as pool:
+            return list(pool.map(one, starts))
+
+    def _batch_starts(self, g0, xi0, mu0) -> list:
+        """[(g0 flat, mu0, xi0)] for a batch: g0 (n, n) shared or (B, n, n); xi0 or mu0
+        (B, d), exactly one; each start checked as in simulate."""
+        init = xi0 if xi0 is not None else mu0
+        try:
+            B = len(init)
+        except TypeError:
+            raise ModelError("expected a (B, d) array of initial states",
+                             field="xi0" if xi0 is not None else "mu0") from None
+        G0 = np.asarray(g0, dtype=np.float64)
+        G0 = np.broadcast_to(G0, (B, self.n, self.n)) if G0.ndim == 2 else G0
+        if G0.shape != (B, self.n, self.n):
+            raise ModelError(f"expected g0 of shape ({self.n}, {self.n}) or ({B}, {self.n}, "
+                             f"{self.n}), got {G0.shape}", field="g0")
+        return [self._initial(G0[b], None if xi0 is None else xi0[b],
+                              None if mu0 is None else mu0[b]) for b in range(B)]
+
+    def _need_section(self):
+        if not self.meta.get("section"):
+            raise ModelError("the model's scene has no section; add `section: <expression in "
+                             "mu and g>` to the scene and recompile", field="scene.section")
+
+    def _sections_run(self, gf, mu0, xi0, h, steps, cap_total, chunk, opts):
+        """One run of sections from a checked start; the error (if any) is set, not raised."""
         z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
         run = self._b.start(gf, mu0, z0)
         parts, k, iters, err = [], 0, 0, None
@@ -285,7 +338,6 @@ class Integrator:
                                partial=err is not None, error=err, newton_iterations=iters)
         if err is not None:
             err.partial = out
-            raise err
         return out
 
     def simulate_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None,
@@ -300,19 +352,8 @@ class Integrator:
         h = _positive(h, "h")
         steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
         opts = self._options(tol, maxit, simplified, predictor)
-        init = xi0 if xi0 is not None else mu0
-        try:
-            B = len(init)
-        except TypeError:
-            raise ModelError("expected a (B, d) array of initial states",
-                             field="xi0" if xi0 is not None else "mu0") from None
-        G0 = np.asarray(g0, dtype=np.float64)
-        G0 = np.broadcast_to(G0, (B, self.n, self.n)) if G0.ndim == 2 else G0
-        if G0.shape != (B, self.n, self.n):
-            raise ModelError(f"expected g0 of shape ({self.n}, {self.n}) or ({B}, {self.n}, "
-                             f"{self.n}), got {G0.shape}", field="g0")
-        starts = [self._initial(G0[b], None if xi0 is None else xi0[b],
-                                None if mu0 is None else mu0[b]) for b in range(B)]
+        starts = self._batch_starts(g0, xi0, mu0)
+        B = len(starts)
         hv = np.array([h])
         z0s = [self._b.call("guess", x, gf, m, hv)[0] for gf, m, x in starts]
         threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)

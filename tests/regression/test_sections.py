@@ -125,3 +125,17 @@ def test_cli_run_saves_the_crossings(model_file, compile_model, tmp_path, cache_
     for f in ("t", "g", "mu", "step"):
         np.testing.assert_array_equal(data[f], getattr(ref, f))
     assert not data["partial"]
+
+
+def test_batch_is_bitwise_the_single_runs(compile_model):
+    integ = compile_model(FREE_BODY, **OPTS["free"])
+    rng = np.random.default_rng(7)
+    mus = rng.normal(size=(6, 3))
+    mus[3] = [0.0, 0.0, 1e3]        # spins far beyond the Cayley chart at h = 0.1: fails
+    out = integ.sections_batch(np.eye(3), 0.1, 400, mu0=mus, threads=2)
+    assert [c.partial for c in out] == [False, False, False, True, False, False]
+    assert out[3].error is not None and len(out[3]) == 0
+    for b in (0, 1, 2, 4, 5):
+        one = integ.sections(g0=np.eye(3), mu0=mus[b], h=0.1, steps=400)
+        for f in ("t", "g", "mu", "step"):
+            np.testing.assert_array_equal(getattr(out[b], f), getattr(one, f))
