@@ -3,7 +3,7 @@
  * model: double_body_chain
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: db5fdd466f0698ecbf022c2a11b9ff23272534df86a7ea51e0ce76e5046a5ecd
+ * content hash: 53a9d2192f36ba4e78a19bf8e861b174c0a7768542fc2973e79c29dd11cefab2
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -46,6 +46,7 @@
 #define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_f10 CASADI_PREFIX(f10)
 #define casadi_f11 CASADI_PREFIX(f11)
+#define casadi_f12 CASADI_PREFIX(f12)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -3338,6 +3339,537 @@ CASADI_SYMBOL_EXPORT int chart_point_work_bytes(casadi_int *sz_arg, casadi_int* 
   return 0;
 }
 
+/* observe:(g[36],p[6])->(xi[6],E,m[6],e) */
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29;
+  a00=arg[1]? arg[1][0] : 0;
+  a01=9.0000000000000002e-01;
+  a01=(a00/a01);
+  if (res[0]!=0) res[0][0]=a01;
+  a02=arg[1]? arg[1][1] : 0;
+  if (res[0]!=0) res[0][1]=a02;
+  a03=arg[1]? arg[1][2] : 0;
+  a04=2.0000000000000001e-01;
+  a04=(a03/a04);
+  if (res[0]!=0) res[0][2]=a04;
+  a05=arg[1]? arg[1][3] : 0;
+  a06=5.9999999999999998e-01;
+  a06=(a05/a06);
+  if (res[0]!=0) res[0][3]=a06;
+  a07=arg[1]? arg[1][4] : 0;
+  a08=(2.*a07);
+  if (res[0]!=0) res[0][4]=a08;
+  a09=arg[1]? arg[1][5] : 0;
+  a10=1.4999999999999999e-01;
+  a10=(a09/a10);
+  if (res[0]!=0) res[0][5]=a10;
+  a11=(a00*a01);
+  a12=casadi_sq(a02);
+  a11=(a11+a12);
+  a13=(a03*a04);
+  a11=(a11+a13);
+  a13=(a05*a06);
+  a11=(a11+a13);
+  a13=(a07*a08);
+  a11=(a11+a13);
+  a13=(a09*a10);
+  a11=(a11+a13);
+  a13=2.5000000000000000e-01;
+  a08=casadi_sq(a08);
+  a13=(a13*a08);
+  a08=5.0000000000000000e-01;
+  a08=(a08*a12);
+  a13=(a13+a08);
+  a08=arg[0]? arg[0][14] : 0;
+  a13=(a13+a08);
+  a12=6.0000000000000009e-01;
+  a14=arg[0]? arg[0][35] : 0;
+  a12=(a12*a14);
+  a13=(a13+a12);
+  a12=1.0000000000000001e-01;
+  a04=casadi_sq(a04);
+  a04=(a12*a04);
+  a13=(a13+a04);
+  a04=7.4999999999999997e-02;
+  a10=casadi_sq(a10);
+  a04=(a04*a10);
+  a13=(a13+a04);
+  a04=2.9999999999999999e-01;
+  a06=casadi_sq(a06);
+  a04=(a04*a06);
+  a13=(a13+a04);
+  a04=4.5000000000000001e-01;
+  a01=casadi_sq(a01);
+  a04=(a04*a01);
+  a13=(a13+a04);
+  a04=-2.;
+  a01=5.0000000000000003e-02;
+  a06=arg[0]? arg[0][6] : 0;
+  a10=(a01*a06);
+  a15=arg[0]? arg[0][0] : 0;
+  a16=(a12*a15);
+  a10=(a10+a16);
+  a16=arg[0]? arg[0][12] : 0;
+  a10=(a10-a16);
+  a17=-1.0000000000000001e-01;
+  a18=arg[0]? arg[0][27] : 0;
+  a19=(a17*a18);
+  a10=(a10+a19);
+  a19=-2.9999999999999999e-01;
+  a20=arg[0]? arg[0][33] : 0;
+  a21=(a19*a20);
+  a10=(a10+a21);
+  a10=casadi_sq(a10);
+  a10=(a04*a10);
+  a13=(a13+a10);
+  a10=arg[0]? arg[0][7] : 0;
+  a21=(a01*a10);
+  a22=arg[0]? arg[0][1] : 0;
+  a23=(a12*a22);
+  a21=(a21+a23);
+  a23=arg[0]? arg[0][13] : 0;
+  a21=(a21-a23);
+  a24=arg[0]? arg[0][28] : 0;
+  a25=(a17*a24);
+  a21=(a21+a25);
+  a25=arg[0]? arg[0][34] : 0;
+  a26=(a19*a25);
+  a21=(a21+a26);
+  a21=casadi_sq(a21);
+  a21=(a04*a21);
+  a13=(a13+a21);
+  a21=1.3000000000000000e+00;
+  a26=arg[0]? arg[0][8] : 0;
+  a01=(a01*a26);
+  a21=(a21+a01);
+  a01=arg[0]? arg[0][2] : 0;
+  a12=(a12*a01);
+  a21=(a21+a12);
+  a21=(a21-a08);
+  a12=arg[0]? arg[0][29] : 0;
+  a27=(a17*a12);
+  a21=(a21+a27);
+  a19=(a19*a14);
+  a21=(a21+a19);
+  a21=casadi_sq(a21);
+  a04=(a04*a21);
+  a13=(a13+a04);
+  a04=-5.9999999999999998e-02;
+  a04=(a04*a12);
+  a13=(a13+a04);
+  a17=(a17*a01);
+  a13=(a13+a17);
+  a11=(a11-a13);
+  if (res[1]!=0) res[1][0]=a11;
+  a11=(a08*a10);
+  a13=(a23*a26);
+  a11=(a11-a13);
+  a11=(a11*a00);
+  a17=(a01*a23);
+  a04=(a22*a08);
+  a17=(a17-a04);
+  a17=(a17*a02);
+  a11=(a11+a17);
+  a17=(a26*a22);
+  a21=(a10*a01);
+  a17=(a17-a21);
+  a17=(a17*a03);
+  a11=(a11+a17);
+  if (res[2]!=0) res[2][0]=a11;
+  a11=(a16*a26);
+  a17=(a08*a06);
+  a11=(a11-a17);
+  a11=(a11*a00);
+  a17=(a15*a08);
+  a19=(a01*a16);
+  a17=(a17-a19);
+  a17=(a17*a02);
+  a11=(a11+a17);
+  a17=(a06*a01);
+  a19=(a26*a15);
+  a17=(a17-a19);
+  a17=(a17*a03);
+  a11=(a11+a17);
+  if (res[2]!=0) res[2][1]=a11;
+  a11=(a23*a06);
+  a17=(a16*a10);
+  a11=(a11-a17);
+  a11=(a11*a00);
+  a00=(a22*a16);
+  a17=(a15*a23);
+  a00=(a00-a17);
+  a00=(a00*a02);
+  a11=(a11+a00);
+  a00=(a10*a15);
+  a02=(a06*a22);
+  a00=(a00-a02);
+  a00=(a00*a03);
+  a11=(a11+a00);
+  if (res[2]!=0) res[2][2]=a11;
+  a11=(a14*a24);
+  a00=(a25*a12);
+  a11=(a11-a00);
+  a11=(a11*a05);
+  a03=arg[0]? arg[0][23] : 0;
+  a02=(a03*a25);
+  a17=arg[0]? arg[0][22] : 0;
+  a19=(a17*a14);
+  a02=(a02-a19);
+  a02=(a02*a07);
+  a11=(a11+a02);
+  a02=(a12*a17);
+  a27=(a24*a03);
+  a02=(a02-a27);
+  a02=(a02*a09);
+  a11=(a11+a02);
+  if (res[2]!=0) res[2][3]=a11;
+  a11=(a20*a12);
+  a02=(a14*a18);
+  a11=(a11-a02);
+  a11=(a11*a05);
+  a02=arg[0]? arg[0][21] : 0;
+  a28=(a02*a14);
+  a29=(a03*a20);
+  a28=(a28-a29);
+  a28=(a28*a07);
+  a11=(a11+a28);
+  a28=(a18*a03);
+  a29=(a12*a02);
+  a28=(a28-a29);
+  a28=(a28*a09);
+  a11=(a11+a28);
+  if (res[2]!=0) res[2][4]=a11;
+  a11=(a25*a18);
+  a28=(a20*a24);
+  a11=(a11-a28);
+  a11=(a11*a05);
+  a05=(a17*a20);
+  a28=(a02*a25);
+  a05=(a05-a28);
+  a05=(a05*a07);
+  a11=(a11+a05);
+  a05=(a24*a02);
+  a07=(a18*a17);
+  a05=(a05-a07);
+  a05=(a05*a09);
+  a11=(a11+a05);
+  if (res[2]!=0) res[2][5]=a11;
+  a11=0.;
+  a05=arg[0]? arg[0][3] : 0;
+  a05=casadi_fabs(a05);
+  a05=casadi_fmax(a11,a05);
+  a09=arg[0]? arg[0][4] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a09=arg[0]? arg[0][5] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a05=casadi_fmax(a05,a11);
+  a05=casadi_fmax(a05,a11);
+  a05=casadi_fmax(a05,a11);
+  a09=arg[0]? arg[0][9] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a09=arg[0]? arg[0][10] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a09=arg[0]? arg[0][11] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a05=casadi_fmax(a05,a11);
+  a05=casadi_fmax(a05,a11);
+  a05=casadi_fmax(a05,a11);
+  a09=arg[0]? arg[0][15] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a09=arg[0]? arg[0][16] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a09=arg[0]? arg[0][17] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a09=arg[0]? arg[0][18] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a09=arg[0]? arg[0][19] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a09=arg[0]? arg[0][20] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a05=casadi_fmax(a05,a11);
+  a05=casadi_fmax(a05,a11);
+  a05=casadi_fmax(a05,a11);
+  a09=arg[0]? arg[0][24] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a09=arg[0]? arg[0][25] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a09=arg[0]? arg[0][26] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a05=casadi_fmax(a05,a11);
+  a05=casadi_fmax(a05,a11);
+  a05=casadi_fmax(a05,a11);
+  a09=arg[0]? arg[0][30] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a09=arg[0]? arg[0][31] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a09=arg[0]? arg[0][32] : 0;
+  a09=casadi_fabs(a09);
+  a05=casadi_fmax(a05,a09);
+  a05=casadi_fmax(a05,a11);
+  a05=casadi_fmax(a05,a11);
+  a05=casadi_fmax(a05,a11);
+  a11=casadi_sq(a15);
+  a09=casadi_sq(a22);
+  a11=(a11+a09);
+  a09=casadi_sq(a01);
+  a11=(a11+a09);
+  a09=1.;
+  a11=(a11-a09);
+  a11=casadi_fabs(a11);
+  a07=(a06*a15);
+  a28=(a10*a22);
+  a07=(a07+a28);
+  a28=(a26*a01);
+  a07=(a07+a28);
+  a07=casadi_fabs(a07);
+  a11=casadi_fmax(a11,a07);
+  a07=(a16*a15);
+  a28=(a23*a22);
+  a07=(a07+a28);
+  a28=(a08*a01);
+  a07=(a07+a28);
+  a07=casadi_fabs(a07);
+  a11=casadi_fmax(a11,a07);
+  a07=(a15*a06);
+  a28=(a22*a10);
+  a07=(a07+a28);
+  a28=(a01*a26);
+  a07=(a07+a28);
+  a07=casadi_fabs(a07);
+  a11=casadi_fmax(a11,a07);
+  a07=casadi_sq(a06);
+  a28=casadi_sq(a10);
+  a07=(a07+a28);
+  a28=casadi_sq(a26);
+  a07=(a07+a28);
+  a07=(a07-a09);
+  a07=casadi_fabs(a07);
+  a11=casadi_fmax(a11,a07);
+  a07=(a16*a06);
+  a28=(a23*a10);
+  a07=(a07+a28);
+  a28=(a08*a26);
+  a07=(a07+a28);
+  a07=casadi_fabs(a07);
+  a11=casadi_fmax(a11,a07);
+  a07=(a15*a16);
+  a28=(a22*a23);
+  a07=(a07+a28);
+  a28=(a01*a08);
+  a07=(a07+a28);
+  a07=casadi_fabs(a07);
+  a11=casadi_fmax(a11,a07);
+  a07=(a06*a16);
+  a28=(a10*a23);
+  a07=(a07+a28);
+  a28=(a26*a08);
+  a07=(a07+a28);
+  a07=casadi_fabs(a07);
+  a11=casadi_fmax(a11,a07);
+  a07=casadi_sq(a16);
+  a28=casadi_sq(a23);
+  a07=(a07+a28);
+  a28=casadi_sq(a08);
+  a07=(a07+a28);
+  a07=(a07-a09);
+  a07=casadi_fabs(a07);
+  a11=casadi_fmax(a11,a07);
+  a10=(a10*a08);
+  a10=(a10-a13);
+  a15=(a15*a10);
+  a23=(a23*a01);
+  a04=(a04-a23);
+  a06=(a06*a04);
+  a15=(a15-a06);
+  a22=(a22*a26);
+  a22=(a22-a21);
+  a16=(a16*a22);
+  a15=(a15+a16);
+  a15=(a15-a09);
+  a15=casadi_fabs(a15);
+  a11=casadi_fmax(a11,a15);
+  a05=casadi_fmax(a05,a11);
+  a11=casadi_sq(a02);
+  a15=casadi_sq(a17);
+  a11=(a11+a15);
+  a15=casadi_sq(a03);
+  a11=(a11+a15);
+  a11=(a11-a09);
+  a11=casadi_fabs(a11);
+  a15=(a18*a02);
+  a16=(a24*a17);
+  a15=(a15+a16);
+  a16=(a12*a03);
+  a15=(a15+a16);
+  a15=casadi_fabs(a15);
+  a11=casadi_fmax(a11,a15);
+  a15=(a20*a02);
+  a16=(a25*a17);
+  a15=(a15+a16);
+  a16=(a14*a03);
+  a15=(a15+a16);
+  a15=casadi_fabs(a15);
+  a11=casadi_fmax(a11,a15);
+  a15=(a02*a18);
+  a16=(a17*a24);
+  a15=(a15+a16);
+  a16=(a03*a12);
+  a15=(a15+a16);
+  a15=casadi_fabs(a15);
+  a11=casadi_fmax(a11,a15);
+  a15=casadi_sq(a18);
+  a16=casadi_sq(a24);
+  a15=(a15+a16);
+  a16=casadi_sq(a12);
+  a15=(a15+a16);
+  a15=(a15-a09);
+  a15=casadi_fabs(a15);
+  a11=casadi_fmax(a11,a15);
+  a15=(a20*a18);
+  a16=(a25*a24);
+  a15=(a15+a16);
+  a16=(a14*a12);
+  a15=(a15+a16);
+  a15=casadi_fabs(a15);
+  a11=casadi_fmax(a11,a15);
+  a15=(a02*a20);
+  a16=(a17*a25);
+  a15=(a15+a16);
+  a16=(a03*a14);
+  a15=(a15+a16);
+  a15=casadi_fabs(a15);
+  a11=casadi_fmax(a11,a15);
+  a15=(a18*a20);
+  a16=(a24*a25);
+  a15=(a15+a16);
+  a16=(a12*a14);
+  a15=(a15+a16);
+  a15=casadi_fabs(a15);
+  a11=casadi_fmax(a11,a15);
+  a15=casadi_sq(a20);
+  a16=casadi_sq(a25);
+  a15=(a15+a16);
+  a16=casadi_sq(a14);
+  a15=(a15+a16);
+  a15=(a15-a09);
+  a15=casadi_fabs(a15);
+  a11=casadi_fmax(a11,a15);
+  a24=(a24*a14);
+  a24=(a24-a00);
+  a02=(a02*a24);
+  a25=(a25*a03);
+  a19=(a19-a25);
+  a18=(a18*a19);
+  a02=(a02-a18);
+  a17=(a17*a12);
+  a17=(a17-a27);
+  a20=(a20*a17);
+  a02=(a02+a20);
+  a02=(a02-a09);
+  a02=casadi_fabs(a02);
+  a11=casadi_fmax(a11,a02);
+  a05=casadi_fmax(a05,a11);
+  if (res[3]!=0) res[3][0]=a05;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int observe(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f12(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int observe_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void observe_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void observe_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void observe_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int observe_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int observe_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real observe_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* observe_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* observe_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "xi";
+    case 1: return "E";
+    case 2: return "m";
+    case 3: return "e";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* observe_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* observe_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int observe_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int observe_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
 
 
 /* ======================= end of CasADi-generated code =================================== */
@@ -3399,7 +3931,7 @@ typedef struct hpgen_run {
     long long s_valid;
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "db5fdd466f0698ecbf022c2a11b9ff23272534df86a7ea51e0ce76e5046a5ecd"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "53a9d2192f36ba4e78a19bf8e861b174c0a7768542fc2973e79c29dd11cefab2"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -3419,6 +3951,7 @@ static int hpgen_k_defect(const double* in0, double* out0);
 static int hpgen_k_margin(const double* in0, const double* in1, double* out0);
 static int hpgen_k_section(const double* in0, const double* in1, double* out0);
 static int hpgen_k_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_observe(const double* in0, const double* in1, double* out0, double* out1, double* out2, double* out3);
 
 /* residual(z[6], g[36], p[6], h[1]) -> (F[6]) */
 #define HPGEN_RESIDUAL_SZ_ARG 4
@@ -3737,6 +4270,34 @@ static int hpgen_k_chart_point(const double* in0, const double* in1, const doubl
 
 HPGEN_EXPORT int hpgen_kernel_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
     return hpgen_k_chart_point(in0, in1, in2, in3, out0);
+}
+
+/* observe(g[36], p[6]) -> (xi[6], E[1], m[6], e[1]) */
+#define HPGEN_OBSERVE_SZ_ARG 2
+#define HPGEN_OBSERVE_SZ_RES 4
+#define HPGEN_OBSERVE_SZ_IW 0
+#define HPGEN_OBSERVE_SZ_W 30
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_observe exports it */
+static int hpgen_k_observe(const double* in0, const double* in1, double* out0, double* out1, double* out2, double* out3) {
+    const casadi_real* arg[HPGEN_OBSERVE_SZ_ARG + 1];
+    casadi_real* res[HPGEN_OBSERVE_SZ_RES + 1];
+    casadi_int iw[HPGEN_OBSERVE_SZ_IW + 1];
+    casadi_real w[HPGEN_OBSERVE_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    res[0] = out0;
+    res[1] = out1;
+    res[2] = out2;
+    res[3] = out3;
+    flag = observe(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_observe(const double* in0, const double* in1, double* out0, double* out1, double* out2, double* out3) {
+    return hpgen_k_observe(in0, in1, out0, out1, out2, out3);
 }
 
 /* ---- dense linear algebra and Newton ---- */
@@ -4168,6 +4729,23 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
     }
     st->step = r->k;
     return n;
+}
+
+/* Observables of K records (g_rec[k * NN], p_rec[k * D], as hpgen_advance writes them):
+   kernel observe per record -> xi_out[k * D], E_out[k], m_out[k * D], e_out[k]. Returns the
+   first record whose outputs are not finite, or K. */
+HPGEN_EXPORT long long hpgen_observe(long long K, const double* g_rec, const double* p_rec,
+                                     double* xi_out, double* E_out, double* m_out,
+                                     double* e_out) {
+    long long k;
+    for (k = 0; k < K; ++k) {
+        double* xi = xi_out + k * HPGEN_D;
+        double* m = m_out + k * HPGEN_D;
+        if (hpgen_k_observe(g_rec + k * HPGEN_NN, p_rec + k * HPGEN_D, xi, E_out + k, m,
+                            e_out + k)
+            || !hpgen_all_finite(xi, HPGEN_D) || !isfinite(E_out[k])) return k;
+    }
+    return K;
 }
 
 /* Advance B independent runs (runs[0..B-1]) by `steps` steps each, one after the other,

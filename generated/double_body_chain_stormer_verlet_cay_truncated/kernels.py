@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: db5fdd466f0698ecbf022c2a11b9ff23272534df86a7ea51e0ce76e5046a5ecd
+# content hash: 53a9d2192f36ba4e78a19bf8e861b174c0a7768542fc2973e79c29dd11cefab2
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -1951,6 +1951,519 @@ def chart_point(z, g, h, theta):
     return [_fromiter(_r[0], _F64, 36)]
 
 
+def _raw_observe(g, p):
+    """observe on lists of Python floats -> [xi[6], E[1], m[6], e[1]] as lists (see RAW)"""
+    try:
+        w3, w8, w13, w18, w19, w20, w2, w7, w12, w21, w22, w23, w4, w9, w0, w24, w25, w26, w27, w28, w29, w17, w16, w15, w30, w31, w32, w5, w10, w14, w33, w34, w35, w6, w11, w1 = g
+        w36, w37, w38, w39, w40, w41 = p
+        r0 = [0.0] * 6
+        r1 = [0.0] * 1
+        r2 = [0.0] * 6
+        r3 = [0.0] * 1
+        w42 = w36 / 0.9
+        r0[0] = w42
+        r0[1] = w37
+        w43 = w38 / 0.2
+        r0[2] = w43
+        w44 = w39 / 0.6
+        r0[3] = w44
+        w45 = 2.0 * w40
+        r0[4] = w45
+        w46 = w41 / 0.15
+        r0[5] = w46
+        w47 = w37 * w37
+        w48 = ((((0.05 * w2) + (0.1 * w3)) - w4) + ((-0.1) * w5)) + ((-0.3) * w6)
+        w49 = ((((0.05 * w7) + (0.1 * w8)) - w9) + ((-0.1) * w10)) + ((-0.3) * w11)
+        w50 = ((((1.3 + (0.05 * w12)) + (0.1 * w13)) - w0) + ((-0.1) * w14)) + ((-0.3) * w1)
+        r1[0] = ((((((w36 * w42) + w47) + (w38 * w43)) + (w39 * w44)) + (w40 * w45)) + (w41 * w46)) - (((((((((((((0.25 * (w45 * w45)) + (0.5 * w47)) + w0) + (0.6000000000000001 * w1)) + (0.1 * (w43 * w43))) + (0.075 * (w46 * w46))) + (0.3 * (w44 * w44))) + (0.45 * (w42 * w42))) + ((-2.0) * (w48 * w48))) + ((-2.0) * (w49 * w49))) + ((-2.0) * (w50 * w50))) + ((-0.06) * w14)) + ((-0.1) * w13))
+        w42 = (w0 * w7) - (w9 * w12)
+        w43 = w13 * w9
+        w44 = w8 * w0
+        w45 = (w12 * w8) - (w7 * w13)
+        r2[0] = ((w42 * w36) + ((w43 - w44) * w37)) + (w45 * w38)
+        r2[1] = ((((w4 * w12) - (w0 * w2)) * w36) + (((w3 * w0) - (w13 * w4)) * w37)) + (((w2 * w13) - (w12 * w3)) * w38)
+        r2[2] = ((((w9 * w2) - (w4 * w7)) * w36) + (((w8 * w4) - (w3 * w9)) * w37)) + (((w7 * w3) - (w2 * w8)) * w38)
+        w36 = (w1 * w10) - (w11 * w14)
+        w37 = w15 * w11
+        w38 = w16 * w1
+        w46 = (w14 * w16) - (w10 * w15)
+        r2[3] = ((w36 * w39) + ((w37 - w38) * w40)) + (w46 * w41)
+        r2[4] = ((((w6 * w14) - (w1 * w5)) * w39) + (((w17 * w1) - (w15 * w6)) * w40)) + (((w5 * w15) - (w14 * w17)) * w41)
+        r2[5] = ((((w11 * w5) - (w6 * w10)) * w39) + (((w16 * w6) - (w17 * w11)) * w40)) + (((w10 * w17) - (w5 * w16)) * w41)
+        w39 = _f_fabs((((w2 * w3) + (w7 * w8)) + (w12 * w13)))
+        w40 = _f_fabs((((w4 * w3) + (w9 * w8)) + (w0 * w13)))
+        w41 = _f_fabs((((w4 * w2) + (w9 * w7)) + (w0 * w12)))
+        w47 = _f_fabs((((w5 * w17) + (w10 * w16)) + (w14 * w15)))
+        w48 = _f_fabs((((w6 * w17) + (w11 * w16)) + (w1 * w15)))
+        w49 = _f_fabs((((w6 * w5) + (w11 * w10)) + (w1 * w14)))
+        r3[0] = _fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax(0.0, (_f_fabs(w18)))), (_f_fabs(w19)))), (_f_fabs(w20)))), 0.0)), 0.0)), 0.0)), (_f_fabs(w21)))), (_f_fabs(w22)))), (_f_fabs(w23)))), 0.0)), 0.0)), 0.0)), (_f_fabs(w24)))), (_f_fabs(w25)))), (_f_fabs(w26)))), (_f_fabs(w27)))), (_f_fabs(w28)))), (_f_fabs(w29)))), 0.0)), 0.0)), 0.0)), (_f_fabs(w30)))), (_f_fabs(w31)))), (_f_fabs(w32)))), 0.0)), 0.0)), 0.0)), (_f_fabs(w33)))), (_f_fabs(w34)))), (_f_fabs(w35)))), 0.0)), 0.0)), 0.0)), (_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_f_fabs(((((w3 * w3) + (w8 * w8)) + (w13 * w13)) - 1.0))), w39)), w40)), w39)), (_f_fabs(((((w2 * w2) + (w7 * w7)) + (w12 * w12)) - 1.0))))), w41)), w40)), w41)), (_f_fabs(((((w4 * w4) + (w9 * w9)) + (w0 * w0)) - 1.0))))), (_f_fabs(((((w3 * w42) - (w2 * (w44 - w43))) + (w4 * w45)) - 1.0))))))), (_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_f_fabs(((((w17 * w17) + (w16 * w16)) + (w15 * w15)) - 1.0))), w47)), w48)), w47)), (_f_fabs(((((w5 * w5) + (w10 * w10)) + (w14 * w14)) - 1.0))))), w49)), w48)), w49)), (_f_fabs(((((w6 * w6) + (w11 * w11)) + (w1 * w1)) - 1.0))))), (_f_fabs(((((w17 * w36) - (w5 * (w38 - w37))) + (w6 * w46)) - 1.0))))))
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 6
+        r1 = [0.0] * 1
+        r2 = [0.0] * 6
+        r3 = [0.0] * 1
+        w0 = p[0]
+        w1 = 0.9
+        w1 = w0 / w1 if w1 else _div(w0, w1)
+        r0[0] = w1
+        w2 = p[1]
+        r0[1] = w2
+        w3 = p[2]
+        w4 = 0.2
+        w4 = w3 / w4 if w4 else _div(w3, w4)
+        r0[2] = w4
+        w5 = p[3]
+        w6 = 0.6
+        w6 = w5 / w6 if w6 else _div(w5, w6)
+        r0[3] = w6
+        w7 = p[4]
+        w8 = 2.0 * w7
+        r0[4] = w8
+        w9 = p[5]
+        w10 = 0.15
+        w10 = w9 / w10 if w10 else _div(w9, w10)
+        r0[5] = w10
+        w11 = w0 * w1
+        w12 = w2 * w2
+        w11 = w11 + w12
+        w13 = w3 * w4
+        w11 = w11 + w13
+        w13 = w5 * w6
+        w11 = w11 + w13
+        w13 = w7 * w8
+        w11 = w11 + w13
+        w13 = w9 * w10
+        w11 = w11 + w13
+        w13 = 0.25
+        w8 = w8 * w8
+        w13 = w13 * w8
+        w8 = 0.5
+        w8 = w8 * w12
+        w13 = w13 + w8
+        w8 = g[14]
+        w13 = w13 + w8
+        w12 = 0.6000000000000001
+        w14 = g[35]
+        w12 = w12 * w14
+        w13 = w13 + w12
+        w12 = 0.1
+        w4 = w4 * w4
+        w4 = w12 * w4
+        w13 = w13 + w4
+        w4 = 0.075
+        w10 = w10 * w10
+        w4 = w4 * w10
+        w13 = w13 + w4
+        w4 = 0.3
+        w6 = w6 * w6
+        w4 = w4 * w6
+        w13 = w13 + w4
+        w4 = 0.45
+        w1 = w1 * w1
+        w4 = w4 * w1
+        w13 = w13 + w4
+        w4 = -2.0
+        w1 = 0.05
+        w6 = g[6]
+        w10 = w1 * w6
+        w15 = g[0]
+        w16 = w12 * w15
+        w10 = w10 + w16
+        w16 = g[12]
+        w10 = w10 - w16
+        w17 = -0.1
+        w18 = g[27]
+        w19 = w17 * w18
+        w10 = w10 + w19
+        w19 = -0.3
+        w20 = g[33]
+        w21 = w19 * w20
+        w10 = w10 + w21
+        w10 = w10 * w10
+        w10 = w4 * w10
+        w13 = w13 + w10
+        w10 = g[7]
+        w21 = w1 * w10
+        w22 = g[1]
+        w23 = w12 * w22
+        w21 = w21 + w23
+        w23 = g[13]
+        w21 = w21 - w23
+        w24 = g[28]
+        w25 = w17 * w24
+        w21 = w21 + w25
+        w25 = g[34]
+        w26 = w19 * w25
+        w21 = w21 + w26
+        w21 = w21 * w21
+        w21 = w4 * w21
+        w13 = w13 + w21
+        w21 = 1.3
+        w26 = g[8]
+        w1 = w1 * w26
+        w21 = w21 + w1
+        w1 = g[2]
+        w12 = w12 * w1
+        w21 = w21 + w12
+        w21 = w21 - w8
+        w12 = g[29]
+        w27 = w17 * w12
+        w21 = w21 + w27
+        w19 = w19 * w14
+        w21 = w21 + w19
+        w21 = w21 * w21
+        w4 = w4 * w21
+        w13 = w13 + w4
+        w4 = -0.06
+        w4 = w4 * w12
+        w13 = w13 + w4
+        w17 = w17 * w1
+        w13 = w13 + w17
+        w11 = w11 - w13
+        r1[0] = w11
+        w11 = w8 * w10
+        w13 = w23 * w26
+        w11 = w11 - w13
+        w11 = w11 * w0
+        w17 = w1 * w23
+        w4 = w22 * w8
+        w17 = w17 - w4
+        w17 = w17 * w2
+        w11 = w11 + w17
+        w17 = w26 * w22
+        w21 = w10 * w1
+        w17 = w17 - w21
+        w17 = w17 * w3
+        w11 = w11 + w17
+        r2[0] = w11
+        w11 = w16 * w26
+        w17 = w8 * w6
+        w11 = w11 - w17
+        w11 = w11 * w0
+        w17 = w15 * w8
+        w19 = w1 * w16
+        w17 = w17 - w19
+        w17 = w17 * w2
+        w11 = w11 + w17
+        w17 = w6 * w1
+        w19 = w26 * w15
+        w17 = w17 - w19
+        w17 = w17 * w3
+        w11 = w11 + w17
+        r2[1] = w11
+        w11 = w23 * w6
+        w17 = w16 * w10
+        w11 = w11 - w17
+        w11 = w11 * w0
+        w0 = w22 * w16
+        w17 = w15 * w23
+        w0 = w0 - w17
+        w0 = w0 * w2
+        w11 = w11 + w0
+        w0 = w10 * w15
+        w2 = w6 * w22
+        w0 = w0 - w2
+        w0 = w0 * w3
+        w11 = w11 + w0
+        r2[2] = w11
+        w11 = w14 * w24
+        w0 = w25 * w12
+        w11 = w11 - w0
+        w11 = w11 * w5
+        w3 = g[23]
+        w2 = w3 * w25
+        w17 = g[22]
+        w19 = w17 * w14
+        w2 = w2 - w19
+        w2 = w2 * w7
+        w11 = w11 + w2
+        w2 = w12 * w17
+        w27 = w24 * w3
+        w2 = w2 - w27
+        w2 = w2 * w9
+        w11 = w11 + w2
+        r2[3] = w11
+        w11 = w20 * w12
+        w2 = w14 * w18
+        w11 = w11 - w2
+        w11 = w11 * w5
+        w2 = g[21]
+        w28 = w2 * w14
+        w29 = w3 * w20
+        w28 = w28 - w29
+        w28 = w28 * w7
+        w11 = w11 + w28
+        w28 = w18 * w3
+        w29 = w12 * w2
+        w28 = w28 - w29
+        w28 = w28 * w9
+        w11 = w11 + w28
+        r2[4] = w11
+        w11 = w25 * w18
+        w28 = w20 * w24
+        w11 = w11 - w28
+        w11 = w11 * w5
+        w5 = w17 * w20
+        w28 = w2 * w25
+        w5 = w5 - w28
+        w5 = w5 * w7
+        w11 = w11 + w5
+        w5 = w24 * w2
+        w7 = w18 * w17
+        w5 = w5 - w7
+        w5 = w5 * w9
+        w11 = w11 + w5
+        r2[5] = w11
+        w11 = 0.0
+        w5 = g[3]
+        w5 = math.fabs(w5)
+        w5 = _fmax(w11, w5)
+        w9 = g[4]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w9 = g[5]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w5 = _fmax(w5, w11)
+        w5 = _fmax(w5, w11)
+        w5 = _fmax(w5, w11)
+        w9 = g[9]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w9 = g[10]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w9 = g[11]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w5 = _fmax(w5, w11)
+        w5 = _fmax(w5, w11)
+        w5 = _fmax(w5, w11)
+        w9 = g[15]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w9 = g[16]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w9 = g[17]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w9 = g[18]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w9 = g[19]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w9 = g[20]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w5 = _fmax(w5, w11)
+        w5 = _fmax(w5, w11)
+        w5 = _fmax(w5, w11)
+        w9 = g[24]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w9 = g[25]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w9 = g[26]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w5 = _fmax(w5, w11)
+        w5 = _fmax(w5, w11)
+        w5 = _fmax(w5, w11)
+        w9 = g[30]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w9 = g[31]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w9 = g[32]
+        w9 = math.fabs(w9)
+        w5 = _fmax(w5, w9)
+        w5 = _fmax(w5, w11)
+        w5 = _fmax(w5, w11)
+        w5 = _fmax(w5, w11)
+        w11 = w15 * w15
+        w9 = w22 * w22
+        w11 = w11 + w9
+        w9 = w1 * w1
+        w11 = w11 + w9
+        w9 = 1.0
+        w11 = w11 - w9
+        w11 = math.fabs(w11)
+        w7 = w6 * w15
+        w28 = w10 * w22
+        w7 = w7 + w28
+        w28 = w26 * w1
+        w7 = w7 + w28
+        w7 = math.fabs(w7)
+        w11 = _fmax(w11, w7)
+        w7 = w16 * w15
+        w28 = w23 * w22
+        w7 = w7 + w28
+        w28 = w8 * w1
+        w7 = w7 + w28
+        w7 = math.fabs(w7)
+        w11 = _fmax(w11, w7)
+        w7 = w15 * w6
+        w28 = w22 * w10
+        w7 = w7 + w28
+        w28 = w1 * w26
+        w7 = w7 + w28
+        w7 = math.fabs(w7)
+        w11 = _fmax(w11, w7)
+        w7 = w6 * w6
+        w28 = w10 * w10
+        w7 = w7 + w28
+        w28 = w26 * w26
+        w7 = w7 + w28
+        w7 = w7 - w9
+        w7 = math.fabs(w7)
+        w11 = _fmax(w11, w7)
+        w7 = w16 * w6
+        w28 = w23 * w10
+        w7 = w7 + w28
+        w28 = w8 * w26
+        w7 = w7 + w28
+        w7 = math.fabs(w7)
+        w11 = _fmax(w11, w7)
+        w7 = w15 * w16
+        w28 = w22 * w23
+        w7 = w7 + w28
+        w28 = w1 * w8
+        w7 = w7 + w28
+        w7 = math.fabs(w7)
+        w11 = _fmax(w11, w7)
+        w7 = w6 * w16
+        w28 = w10 * w23
+        w7 = w7 + w28
+        w28 = w26 * w8
+        w7 = w7 + w28
+        w7 = math.fabs(w7)
+        w11 = _fmax(w11, w7)
+        w7 = w16 * w16
+        w28 = w23 * w23
+        w7 = w7 + w28
+        w28 = w8 * w8
+        w7 = w7 + w28
+        w7 = w7 - w9
+        w7 = math.fabs(w7)
+        w11 = _fmax(w11, w7)
+        w10 = w10 * w8
+        w10 = w10 - w13
+        w15 = w15 * w10
+        w23 = w23 * w1
+        w4 = w4 - w23
+        w6 = w6 * w4
+        w15 = w15 - w6
+        w22 = w22 * w26
+        w22 = w22 - w21
+        w16 = w16 * w22
+        w15 = w15 + w16
+        w15 = w15 - w9
+        w15 = math.fabs(w15)
+        w11 = _fmax(w11, w15)
+        w5 = _fmax(w5, w11)
+        w11 = w2 * w2
+        w15 = w17 * w17
+        w11 = w11 + w15
+        w15 = w3 * w3
+        w11 = w11 + w15
+        w11 = w11 - w9
+        w11 = math.fabs(w11)
+        w15 = w18 * w2
+        w16 = w24 * w17
+        w15 = w15 + w16
+        w16 = w12 * w3
+        w15 = w15 + w16
+        w15 = math.fabs(w15)
+        w11 = _fmax(w11, w15)
+        w15 = w20 * w2
+        w16 = w25 * w17
+        w15 = w15 + w16
+        w16 = w14 * w3
+        w15 = w15 + w16
+        w15 = math.fabs(w15)
+        w11 = _fmax(w11, w15)
+        w15 = w2 * w18
+        w16 = w17 * w24
+        w15 = w15 + w16
+        w16 = w3 * w12
+        w15 = w15 + w16
+        w15 = math.fabs(w15)
+        w11 = _fmax(w11, w15)
+        w15 = w18 * w18
+        w16 = w24 * w24
+        w15 = w15 + w16
+        w16 = w12 * w12
+        w15 = w15 + w16
+        w15 = w15 - w9
+        w15 = math.fabs(w15)
+        w11 = _fmax(w11, w15)
+        w15 = w20 * w18
+        w16 = w25 * w24
+        w15 = w15 + w16
+        w16 = w14 * w12
+        w15 = w15 + w16
+        w15 = math.fabs(w15)
+        w11 = _fmax(w11, w15)
+        w15 = w2 * w20
+        w16 = w17 * w25
+        w15 = w15 + w16
+        w16 = w3 * w14
+        w15 = w15 + w16
+        w15 = math.fabs(w15)
+        w11 = _fmax(w11, w15)
+        w15 = w18 * w20
+        w16 = w24 * w25
+        w15 = w15 + w16
+        w16 = w12 * w14
+        w15 = w15 + w16
+        w15 = math.fabs(w15)
+        w11 = _fmax(w11, w15)
+        w15 = w20 * w20
+        w16 = w25 * w25
+        w15 = w15 + w16
+        w16 = w14 * w14
+        w15 = w15 + w16
+        w15 = w15 - w9
+        w15 = math.fabs(w15)
+        w11 = _fmax(w11, w15)
+        w24 = w24 * w14
+        w24 = w24 - w0
+        w2 = w2 * w24
+        w25 = w25 * w3
+        w19 = w19 - w25
+        w18 = w18 * w19
+        w2 = w2 - w18
+        w17 = w17 * w12
+        w17 = w17 - w27
+        w20 = w20 * w17
+        w2 = w2 + w20
+        w2 = w2 - w9
+        w2 = math.fabs(w2)
+        w11 = _fmax(w11, w2)
+        w5 = _fmax(w5, w11)
+        r3[0] = w5
+    return [r0, r1, r2, r3]
+
+
+def observe(g, p):
+    """observe(g[36], p[6]) -> [xi[6], E[1], m[6], e[1]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (36,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 36, "observe: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (6,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 6, "observe: p")
+    _r = _raw_observe(g, p)
+    return [_fromiter(_r[0], _F64, 6), _fromiter(_r[1], _F64, 1), _fromiter(_r[2], _F64, 6), _fromiter(_r[3], _F64, 1)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -1965,6 +2478,7 @@ KERNELS = {
     "margin": margin,
     "section": section,
     "chart_point": chart_point,
+    "observe": observe,
 }
 
 RAW = {
@@ -1981,4 +2495,656 @@ RAW = {
     "margin": _raw_margin,
     "section": _raw_section,
     "chart_point": _raw_chart_point,
+    "observe": _raw_observe,
 }
+
+
+# ---- Newton's linear algebra for NZ (hpgen.codegen.pylinear: straight-line Python, the C
+# template's operations in the same order), used by hpgen.runtime.newton ----
+_isfinite = math.isfinite
+_UNIT6 = ((1.0, 0.0, 0.0, 0.0, 0.0, 0.0), (0.0, 1.0, 0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 1.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0, 1.0, 0.0), (0.0, 0.0, 0.0, 0.0, 0.0, 1.0))
+
+
+def _lin_factor_solve(J, F, keep):
+    s = sum(J)
+    if not s - s == 0.0 and not all(map(_isfinite, J)):
+        return None
+    a0_0, a1_0, a2_0, a3_0, a4_0, a5_0, a0_1, a1_1, a2_1, a3_1, a4_1, a5_1, a0_2, a1_2, a2_2, a3_2, a4_2, a5_2, a0_3, a1_3, a2_3, a3_3, a4_3, a5_3, a0_4, a1_4, a2_4, a3_4, a4_4, a5_4, a0_5, a1_5, a2_5, a3_5, a4_5, a5_5, = J
+    m = abs(a0_0)
+    q = 0
+    t = abs(a1_0)
+    if t > m:
+        m = t
+        q = 1
+    t = abs(a2_0)
+    if t > m:
+        m = t
+        q = 2
+    t = abs(a3_0)
+    if t > m:
+        m = t
+        q = 3
+    t = abs(a4_0)
+    if t > m:
+        m = t
+        q = 4
+    t = abs(a5_0)
+    if t > m:
+        m = t
+        q = 5
+    if m == 0.0:
+        return None
+    p0 = q
+    if q == 1:
+        a0_0, a0_1, a0_2, a0_3, a0_4, a0_5, a1_0, a1_1, a1_2, a1_3, a1_4, a1_5 = a1_0, a1_1, a1_2, a1_3, a1_4, a1_5, a0_0, a0_1, a0_2, a0_3, a0_4, a0_5
+    elif q == 2:
+        a0_0, a0_1, a0_2, a0_3, a0_4, a0_5, a2_0, a2_1, a2_2, a2_3, a2_4, a2_5 = a2_0, a2_1, a2_2, a2_3, a2_4, a2_5, a0_0, a0_1, a0_2, a0_3, a0_4, a0_5
+    elif q == 3:
+        a0_0, a0_1, a0_2, a0_3, a0_4, a0_5, a3_0, a3_1, a3_2, a3_3, a3_4, a3_5 = a3_0, a3_1, a3_2, a3_3, a3_4, a3_5, a0_0, a0_1, a0_2, a0_3, a0_4, a0_5
+    elif q == 4:
+        a0_0, a0_1, a0_2, a0_3, a0_4, a0_5, a4_0, a4_1, a4_2, a4_3, a4_4, a4_5 = a4_0, a4_1, a4_2, a4_3, a4_4, a4_5, a0_0, a0_1, a0_2, a0_3, a0_4, a0_5
+    elif q == 5:
+        a0_0, a0_1, a0_2, a0_3, a0_4, a0_5, a5_0, a5_1, a5_2, a5_3, a5_4, a5_5 = a5_0, a5_1, a5_2, a5_3, a5_4, a5_5, a0_0, a0_1, a0_2, a0_3, a0_4, a0_5
+    r = 1.0 / a0_0
+    a0_0 = r
+    a1_0 = a1_0 * r
+    a2_0 = a2_0 * r
+    a3_0 = a3_0 * r
+    a4_0 = a4_0 * r
+    a5_0 = a5_0 * r
+    if a0_1 != 0.0:
+        a1_1 = a1_1 - a1_0 * a0_1
+        a2_1 = a2_1 - a2_0 * a0_1
+        a3_1 = a3_1 - a3_0 * a0_1
+        a4_1 = a4_1 - a4_0 * a0_1
+        a5_1 = a5_1 - a5_0 * a0_1
+    if a0_2 != 0.0:
+        a1_2 = a1_2 - a1_0 * a0_2
+        a2_2 = a2_2 - a2_0 * a0_2
+        a3_2 = a3_2 - a3_0 * a0_2
+        a4_2 = a4_2 - a4_0 * a0_2
+        a5_2 = a5_2 - a5_0 * a0_2
+    if a0_3 != 0.0:
+        a1_3 = a1_3 - a1_0 * a0_3
+        a2_3 = a2_3 - a2_0 * a0_3
+        a3_3 = a3_3 - a3_0 * a0_3
+        a4_3 = a4_3 - a4_0 * a0_3
+        a5_3 = a5_3 - a5_0 * a0_3
+    if a0_4 != 0.0:
+        a1_4 = a1_4 - a1_0 * a0_4
+        a2_4 = a2_4 - a2_0 * a0_4
+        a3_4 = a3_4 - a3_0 * a0_4
+        a4_4 = a4_4 - a4_0 * a0_4
+        a5_4 = a5_4 - a5_0 * a0_4
+    if a0_5 != 0.0:
+        a1_5 = a1_5 - a1_0 * a0_5
+        a2_5 = a2_5 - a2_0 * a0_5
+        a3_5 = a3_5 - a3_0 * a0_5
+        a4_5 = a4_5 - a4_0 * a0_5
+        a5_5 = a5_5 - a5_0 * a0_5
+    m = abs(a1_1)
+    q = 1
+    t = abs(a2_1)
+    if t > m:
+        m = t
+        q = 2
+    t = abs(a3_1)
+    if t > m:
+        m = t
+        q = 3
+    t = abs(a4_1)
+    if t > m:
+        m = t
+        q = 4
+    t = abs(a5_1)
+    if t > m:
+        m = t
+        q = 5
+    if m == 0.0:
+        return None
+    p1 = q
+    if q == 2:
+        a1_0, a1_1, a1_2, a1_3, a1_4, a1_5, a2_0, a2_1, a2_2, a2_3, a2_4, a2_5 = a2_0, a2_1, a2_2, a2_3, a2_4, a2_5, a1_0, a1_1, a1_2, a1_3, a1_4, a1_5
+    elif q == 3:
+        a1_0, a1_1, a1_2, a1_3, a1_4, a1_5, a3_0, a3_1, a3_2, a3_3, a3_4, a3_5 = a3_0, a3_1, a3_2, a3_3, a3_4, a3_5, a1_0, a1_1, a1_2, a1_3, a1_4, a1_5
+    elif q == 4:
+        a1_0, a1_1, a1_2, a1_3, a1_4, a1_5, a4_0, a4_1, a4_2, a4_3, a4_4, a4_5 = a4_0, a4_1, a4_2, a4_3, a4_4, a4_5, a1_0, a1_1, a1_2, a1_3, a1_4, a1_5
+    elif q == 5:
+        a1_0, a1_1, a1_2, a1_3, a1_4, a1_5, a5_0, a5_1, a5_2, a5_3, a5_4, a5_5 = a5_0, a5_1, a5_2, a5_3, a5_4, a5_5, a1_0, a1_1, a1_2, a1_3, a1_4, a1_5
+    r = 1.0 / a1_1
+    a1_1 = r
+    a2_1 = a2_1 * r
+    a3_1 = a3_1 * r
+    a4_1 = a4_1 * r
+    a5_1 = a5_1 * r
+    if a1_2 != 0.0:
+        a2_2 = a2_2 - a2_1 * a1_2
+        a3_2 = a3_2 - a3_1 * a1_2
+        a4_2 = a4_2 - a4_1 * a1_2
+        a5_2 = a5_2 - a5_1 * a1_2
+    if a1_3 != 0.0:
+        a2_3 = a2_3 - a2_1 * a1_3
+        a3_3 = a3_3 - a3_1 * a1_3
+        a4_3 = a4_3 - a4_1 * a1_3
+        a5_3 = a5_3 - a5_1 * a1_3
+    if a1_4 != 0.0:
+        a2_4 = a2_4 - a2_1 * a1_4
+        a3_4 = a3_4 - a3_1 * a1_4
+        a4_4 = a4_4 - a4_1 * a1_4
+        a5_4 = a5_4 - a5_1 * a1_4
+    if a1_5 != 0.0:
+        a2_5 = a2_5 - a2_1 * a1_5
+        a3_5 = a3_5 - a3_1 * a1_5
+        a4_5 = a4_5 - a4_1 * a1_5
+        a5_5 = a5_5 - a5_1 * a1_5
+    m = abs(a2_2)
+    q = 2
+    t = abs(a3_2)
+    if t > m:
+        m = t
+        q = 3
+    t = abs(a4_2)
+    if t > m:
+        m = t
+        q = 4
+    t = abs(a5_2)
+    if t > m:
+        m = t
+        q = 5
+    if m == 0.0:
+        return None
+    p2 = q
+    if q == 3:
+        a2_0, a2_1, a2_2, a2_3, a2_4, a2_5, a3_0, a3_1, a3_2, a3_3, a3_4, a3_5 = a3_0, a3_1, a3_2, a3_3, a3_4, a3_5, a2_0, a2_1, a2_2, a2_3, a2_4, a2_5
+    elif q == 4:
+        a2_0, a2_1, a2_2, a2_3, a2_4, a2_5, a4_0, a4_1, a4_2, a4_3, a4_4, a4_5 = a4_0, a4_1, a4_2, a4_3, a4_4, a4_5, a2_0, a2_1, a2_2, a2_3, a2_4, a2_5
+    elif q == 5:
+        a2_0, a2_1, a2_2, a2_3, a2_4, a2_5, a5_0, a5_1, a5_2, a5_3, a5_4, a5_5 = a5_0, a5_1, a5_2, a5_3, a5_4, a5_5, a2_0, a2_1, a2_2, a2_3, a2_4, a2_5
+    r = 1.0 / a2_2
+    a2_2 = r
+    a3_2 = a3_2 * r
+    a4_2 = a4_2 * r
+    a5_2 = a5_2 * r
+    if a2_3 != 0.0:
+        a3_3 = a3_3 - a3_2 * a2_3
+        a4_3 = a4_3 - a4_2 * a2_3
+        a5_3 = a5_3 - a5_2 * a2_3
+    if a2_4 != 0.0:
+        a3_4 = a3_4 - a3_2 * a2_4
+        a4_4 = a4_4 - a4_2 * a2_4
+        a5_4 = a5_4 - a5_2 * a2_4
+    if a2_5 != 0.0:
+        a3_5 = a3_5 - a3_2 * a2_5
+        a4_5 = a4_5 - a4_2 * a2_5
+        a5_5 = a5_5 - a5_2 * a2_5
+    m = abs(a3_3)
+    q = 3
+    t = abs(a4_3)
+    if t > m:
+        m = t
+        q = 4
+    t = abs(a5_3)
+    if t > m:
+        m = t
+        q = 5
+    if m == 0.0:
+        return None
+    p3 = q
+    if q == 4:
+        a3_0, a3_1, a3_2, a3_3, a3_4, a3_5, a4_0, a4_1, a4_2, a4_3, a4_4, a4_5 = a4_0, a4_1, a4_2, a4_3, a4_4, a4_5, a3_0, a3_1, a3_2, a3_3, a3_4, a3_5
+    elif q == 5:
+        a3_0, a3_1, a3_2, a3_3, a3_4, a3_5, a5_0, a5_1, a5_2, a5_3, a5_4, a5_5 = a5_0, a5_1, a5_2, a5_3, a5_4, a5_5, a3_0, a3_1, a3_2, a3_3, a3_4, a3_5
+    r = 1.0 / a3_3
+    a3_3 = r
+    a4_3 = a4_3 * r
+    a5_3 = a5_3 * r
+    if a3_4 != 0.0:
+        a4_4 = a4_4 - a4_3 * a3_4
+        a5_4 = a5_4 - a5_3 * a3_4
+    if a3_5 != 0.0:
+        a4_5 = a4_5 - a4_3 * a3_5
+        a5_5 = a5_5 - a5_3 * a3_5
+    m = abs(a4_4)
+    q = 4
+    t = abs(a5_4)
+    if t > m:
+        m = t
+        q = 5
+    if m == 0.0:
+        return None
+    p4 = q
+    if q == 5:
+        a4_0, a4_1, a4_2, a4_3, a4_4, a4_5, a5_0, a5_1, a5_2, a5_3, a5_4, a5_5 = a5_0, a5_1, a5_2, a5_3, a5_4, a5_5, a4_0, a4_1, a4_2, a4_3, a4_4, a4_5
+    r = 1.0 / a4_4
+    a4_4 = r
+    a5_4 = a5_4 * r
+    if a4_5 != 0.0:
+        a5_5 = a5_5 - a5_4 * a4_5
+    m = abs(a5_5)
+    q = 5
+    if m == 0.0:
+        return None
+    p5 = q
+    r = 1.0 / a5_5
+    a5_5 = r
+    perm = list(range(6))
+    perm[0], perm[p0] = perm[p0], perm[0]
+    perm[1], perm[p1] = perm[p1], perm[1]
+    perm[2], perm[p2] = perm[p2], perm[2]
+    perm[3], perm[p3] = perm[p3], perm[3]
+    perm[4], perm[p4] = perm[p4], perm[4]
+    perm[5], perm[p5] = perm[p5], perm[5]
+    b0, b1, b2, b3, b4, b5, = [F[i] for i in perm]
+    b1 = b1 - a1_0 * b0
+    b2 = b2 - a2_0 * b0
+    b3 = b3 - a3_0 * b0
+    b4 = b4 - a4_0 * b0
+    b5 = b5 - a5_0 * b0
+    b2 = b2 - a2_1 * b1
+    b3 = b3 - a3_1 * b1
+    b4 = b4 - a4_1 * b1
+    b5 = b5 - a5_1 * b1
+    b3 = b3 - a3_2 * b2
+    b4 = b4 - a4_2 * b2
+    b5 = b5 - a5_2 * b2
+    b4 = b4 - a4_3 * b3
+    b5 = b5 - a5_3 * b3
+    b5 = b5 - a5_4 * b4
+    b5 = b5 * a5_5
+    b4 = (b4 - a4_5 * b5) * a4_4
+    b3 = (b3 - a3_4 * b4 - a3_5 * b5) * a3_3
+    b2 = (b2 - a2_3 * b3 - a2_4 * b4 - a2_5 * b5) * a2_2
+    b1 = (b1 - a1_2 * b2 - a1_3 * b3 - a1_4 * b4 - a1_5 * b5) * a1_1
+    b0 = (b0 - a0_1 * b1 - a0_2 * b2 - a0_3 * b3 - a0_4 * b4 - a0_5 * b5) * a0_0
+    dz = [b0, b1, b2, b3, b4, b5]
+    if not keep:
+        return dz, None
+    inv = [0] * 6
+    for i, q in enumerate(perm):
+        inv[q] = i
+    x0_0, x1_0, x2_0, x3_0, x4_0, x5_0, = _UNIT6[inv[0]]
+    if x0_0 != 0.0:
+        x1_0 = x1_0 - a1_0 * x0_0
+        x2_0 = x2_0 - a2_0 * x0_0
+        x3_0 = x3_0 - a3_0 * x0_0
+        x4_0 = x4_0 - a4_0 * x0_0
+        x5_0 = x5_0 - a5_0 * x0_0
+    if x1_0 != 0.0:
+        x2_0 = x2_0 - a2_1 * x1_0
+        x3_0 = x3_0 - a3_1 * x1_0
+        x4_0 = x4_0 - a4_1 * x1_0
+        x5_0 = x5_0 - a5_1 * x1_0
+    if x2_0 != 0.0:
+        x3_0 = x3_0 - a3_2 * x2_0
+        x4_0 = x4_0 - a4_2 * x2_0
+        x5_0 = x5_0 - a5_2 * x2_0
+    if x3_0 != 0.0:
+        x4_0 = x4_0 - a4_3 * x3_0
+        x5_0 = x5_0 - a5_3 * x3_0
+    if x4_0 != 0.0:
+        x5_0 = x5_0 - a5_4 * x4_0
+    x5_0 = x5_0 * a5_5
+    x0_0 = x0_0 - a0_5 * x5_0
+    x1_0 = x1_0 - a1_5 * x5_0
+    x2_0 = x2_0 - a2_5 * x5_0
+    x3_0 = x3_0 - a3_5 * x5_0
+    x4_0 = x4_0 - a4_5 * x5_0
+    x4_0 = x4_0 * a4_4
+    x0_0 = x0_0 - a0_4 * x4_0
+    x1_0 = x1_0 - a1_4 * x4_0
+    x2_0 = x2_0 - a2_4 * x4_0
+    x3_0 = x3_0 - a3_4 * x4_0
+    x3_0 = x3_0 * a3_3
+    x0_0 = x0_0 - a0_3 * x3_0
+    x1_0 = x1_0 - a1_3 * x3_0
+    x2_0 = x2_0 - a2_3 * x3_0
+    x2_0 = x2_0 * a2_2
+    x0_0 = x0_0 - a0_2 * x2_0
+    x1_0 = x1_0 - a1_2 * x2_0
+    x1_0 = x1_0 * a1_1
+    x0_0 = x0_0 - a0_1 * x1_0
+    x0_0 = x0_0 * a0_0
+    x0_1, x1_1, x2_1, x3_1, x4_1, x5_1, = _UNIT6[inv[1]]
+    if x0_1 != 0.0:
+        x1_1 = x1_1 - a1_0 * x0_1
+        x2_1 = x2_1 - a2_0 * x0_1
+        x3_1 = x3_1 - a3_0 * x0_1
+        x4_1 = x4_1 - a4_0 * x0_1
+        x5_1 = x5_1 - a5_0 * x0_1
+    if x1_1 != 0.0:
+        x2_1 = x2_1 - a2_1 * x1_1
+        x3_1 = x3_1 - a3_1 * x1_1
+        x4_1 = x4_1 - a4_1 * x1_1
+        x5_1 = x5_1 - a5_1 * x1_1
+    if x2_1 != 0.0:
+        x3_1 = x3_1 - a3_2 * x2_1
+        x4_1 = x4_1 - a4_2 * x2_1
+        x5_1 = x5_1 - a5_2 * x2_1
+    if x3_1 != 0.0:
+        x4_1 = x4_1 - a4_3 * x3_1
+        x5_1 = x5_1 - a5_3 * x3_1
+    if x4_1 != 0.0:
+        x5_1 = x5_1 - a5_4 * x4_1
+    x5_1 = x5_1 * a5_5
+    x0_1 = x0_1 - a0_5 * x5_1
+    x1_1 = x1_1 - a1_5 * x5_1
+    x2_1 = x2_1 - a2_5 * x5_1
+    x3_1 = x3_1 - a3_5 * x5_1
+    x4_1 = x4_1 - a4_5 * x5_1
+    x4_1 = x4_1 * a4_4
+    x0_1 = x0_1 - a0_4 * x4_1
+    x1_1 = x1_1 - a1_4 * x4_1
+    x2_1 = x2_1 - a2_4 * x4_1
+    x3_1 = x3_1 - a3_4 * x4_1
+    x3_1 = x3_1 * a3_3
+    x0_1 = x0_1 - a0_3 * x3_1
+    x1_1 = x1_1 - a1_3 * x3_1
+    x2_1 = x2_1 - a2_3 * x3_1
+    x2_1 = x2_1 * a2_2
+    x0_1 = x0_1 - a0_2 * x2_1
+    x1_1 = x1_1 - a1_2 * x2_1
+    x1_1 = x1_1 * a1_1
+    x0_1 = x0_1 - a0_1 * x1_1
+    x0_1 = x0_1 * a0_0
+    x0_2, x1_2, x2_2, x3_2, x4_2, x5_2, = _UNIT6[inv[2]]
+    if x0_2 != 0.0:
+        x1_2 = x1_2 - a1_0 * x0_2
+        x2_2 = x2_2 - a2_0 * x0_2
+        x3_2 = x3_2 - a3_0 * x0_2
+        x4_2 = x4_2 - a4_0 * x0_2
+        x5_2 = x5_2 - a5_0 * x0_2
+    if x1_2 != 0.0:
+        x2_2 = x2_2 - a2_1 * x1_2
+        x3_2 = x3_2 - a3_1 * x1_2
+        x4_2 = x4_2 - a4_1 * x1_2
+        x5_2 = x5_2 - a5_1 * x1_2
+    if x2_2 != 0.0:
+        x3_2 = x3_2 - a3_2 * x2_2
+        x4_2 = x4_2 - a4_2 * x2_2
+        x5_2 = x5_2 - a5_2 * x2_2
+    if x3_2 != 0.0:
+        x4_2 = x4_2 - a4_3 * x3_2
+        x5_2 = x5_2 - a5_3 * x3_2
+    if x4_2 != 0.0:
+        x5_2 = x5_2 - a5_4 * x4_2
+    x5_2 = x5_2 * a5_5
+    x0_2 = x0_2 - a0_5 * x5_2
+    x1_2 = x1_2 - a1_5 * x5_2
+    x2_2 = x2_2 - a2_5 * x5_2
+    x3_2 = x3_2 - a3_5 * x5_2
+    x4_2 = x4_2 - a4_5 * x5_2
+    x4_2 = x4_2 * a4_4
+    x0_2 = x0_2 - a0_4 * x4_2
+    x1_2 = x1_2 - a1_4 * x4_2
+    x2_2 = x2_2 - a2_4 * x4_2
+    x3_2 = x3_2 - a3_4 * x4_2
+    x3_2 = x3_2 * a3_3
+    x0_2 = x0_2 - a0_3 * x3_2
+    x1_2 = x1_2 - a1_3 * x3_2
+    x2_2 = x2_2 - a2_3 * x3_2
+    x2_2 = x2_2 * a2_2
+    x0_2 = x0_2 - a0_2 * x2_2
+    x1_2 = x1_2 - a1_2 * x2_2
+    x1_2 = x1_2 * a1_1
+    x0_2 = x0_2 - a0_1 * x1_2
+    x0_2 = x0_2 * a0_0
+    x0_3, x1_3, x2_3, x3_3, x4_3, x5_3, = _UNIT6[inv[3]]
+    if x0_3 != 0.0:
+        x1_3 = x1_3 - a1_0 * x0_3
+        x2_3 = x2_3 - a2_0 * x0_3
+        x3_3 = x3_3 - a3_0 * x0_3
+        x4_3 = x4_3 - a4_0 * x0_3
+        x5_3 = x5_3 - a5_0 * x0_3
+    if x1_3 != 0.0:
+        x2_3 = x2_3 - a2_1 * x1_3
+        x3_3 = x3_3 - a3_1 * x1_3
+        x4_3 = x4_3 - a4_1 * x1_3
+        x5_3 = x5_3 - a5_1 * x1_3
+    if x2_3 != 0.0:
+        x3_3 = x3_3 - a3_2 * x2_3
+        x4_3 = x4_3 - a4_2 * x2_3
+        x5_3 = x5_3 - a5_2 * x2_3
+    if x3_3 != 0.0:
+        x4_3 = x4_3 - a4_3 * x3_3
+        x5_3 = x5_3 - a5_3 * x3_3
+    if x4_3 != 0.0:
+        x5_3 = x5_3 - a5_4 * x4_3
+    x5_3 = x5_3 * a5_5
+    x0_3 = x0_3 - a0_5 * x5_3
+    x1_3 = x1_3 - a1_5 * x5_3
+    x2_3 = x2_3 - a2_5 * x5_3
+    x3_3 = x3_3 - a3_5 * x5_3
+    x4_3 = x4_3 - a4_5 * x5_3
+    x4_3 = x4_3 * a4_4
+    x0_3 = x0_3 - a0_4 * x4_3
+    x1_3 = x1_3 - a1_4 * x4_3
+    x2_3 = x2_3 - a2_4 * x4_3
+    x3_3 = x3_3 - a3_4 * x4_3
+    x3_3 = x3_3 * a3_3
+    x0_3 = x0_3 - a0_3 * x3_3
+    x1_3 = x1_3 - a1_3 * x3_3
+    x2_3 = x2_3 - a2_3 * x3_3
+    x2_3 = x2_3 * a2_2
+    x0_3 = x0_3 - a0_2 * x2_3
+    x1_3 = x1_3 - a1_2 * x2_3
+    x1_3 = x1_3 * a1_1
+    x0_3 = x0_3 - a0_1 * x1_3
+    x0_3 = x0_3 * a0_0
+    x0_4, x1_4, x2_4, x3_4, x4_4, x5_4, = _UNIT6[inv[4]]
+    if x0_4 != 0.0:
+        x1_4 = x1_4 - a1_0 * x0_4
+        x2_4 = x2_4 - a2_0 * x0_4
+        x3_4 = x3_4 - a3_0 * x0_4
+        x4_4 = x4_4 - a4_0 * x0_4
+        x5_4 = x5_4 - a5_0 * x0_4
+    if x1_4 != 0.0:
+        x2_4 = x2_4 - a2_1 * x1_4
+        x3_4 = x3_4 - a3_1 * x1_4
+        x4_4 = x4_4 - a4_1 * x1_4
+        x5_4 = x5_4 - a5_1 * x1_4
+    if x2_4 != 0.0:
+        x3_4 = x3_4 - a3_2 * x2_4
+        x4_4 = x4_4 - a4_2 * x2_4
+        x5_4 = x5_4 - a5_2 * x2_4
+    if x3_4 != 0.0:
+        x4_4 = x4_4 - a4_3 * x3_4
+        x5_4 = x5_4 - a5_3 * x3_4
+    if x4_4 != 0.0:
+        x5_4 = x5_4 - a5_4 * x4_4
+    x5_4 = x5_4 * a5_5
+    x0_4 = x0_4 - a0_5 * x5_4
+    x1_4 = x1_4 - a1_5 * x5_4
+    x2_4 = x2_4 - a2_5 * x5_4
+    x3_4 = x3_4 - a3_5 * x5_4
+    x4_4 = x4_4 - a4_5 * x5_4
+    x4_4 = x4_4 * a4_4
+    x0_4 = x0_4 - a0_4 * x4_4
+    x1_4 = x1_4 - a1_4 * x4_4
+    x2_4 = x2_4 - a2_4 * x4_4
+    x3_4 = x3_4 - a3_4 * x4_4
+    x3_4 = x3_4 * a3_3
+    x0_4 = x0_4 - a0_3 * x3_4
+    x1_4 = x1_4 - a1_3 * x3_4
+    x2_4 = x2_4 - a2_3 * x3_4
+    x2_4 = x2_4 * a2_2
+    x0_4 = x0_4 - a0_2 * x2_4
+    x1_4 = x1_4 - a1_2 * x2_4
+    x1_4 = x1_4 * a1_1
+    x0_4 = x0_4 - a0_1 * x1_4
+    x0_4 = x0_4 * a0_0
+    x0_5, x1_5, x2_5, x3_5, x4_5, x5_5, = _UNIT6[inv[5]]
+    if x0_5 != 0.0:
+        x1_5 = x1_5 - a1_0 * x0_5
+        x2_5 = x2_5 - a2_0 * x0_5
+        x3_5 = x3_5 - a3_0 * x0_5
+        x4_5 = x4_5 - a4_0 * x0_5
+        x5_5 = x5_5 - a5_0 * x0_5
+    if x1_5 != 0.0:
+        x2_5 = x2_5 - a2_1 * x1_5
+        x3_5 = x3_5 - a3_1 * x1_5
+        x4_5 = x4_5 - a4_1 * x1_5
+        x5_5 = x5_5 - a5_1 * x1_5
+    if x2_5 != 0.0:
+        x3_5 = x3_5 - a3_2 * x2_5
+        x4_5 = x4_5 - a4_2 * x2_5
+        x5_5 = x5_5 - a5_2 * x2_5
+    if x3_5 != 0.0:
+        x4_5 = x4_5 - a4_3 * x3_5
+        x5_5 = x5_5 - a5_3 * x3_5
+    if x4_5 != 0.0:
+        x5_5 = x5_5 - a5_4 * x4_5
+    x5_5 = x5_5 * a5_5
+    x0_5 = x0_5 - a0_5 * x5_5
+    x1_5 = x1_5 - a1_5 * x5_5
+    x2_5 = x2_5 - a2_5 * x5_5
+    x3_5 = x3_5 - a3_5 * x5_5
+    x4_5 = x4_5 - a4_5 * x5_5
+    x4_5 = x4_5 * a4_4
+    x0_5 = x0_5 - a0_4 * x4_5
+    x1_5 = x1_5 - a1_4 * x4_5
+    x2_5 = x2_5 - a2_4 * x4_5
+    x3_5 = x3_5 - a3_4 * x4_5
+    x3_5 = x3_5 * a3_3
+    x0_5 = x0_5 - a0_3 * x3_5
+    x1_5 = x1_5 - a1_3 * x3_5
+    x2_5 = x2_5 - a2_3 * x3_5
+    x2_5 = x2_5 * a2_2
+    x0_5 = x0_5 - a0_2 * x2_5
+    x1_5 = x1_5 - a1_2 * x2_5
+    x1_5 = x1_5 * a1_1
+    x0_5 = x0_5 - a0_1 * x1_5
+    x0_5 = x0_5 * a0_0
+    X = (x0_0, x1_0, x2_0, x3_0, x4_0, x5_0, x0_1, x1_1, x2_1, x3_1, x4_1, x5_1, x0_2, x1_2, x2_2, x3_2, x4_2, x5_2, x0_3, x1_3, x2_3, x3_3, x4_3, x5_3, x0_4, x1_4, x2_4, x3_4, x4_4, x5_4, x0_5, x1_5, x2_5, x3_5, x4_5, x5_5,)
+    s = sum(X)
+    if not s - s == 0.0 and not all(map(_isfinite, X)):
+        return None
+    return dz, X
+
+
+def _lin_apply(f, F):
+    a0_0, a1_0, a2_0, a3_0, a4_0, a5_0, a0_1, a1_1, a2_1, a3_1, a4_1, a5_1, a0_2, a1_2, a2_2, a3_2, a4_2, a5_2, a0_3, a1_3, a2_3, a3_3, a4_3, a5_3, a0_4, a1_4, a2_4, a3_4, a4_4, a5_4, a0_5, a1_5, a2_5, a3_5, a4_5, a5_5, = f
+    c0, c1, c2, c3, c4, c5, = F
+    b0 = a0_0 * c0 + a0_1 * c1 + a0_2 * c2 + a0_3 * c3 + a0_4 * c4 + a0_5 * c5
+    b1 = a1_0 * c0 + a1_1 * c1 + a1_2 * c2 + a1_3 * c3 + a1_4 * c4 + a1_5 * c5
+    b2 = a2_0 * c0 + a2_1 * c1 + a2_2 * c2 + a2_3 * c3 + a2_4 * c4 + a2_5 * c5
+    b3 = a3_0 * c0 + a3_1 * c1 + a3_2 * c2 + a3_3 * c3 + a3_4 * c4 + a3_5 * c5
+    b4 = a4_0 * c0 + a4_1 * c1 + a4_2 * c2 + a4_3 * c3 + a4_4 * c4 + a4_5 * c5
+    b5 = a5_0 * c0 + a5_1 * c1 + a5_2 * c2 + a5_3 * c3 + a5_4 * c4 + a5_5 * c5
+    return [b0, b1, b2, b3, b4, b5]
+
+
+def _lin_update(f, F, z):
+    a0_0, a1_0, a2_0, a3_0, a4_0, a5_0, a0_1, a1_1, a2_1, a3_1, a4_1, a5_1, a0_2, a1_2, a2_2, a3_2, a4_2, a5_2, a0_3, a1_3, a2_3, a3_3, a4_3, a5_3, a0_4, a1_4, a2_4, a3_4, a4_4, a5_4, a0_5, a1_5, a2_5, a3_5, a4_5, a5_5, = f
+    c0, c1, c2, c3, c4, c5, = F
+    b0 = a0_0 * c0 + a0_1 * c1 + a0_2 * c2 + a0_3 * c3 + a0_4 * c4 + a0_5 * c5
+    b1 = a1_0 * c0 + a1_1 * c1 + a1_2 * c2 + a1_3 * c3 + a1_4 * c4 + a1_5 * c5
+    b2 = a2_0 * c0 + a2_1 * c1 + a2_2 * c2 + a2_3 * c3 + a2_4 * c4 + a2_5 * c5
+    b3 = a3_0 * c0 + a3_1 * c1 + a3_2 * c2 + a3_3 * c3 + a3_4 * c4 + a3_5 * c5
+    b4 = a4_0 * c0 + a4_1 * c1 + a4_2 * c2 + a4_3 * c3 + a4_4 * c4 + a4_5 * c5
+    b5 = a5_0 * c0 + a5_1 * c1 + a5_2 * c2 + a5_3 * c3 + a5_4 * c4 + a5_5 * c5
+    z0, z1, z2, z3, z4, z5, = z
+    z0 = z0 - b0
+    z1 = z1 - b1
+    z2 = z2 - b2
+    z3 = z3 - b3
+    z4 = z4 - b4
+    z5 = z5 - b5
+    s = b0 + b1 + b2 + b3 + b4 + b5
+    t = z0 + z1 + z2 + z3 + z4 + z5
+    if not (s - s == 0.0 and t - t == 0.0):
+        return None
+    dn = 0.0
+    t = b0 if b0 >= 0.0 else -b0
+    if t > dn:
+        dn = t
+    t = b1 if b1 >= 0.0 else -b1
+    if t > dn:
+        dn = t
+    t = b2 if b2 >= 0.0 else -b2
+    if t > dn:
+        dn = t
+    t = b3 if b3 >= 0.0 else -b3
+    if t > dn:
+        dn = t
+    t = b4 if b4 >= 0.0 else -b4
+    if t > dn:
+        dn = t
+    t = b5 if b5 >= 0.0 else -b5
+    if t > dn:
+        dn = t
+    zn = 0.0
+    t = z0 if z0 >= 0.0 else -z0
+    if t > zn:
+        zn = t
+    t = z1 if z1 >= 0.0 else -z1
+    if t > zn:
+        zn = t
+    t = z2 if z2 >= 0.0 else -z2
+    if t > zn:
+        zn = t
+    t = z3 if z3 >= 0.0 else -z3
+    if t > zn:
+        zn = t
+    t = z4 if z4 >= 0.0 else -z4
+    if t > zn:
+        zn = t
+    t = z5 if z5 >= 0.0 else -z5
+    if t > zn:
+        zn = t
+    return [z0, z1, z2, z3, z4, z5], dn, zn
+
+
+def _lin_finish(dz, z):
+    b0, b1, b2, b3, b4, b5, = dz
+    z0, z1, z2, z3, z4, z5, = z
+    z0 = z0 - b0
+    z1 = z1 - b1
+    z2 = z2 - b2
+    z3 = z3 - b3
+    z4 = z4 - b4
+    z5 = z5 - b5
+    s = b0 + b1 + b2 + b3 + b4 + b5
+    t = z0 + z1 + z2 + z3 + z4 + z5
+    if not (s - s == 0.0 and t - t == 0.0):
+        return None
+    dn = 0.0
+    t = b0 if b0 >= 0.0 else -b0
+    if t > dn:
+        dn = t
+    t = b1 if b1 >= 0.0 else -b1
+    if t > dn:
+        dn = t
+    t = b2 if b2 >= 0.0 else -b2
+    if t > dn:
+        dn = t
+    t = b3 if b3 >= 0.0 else -b3
+    if t > dn:
+        dn = t
+    t = b4 if b4 >= 0.0 else -b4
+    if t > dn:
+        dn = t
+    t = b5 if b5 >= 0.0 else -b5
+    if t > dn:
+        dn = t
+    zn = 0.0
+    t = z0 if z0 >= 0.0 else -z0
+    if t > zn:
+        zn = t
+    t = z1 if z1 >= 0.0 else -z1
+    if t > zn:
+        zn = t
+    t = z2 if z2 >= 0.0 else -z2
+    if t > zn:
+        zn = t
+    t = z3 if z3 >= 0.0 else -z3
+    if t > zn:
+        zn = t
+    t = z4 if z4 >= 0.0 else -z4
+    if t > zn:
+        zn = t
+    t = z5 if z5 >= 0.0 else -z5
+    if t > zn:
+        zn = t
+    return [z0, z1, z2, z3, z4, z5], dn, zn
+
+LINEAR = (_lin_factor_solve, _lin_apply, _lin_update, _lin_finish)

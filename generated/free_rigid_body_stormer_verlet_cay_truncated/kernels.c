@@ -3,7 +3,7 @@
  * model: free_rigid_body
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: cd778340fac0d9651a8d8f3395dc442cb5048971248c03505ddf2541482f9684
+ * content hash: 86a298713bdc7e0bde85770e513537d9c086499b0fc10b0831ebbafb1ee4b7d8
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -46,6 +46,7 @@
 #define casadi_f1 CASADI_PREFIX(f1)
 #define casadi_f10 CASADI_PREFIX(f10)
 #define casadi_f11 CASADI_PREFIX(f11)
+#define casadi_f12 CASADI_PREFIX(f12)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -1807,6 +1808,252 @@ CASADI_SYMBOL_EXPORT int chart_point_work_bytes(casadi_int *sz_arg, casadi_int* 
   return 0;
 }
 
+/* observe:(g[9],p[3])->(xi[3],E,m[3],e) */
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17;
+  a00=arg[1]? arg[1][0] : 0;
+  a01=2.;
+  a01=(a00/a01);
+  if (res[0]!=0) res[0][0]=a01;
+  a02=arg[1]? arg[1][1] : 0;
+  if (res[0]!=0) res[0][1]=a02;
+  a03=arg[1]? arg[1][2] : 0;
+  a04=6.6666666666666663e-01;
+  a04=(a03/a04);
+  if (res[0]!=0) res[0][2]=a04;
+  a05=(a00*a01);
+  a06=casadi_sq(a02);
+  a05=(a05+a06);
+  a07=(a03*a04);
+  a05=(a05+a07);
+  a07=5.0000000000000000e-01;
+  a07=(a07*a06);
+  a01=casadi_sq(a01);
+  a07=(a07+a01);
+  a01=3.3333333333333331e-01;
+  a04=casadi_sq(a04);
+  a01=(a01*a04);
+  a07=(a07+a01);
+  a05=(a05-a07);
+  if (res[1]!=0) res[1][0]=a05;
+  a05=arg[0]? arg[0][8] : 0;
+  a07=arg[0]? arg[0][4] : 0;
+  a01=(a05*a07);
+  a04=arg[0]? arg[0][7] : 0;
+  a06=arg[0]? arg[0][5] : 0;
+  a08=(a04*a06);
+  a01=(a01-a08);
+  a01=(a01*a00);
+  a09=arg[0]? arg[0][2] : 0;
+  a10=(a09*a04);
+  a11=arg[0]? arg[0][1] : 0;
+  a12=(a11*a05);
+  a10=(a10-a12);
+  a10=(a10*a02);
+  a01=(a01+a10);
+  a10=(a06*a11);
+  a13=(a07*a09);
+  a10=(a10-a13);
+  a10=(a10*a03);
+  a01=(a01+a10);
+  if (res[2]!=0) res[2][0]=a01;
+  a01=arg[0]? arg[0][6] : 0;
+  a10=(a01*a06);
+  a14=arg[0]? arg[0][3] : 0;
+  a15=(a05*a14);
+  a10=(a10-a15);
+  a10=(a10*a00);
+  a15=arg[0]? arg[0][0] : 0;
+  a16=(a15*a05);
+  a17=(a09*a01);
+  a16=(a16-a17);
+  a16=(a16*a02);
+  a10=(a10+a16);
+  a16=(a14*a09);
+  a17=(a06*a15);
+  a16=(a16-a17);
+  a16=(a16*a03);
+  a10=(a10+a16);
+  if (res[2]!=0) res[2][1]=a10;
+  a10=(a04*a14);
+  a16=(a01*a07);
+  a10=(a10-a16);
+  a10=(a10*a00);
+  a00=(a11*a01);
+  a16=(a15*a04);
+  a00=(a00-a16);
+  a00=(a00*a02);
+  a10=(a10+a00);
+  a00=(a07*a15);
+  a02=(a14*a11);
+  a00=(a00-a02);
+  a00=(a00*a03);
+  a10=(a10+a00);
+  if (res[2]!=0) res[2][2]=a10;
+  a10=casadi_sq(a15);
+  a00=casadi_sq(a11);
+  a10=(a10+a00);
+  a00=casadi_sq(a09);
+  a10=(a10+a00);
+  a00=1.;
+  a10=(a10-a00);
+  a10=casadi_fabs(a10);
+  a03=(a14*a15);
+  a02=(a07*a11);
+  a03=(a03+a02);
+  a02=(a06*a09);
+  a03=(a03+a02);
+  a03=casadi_fabs(a03);
+  a10=casadi_fmax(a10,a03);
+  a03=(a01*a15);
+  a02=(a04*a11);
+  a03=(a03+a02);
+  a02=(a05*a09);
+  a03=(a03+a02);
+  a03=casadi_fabs(a03);
+  a10=casadi_fmax(a10,a03);
+  a03=(a15*a14);
+  a02=(a11*a07);
+  a03=(a03+a02);
+  a02=(a09*a06);
+  a03=(a03+a02);
+  a03=casadi_fabs(a03);
+  a10=casadi_fmax(a10,a03);
+  a03=casadi_sq(a14);
+  a02=casadi_sq(a07);
+  a03=(a03+a02);
+  a02=casadi_sq(a06);
+  a03=(a03+a02);
+  a03=(a03-a00);
+  a03=casadi_fabs(a03);
+  a10=casadi_fmax(a10,a03);
+  a03=(a01*a14);
+  a02=(a04*a07);
+  a03=(a03+a02);
+  a02=(a05*a06);
+  a03=(a03+a02);
+  a03=casadi_fabs(a03);
+  a10=casadi_fmax(a10,a03);
+  a03=(a15*a01);
+  a02=(a11*a04);
+  a03=(a03+a02);
+  a02=(a09*a05);
+  a03=(a03+a02);
+  a03=casadi_fabs(a03);
+  a10=casadi_fmax(a10,a03);
+  a03=(a14*a01);
+  a02=(a07*a04);
+  a03=(a03+a02);
+  a02=(a06*a05);
+  a03=(a03+a02);
+  a03=casadi_fabs(a03);
+  a10=casadi_fmax(a10,a03);
+  a03=casadi_sq(a01);
+  a02=casadi_sq(a04);
+  a03=(a03+a02);
+  a02=casadi_sq(a05);
+  a03=(a03+a02);
+  a03=(a03-a00);
+  a03=casadi_fabs(a03);
+  a10=casadi_fmax(a10,a03);
+  a07=(a07*a05);
+  a07=(a07-a08);
+  a15=(a15*a07);
+  a04=(a04*a09);
+  a12=(a12-a04);
+  a14=(a14*a12);
+  a15=(a15-a14);
+  a11=(a11*a06);
+  a11=(a11-a13);
+  a01=(a01*a11);
+  a15=(a15+a01);
+  a15=(a15-a00);
+  a15=casadi_fabs(a15);
+  a10=casadi_fmax(a10,a15);
+  if (res[3]!=0) res[3][0]=a10;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int observe(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f12(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int observe_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void observe_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void observe_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void observe_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int observe_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int observe_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real observe_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* observe_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* observe_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "xi";
+    case 1: return "E";
+    case 2: return "m";
+    case 3: return "e";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* observe_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* observe_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    case 3: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int observe_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int observe_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
 
 
 /* ======================= end of CasADi-generated code =================================== */
@@ -1868,7 +2115,7 @@ typedef struct hpgen_run {
     long long s_valid;
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "cd778340fac0d9651a8d8f3395dc442cb5048971248c03505ddf2541482f9684"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "86a298713bdc7e0bde85770e513537d9c086499b0fc10b0831ebbafb1ee4b7d8"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -1888,6 +2135,7 @@ static int hpgen_k_defect(const double* in0, double* out0);
 static int hpgen_k_margin(const double* in0, const double* in1, double* out0);
 static int hpgen_k_section(const double* in0, const double* in1, double* out0);
 static int hpgen_k_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_observe(const double* in0, const double* in1, double* out0, double* out1, double* out2, double* out3);
 
 /* residual(z[3], g[9], p[3], h[1]) -> (F[3]) */
 #define HPGEN_RESIDUAL_SZ_ARG 4
@@ -2206,6 +2454,34 @@ static int hpgen_k_chart_point(const double* in0, const double* in1, const doubl
 
 HPGEN_EXPORT int hpgen_kernel_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
     return hpgen_k_chart_point(in0, in1, in2, in3, out0);
+}
+
+/* observe(g[9], p[3]) -> (xi[3], E[1], m[3], e[1]) */
+#define HPGEN_OBSERVE_SZ_ARG 2
+#define HPGEN_OBSERVE_SZ_RES 4
+#define HPGEN_OBSERVE_SZ_IW 0
+#define HPGEN_OBSERVE_SZ_W 18
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_observe exports it */
+static int hpgen_k_observe(const double* in0, const double* in1, double* out0, double* out1, double* out2, double* out3) {
+    const casadi_real* arg[HPGEN_OBSERVE_SZ_ARG + 1];
+    casadi_real* res[HPGEN_OBSERVE_SZ_RES + 1];
+    casadi_int iw[HPGEN_OBSERVE_SZ_IW + 1];
+    casadi_real w[HPGEN_OBSERVE_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    res[0] = out0;
+    res[1] = out1;
+    res[2] = out2;
+    res[3] = out3;
+    flag = observe(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_observe(const double* in0, const double* in1, double* out0, double* out1, double* out2, double* out3) {
+    return hpgen_k_observe(in0, in1, out0, out1, out2, out3);
 }
 
 /* ---- dense linear algebra and Newton ---- */
@@ -2637,6 +2913,23 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
     }
     st->step = r->k;
     return n;
+}
+
+/* Observables of K records (g_rec[k * NN], p_rec[k * D], as hpgen_advance writes them):
+   kernel observe per record -> xi_out[k * D], E_out[k], m_out[k * D], e_out[k]. Returns the
+   first record whose outputs are not finite, or K. */
+HPGEN_EXPORT long long hpgen_observe(long long K, const double* g_rec, const double* p_rec,
+                                     double* xi_out, double* E_out, double* m_out,
+                                     double* e_out) {
+    long long k;
+    for (k = 0; k < K; ++k) {
+        double* xi = xi_out + k * HPGEN_D;
+        double* m = m_out + k * HPGEN_D;
+        if (hpgen_k_observe(g_rec + k * HPGEN_NN, p_rec + k * HPGEN_D, xi, E_out + k, m,
+                            e_out + k)
+            || !hpgen_all_finite(xi, HPGEN_D) || !isfinite(E_out[k])) return k;
+    }
+    return K;
 }
 
 /* Advance B independent runs (runs[0..B-1]) by `steps` steps each, one after the other,

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: cd778340fac0d9651a8d8f3395dc442cb5048971248c03505ddf2541482f9684
+# content hash: 86a298713bdc7e0bde85770e513537d9c086499b0fc10b0831ebbafb1ee4b7d8
 """Python backend of the hpgen module free_rigid_body_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -961,6 +961,216 @@ def chart_point(z, g, h, theta):
     return [_fromiter(_r[0], _F64, 9)]
 
 
+def _raw_observe(g, p):
+    """observe on lists of Python floats -> [xi[3], E[1], m[3], e[1]] as lists (see RAW)"""
+    try:
+        w8, w5, w4, w7, w1, w3, w6, w2, w0 = g
+        w9, w10, w11 = p
+        r0 = [0.0] * 3
+        r1 = [0.0] * 1
+        r2 = [0.0] * 3
+        r3 = [0.0] * 1
+        w12 = w9 * 0.5
+        r0[0] = w12
+        r0[1] = w10
+        w13 = w11 / 0.6666666666666666
+        r0[2] = w13
+        w14 = w10 * w10
+        r1[0] = (((w9 * w12) + w14) + (w11 * w13)) - (((0.5 * w14) + (w12 * w12)) + (0.3333333333333333 * (w13 * w13)))
+        w12 = (w0 * w1) - (w2 * w3)
+        w13 = w4 * w2
+        w14 = w5 * w0
+        w15 = (w3 * w5) - (w1 * w4)
+        r2[0] = ((w12 * w9) + ((w13 - w14) * w10)) + (w15 * w11)
+        r2[1] = ((((w6 * w3) - (w0 * w7)) * w9) + (((w8 * w0) - (w4 * w6)) * w10)) + (((w7 * w4) - (w3 * w8)) * w11)
+        r2[2] = ((((w2 * w7) - (w6 * w1)) * w9) + (((w5 * w6) - (w8 * w2)) * w10)) + (((w1 * w8) - (w7 * w5)) * w11)
+        w9 = _f_fabs((((w7 * w8) + (w1 * w5)) + (w3 * w4)))
+        w10 = _f_fabs((((w6 * w8) + (w2 * w5)) + (w0 * w4)))
+        w11 = _f_fabs((((w6 * w7) + (w2 * w1)) + (w0 * w3)))
+        r3[0] = _fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_f_fabs(((((w8 * w8) + (w5 * w5)) + (w4 * w4)) - 1.0))), w9)), w10)), w9)), (_f_fabs(((((w7 * w7) + (w1 * w1)) + (w3 * w3)) - 1.0))))), w11)), w10)), w11)), (_f_fabs(((((w6 * w6) + (w2 * w2)) + (w0 * w0)) - 1.0))))), (_f_fabs(((((w8 * w12) - (w7 * (w14 - w13))) + (w6 * w15)) - 1.0))))
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 3
+        r1 = [0.0] * 1
+        r2 = [0.0] * 3
+        r3 = [0.0] * 1
+        w0 = p[0]
+        w1 = 2.0
+        w1 = w0 / w1 if w1 else _div(w0, w1)
+        r0[0] = w1
+        w2 = p[1]
+        r0[1] = w2
+        w3 = p[2]
+        w4 = 0.6666666666666666
+        w4 = w3 / w4 if w4 else _div(w3, w4)
+        r0[2] = w4
+        w5 = w0 * w1
+        w6 = w2 * w2
+        w5 = w5 + w6
+        w7 = w3 * w4
+        w5 = w5 + w7
+        w7 = 0.5
+        w7 = w7 * w6
+        w1 = w1 * w1
+        w7 = w7 + w1
+        w1 = 0.3333333333333333
+        w4 = w4 * w4
+        w1 = w1 * w4
+        w7 = w7 + w1
+        w5 = w5 - w7
+        r1[0] = w5
+        w5 = g[8]
+        w7 = g[4]
+        w1 = w5 * w7
+        w4 = g[7]
+        w6 = g[5]
+        w8 = w4 * w6
+        w1 = w1 - w8
+        w1 = w1 * w0
+        w9 = g[2]
+        w10 = w9 * w4
+        w11 = g[1]
+        w12 = w11 * w5
+        w10 = w10 - w12
+        w10 = w10 * w2
+        w1 = w1 + w10
+        w10 = w6 * w11
+        w13 = w7 * w9
+        w10 = w10 - w13
+        w10 = w10 * w3
+        w1 = w1 + w10
+        r2[0] = w1
+        w1 = g[6]
+        w10 = w1 * w6
+        w14 = g[3]
+        w15 = w5 * w14
+        w10 = w10 - w15
+        w10 = w10 * w0
+        w15 = g[0]
+        w16 = w15 * w5
+        w17 = w9 * w1
+        w16 = w16 - w17
+        w16 = w16 * w2
+        w10 = w10 + w16
+        w16 = w14 * w9
+        w17 = w6 * w15
+        w16 = w16 - w17
+        w16 = w16 * w3
+        w10 = w10 + w16
+        r2[1] = w10
+        w10 = w4 * w14
+        w16 = w1 * w7
+        w10 = w10 - w16
+        w10 = w10 * w0
+        w0 = w11 * w1
+        w16 = w15 * w4
+        w0 = w0 - w16
+        w0 = w0 * w2
+        w10 = w10 + w0
+        w0 = w7 * w15
+        w2 = w14 * w11
+        w0 = w0 - w2
+        w0 = w0 * w3
+        w10 = w10 + w0
+        r2[2] = w10
+        w10 = w15 * w15
+        w0 = w11 * w11
+        w10 = w10 + w0
+        w0 = w9 * w9
+        w10 = w10 + w0
+        w0 = 1.0
+        w10 = w10 - w0
+        w10 = math.fabs(w10)
+        w3 = w14 * w15
+        w2 = w7 * w11
+        w3 = w3 + w2
+        w2 = w6 * w9
+        w3 = w3 + w2
+        w3 = math.fabs(w3)
+        w10 = _fmax(w10, w3)
+        w3 = w1 * w15
+        w2 = w4 * w11
+        w3 = w3 + w2
+        w2 = w5 * w9
+        w3 = w3 + w2
+        w3 = math.fabs(w3)
+        w10 = _fmax(w10, w3)
+        w3 = w15 * w14
+        w2 = w11 * w7
+        w3 = w3 + w2
+        w2 = w9 * w6
+        w3 = w3 + w2
+        w3 = math.fabs(w3)
+        w10 = _fmax(w10, w3)
+        w3 = w14 * w14
+        w2 = w7 * w7
+        w3 = w3 + w2
+        w2 = w6 * w6
+        w3 = w3 + w2
+        w3 = w3 - w0
+        w3 = math.fabs(w3)
+        w10 = _fmax(w10, w3)
+        w3 = w1 * w14
+        w2 = w4 * w7
+        w3 = w3 + w2
+        w2 = w5 * w6
+        w3 = w3 + w2
+        w3 = math.fabs(w3)
+        w10 = _fmax(w10, w3)
+        w3 = w15 * w1
+        w2 = w11 * w4
+        w3 = w3 + w2
+        w2 = w9 * w5
+        w3 = w3 + w2
+        w3 = math.fabs(w3)
+        w10 = _fmax(w10, w3)
+        w3 = w14 * w1
+        w2 = w7 * w4
+        w3 = w3 + w2
+        w2 = w6 * w5
+        w3 = w3 + w2
+        w3 = math.fabs(w3)
+        w10 = _fmax(w10, w3)
+        w3 = w1 * w1
+        w2 = w4 * w4
+        w3 = w3 + w2
+        w2 = w5 * w5
+        w3 = w3 + w2
+        w3 = w3 - w0
+        w3 = math.fabs(w3)
+        w10 = _fmax(w10, w3)
+        w7 = w7 * w5
+        w7 = w7 - w8
+        w15 = w15 * w7
+        w4 = w4 * w9
+        w12 = w12 - w4
+        w14 = w14 * w12
+        w15 = w15 - w14
+        w11 = w11 * w6
+        w11 = w11 - w13
+        w1 = w1 * w11
+        w15 = w15 + w1
+        w15 = w15 - w0
+        w15 = math.fabs(w15)
+        w10 = _fmax(w10, w15)
+        r3[0] = w10
+    return [r0, r1, r2, r3]
+
+
+def observe(g, p):
+    """observe(g[9], p[3]) -> [xi[3], E[1], m[3], e[1]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "observe: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (3,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 3, "observe: p")
+    _r = _raw_observe(g, p)
+    return [_fromiter(_r[0], _F64, 3), _fromiter(_r[1], _F64, 1), _fromiter(_r[2], _F64, 3), _fromiter(_r[3], _F64, 1)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -975,6 +1185,7 @@ KERNELS = {
     "margin": margin,
     "section": section,
     "chart_point": chart_point,
+    "observe": observe,
 }
 
 RAW = {
@@ -991,4 +1202,114 @@ RAW = {
     "margin": _raw_margin,
     "section": _raw_section,
     "chart_point": _raw_chart_point,
+    "observe": _raw_observe,
 }
+
+
+# ---- Newton's linear algebra for NZ (hpgen.codegen.pylinear: straight-line Python, the C
+# template's operations in the same order), used by hpgen.runtime.newton ----
+_isfinite = math.isfinite
+_UNIT3 = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+
+
+def _lin_factor_solve(J, F, keep):
+    j00, j10, j20, j01, j11, j21, j02, j12, j22 = J
+    b0, b1, b2 = F
+    c00 = j11 * j22 - j12 * j21
+    c01 = j12 * j20 - j10 * j22
+    c02 = j10 * j21 - j11 * j20
+    c10 = j02 * j21 - j01 * j22
+    c11 = j00 * j22 - j02 * j20
+    c12 = j01 * j20 - j00 * j21
+    c20 = j01 * j12 - j02 * j11
+    c21 = j02 * j10 - j00 * j12
+    c22 = j00 * j11 - j01 * j10
+    det = j00 * c00 + j01 * c01 + j02 * c02
+    x0 = c00 * b0 + c10 * b1 + c20 * b2
+    x1 = c01 * b0 + c11 * b1 + c21 * b2
+    x2 = c02 * b0 + c12 * b1 + c22 * b2
+    if not det != 0.0 or not _isfinite(det):
+        return None
+    r = 1.0 / det
+    return [x0 * r, x1 * r, x2 * r], (c00 * r, c01 * r, c02 * r, c10 * r, c11 * r, c12 * r, c20 * r, c21 * r, c22 * r)
+
+
+def _lin_apply(f, F):
+    a0_0, a1_0, a2_0, a0_1, a1_1, a2_1, a0_2, a1_2, a2_2, = f
+    c0, c1, c2, = F
+    b0 = a0_0 * c0 + a0_1 * c1 + a0_2 * c2
+    b1 = a1_0 * c0 + a1_1 * c1 + a1_2 * c2
+    b2 = a2_0 * c0 + a2_1 * c1 + a2_2 * c2
+    return [b0, b1, b2]
+
+
+def _lin_update(f, F, z):
+    a0_0, a1_0, a2_0, a0_1, a1_1, a2_1, a0_2, a1_2, a2_2, = f
+    c0, c1, c2, = F
+    b0 = a0_0 * c0 + a0_1 * c1 + a0_2 * c2
+    b1 = a1_0 * c0 + a1_1 * c1 + a1_2 * c2
+    b2 = a2_0 * c0 + a2_1 * c1 + a2_2 * c2
+    z0, z1, z2, = z
+    z0 = z0 - b0
+    z1 = z1 - b1
+    z2 = z2 - b2
+    s = b0 + b1 + b2
+    t = z0 + z1 + z2
+    if not (s - s == 0.0 and t - t == 0.0):
+        return None
+    dn = 0.0
+    t = b0 if b0 >= 0.0 else -b0
+    if t > dn:
+        dn = t
+    t = b1 if b1 >= 0.0 else -b1
+    if t > dn:
+        dn = t
+    t = b2 if b2 >= 0.0 else -b2
+    if t > dn:
+        dn = t
+    zn = 0.0
+    t = z0 if z0 >= 0.0 else -z0
+    if t > zn:
+        zn = t
+    t = z1 if z1 >= 0.0 else -z1
+    if t > zn:
+        zn = t
+    t = z2 if z2 >= 0.0 else -z2
+    if t > zn:
+        zn = t
+    return [z0, z1, z2], dn, zn
+
+
+def _lin_finish(dz, z):
+    b0, b1, b2, = dz
+    z0, z1, z2, = z
+    z0 = z0 - b0
+    z1 = z1 - b1
+    z2 = z2 - b2
+    s = b0 + b1 + b2
+    t = z0 + z1 + z2
+    if not (s - s == 0.0 and t - t == 0.0):
+        return None
+    dn = 0.0
+    t = b0 if b0 >= 0.0 else -b0
+    if t > dn:
+        dn = t
+    t = b1 if b1 >= 0.0 else -b1
+    if t > dn:
+        dn = t
+    t = b2 if b2 >= 0.0 else -b2
+    if t > dn:
+        dn = t
+    zn = 0.0
+    t = z0 if z0 >= 0.0 else -z0
+    if t > zn:
+        zn = t
+    t = z1 if z1 >= 0.0 else -z1
+    if t > zn:
+        zn = t
+    t = z2 if z2 >= 0.0 else -z2
+    if t > zn:
+        zn = t
+    return [z0, z1, z2], dn, zn
+
+LINEAR = (_lin_factor_solve, _lin_apply, _lin_update, _lin_finish)

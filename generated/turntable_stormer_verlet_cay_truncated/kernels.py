@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: cbf3ed60df4e1dd6e4f93c7712713daf2e442c0f327521e2eeab7d1abe7ac562
+# content hash: afea0f803709e760e3e3e6cd82f09e7f521679b22d34750be396c527e263a322
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -4493,6 +4493,239 @@ def chart_point(z, g, h, theta):
     return [_fromiter(_r[0], _F64, 9)]
 
 
+def _raw_observe(g, p):
+    """observe on lists of Python floats -> [xi[3], E[1], m[3], e[1]] as lists (see RAW)"""
+    try:
+        w8, w5, w0, w7, w3, w1, w6, w4, w2 = g
+        w9, w10, w11 = p
+        r0 = [0.0] * 3
+        r1 = [0.0] * 1
+        r2 = [0.0] * 3
+        r3 = [0.0] * 1
+        w12 = (w9 - w0) * 0.5
+        r0[0] = w12
+        w13 = w10 - (0.5 * w1)
+        r0[1] = w13
+        w14 = (w11 - (0.3333333333333333 * w2)) / 0.6666666666666666
+        r0[2] = w14
+        w15 = w12 + (0.5 * w0)
+        w16 = w14 + (0.5 * w2)
+        r1[0] = ((((2.0 * w15) * w12) + (w10 * w13)) + ((0.6666666666666666 * w16) * w14)) - ((((((0.5 * (w10 * w10)) + (w15 * w15)) + (0.06 * w1)) + (0.3333333333333333 * (w16 * w16))) + ((-0.09) * w0)) + ((-0.15) * w2))
+        w12 = (w2 * w3) - (w4 * w1)
+        w13 = w0 * w4
+        w14 = w5 * w2
+        w15 = (w1 * w5) - (w3 * w0)
+        r2[0] = ((w12 * w9) + ((w13 - w14) * w10)) + (w15 * w11)
+        r2[1] = ((((w6 * w1) - (w2 * w7)) * w9) + (((w8 * w2) - (w0 * w6)) * w10)) + (((w7 * w0) - (w1 * w8)) * w11)
+        r2[2] = ((((w4 * w7) - (w6 * w3)) * w9) + (((w5 * w6) - (w8 * w4)) * w10)) + (((w3 * w8) - (w7 * w5)) * w11)
+        w9 = _f_fabs((((w7 * w8) + (w3 * w5)) + (w1 * w0)))
+        w10 = _f_fabs((((w6 * w8) + (w4 * w5)) + (w2 * w0)))
+        w11 = _f_fabs((((w6 * w7) + (w4 * w3)) + (w2 * w1)))
+        r3[0] = _fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_f_fabs(((((w8 * w8) + (w5 * w5)) + (w0 * w0)) - 1.0))), w9)), w10)), w9)), (_f_fabs(((((w7 * w7) + (w3 * w3)) + (w1 * w1)) - 1.0))))), w11)), w10)), w11)), (_f_fabs(((((w6 * w6) + (w4 * w4)) + (w2 * w2)) - 1.0))))), (_f_fabs(((((w8 * w12) - (w7 * (w14 - w13))) + (w6 * w15)) - 1.0))))
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 3
+        r1 = [0.0] * 1
+        r2 = [0.0] * 3
+        r3 = [0.0] * 1
+        w0 = p[0]
+        w1 = g[2]
+        w2 = w0 - w1
+        w3 = 2.0
+        w2 = w2 / w3 if w3 else _div(w2, w3)
+        r0[0] = w2
+        w3 = p[1]
+        w4 = 0.5
+        w5 = g[5]
+        w6 = w4 * w5
+        w6 = w3 - w6
+        r0[1] = w6
+        w7 = p[2]
+        w8 = 0.3333333333333333
+        w9 = g[8]
+        w10 = w8 * w9
+        w10 = w7 - w10
+        w11 = 0.6666666666666666
+        w10 = w10 / w11 if w11 else _div(w10, w11)
+        r0[2] = w10
+        w12 = w4 * w1
+        w12 = w2 + w12
+        w13 = 2.0 * w12
+        w13 = w13 * w2
+        w6 = w3 * w6
+        w13 = w13 + w6
+        w6 = w4 * w9
+        w6 = w10 + w6
+        w11 = w11 * w6
+        w11 = w11 * w10
+        w13 = w13 + w11
+        w11 = w3 * w3
+        w4 = w4 * w11
+        w12 = w12 * w12
+        w4 = w4 + w12
+        w12 = 0.06
+        w12 = w12 * w5
+        w4 = w4 + w12
+        w6 = w6 * w6
+        w8 = w8 * w6
+        w4 = w4 + w8
+        w8 = -0.09
+        w8 = w8 * w1
+        w4 = w4 + w8
+        w8 = -0.15
+        w8 = w8 * w9
+        w4 = w4 + w8
+        w13 = w13 - w4
+        r1[0] = w13
+        w13 = g[4]
+        w4 = w9 * w13
+        w8 = g[7]
+        w6 = w8 * w5
+        w4 = w4 - w6
+        w4 = w4 * w0
+        w12 = w1 * w8
+        w11 = g[1]
+        w10 = w11 * w9
+        w12 = w12 - w10
+        w12 = w12 * w3
+        w4 = w4 + w12
+        w12 = w5 * w11
+        w2 = w13 * w1
+        w12 = w12 - w2
+        w12 = w12 * w7
+        w4 = w4 + w12
+        r2[0] = w4
+        w4 = g[6]
+        w12 = w4 * w5
+        w14 = g[3]
+        w15 = w9 * w14
+        w12 = w12 - w15
+        w12 = w12 * w0
+        w15 = g[0]
+        w16 = w15 * w9
+        w17 = w1 * w4
+        w16 = w16 - w17
+        w16 = w16 * w3
+        w12 = w12 + w16
+        w16 = w14 * w1
+        w17 = w5 * w15
+        w16 = w16 - w17
+        w16 = w16 * w7
+        w12 = w12 + w16
+        r2[1] = w12
+        w12 = w8 * w14
+        w16 = w4 * w13
+        w12 = w12 - w16
+        w12 = w12 * w0
+        w0 = w11 * w4
+        w16 = w15 * w8
+        w0 = w0 - w16
+        w0 = w0 * w3
+        w12 = w12 + w0
+        w0 = w13 * w15
+        w3 = w14 * w11
+        w0 = w0 - w3
+        w0 = w0 * w7
+        w12 = w12 + w0
+        r2[2] = w12
+        w12 = w15 * w15
+        w0 = w11 * w11
+        w12 = w12 + w0
+        w0 = w1 * w1
+        w12 = w12 + w0
+        w0 = 1.0
+        w12 = w12 - w0
+        w12 = math.fabs(w12)
+        w7 = w14 * w15
+        w3 = w13 * w11
+        w7 = w7 + w3
+        w3 = w5 * w1
+        w7 = w7 + w3
+        w7 = math.fabs(w7)
+        w12 = _fmax(w12, w7)
+        w7 = w4 * w15
+        w3 = w8 * w11
+        w7 = w7 + w3
+        w3 = w9 * w1
+        w7 = w7 + w3
+        w7 = math.fabs(w7)
+        w12 = _fmax(w12, w7)
+        w7 = w15 * w14
+        w3 = w11 * w13
+        w7 = w7 + w3
+        w3 = w1 * w5
+        w7 = w7 + w3
+        w7 = math.fabs(w7)
+        w12 = _fmax(w12, w7)
+        w7 = w14 * w14
+        w3 = w13 * w13
+        w7 = w7 + w3
+        w3 = w5 * w5
+        w7 = w7 + w3
+        w7 = w7 - w0
+        w7 = math.fabs(w7)
+        w12 = _fmax(w12, w7)
+        w7 = w4 * w14
+        w3 = w8 * w13
+        w7 = w7 + w3
+        w3 = w9 * w5
+        w7 = w7 + w3
+        w7 = math.fabs(w7)
+        w12 = _fmax(w12, w7)
+        w7 = w15 * w4
+        w3 = w11 * w8
+        w7 = w7 + w3
+        w3 = w1 * w9
+        w7 = w7 + w3
+        w7 = math.fabs(w7)
+        w12 = _fmax(w12, w7)
+        w7 = w14 * w4
+        w3 = w13 * w8
+        w7 = w7 + w3
+        w3 = w5 * w9
+        w7 = w7 + w3
+        w7 = math.fabs(w7)
+        w12 = _fmax(w12, w7)
+        w7 = w4 * w4
+        w3 = w8 * w8
+        w7 = w7 + w3
+        w3 = w9 * w9
+        w7 = w7 + w3
+        w7 = w7 - w0
+        w7 = math.fabs(w7)
+        w12 = _fmax(w12, w7)
+        w13 = w13 * w9
+        w13 = w13 - w6
+        w15 = w15 * w13
+        w8 = w8 * w1
+        w10 = w10 - w8
+        w14 = w14 * w10
+        w15 = w15 - w14
+        w11 = w11 * w5
+        w11 = w11 - w2
+        w4 = w4 * w11
+        w15 = w15 + w4
+        w15 = w15 - w0
+        w15 = math.fabs(w15)
+        w12 = _fmax(w12, w15)
+        r3[0] = w12
+    return [r0, r1, r2, r3]
+
+
+def observe(g, p):
+    """observe(g[9], p[3]) -> [xi[3], E[1], m[3], e[1]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "observe: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (3,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 3, "observe: p")
+    _r = _raw_observe(g, p)
+    return [_fromiter(_r[0], _F64, 3), _fromiter(_r[1], _F64, 1), _fromiter(_r[2], _F64, 3), _fromiter(_r[3], _F64, 1)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -4507,6 +4740,7 @@ KERNELS = {
     "margin": margin,
     "section": section,
     "chart_point": chart_point,
+    "observe": observe,
 }
 
 RAW = {
@@ -4523,4 +4757,656 @@ RAW = {
     "margin": _raw_margin,
     "section": _raw_section,
     "chart_point": _raw_chart_point,
+    "observe": _raw_observe,
 }
+
+
+# ---- Newton's linear algebra for NZ (hpgen.codegen.pylinear: straight-line Python, the C
+# template's operations in the same order), used by hpgen.runtime.newton ----
+_isfinite = math.isfinite
+_UNIT6 = ((1.0, 0.0, 0.0, 0.0, 0.0, 0.0), (0.0, 1.0, 0.0, 0.0, 0.0, 0.0), (0.0, 0.0, 1.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0, 1.0, 0.0), (0.0, 0.0, 0.0, 0.0, 0.0, 1.0))
+
+
+def _lin_factor_solve(J, F, keep):
+    s = sum(J)
+    if not s - s == 0.0 and not all(map(_isfinite, J)):
+        return None
+    a0_0, a1_0, a2_0, a3_0, a4_0, a5_0, a0_1, a1_1, a2_1, a3_1, a4_1, a5_1, a0_2, a1_2, a2_2, a3_2, a4_2, a5_2, a0_3, a1_3, a2_3, a3_3, a4_3, a5_3, a0_4, a1_4, a2_4, a3_4, a4_4, a5_4, a0_5, a1_5, a2_5, a3_5, a4_5, a5_5, = J
+    m = abs(a0_0)
+    q = 0
+    t = abs(a1_0)
+    if t > m:
+        m = t
+        q = 1
+    t = abs(a2_0)
+    if t > m:
+        m = t
+        q = 2
+    t = abs(a3_0)
+    if t > m:
+        m = t
+        q = 3
+    t = abs(a4_0)
+    if t > m:
+        m = t
+        q = 4
+    t = abs(a5_0)
+    if t > m:
+        m = t
+        q = 5
+    if m == 0.0:
+        return None
+    p0 = q
+    if q == 1:
+        a0_0, a0_1, a0_2, a0_3, a0_4, a0_5, a1_0, a1_1, a1_2, a1_3, a1_4, a1_5 = a1_0, a1_1, a1_2, a1_3, a1_4, a1_5, a0_0, a0_1, a0_2, a0_3, a0_4, a0_5
+    elif q == 2:
+        a0_0, a0_1, a0_2, a0_3, a0_4, a0_5, a2_0, a2_1, a2_2, a2_3, a2_4, a2_5 = a2_0, a2_1, a2_2, a2_3, a2_4, a2_5, a0_0, a0_1, a0_2, a0_3, a0_4, a0_5
+    elif q == 3:
+        a0_0, a0_1, a0_2, a0_3, a0_4, a0_5, a3_0, a3_1, a3_2, a3_3, a3_4, a3_5 = a3_0, a3_1, a3_2, a3_3, a3_4, a3_5, a0_0, a0_1, a0_2, a0_3, a0_4, a0_5
+    elif q == 4:
+        a0_0, a0_1, a0_2, a0_3, a0_4, a0_5, a4_0, a4_1, a4_2, a4_3, a4_4, a4_5 = a4_0, a4_1, a4_2, a4_3, a4_4, a4_5, a0_0, a0_1, a0_2, a0_3, a0_4, a0_5
+    elif q == 5:
+        a0_0, a0_1, a0_2, a0_3, a0_4, a0_5, a5_0, a5_1, a5_2, a5_3, a5_4, a5_5 = a5_0, a5_1, a5_2, a5_3, a5_4, a5_5, a0_0, a0_1, a0_2, a0_3, a0_4, a0_5
+    r = 1.0 / a0_0
+    a0_0 = r
+    a1_0 = a1_0 * r
+    a2_0 = a2_0 * r
+    a3_0 = a3_0 * r
+    a4_0 = a4_0 * r
+    a5_0 = a5_0 * r
+    if a0_1 != 0.0:
+        a1_1 = a1_1 - a1_0 * a0_1
+        a2_1 = a2_1 - a2_0 * a0_1
+        a3_1 = a3_1 - a3_0 * a0_1
+        a4_1 = a4_1 - a4_0 * a0_1
+        a5_1 = a5_1 - a5_0 * a0_1
+    if a0_2 != 0.0:
+        a1_2 = a1_2 - a1_0 * a0_2
+        a2_2 = a2_2 - a2_0 * a0_2
+        a3_2 = a3_2 - a3_0 * a0_2
+        a4_2 = a4_2 - a4_0 * a0_2
+        a5_2 = a5_2 - a5_0 * a0_2
+    if a0_3 != 0.0:
+        a1_3 = a1_3 - a1_0 * a0_3
+        a2_3 = a2_3 - a2_0 * a0_3
+        a3_3 = a3_3 - a3_0 * a0_3
+        a4_3 = a4_3 - a4_0 * a0_3
+        a5_3 = a5_3 - a5_0 * a0_3
+    if a0_4 != 0.0:
+        a1_4 = a1_4 - a1_0 * a0_4
+        a2_4 = a2_4 - a2_0 * a0_4
+        a3_4 = a3_4 - a3_0 * a0_4
+        a4_4 = a4_4 - a4_0 * a0_4
+        a5_4 = a5_4 - a5_0 * a0_4
+    if a0_5 != 0.0:
+        a1_5 = a1_5 - a1_0 * a0_5
+        a2_5 = a2_5 - a2_0 * a0_5
+        a3_5 = a3_5 - a3_0 * a0_5
+        a4_5 = a4_5 - a4_0 * a0_5
+        a5_5 = a5_5 - a5_0 * a0_5
+    m = abs(a1_1)
+    q = 1
+    t = abs(a2_1)
+    if t > m:
+        m = t
+        q = 2
+    t = abs(a3_1)
+    if t > m:
+        m = t
+        q = 3
+    t = abs(a4_1)
+    if t > m:
+        m = t
+        q = 4
+    t = abs(a5_1)
+    if t > m:
+        m = t
+        q = 5
+    if m == 0.0:
+        return None
+    p1 = q
+    if q == 2:
+        a1_0, a1_1, a1_2, a1_3, a1_4, a1_5, a2_0, a2_1, a2_2, a2_3, a2_4, a2_5 = a2_0, a2_1, a2_2, a2_3, a2_4, a2_5, a1_0, a1_1, a1_2, a1_3, a1_4, a1_5
+    elif q == 3:
+        a1_0, a1_1, a1_2, a1_3, a1_4, a1_5, a3_0, a3_1, a3_2, a3_3, a3_4, a3_5 = a3_0, a3_1, a3_2, a3_3, a3_4, a3_5, a1_0, a1_1, a1_2, a1_3, a1_4, a1_5
+    elif q == 4:
+        a1_0, a1_1, a1_2, a1_3, a1_4, a1_5, a4_0, a4_1, a4_2, a4_3, a4_4, a4_5 = a4_0, a4_1, a4_2, a4_3, a4_4, a4_5, a1_0, a1_1, a1_2, a1_3, a1_4, a1_5
+    elif q == 5:
+        a1_0, a1_1, a1_2, a1_3, a1_4, a1_5, a5_0, a5_1, a5_2, a5_3, a5_4, a5_5 = a5_0, a5_1, a5_2, a5_3, a5_4, a5_5, a1_0, a1_1, a1_2, a1_3, a1_4, a1_5
+    r = 1.0 / a1_1
+    a1_1 = r
+    a2_1 = a2_1 * r
+    a3_1 = a3_1 * r
+    a4_1 = a4_1 * r
+    a5_1 = a5_1 * r
+    if a1_2 != 0.0:
+        a2_2 = a2_2 - a2_1 * a1_2
+        a3_2 = a3_2 - a3_1 * a1_2
+        a4_2 = a4_2 - a4_1 * a1_2
+        a5_2 = a5_2 - a5_1 * a1_2
+    if a1_3 != 0.0:
+        a2_3 = a2_3 - a2_1 * a1_3
+        a3_3 = a3_3 - a3_1 * a1_3
+        a4_3 = a4_3 - a4_1 * a1_3
+        a5_3 = a5_3 - a5_1 * a1_3
+    if a1_4 != 0.0:
+        a2_4 = a2_4 - a2_1 * a1_4
+        a3_4 = a3_4 - a3_1 * a1_4
+        a4_4 = a4_4 - a4_1 * a1_4
+        a5_4 = a5_4 - a5_1 * a1_4
+    if a1_5 != 0.0:
+        a2_5 = a2_5 - a2_1 * a1_5
+        a3_5 = a3_5 - a3_1 * a1_5
+        a4_5 = a4_5 - a4_1 * a1_5
+        a5_5 = a5_5 - a5_1 * a1_5
+    m = abs(a2_2)
+    q = 2
+    t = abs(a3_2)
+    if t > m:
+        m = t
+        q = 3
+    t = abs(a4_2)
+    if t > m:
+        m = t
+        q = 4
+    t = abs(a5_2)
+    if t > m:
+        m = t
+        q = 5
+    if m == 0.0:
+        return None
+    p2 = q
+    if q == 3:
+        a2_0, a2_1, a2_2, a2_3, a2_4, a2_5, a3_0, a3_1, a3_2, a3_3, a3_4, a3_5 = a3_0, a3_1, a3_2, a3_3, a3_4, a3_5, a2_0, a2_1, a2_2, a2_3, a2_4, a2_5
+    elif q == 4:
+        a2_0, a2_1, a2_2, a2_3, a2_4, a2_5, a4_0, a4_1, a4_2, a4_3, a4_4, a4_5 = a4_0, a4_1, a4_2, a4_3, a4_4, a4_5, a2_0, a2_1, a2_2, a2_3, a2_4, a2_5
+    elif q == 5:
+        a2_0, a2_1, a2_2, a2_3, a2_4, a2_5, a5_0, a5_1, a5_2, a5_3, a5_4, a5_5 = a5_0, a5_1, a5_2, a5_3, a5_4, a5_5, a2_0, a2_1, a2_2, a2_3, a2_4, a2_5
+    r = 1.0 / a2_2
+    a2_2 = r
+    a3_2 = a3_2 * r
+    a4_2 = a4_2 * r
+    a5_2 = a5_2 * r
+    if a2_3 != 0.0:
+        a3_3 = a3_3 - a3_2 * a2_3
+        a4_3 = a4_3 - a4_2 * a2_3
+        a5_3 = a5_3 - a5_2 * a2_3
+    if a2_4 != 0.0:
+        a3_4 = a3_4 - a3_2 * a2_4
+        a4_4 = a4_4 - a4_2 * a2_4
+        a5_4 = a5_4 - a5_2 * a2_4
+    if a2_5 != 0.0:
+        a3_5 = a3_5 - a3_2 * a2_5
+        a4_5 = a4_5 - a4_2 * a2_5
+        a5_5 = a5_5 - a5_2 * a2_5
+    m = abs(a3_3)
+    q = 3
+    t = abs(a4_3)
+    if t > m:
+        m = t
+        q = 4
+    t = abs(a5_3)
+    if t > m:
+        m = t
+        q = 5
+    if m == 0.0:
+        return None
+    p3 = q
+    if q == 4:
+        a3_0, a3_1, a3_2, a3_3, a3_4, a3_5, a4_0, a4_1, a4_2, a4_3, a4_4, a4_5 = a4_0, a4_1, a4_2, a4_3, a4_4, a4_5, a3_0, a3_1, a3_2, a3_3, a3_4, a3_5
+    elif q == 5:
+        a3_0, a3_1, a3_2, a3_3, a3_4, a3_5, a5_0, a5_1, a5_2, a5_3, a5_4, a5_5 = a5_0, a5_1, a5_2, a5_3, a5_4, a5_5, a3_0, a3_1, a3_2, a3_3, a3_4, a3_5
+    r = 1.0 / a3_3
+    a3_3 = r
+    a4_3 = a4_3 * r
+    a5_3 = a5_3 * r
+    if a3_4 != 0.0:
+        a4_4 = a4_4 - a4_3 * a3_4
+        a5_4 = a5_4 - a5_3 * a3_4
+    if a3_5 != 0.0:
+        a4_5 = a4_5 - a4_3 * a3_5
+        a5_5 = a5_5 - a5_3 * a3_5
+    m = abs(a4_4)
+    q = 4
+    t = abs(a5_4)
+    if t > m:
+        m = t
+        q = 5
+    if m == 0.0:
+        return None
+    p4 = q
+    if q == 5:
+        a4_0, a4_1, a4_2, a4_3, a4_4, a4_5, a5_0, a5_1, a5_2, a5_3, a5_4, a5_5 = a5_0, a5_1, a5_2, a5_3, a5_4, a5_5, a4_0, a4_1, a4_2, a4_3, a4_4, a4_5
+    r = 1.0 / a4_4
+    a4_4 = r
+    a5_4 = a5_4 * r
+    if a4_5 != 0.0:
+        a5_5 = a5_5 - a5_4 * a4_5
+    m = abs(a5_5)
+    q = 5
+    if m == 0.0:
+        return None
+    p5 = q
+    r = 1.0 / a5_5
+    a5_5 = r
+    perm = list(range(6))
+    perm[0], perm[p0] = perm[p0], perm[0]
+    perm[1], perm[p1] = perm[p1], perm[1]
+    perm[2], perm[p2] = perm[p2], perm[2]
+    perm[3], perm[p3] = perm[p3], perm[3]
+    perm[4], perm[p4] = perm[p4], perm[4]
+    perm[5], perm[p5] = perm[p5], perm[5]
+    b0, b1, b2, b3, b4, b5, = [F[i] for i in perm]
+    b1 = b1 - a1_0 * b0
+    b2 = b2 - a2_0 * b0
+    b3 = b3 - a3_0 * b0
+    b4 = b4 - a4_0 * b0
+    b5 = b5 - a5_0 * b0
+    b2 = b2 - a2_1 * b1
+    b3 = b3 - a3_1 * b1
+    b4 = b4 - a4_1 * b1
+    b5 = b5 - a5_1 * b1
+    b3 = b3 - a3_2 * b2
+    b4 = b4 - a4_2 * b2
+    b5 = b5 - a5_2 * b2
+    b4 = b4 - a4_3 * b3
+    b5 = b5 - a5_3 * b3
+    b5 = b5 - a5_4 * b4
+    b5 = b5 * a5_5
+    b4 = (b4 - a4_5 * b5) * a4_4
+    b3 = (b3 - a3_4 * b4 - a3_5 * b5) * a3_3
+    b2 = (b2 - a2_3 * b3 - a2_4 * b4 - a2_5 * b5) * a2_2
+    b1 = (b1 - a1_2 * b2 - a1_3 * b3 - a1_4 * b4 - a1_5 * b5) * a1_1
+    b0 = (b0 - a0_1 * b1 - a0_2 * b2 - a0_3 * b3 - a0_4 * b4 - a0_5 * b5) * a0_0
+    dz = [b0, b1, b2, b3, b4, b5]
+    if not keep:
+        return dz, None
+    inv = [0] * 6
+    for i, q in enumerate(perm):
+        inv[q] = i
+    x0_0, x1_0, x2_0, x3_0, x4_0, x5_0, = _UNIT6[inv[0]]
+    if x0_0 != 0.0:
+        x1_0 = x1_0 - a1_0 * x0_0
+        x2_0 = x2_0 - a2_0 * x0_0
+        x3_0 = x3_0 - a3_0 * x0_0
+        x4_0 = x4_0 - a4_0 * x0_0
+        x5_0 = x5_0 - a5_0 * x0_0
+    if x1_0 != 0.0:
+        x2_0 = x2_0 - a2_1 * x1_0
+        x3_0 = x3_0 - a3_1 * x1_0
+        x4_0 = x4_0 - a4_1 * x1_0
+        x5_0 = x5_0 - a5_1 * x1_0
+    if x2_0 != 0.0:
+        x3_0 = x3_0 - a3_2 * x2_0
+        x4_0 = x4_0 - a4_2 * x2_0
+        x5_0 = x5_0 - a5_2 * x2_0
+    if x3_0 != 0.0:
+        x4_0 = x4_0 - a4_3 * x3_0
+        x5_0 = x5_0 - a5_3 * x3_0
+    if x4_0 != 0.0:
+        x5_0 = x5_0 - a5_4 * x4_0
+    x5_0 = x5_0 * a5_5
+    x0_0 = x0_0 - a0_5 * x5_0
+    x1_0 = x1_0 - a1_5 * x5_0
+    x2_0 = x2_0 - a2_5 * x5_0
+    x3_0 = x3_0 - a3_5 * x5_0
+    x4_0 = x4_0 - a4_5 * x5_0
+    x4_0 = x4_0 * a4_4
+    x0_0 = x0_0 - a0_4 * x4_0
+    x1_0 = x1_0 - a1_4 * x4_0
+    x2_0 = x2_0 - a2_4 * x4_0
+    x3_0 = x3_0 - a3_4 * x4_0
+    x3_0 = x3_0 * a3_3
+    x0_0 = x0_0 - a0_3 * x3_0
+    x1_0 = x1_0 - a1_3 * x3_0
+    x2_0 = x2_0 - a2_3 * x3_0
+    x2_0 = x2_0 * a2_2
+    x0_0 = x0_0 - a0_2 * x2_0
+    x1_0 = x1_0 - a1_2 * x2_0
+    x1_0 = x1_0 * a1_1
+    x0_0 = x0_0 - a0_1 * x1_0
+    x0_0 = x0_0 * a0_0
+    x0_1, x1_1, x2_1, x3_1, x4_1, x5_1, = _UNIT6[inv[1]]
+    if x0_1 != 0.0:
+        x1_1 = x1_1 - a1_0 * x0_1
+        x2_1 = x2_1 - a2_0 * x0_1
+        x3_1 = x3_1 - a3_0 * x0_1
+        x4_1 = x4_1 - a4_0 * x0_1
+        x5_1 = x5_1 - a5_0 * x0_1
+    if x1_1 != 0.0:
+        x2_1 = x2_1 - a2_1 * x1_1
+        x3_1 = x3_1 - a3_1 * x1_1
+        x4_1 = x4_1 - a4_1 * x1_1
+        x5_1 = x5_1 - a5_1 * x1_1
+    if x2_1 != 0.0:
+        x3_1 = x3_1 - a3_2 * x2_1
+        x4_1 = x4_1 - a4_2 * x2_1
+        x5_1 = x5_1 - a5_2 * x2_1
+    if x3_1 != 0.0:
+        x4_1 = x4_1 - a4_3 * x3_1
+        x5_1 = x5_1 - a5_3 * x3_1
+    if x4_1 != 0.0:
+        x5_1 = x5_1 - a5_4 * x4_1
+    x5_1 = x5_1 * a5_5
+    x0_1 = x0_1 - a0_5 * x5_1
+    x1_1 = x1_1 - a1_5 * x5_1
+    x2_1 = x2_1 - a2_5 * x5_1
+    x3_1 = x3_1 - a3_5 * x5_1
+    x4_1 = x4_1 - a4_5 * x5_1
+    x4_1 = x4_1 * a4_4
+    x0_1 = x0_1 - a0_4 * x4_1
+    x1_1 = x1_1 - a1_4 * x4_1
+    x2_1 = x2_1 - a2_4 * x4_1
+    x3_1 = x3_1 - a3_4 * x4_1
+    x3_1 = x3_1 * a3_3
+    x0_1 = x0_1 - a0_3 * x3_1
+    x1_1 = x1_1 - a1_3 * x3_1
+    x2_1 = x2_1 - a2_3 * x3_1
+    x2_1 = x2_1 * a2_2
+    x0_1 = x0_1 - a0_2 * x2_1
+    x1_1 = x1_1 - a1_2 * x2_1
+    x1_1 = x1_1 * a1_1
+    x0_1 = x0_1 - a0_1 * x1_1
+    x0_1 = x0_1 * a0_0
+    x0_2, x1_2, x2_2, x3_2, x4_2, x5_2, = _UNIT6[inv[2]]
+    if x0_2 != 0.0:
+        x1_2 = x1_2 - a1_0 * x0_2
+        x2_2 = x2_2 - a2_0 * x0_2
+        x3_2 = x3_2 - a3_0 * x0_2
+        x4_2 = x4_2 - a4_0 * x0_2
+        x5_2 = x5_2 - a5_0 * x0_2
+    if x1_2 != 0.0:
+        x2_2 = x2_2 - a2_1 * x1_2
+        x3_2 = x3_2 - a3_1 * x1_2
+        x4_2 = x4_2 - a4_1 * x1_2
+        x5_2 = x5_2 - a5_1 * x1_2
+    if x2_2 != 0.0:
+        x3_2 = x3_2 - a3_2 * x2_2
+        x4_2 = x4_2 - a4_2 * x2_2
+        x5_2 = x5_2 - a5_2 * x2_2
+    if x3_2 != 0.0:
+        x4_2 = x4_2 - a4_3 * x3_2
+        x5_2 = x5_2 - a5_3 * x3_2
+    if x4_2 != 0.0:
+        x5_2 = x5_2 - a5_4 * x4_2
+    x5_2 = x5_2 * a5_5
+    x0_2 = x0_2 - a0_5 * x5_2
+    x1_2 = x1_2 - a1_5 * x5_2
+    x2_2 = x2_2 - a2_5 * x5_2
+    x3_2 = x3_2 - a3_5 * x5_2
+    x4_2 = x4_2 - a4_5 * x5_2
+    x4_2 = x4_2 * a4_4
+    x0_2 = x0_2 - a0_4 * x4_2
+    x1_2 = x1_2 - a1_4 * x4_2
+    x2_2 = x2_2 - a2_4 * x4_2
+    x3_2 = x3_2 - a3_4 * x4_2
+    x3_2 = x3_2 * a3_3
+    x0_2 = x0_2 - a0_3 * x3_2
+    x1_2 = x1_2 - a1_3 * x3_2
+    x2_2 = x2_2 - a2_3 * x3_2
+    x2_2 = x2_2 * a2_2
+    x0_2 = x0_2 - a0_2 * x2_2
+    x1_2 = x1_2 - a1_2 * x2_2
+    x1_2 = x1_2 * a1_1
+    x0_2 = x0_2 - a0_1 * x1_2
+    x0_2 = x0_2 * a0_0
+    x0_3, x1_3, x2_3, x3_3, x4_3, x5_3, = _UNIT6[inv[3]]
+    if x0_3 != 0.0:
+        x1_3 = x1_3 - a1_0 * x0_3
+        x2_3 = x2_3 - a2_0 * x0_3
+        x3_3 = x3_3 - a3_0 * x0_3
+        x4_3 = x4_3 - a4_0 * x0_3
+        x5_3 = x5_3 - a5_0 * x0_3
+    if x1_3 != 0.0:
+        x2_3 = x2_3 - a2_1 * x1_3
+        x3_3 = x3_3 - a3_1 * x1_3
+        x4_3 = x4_3 - a4_1 * x1_3
+        x5_3 = x5_3 - a5_1 * x1_3
+    if x2_3 != 0.0:
+        x3_3 = x3_3 - a3_2 * x2_3
+        x4_3 = x4_3 - a4_2 * x2_3
+        x5_3 = x5_3 - a5_2 * x2_3
+    if x3_3 != 0.0:
+        x4_3 = x4_3 - a4_3 * x3_3
+        x5_3 = x5_3 - a5_3 * x3_3
+    if x4_3 != 0.0:
+        x5_3 = x5_3 - a5_4 * x4_3
+    x5_3 = x5_3 * a5_5
+    x0_3 = x0_3 - a0_5 * x5_3
+    x1_3 = x1_3 - a1_5 * x5_3
+    x2_3 = x2_3 - a2_5 * x5_3
+    x3_3 = x3_3 - a3_5 * x5_3
+    x4_3 = x4_3 - a4_5 * x5_3
+    x4_3 = x4_3 * a4_4
+    x0_3 = x0_3 - a0_4 * x4_3
+    x1_3 = x1_3 - a1_4 * x4_3
+    x2_3 = x2_3 - a2_4 * x4_3
+    x3_3 = x3_3 - a3_4 * x4_3
+    x3_3 = x3_3 * a3_3
+    x0_3 = x0_3 - a0_3 * x3_3
+    x1_3 = x1_3 - a1_3 * x3_3
+    x2_3 = x2_3 - a2_3 * x3_3
+    x2_3 = x2_3 * a2_2
+    x0_3 = x0_3 - a0_2 * x2_3
+    x1_3 = x1_3 - a1_2 * x2_3
+    x1_3 = x1_3 * a1_1
+    x0_3 = x0_3 - a0_1 * x1_3
+    x0_3 = x0_3 * a0_0
+    x0_4, x1_4, x2_4, x3_4, x4_4, x5_4, = _UNIT6[inv[4]]
+    if x0_4 != 0.0:
+        x1_4 = x1_4 - a1_0 * x0_4
+        x2_4 = x2_4 - a2_0 * x0_4
+        x3_4 = x3_4 - a3_0 * x0_4
+        x4_4 = x4_4 - a4_0 * x0_4
+        x5_4 = x5_4 - a5_0 * x0_4
+    if x1_4 != 0.0:
+        x2_4 = x2_4 - a2_1 * x1_4
+        x3_4 = x3_4 - a3_1 * x1_4
+        x4_4 = x4_4 - a4_1 * x1_4
+        x5_4 = x5_4 - a5_1 * x1_4
+    if x2_4 != 0.0:
+        x3_4 = x3_4 - a3_2 * x2_4
+        x4_4 = x4_4 - a4_2 * x2_4
+        x5_4 = x5_4 - a5_2 * x2_4
+    if x3_4 != 0.0:
+        x4_4 = x4_4 - a4_3 * x3_4
+        x5_4 = x5_4 - a5_3 * x3_4
+    if x4_4 != 0.0:
+        x5_4 = x5_4 - a5_4 * x4_4
+    x5_4 = x5_4 * a5_5
+    x0_4 = x0_4 - a0_5 * x5_4
+    x1_4 = x1_4 - a1_5 * x5_4
+    x2_4 = x2_4 - a2_5 * x5_4
+    x3_4 = x3_4 - a3_5 * x5_4
+    x4_4 = x4_4 - a4_5 * x5_4
+    x4_4 = x4_4 * a4_4
+    x0_4 = x0_4 - a0_4 * x4_4
+    x1_4 = x1_4 - a1_4 * x4_4
+    x2_4 = x2_4 - a2_4 * x4_4
+    x3_4 = x3_4 - a3_4 * x4_4
+    x3_4 = x3_4 * a3_3
+    x0_4 = x0_4 - a0_3 * x3_4
+    x1_4 = x1_4 - a1_3 * x3_4
+    x2_4 = x2_4 - a2_3 * x3_4
+    x2_4 = x2_4 * a2_2
+    x0_4 = x0_4 - a0_2 * x2_4
+    x1_4 = x1_4 - a1_2 * x2_4
+    x1_4 = x1_4 * a1_1
+    x0_4 = x0_4 - a0_1 * x1_4
+    x0_4 = x0_4 * a0_0
+    x0_5, x1_5, x2_5, x3_5, x4_5, x5_5, = _UNIT6[inv[5]]
+    if x0_5 != 0.0:
+        x1_5 = x1_5 - a1_0 * x0_5
+        x2_5 = x2_5 - a2_0 * x0_5
+        x3_5 = x3_5 - a3_0 * x0_5
+        x4_5 = x4_5 - a4_0 * x0_5
+        x5_5 = x5_5 - a5_0 * x0_5
+    if x1_5 != 0.0:
+        x2_5 = x2_5 - a2_1 * x1_5
+        x3_5 = x3_5 - a3_1 * x1_5
+        x4_5 = x4_5 - a4_1 * x1_5
+        x5_5 = x5_5 - a5_1 * x1_5
+    if x2_5 != 0.0:
+        x3_5 = x3_5 - a3_2 * x2_5
+        x4_5 = x4_5 - a4_2 * x2_5
+        x5_5 = x5_5 - a5_2 * x2_5
+    if x3_5 != 0.0:
+        x4_5 = x4_5 - a4_3 * x3_5
+        x5_5 = x5_5 - a5_3 * x3_5
+    if x4_5 != 0.0:
+        x5_5 = x5_5 - a5_4 * x4_5
+    x5_5 = x5_5 * a5_5
+    x0_5 = x0_5 - a0_5 * x5_5
+    x1_5 = x1_5 - a1_5 * x5_5
+    x2_5 = x2_5 - a2_5 * x5_5
+    x3_5 = x3_5 - a3_5 * x5_5
+    x4_5 = x4_5 - a4_5 * x5_5
+    x4_5 = x4_5 * a4_4
+    x0_5 = x0_5 - a0_4 * x4_5
+    x1_5 = x1_5 - a1_4 * x4_5
+    x2_5 = x2_5 - a2_4 * x4_5
+    x3_5 = x3_5 - a3_4 * x4_5
+    x3_5 = x3_5 * a3_3
+    x0_5 = x0_5 - a0_3 * x3_5
+    x1_5 = x1_5 - a1_3 * x3_5
+    x2_5 = x2_5 - a2_3 * x3_5
+    x2_5 = x2_5 * a2_2
+    x0_5 = x0_5 - a0_2 * x2_5
+    x1_5 = x1_5 - a1_2 * x2_5
+    x1_5 = x1_5 * a1_1
+    x0_5 = x0_5 - a0_1 * x1_5
+    x0_5 = x0_5 * a0_0
+    X = (x0_0, x1_0, x2_0, x3_0, x4_0, x5_0, x0_1, x1_1, x2_1, x3_1, x4_1, x5_1, x0_2, x1_2, x2_2, x3_2, x4_2, x5_2, x0_3, x1_3, x2_3, x3_3, x4_3, x5_3, x0_4, x1_4, x2_4, x3_4, x4_4, x5_4, x0_5, x1_5, x2_5, x3_5, x4_5, x5_5,)
+    s = sum(X)
+    if not s - s == 0.0 and not all(map(_isfinite, X)):
+        return None
+    return dz, X
+
+
+def _lin_apply(f, F):
+    a0_0, a1_0, a2_0, a3_0, a4_0, a5_0, a0_1, a1_1, a2_1, a3_1, a4_1, a5_1, a0_2, a1_2, a2_2, a3_2, a4_2, a5_2, a0_3, a1_3, a2_3, a3_3, a4_3, a5_3, a0_4, a1_4, a2_4, a3_4, a4_4, a5_4, a0_5, a1_5, a2_5, a3_5, a4_5, a5_5, = f
+    c0, c1, c2, c3, c4, c5, = F
+    b0 = a0_0 * c0 + a0_1 * c1 + a0_2 * c2 + a0_3 * c3 + a0_4 * c4 + a0_5 * c5
+    b1 = a1_0 * c0 + a1_1 * c1 + a1_2 * c2 + a1_3 * c3 + a1_4 * c4 + a1_5 * c5
+    b2 = a2_0 * c0 + a2_1 * c1 + a2_2 * c2 + a2_3 * c3 + a2_4 * c4 + a2_5 * c5
+    b3 = a3_0 * c0 + a3_1 * c1 + a3_2 * c2 + a3_3 * c3 + a3_4 * c4 + a3_5 * c5
+    b4 = a4_0 * c0 + a4_1 * c1 + a4_2 * c2 + a4_3 * c3 + a4_4 * c4 + a4_5 * c5
+    b5 = a5_0 * c0 + a5_1 * c1 + a5_2 * c2 + a5_3 * c3 + a5_4 * c4 + a5_5 * c5
+    return [b0, b1, b2, b3, b4, b5]
+
+
+def _lin_update(f, F, z):
+    a0_0, a1_0, a2_0, a3_0, a4_0, a5_0, a0_1, a1_1, a2_1, a3_1, a4_1, a5_1, a0_2, a1_2, a2_2, a3_2, a4_2, a5_2, a0_3, a1_3, a2_3, a3_3, a4_3, a5_3, a0_4, a1_4, a2_4, a3_4, a4_4, a5_4, a0_5, a1_5, a2_5, a3_5, a4_5, a5_5, = f
+    c0, c1, c2, c3, c4, c5, = F
+    b0 = a0_0 * c0 + a0_1 * c1 + a0_2 * c2 + a0_3 * c3 + a0_4 * c4 + a0_5 * c5
+    b1 = a1_0 * c0 + a1_1 * c1 + a1_2 * c2 + a1_3 * c3 + a1_4 * c4 + a1_5 * c5
+    b2 = a2_0 * c0 + a2_1 * c1 + a2_2 * c2 + a2_3 * c3 + a2_4 * c4 + a2_5 * c5
+    b3 = a3_0 * c0 + a3_1 * c1 + a3_2 * c2 + a3_3 * c3 + a3_4 * c4 + a3_5 * c5
+    b4 = a4_0 * c0 + a4_1 * c1 + a4_2 * c2 + a4_3 * c3 + a4_4 * c4 + a4_5 * c5
+    b5 = a5_0 * c0 + a5_1 * c1 + a5_2 * c2 + a5_3 * c3 + a5_4 * c4 + a5_5 * c5
+    z0, z1, z2, z3, z4, z5, = z
+    z0 = z0 - b0
+    z1 = z1 - b1
+    z2 = z2 - b2
+    z3 = z3 - b3
+    z4 = z4 - b4
+    z5 = z5 - b5
+    s = b0 + b1 + b2 + b3 + b4 + b5
+    t = z0 + z1 + z2 + z3 + z4 + z5
+    if not (s - s == 0.0 and t - t == 0.0):
+        return None
+    dn = 0.0
+    t = b0 if b0 >= 0.0 else -b0
+    if t > dn:
+        dn = t
+    t = b1 if b1 >= 0.0 else -b1
+    if t > dn:
+        dn = t
+    t = b2 if b2 >= 0.0 else -b2
+    if t > dn:
+        dn = t
+    t = b3 if b3 >= 0.0 else -b3
+    if t > dn:
+        dn = t
+    t = b4 if b4 >= 0.0 else -b4
+    if t > dn:
+        dn = t
+    t = b5 if b5 >= 0.0 else -b5
+    if t > dn:
+        dn = t
+    zn = 0.0
+    t = z0 if z0 >= 0.0 else -z0
+    if t > zn:
+        zn = t
+    t = z1 if z1 >= 0.0 else -z1
+    if t > zn:
+        zn = t
+    t = z2 if z2 >= 0.0 else -z2
+    if t > zn:
+        zn = t
+    t = z3 if z3 >= 0.0 else -z3
+    if t > zn:
+        zn = t
+    t = z4 if z4 >= 0.0 else -z4
+    if t > zn:
+        zn = t
+    t = z5 if z5 >= 0.0 else -z5
+    if t > zn:
+        zn = t
+    return [z0, z1, z2, z3, z4, z5], dn, zn
+
+
+def _lin_finish(dz, z):
+    b0, b1, b2, b3, b4, b5, = dz
+    z0, z1, z2, z3, z4, z5, = z
+    z0 = z0 - b0
+    z1 = z1 - b1
+    z2 = z2 - b2
+    z3 = z3 - b3
+    z4 = z4 - b4
+    z5 = z5 - b5
+    s = b0 + b1 + b2 + b3 + b4 + b5
+    t = z0 + z1 + z2 + z3 + z4 + z5
+    if not (s - s == 0.0 and t - t == 0.0):
+        return None
+    dn = 0.0
+    t = b0 if b0 >= 0.0 else -b0
+    if t > dn:
+        dn = t
+    t = b1 if b1 >= 0.0 else -b1
+    if t > dn:
+        dn = t
+    t = b2 if b2 >= 0.0 else -b2
+    if t > dn:
+        dn = t
+    t = b3 if b3 >= 0.0 else -b3
+    if t > dn:
+        dn = t
+    t = b4 if b4 >= 0.0 else -b4
+    if t > dn:
+        dn = t
+    t = b5 if b5 >= 0.0 else -b5
+    if t > dn:
+        dn = t
+    zn = 0.0
+    t = z0 if z0 >= 0.0 else -z0
+    if t > zn:
+        zn = t
+    t = z1 if z1 >= 0.0 else -z1
+    if t > zn:
+        zn = t
+    t = z2 if z2 >= 0.0 else -z2
+    if t > zn:
+        zn = t
+    t = z3 if z3 >= 0.0 else -z3
+    if t > zn:
+        zn = t
+    t = z4 if z4 >= 0.0 else -z4
+    if t > zn:
+        zn = t
+    t = z5 if z5 >= 0.0 else -z5
+    if t > zn:
+        zn = t
+    return [z0, z1, z2, z3, z4, z5], dn, zn
+
+LINEAR = (_lin_factor_solve, _lin_apply, _lin_update, _lin_finish)

@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: b202a2ca77f260bf6af9785da57504da637f6cc718cbc0079e48da2385313f33
+# content hash: 71ddd9f392a73d45058a15f23d3ad401ed177c4dbd5e3f56d494656bfb1eaa05
 """hpgen integrator underwater_vehicle_gauss2_cay_exact for the model underwater_vehicle.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "underwater_vehicle_gauss2_cay_exact"
-HASH = "b202a2ca77f260bf6af9785da57504da637f6cc718cbc0079e48da2385313f33"
+HASH = "71ddd9f392a73d45058a15f23d3ad401ed177c4dbd5e3f56d494656bfb1eaa05"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

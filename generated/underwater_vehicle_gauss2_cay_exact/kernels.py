@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: b202a2ca77f260bf6af9785da57504da637f6cc718cbc0079e48da2385313f33
+# content hash: 71ddd9f392a73d45058a15f23d3ad401ed177c4dbd5e3f56d494656bfb1eaa05
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -40394,6 +40394,365 @@ def chart_point(z, g, h, theta):
     return [_fromiter(_r[0], _F64, 16)]
 
 
+def _raw_observe(g, p):
+    """observe on lists of Python floats -> [xi[6], E[1], m[6], e[1]] as lists (see RAW)"""
+    try:
+        w6, w5, w4, w12, w10, w1, w3, w13, w11, w2, w0, w14, w7, w8, w9, w15 = g
+        w16, w17, w18, w19, w20, w21 = p
+        r0 = [0.0] * 6
+        r1 = [0.0] * 1
+        r2 = [0.0] * 6
+        r3 = [0.0] * 1
+        w22 = w16 * 0.5
+        r0[0] = w22
+        r0[1] = w17
+        w23 = w18 / 0.6666666666666666
+        r0[2] = w23
+        r0[3] = w19
+        w24 = w20 / 1.5
+        r0[4] = w24
+        w25 = w21 / 3.0
+        r0[5] = w25
+        w26 = w17 * w17
+        w27 = w19 * w19
+        r1[0] = ((((((w16 * w22) + w26) + (w18 * w23)) + w27) + (w20 * w24)) + (w21 * w25)) - ((((((0.5 * w26) + (0.5 * w27)) + (w22 * w22)) + (0.75 * (w24 * w24))) + (1.5 * (w25 * w25))) + (0.3333333333333333 * (w23 * w23)))
+        w22 = (w0 * w1) - (w2 * w3)
+        w23 = w4 * w2
+        w24 = w5 * w0
+        w25 = (w3 * w5) - (w1 * w4)
+        w26 = ((w6 * w7) + (w5 * w8)) + (w4 * w9)
+        w27 = ((w10 * w7) + (w1 * w8)) + (w3 * w9)
+        w7 = ((w11 * w7) + (w2 * w8)) + (w0 * w9)
+        w8 = ((w5 * w26) + (w1 * w27)) + (w2 * w7)
+        w9 = ((w4 * w26) + (w3 * w27)) + (w0 * w7)
+        r2[0] = (((((w22 * w16) + ((w23 - w24) * w17)) + (w25 * w18)) + (((w4 * w8) - (w5 * w9)) * w19)) + (((w3 * w8) - (w1 * w9)) * w20)) + (((w0 * w8) - (w2 * w9)) * w21)
+        w7 = ((w6 * w26) + (w10 * w27)) + (w11 * w7)
+        r2[1] = (((((((w11 * w3) - (w0 * w10)) * w16) + (((w6 * w0) - (w4 * w11)) * w17)) + (((w10 * w4) - (w3 * w6)) * w18)) + (((w6 * w9) - (w4 * w7)) * w19)) + (((w10 * w9) - (w3 * w7)) * w20)) + (((w11 * w9) - (w0 * w7)) * w21)
+        r2[2] = (((((((w2 * w10) - (w11 * w1)) * w16) + (((w5 * w11) - (w6 * w2)) * w17)) + (((w1 * w6) - (w10 * w5)) * w18)) + (((w5 * w7) - (w6 * w8)) * w19)) + (((w1 * w7) - (w10 * w8)) * w20)) + (((w2 * w7) - (w11 * w8)) * w21)
+        r2[3] = ((w6 * w19) + (w10 * w20)) + (w11 * w21)
+        r2[4] = ((w5 * w19) + (w1 * w20)) + (w2 * w21)
+        r2[5] = ((w4 * w19) + (w3 * w20)) + (w0 * w21)
+        w7 = _f_fabs((((w10 * w6) + (w1 * w5)) + (w3 * w4)))
+        w8 = _f_fabs((((w11 * w6) + (w2 * w5)) + (w0 * w4)))
+        w9 = _f_fabs((((w11 * w10) + (w2 * w1)) + (w0 * w3)))
+        r3[0] = _fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_fmax((_f_fabs(((((w6 * w6) + (w5 * w5)) + (w4 * w4)) - 1.0))), w7)), w8)), w7)), (_f_fabs(((((w10 * w10) + (w1 * w1)) + (w3 * w3)) - 1.0))))), w9)), w8)), w9)), (_f_fabs(((((w11 * w11) + (w2 * w2)) + (w0 * w0)) - 1.0))))), (_f_fabs(((((w6 * w22) - (w10 * (w24 - w23))) + (w11 * w25)) - 1.0))))), (_fmax((_fmax((_fmax((_f_fabs(w12)), (_f_fabs(w13)))), (_f_fabs(w14)))), (_f_fabs((w15 - 1.0))))))
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 6
+        r1 = [0.0] * 1
+        r2 = [0.0] * 6
+        r3 = [0.0] * 1
+        w0 = p[0]
+        w1 = 2.0
+        w1 = w0 / w1 if w1 else _div(w0, w1)
+        r0[0] = w1
+        w2 = p[1]
+        r0[1] = w2
+        w3 = p[2]
+        w4 = 0.6666666666666666
+        w4 = w3 / w4 if w4 else _div(w3, w4)
+        r0[2] = w4
+        w5 = p[3]
+        r0[3] = w5
+        w6 = p[4]
+        w7 = 1.5
+        w8 = w6 / w7 if w7 else _div(w6, w7)
+        r0[4] = w8
+        w9 = p[5]
+        w10 = 3.0
+        w10 = w9 / w10 if w10 else _div(w9, w10)
+        r0[5] = w10
+        w11 = w0 * w1
+        w12 = w2 * w2
+        w11 = w11 + w12
+        w13 = w3 * w4
+        w11 = w11 + w13
+        w13 = w5 * w5
+        w11 = w11 + w13
+        w14 = w6 * w8
+        w11 = w11 + w14
+        w14 = w9 * w10
+        w11 = w11 + w14
+        w14 = 0.5
+        w12 = w14 * w12
+        w14 = w14 * w13
+        w12 = w12 + w14
+        w1 = w1 * w1
+        w12 = w12 + w1
+        w1 = 0.75
+        w8 = w8 * w8
+        w1 = w1 * w8
+        w12 = w12 + w1
+        w10 = w10 * w10
+        w7 = w7 * w10
+        w12 = w12 + w7
+        w7 = 0.3333333333333333
+        w4 = w4 * w4
+        w7 = w7 * w4
+        w12 = w12 + w7
+        w11 = w11 - w12
+        r1[0] = w11
+        w11 = g[10]
+        w12 = g[5]
+        w7 = w11 * w12
+        w4 = g[9]
+        w10 = g[6]
+        w1 = w4 * w10
+        w7 = w7 - w1
+        w7 = w7 * w0
+        w8 = g[2]
+        w14 = w8 * w4
+        w13 = g[1]
+        w15 = w13 * w11
+        w14 = w14 - w15
+        w14 = w14 * w2
+        w7 = w7 + w14
+        w14 = w10 * w13
+        w16 = w12 * w8
+        w14 = w14 - w16
+        w14 = w14 * w3
+        w7 = w7 + w14
+        w14 = g[0]
+        w17 = g[12]
+        w18 = w14 * w17
+        w19 = g[13]
+        w20 = w13 * w19
+        w18 = w18 + w20
+        w20 = g[14]
+        w21 = w8 * w20
+        w18 = w18 + w21
+        w21 = w13 * w18
+        w22 = g[4]
+        w23 = w22 * w17
+        w24 = w12 * w19
+        w23 = w23 + w24
+        w24 = w10 * w20
+        w23 = w23 + w24
+        w24 = w12 * w23
+        w21 = w21 + w24
+        w24 = g[8]
+        w17 = w24 * w17
+        w19 = w4 * w19
+        w17 = w17 + w19
+        w20 = w11 * w20
+        w17 = w17 + w20
+        w20 = w4 * w17
+        w21 = w21 + w20
+        w20 = w8 * w21
+        w19 = w8 * w18
+        w25 = w10 * w23
+        w19 = w19 + w25
+        w25 = w11 * w17
+        w19 = w19 + w25
+        w25 = w13 * w19
+        w20 = w20 - w25
+        w20 = w20 * w5
+        w7 = w7 + w20
+        w20 = w10 * w21
+        w25 = w12 * w19
+        w20 = w20 - w25
+        w20 = w20 * w6
+        w7 = w7 + w20
+        w20 = w11 * w21
+        w25 = w4 * w19
+        w20 = w20 - w25
+        w20 = w20 * w9
+        w7 = w7 + w20
+        r2[0] = w7
+        w7 = w24 * w10
+        w20 = w11 * w22
+        w7 = w7 - w20
+        w7 = w7 * w0
+        w20 = w14 * w11
+        w25 = w8 * w24
+        w20 = w20 - w25
+        w20 = w20 * w2
+        w7 = w7 + w20
+        w20 = w22 * w8
+        w25 = w10 * w14
+        w20 = w20 - w25
+        w20 = w20 * w3
+        w7 = w7 + w20
+        w20 = w14 * w19
+        w18 = w14 * w18
+        w23 = w22 * w23
+        w18 = w18 + w23
+        w17 = w24 * w17
+        w18 = w18 + w17
+        w17 = w8 * w18
+        w20 = w20 - w17
+        w20 = w20 * w5
+        w7 = w7 + w20
+        w20 = w22 * w19
+        w17 = w10 * w18
+        w20 = w20 - w17
+        w20 = w20 * w6
+        w7 = w7 + w20
+        w19 = w24 * w19
+        w20 = w11 * w18
+        w19 = w19 - w20
+        w19 = w19 * w9
+        w7 = w7 + w19
+        r2[1] = w7
+        w7 = w4 * w22
+        w19 = w24 * w12
+        w7 = w7 - w19
+        w7 = w7 * w0
+        w0 = w13 * w24
+        w19 = w14 * w4
+        w0 = w0 - w19
+        w0 = w0 * w2
+        w7 = w7 + w0
+        w0 = w12 * w14
+        w2 = w22 * w13
+        w0 = w0 - w2
+        w0 = w0 * w3
+        w7 = w7 + w0
+        w0 = w13 * w18
+        w3 = w14 * w21
+        w0 = w0 - w3
+        w0 = w0 * w5
+        w7 = w7 + w0
+        w0 = w12 * w18
+        w3 = w22 * w21
+        w0 = w0 - w3
+        w0 = w0 * w6
+        w7 = w7 + w0
+        w18 = w4 * w18
+        w21 = w24 * w21
+        w18 = w18 - w21
+        w18 = w18 * w9
+        w7 = w7 + w18
+        r2[2] = w7
+        w7 = w14 * w5
+        w18 = w22 * w6
+        w7 = w7 + w18
+        w18 = w24 * w9
+        w7 = w7 + w18
+        r2[3] = w7
+        w7 = w13 * w5
+        w18 = w12 * w6
+        w7 = w7 + w18
+        w18 = w4 * w9
+        w7 = w7 + w18
+        r2[4] = w7
+        w5 = w8 * w5
+        w6 = w10 * w6
+        w5 = w5 + w6
+        w9 = w11 * w9
+        w5 = w5 + w9
+        r2[5] = w5
+        w5 = w14 * w14
+        w9 = w13 * w13
+        w5 = w5 + w9
+        w9 = w8 * w8
+        w5 = w5 + w9
+        w9 = 1.0
+        w5 = w5 - w9
+        w5 = math.fabs(w5)
+        w6 = w22 * w14
+        w7 = w12 * w13
+        w6 = w6 + w7
+        w7 = w10 * w8
+        w6 = w6 + w7
+        w6 = math.fabs(w6)
+        w5 = _fmax(w5, w6)
+        w6 = w24 * w14
+        w7 = w4 * w13
+        w6 = w6 + w7
+        w7 = w11 * w8
+        w6 = w6 + w7
+        w6 = math.fabs(w6)
+        w5 = _fmax(w5, w6)
+        w6 = w14 * w22
+        w7 = w13 * w12
+        w6 = w6 + w7
+        w7 = w8 * w10
+        w6 = w6 + w7
+        w6 = math.fabs(w6)
+        w5 = _fmax(w5, w6)
+        w6 = w22 * w22
+        w7 = w12 * w12
+        w6 = w6 + w7
+        w7 = w10 * w10
+        w6 = w6 + w7
+        w6 = w6 - w9
+        w6 = math.fabs(w6)
+        w5 = _fmax(w5, w6)
+        w6 = w24 * w22
+        w7 = w4 * w12
+        w6 = w6 + w7
+        w7 = w11 * w10
+        w6 = w6 + w7
+        w6 = math.fabs(w6)
+        w5 = _fmax(w5, w6)
+        w6 = w14 * w24
+        w7 = w13 * w4
+        w6 = w6 + w7
+        w7 = w8 * w11
+        w6 = w6 + w7
+        w6 = math.fabs(w6)
+        w5 = _fmax(w5, w6)
+        w6 = w22 * w24
+        w7 = w12 * w4
+        w6 = w6 + w7
+        w7 = w10 * w11
+        w6 = w6 + w7
+        w6 = math.fabs(w6)
+        w5 = _fmax(w5, w6)
+        w6 = w24 * w24
+        w7 = w4 * w4
+        w6 = w6 + w7
+        w7 = w11 * w11
+        w6 = w6 + w7
+        w6 = w6 - w9
+        w6 = math.fabs(w6)
+        w5 = _fmax(w5, w6)
+        w12 = w12 * w11
+        w12 = w12 - w1
+        w14 = w14 * w12
+        w4 = w4 * w8
+        w15 = w15 - w4
+        w22 = w22 * w15
+        w14 = w14 - w22
+        w13 = w13 * w10
+        w13 = w13 - w16
+        w24 = w24 * w13
+        w14 = w14 + w24
+        w14 = w14 - w9
+        w14 = math.fabs(w14)
+        w5 = _fmax(w5, w14)
+        w14 = g[3]
+        w14 = math.fabs(w14)
+        w24 = g[7]
+        w24 = math.fabs(w24)
+        w14 = _fmax(w14, w24)
+        w24 = g[11]
+        w24 = math.fabs(w24)
+        w14 = _fmax(w14, w24)
+        w24 = g[15]
+        w24 = w24 - w9
+        w24 = math.fabs(w24)
+        w14 = _fmax(w14, w24)
+        w5 = _fmax(w5, w14)
+        r3[0] = w5
+    return [r0, r1, r2, r3]
+
+
+def observe(g, p):
+    """observe(g[16], p[6]) -> [xi[6], E[1], m[6], e[1]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (16,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 16, "observe: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (6,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 6, "observe: p")
+    _r = _raw_observe(g, p)
+    return [_fromiter(_r[0], _F64, 6), _fromiter(_r[1], _F64, 1), _fromiter(_r[2], _F64, 6), _fromiter(_r[3], _F64, 1)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -40408,6 +40767,7 @@ KERNELS = {
     "margin": margin,
     "section": section,
     "chart_point": chart_point,
+    "observe": observe,
 }
 
 RAW = {
@@ -40424,4 +40784,10 @@ RAW = {
     "margin": _raw_margin,
     "section": _raw_section,
     "chart_point": _raw_chart_point,
+    "observe": _raw_observe,
 }
+
+
+# ---- Newton's linear algebra for NZ (hpgen.codegen.pylinear: straight-line Python, the C
+# template's operations in the same order), used by hpgen.runtime.newton ----
+LINEAR = None   # NZ > 12: the runtime does this linear algebra with numpy/LAPACK

@@ -32,6 +32,7 @@ SIGNATURES = {
     "margin": (("nz", "1"), ("1",)),
     "section": (("nn", "d"), ("1",)),
     "chart_point": (("nz", "nn", "1", "1"), ("nn",)),
+    "observe": (("nn", "d"), ("d", "1", "d", "1")),
 }
 
 

@@ -22,6 +22,7 @@ import jinja2
 from .. import __version__
 from .contract import HASH_RE, MODULE_RE, CodegenError, check_step
 from .csource import c_kernel_context, casadi_c_code, work_sizes
+from . import pylinear
 from .pysource import py_kernel_context
 
 META_FORMAT = 1
@@ -126,6 +127,16 @@ def _step_instructions(step) -> int:
     return sum(step.kernel(k).function.n_instructions() for k in STEP_KERNELS)
 
 
+def _python_linear(nz: int) -> dict:
+    """kernels.py's Newton linear algebra: printed for nz <= pylinear.UNROLL_MAX."""
+    if nz > pylinear.UNROLL_MAX:
+        return {"linear_source": "", "unit_rows": "", "linear_functions": [],
+                "unroll_max": pylinear.UNROLL_MAX}
+    return {"linear_source": pylinear.linear_solver_source(nz).rstrip("\n"),
+            "unit_rows": repr(pylinear.unit_rows(nz)),
+            "linear_functions": list(pylinear.FUNCTIONS), "unroll_max": pylinear.UNROLL_MAX}
+
+
 def template_contexts(step, info: dict) -> dict[str, dict]:
     """The context passed to each template, keyed by template file name."""
     check_step(step)
@@ -138,6 +149,7 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
                              kernels=[c_kernel_context(k) for k in step.kernels],
                              flatten=_step_instructions(step) <= FLATTEN_MAX_INSTRUCTIONS),
         "kernels.py.j2": dict(common, nz=step.nz, module=info["module"],
+                              **_python_linear(step.nz),
                               safe_unary=[list(p) for p in SAFE_UNARY],
                               kernels=[py_kernel_context(k) for k in step.kernels]),
         "__init__.py.j2": dict(common, module=info["module"], hash=info["hash"],
@@ -159,6 +171,7 @@ def meta(step, info: dict) -> dict:
             "model": info["model_name"], "options": info["options"], "hash": info["hash"],
             "backend": info["backend"], "n": step.n, "d": step.d, "nz": step.nz,
             "reduced": bool(step.reduced), "section": step.section,
+            "legendre_quadratic": bool(step.legendre_quadratic),
             "unknowns": [[str(u[0]), int(u[1]), int(u[2])] for u in step.unknowns],
             "kernels": kernels,
             "c_work": {k.name: work_sizes(k.function) for k in step.kernels}}

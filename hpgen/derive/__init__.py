@@ -69,6 +69,11 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
         return Kernel(name, f, names_in, names_out)
 
     J = ca.jacobian(eqs.residual, z)
+    # the Legendre inverse at a record: one Newton step from xi = 0, exact when l is quadratic
+    # in xi (hessian free of xi: legendre_quadratic), the runtime's start otherwise
+    at0 = lambda e: ca.substitute(e, xi, ca.SX.zeros(d))  # noqa: E731
+    xi_obs = ca.solve(at0(hess), p - at0(mu))
+    quadratic = not ca.depends_on(hess, xi)
     theta = ca.SX.sym("theta", 1)
     chart_point = ca.mtimes(g, group.tau(tau, theta * eqs.chart_step))
     kernels = (
@@ -89,10 +94,14 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
         kernel("section", [("g", gvec), ("p", p)], [("s", section_function(model, g, p))]),
         kernel("chart_point", [("z", z), ("g", gvec), ("h", h), ("theta", theta)],
                [("g_theta", _flat(chart_point))]),
+        kernel("observe", [("g", gvec), ("p", p)],
+               [("xi", xi_obs), ("E", ca.substitute(ca.dot(mu, xi) - lval, xi, xi_obs)),
+                ("m", group.momentum_map(g, p)), ("e", group.group_defect(g))]),
     )
     assert tuple(k.name for k in kernels) == KERNEL_NAMES
     return DiscreteStep(
         model_name=model.name, group_name=group.name, n=n, d=d, nz=nz,
         tableau_name=tableau.name, tableau_order=tableau.order, tau=tau, rkmk=rkmk,
         reduced=reduced, unknowns=eqs.blocks, kernels=kernels,
-        section=getattr(getattr(getattr(model, "scene", None), "section", None), "text", None))
+        section=getattr(getattr(getattr(model, "scene", None), "section", None), "text", None),
+        legendre_quadratic=quadratic)

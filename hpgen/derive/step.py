@@ -20,6 +20,10 @@ matrices are flattened column-major (g.ravel(order="F")); h is a 1-vector.
                                                            s(g, mu = p) (1 without one)
     chart_point(z, g, h, theta)          -> g_theta[n*n]   g tau(theta h xi_{k+1}(z)): the
                                                            step's chart curve, theta in [0, 1]
+    observe(g, p)                        -> xi[d], E[1], m[d], e[1]   at a record: the
+                                           Legendre inverse xi of p (one Newton step from 0:
+                                           exact when legendre_quadratic), energy at that xi,
+                                           spatial momentum, group defect
 """
 from __future__ import annotations
 
@@ -27,7 +31,8 @@ from dataclasses import dataclass
 from typing import Any
 
 KERNEL_NAMES = ("residual", "jacobian", "residual_jacobian", "update", "guess", "legendre",
-                "hessian", "energy", "momentum", "defect", "margin", "section", "chart_point")
+                "hessian", "energy", "momentum", "defect", "margin", "section", "chart_point",
+                "observe")
 
 
 @dataclass(frozen=True)
@@ -58,6 +63,7 @@ class DiscreteStep:
     unknowns: tuple
     kernels: tuple               # tuple[Kernel, ...], in KERNEL_NAMES order
     section: str | None = None   # the scene's Poincare section text (None: kernel section = 1)
+    legendre_quadratic: bool = False   # d2l/dxi2 free of xi: observe's xi is exact
 
     def kernel(self, name: str) -> Kernel:
         for k in self.kernels:

@@ -80,7 +80,7 @@ class PythonBackend(_Backend):
             raw = {k: (lambda f: lambda *a: [o.tolist() for o in f(*a)])(f)
                    for k, f in self._kernels.items()}
         self._raw = {k: raw[k] for k in self._sig}
-        self._newton = newton.Kernels.from_raw(self.nz, self._raw)
+        self._newton = newton.Kernels.from_raw(self.nz, self._raw, getattr(mod, "LINEAR", None))
 
     def call(self, name, *args):
         return self._kernels[name](*args)
@@ -112,6 +112,18 @@ class PythonBackend(_Backend):
         """(g flat, p, z, k) of a run."""
         return (np.array(run.g, dtype=np.float64), np.array(run.p, dtype=np.float64),
                 np.array(run.z, dtype=np.float64), run.k)
+
+    def observe(self, g_rec, p_rec):
+        """(records done, xi (K, d), E (K,), m (K, d), e (K,)) of K records (g column-major
+        flat rows), like hpgen_observe: stops at the first non-finite xi or E."""
+        K, d, f = len(p_rec), self.d, self._raw["observe"]
+        xi, E, m, e = np.zeros((K, d)), np.zeros(K), np.zeros((K, d)), np.zeros(K)
+        for k, (g, p) in enumerate(zip(g_rec.tolist(), p_rec.tolist())):
+            a, b, c, q = f(g, p)
+            xi[k], E[k], m[k], e[k] = a, b[0], c, q[0]
+            if not (np.isfinite(xi[k]).all() and np.isfinite(E[k])):
+                return k, xi, E, m, e
+        return K, xi, E, m, e
 
     def advance_sections(self, run, h, steps, cap, opts):
         """(steps done, k_rec (K,), t_rec (K,), g_rec (K, nn), p_rec (K, d), status)."""
@@ -182,6 +194,7 @@ class CBackend(_Backend):
                 ("hpgen_run_get", [P, P, P, P], LL),
                 ("hpgen_advance", [P, D, LL, LL, P, P, P, P], LL),
                 ("hpgen_advance_sections", [P, D, LL, P, LL, P, P, P, P, P, P], LL),
+                ("hpgen_observe", [LL, P, P, P, P, P, P], LL),
                 ("hpgen_advance_batch", [P, LL, D, LL, LL, P, LL, P, P, P], LL)):
             fn = getattr(lib, name)
             fn.argtypes, fn.restype = args, res
@@ -237,6 +250,17 @@ class CBackend(_Backend):
             raise ValueError("hpgen_advance rejected its arguments")
         K = self.records_in(self.state(run)[3] - done, done, every)
         return int(done), g_rec[:K], p_rec[:K], st.as_dict()
+
+    def observe(self, g_rec, p_rec):
+        """(records done, xi (K, d), E (K,), m (K, d), e (K,)) of K records (g column-major
+        flat rows), one C call (hpgen_observe)."""
+        K, d = len(p_rec), self.d
+        g_rec = np.ascontiguousarray(g_rec, dtype=np.float64).reshape(K, self.n * self.n)
+        p_rec = np.ascontiguousarray(p_rec, dtype=np.float64).reshape(K, d)
+        xi, E, m, e = np.zeros((K, d)), np.zeros(K), np.zeros((K, d)), np.zeros(K)
+        done = self._lib.hpgen_observe(K, g_rec.ctypes.data, p_rec.ctypes.data, xi.ctypes.data,
+                                       E.ctypes.data, m.ctypes.data, e.ctypes.data)
+        return int(done), xi, E, m, e
 
     def advance_sections(self, run, h, steps, cap, opts):
         """(steps done, k_rec (K,), t_rec (K,), g_rec (K, nn), p_rec (K, d), status): the

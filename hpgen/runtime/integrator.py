@@ -114,6 +114,26 @@ class Integrator:
                                    iterations=it)
         return xi
 
+    def observe(self, g, mu) -> dict:
+        """Observables of K records, g (K, n, n), mu (K, d) node momenta: arrays xi (K, d)
+        (Legendre inverse), energy (K,), momentum (K, d) (spatial), defect (K,). One C call
+        (kernel observe) when l is quadratic in xi (meta legendre_quadratic: its one Newton
+        step from xi = 0 is exact); otherwise xi and energy are refined record by record with
+        ``velocity`` (Newton, the singular-Legendre check included)."""
+        g = np.asarray(g, dtype=np.float64).reshape(-1, self.n, self.n)
+        mu = np.asarray(mu, dtype=np.float64).reshape(-1, self.d)
+        K = len(mu)
+        gf = np.ascontiguousarray(g.transpose(0, 2, 1)).reshape(K, self.n * self.n)
+        done, xi, E, m, e = self._b.observe(gf, mu)
+        exact = bool(self.meta.get("legendre_quadratic"))
+        for k in range(0 if not exact else done, K):
+            xi[k] = self.velocity(g[k], mu[k])
+            E[k] = self._b.call("energy", gf[k], xi[k])[0][0]
+            if k >= done:
+                m[k] = self._b.call("momentum", gf[k], mu[k])[0]
+                e[k] = self._b.call("defect", gf[k])[0][0]
+        return {"xi": xi, "energy": E, "momentum": m, "defect": e}
+
     def energy(self, g, mu) -> float:
         """Energy <dl/dxi, xi> - l at (g, xi = velocity(g, mu))."""
         return float(self._b.call("energy", self._g(g), self.velocity(g, mu))[0][0])

@@ -18,7 +18,8 @@ from .integrator import Integrator
 META_FORMAT = 1
 BACKENDS = ("c", "python")
 KERNEL_NAMES = ("residual", "jacobian", "residual_jacobian", "update", "guess", "legendre",
-                "hessian", "energy", "momentum", "defect", "margin", "section", "chart_point")
+                "hessian", "energy", "momentum", "defect", "margin", "section", "chart_point",
+                "observe")
 _SIZES = {"residual": ("nz", "nn", "d", "1", "|", "nz"),
           "jacobian": ("nz", "nn", "d", "1", "|", "nznz"),
           "residual_jacobian": ("nz", "nn", "d", "1", "|", "nz", "nznz"),
@@ -27,7 +28,8 @@ _SIZES = {"residual": ("nz", "nn", "d", "1", "|", "nz"),
           "hessian": ("nn", "d", "|", "dd"), "energy": ("nn", "d", "|", "1"),
           "momentum": ("nn", "d", "|", "d"), "defect": ("nn", "|", "1"),
           "margin": ("nz", "1", "|", "1"), "section": ("nn", "d", "|", "1"),
-          "chart_point": ("nz", "nn", "1", "1", "|", "nn")}
+          "chart_point": ("nz", "nn", "1", "1", "|", "nn"),
+          "observe": ("nn", "d", "|", "d", "1", "d", "1")}
 
 
 def read_meta(module_dir) -> dict:

@@ -29,6 +29,7 @@ class Trajectory:
     newton_iterations: int = 0    # total over all steps attempted
     jacobians: int = 0            # Jacobian evaluations (LU factorizations) over all steps
     integrator: Any = field(default=None, repr=False, compare=False)
+    _obs: dict = field(default_factory=dict, repr=False, compare=False)
 
     def __post_init__(self):
         for a in (self.t, self.g, self.mu):
@@ -42,25 +43,28 @@ class Trajectory:
             raise ValueError("this Trajectory has no integrator attached")
         return self.integrator
 
+    def _observed(self, name) -> np.ndarray:
+        """One of Integrator.observe's arrays, computed once for all of them (cached)."""
+        if not self._obs:
+            self._obs.update(self._need().observe(self.g, self.mu))
+        out = self._obs[name].copy()
+        return out
+
     def energy(self) -> np.ndarray:
         """(K,) energy <dl/dxi, xi> - l at each record (xi from the Legendre inverse)."""
-        it = self._need()
-        return np.array([it.energy(g, m) for g, m in zip(self.g, self.mu)])
+        return self._observed("energy")
 
     def momentum(self) -> np.ndarray:
         """(K, d) spatial momentum Ad*_{g^{-1}} p at each record."""
-        it = self._need()
-        return np.array([it.momentum(g, m) for g, m in zip(self.g, self.mu)]).reshape(-1, it.d)
+        return self._observed("momentum")
 
     def defect(self) -> np.ndarray:
         """(K,) distance of g_k from the group."""
-        it = self._need()
-        return np.array([it.defect(g) for g in self.g])
+        return self._observed("defect")
 
     def xi(self) -> np.ndarray:
         """(K, d) body velocities xi_k = (dl/dxi)^{-1}(g_k, mu_k)."""
-        it = self._need()
-        return np.array([it.velocity(g, m) for g, m in zip(self.g, self.mu)]).reshape(-1, it.d)
+        return self._observed("xi")
 
     def observables(self, names) -> dict:
         """The arrays a scene's ``record:`` list asks for, by name: g, mu, xi, energy,

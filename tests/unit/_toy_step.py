@@ -64,6 +64,10 @@ def toy_step(margin=None, name="free_rigid_body", inertia=INERTIA) -> DiscreteSt
         "section": ((g, p), ("g", "p"), [p[2]], ("s",)),
         "chart_point": ((z, g, h, th), ("z", "g", "h", "theta"),
                         [ca.vec(ca.mtimes(G, cay(th * h * z)))], ("g_theta",)),
+        "observe": ((g, p), ("g", "p"),
+                    [p / inertia, ca.dot(p, p / inertia) / 2, ca.mtimes(Gx, p),
+                     ca.mmax(ca.fabs(ca.mtimes(Gx.T, Gx) - ca.SX.eye(3)))],
+                    ("xi", "E", "m", "e")),
     }
     kernels = tuple(Kernel(k, ca.Function(k, list(a), outs, list(an), list(on)), an, on)
                     for k, (a, an, outs, on) in defs.items())

@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from conftest import HEAVY_TOP
+from hpgen.codegen import pylinear
 from hpgen.runtime import newton
 from reference import rotvec
 
@@ -147,6 +148,14 @@ def c_norm(x):
     return m
 
 
+def printed_solver(n):
+    """The straight-line solver a generated kernels.py carries for nz = n (LINEAR), built
+    here from the same printed source."""
+    ns = {"_isfinite": math.isfinite, f"_UNIT{n}": pylinear.unit_rows(n)}
+    exec(compile(pylinear.linear_solver_source(n), f"<printed solver n={n}>", "exec"), ns)
+    return newton.linear_solver(n, tuple(ns[f] for f in pylinear.FUNCTIONS))
+
+
 def _matrices(n, rng):
     """Test matrices (column-major lists): dense, sparse (the zero-skips), needing pivots,
     permutations, badly scaled."""
@@ -162,7 +171,7 @@ def _matrices(n, rng):
 @pytest.mark.parametrize("n", range(1, newton.UNROLL_MAX + 1))
 def test_straight_line_solver_equals_c_loops_bitwise(n):
     rng = np.random.default_rng(n)
-    lin = newton.linear_solver(n)
+    lin = printed_solver(n)
     for J in _matrices(n, rng):
         F = rng.normal(size=n).tolist()
         z = rng.normal(size=n).tolist()
@@ -190,7 +199,7 @@ def test_straight_line_solver_equals_c_loops_bitwise(n):
 
 @pytest.mark.parametrize("n", [1, 2, 3, 4, 9])
 def test_singular_or_non_finite_jacobian_is_refused(n):
-    lin = newton.linear_solver(n)
+    lin = printed_solver(n)
     F = [1.0] * n
     zero_col = np.eye(n)
     zero_col[:, n - 1] = 0.0
@@ -203,7 +212,7 @@ def test_singular_or_non_finite_jacobian_is_refused(n):
 
 @pytest.mark.parametrize("n", [3, 9])
 def test_fused_update_declines_non_finite_values(n):
-    lin = newton.linear_solver(n)
+    lin = printed_solver(n)
     X = np.eye(n).ravel(order="F").tolist()
     z = [1.0] * n
     assert lin.update(X, [1.0] * (n - 1) + [NAN], z) is None
@@ -231,11 +240,24 @@ def test_numpy_solver_above_unroll_max_agrees_to_round_off():
 
 
 def test_solver_source_is_deterministic():
-    raw = newton.linear_solver_source.__wrapped__
+    raw = pylinear.linear_solver_source.__wrapped__
     for n in (1, 3, 4, 12):
-        assert raw(n) == raw(n) == newton.linear_solver_source(n)
+        assert raw(n) == raw(n) == pylinear.linear_solver_source(n)
     with pytest.raises(ValueError):
-        raw(newton.UNROLL_MAX + 1)
+        raw(pylinear.UNROLL_MAX + 1)
+    assert newton.UNROLL_MAX == pylinear.UNROLL_MAX
+
+
+def test_generated_module_carries_its_solver():
+    # kernels.py of a module with nz <= UNROLL_MAX holds LINEAR, printed from the source above
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("_toy_kernels_linear",
+                                                  module_dir() / "kernels.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    assert mod.NZ <= pylinear.UNROLL_MAX
+    assert [f.__name__ for f in mod.LINEAR] == list(pylinear.FUNCTIONS)
+    assert pylinear.linear_solver_source(mod.NZ) in (module_dir() / "kernels.py").read_text()
 
 
 def test_norm_inf_and_all_finite_follow_c():
@@ -253,7 +275,9 @@ def test_norm_inf_and_all_finite_follow_c():
 # ---- Newton on hand-made kernels: the non-finite paths ------------------------------------
 
 def _kernels(residual, jacobian):
-    return newton.Kernels(2, lambda z, *a: [residual(z)], lambda z, *a: [jacobian(z)])
+    kern = newton.Kernels(2, lambda z, *a: [residual(z)], lambda z, *a: [jacobian(z)])
+    kern.linear = printed_solver(2)          # as a generated module with nz = 2 has it
+    return kern
 
 
 def _solve(kern, z, simplified=False, maxit=50):
