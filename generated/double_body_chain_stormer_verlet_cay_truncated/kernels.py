@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 53a9d2192f36ba4e78a19bf8e861b174c0a7768542fc2973e79c29dd11cefab2
+# content hash: 43ebd1a01d3932acce682681cd0c3d844540a232863c2472f2eacdc243c8e260
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 86a298713bdc7e0bde85770e513537d9c086499b0fc10b0831ebbafb1ee4b7d8
+# content hash: fa8eee0f9712d728f00767e2aca1704ed454154026121a4b63e8f6007855e210
 """Python backend of the hpgen module free_rigid_body_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

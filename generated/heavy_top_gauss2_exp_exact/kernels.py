@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 97442bdcfafdcef715dd1d29d368aa2e006f9d41452fa7d35eeb78457f2d4a53
+# content hash: 4804d9b62d148a034279f1c8cb73206a7bc704252fcc5c7eb678767770d6766b
 """Python backend of the hpgen module heavy_top_gauss2_exp_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 9d344fbdda3b06a12a9cdde14fbbaf1e1d13761cdd523c773027b126196b6471
+# content hash: dfab6d2d1d0eb0f8b4058535f8ff20672870aa8b3df23a52ef351573a8663dda
 """hpgen integrator lagrange_top_gauss2_cay_exact for the model lagrange_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "lagrange_top_gauss2_cay_exact"
-HASH = "9d344fbdda3b06a12a9cdde14fbbaf1e1d13761cdd523c773027b126196b6471"
+HASH = "dfab6d2d1d0eb0f8b4058535f8ff20672870aa8b3df23a52ef351573a8663dda"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 9d344fbdda3b06a12a9cdde14fbbaf1e1d13761cdd523c773027b126196b6471
+# content hash: dfab6d2d1d0eb0f8b4058535f8ff20672870aa8b3df23a52ef351573a8663dda
 """Python backend of the hpgen module lagrange_top_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

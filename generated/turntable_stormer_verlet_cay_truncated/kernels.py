@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: afea0f803709e760e3e3e6cd82f09e7f521679b22d34750be396c527e263a322
+# content hash: 06408c75ff9757694cbaeee3a0b6e6867e9697a4889c73c1122ee6631754ec42
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

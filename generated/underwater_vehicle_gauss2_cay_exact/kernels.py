@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 71ddd9f392a73d45058a15f23d3ad401ed177c4dbd5e3f56d494656bfb1eaa05
+# content hash: 8d1dca3eeb1188dcc815367221dd21011a53e23075a92a086ca3ae40eb4e5ccb
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
