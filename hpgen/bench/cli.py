@@ -16,7 +16,7 @@ def add_parser(sub):
     b.add_argument("model", help="model file with a scene")
     b.add_argument("--T", help="horizon (default scene steps * h)")
     b.add_argument("--tableau", help="comma list of tableaus (default grid: stormer-verlet/"
-                   "cay/truncated, gauss2/exp/exact, gauss2/cay/exact)")
+                   "cay/truncated, gauss2/exp/exact, gauss2/cay/exact, gauss3/cay/exact)")
     b.add_argument("--tau", help="comma list of chart maps (with --tableau/--rkmk: product)")
     b.add_argument("--rkmk", help="comma list of exact, truncated")
     b.add_argument("--h", help="comma list of hpgen steps (default scene h * 2^-k, k = 0..4)")

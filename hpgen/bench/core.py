@@ -7,7 +7,8 @@
 Grids (API lists, or comma lists on the CLI), defaults from the scene's h = h0:
 - hpgen schemes: ``schemes`` [(tableau, tau, rkmk)], or the product of ``tableau`` x ``tau``
   x ``rkmk`` lists (a missing one: the model's default), else DEFAULT_SCHEMES
-  (stormer-verlet/cay/truncated, gauss2/exp/exact, gauss2/cay/exact). Catalog names only.
+  (stormer-verlet/cay/truncated, gauss2/exp/exact, gauss2/cay/exact, gauss3/cay/exact).
+  Catalog names only.
 - ``h`` (hpgen): h0 * 2^-k, k = 0..4; ``rk4_h``: as ``h``; ``collocation_h``: h0 * 2^-k,
   k = 0..2. Every h is turned into steps = round(T / h), h = T / steps (noted if it moves).
 - ``rtol`` (SciPy DOP853 / RK45) and ``cvodes_tol``: 1e-4, 1e-6, ..., 1e-12 (``cvodes_tol``

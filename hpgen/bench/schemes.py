@@ -19,7 +19,7 @@ from .peers import _fixed_note, steps_for
 
 #: the default grid: (tableau, tau, rkmk)
 DEFAULT_SCHEMES = (("stormer-verlet", "cay", "truncated"), ("gauss2", "exp", "exact"),
-                   ("gauss2", "cay", "exact"))
+                   ("gauss2", "cay", "exact"), ("gauss3", "cay", "exact"))
 
 
 def validate_schemes(schemes):
