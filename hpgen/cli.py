@@ -117,6 +117,11 @@ def _run_sections(integ, model, sc, h, steps, out, args) -> int:
     """``hpgen run`` of a scene with a ``section``: only the crossings are kept (t, g, mu,
     step; see hpgen.runtime.trajectory.SectionCrossings), saved like a trajectory."""
     from .runtime.trajectory import npz_path, run_metadata, write_npz
+    def save(cr, error):
+        write_npz(path, {"t": cr.t, "g": cr.g, "mu": cr.mu, "step": cr.step,
+                         **run_metadata(integ, h, 1, error is not None, cr.newton_iterations,
+                                        error)})
+
     t0 = time.perf_counter()
     path = npz_path(out)
     try:
@@ -126,14 +131,12 @@ def _run_sections(integ, model, sc, h, steps, out, args) -> int:
         cr = e.partial
         if cr is None:
             raise
-        write_npz(path, {"t": cr.t, "g": cr.g, "mu": cr.mu, "step": cr.step,
-                         **run_metadata(integ, h, 1, True, cr.newton_iterations, e)})
+        save(cr, e)
         raise type(e)(f"{e.reason}; the {len(cr)} section crossings before the failure were "
                       f"saved to {path} with partial=True", step=e.step, time=e.time,
                       residual=e.residual, iterations=e.iterations, partial=cr) from None
     wall = time.perf_counter() - t0
-    write_npz(path, {"t": cr.t, "g": cr.g, "mu": cr.mu, "step": cr.step,
-                     **run_metadata(integ, h, 1, False, cr.newton_iterations, None)})
+    save(cr, None)
     print(f"{model.name}: {steps} steps of h = {h:g} in {wall:.3f} s "
           f"({wall / max(steps, 1) * 1e6:.2f} us/step, {args.backend}); "
           f"{len(cr)} crossings of the section {sc.section.text!r} -> {path}")

@@ -47,8 +47,7 @@ class Trajectory:
         """One of Integrator.observe's arrays, computed once for all of them (cached)."""
         if not self._obs:
             self._obs.update(self._need().observe(self.g, self.mu))
-        out = self._obs[name].copy()
-        return out
+        return self._obs[name].copy()
 
     def energy(self) -> np.ndarray:
         """(K,) energy <dl/dxi, xi> - l at each record (xi from the Legendre inverse)."""
