@@ -72,6 +72,33 @@ def free_body(cache, quick):
           f"{one * 1e9:.0f} ns/step = {1 / one / 1e6:.2f} M steps/s; batched ensemble of {B} "
           f"bodies: {res[1] * 1e9:.0f} ns/body-step on 1 thread, {res[2] * 1e9:.0f} on 2 "
           f"(stepping, beyond a setup of {setup / B * 1e6:.0f} us/body)")
+    # the same ensemble keeping only mu (scene record [mu]): the group is never formed
+    text = (ROOT / "examples" / "free_rigid_body.yaml").read_text()
+    path = Path(cache) / "free_body_mu.yaml"
+    path.write_text("\n".join("  record: [mu]" if ln.strip().startswith("record:") else ln
+                              for ln in text.splitlines()) + "\n")
+    reduced = hpgen.compile(path, cache_dir=cache)
+    assert reduced._b.skip_g
+
+    def record_seconds(nsteps, threads, one_body=False):
+        times = []
+        for _ in range(3 if one_body else 3):
+            t0 = time.perf_counter()
+            if one_body:
+                reduced.record(np.eye(3), 0.1, nsteps, mu0=mu0, every=max(nsteps, 1))
+            else:
+                reduced.record_batch(np.eye(3), 0.1, nsteps, mu0=mus, every=max(nsteps, 1),
+                                     threads=threads)
+            times.append(time.perf_counter() - t0)
+        return statistics.median(times)
+
+    one_rec = record_seconds(steps, 1, one_body=True) / steps
+    setup = record_seconds(0, 1)
+    res = {threads: (record_seconds(bsteps, threads) - setup) / (B * bsteps)
+           for threads in (1, 2)}
+    print(f"  record [mu] only (g never formed): {one_rec * 1e9:.0f} ns/step = "
+          f"{1 / one_rec / 1e6:.2f} M steps/s; batched: {res[1] * 1e9:.0f} ns/body-step on 1 "
+          f"thread, {res[2] * 1e9:.0f} on 2")
 
 
 def compile_seconds(cache: str, args: list[str]) -> float:

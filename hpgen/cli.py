@@ -91,7 +91,7 @@ def cmd_run(args) -> int:
         return _run_sections(integ, model, sc, h, steps, out, args)
     t0 = time.perf_counter()
     try:
-        path, summary = record_to_npz(integ, out, sc.record, g0=sc.g0, h=h, steps=steps,
+        path, summary = record_to_npz(integ, out, g0=sc.g0, h=h, steps=steps,
                                       xi0=sc.xi0, mu0=sc.mu0, every=sc.every, chunk=args.chunk)
     except ConvergenceError as e:
         saved = getattr(e, "saved", None)

@@ -69,3 +69,15 @@ class ConvergenceError(HpgenError):
 
 class DomainError(ConvergenceError):
     """The chart map tau was evaluated outside its domain (e.g. |h xi| >= 1 for skew)."""
+
+
+class RecordError(ConvergenceError):
+    """A recorded value (a ``record:`` expression, xi, energy, ...) is not finite at a state
+    the run reached (the step itself converged), or the velocity xi behind it did not
+    converge. ``step`` is the step whose end state gave the value; ``names`` the record
+    entries that are not finite; ``partial`` the records up to and including that state."""
+
+    def __init__(self, message: str, *, step: int, time: float, names=(), partial=None):
+        self.step, self.time, self.residual, self.iterations = step, time, 0.0, 0
+        self.reason, self.partial, self.names = message, partial, tuple(names)
+        HpgenError.__init__(self, f"step {step} (t = {time:.6g}): {message}")

@@ -3,14 +3,15 @@
  * model: double_body_chain
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 43ebd1a01d3932acce682681cd0c3d844540a232863c2472f2eacdc243c8e260
+ * content hash: 6c094e3463746d4fbc81a732eaf13f21bf8c3b90b0db560e3d2b62ca7dff6313
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
  * (g[i + j*n]), h is a scalar at the API and a 1-vector for the kernels. No static mutable
  * state: every function is thread-safe; work arrays live on the stack, sized at codegen time.
  * Status codes: 0 ok, 1 Newton did not converge, 2 non-finite value (or singular Jacobian),
- * 3 tau out of its domain (margin(z, h) <= 0 after convergence), -1 invalid argument.
+ * 3 tau out of its domain (margin(z, h) <= 0 after convergence), 4 a record row not finite
+ * (or its velocity xi not converged), -1 invalid argument.
  */
 /* Standard headers first: the CasADi part below is compiled under hidden visibility. */
 #include <math.h>
@@ -47,6 +48,9 @@
 #define casadi_f10 CASADI_PREFIX(f10)
 #define casadi_f11 CASADI_PREFIX(f11)
 #define casadi_f12 CASADI_PREFIX(f12)
+#define casadi_f13 CASADI_PREFIX(f13)
+#define casadi_f14 CASADI_PREFIX(f14)
+#define casadi_f15 CASADI_PREFIX(f15)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -61,6 +65,7 @@
 #define casadi_s0 CASADI_PREFIX(s0)
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s2 CASADI_PREFIX(s2)
+#define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_sq CASADI_PREFIX(sq)
 
 /* Symbol visibility in DLLs */
@@ -119,6 +124,7 @@ CASADI_SYMBOL_EXPORT int hpgen_double_body_chain_stormer_verlet_cay_truncated__c
 static const casadi_int casadi_s0[3] = {6, 1, 1};
 static const casadi_int casadi_s1[3] = {36, 1, 1};
 static const casadi_int casadi_s2[3] = {1, 1, 1};
+static const casadi_int casadi_s3[3] = {49, 1, 1};
 
 /* residual:(z[6],g[36],p[6],h)->(F[6]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -3359,8 +3365,10 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a06=(a05/a06);
   if (res[0]!=0) res[0][3]=a06;
   a07=arg[1]? arg[1][4] : 0;
-  a08=(2.*a07);
-  if (res[0]!=0) res[0][4]=a08;
+  a08=(-a07);
+  a08=(2.*a08);
+  a09=(-a08);
+  if (res[0]!=0) res[0][4]=a09;
   a09=arg[1]? arg[1][5] : 0;
   a10=1.4999999999999999e-01;
   a10=(a09/a10);
@@ -3373,7 +3381,7 @@ static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a13=(a05*a06);
   a11=(a11+a13);
   a13=(a07*a08);
-  a11=(a11+a13);
+  a11=(a11-a13);
   a13=(a09*a10);
   a11=(a11+a13);
   a13=2.5000000000000000e-01;
@@ -3870,6 +3878,993 @@ CASADI_SYMBOL_EXPORT int observe_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
   return 0;
 }
 
+/* update_p:(z[6],g[36],p[6],h)->(p1[6]) */
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  casadi_real a72;
+  a00=1.;
+  a01=arg[3]? arg[3][0] : 0;
+  a02=arg[0]? arg[0][0] : 0;
+  a03=(a01*a02);
+  a04=casadi_sq(a03);
+  a05=4.;
+  a06=(a04/a05);
+  a06=(a00+a06);
+  a07=9.0000000000000002e-01;
+  a07=(a07*a02);
+  a06=(a06*a07);
+  a02=arg[0]? arg[0][2] : 0;
+  a08=(a01*a02);
+  a09=2.;
+  a10=(a08/a09);
+  a11=arg[0]? arg[0][1] : 0;
+  a12=(a01*a11);
+  a13=(a12*a03);
+  a14=(a13/a05);
+  a14=(a10+a14);
+  a14=(a14*a11);
+  a06=(a06+a14);
+  a14=(a08*a03);
+  a15=(a14/a05);
+  a16=(a12/a09);
+  a15=(a15-a16);
+  a17=2.0000000000000001e-01;
+  a17=(a17*a02);
+  a15=(a15*a17);
+  a06=(a06+a15);
+  a15=arg[1]? arg[1][2] : 0;
+  a02=casadi_sq(a12);
+  a18=(a04+a02);
+  a19=casadi_sq(a08);
+  a18=(a18+a19);
+  a18=(a05+a18);
+  a18=(a05/a18);
+  a14=(a14/a09);
+  a14=(a12+a14);
+  a14=(a18*a14);
+  a20=(a15*a14);
+  a21=arg[1]? arg[1][8] : 0;
+  a22=(a08*a12);
+  a23=(a22/a09);
+  a23=(a23-a03);
+  a23=(a18*a23);
+  a24=(a21*a23);
+  a20=(a20+a24);
+  a24=arg[1]? arg[1][14] : 0;
+  a25=(a02+a04);
+  a25=(a25/a09);
+  a25=(a18*a25);
+  a25=(a00-a25);
+  a26=(a24*a25);
+  a20=(a20+a26);
+  a26=5.0000000000000003e-02;
+  a27=1.3000000000000000e+00;
+  a13=(a13/a09);
+  a13=(a13-a08);
+  a13=(a18*a13);
+  a28=(a15*a13);
+  a04=(a19+a04);
+  a04=(a04/a09);
+  a04=(a18*a04);
+  a04=(a00-a04);
+  a29=(a21*a04);
+  a28=(a28+a29);
+  a29=(a12*a08);
+  a30=(a29/a09);
+  a30=(a03+a30);
+  a30=(a18*a30);
+  a31=(a24*a30);
+  a28=(a28+a31);
+  a31=(a26*a28);
+  a27=(a27+a31);
+  a31=1.0000000000000001e-01;
+  a32=(a19+a02);
+  a32=(a32/a09);
+  a32=(a18*a32);
+  a32=(a00-a32);
+  a15=(a15*a32);
+  a33=(a03*a12);
+  a34=(a33/a09);
+  a34=(a08+a34);
+  a34=(a18*a34);
+  a21=(a21*a34);
+  a15=(a15+a21);
+  a08=(a03*a08);
+  a21=(a08/a09);
+  a21=(a21-a12);
+  a18=(a18*a21);
+  a24=(a24*a18);
+  a15=(a15+a24);
+  a24=(a31*a15);
+  a27=(a27+a24);
+  a27=(a27-a20);
+  a24=-1.0000000000000001e-01;
+  a21=arg[1]? arg[1][23] : 0;
+  a12=arg[0]? arg[0][3] : 0;
+  a35=(a01*a12);
+  a36=casadi_sq(a35);
+  a37=arg[0]? arg[0][4] : 0;
+  a38=(a01*a37);
+  a39=casadi_sq(a38);
+  a40=(a36+a39);
+  a41=arg[0]? arg[0][5] : 0;
+  a42=(a01*a41);
+  a43=casadi_sq(a42);
+  a40=(a40+a43);
+  a40=(a05+a40);
+  a40=(a05/a40);
+  a44=(a38*a35);
+  a45=(a44/a09);
+  a45=(a45-a42);
+  a45=(a40*a45);
+  a46=(a21*a45);
+  a47=arg[1]? arg[1][29] : 0;
+  a48=(a43+a36);
+  a48=(a48/a09);
+  a48=(a40*a48);
+  a48=(a00-a48);
+  a49=(a47*a48);
+  a46=(a46+a49);
+  a49=arg[1]? arg[1][35] : 0;
+  a50=(a38*a42);
+  a51=(a50/a09);
+  a51=(a35+a51);
+  a51=(a40*a51);
+  a52=(a49*a51);
+  a46=(a46+a52);
+  a52=(a24*a46);
+  a27=(a27+a52);
+  a52=-2.9999999999999999e-01;
+  a53=(a42*a35);
+  a54=(a53/a09);
+  a54=(a38+a54);
+  a54=(a40*a54);
+  a55=(a21*a54);
+  a56=(a42*a38);
+  a57=(a56/a09);
+  a57=(a57-a35);
+  a57=(a40*a57);
+  a58=(a47*a57);
+  a55=(a55+a58);
+  a58=(a39+a36);
+  a58=(a58/a09);
+  a58=(a40*a58);
+  a58=(a00-a58);
+  a59=(a49*a58);
+  a55=(a55+a59);
+  a59=(a52*a55);
+  a27=(a27+a59);
+  a27=(2.*a27);
+  a27=(a27*a01);
+  a59=(a26*a27);
+  a60=(a20*a59);
+  a61=arg[1]? arg[1][1] : 0;
+  a62=(a61*a13);
+  a63=arg[1]? arg[1][7] : 0;
+  a64=(a63*a04);
+  a62=(a62+a64);
+  a64=arg[1]? arg[1][13] : 0;
+  a65=(a64*a30);
+  a62=(a62+a65);
+  a65=(a26*a62);
+  a66=(a61*a32);
+  a67=(a63*a34);
+  a66=(a66+a67);
+  a67=(a64*a18);
+  a66=(a66+a67);
+  a67=(a31*a66);
+  a65=(a65+a67);
+  a61=(a61*a14);
+  a63=(a63*a23);
+  a61=(a61+a63);
+  a64=(a64*a25);
+  a61=(a61+a64);
+  a65=(a65-a61);
+  a64=arg[1]? arg[1][22] : 0;
+  a63=(a64*a45);
+  a67=arg[1]? arg[1][28] : 0;
+  a68=(a67*a48);
+  a63=(a63+a68);
+  a68=arg[1]? arg[1][34] : 0;
+  a69=(a68*a51);
+  a63=(a63+a69);
+  a69=(a24*a63);
+  a65=(a65+a69);
+  a69=(a64*a54);
+  a70=(a67*a57);
+  a69=(a69+a70);
+  a70=(a68*a58);
+  a69=(a69+a70);
+  a70=(a52*a69);
+  a65=(a65+a70);
+  a65=(2.*a65);
+  a65=(a65*a01);
+  a70=(a62*a65);
+  a60=(a60+a70);
+  a70=(a26*a65);
+  a71=(a61*a70);
+  a60=(a60+a71);
+  a71=arg[1]? arg[1][0] : 0;
+  a13=(a71*a13);
+  a72=arg[1]? arg[1][6] : 0;
+  a04=(a72*a04);
+  a13=(a13+a04);
+  a04=arg[1]? arg[1][12] : 0;
+  a30=(a04*a30);
+  a13=(a13+a30);
+  a30=(a26*a13);
+  a32=(a71*a32);
+  a34=(a72*a34);
+  a32=(a32+a34);
+  a18=(a04*a18);
+  a32=(a32+a18);
+  a18=(a31*a32);
+  a30=(a30+a18);
+  a71=(a71*a14);
+  a72=(a72*a23);
+  a71=(a71+a72);
+  a04=(a04*a25);
+  a71=(a71+a04);
+  a30=(a30-a71);
+  a04=arg[1]? arg[1][21] : 0;
+  a45=(a04*a45);
+  a25=arg[1]? arg[1][27] : 0;
+  a48=(a25*a48);
+  a45=(a45+a48);
+  a48=arg[1]? arg[1][33] : 0;
+  a51=(a48*a51);
+  a45=(a45+a51);
+  a51=(a24*a45);
+  a30=(a30+a51);
+  a54=(a04*a54);
+  a57=(a25*a57);
+  a54=(a54+a57);
+  a58=(a48*a58);
+  a54=(a54+a58);
+  a58=(a52*a54);
+  a30=(a30+a58);
+  a30=(2.*a30);
+  a30=(a30*a01);
+  a58=(a13*a30);
+  a60=(a60+a58);
+  a26=(a26*a30);
+  a58=(a71*a26);
+  a60=(a60+a58);
+  a58=5.0000000000000000e-01;
+  a57=(a58*a01);
+  a57=(a27+a57);
+  a51=(a28*a57);
+  a60=(a60+a51);
+  a06=(a06-a60);
+  if (res[0]!=0) res[0][0]=a06;
+  a33=(a33/a05);
+  a33=(a33-a10);
+  a33=(a33*a07);
+  a02=(a02/a05);
+  a02=(a00+a02);
+  a02=(a02*a11);
+  a33=(a33+a02);
+  a03=(a03/a09);
+  a22=(a22/a05);
+  a22=(a03+a22);
+  a22=(a22*a17);
+  a33=(a33+a22);
+  a22=(a66*a65);
+  a02=-5.0000000000000003e-02;
+  a02=(a02*a01);
+  a10=(a31*a27);
+  a02=(a02-a10);
+  a20=(a20*a02);
+  a22=(a22-a20);
+  a20=(a31*a65);
+  a61=(a61*a20);
+  a22=(a22+a61);
+  a61=(a32*a30);
+  a22=(a22+a61);
+  a31=(a31*a30);
+  a71=(a71*a31);
+  a22=(a22+a71);
+  a57=(a15*a57);
+  a22=(a22+a57);
+  a33=(a33+a22);
+  if (res[0]!=0) res[0][1]=a33;
+  a08=(a08/a05);
+  a16=(a16+a08);
+  a16=(a16*a07);
+  a29=(a29/a05);
+  a29=(a29-a03);
+  a29=(a29*a11);
+  a16=(a16+a29);
+  a19=(a19/a05);
+  a19=(a00+a19);
+  a19=(a19*a17);
+  a16=(a16+a19);
+  a28=(a28*a02);
+  a15=(a15*a59);
+  a28=(a28+a15);
+  a62=(a62*a20);
+  a28=(a28-a62);
+  a66=(a66*a70);
+  a28=(a28+a66);
+  a13=(a13*a31);
+  a28=(a28-a13);
+  a32=(a32*a26);
+  a28=(a28+a32);
+  a16=(a16+a28);
+  if (res[0]!=0) res[0][2]=a16;
+  a36=(a36/a05);
+  a36=(a00+a36);
+  a16=5.9999999999999998e-01;
+  a16=(a16*a12);
+  a36=(a36*a16);
+  a12=(a42/a09);
+  a44=(a44/a05);
+  a44=(a12+a44);
+  a58=(a58*a37);
+  a44=(a44*a58);
+  a36=(a36+a44);
+  a53=(a53/a05);
+  a44=(a38/a09);
+  a53=(a53-a44);
+  a37=1.4999999999999999e-01;
+  a37=(a37*a41);
+  a53=(a53*a37);
+  a36=(a36+a53);
+  a53=-2.9999999999999999e-02;
+  a53=(a53*a01);
+  a41=(a24*a27);
+  a53=(a53-a41);
+  a55=(a55*a53);
+  a41=(a52*a65);
+  a63=(a63*a41);
+  a55=(a55+a63);
+  a65=(a24*a65);
+  a69=(a69*a65);
+  a55=(a55-a69);
+  a69=(a52*a30);
+  a45=(a45*a69);
+  a55=(a55+a45);
+  a24=(a24*a30);
+  a54=(a54*a24);
+  a55=(a55-a54);
+  a54=3.0000000000000004e-01;
+  a54=(a54*a01);
+  a52=(a52*a27);
+  a54=(a54-a52);
+  a46=(a46*a54);
+  a55=(a55-a46);
+  a36=(a36+a55);
+  if (res[0]!=0) res[0][3]=a36;
+  a36=(a35*a38);
+  a55=(a36/a05);
+  a55=(a55-a12);
+  a55=(a55*a16);
+  a12=(a39/a05);
+  a12=(a00+a12);
+  a12=(a12*a58);
+  a55=(a55+a12);
+  a12=(a35/a09);
+  a56=(a56/a05);
+  a56=(a12+a56);
+  a56=(a56*a37);
+  a55=(a55+a56);
+  a39=(a43+a39);
+  a39=(a39/a09);
+  a39=(a40*a39);
+  a39=(a00-a39);
+  a21=(a21*a39);
+  a36=(a36/a09);
+  a36=(a42+a36);
+  a36=(a40*a36);
+  a47=(a47*a36);
+  a21=(a21+a47);
+  a35=(a35*a42);
+  a09=(a35/a09);
+  a09=(a09-a38);
+  a40=(a40*a09);
+  a49=(a49*a40);
+  a21=(a21+a49);
+  a54=(a21*a54);
+  a64=(a64*a39);
+  a67=(a67*a36);
+  a64=(a64+a67);
+  a68=(a68*a40);
+  a64=(a64+a68);
+  a41=(a64*a41);
+  a04=(a04*a39);
+  a25=(a25*a36);
+  a04=(a04+a25);
+  a48=(a48*a40);
+  a04=(a04+a48);
+  a69=(a04*a69);
+  a41=(a41+a69);
+  a54=(a54-a41);
+  a55=(a55+a54);
+  if (res[0]!=0) res[0][4]=a55;
+  a35=(a35/a05);
+  a44=(a44+a35);
+  a44=(a44*a16);
+  a50=(a50/a05);
+  a50=(a50-a12);
+  a50=(a50*a58);
+  a44=(a44+a50);
+  a43=(a43/a05);
+  a00=(a00+a43);
+  a00=(a00*a37);
+  a44=(a44+a00);
+  a64=(a64*a65);
+  a21=(a21*a53);
+  a64=(a64-a21);
+  a04=(a04*a24);
+  a64=(a64+a04);
+  a44=(a44+a64);
+  if (res[0]!=0) res[0][5]=a44;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int update_p(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f13(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int update_p_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void update_p_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void update_p_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void update_p_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int update_p_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int update_p_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real update_p_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* update_p_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* update_p_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "p1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* update_p_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s0;
+    case 3: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* update_p_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int update_p_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int update_p_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* velocity_step:(g[36],p[6],xi[6])->(xi1[6]) */
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3;
+  a0=arg[2]? arg[2][0] : 0;
+  a1=9.0000000000000002e-01;
+  a2=(a1*a0);
+  a3=arg[1]? arg[1][0] : 0;
+  a2=(a2-a3);
+  a2=(a2/a1);
+  a0=(a0-a2);
+  if (res[0]!=0) res[0][0]=a0;
+  a0=arg[2]? arg[2][1] : 0;
+  a2=arg[1]? arg[1][1] : 0;
+  a2=(a0-a2);
+  a0=(a0-a2);
+  if (res[0]!=0) res[0][1]=a0;
+  a0=arg[2]? arg[2][2] : 0;
+  a2=2.0000000000000001e-01;
+  a1=(a2*a0);
+  a3=arg[1]? arg[1][2] : 0;
+  a1=(a1-a3);
+  a1=(a1/a2);
+  a0=(a0-a1);
+  if (res[0]!=0) res[0][2]=a0;
+  a0=arg[2]? arg[2][3] : 0;
+  a1=5.9999999999999998e-01;
+  a2=(a1*a0);
+  a3=arg[1]? arg[1][3] : 0;
+  a2=(a2-a3);
+  a2=(a2/a1);
+  a0=(a0-a2);
+  if (res[0]!=0) res[0][3]=a0;
+  a0=arg[2]? arg[2][4] : 0;
+  a2=5.0000000000000000e-01;
+  a2=(a2*a0);
+  a1=arg[1]? arg[1][4] : 0;
+  a2=(a2-a1);
+  a2=(2.*a2);
+  a0=(a0-a2);
+  if (res[0]!=0) res[0][4]=a0;
+  a0=arg[2]? arg[2][5] : 0;
+  a2=1.4999999999999999e-01;
+  a1=(a2*a0);
+  a3=arg[1]? arg[1][5] : 0;
+  a1=(a1-a3);
+  a1=(a1/a2);
+  a0=(a0-a1);
+  if (res[0]!=0) res[0][5]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f14(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void velocity_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void velocity_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void velocity_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int velocity_step_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int velocity_step_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real velocity_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* velocity_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    case 2: return "xi";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* velocity_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "xi1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* velocity_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* velocity_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* record:(g[36],p[6],xi[6])->(row[49]) */
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32;
+  a00=arg[0]? arg[0][0] : 0;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=arg[0]? arg[0][1] : 0;
+  if (res[0]!=0) res[0][1]=a01;
+  a02=arg[0]? arg[0][2] : 0;
+  if (res[0]!=0) res[0][2]=a02;
+  a03=arg[0]? arg[0][3] : 0;
+  if (res[0]!=0) res[0][3]=a03;
+  a03=arg[0]? arg[0][4] : 0;
+  if (res[0]!=0) res[0][4]=a03;
+  a03=arg[0]? arg[0][5] : 0;
+  if (res[0]!=0) res[0][5]=a03;
+  a03=arg[0]? arg[0][6] : 0;
+  if (res[0]!=0) res[0][6]=a03;
+  a04=arg[0]? arg[0][7] : 0;
+  if (res[0]!=0) res[0][7]=a04;
+  a05=arg[0]? arg[0][8] : 0;
+  if (res[0]!=0) res[0][8]=a05;
+  a06=arg[0]? arg[0][9] : 0;
+  if (res[0]!=0) res[0][9]=a06;
+  a06=arg[0]? arg[0][10] : 0;
+  if (res[0]!=0) res[0][10]=a06;
+  a06=arg[0]? arg[0][11] : 0;
+  if (res[0]!=0) res[0][11]=a06;
+  a06=arg[0]? arg[0][12] : 0;
+  if (res[0]!=0) res[0][12]=a06;
+  a07=arg[0]? arg[0][13] : 0;
+  if (res[0]!=0) res[0][13]=a07;
+  a08=arg[0]? arg[0][14] : 0;
+  if (res[0]!=0) res[0][14]=a08;
+  a09=arg[0]? arg[0][15] : 0;
+  if (res[0]!=0) res[0][15]=a09;
+  a09=arg[0]? arg[0][16] : 0;
+  if (res[0]!=0) res[0][16]=a09;
+  a09=arg[0]? arg[0][17] : 0;
+  if (res[0]!=0) res[0][17]=a09;
+  a09=arg[0]? arg[0][18] : 0;
+  if (res[0]!=0) res[0][18]=a09;
+  a09=arg[0]? arg[0][19] : 0;
+  if (res[0]!=0) res[0][19]=a09;
+  a09=arg[0]? arg[0][20] : 0;
+  if (res[0]!=0) res[0][20]=a09;
+  a09=arg[0]? arg[0][21] : 0;
+  if (res[0]!=0) res[0][21]=a09;
+  a10=arg[0]? arg[0][22] : 0;
+  if (res[0]!=0) res[0][22]=a10;
+  a11=arg[0]? arg[0][23] : 0;
+  if (res[0]!=0) res[0][23]=a11;
+  a12=arg[0]? arg[0][24] : 0;
+  if (res[0]!=0) res[0][24]=a12;
+  a12=arg[0]? arg[0][25] : 0;
+  if (res[0]!=0) res[0][25]=a12;
+  a12=arg[0]? arg[0][26] : 0;
+  if (res[0]!=0) res[0][26]=a12;
+  a12=arg[0]? arg[0][27] : 0;
+  if (res[0]!=0) res[0][27]=a12;
+  a13=arg[0]? arg[0][28] : 0;
+  if (res[0]!=0) res[0][28]=a13;
+  a14=arg[0]? arg[0][29] : 0;
+  if (res[0]!=0) res[0][29]=a14;
+  a15=arg[0]? arg[0][30] : 0;
+  if (res[0]!=0) res[0][30]=a15;
+  a15=arg[0]? arg[0][31] : 0;
+  if (res[0]!=0) res[0][31]=a15;
+  a15=arg[0]? arg[0][32] : 0;
+  if (res[0]!=0) res[0][32]=a15;
+  a15=arg[0]? arg[0][33] : 0;
+  if (res[0]!=0) res[0][33]=a15;
+  a16=arg[0]? arg[0][34] : 0;
+  if (res[0]!=0) res[0][34]=a16;
+  a17=arg[0]? arg[0][35] : 0;
+  if (res[0]!=0) res[0][35]=a17;
+  a18=arg[1]? arg[1][0] : 0;
+  if (res[0]!=0) res[0][36]=a18;
+  a19=arg[1]? arg[1][1] : 0;
+  if (res[0]!=0) res[0][37]=a19;
+  a20=arg[1]? arg[1][2] : 0;
+  if (res[0]!=0) res[0][38]=a20;
+  a21=arg[1]? arg[1][3] : 0;
+  if (res[0]!=0) res[0][39]=a21;
+  a22=arg[1]? arg[1][4] : 0;
+  if (res[0]!=0) res[0][40]=a22;
+  a23=arg[1]? arg[1][5] : 0;
+  if (res[0]!=0) res[0][41]=a23;
+  a24=9.0000000000000002e-01;
+  a25=arg[2]? arg[2][0] : 0;
+  a24=(a24*a25);
+  a24=(a24*a25);
+  a26=arg[2]? arg[2][1] : 0;
+  a26=casadi_sq(a26);
+  a24=(a24+a26);
+  a27=2.0000000000000001e-01;
+  a28=arg[2]? arg[2][2] : 0;
+  a27=(a27*a28);
+  a27=(a27*a28);
+  a24=(a24+a27);
+  a27=5.9999999999999998e-01;
+  a29=arg[2]? arg[2][3] : 0;
+  a27=(a27*a29);
+  a27=(a27*a29);
+  a24=(a24+a27);
+  a27=5.0000000000000000e-01;
+  a30=arg[2]? arg[2][4] : 0;
+  a31=(a27*a30);
+  a31=(a31*a30);
+  a24=(a24+a31);
+  a31=1.4999999999999999e-01;
+  a32=arg[2]? arg[2][5] : 0;
+  a31=(a31*a32);
+  a31=(a31*a32);
+  a24=(a24+a31);
+  a31=2.5000000000000000e-01;
+  a30=casadi_sq(a30);
+  a31=(a31*a30);
+  a27=(a27*a26);
+  a31=(a31+a27);
+  a31=(a31+a08);
+  a27=6.0000000000000009e-01;
+  a27=(a27*a17);
+  a31=(a31+a27);
+  a27=1.0000000000000001e-01;
+  a28=casadi_sq(a28);
+  a28=(a27*a28);
+  a31=(a31+a28);
+  a28=7.4999999999999997e-02;
+  a32=casadi_sq(a32);
+  a28=(a28*a32);
+  a31=(a31+a28);
+  a28=2.9999999999999999e-01;
+  a29=casadi_sq(a29);
+  a28=(a28*a29);
+  a31=(a31+a28);
+  a28=4.5000000000000001e-01;
+  a25=casadi_sq(a25);
+  a28=(a28*a25);
+  a31=(a31+a28);
+  a28=-2.;
+  a25=5.0000000000000003e-02;
+  a29=(a25*a03);
+  a32=(a27*a00);
+  a29=(a29+a32);
+  a29=(a29-a06);
+  a32=-1.0000000000000001e-01;
+  a26=(a32*a12);
+  a29=(a29+a26);
+  a26=-2.9999999999999999e-01;
+  a30=(a26*a15);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a29=(a28*a29);
+  a31=(a31+a29);
+  a29=(a25*a04);
+  a30=(a27*a01);
+  a29=(a29+a30);
+  a29=(a29-a07);
+  a30=(a32*a13);
+  a29=(a29+a30);
+  a30=(a26*a16);
+  a29=(a29+a30);
+  a29=casadi_sq(a29);
+  a29=(a28*a29);
+  a31=(a31+a29);
+  a29=1.3000000000000000e+00;
+  a25=(a25*a05);
+  a29=(a29+a25);
+  a27=(a27*a02);
+  a29=(a29+a27);
+  a29=(a29-a08);
+  a27=(a32*a14);
+  a29=(a29+a27);
+  a26=(a26*a17);
+  a29=(a29+a26);
+  a29=casadi_sq(a29);
+  a28=(a28*a29);
+  a31=(a31+a28);
+  a28=-5.9999999999999998e-02;
+  a28=(a28*a14);
+  a31=(a31+a28);
+  a32=(a32*a02);
+  a31=(a31+a32);
+  a24=(a24-a31);
+  if (res[0]!=0) res[0][42]=a24;
+  a24=(a08*a04);
+  a31=(a07*a05);
+  a24=(a24-a31);
+  a24=(a24*a18);
+  a31=(a02*a07);
+  a32=(a01*a08);
+  a31=(a31-a32);
+  a31=(a31*a19);
+  a24=(a24+a31);
+  a31=(a05*a01);
+  a32=(a04*a02);
+  a31=(a31-a32);
+  a31=(a31*a20);
+  a24=(a24+a31);
+  if (res[0]!=0) res[0][43]=a24;
+  a24=(a06*a05);
+  a31=(a08*a03);
+  a24=(a24-a31);
+  a24=(a24*a18);
+  a08=(a00*a08);
+  a31=(a02*a06);
+  a08=(a08-a31);
+  a08=(a08*a19);
+  a24=(a24+a08);
+  a02=(a03*a02);
+  a05=(a05*a00);
+  a02=(a02-a05);
+  a02=(a02*a20);
+  a24=(a24+a02);
+  if (res[0]!=0) res[0][44]=a24;
+  a24=(a07*a03);
+  a02=(a06*a04);
+  a24=(a24-a02);
+  a24=(a24*a18);
+  a06=(a01*a06);
+  a07=(a00*a07);
+  a06=(a06-a07);
+  a06=(a06*a19);
+  a24=(a24+a06);
+  a04=(a04*a00);
+  a03=(a03*a01);
+  a04=(a04-a03);
+  a04=(a04*a20);
+  a24=(a24+a04);
+  if (res[0]!=0) res[0][45]=a24;
+  a24=(a17*a13);
+  a04=(a16*a14);
+  a24=(a24-a04);
+  a24=(a24*a21);
+  a04=(a11*a16);
+  a20=(a10*a17);
+  a04=(a04-a20);
+  a04=(a04*a22);
+  a24=(a24+a04);
+  a04=(a14*a10);
+  a20=(a13*a11);
+  a04=(a04-a20);
+  a04=(a04*a23);
+  a24=(a24+a04);
+  if (res[0]!=0) res[0][46]=a24;
+  a24=(a15*a14);
+  a04=(a17*a12);
+  a24=(a24-a04);
+  a24=(a24*a21);
+  a17=(a09*a17);
+  a04=(a11*a15);
+  a17=(a17-a04);
+  a17=(a17*a22);
+  a24=(a24+a17);
+  a11=(a12*a11);
+  a14=(a14*a09);
+  a11=(a11-a14);
+  a11=(a11*a23);
+  a24=(a24+a11);
+  if (res[0]!=0) res[0][47]=a24;
+  a24=(a16*a12);
+  a11=(a15*a13);
+  a24=(a24-a11);
+  a24=(a24*a21);
+  a15=(a10*a15);
+  a16=(a09*a16);
+  a15=(a15-a16);
+  a15=(a15*a22);
+  a24=(a24+a15);
+  a13=(a13*a09);
+  a12=(a12*a10);
+  a13=(a13-a12);
+  a13=(a13*a23);
+  a24=(a24+a13);
+  if (res[0]!=0) res[0][48]=a24;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int record(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f15(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int record_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void record_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void record_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void record_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int record_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int record_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real record_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* record_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    case 2: return "xi";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* record_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "row";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* record_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s0;
+    case 2: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* record_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int record_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int record_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
 
 
 /* ======================= end of CasADi-generated code =================================== */
@@ -3889,6 +4884,14 @@ CASADI_SYMBOL_EXPORT int observe_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
 #define HPGEN_NO_CONVERGENCE 1
 #define HPGEN_NONFINITE 2
 #define HPGEN_DOMAIN 3
+#define HPGEN_RECORD 4
+/* the scene's record row (kernel record): its width and what it needs */
+#define HPGEN_W 49
+#define HPGEN_RECORD_USES_XI 1
+#define HPGEN_LEGENDRE_QUADRATIC 1
+/* neither the step (residual, p_{k+1}) nor the record row use g: hpgen_advance_record does
+   not reconstruct the group at all */
+#define HPGEN_SKIP_G 0
 #define HPGEN_INVALID (-1)
 /* Newton stalls at round-off: stop when |dz| stopped decreasing while below this * (1+|z|) */
 #define HPGEN_ROUNDOFF_FLOOR 1e-11
@@ -3929,9 +4932,10 @@ typedef struct hpgen_run {
     long long lu_valid;              /* lu holds J^{-1} */
     double s;                        /* section(g_k, p_k), when s_valid */
     long long s_valid;
+    long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "43ebd1a01d3932acce682681cd0c3d844540a232863c2472f2eacdc243c8e260"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "6c094e3463746d4fbc81a732eaf13f21bf8c3b90b0db560e3d2b62ca7dff6313"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -3952,6 +4956,9 @@ static int hpgen_k_margin(const double* in0, const double* in1, double* out0);
 static int hpgen_k_section(const double* in0, const double* in1, double* out0);
 static int hpgen_k_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
 static int hpgen_k_observe(const double* in0, const double* in1, double* out0, double* out1, double* out2, double* out3);
+static int hpgen_k_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_velocity_step(const double* in0, const double* in1, const double* in2, double* out0);
+static int hpgen_k_record(const double* in0, const double* in1, const double* in2, double* out0);
 
 /* residual(z[6], g[36], p[6], h[1]) -> (F[6]) */
 #define HPGEN_RESIDUAL_SZ_ARG 4
@@ -4300,6 +5307,85 @@ HPGEN_EXPORT int hpgen_kernel_observe(const double* in0, const double* in1, doub
     return hpgen_k_observe(in0, in1, out0, out1, out2, out3);
 }
 
+/* update_p(z[6], g[36], p[6], h[1]) -> (p1[6]) */
+#define HPGEN_UPDATE_P_SZ_ARG 4
+#define HPGEN_UPDATE_P_SZ_RES 1
+#define HPGEN_UPDATE_P_SZ_IW 0
+#define HPGEN_UPDATE_P_SZ_W 73
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_update_p exports it */
+static int hpgen_k_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_UPDATE_P_SZ_ARG + 1];
+    casadi_real* res[HPGEN_UPDATE_P_SZ_RES + 1];
+    casadi_int iw[HPGEN_UPDATE_P_SZ_IW + 1];
+    casadi_real w[HPGEN_UPDATE_P_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = update_p(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_update_p(in0, in1, in2, in3, out0);
+}
+
+/* velocity_step(g[36], p[6], xi[6]) -> (xi1[6]) */
+#define HPGEN_VELOCITY_STEP_SZ_ARG 3
+#define HPGEN_VELOCITY_STEP_SZ_RES 1
+#define HPGEN_VELOCITY_STEP_SZ_IW 0
+#define HPGEN_VELOCITY_STEP_SZ_W 4
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_velocity_step exports it */
+static int hpgen_k_velocity_step(const double* in0, const double* in1, const double* in2, double* out0) {
+    const casadi_real* arg[HPGEN_VELOCITY_STEP_SZ_ARG + 1];
+    casadi_real* res[HPGEN_VELOCITY_STEP_SZ_RES + 1];
+    casadi_int iw[HPGEN_VELOCITY_STEP_SZ_IW + 1];
+    casadi_real w[HPGEN_VELOCITY_STEP_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    res[0] = out0;
+    flag = velocity_step(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_velocity_step(const double* in0, const double* in1, const double* in2, double* out0) {
+    return hpgen_k_velocity_step(in0, in1, in2, out0);
+}
+
+/* record(g[36], p[6], xi[6]) -> (row[49]) */
+#define HPGEN_RECORD_SZ_ARG 3
+#define HPGEN_RECORD_SZ_RES 1
+#define HPGEN_RECORD_SZ_IW 0
+#define HPGEN_RECORD_SZ_W 33
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_record exports it */
+static int hpgen_k_record(const double* in0, const double* in1, const double* in2, double* out0) {
+    const casadi_real* arg[HPGEN_RECORD_SZ_ARG + 1];
+    casadi_real* res[HPGEN_RECORD_SZ_RES + 1];
+    casadi_int iw[HPGEN_RECORD_SZ_IW + 1];
+    casadi_real w[HPGEN_RECORD_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    res[0] = out0;
+    flag = record(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_record(const double* in0, const double* in1, const double* in2, double* out0) {
+    return hpgen_k_record(in0, in1, in2, out0);
+}
+
 /* ---- dense linear algebra and Newton ---- */
 
 /* max |x_i|; NaN if any x_i is NaN */
@@ -4538,7 +5624,8 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
 }
 
 /* One step of a run: margin(z, h) > 0 at the start (check_start), Newton from z (in/out),
-   margin(z, h) > 0 at the solution, then update -> (g1, p1). */
+   margin(z, h) > 0 at the solution, then update -> (g1, p1); with_g = 0: update_p -> p1
+   only (g1 untouched). */
 /* small kernels: inline them and the Newton loop into one body (GCC/Clang), so the compiler
    schedules the kernels' arithmetic together with the solve */
 #if defined(__GNUC__)
@@ -4547,7 +5634,7 @@ __attribute__((flatten))
 static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
                            const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
                            double* g1, double* p1, long long* iters, long long* jacs,
-                           double* rnorm, int check_start) {
+                           double* rnorm, int check_start, int with_g) {
     double m[1];
     int code;
     /* a start outside tau's domain means h is too large for the chart: do not let Newton
@@ -4566,6 +5653,11 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
     }
     if (hpgen_k_margin(z, hv, m)) return HPGEN_NONFINITE;
     if (!(m[0] > 0.0)) return HPGEN_DOMAIN;
+    if (!with_g) {
+        if (hpgen_k_update_p(z, g, p, hv, p1) || !hpgen_all_finite(p1, HPGEN_D))
+            return HPGEN_NONFINITE;
+        return HPGEN_OK;
+    }
     if (hpgen_k_update(z, g, p, hv, g1, p1)) return HPGEN_NONFINITE;
     if (!hpgen_all_finite(g1, HPGEN_NN) || !hpgen_all_finite(p1, HPGEN_D))
         return HPGEN_NONFINITE;
@@ -4593,7 +5685,8 @@ HPGEN_EXPORT int hpgen_step(const double* g, const double* p, double h, double* 
     hpgen_status_init(st);
     if (!hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return HPGEN_INVALID; }
     hv[0] = h;
-    code = hpgen_step_core(g, p, hv, z, o, lu, piv, &valid, g1, p1, &it, &st->jacobians, &r, 1);
+    code = hpgen_step_core(g, p, hv, z, o, lu, piv, &valid, g1, p1, &it, &st->jacobians, &r, 1,
+                           1);
     st->code = code; st->iterations = it; st->total_iterations = it; st->residual = r;
     return code;
 }
@@ -4624,10 +5717,11 @@ HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, d
    sizes them for the records falling in this call). Stops at the first failed step (the run
    keeps the last good state). Returns the steps done in this call. */
 /* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
-   success the run moved to (g_{k+1}, p_{k+1}); o for the steps after the first, full (o with
-   full Newton) for the first. Updates the counters of st; returns the status code. */
+   success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for the steps
+   after the first, full (o with full Newton) for the first. Updates the counters of st;
+   returns the status code. */
 static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
-                          const hpgen_options* full, hpgen_status* st) {
+                          const hpgen_options* full, hpgen_status* st, int with_g) {
     double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], res;
     long long it;
     int i, code;
@@ -4641,7 +5735,7 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
         for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
     /* the first step starts from the crude guess kernel: full Newton */
     code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? full : o, r->lu, r->piv,
-                           &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0);
+                           &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0, with_g);
     st->iterations = it;
     st->total_iterations += it;
     st->residual = res;
@@ -4650,7 +5744,7 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     memcpy(r->zprev, r->z, sizeof r->z);
     memcpy(r->z, zs, sizeof r->z);
     if (r->have_prev < 2) r->have_prev += 1;
-    memcpy(r->g, g1, sizeof g1);
+    if (with_g) memcpy(r->g, g1, sizeof g1);
     memcpy(r->p, p1, sizeof p1);
     r->k += 1;
     return HPGEN_OK;
@@ -4663,12 +5757,14 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
     long long n, rec = 0;
     hpgen_options full;
     hpgen_status_init(st);
-    if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    if (steps < 0 || every < 1 || !hpgen_options_ok(o) || r->g_stale) {
+        st->code = HPGEN_INVALID; return 0;
+    }
     hv[0] = h;
     full = *o;
     full.simplified = 0;
     for (n = 0; n < steps; ++n) {
-        if (hpgen_run_step(r, hv, o, &full, st) != HPGEN_OK) return n;
+        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
         if (r->k % every == 0) {
             memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof r->g);
             memcpy(p_rec + rec * HPGEN_D, r->p, sizeof r->p);
@@ -4699,7 +5795,9 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
     hpgen_options full;
     hpgen_status_init(st);
     *n_rec = 0;
-    if (steps < 0 || cap < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    if (steps < 0 || cap < 1 || !hpgen_options_ok(o) || r->g_stale) {
+        st->code = HPGEN_INVALID; return 0;
+    }
     hv[0] = h;
     full = *o;
     full.simplified = 0;
@@ -4713,7 +5811,7 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
         const long long k = r->k;
         memcpy(g0, r->g, sizeof g0);
         memcpy(p0, r->p, sizeof p0);
-        if (hpgen_run_step(r, hv, o, &full, st) != HPGEN_OK) return n;
+        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
         if (hpgen_k_section(r->g, r->p, s1) || !isfinite(s1[0])) {
             st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
         }
@@ -4734,6 +5832,107 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
     }
     st->step = r->k;
     return n;
+}
+
+/* xi with legendre(g, xi) = p: Newton (kernel velocity_step) from xi = 0; one step when l is
+   quadratic in xi (then exact), else until |dxi| <= 1e-14 (1 + |xi|) or the round-off floor,
+   at most 50 iterations (the runtime's Integrator.velocity uses the same test). */
+#if HPGEN_RECORD_USES_XI
+static int hpgen_velocity(const double* g, const double* p, double* xi) {
+    double x1[HPGEN_D], dprev = HUGE_VAL;
+    int i, it;
+    for (i = 0; i < HPGEN_D; ++i) xi[i] = 0.0;
+    for (it = 1; it <= 50; ++it) {
+        double dn = 0.0, xn;
+        if (hpgen_k_velocity_step(g, p, xi, x1) || !hpgen_all_finite(x1, HPGEN_D))
+            return HPGEN_RECORD;
+        for (i = 0; i < HPGEN_D; ++i) {
+            const double dx = fabs(x1[i] - xi[i]);
+            if (dx > dn) dn = dx;
+            xi[i] = x1[i];
+        }
+        if (HPGEN_LEGENDRE_QUADRATIC) return HPGEN_OK;
+        xn = hpgen_norm_inf(xi, HPGEN_D);
+        if (dn <= 1e-14 * (1.0 + xn)) return HPGEN_OK;
+        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + xn)) return HPGEN_OK;
+        dprev = dn;
+    }
+    return HPGEN_RECORD;
+}
+#endif
+
+/* The scene's record row at (g, p) (kernel record; xi by hpgen_velocity when the row uses
+   it): HPGEN_OK, or HPGEN_RECORD when the row is not finite or xi did not converge (then the
+   row is all NaN). */
+static int hpgen_record_row(const double* g, const double* p, double* row) {
+    double xi[HPGEN_D];
+#if HPGEN_RECORD_USES_XI
+    if (hpgen_velocity(g, p, xi) != HPGEN_OK) {
+        int i;
+        for (i = 0; i < HPGEN_W; ++i) row[i] = NAN;
+        return HPGEN_RECORD;
+    }
+#else
+    memset(xi, 0, sizeof xi);
+#endif
+    if (hpgen_k_record(g, p, xi, row) || !hpgen_all_finite(row, HPGEN_W)) return HPGEN_RECORD;
+    return HPGEN_OK;
+}
+
+/* The record row at (g, p) (the start of a run: record 0). Returns the status code. */
+HPGEN_EXPORT int hpgen_record(const double* g, const double* p, double* row) {
+    return hpgen_record_row(g, p, row);
+}
+
+/* Advance a run like hpgen_advance, keeping only the scene's record row (W doubles) of the
+   state after global step k when k % every == 0, in rows[j * W], j = 0, 1, ... With
+   HPGEN_SKIP_G (neither the step nor the row use g) g_{k+1} is never formed: the run's g
+   stays g_0 and the run is marked g_stale (hpgen_advance and hpgen_advance_sections then
+   refuse it). The states (p_k, z) are bitwise those of hpgen_advance. A row that is not
+   finite stops the run after its step with code HPGEN_RECORD (the row is written, *n_rec
+   counts it). *n_rec: rows written. Returns the steps done in this call. */
+HPGEN_EXPORT long long hpgen_advance_record(hpgen_run* r, double h, long long steps,
+                                            long long every, const hpgen_options* o,
+                                            double* rows, long long* n_rec, hpgen_status* st) {
+    double hv[1];
+    long long n;
+    hpgen_options full;
+    hpgen_status_init(st);
+    *n_rec = 0;
+    if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    hv[0] = h;
+    full = *o;
+    full.simplified = 0;
+    if (HPGEN_SKIP_G) r->g_stale = 1;
+    for (n = 0; n < steps; ++n) {
+        if (hpgen_run_step(r, hv, o, &full, st, !HPGEN_SKIP_G) != HPGEN_OK) return n;
+        if (r->k % every == 0) {
+            double* row = rows + *n_rec * HPGEN_W;
+            *n_rec += 1;
+            if (hpgen_record_row(r->g, r->p, row) != HPGEN_OK) {
+                st->code = HPGEN_RECORD; st->step = r->k; return n + 1;
+            }
+        }
+    }
+    st->step = r->k;
+    return steps;
+}
+
+/* Advance B independent runs like B calls of hpgen_advance_record: rows of run b start at
+   rows + b * per_run * W, its row count in n_rec[b], its status in st[b]. Returns the number
+   of failed runs. Callers split a batch across threads. */
+HPGEN_EXPORT long long hpgen_advance_record_batch(hpgen_run* runs, long long B, double h,
+                                                  long long steps, long long every,
+                                                  const hpgen_options* o, long long per_run,
+                                                  double* rows, long long* n_rec,
+                                                  hpgen_status* st) {
+    long long b, failed = 0;
+    for (b = 0; b < B; ++b) {
+        hpgen_advance_record(runs + b, h, steps, every, o, rows + b * per_run * HPGEN_W,
+                             n_rec + b, st + b);
+        if (st[b].code != HPGEN_OK) ++failed;
+    }
+    return failed;
 }
 
 /* Observables of K records (g_rec[k * NN], p_rec[k * D], as hpgen_advance writes them):

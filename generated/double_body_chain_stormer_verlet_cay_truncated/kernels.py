@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 43ebd1a01d3932acce682681cd0c3d844540a232863c2472f2eacdc243c8e260
+# content hash: 6c094e3463746d4fbc81a732eaf13f21bf8c3b90b0db560e3d2b62ca7dff6313
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -1967,15 +1967,15 @@ def _raw_observe(g, p):
         r0[2] = w43
         w44 = w39 / 0.6
         r0[3] = w44
-        w45 = 2.0 * w40
-        r0[4] = w45
+        w45 = 2.0 * (-w40)
+        r0[4] = -w45
         w46 = w41 / 0.15
         r0[5] = w46
         w47 = w37 * w37
         w48 = ((((0.05 * w2) + (0.1 * w3)) - w4) + ((-0.1) * w5)) + ((-0.3) * w6)
         w49 = ((((0.05 * w7) + (0.1 * w8)) - w9) + ((-0.1) * w10)) + ((-0.3) * w11)
         w50 = ((((1.3 + (0.05 * w12)) + (0.1 * w13)) - w0) + ((-0.1) * w14)) + ((-0.3) * w1)
-        r1[0] = ((((((w36 * w42) + w47) + (w38 * w43)) + (w39 * w44)) + (w40 * w45)) + (w41 * w46)) - (((((((((((((0.25 * (w45 * w45)) + (0.5 * w47)) + w0) + (0.6000000000000001 * w1)) + (0.1 * (w43 * w43))) + (0.075 * (w46 * w46))) + (0.3 * (w44 * w44))) + (0.45 * (w42 * w42))) + ((-2.0) * (w48 * w48))) + ((-2.0) * (w49 * w49))) + ((-2.0) * (w50 * w50))) + ((-0.06) * w14)) + ((-0.1) * w13))
+        r1[0] = ((((((w36 * w42) + w47) + (w38 * w43)) + (w39 * w44)) - (w40 * w45)) + (w41 * w46)) - (((((((((((((0.25 * (w45 * w45)) + (0.5 * w47)) + w0) + (0.6000000000000001 * w1)) + (0.1 * (w43 * w43))) + (0.075 * (w46 * w46))) + (0.3 * (w44 * w44))) + (0.45 * (w42 * w42))) + ((-2.0) * (w48 * w48))) + ((-2.0) * (w49 * w49))) + ((-2.0) * (w50 * w50))) + ((-0.06) * w14)) + ((-0.1) * w13))
         w42 = (w0 * w7) - (w9 * w12)
         w43 = w13 * w9
         w44 = w8 * w0
@@ -2018,8 +2018,10 @@ def _raw_observe(g, p):
         w6 = w5 / w6 if w6 else _div(w5, w6)
         r0[3] = w6
         w7 = p[4]
-        w8 = 2.0 * w7
-        r0[4] = w8
+        w8 = -w7
+        w8 = 2.0 * w8
+        w9 = -w8
+        r0[4] = w9
         w9 = p[5]
         w10 = 0.15
         w10 = w9 / w10 if w10 else _div(w9, w10)
@@ -2032,7 +2034,7 @@ def _raw_observe(g, p):
         w13 = w5 * w6
         w11 = w11 + w13
         w13 = w7 * w8
-        w11 = w11 + w13
+        w11 = w11 - w13
         w13 = w9 * w10
         w11 = w11 + w13
         w13 = 0.25
@@ -2464,6 +2466,722 @@ def observe(g, p):
     return [_fromiter(_r[0], _F64, 6), _fromiter(_r[1], _F64, 1), _fromiter(_r[2], _F64, 6), _fromiter(_r[3], _F64, 1)]
 
 
+def _raw_update_p(z, g, p, h):
+    """update_p on lists of Python floats -> [p1[6]] as lists (see RAW)"""
+    try:
+        w0, w2, w1, w3, w4, w5 = z
+        w18, w12, w6, _, _, _, w19, w13, w7, _, _, _, w20, w14, w8, _, _, _, _, _, _, w21, w15, w9, _, _, _, w22, w16, w10, _, _, _, w23, w17, w11 = g
+        w24, = h
+        r0 = [0.0] * 6
+        w25 = w24 * w0
+        w26 = w25 * w25
+        w0 = 0.9 * w0
+        w27 = w24 * w1
+        w28 = w27 * 0.5
+        w29 = w24 * w2
+        w30 = w29 * w25
+        w31 = w30 * 0.25
+        w32 = w27 * w25
+        w33 = w32 * 0.25
+        w34 = w29 * 0.5
+        w1 = 0.2 * w1
+        w35 = w29 * w29
+        w36 = w26 + w35
+        w37 = w27 * w27
+        w38 = 4.0 / (4.0 + (w36 + w37))
+        w32 = w32 * 0.5
+        w39 = w38 * (w29 + w32)
+        w40 = w27 * w29
+        w41 = w40 * 0.5
+        w42 = w38 * (w41 - w25)
+        w36 = 1.0 - (w38 * (w36 * 0.5))
+        w43 = ((w6 * w39) + (w7 * w42)) + (w8 * w36)
+        w30 = w30 * 0.5
+        w44 = w38 * (w30 - w27)
+        w45 = 1.0 - (w38 * ((w37 + w26) * 0.5))
+        w41 = w38 * (w25 + w41)
+        w46 = ((w6 * w44) + (w7 * w45)) + (w8 * w41)
+        w47 = 1.0 - (w38 * ((w37 + w35) * 0.5))
+        w27 = w38 * (w27 + w30)
+        w29 = w38 * (w32 - w29)
+        w6 = ((w6 * w47) + (w7 * w27)) + (w8 * w29)
+        w7 = w24 * w3
+        w8 = w7 * w7
+        w30 = w24 * w4
+        w32 = w30 * w30
+        w38 = w8 + w32
+        w48 = w24 * w5
+        w49 = w48 * w48
+        w50 = 4.0 / (4.0 + (w38 + w49))
+        w51 = w30 * w7
+        w52 = w51 * 0.5
+        w53 = w50 * (w52 - w48)
+        w54 = 1.0 - (w50 * ((w49 + w8) * 0.5))
+        w55 = w30 * w48
+        w56 = w55 * 0.5
+        w57 = w50 * (w7 + w56)
+        w58 = ((w9 * w53) + (w10 * w54)) + (w11 * w57)
+        w59 = w48 * w7
+        w60 = w59 * 0.5
+        w61 = w50 * (w30 + w60)
+        w56 = w50 * (w56 - w7)
+        w38 = 1.0 - (w50 * (w38 * 0.5))
+        w62 = ((w9 * w61) + (w10 * w56)) + (w11 * w38)
+        w63 = (2.0 * (((((1.3 + (0.05 * w46)) + (0.1 * w6)) - w43) + ((-0.1) * w58)) + ((-0.3) * w62))) * w24
+        w64 = 0.05 * w63
+        w65 = ((w12 * w44) + (w13 * w45)) + (w14 * w41)
+        w66 = ((w12 * w47) + (w13 * w27)) + (w14 * w29)
+        w12 = ((w12 * w39) + (w13 * w42)) + (w14 * w36)
+        w13 = ((w15 * w53) + (w16 * w54)) + (w17 * w57)
+        w14 = ((w15 * w61) + (w16 * w56)) + (w17 * w38)
+        w67 = (2.0 * (((((0.05 * w65) + (0.1 * w66)) - w12) + ((-0.1) * w13)) + ((-0.3) * w14))) * w24
+        w68 = 0.05 * w67
+        w41 = ((w18 * w44) + (w19 * w45)) + (w20 * w41)
+        w27 = ((w18 * w47) + (w19 * w27)) + (w20 * w29)
+        w18 = ((w18 * w39) + (w19 * w42)) + (w20 * w36)
+        w19 = ((w21 * w53) + (w22 * w54)) + (w23 * w57)
+        w20 = ((w21 * w61) + (w22 * w56)) + (w23 * w38)
+        w29 = (2.0 * (((((0.05 * w41) + (0.1 * w27)) - w18) + ((-0.1) * w19)) + ((-0.3) * w20))) * w24
+        w36 = 0.05 * w29
+        w38 = w63 + (0.5 * w24)
+        r0[0] = ((((1.0 + (w26 * 0.25)) * w0) + ((w28 + w31) * w2)) + ((w33 - w34) * w1)) - ((((((w43 * w64) + (w65 * w67)) + (w12 * w68)) + (w41 * w29)) + (w18 * w36)) + (w46 * w38))
+        w25 = w25 * 0.5
+        w26 = w40 * 0.25
+        w39 = ((-0.05) * w24) - (0.1 * w63)
+        w40 = 0.1 * w67
+        w42 = 0.1 * w29
+        r0[1] = ((((w31 - w28) * w0) + ((1.0 + (w35 * 0.25)) * w2)) + ((w25 + w26) * w1)) + ((((((w66 * w67) - (w43 * w39)) + (w12 * w40)) + (w27 * w29)) + (w18 * w42)) + (w6 * w38))
+        r0[2] = ((((w34 + w33) * w0) + ((w26 - w25) * w2)) + ((1.0 + (w37 * 0.25)) * w1)) + ((((((w46 * w39) + (w6 * w64)) - (w65 * w40)) + (w66 * w68)) - (w41 * w42)) + (w27 * w36))
+        w0 = 0.6 * w3
+        w1 = w48 * 0.5
+        w2 = w51 * 0.25
+        w3 = 0.5 * w4
+        w4 = w59 * 0.25
+        w6 = w30 * 0.5
+        w5 = 0.15 * w5
+        w12 = ((-0.03) * w24) - ((-0.1) * w63)
+        w18 = (-0.3) * w67
+        w25 = (-0.1) * w67
+        w26 = (-0.3) * w29
+        w27 = (-0.1) * w29
+        w24 = (0.30000000000000004 * w24) - ((-0.3) * w63)
+        r0[3] = ((((1.0 + (w8 * 0.25)) * w0) + ((w1 + w2) * w3)) + ((w4 - w6) * w5)) + ((((((w62 * w12) + (w13 * w18)) - (w14 * w25)) + (w19 * w26)) - (w20 * w27)) - (w58 * w24))
+        w7 = w7 * 0.5
+        w8 = w55 * 0.25
+        w13 = 1.0 - (w50 * ((w49 + w32) * 0.5))
+        w14 = w50 * (w48 + w52)
+        w19 = w50 * (w60 - w30)
+        w9 = ((w9 * w13) + (w10 * w14)) + (w11 * w19)
+        w10 = ((w15 * w13) + (w16 * w14)) + (w17 * w19)
+        w11 = ((w21 * w13) + (w22 * w14)) + (w23 * w19)
+        r0[4] = ((((w2 - w1) * w0) + ((1.0 + (w32 * 0.25)) * w3)) + ((w7 + w8) * w5)) + ((w9 * w24) - ((w10 * w18) + (w11 * w26)))
+        r0[5] = ((((w6 + w4) * w0) + ((w8 - w7) * w3)) + ((1.0 + (w49 * 0.25)) * w5)) + (((w10 * w25) - (w9 * w12)) + (w11 * w27))
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 6
+        w0 = 1.0
+        w1 = h[0]
+        w2 = z[0]
+        w3 = w1 * w2
+        w4 = w3 * w3
+        w5 = 4.0
+        w6 = w4 / w5 if w5 else _div(w4, w5)
+        w6 = w0 + w6
+        w7 = 0.9
+        w7 = w7 * w2
+        w6 = w6 * w7
+        w2 = z[2]
+        w8 = w1 * w2
+        w9 = 2.0
+        w10 = w8 / w9 if w9 else _div(w8, w9)
+        w11 = z[1]
+        w12 = w1 * w11
+        w13 = w12 * w3
+        w14 = w13 / w5 if w5 else _div(w13, w5)
+        w14 = w10 + w14
+        w14 = w14 * w11
+        w6 = w6 + w14
+        w14 = w8 * w3
+        w15 = w14 / w5 if w5 else _div(w14, w5)
+        w16 = w12 / w9 if w9 else _div(w12, w9)
+        w15 = w15 - w16
+        w17 = 0.2
+        w17 = w17 * w2
+        w15 = w15 * w17
+        w6 = w6 + w15
+        w15 = g[2]
+        w2 = w12 * w12
+        w18 = w4 + w2
+        w19 = w8 * w8
+        w18 = w18 + w19
+        w18 = w5 + w18
+        w18 = w5 / w18 if w18 else _div(w5, w18)
+        w14 = w14 / w9 if w9 else _div(w14, w9)
+        w14 = w12 + w14
+        w14 = w18 * w14
+        w20 = w15 * w14
+        w21 = g[8]
+        w22 = w8 * w12
+        w23 = w22 / w9 if w9 else _div(w22, w9)
+        w23 = w23 - w3
+        w23 = w18 * w23
+        w24 = w21 * w23
+        w20 = w20 + w24
+        w24 = g[14]
+        w25 = w2 + w4
+        w25 = w25 / w9 if w9 else _div(w25, w9)
+        w25 = w18 * w25
+        w25 = w0 - w25
+        w26 = w24 * w25
+        w20 = w20 + w26
+        w26 = 0.05
+        w27 = 1.3
+        w13 = w13 / w9 if w9 else _div(w13, w9)
+        w13 = w13 - w8
+        w13 = w18 * w13
+        w28 = w15 * w13
+        w4 = w19 + w4
+        w4 = w4 / w9 if w9 else _div(w4, w9)
+        w4 = w18 * w4
+        w4 = w0 - w4
+        w29 = w21 * w4
+        w28 = w28 + w29
+        w29 = w12 * w8
+        w30 = w29 / w9 if w9 else _div(w29, w9)
+        w30 = w3 + w30
+        w30 = w18 * w30
+        w31 = w24 * w30
+        w28 = w28 + w31
+        w31 = w26 * w28
+        w27 = w27 + w31
+        w31 = 0.1
+        w32 = w19 + w2
+        w32 = w32 / w9 if w9 else _div(w32, w9)
+        w32 = w18 * w32
+        w32 = w0 - w32
+        w15 = w15 * w32
+        w33 = w3 * w12
+        w34 = w33 / w9 if w9 else _div(w33, w9)
+        w34 = w8 + w34
+        w34 = w18 * w34
+        w21 = w21 * w34
+        w15 = w15 + w21
+        w8 = w3 * w8
+        w21 = w8 / w9 if w9 else _div(w8, w9)
+        w21 = w21 - w12
+        w18 = w18 * w21
+        w24 = w24 * w18
+        w15 = w15 + w24
+        w24 = w31 * w15
+        w27 = w27 + w24
+        w27 = w27 - w20
+        w24 = -0.1
+        w21 = g[23]
+        w12 = z[3]
+        w35 = w1 * w12
+        w36 = w35 * w35
+        w37 = z[4]
+        w38 = w1 * w37
+        w39 = w38 * w38
+        w40 = w36 + w39
+        w41 = z[5]
+        w42 = w1 * w41
+        w43 = w42 * w42
+        w40 = w40 + w43
+        w40 = w5 + w40
+        w40 = w5 / w40 if w40 else _div(w5, w40)
+        w44 = w38 * w35
+        w45 = w44 / w9 if w9 else _div(w44, w9)
+        w45 = w45 - w42
+        w45 = w40 * w45
+        w46 = w21 * w45
+        w47 = g[29]
+        w48 = w43 + w36
+        w48 = w48 / w9 if w9 else _div(w48, w9)
+        w48 = w40 * w48
+        w48 = w0 - w48
+        w49 = w47 * w48
+        w46 = w46 + w49
+        w49 = g[35]
+        w50 = w38 * w42
+        w51 = w50 / w9 if w9 else _div(w50, w9)
+        w51 = w35 + w51
+        w51 = w40 * w51
+        w52 = w49 * w51
+        w46 = w46 + w52
+        w52 = w24 * w46
+        w27 = w27 + w52
+        w52 = -0.3
+        w53 = w42 * w35
+        w54 = w53 / w9 if w9 else _div(w53, w9)
+        w54 = w38 + w54
+        w54 = w40 * w54
+        w55 = w21 * w54
+        w56 = w42 * w38
+        w57 = w56 / w9 if w9 else _div(w56, w9)
+        w57 = w57 - w35
+        w57 = w40 * w57
+        w58 = w47 * w57
+        w55 = w55 + w58
+        w58 = w39 + w36
+        w58 = w58 / w9 if w9 else _div(w58, w9)
+        w58 = w40 * w58
+        w58 = w0 - w58
+        w59 = w49 * w58
+        w55 = w55 + w59
+        w59 = w52 * w55
+        w27 = w27 + w59
+        w27 = 2.0 * w27
+        w27 = w27 * w1
+        w59 = w26 * w27
+        w60 = w20 * w59
+        w61 = g[1]
+        w62 = w61 * w13
+        w63 = g[7]
+        w64 = w63 * w4
+        w62 = w62 + w64
+        w64 = g[13]
+        w65 = w64 * w30
+        w62 = w62 + w65
+        w65 = w26 * w62
+        w66 = w61 * w32
+        w67 = w63 * w34
+        w66 = w66 + w67
+        w67 = w64 * w18
+        w66 = w66 + w67
+        w67 = w31 * w66
+        w65 = w65 + w67
+        w61 = w61 * w14
+        w63 = w63 * w23
+        w61 = w61 + w63
+        w64 = w64 * w25
+        w61 = w61 + w64
+        w65 = w65 - w61
+        w64 = g[22]
+        w63 = w64 * w45
+        w67 = g[28]
+        w68 = w67 * w48
+        w63 = w63 + w68
+        w68 = g[34]
+        w69 = w68 * w51
+        w63 = w63 + w69
+        w69 = w24 * w63
+        w65 = w65 + w69
+        w69 = w64 * w54
+        w70 = w67 * w57
+        w69 = w69 + w70
+        w70 = w68 * w58
+        w69 = w69 + w70
+        w70 = w52 * w69
+        w65 = w65 + w70
+        w65 = 2.0 * w65
+        w65 = w65 * w1
+        w70 = w62 * w65
+        w60 = w60 + w70
+        w70 = w26 * w65
+        w71 = w61 * w70
+        w60 = w60 + w71
+        w71 = g[0]
+        w13 = w71 * w13
+        w72 = g[6]
+        w4 = w72 * w4
+        w13 = w13 + w4
+        w4 = g[12]
+        w30 = w4 * w30
+        w13 = w13 + w30
+        w30 = w26 * w13
+        w32 = w71 * w32
+        w34 = w72 * w34
+        w32 = w32 + w34
+        w18 = w4 * w18
+        w32 = w32 + w18
+        w18 = w31 * w32
+        w30 = w30 + w18
+        w71 = w71 * w14
+        w72 = w72 * w23
+        w71 = w71 + w72
+        w4 = w4 * w25
+        w71 = w71 + w4
+        w30 = w30 - w71
+        w4 = g[21]
+        w45 = w4 * w45
+        w25 = g[27]
+        w48 = w25 * w48
+        w45 = w45 + w48
+        w48 = g[33]
+        w51 = w48 * w51
+        w45 = w45 + w51
+        w51 = w24 * w45
+        w30 = w30 + w51
+        w54 = w4 * w54
+        w57 = w25 * w57
+        w54 = w54 + w57
+        w58 = w48 * w58
+        w54 = w54 + w58
+        w58 = w52 * w54
+        w30 = w30 + w58
+        w30 = 2.0 * w30
+        w30 = w30 * w1
+        w58 = w13 * w30
+        w60 = w60 + w58
+        w26 = w26 * w30
+        w58 = w71 * w26
+        w60 = w60 + w58
+        w58 = 0.5
+        w57 = w58 * w1
+        w57 = w27 + w57
+        w51 = w28 * w57
+        w60 = w60 + w51
+        w6 = w6 - w60
+        r0[0] = w6
+        w33 = w33 / w5 if w5 else _div(w33, w5)
+        w33 = w33 - w10
+        w33 = w33 * w7
+        w2 = w2 / w5 if w5 else _div(w2, w5)
+        w2 = w0 + w2
+        w2 = w2 * w11
+        w33 = w33 + w2
+        w3 = w3 / w9 if w9 else _div(w3, w9)
+        w22 = w22 / w5 if w5 else _div(w22, w5)
+        w22 = w3 + w22
+        w22 = w22 * w17
+        w33 = w33 + w22
+        w22 = w66 * w65
+        w2 = -0.05
+        w2 = w2 * w1
+        w10 = w31 * w27
+        w2 = w2 - w10
+        w20 = w20 * w2
+        w22 = w22 - w20
+        w20 = w31 * w65
+        w61 = w61 * w20
+        w22 = w22 + w61
+        w61 = w32 * w30
+        w22 = w22 + w61
+        w31 = w31 * w30
+        w71 = w71 * w31
+        w22 = w22 + w71
+        w57 = w15 * w57
+        w22 = w22 + w57
+        w33 = w33 + w22
+        r0[1] = w33
+        w8 = w8 / w5 if w5 else _div(w8, w5)
+        w16 = w16 + w8
+        w16 = w16 * w7
+        w29 = w29 / w5 if w5 else _div(w29, w5)
+        w29 = w29 - w3
+        w29 = w29 * w11
+        w16 = w16 + w29
+        w19 = w19 / w5 if w5 else _div(w19, w5)
+        w19 = w0 + w19
+        w19 = w19 * w17
+        w16 = w16 + w19
+        w28 = w28 * w2
+        w15 = w15 * w59
+        w28 = w28 + w15
+        w62 = w62 * w20
+        w28 = w28 - w62
+        w66 = w66 * w70
+        w28 = w28 + w66
+        w13 = w13 * w31
+        w28 = w28 - w13
+        w32 = w32 * w26
+        w28 = w28 + w32
+        w16 = w16 + w28
+        r0[2] = w16
+        w36 = w36 / w5 if w5 else _div(w36, w5)
+        w36 = w0 + w36
+        w16 = 0.6
+        w16 = w16 * w12
+        w36 = w36 * w16
+        w12 = w42 / w9 if w9 else _div(w42, w9)
+        w44 = w44 / w5 if w5 else _div(w44, w5)
+        w44 = w12 + w44
+        w58 = w58 * w37
+        w44 = w44 * w58
+        w36 = w36 + w44
+        w53 = w53 / w5 if w5 else _div(w53, w5)
+        w44 = w38 / w9 if w9 else _div(w38, w9)
+        w53 = w53 - w44
+        w37 = 0.15
+        w37 = w37 * w41
+        w53 = w53 * w37
+        w36 = w36 + w53
+        w53 = -0.03
+        w53 = w53 * w1
+        w41 = w24 * w27
+        w53 = w53 - w41
+        w55 = w55 * w53
+        w41 = w52 * w65
+        w63 = w63 * w41
+        w55 = w55 + w63
+        w65 = w24 * w65
+        w69 = w69 * w65
+        w55 = w55 - w69
+        w69 = w52 * w30
+        w45 = w45 * w69
+        w55 = w55 + w45
+        w24 = w24 * w30
+        w54 = w54 * w24
+        w55 = w55 - w54
+        w54 = 0.30000000000000004
+        w54 = w54 * w1
+        w52 = w52 * w27
+        w54 = w54 - w52
+        w46 = w46 * w54
+        w55 = w55 - w46
+        w36 = w36 + w55
+        r0[3] = w36
+        w36 = w35 * w38
+        w55 = w36 / w5 if w5 else _div(w36, w5)
+        w55 = w55 - w12
+        w55 = w55 * w16
+        w12 = w39 / w5 if w5 else _div(w39, w5)
+        w12 = w0 + w12
+        w12 = w12 * w58
+        w55 = w55 + w12
+        w12 = w35 / w9 if w9 else _div(w35, w9)
+        w56 = w56 / w5 if w5 else _div(w56, w5)
+        w56 = w12 + w56
+        w56 = w56 * w37
+        w55 = w55 + w56
+        w39 = w43 + w39
+        w39 = w39 / w9 if w9 else _div(w39, w9)
+        w39 = w40 * w39
+        w39 = w0 - w39
+        w21 = w21 * w39
+        w36 = w36 / w9 if w9 else _div(w36, w9)
+        w36 = w42 + w36
+        w36 = w40 * w36
+        w47 = w47 * w36
+        w21 = w21 + w47
+        w35 = w35 * w42
+        w9 = w35 / w9 if w9 else _div(w35, w9)
+        w9 = w9 - w38
+        w40 = w40 * w9
+        w49 = w49 * w40
+        w21 = w21 + w49
+        w54 = w21 * w54
+        w64 = w64 * w39
+        w67 = w67 * w36
+        w64 = w64 + w67
+        w68 = w68 * w40
+        w64 = w64 + w68
+        w41 = w64 * w41
+        w4 = w4 * w39
+        w25 = w25 * w36
+        w4 = w4 + w25
+        w48 = w48 * w40
+        w4 = w4 + w48
+        w69 = w4 * w69
+        w41 = w41 + w69
+        w54 = w54 - w41
+        w55 = w55 + w54
+        r0[4] = w55
+        w35 = w35 / w5 if w5 else _div(w35, w5)
+        w44 = w44 + w35
+        w44 = w44 * w16
+        w50 = w50 / w5 if w5 else _div(w50, w5)
+        w50 = w50 - w12
+        w50 = w50 * w58
+        w44 = w44 + w50
+        w43 = w43 / w5 if w5 else _div(w43, w5)
+        w0 = w0 + w43
+        w0 = w0 * w37
+        w44 = w44 + w0
+        w64 = w64 * w65
+        w21 = w21 * w53
+        w64 = w64 - w21
+        w4 = w4 * w24
+        w64 = w64 + w4
+        w44 = w44 + w64
+        r0[5] = w44
+    return [r0]
+
+
+def update_p(z, g, p, h):
+    """update_p(z[6], g[36], p[6], h[1]) -> [p1[6]]"""
+    if _type(z) is _NDARRAY and z.dtype is _F64 and z.shape == (6,):
+        z = z.tolist()
+    else:
+        z = _vec(z, 6, "update_p: z")
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (36,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 36, "update_p: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (6,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 6, "update_p: p")
+    if _type(h) is _NDARRAY and h.dtype is _F64 and h.shape == (1,):
+        h = h.tolist()
+    else:
+        h = _vec(h, 1, "update_p: h")
+    _r = _raw_update_p(z, g, p, h)
+    return [_fromiter(_r[0], _F64, 6)]
+
+
+def _raw_velocity_step(g, p, xi):
+    """velocity_step on lists of Python floats -> [xi1[6]] as lists (see RAW)"""
+    try:
+        w0, w1, w2, w3, w4, w5 = p
+        w6, w7, w8, w9, w10, w11 = xi
+        r0 = [0.0] * 6
+        r0[0] = w6 - (((0.9 * w6) - w0) / 0.9)
+        r0[1] = w7 - (w7 - w1)
+        r0[2] = w8 - (((0.2 * w8) - w2) / 0.2)
+        r0[3] = w9 - (((0.6 * w9) - w3) / 0.6)
+        r0[4] = w10 - (2.0 * ((0.5 * w10) - w4))
+        r0[5] = w11 - (((0.15 * w11) - w5) / 0.15)
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 6
+        w0 = xi[0]
+        w1 = 0.9
+        w2 = w1 * w0
+        w3 = p[0]
+        w2 = w2 - w3
+        w2 = w2 / w1 if w1 else _div(w2, w1)
+        w0 = w0 - w2
+        r0[0] = w0
+        w0 = xi[1]
+        w2 = p[1]
+        w2 = w0 - w2
+        w0 = w0 - w2
+        r0[1] = w0
+        w0 = xi[2]
+        w2 = 0.2
+        w1 = w2 * w0
+        w3 = p[2]
+        w1 = w1 - w3
+        w1 = w1 / w2 if w2 else _div(w1, w2)
+        w0 = w0 - w1
+        r0[2] = w0
+        w0 = xi[3]
+        w1 = 0.6
+        w2 = w1 * w0
+        w3 = p[3]
+        w2 = w2 - w3
+        w2 = w2 / w1 if w1 else _div(w2, w1)
+        w0 = w0 - w2
+        r0[3] = w0
+        w0 = xi[4]
+        w2 = 0.5
+        w2 = w2 * w0
+        w1 = p[4]
+        w2 = w2 - w1
+        w2 = 2.0 * w2
+        w0 = w0 - w2
+        r0[4] = w0
+        w0 = xi[5]
+        w2 = 0.15
+        w1 = w2 * w0
+        w3 = p[5]
+        w1 = w1 - w3
+        w1 = w1 / w2 if w2 else _div(w1, w2)
+        w0 = w0 - w1
+        r0[5] = w0
+    return [r0]
+
+
+def velocity_step(g, p, xi):
+    """velocity_step(g[36], p[6], xi[6]) -> [xi1[6]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (36,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 36, "velocity_step: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (6,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 6, "velocity_step: p")
+    if _type(xi) is _NDARRAY and xi.dtype is _F64 and xi.shape == (6,):
+        xi = xi.tolist()
+    else:
+        xi = _vec(xi, 6, "velocity_step: xi")
+    _r = _raw_velocity_step(g, p, xi)
+    return [_fromiter(_r[0], _F64, 6)]
+
+
+def _raw_record(g, p, xi):
+    """record on lists of Python floats -> [row[49]] as lists (see RAW)"""
+    w0, w1, w2, w3, w4, w5, w6, w7, w8, w9, w10, w11, w12, w13, w14, w15, w16, w17, w18, w19, w20, w21, w22, w23, w24, w25, w26, w27, w28, w29, w30, w31, w32, w33, w34, w35 = g
+    w36, w37, w38, w39, w40, w41 = p
+    w42, w43, w44, w45, w46, w47 = xi
+    r0 = [0.0] * 49
+    r0[0] = w0
+    r0[1] = w1
+    r0[2] = w2
+    r0[3] = w3
+    r0[4] = w4
+    r0[5] = w5
+    r0[6] = w6
+    r0[7] = w7
+    r0[8] = w8
+    r0[9] = w9
+    r0[10] = w10
+    r0[11] = w11
+    r0[12] = w12
+    r0[13] = w13
+    r0[14] = w14
+    r0[15] = w15
+    r0[16] = w16
+    r0[17] = w17
+    r0[18] = w18
+    r0[19] = w19
+    r0[20] = w20
+    r0[21] = w21
+    r0[22] = w22
+    r0[23] = w23
+    r0[24] = w24
+    r0[25] = w25
+    r0[26] = w26
+    r0[27] = w27
+    r0[28] = w28
+    r0[29] = w29
+    r0[30] = w30
+    r0[31] = w31
+    r0[32] = w32
+    r0[33] = w33
+    r0[34] = w34
+    r0[35] = w35
+    r0[36] = w36
+    r0[37] = w37
+    r0[38] = w38
+    r0[39] = w39
+    r0[40] = w40
+    r0[41] = w41
+    w3 = w43 * w43
+    w4 = ((((0.05 * w6) + (0.1 * w0)) - w12) + ((-0.1) * w27)) + ((-0.3) * w33)
+    w5 = ((((0.05 * w7) + (0.1 * w1)) - w13) + ((-0.1) * w28)) + ((-0.3) * w34)
+    w9 = ((((1.3 + (0.05 * w8)) + (0.1 * w2)) - w14) + ((-0.1) * w29)) + ((-0.3) * w35)
+    r0[42] = (((((((0.9 * w42) * w42) + w3) + ((0.2 * w44) * w44)) + ((0.6 * w45) * w45)) + ((0.5 * w46) * w46)) + ((0.15 * w47) * w47)) - (((((((((((((0.25 * (w46 * w46)) + (0.5 * w3)) + w14) + (0.6000000000000001 * w35)) + (0.1 * (w44 * w44))) + (0.075 * (w47 * w47))) + (0.3 * (w45 * w45))) + (0.45 * (w42 * w42))) + ((-2.0) * (w4 * w4))) + ((-2.0) * (w5 * w5))) + ((-2.0) * (w9 * w9))) + ((-0.06) * w29)) + ((-0.1) * w2))
+    r0[43] = ((((w14 * w7) - (w13 * w8)) * w36) + (((w2 * w13) - (w1 * w14)) * w37)) + (((w8 * w1) - (w7 * w2)) * w38)
+    r0[44] = ((((w12 * w8) - (w14 * w6)) * w36) + (((w0 * w14) - (w2 * w12)) * w37)) + (((w6 * w2) - (w8 * w0)) * w38)
+    r0[45] = ((((w13 * w6) - (w12 * w7)) * w36) + (((w1 * w12) - (w0 * w13)) * w37)) + (((w7 * w0) - (w6 * w1)) * w38)
+    r0[46] = ((((w35 * w28) - (w34 * w29)) * w39) + (((w23 * w34) - (w22 * w35)) * w40)) + (((w29 * w22) - (w28 * w23)) * w41)
+    r0[47] = ((((w33 * w29) - (w35 * w27)) * w39) + (((w21 * w35) - (w23 * w33)) * w40)) + (((w27 * w23) - (w29 * w21)) * w41)
+    r0[48] = ((((w34 * w27) - (w33 * w28)) * w39) + (((w22 * w33) - (w21 * w34)) * w40)) + (((w28 * w21) - (w27 * w22)) * w41)
+    return [r0]
+
+
+def record(g, p, xi):
+    """record(g[36], p[6], xi[6]) -> [row[49]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (36,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 36, "record: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (6,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 6, "record: p")
+    if _type(xi) is _NDARRAY and xi.dtype is _F64 and xi.shape == (6,):
+        xi = xi.tolist()
+    else:
+        xi = _vec(xi, 6, "record: xi")
+    _r = _raw_record(g, p, xi)
+    return [_fromiter(_r[0], _F64, 49)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -2479,6 +3197,9 @@ KERNELS = {
     "section": section,
     "chart_point": chart_point,
     "observe": observe,
+    "update_p": update_p,
+    "velocity_step": velocity_step,
+    "record": record,
 }
 
 RAW = {
@@ -2496,6 +3217,9 @@ RAW = {
     "section": _raw_section,
     "chart_point": _raw_chart_point,
     "observe": _raw_observe,
+    "update_p": _raw_update_p,
+    "velocity_step": _raw_velocity_step,
+    "record": _raw_record,
 }
 
 

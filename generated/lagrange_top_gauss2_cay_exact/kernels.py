@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: dfab6d2d1d0eb0f8b4058535f8ff20672870aa8b3df23a52ef351573a8663dda
+# content hash: 132dac27905aa27a8392a129939a7185e4eda742c99d2dcaf44cdb3d8a1d3337
 """Python backend of the hpgen module lagrange_top_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -12234,6 +12234,147 @@ def observe(g, p):
     return [_fromiter(_r[0], _F64, 3), _fromiter(_r[1], _F64, 1), _fromiter(_r[2], _F64, 3), _fromiter(_r[3], _F64, 1)]
 
 
+def _raw_update_p(z, g, p, h):
+    """update_p on lists of Python floats -> [p1[3]] as lists (see RAW)"""
+    w2, w4, w0, w3, w5, w1, w8, w7, w6 = z
+    w9, = h
+    r0 = [0.0] * 3
+    w0 = w9 * ((0.5 * ((3.0000000000000004 * w0) + (0.4641016151377544 * w1))) + (0.5 * (((-6.464101615137755) * w0) + (3.0000000000000004 * w1))))
+    w1 = w9 * ((0.5 * ((3.0000000000000004 * w2) + (0.4641016151377544 * w3))) + (0.5 * (((-6.464101615137755) * w2) + (3.0000000000000004 * w3))))
+    w2 = (w0 * w1) * 0.25
+    w3 = w9 * ((0.5 * ((3.0000000000000004 * w4) + (0.4641016151377544 * w5))) + (0.5 * (((-6.464101615137755) * w4) + (3.0000000000000004 * w5))))
+    w4 = w3 * 0.5
+    w5 = w0 * 0.5
+    w9 = (w3 * w1) * 0.25
+    r0[0] = (((w2 - w4) * w6) + ((w5 + w9) * w7)) + ((1.0 + ((w1 * w1) * 0.25)) * w8)
+    w1 = w1 * 0.5
+    w10 = (w0 * w3) * 0.25
+    r0[1] = (((w1 + w10) * w6) + ((1.0 + ((w3 * w3) * 0.25)) * w7)) + ((w9 - w5) * w8)
+    r0[2] = (((1.0 + ((w0 * w0) * 0.25)) * w6) + ((w10 - w1) * w7)) + ((w4 + w2) * w8)
+    return [r0]
+
+
+def update_p(z, g, p, h):
+    """update_p(z[9], g[9], p[3], h[1]) -> [p1[3]]"""
+    if _type(z) is _NDARRAY and z.dtype is _F64 and z.shape == (9,):
+        z = z.tolist()
+    else:
+        z = _vec(z, 9, "update_p: z")
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "update_p: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (3,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 3, "update_p: p")
+    if _type(h) is _NDARRAY and h.dtype is _F64 and h.shape == (1,):
+        h = h.tolist()
+    else:
+        h = _vec(h, 1, "update_p: h")
+    _r = _raw_update_p(z, g, p, h)
+    return [_fromiter(_r[0], _F64, 3)]
+
+
+def _raw_velocity_step(g, p, xi):
+    """velocity_step on lists of Python floats -> [xi1[3]] as lists (see RAW)"""
+    try:
+        w0, w1, w2 = p
+        w3, w4, w5 = xi
+        r0 = [0.0] * 3
+        r0[0] = w3 - (((15.234375 * w3) - w0) / 15.234375)
+        r0[1] = w4 - (((0.46875 * w4) - w1) / 0.46875)
+        r0[2] = w5 - (((15.234375 * w5) - w2) / 15.234375)
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 3
+        w0 = xi[0]
+        w1 = 15.234375
+        w2 = w1 * w0
+        w3 = p[0]
+        w2 = w2 - w3
+        w2 = w2 / w1 if w1 else _div(w2, w1)
+        w0 = w0 - w2
+        r0[0] = w0
+        w0 = xi[1]
+        w2 = 0.46875
+        w3 = w2 * w0
+        w4 = p[1]
+        w3 = w3 - w4
+        w3 = w3 / w2 if w2 else _div(w3, w2)
+        w0 = w0 - w3
+        r0[1] = w0
+        w0 = xi[2]
+        w3 = w1 * w0
+        w2 = p[2]
+        w3 = w3 - w2
+        w3 = w3 / w1 if w1 else _div(w3, w1)
+        w0 = w0 - w3
+        r0[2] = w0
+    return [r0]
+
+
+def velocity_step(g, p, xi):
+    """velocity_step(g[9], p[3], xi[3]) -> [xi1[3]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "velocity_step: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (3,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 3, "velocity_step: p")
+    if _type(xi) is _NDARRAY and xi.dtype is _F64 and xi.shape == (3,):
+        xi = xi.tolist()
+    else:
+        xi = _vec(xi, 3, "velocity_step: xi")
+    _r = _raw_velocity_step(g, p, xi)
+    return [_fromiter(_r[0], _F64, 3)]
+
+
+def _raw_record(g, p, xi):
+    """record on lists of Python floats -> [row[16]] as lists (see RAW)"""
+    w0, w1, w2, w3, w4, w5, w6, w7, w8 = g
+    w9, w10, w11 = p
+    w12, w13, w14 = xi
+    r0 = [0.0] * 16
+    r0[0] = w0
+    r0[1] = w1
+    r0[2] = w2
+    r0[3] = w3
+    r0[4] = w4
+    r0[5] = w5
+    r0[6] = w6
+    r0[7] = w7
+    r0[8] = w8
+    r0[9] = w9
+    r0[10] = w10
+    r0[11] = w11
+    r0[12] = ((((15.234375 * w12) * w12) + ((0.46875 * w13) * w13)) + ((15.234375 * w14) * w14)) - ((((0.234375 * (w13 * w13)) + (7.6171875 * (w12 * w12))) + (7.6171875 * (w14 * w14))) + ((-147.15) * w5))
+    r0[13] = ((((w8 * w4) - (w7 * w5)) * w9) + (((w2 * w7) - (w1 * w8)) * w10)) + (((w5 * w1) - (w4 * w2)) * w11)
+    r0[14] = ((((w6 * w5) - (w8 * w3)) * w9) + (((w0 * w8) - (w2 * w6)) * w10)) + (((w3 * w2) - (w5 * w0)) * w11)
+    r0[15] = ((((w7 * w3) - (w6 * w4)) * w9) + (((w1 * w6) - (w0 * w7)) * w10)) + (((w4 * w0) - (w3 * w1)) * w11)
+    return [r0]
+
+
+def record(g, p, xi):
+    """record(g[9], p[3], xi[3]) -> [row[16]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "record: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (3,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 3, "record: p")
+    if _type(xi) is _NDARRAY and xi.dtype is _F64 and xi.shape == (3,):
+        xi = xi.tolist()
+    else:
+        xi = _vec(xi, 3, "record: xi")
+    _r = _raw_record(g, p, xi)
+    return [_fromiter(_r[0], _F64, 16)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -12249,6 +12390,9 @@ KERNELS = {
     "section": section,
     "chart_point": chart_point,
     "observe": observe,
+    "update_p": update_p,
+    "velocity_step": velocity_step,
+    "record": record,
 }
 
 RAW = {
@@ -12266,6 +12410,9 @@ RAW = {
     "section": _raw_section,
     "chart_point": _raw_chart_point,
     "observe": _raw_observe,
+    "update_p": _raw_update_p,
+    "velocity_step": _raw_velocity_step,
+    "record": _raw_record,
 }
 
 

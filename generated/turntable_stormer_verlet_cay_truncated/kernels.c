@@ -3,14 +3,15 @@
  * model: turntable
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 06408c75ff9757694cbaeee3a0b6e6867e9697a4889c73c1122ee6631754ec42
+ * content hash: 7dc1720e1c56d7909db5a0e46302c95b6bb0c5550060578e19f097ae2368a9f1
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
  * (g[i + j*n]), h is a scalar at the API and a 1-vector for the kernels. No static mutable
  * state: every function is thread-safe; work arrays live on the stack, sized at codegen time.
  * Status codes: 0 ok, 1 Newton did not converge, 2 non-finite value (or singular Jacobian),
- * 3 tau out of its domain (margin(z, h) <= 0 after convergence), -1 invalid argument.
+ * 3 tau out of its domain (margin(z, h) <= 0 after convergence), 4 a record row not finite
+ * (or its velocity xi not converged), -1 invalid argument.
  */
 /* Standard headers first: the CasADi part below is compiled under hidden visibility. */
 #include <math.h>
@@ -47,6 +48,9 @@
 #define casadi_f10 CASADI_PREFIX(f10)
 #define casadi_f11 CASADI_PREFIX(f11)
 #define casadi_f12 CASADI_PREFIX(f12)
+#define casadi_f13 CASADI_PREFIX(f13)
+#define casadi_f14 CASADI_PREFIX(f14)
+#define casadi_f15 CASADI_PREFIX(f15)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -63,6 +67,7 @@
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
+#define casadi_s5 CASADI_PREFIX(s5)
 #define casadi_sq CASADI_PREFIX(sq)
 
 /* Symbol visibility in DLLs */
@@ -123,6 +128,7 @@ static const casadi_int casadi_s1[3] = {9, 1, 1};
 static const casadi_int casadi_s2[3] = {3, 1, 1};
 static const casadi_int casadi_s3[3] = {1, 1, 1};
 static const casadi_int casadi_s4[3] = {36, 1, 1};
+static const casadi_int casadi_s5[3] = {16, 1, 1};
 
 /* residual:(z[6],g[9],p[3],h)->(F[6]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -3321,187 +3327,192 @@ CASADI_SYMBOL_EXPORT int chart_point_work_bytes(casadi_int *sz_arg, casadi_int* 
 static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
   casadi_real a12, a13, a14, a15, a16, a17;
-  a00=arg[1]? arg[1][0] : 0;
-  a01=arg[0]? arg[0][2] : 0;
+  a00=arg[0]? arg[0][2] : 0;
+  a01=arg[1]? arg[1][0] : 0;
   a02=(a00-a01);
   a03=2.;
   a02=(a02/a03);
-  if (res[0]!=0) res[0][0]=a02;
-  a03=arg[1]? arg[1][1] : 0;
-  a04=5.0000000000000000e-01;
-  a05=arg[0]? arg[0][5] : 0;
-  a06=(a04*a05);
-  a06=(a03-a06);
-  if (res[0]!=0) res[0][1]=a06;
-  a07=arg[1]? arg[1][2] : 0;
+  a03=(-a02);
+  if (res[0]!=0) res[0][0]=a03;
+  a03=5.0000000000000000e-01;
+  a04=arg[0]? arg[0][5] : 0;
+  a05=(a03*a04);
+  a06=arg[1]? arg[1][1] : 0;
+  a07=(a05-a06);
+  a08=(-a07);
+  if (res[0]!=0) res[0][1]=a08;
   a08=3.3333333333333331e-01;
   a09=arg[0]? arg[0][8] : 0;
   a10=(a08*a09);
-  a10=(a07-a10);
-  a11=6.6666666666666663e-01;
-  a10=(a10/a11);
-  if (res[0]!=0) res[0][2]=a10;
-  a12=(a04*a01);
-  a12=(a02+a12);
-  a13=(2.*a12);
-  a13=(a13*a02);
-  a06=(a03*a06);
-  a13=(a13+a06);
-  a06=(a04*a09);
-  a06=(a10+a06);
-  a11=(a11*a06);
-  a11=(a11*a10);
-  a13=(a13+a11);
-  a11=casadi_sq(a03);
-  a04=(a04*a11);
-  a12=casadi_sq(a12);
-  a04=(a04+a12);
-  a12=5.9999999999999998e-02;
-  a12=(a12*a05);
-  a04=(a04+a12);
-  a06=casadi_sq(a06);
-  a08=(a08*a06);
-  a04=(a04+a08);
+  a11=arg[1]? arg[1][2] : 0;
+  a10=(a10-a11);
+  a12=6.6666666666666663e-01;
+  a10=(a10/a12);
+  a13=(-a10);
+  if (res[0]!=0) res[0][2]=a13;
+  a13=(a03*a00);
+  a13=(a13-a02);
+  a14=(2.*a13);
+  a14=(a14*a02);
+  a05=(a05-a07);
+  a07=(a05*a07);
+  a14=(a14+a07);
+  a07=(a03*a09);
+  a07=(a07-a10);
+  a12=(a12*a07);
+  a12=(a12*a10);
+  a14=(a14+a12);
+  a05=casadi_sq(a05);
+  a03=(a03*a05);
+  a13=casadi_sq(a13);
+  a03=(a03+a13);
+  a13=5.9999999999999998e-02;
+  a13=(a13*a04);
+  a03=(a03+a13);
+  a07=casadi_sq(a07);
+  a08=(a08*a07);
+  a03=(a03+a08);
   a08=-8.9999999999999997e-02;
-  a08=(a08*a01);
-  a04=(a04+a08);
+  a08=(a08*a00);
+  a03=(a03+a08);
   a08=-1.4999999999999999e-01;
   a08=(a08*a09);
-  a04=(a04+a08);
-  a13=(a13-a04);
-  if (res[1]!=0) res[1][0]=a13;
-  a13=arg[0]? arg[0][4] : 0;
-  a04=(a09*a13);
+  a03=(a03+a08);
+  a14=(a14+a03);
+  a14=(-a14);
+  if (res[1]!=0) res[1][0]=a14;
+  a14=arg[0]? arg[0][4] : 0;
+  a03=(a09*a14);
   a08=arg[0]? arg[0][7] : 0;
-  a06=(a08*a05);
-  a04=(a04-a06);
-  a04=(a04*a00);
-  a12=(a01*a08);
-  a11=arg[0]? arg[0][1] : 0;
-  a10=(a11*a09);
-  a12=(a12-a10);
-  a12=(a12*a03);
-  a04=(a04+a12);
-  a12=(a05*a11);
-  a02=(a13*a01);
-  a12=(a12-a02);
-  a12=(a12*a07);
-  a04=(a04+a12);
-  if (res[2]!=0) res[2][0]=a04;
-  a04=arg[0]? arg[0][6] : 0;
-  a12=(a04*a05);
-  a14=arg[0]? arg[0][3] : 0;
-  a15=(a09*a14);
-  a12=(a12-a15);
-  a12=(a12*a00);
+  a07=(a08*a04);
+  a03=(a03-a07);
+  a03=(a03*a01);
+  a13=(a00*a08);
+  a05=arg[0]? arg[0][1] : 0;
+  a12=(a05*a09);
+  a13=(a13-a12);
+  a13=(a13*a06);
+  a03=(a03+a13);
+  a13=(a04*a05);
+  a10=(a14*a00);
+  a13=(a13-a10);
+  a13=(a13*a11);
+  a03=(a03+a13);
+  if (res[2]!=0) res[2][0]=a03;
+  a03=arg[0]? arg[0][6] : 0;
+  a13=(a03*a04);
+  a02=arg[0]? arg[0][3] : 0;
+  a15=(a09*a02);
+  a13=(a13-a15);
+  a13=(a13*a01);
   a15=arg[0]? arg[0][0] : 0;
   a16=(a15*a09);
-  a17=(a01*a04);
+  a17=(a00*a03);
   a16=(a16-a17);
-  a16=(a16*a03);
-  a12=(a12+a16);
-  a16=(a14*a01);
-  a17=(a05*a15);
+  a16=(a16*a06);
+  a13=(a13+a16);
+  a16=(a02*a00);
+  a17=(a04*a15);
   a16=(a16-a17);
-  a16=(a16*a07);
-  a12=(a12+a16);
-  if (res[2]!=0) res[2][1]=a12;
-  a12=(a08*a14);
-  a16=(a04*a13);
-  a12=(a12-a16);
-  a12=(a12*a00);
-  a00=(a11*a04);
+  a16=(a16*a11);
+  a13=(a13+a16);
+  if (res[2]!=0) res[2][1]=a13;
+  a13=(a08*a02);
+  a16=(a03*a14);
+  a13=(a13-a16);
+  a13=(a13*a01);
+  a01=(a05*a03);
   a16=(a15*a08);
-  a00=(a00-a16);
-  a00=(a00*a03);
-  a12=(a12+a00);
-  a00=(a13*a15);
-  a03=(a14*a11);
-  a00=(a00-a03);
-  a00=(a00*a07);
-  a12=(a12+a00);
-  if (res[2]!=0) res[2][2]=a12;
-  a12=casadi_sq(a15);
-  a00=casadi_sq(a11);
-  a12=(a12+a00);
-  a00=casadi_sq(a01);
-  a12=(a12+a00);
-  a00=1.;
-  a12=(a12-a00);
-  a12=casadi_fabs(a12);
-  a07=(a14*a15);
-  a03=(a13*a11);
-  a07=(a07+a03);
-  a03=(a05*a01);
-  a07=(a07+a03);
-  a07=casadi_fabs(a07);
-  a12=casadi_fmax(a12,a07);
-  a07=(a04*a15);
-  a03=(a08*a11);
-  a07=(a07+a03);
-  a03=(a09*a01);
-  a07=(a07+a03);
-  a07=casadi_fabs(a07);
-  a12=casadi_fmax(a12,a07);
-  a07=(a15*a14);
-  a03=(a11*a13);
-  a07=(a07+a03);
-  a03=(a01*a05);
-  a07=(a07+a03);
-  a07=casadi_fabs(a07);
-  a12=casadi_fmax(a12,a07);
-  a07=casadi_sq(a14);
-  a03=casadi_sq(a13);
-  a07=(a07+a03);
-  a03=casadi_sq(a05);
-  a07=(a07+a03);
-  a07=(a07-a00);
-  a07=casadi_fabs(a07);
-  a12=casadi_fmax(a12,a07);
-  a07=(a04*a14);
-  a03=(a08*a13);
-  a07=(a07+a03);
-  a03=(a09*a05);
-  a07=(a07+a03);
-  a07=casadi_fabs(a07);
-  a12=casadi_fmax(a12,a07);
-  a07=(a15*a04);
-  a03=(a11*a08);
-  a07=(a07+a03);
-  a03=(a01*a09);
-  a07=(a07+a03);
-  a07=casadi_fabs(a07);
-  a12=casadi_fmax(a12,a07);
-  a07=(a14*a04);
-  a03=(a13*a08);
-  a07=(a07+a03);
-  a03=(a05*a09);
-  a07=(a07+a03);
-  a07=casadi_fabs(a07);
-  a12=casadi_fmax(a12,a07);
-  a07=casadi_sq(a04);
-  a03=casadi_sq(a08);
-  a07=(a07+a03);
-  a03=casadi_sq(a09);
-  a07=(a07+a03);
-  a07=(a07-a00);
-  a07=casadi_fabs(a07);
-  a12=casadi_fmax(a12,a07);
-  a13=(a13*a09);
-  a13=(a13-a06);
-  a15=(a15*a13);
-  a08=(a08*a01);
-  a10=(a10-a08);
-  a14=(a14*a10);
-  a15=(a15-a14);
-  a11=(a11*a05);
-  a11=(a11-a02);
-  a04=(a04*a11);
-  a15=(a15+a04);
-  a15=(a15-a00);
+  a01=(a01-a16);
+  a01=(a01*a06);
+  a13=(a13+a01);
+  a01=(a14*a15);
+  a06=(a02*a05);
+  a01=(a01-a06);
+  a01=(a01*a11);
+  a13=(a13+a01);
+  if (res[2]!=0) res[2][2]=a13;
+  a13=casadi_sq(a15);
+  a01=casadi_sq(a05);
+  a13=(a13+a01);
+  a01=casadi_sq(a00);
+  a13=(a13+a01);
+  a01=1.;
+  a13=(a13-a01);
+  a13=casadi_fabs(a13);
+  a11=(a02*a15);
+  a06=(a14*a05);
+  a11=(a11+a06);
+  a06=(a04*a00);
+  a11=(a11+a06);
+  a11=casadi_fabs(a11);
+  a13=casadi_fmax(a13,a11);
+  a11=(a03*a15);
+  a06=(a08*a05);
+  a11=(a11+a06);
+  a06=(a09*a00);
+  a11=(a11+a06);
+  a11=casadi_fabs(a11);
+  a13=casadi_fmax(a13,a11);
+  a11=(a15*a02);
+  a06=(a05*a14);
+  a11=(a11+a06);
+  a06=(a00*a04);
+  a11=(a11+a06);
+  a11=casadi_fabs(a11);
+  a13=casadi_fmax(a13,a11);
+  a11=casadi_sq(a02);
+  a06=casadi_sq(a14);
+  a11=(a11+a06);
+  a06=casadi_sq(a04);
+  a11=(a11+a06);
+  a11=(a11-a01);
+  a11=casadi_fabs(a11);
+  a13=casadi_fmax(a13,a11);
+  a11=(a03*a02);
+  a06=(a08*a14);
+  a11=(a11+a06);
+  a06=(a09*a04);
+  a11=(a11+a06);
+  a11=casadi_fabs(a11);
+  a13=casadi_fmax(a13,a11);
+  a11=(a15*a03);
+  a06=(a05*a08);
+  a11=(a11+a06);
+  a06=(a00*a09);
+  a11=(a11+a06);
+  a11=casadi_fabs(a11);
+  a13=casadi_fmax(a13,a11);
+  a11=(a02*a03);
+  a06=(a14*a08);
+  a11=(a11+a06);
+  a06=(a04*a09);
+  a11=(a11+a06);
+  a11=casadi_fabs(a11);
+  a13=casadi_fmax(a13,a11);
+  a11=casadi_sq(a03);
+  a06=casadi_sq(a08);
+  a11=(a11+a06);
+  a06=casadi_sq(a09);
+  a11=(a11+a06);
+  a11=(a11-a01);
+  a11=casadi_fabs(a11);
+  a13=casadi_fmax(a13,a11);
+  a14=(a14*a09);
+  a14=(a14-a07);
+  a15=(a15*a14);
+  a08=(a08*a00);
+  a12=(a12-a08);
+  a02=(a02*a12);
+  a15=(a15-a02);
+  a05=(a05*a04);
+  a05=(a05-a10);
+  a03=(a03*a05);
+  a15=(a15+a03);
+  a15=(a15-a01);
   a15=casadi_fabs(a15);
-  a12=casadi_fmax(a12,a15);
-  if (res[3]!=0) res[3][0]=a12;
+  a13=casadi_fmax(a13,a15);
+  if (res[3]!=0) res[3][0]=a13;
   return 0;
 }
 
@@ -3584,6 +3595,649 @@ CASADI_SYMBOL_EXPORT int observe_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
   return 0;
 }
 
+/* update_p:(z[6],g[9],p[3],h)->(p1[3]) */
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42;
+  a00=arg[3]? arg[3][0] : 0;
+  a01=5.0000000000000000e-01;
+  a02=arg[0]? arg[0][2] : 0;
+  a03=(a01*a02);
+  a04=arg[0]? arg[0][5] : 0;
+  a05=(a01*a04);
+  a03=(a03+a05);
+  a03=(a00*a03);
+  a05=arg[0]? arg[0][0] : 0;
+  a06=(a01*a05);
+  a07=arg[0]? arg[0][3] : 0;
+  a08=(a01*a07);
+  a06=(a06+a08);
+  a06=(a00*a06);
+  a08=(a03*a06);
+  a09=4.;
+  a10=(a08/a09);
+  a11=arg[0]? arg[0][1] : 0;
+  a12=(a01*a11);
+  a13=arg[0]? arg[0][4] : 0;
+  a14=(a01*a13);
+  a12=(a12+a14);
+  a12=(a00*a12);
+  a14=2.;
+  a15=(a12/a14);
+  a16=(a10-a15);
+  a17=casadi_sq(a06);
+  a18=casadi_sq(a12);
+  a19=(a17+a18);
+  a20=casadi_sq(a03);
+  a19=(a19+a20);
+  a19=(a09+a19);
+  a19=(a09/a19);
+  a21=(a19*a15);
+  a22=arg[2]? arg[2][0] : 0;
+  a10=(a15+a10);
+  a23=(a06/a14);
+  a24=(a19*a23);
+  a25=arg[1]? arg[1][2] : 0;
+  a26=1.;
+  a27=(a20+a18);
+  a27=(a27/a14);
+  a27=(a19*a27);
+  a27=(a26-a27);
+  a27=(a25*a27);
+  a28=arg[1]? arg[1][5] : 0;
+  a29=(a06*a12);
+  a30=(a29/a14);
+  a30=(a03+a30);
+  a30=(a19*a30);
+  a30=(a28*a30);
+  a27=(a27+a30);
+  a30=arg[1]? arg[1][8] : 0;
+  a31=(a06*a03);
+  a32=(a31/a14);
+  a32=(a32-a12);
+  a32=(a19*a32);
+  a32=(a30*a32);
+  a27=(a27+a32);
+  a32=-7.4999999999999997e-02;
+  a32=(a32*a00);
+  a08=(a08/a14);
+  a08=(a12+a08);
+  a08=(a19*a08);
+  a08=(a25*a08);
+  a33=(a03*a12);
+  a34=(a33/a14);
+  a34=(a34-a06);
+  a34=(a19*a34);
+  a34=(a28*a34);
+  a08=(a08+a34);
+  a34=(a18+a17);
+  a34=(a34/a14);
+  a34=(a19*a34);
+  a34=(a26-a34);
+  a34=(a30*a34);
+  a08=(a08+a34);
+  a34=(a01*a08);
+  a04=(a04+a34);
+  a04=(2.*a04);
+  a34=1.6666666666666666e-01;
+  a34=(a34*a00);
+  a04=(a04*a34);
+  a04=(a01*a04);
+  a04=(a32+a04);
+  a35=(a27*a04);
+  a36=-4.4999999999999998e-02;
+  a36=(a36*a00);
+  a37=(a01*a27);
+  a07=(a07+a37);
+  a07=(2.*a07);
+  a37=(a01*a00);
+  a07=(a07*a37);
+  a07=(a01*a07);
+  a07=(a36+a07);
+  a38=(a08*a07);
+  a35=(a35-a38);
+  a35=(a35/a00);
+  a38=(a24*a35);
+  a39=2.9999999999999999e-02;
+  a39=(a39*a00);
+  a40=(a12*a06);
+  a41=(a40/a14);
+  a41=(a41-a03);
+  a41=(a19*a41);
+  a41=(a25*a41);
+  a42=(a20+a17);
+  a42=(a42/a14);
+  a42=(a19*a42);
+  a42=(a26-a42);
+  a42=(a28*a42);
+  a41=(a41+a42);
+  a12=(a12*a03);
+  a42=(a12/a14);
+  a06=(a06+a42);
+  a06=(a19*a06);
+  a06=(a30*a06);
+  a41=(a41+a06);
+  a06=(a01*a41);
+  a13=(a13+a06);
+  a13=(2.*a13);
+  a06=2.5000000000000000e-01;
+  a06=(a06*a00);
+  a13=(a13*a06);
+  a13=(a01*a13);
+  a13=(a39+a13);
+  a08=(a08*a13);
+  a04=(a41*a04);
+  a08=(a08-a04);
+  a08=(a08/a00);
+  a04=(a21*a08);
+  a38=(a38-a04);
+  a41=(a41*a07);
+  a27=(a27*a13);
+  a41=(a41-a27);
+  a41=(a41/a00);
+  a27=(a19*a41);
+  a38=(a38+a27);
+  a38=(a00*a38);
+  a10=(a10*a38);
+  a40=(a40/a09);
+  a03=(a03/a14);
+  a14=(a40-a03);
+  a27=(a19*a03);
+  a13=(a27*a08);
+  a07=(a19*a35);
+  a13=(a13+a07);
+  a07=(a24*a41);
+  a13=(a13-a07);
+  a13=(a00*a13);
+  a14=(a14*a13);
+  a10=(a10+a14);
+  a17=(a17/a09);
+  a17=(a26+a17);
+  a08=(a19*a08);
+  a35=(a27*a35);
+  a08=(a08-a35);
+  a41=(a21*a41);
+  a08=(a08+a41);
+  a00=(a00*a08);
+  a08=(a17*a00);
+  a10=(a10+a08);
+  a08=(a01*a28);
+  a11=(a11+a08);
+  a11=(2.*a11);
+  a11=(a11*a06);
+  a11=(a01*a11);
+  a39=(a39+a11);
+  a11=(a30*a39);
+  a06=(a01*a30);
+  a02=(a02+a06);
+  a02=(2.*a02);
+  a02=(a02*a34);
+  a02=(a01*a02);
+  a32=(a32+a02);
+  a02=(a28*a32);
+  a11=(a11-a02);
+  a10=(a10+a11);
+  a22=(a22+a10);
+  a10=(a21*a22);
+  a11=arg[2]? arg[2][1] : 0;
+  a33=(a33/a09);
+  a02=(a33-a23);
+  a02=(a02*a38);
+  a18=(a18/a09);
+  a18=(a26+a18);
+  a34=(a18*a13);
+  a02=(a02+a34);
+  a29=(a29/a09);
+  a34=(a03+a29);
+  a34=(a34*a00);
+  a02=(a02+a34);
+  a32=(a25*a32);
+  a34=(a01*a25);
+  a05=(a05+a34);
+  a05=(2.*a05);
+  a05=(a05*a37);
+  a01=(a01*a05);
+  a36=(a36+a01);
+  a30=(a30*a36);
+  a32=(a32-a30);
+  a02=(a02+a32);
+  a11=(a11+a02);
+  a02=(a24*a11);
+  a10=(a10-a02);
+  a02=arg[2]? arg[2][2] : 0;
+  a20=(a20/a09);
+  a26=(a26+a20);
+  a38=(a26*a38);
+  a12=(a12/a09);
+  a20=(a23+a12);
+  a20=(a20*a13);
+  a38=(a38+a20);
+  a31=(a31/a09);
+  a09=(a31-a15);
+  a09=(a09*a00);
+  a38=(a38+a09);
+  a28=(a28*a36);
+  a25=(a25*a39);
+  a28=(a28-a25);
+  a38=(a38+a28);
+  a02=(a02+a38);
+  a38=(a19*a02);
+  a10=(a10+a38);
+  a16=(a16*a10);
+  a40=(a03+a40);
+  a38=(a19*a11);
+  a28=(a27*a22);
+  a38=(a38-a28);
+  a24=(a24*a02);
+  a38=(a38+a24);
+  a40=(a40*a38);
+  a16=(a16+a40);
+  a19=(a19*a22);
+  a27=(a27*a11);
+  a19=(a19+a27);
+  a21=(a21*a02);
+  a19=(a19-a21);
+  a17=(a17*a19);
+  a16=(a16+a17);
+  if (res[0]!=0) res[0][0]=a16;
+  a33=(a23+a33);
+  a33=(a33*a10);
+  a18=(a18*a38);
+  a33=(a33+a18);
+  a29=(a29-a03);
+  a29=(a29*a19);
+  a33=(a33+a29);
+  if (res[0]!=0) res[0][1]=a33;
+  a26=(a26*a10);
+  a12=(a12-a23);
+  a12=(a12*a38);
+  a26=(a26+a12);
+  a15=(a15+a31);
+  a15=(a15*a19);
+  a26=(a26+a15);
+  if (res[0]!=0) res[0][2]=a26;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int update_p(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f13(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int update_p_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void update_p_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void update_p_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void update_p_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int update_p_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int update_p_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real update_p_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* update_p_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* update_p_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "p1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* update_p_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s2;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* update_p_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int update_p_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int update_p_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* velocity_step:(g[9],p[3],xi[3])->(xi1[3]) */
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3;
+  a0=arg[2]? arg[2][0] : 0;
+  a1=5.0000000000000000e-01;
+  a2=arg[0]? arg[0][2] : 0;
+  a2=(a1*a2);
+  a2=(a0+a2);
+  a2=(2.*a2);
+  a3=arg[1]? arg[1][0] : 0;
+  a2=(a2-a3);
+  a3=2.;
+  a2=(a2/a3);
+  a0=(a0-a2);
+  if (res[0]!=0) res[0][0]=a0;
+  a0=arg[2]? arg[2][1] : 0;
+  a2=arg[0]? arg[0][5] : 0;
+  a2=(a1*a2);
+  a2=(a0+a2);
+  a3=arg[1]? arg[1][1] : 0;
+  a2=(a2-a3);
+  a0=(a0-a2);
+  if (res[0]!=0) res[0][1]=a0;
+  a0=arg[2]? arg[2][2] : 0;
+  a2=6.6666666666666663e-01;
+  a3=arg[0]? arg[0][8] : 0;
+  a1=(a1*a3);
+  a1=(a0+a1);
+  a1=(a2*a1);
+  a3=arg[1]? arg[1][2] : 0;
+  a1=(a1-a3);
+  a1=(a1/a2);
+  a0=(a0-a1);
+  if (res[0]!=0) res[0][2]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f14(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void velocity_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void velocity_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void velocity_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int velocity_step_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int velocity_step_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real velocity_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* velocity_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    case 2: return "xi";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* velocity_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "xi1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* velocity_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    case 2: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* velocity_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* record:(g[9],p[3],xi[3])->(row[16]) */
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18;
+  a00=arg[0]? arg[0][0] : 0;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=arg[0]? arg[0][1] : 0;
+  if (res[0]!=0) res[0][1]=a01;
+  a02=arg[0]? arg[0][2] : 0;
+  if (res[0]!=0) res[0][2]=a02;
+  a03=arg[0]? arg[0][3] : 0;
+  if (res[0]!=0) res[0][3]=a03;
+  a04=arg[0]? arg[0][4] : 0;
+  if (res[0]!=0) res[0][4]=a04;
+  a05=arg[0]? arg[0][5] : 0;
+  if (res[0]!=0) res[0][5]=a05;
+  a06=arg[0]? arg[0][6] : 0;
+  if (res[0]!=0) res[0][6]=a06;
+  a07=arg[0]? arg[0][7] : 0;
+  if (res[0]!=0) res[0][7]=a07;
+  a08=arg[0]? arg[0][8] : 0;
+  if (res[0]!=0) res[0][8]=a08;
+  a09=arg[1]? arg[1][0] : 0;
+  if (res[0]!=0) res[0][9]=a09;
+  a10=arg[1]? arg[1][1] : 0;
+  if (res[0]!=0) res[0][10]=a10;
+  a11=arg[1]? arg[1][2] : 0;
+  if (res[0]!=0) res[0][11]=a11;
+  a12=arg[2]? arg[2][0] : 0;
+  a13=5.0000000000000000e-01;
+  a14=(a13*a02);
+  a14=(a12+a14);
+  a15=(2.*a14);
+  a15=(a15*a12);
+  a12=arg[2]? arg[2][1] : 0;
+  a16=(a13*a05);
+  a16=(a12+a16);
+  a12=(a16*a12);
+  a15=(a15+a12);
+  a12=6.6666666666666663e-01;
+  a17=arg[2]? arg[2][2] : 0;
+  a18=(a13*a08);
+  a18=(a17+a18);
+  a12=(a12*a18);
+  a12=(a12*a17);
+  a15=(a15+a12);
+  a16=casadi_sq(a16);
+  a13=(a13*a16);
+  a14=casadi_sq(a14);
+  a13=(a13+a14);
+  a14=5.9999999999999998e-02;
+  a14=(a14*a05);
+  a13=(a13+a14);
+  a14=3.3333333333333331e-01;
+  a18=casadi_sq(a18);
+  a14=(a14*a18);
+  a13=(a13+a14);
+  a14=-8.9999999999999997e-02;
+  a14=(a14*a02);
+  a13=(a13+a14);
+  a14=-1.4999999999999999e-01;
+  a14=(a14*a08);
+  a13=(a13+a14);
+  a15=(a15-a13);
+  if (res[0]!=0) res[0][12]=a15;
+  a15=(a08*a04);
+  a13=(a07*a05);
+  a15=(a15-a13);
+  a15=(a15*a09);
+  a13=(a02*a07);
+  a14=(a01*a08);
+  a13=(a13-a14);
+  a13=(a13*a10);
+  a15=(a15+a13);
+  a13=(a05*a01);
+  a14=(a04*a02);
+  a13=(a13-a14);
+  a13=(a13*a11);
+  a15=(a15+a13);
+  if (res[0]!=0) res[0][13]=a15;
+  a15=(a06*a05);
+  a13=(a08*a03);
+  a15=(a15-a13);
+  a15=(a15*a09);
+  a08=(a00*a08);
+  a13=(a02*a06);
+  a08=(a08-a13);
+  a08=(a08*a10);
+  a15=(a15+a08);
+  a02=(a03*a02);
+  a05=(a05*a00);
+  a02=(a02-a05);
+  a02=(a02*a11);
+  a15=(a15+a02);
+  if (res[0]!=0) res[0][14]=a15;
+  a15=(a07*a03);
+  a02=(a06*a04);
+  a15=(a15-a02);
+  a15=(a15*a09);
+  a06=(a01*a06);
+  a07=(a00*a07);
+  a06=(a06-a07);
+  a06=(a06*a10);
+  a15=(a15+a06);
+  a04=(a04*a00);
+  a03=(a03*a01);
+  a04=(a04-a03);
+  a04=(a04*a11);
+  a15=(a15+a04);
+  if (res[0]!=0) res[0][15]=a15;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int record(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f15(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int record_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void record_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void record_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void record_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int record_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int record_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real record_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* record_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    case 2: return "xi";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* record_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "row";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* record_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    case 2: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* record_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s5;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int record_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int record_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
 
 
 /* ======================= end of CasADi-generated code =================================== */
@@ -3603,6 +4257,14 @@ CASADI_SYMBOL_EXPORT int observe_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
 #define HPGEN_NO_CONVERGENCE 1
 #define HPGEN_NONFINITE 2
 #define HPGEN_DOMAIN 3
+#define HPGEN_RECORD 4
+/* the scene's record row (kernel record): its width and what it needs */
+#define HPGEN_W 16
+#define HPGEN_RECORD_USES_XI 1
+#define HPGEN_LEGENDRE_QUADRATIC 1
+/* neither the step (residual, p_{k+1}) nor the record row use g: hpgen_advance_record does
+   not reconstruct the group at all */
+#define HPGEN_SKIP_G 0
 #define HPGEN_INVALID (-1)
 /* Newton stalls at round-off: stop when |dz| stopped decreasing while below this * (1+|z|) */
 #define HPGEN_ROUNDOFF_FLOOR 1e-11
@@ -3643,9 +4305,10 @@ typedef struct hpgen_run {
     long long lu_valid;              /* lu holds J^{-1} */
     double s;                        /* section(g_k, p_k), when s_valid */
     long long s_valid;
+    long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "06408c75ff9757694cbaeee3a0b6e6867e9697a4889c73c1122ee6631754ec42"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "7dc1720e1c56d7909db5a0e46302c95b6bb0c5550060578e19f097ae2368a9f1"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -3666,6 +4329,9 @@ static int hpgen_k_margin(const double* in0, const double* in1, double* out0);
 static int hpgen_k_section(const double* in0, const double* in1, double* out0);
 static int hpgen_k_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
 static int hpgen_k_observe(const double* in0, const double* in1, double* out0, double* out1, double* out2, double* out3);
+static int hpgen_k_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_velocity_step(const double* in0, const double* in1, const double* in2, double* out0);
+static int hpgen_k_record(const double* in0, const double* in1, const double* in2, double* out0);
 
 /* residual(z[6], g[9], p[3], h[1]) -> (F[6]) */
 #define HPGEN_RESIDUAL_SZ_ARG 4
@@ -4014,6 +4680,85 @@ HPGEN_EXPORT int hpgen_kernel_observe(const double* in0, const double* in1, doub
     return hpgen_k_observe(in0, in1, out0, out1, out2, out3);
 }
 
+/* update_p(z[6], g[9], p[3], h[1]) -> (p1[3]) */
+#define HPGEN_UPDATE_P_SZ_ARG 4
+#define HPGEN_UPDATE_P_SZ_RES 1
+#define HPGEN_UPDATE_P_SZ_IW 0
+#define HPGEN_UPDATE_P_SZ_W 43
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_update_p exports it */
+static int hpgen_k_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_UPDATE_P_SZ_ARG + 1];
+    casadi_real* res[HPGEN_UPDATE_P_SZ_RES + 1];
+    casadi_int iw[HPGEN_UPDATE_P_SZ_IW + 1];
+    casadi_real w[HPGEN_UPDATE_P_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = update_p(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_update_p(in0, in1, in2, in3, out0);
+}
+
+/* velocity_step(g[9], p[3], xi[3]) -> (xi1[3]) */
+#define HPGEN_VELOCITY_STEP_SZ_ARG 3
+#define HPGEN_VELOCITY_STEP_SZ_RES 1
+#define HPGEN_VELOCITY_STEP_SZ_IW 0
+#define HPGEN_VELOCITY_STEP_SZ_W 4
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_velocity_step exports it */
+static int hpgen_k_velocity_step(const double* in0, const double* in1, const double* in2, double* out0) {
+    const casadi_real* arg[HPGEN_VELOCITY_STEP_SZ_ARG + 1];
+    casadi_real* res[HPGEN_VELOCITY_STEP_SZ_RES + 1];
+    casadi_int iw[HPGEN_VELOCITY_STEP_SZ_IW + 1];
+    casadi_real w[HPGEN_VELOCITY_STEP_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    res[0] = out0;
+    flag = velocity_step(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_velocity_step(const double* in0, const double* in1, const double* in2, double* out0) {
+    return hpgen_k_velocity_step(in0, in1, in2, out0);
+}
+
+/* record(g[9], p[3], xi[3]) -> (row[16]) */
+#define HPGEN_RECORD_SZ_ARG 3
+#define HPGEN_RECORD_SZ_RES 1
+#define HPGEN_RECORD_SZ_IW 0
+#define HPGEN_RECORD_SZ_W 19
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_record exports it */
+static int hpgen_k_record(const double* in0, const double* in1, const double* in2, double* out0) {
+    const casadi_real* arg[HPGEN_RECORD_SZ_ARG + 1];
+    casadi_real* res[HPGEN_RECORD_SZ_RES + 1];
+    casadi_int iw[HPGEN_RECORD_SZ_IW + 1];
+    casadi_real w[HPGEN_RECORD_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    res[0] = out0;
+    flag = record(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_record(const double* in0, const double* in1, const double* in2, double* out0) {
+    return hpgen_k_record(in0, in1, in2, out0);
+}
+
 /* ---- dense linear algebra and Newton ---- */
 
 /* max |x_i|; NaN if any x_i is NaN */
@@ -4252,7 +4997,8 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
 }
 
 /* One step of a run: margin(z, h) > 0 at the start (check_start), Newton from z (in/out),
-   margin(z, h) > 0 at the solution, then update -> (g1, p1). */
+   margin(z, h) > 0 at the solution, then update -> (g1, p1); with_g = 0: update_p -> p1
+   only (g1 untouched). */
 /* small kernels: inline them and the Newton loop into one body (GCC/Clang), so the compiler
    schedules the kernels' arithmetic together with the solve */
 #if defined(__GNUC__)
@@ -4261,7 +5007,7 @@ __attribute__((flatten))
 static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
                            const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
                            double* g1, double* p1, long long* iters, long long* jacs,
-                           double* rnorm, int check_start) {
+                           double* rnorm, int check_start, int with_g) {
     double m[1];
     int code;
     /* a start outside tau's domain means h is too large for the chart: do not let Newton
@@ -4280,6 +5026,11 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
     }
     if (hpgen_k_margin(z, hv, m)) return HPGEN_NONFINITE;
     if (!(m[0] > 0.0)) return HPGEN_DOMAIN;
+    if (!with_g) {
+        if (hpgen_k_update_p(z, g, p, hv, p1) || !hpgen_all_finite(p1, HPGEN_D))
+            return HPGEN_NONFINITE;
+        return HPGEN_OK;
+    }
     if (hpgen_k_update(z, g, p, hv, g1, p1)) return HPGEN_NONFINITE;
     if (!hpgen_all_finite(g1, HPGEN_NN) || !hpgen_all_finite(p1, HPGEN_D))
         return HPGEN_NONFINITE;
@@ -4307,7 +5058,8 @@ HPGEN_EXPORT int hpgen_step(const double* g, const double* p, double h, double* 
     hpgen_status_init(st);
     if (!hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return HPGEN_INVALID; }
     hv[0] = h;
-    code = hpgen_step_core(g, p, hv, z, o, lu, piv, &valid, g1, p1, &it, &st->jacobians, &r, 1);
+    code = hpgen_step_core(g, p, hv, z, o, lu, piv, &valid, g1, p1, &it, &st->jacobians, &r, 1,
+                           1);
     st->code = code; st->iterations = it; st->total_iterations = it; st->residual = r;
     return code;
 }
@@ -4338,10 +5090,11 @@ HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, d
    sizes them for the records falling in this call). Stops at the first failed step (the run
    keeps the last good state). Returns the steps done in this call. */
 /* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
-   success the run moved to (g_{k+1}, p_{k+1}); o for the steps after the first, full (o with
-   full Newton) for the first. Updates the counters of st; returns the status code. */
+   success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for the steps
+   after the first, full (o with full Newton) for the first. Updates the counters of st;
+   returns the status code. */
 static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
-                          const hpgen_options* full, hpgen_status* st) {
+                          const hpgen_options* full, hpgen_status* st, int with_g) {
     double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], res;
     long long it;
     int i, code;
@@ -4355,7 +5108,7 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
         for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
     /* the first step starts from the crude guess kernel: full Newton */
     code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? full : o, r->lu, r->piv,
-                           &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0);
+                           &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0, with_g);
     st->iterations = it;
     st->total_iterations += it;
     st->residual = res;
@@ -4364,7 +5117,7 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     memcpy(r->zprev, r->z, sizeof r->z);
     memcpy(r->z, zs, sizeof r->z);
     if (r->have_prev < 2) r->have_prev += 1;
-    memcpy(r->g, g1, sizeof g1);
+    if (with_g) memcpy(r->g, g1, sizeof g1);
     memcpy(r->p, p1, sizeof p1);
     r->k += 1;
     return HPGEN_OK;
@@ -4377,12 +5130,14 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
     long long n, rec = 0;
     hpgen_options full;
     hpgen_status_init(st);
-    if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    if (steps < 0 || every < 1 || !hpgen_options_ok(o) || r->g_stale) {
+        st->code = HPGEN_INVALID; return 0;
+    }
     hv[0] = h;
     full = *o;
     full.simplified = 0;
     for (n = 0; n < steps; ++n) {
-        if (hpgen_run_step(r, hv, o, &full, st) != HPGEN_OK) return n;
+        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
         if (r->k % every == 0) {
             memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof r->g);
             memcpy(p_rec + rec * HPGEN_D, r->p, sizeof r->p);
@@ -4413,7 +5168,9 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
     hpgen_options full;
     hpgen_status_init(st);
     *n_rec = 0;
-    if (steps < 0 || cap < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    if (steps < 0 || cap < 1 || !hpgen_options_ok(o) || r->g_stale) {
+        st->code = HPGEN_INVALID; return 0;
+    }
     hv[0] = h;
     full = *o;
     full.simplified = 0;
@@ -4427,7 +5184,7 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
         const long long k = r->k;
         memcpy(g0, r->g, sizeof g0);
         memcpy(p0, r->p, sizeof p0);
-        if (hpgen_run_step(r, hv, o, &full, st) != HPGEN_OK) return n;
+        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
         if (hpgen_k_section(r->g, r->p, s1) || !isfinite(s1[0])) {
             st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
         }
@@ -4448,6 +5205,107 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
     }
     st->step = r->k;
     return n;
+}
+
+/* xi with legendre(g, xi) = p: Newton (kernel velocity_step) from xi = 0; one step when l is
+   quadratic in xi (then exact), else until |dxi| <= 1e-14 (1 + |xi|) or the round-off floor,
+   at most 50 iterations (the runtime's Integrator.velocity uses the same test). */
+#if HPGEN_RECORD_USES_XI
+static int hpgen_velocity(const double* g, const double* p, double* xi) {
+    double x1[HPGEN_D], dprev = HUGE_VAL;
+    int i, it;
+    for (i = 0; i < HPGEN_D; ++i) xi[i] = 0.0;
+    for (it = 1; it <= 50; ++it) {
+        double dn = 0.0, xn;
+        if (hpgen_k_velocity_step(g, p, xi, x1) || !hpgen_all_finite(x1, HPGEN_D))
+            return HPGEN_RECORD;
+        for (i = 0; i < HPGEN_D; ++i) {
+            const double dx = fabs(x1[i] - xi[i]);
+            if (dx > dn) dn = dx;
+            xi[i] = x1[i];
+        }
+        if (HPGEN_LEGENDRE_QUADRATIC) return HPGEN_OK;
+        xn = hpgen_norm_inf(xi, HPGEN_D);
+        if (dn <= 1e-14 * (1.0 + xn)) return HPGEN_OK;
+        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + xn)) return HPGEN_OK;
+        dprev = dn;
+    }
+    return HPGEN_RECORD;
+}
+#endif
+
+/* The scene's record row at (g, p) (kernel record; xi by hpgen_velocity when the row uses
+   it): HPGEN_OK, or HPGEN_RECORD when the row is not finite or xi did not converge (then the
+   row is all NaN). */
+static int hpgen_record_row(const double* g, const double* p, double* row) {
+    double xi[HPGEN_D];
+#if HPGEN_RECORD_USES_XI
+    if (hpgen_velocity(g, p, xi) != HPGEN_OK) {
+        int i;
+        for (i = 0; i < HPGEN_W; ++i) row[i] = NAN;
+        return HPGEN_RECORD;
+    }
+#else
+    memset(xi, 0, sizeof xi);
+#endif
+    if (hpgen_k_record(g, p, xi, row) || !hpgen_all_finite(row, HPGEN_W)) return HPGEN_RECORD;
+    return HPGEN_OK;
+}
+
+/* The record row at (g, p) (the start of a run: record 0). Returns the status code. */
+HPGEN_EXPORT int hpgen_record(const double* g, const double* p, double* row) {
+    return hpgen_record_row(g, p, row);
+}
+
+/* Advance a run like hpgen_advance, keeping only the scene's record row (W doubles) of the
+   state after global step k when k % every == 0, in rows[j * W], j = 0, 1, ... With
+   HPGEN_SKIP_G (neither the step nor the row use g) g_{k+1} is never formed: the run's g
+   stays g_0 and the run is marked g_stale (hpgen_advance and hpgen_advance_sections then
+   refuse it). The states (p_k, z) are bitwise those of hpgen_advance. A row that is not
+   finite stops the run after its step with code HPGEN_RECORD (the row is written, *n_rec
+   counts it). *n_rec: rows written. Returns the steps done in this call. */
+HPGEN_EXPORT long long hpgen_advance_record(hpgen_run* r, double h, long long steps,
+                                            long long every, const hpgen_options* o,
+                                            double* rows, long long* n_rec, hpgen_status* st) {
+    double hv[1];
+    long long n;
+    hpgen_options full;
+    hpgen_status_init(st);
+    *n_rec = 0;
+    if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    hv[0] = h;
+    full = *o;
+    full.simplified = 0;
+    if (HPGEN_SKIP_G) r->g_stale = 1;
+    for (n = 0; n < steps; ++n) {
+        if (hpgen_run_step(r, hv, o, &full, st, !HPGEN_SKIP_G) != HPGEN_OK) return n;
+        if (r->k % every == 0) {
+            double* row = rows + *n_rec * HPGEN_W;
+            *n_rec += 1;
+            if (hpgen_record_row(r->g, r->p, row) != HPGEN_OK) {
+                st->code = HPGEN_RECORD; st->step = r->k; return n + 1;
+            }
+        }
+    }
+    st->step = r->k;
+    return steps;
+}
+
+/* Advance B independent runs like B calls of hpgen_advance_record: rows of run b start at
+   rows + b * per_run * W, its row count in n_rec[b], its status in st[b]. Returns the number
+   of failed runs. Callers split a batch across threads. */
+HPGEN_EXPORT long long hpgen_advance_record_batch(hpgen_run* runs, long long B, double h,
+                                                  long long steps, long long every,
+                                                  const hpgen_options* o, long long per_run,
+                                                  double* rows, long long* n_rec,
+                                                  hpgen_status* st) {
+    long long b, failed = 0;
+    for (b = 0; b < B; ++b) {
+        hpgen_advance_record(runs + b, h, steps, every, o, rows + b * per_run * HPGEN_W,
+                             n_rec + b, st + b);
+        if (st[b].code != HPGEN_OK) ++failed;
+    }
+    return failed;
 }
 
 /* Observables of K records (g_rec[k * NN], p_rec[k * D], as hpgen_advance writes them):

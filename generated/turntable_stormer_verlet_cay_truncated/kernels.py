@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 06408c75ff9757694cbaeee3a0b6e6867e9697a4889c73c1122ee6631754ec42
+# content hash: 7dc1720e1c56d7909db5a0e46302c95b6bb0c5550060578e19f097ae2368a9f1
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -4502,15 +4502,17 @@ def _raw_observe(g, p):
         r1 = [0.0] * 1
         r2 = [0.0] * 3
         r3 = [0.0] * 1
-        w12 = (w9 - w0) * 0.5
-        r0[0] = w12
-        w13 = w10 - (0.5 * w1)
-        r0[1] = w13
-        w14 = (w11 - (0.3333333333333333 * w2)) / 0.6666666666666666
-        r0[2] = w14
-        w15 = w12 + (0.5 * w0)
-        w16 = w14 + (0.5 * w2)
-        r1[0] = ((((2.0 * w15) * w12) + (w10 * w13)) + ((0.6666666666666666 * w16) * w14)) - ((((((0.5 * (w10 * w10)) + (w15 * w15)) + (0.06 * w1)) + (0.3333333333333333 * (w16 * w16))) + ((-0.09) * w0)) + ((-0.15) * w2))
+        w12 = (w0 - w9) * 0.5
+        r0[0] = -w12
+        w13 = 0.5 * w1
+        w14 = w13 - w10
+        r0[1] = -w14
+        w15 = ((0.3333333333333333 * w2) - w11) / 0.6666666666666666
+        r0[2] = -w15
+        w16 = (0.5 * w0) - w12
+        w13 = w13 - w14
+        w17 = (0.5 * w2) - w15
+        r1[0] = -(((((2.0 * w16) * w12) + (w13 * w14)) + ((0.6666666666666666 * w17) * w15)) + ((((((0.5 * (w13 * w13)) + (w16 * w16)) + (0.06 * w1)) + (0.3333333333333333 * (w17 * w17))) + ((-0.09) * w0)) + ((-0.15) * w2)))
         w12 = (w2 * w3) - (w4 * w1)
         w13 = w0 * w4
         w14 = w5 * w2
@@ -4528,187 +4530,192 @@ def _raw_observe(g, p):
         r1 = [0.0] * 1
         r2 = [0.0] * 3
         r3 = [0.0] * 1
-        w0 = p[0]
-        w1 = g[2]
+        w0 = g[2]
+        w1 = p[0]
         w2 = w0 - w1
         w3 = 2.0
         w2 = w2 / w3 if w3 else _div(w2, w3)
-        r0[0] = w2
-        w3 = p[1]
-        w4 = 0.5
-        w5 = g[5]
-        w6 = w4 * w5
-        w6 = w3 - w6
-        r0[1] = w6
-        w7 = p[2]
+        w3 = -w2
+        r0[0] = w3
+        w3 = 0.5
+        w4 = g[5]
+        w5 = w3 * w4
+        w6 = p[1]
+        w7 = w5 - w6
+        w8 = -w7
+        r0[1] = w8
         w8 = 0.3333333333333333
         w9 = g[8]
         w10 = w8 * w9
-        w10 = w7 - w10
-        w11 = 0.6666666666666666
-        w10 = w10 / w11 if w11 else _div(w10, w11)
-        r0[2] = w10
-        w12 = w4 * w1
-        w12 = w2 + w12
-        w13 = 2.0 * w12
-        w13 = w13 * w2
-        w6 = w3 * w6
-        w13 = w13 + w6
-        w6 = w4 * w9
-        w6 = w10 + w6
-        w11 = w11 * w6
-        w11 = w11 * w10
-        w13 = w13 + w11
-        w11 = w3 * w3
-        w4 = w4 * w11
-        w12 = w12 * w12
-        w4 = w4 + w12
-        w12 = 0.06
-        w12 = w12 * w5
-        w4 = w4 + w12
-        w6 = w6 * w6
-        w8 = w8 * w6
-        w4 = w4 + w8
+        w11 = p[2]
+        w10 = w10 - w11
+        w12 = 0.6666666666666666
+        w10 = w10 / w12 if w12 else _div(w10, w12)
+        w13 = -w10
+        r0[2] = w13
+        w13 = w3 * w0
+        w13 = w13 - w2
+        w14 = 2.0 * w13
+        w14 = w14 * w2
+        w5 = w5 - w7
+        w7 = w5 * w7
+        w14 = w14 + w7
+        w7 = w3 * w9
+        w7 = w7 - w10
+        w12 = w12 * w7
+        w12 = w12 * w10
+        w14 = w14 + w12
+        w5 = w5 * w5
+        w3 = w3 * w5
+        w13 = w13 * w13
+        w3 = w3 + w13
+        w13 = 0.06
+        w13 = w13 * w4
+        w3 = w3 + w13
+        w7 = w7 * w7
+        w8 = w8 * w7
+        w3 = w3 + w8
         w8 = -0.09
-        w8 = w8 * w1
-        w4 = w4 + w8
+        w8 = w8 * w0
+        w3 = w3 + w8
         w8 = -0.15
         w8 = w8 * w9
-        w4 = w4 + w8
-        w13 = w13 - w4
-        r1[0] = w13
-        w13 = g[4]
-        w4 = w9 * w13
+        w3 = w3 + w8
+        w14 = w14 + w3
+        w14 = -w14
+        r1[0] = w14
+        w14 = g[4]
+        w3 = w9 * w14
         w8 = g[7]
-        w6 = w8 * w5
-        w4 = w4 - w6
-        w4 = w4 * w0
-        w12 = w1 * w8
-        w11 = g[1]
-        w10 = w11 * w9
-        w12 = w12 - w10
-        w12 = w12 * w3
-        w4 = w4 + w12
-        w12 = w5 * w11
-        w2 = w13 * w1
-        w12 = w12 - w2
-        w12 = w12 * w7
-        w4 = w4 + w12
-        r2[0] = w4
-        w4 = g[6]
-        w12 = w4 * w5
-        w14 = g[3]
-        w15 = w9 * w14
-        w12 = w12 - w15
-        w12 = w12 * w0
+        w7 = w8 * w4
+        w3 = w3 - w7
+        w3 = w3 * w1
+        w13 = w0 * w8
+        w5 = g[1]
+        w12 = w5 * w9
+        w13 = w13 - w12
+        w13 = w13 * w6
+        w3 = w3 + w13
+        w13 = w4 * w5
+        w10 = w14 * w0
+        w13 = w13 - w10
+        w13 = w13 * w11
+        w3 = w3 + w13
+        r2[0] = w3
+        w3 = g[6]
+        w13 = w3 * w4
+        w2 = g[3]
+        w15 = w9 * w2
+        w13 = w13 - w15
+        w13 = w13 * w1
         w15 = g[0]
         w16 = w15 * w9
-        w17 = w1 * w4
+        w17 = w0 * w3
         w16 = w16 - w17
-        w16 = w16 * w3
-        w12 = w12 + w16
-        w16 = w14 * w1
-        w17 = w5 * w15
+        w16 = w16 * w6
+        w13 = w13 + w16
+        w16 = w2 * w0
+        w17 = w4 * w15
         w16 = w16 - w17
-        w16 = w16 * w7
-        w12 = w12 + w16
-        r2[1] = w12
-        w12 = w8 * w14
-        w16 = w4 * w13
-        w12 = w12 - w16
-        w12 = w12 * w0
-        w0 = w11 * w4
+        w16 = w16 * w11
+        w13 = w13 + w16
+        r2[1] = w13
+        w13 = w8 * w2
+        w16 = w3 * w14
+        w13 = w13 - w16
+        w13 = w13 * w1
+        w1 = w5 * w3
         w16 = w15 * w8
-        w0 = w0 - w16
-        w0 = w0 * w3
-        w12 = w12 + w0
-        w0 = w13 * w15
-        w3 = w14 * w11
-        w0 = w0 - w3
-        w0 = w0 * w7
-        w12 = w12 + w0
-        r2[2] = w12
-        w12 = w15 * w15
-        w0 = w11 * w11
-        w12 = w12 + w0
-        w0 = w1 * w1
-        w12 = w12 + w0
-        w0 = 1.0
-        w12 = w12 - w0
-        w12 = math.fabs(w12)
-        w7 = w14 * w15
-        w3 = w13 * w11
-        w7 = w7 + w3
-        w3 = w5 * w1
-        w7 = w7 + w3
-        w7 = math.fabs(w7)
-        w12 = _fmax(w12, w7)
-        w7 = w4 * w15
-        w3 = w8 * w11
-        w7 = w7 + w3
-        w3 = w9 * w1
-        w7 = w7 + w3
-        w7 = math.fabs(w7)
-        w12 = _fmax(w12, w7)
-        w7 = w15 * w14
-        w3 = w11 * w13
-        w7 = w7 + w3
-        w3 = w1 * w5
-        w7 = w7 + w3
-        w7 = math.fabs(w7)
-        w12 = _fmax(w12, w7)
-        w7 = w14 * w14
-        w3 = w13 * w13
-        w7 = w7 + w3
-        w3 = w5 * w5
-        w7 = w7 + w3
-        w7 = w7 - w0
-        w7 = math.fabs(w7)
-        w12 = _fmax(w12, w7)
-        w7 = w4 * w14
-        w3 = w8 * w13
-        w7 = w7 + w3
-        w3 = w9 * w5
-        w7 = w7 + w3
-        w7 = math.fabs(w7)
-        w12 = _fmax(w12, w7)
-        w7 = w15 * w4
-        w3 = w11 * w8
-        w7 = w7 + w3
-        w3 = w1 * w9
-        w7 = w7 + w3
-        w7 = math.fabs(w7)
-        w12 = _fmax(w12, w7)
-        w7 = w14 * w4
-        w3 = w13 * w8
-        w7 = w7 + w3
-        w3 = w5 * w9
-        w7 = w7 + w3
-        w7 = math.fabs(w7)
-        w12 = _fmax(w12, w7)
-        w7 = w4 * w4
-        w3 = w8 * w8
-        w7 = w7 + w3
-        w3 = w9 * w9
-        w7 = w7 + w3
-        w7 = w7 - w0
-        w7 = math.fabs(w7)
-        w12 = _fmax(w12, w7)
-        w13 = w13 * w9
-        w13 = w13 - w6
-        w15 = w15 * w13
-        w8 = w8 * w1
-        w10 = w10 - w8
-        w14 = w14 * w10
-        w15 = w15 - w14
-        w11 = w11 * w5
-        w11 = w11 - w2
-        w4 = w4 * w11
-        w15 = w15 + w4
-        w15 = w15 - w0
+        w1 = w1 - w16
+        w1 = w1 * w6
+        w13 = w13 + w1
+        w1 = w14 * w15
+        w6 = w2 * w5
+        w1 = w1 - w6
+        w1 = w1 * w11
+        w13 = w13 + w1
+        r2[2] = w13
+        w13 = w15 * w15
+        w1 = w5 * w5
+        w13 = w13 + w1
+        w1 = w0 * w0
+        w13 = w13 + w1
+        w1 = 1.0
+        w13 = w13 - w1
+        w13 = math.fabs(w13)
+        w11 = w2 * w15
+        w6 = w14 * w5
+        w11 = w11 + w6
+        w6 = w4 * w0
+        w11 = w11 + w6
+        w11 = math.fabs(w11)
+        w13 = _fmax(w13, w11)
+        w11 = w3 * w15
+        w6 = w8 * w5
+        w11 = w11 + w6
+        w6 = w9 * w0
+        w11 = w11 + w6
+        w11 = math.fabs(w11)
+        w13 = _fmax(w13, w11)
+        w11 = w15 * w2
+        w6 = w5 * w14
+        w11 = w11 + w6
+        w6 = w0 * w4
+        w11 = w11 + w6
+        w11 = math.fabs(w11)
+        w13 = _fmax(w13, w11)
+        w11 = w2 * w2
+        w6 = w14 * w14
+        w11 = w11 + w6
+        w6 = w4 * w4
+        w11 = w11 + w6
+        w11 = w11 - w1
+        w11 = math.fabs(w11)
+        w13 = _fmax(w13, w11)
+        w11 = w3 * w2
+        w6 = w8 * w14
+        w11 = w11 + w6
+        w6 = w9 * w4
+        w11 = w11 + w6
+        w11 = math.fabs(w11)
+        w13 = _fmax(w13, w11)
+        w11 = w15 * w3
+        w6 = w5 * w8
+        w11 = w11 + w6
+        w6 = w0 * w9
+        w11 = w11 + w6
+        w11 = math.fabs(w11)
+        w13 = _fmax(w13, w11)
+        w11 = w2 * w3
+        w6 = w14 * w8
+        w11 = w11 + w6
+        w6 = w4 * w9
+        w11 = w11 + w6
+        w11 = math.fabs(w11)
+        w13 = _fmax(w13, w11)
+        w11 = w3 * w3
+        w6 = w8 * w8
+        w11 = w11 + w6
+        w6 = w9 * w9
+        w11 = w11 + w6
+        w11 = w11 - w1
+        w11 = math.fabs(w11)
+        w13 = _fmax(w13, w11)
+        w14 = w14 * w9
+        w14 = w14 - w7
+        w15 = w15 * w14
+        w8 = w8 * w0
+        w12 = w12 - w8
+        w2 = w2 * w12
+        w15 = w15 - w2
+        w5 = w5 * w4
+        w5 = w5 - w10
+        w3 = w3 * w5
+        w15 = w15 + w3
+        w15 = w15 - w1
         w15 = math.fabs(w15)
-        w12 = _fmax(w12, w15)
-        r3[0] = w12
+        w13 = _fmax(w13, w15)
+        r3[0] = w13
     return [r0, r1, r2, r3]
 
 
@@ -4726,6 +4733,472 @@ def observe(g, p):
     return [_fromiter(_r[0], _F64, 3), _fromiter(_r[1], _F64, 1), _fromiter(_r[2], _F64, 3), _fromiter(_r[3], _F64, 1)]
 
 
+def _raw_update_p(z, g, p, h):
+    """update_p on lists of Python floats -> [p1[3]] as lists (see RAW)"""
+    try:
+        w2, w4, w0, w3, w5, w1 = z
+        _, _, w6, _, _, w7, _, _, w8 = g
+        w9, w10, w11 = p
+        w12, = h
+        r0 = [0.0] * 3
+        w13 = w12 * ((0.5 * w0) + (0.5 * w1))
+        w14 = w12 * ((0.5 * w2) + (0.5 * w3))
+        w15 = w13 * w14
+        w16 = w15 * 0.25
+        w17 = w12 * ((0.5 * w4) + (0.5 * w5))
+        w18 = w17 * 0.5
+        w19 = w16 - w18
+        w20 = w14 * w14
+        w21 = w17 * w17
+        w22 = w20 + w21
+        w23 = w13 * w13
+        w24 = 4.0 / (4.0 + (w22 + w23))
+        w25 = w24 * w18
+        w16 = w18 + w16
+        w18 = w14 * 0.5
+        w26 = w24 * w18
+        w27 = w14 * w17
+        w28 = w27 * 0.5
+        w15 = w15 * 0.5
+        w29 = ((w6 * (1.0 - (w24 * ((w23 + w21) * 0.5)))) + (w7 * (w24 * (w13 + w28)))) + (w8 * (w24 * (w15 - w17)))
+        w30 = (-0.075) * w12
+        w31 = w13 * w17
+        w32 = w31 * 0.5
+        w15 = ((w6 * (w24 * (w17 + w15))) + (w7 * (w24 * (w32 - w14)))) + (w8 * (1.0 - (w24 * (w22 * 0.5))))
+        w17 = 0.16666666666666666 * w12
+        w1 = w30 + (0.5 * ((2.0 * (w1 + (0.5 * w15))) * w17))
+        w22 = (-0.045) * w12
+        w33 = 0.5 * w12
+        w3 = w22 + (0.5 * ((2.0 * (w3 + (0.5 * w29))) * w33))
+        w34 = ((w29 * w1) - (w15 * w3)) / w12
+        w35 = 0.03 * w12
+        w14 = ((w6 * (w24 * (w28 - w13))) + (w7 * (1.0 - (w24 * ((w23 + w20) * 0.5))))) + (w8 * (w24 * (w14 + w32)))
+        w28 = 0.25 * w12
+        w5 = w35 + (0.5 * ((2.0 * (w5 + (0.5 * w14))) * w28))
+        w1 = ((w15 * w5) - (w14 * w1)) / w12
+        w3 = ((w14 * w3) - (w29 * w5)) / w12
+        w5 = w12 * (((w26 * w34) - (w25 * w1)) + (w24 * w3))
+        w14 = w27 * 0.25
+        w13 = w13 * 0.5
+        w15 = w14 - w13
+        w27 = w24 * w13
+        w29 = w12 * (((w27 * w1) + (w24 * w34)) - (w26 * w3))
+        w20 = 1.0 + (w20 * 0.25)
+        w1 = w12 * (((w24 * w1) - (w27 * w34)) + (w25 * w3))
+        w3 = w35 + (0.5 * ((2.0 * (w4 + (0.5 * w7))) * w28))
+        w0 = w30 + (0.5 * ((2.0 * (w0 + (0.5 * w8))) * w17))
+        w4 = w9 + ((((w16 * w5) + (w15 * w29)) + (w20 * w1)) + ((w8 * w3) - (w7 * w0)))
+        w9 = w31 * 0.25
+        w12 = w9 - w18
+        w17 = 1.0 + (w21 * 0.25)
+        w13 = w13 + w14
+        w2 = w22 + (0.5 * ((2.0 * (w2 + (0.5 * w6))) * w33))
+        w0 = w10 + ((((w12 * w5) + (w17 * w29)) + (w13 * w1)) + ((w6 * w0) - (w8 * w2)))
+        w8 = 1.0 + (w23 * 0.25)
+        w9 = w18 + w9
+        w1 = w11 + ((((w8 * w5) + (w9 * w29)) + (w19 * w1)) + ((w7 * w2) - (w6 * w3)))
+        w2 = ((w25 * w4) - (w26 * w0)) + (w24 * w1)
+        w3 = ((w24 * w0) - (w27 * w4)) + (w26 * w1)
+        w0 = ((w24 * w4) + (w27 * w0)) - (w25 * w1)
+        r0[0] = ((w19 * w2) + (w13 * w3)) + (w20 * w0)
+        r0[1] = ((w9 * w2) + (w17 * w3)) + (w15 * w0)
+        r0[2] = ((w8 * w2) + (w12 * w3)) + (w16 * w0)
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 3
+        w0 = h[0]
+        w1 = 0.5
+        w2 = z[2]
+        w3 = w1 * w2
+        w4 = z[5]
+        w5 = w1 * w4
+        w3 = w3 + w5
+        w3 = w0 * w3
+        w5 = z[0]
+        w6 = w1 * w5
+        w7 = z[3]
+        w8 = w1 * w7
+        w6 = w6 + w8
+        w6 = w0 * w6
+        w8 = w3 * w6
+        w9 = 4.0
+        w10 = w8 / w9 if w9 else _div(w8, w9)
+        w11 = z[1]
+        w12 = w1 * w11
+        w13 = z[4]
+        w14 = w1 * w13
+        w12 = w12 + w14
+        w12 = w0 * w12
+        w14 = 2.0
+        w15 = w12 / w14 if w14 else _div(w12, w14)
+        w16 = w10 - w15
+        w17 = w6 * w6
+        w18 = w12 * w12
+        w19 = w17 + w18
+        w20 = w3 * w3
+        w19 = w19 + w20
+        w19 = w9 + w19
+        w19 = w9 / w19 if w19 else _div(w9, w19)
+        w21 = w19 * w15
+        w22 = p[0]
+        w10 = w15 + w10
+        w23 = w6 / w14 if w14 else _div(w6, w14)
+        w24 = w19 * w23
+        w25 = g[2]
+        w26 = 1.0
+        w27 = w20 + w18
+        w27 = w27 / w14 if w14 else _div(w27, w14)
+        w27 = w19 * w27
+        w27 = w26 - w27
+        w27 = w25 * w27
+        w28 = g[5]
+        w29 = w6 * w12
+        w30 = w29 / w14 if w14 else _div(w29, w14)
+        w30 = w3 + w30
+        w30 = w19 * w30
+        w30 = w28 * w30
+        w27 = w27 + w30
+        w30 = g[8]
+        w31 = w6 * w3
+        w32 = w31 / w14 if w14 else _div(w31, w14)
+        w32 = w32 - w12
+        w32 = w19 * w32
+        w32 = w30 * w32
+        w27 = w27 + w32
+        w32 = -0.075
+        w32 = w32 * w0
+        w8 = w8 / w14 if w14 else _div(w8, w14)
+        w8 = w12 + w8
+        w8 = w19 * w8
+        w8 = w25 * w8
+        w33 = w3 * w12
+        w34 = w33 / w14 if w14 else _div(w33, w14)
+        w34 = w34 - w6
+        w34 = w19 * w34
+        w34 = w28 * w34
+        w8 = w8 + w34
+        w34 = w18 + w17
+        w34 = w34 / w14 if w14 else _div(w34, w14)
+        w34 = w19 * w34
+        w34 = w26 - w34
+        w34 = w30 * w34
+        w8 = w8 + w34
+        w34 = w1 * w8
+        w4 = w4 + w34
+        w4 = 2.0 * w4
+        w34 = 0.16666666666666666
+        w34 = w34 * w0
+        w4 = w4 * w34
+        w4 = w1 * w4
+        w4 = w32 + w4
+        w35 = w27 * w4
+        w36 = -0.045
+        w36 = w36 * w0
+        w37 = w1 * w27
+        w7 = w7 + w37
+        w7 = 2.0 * w7
+        w37 = w1 * w0
+        w7 = w7 * w37
+        w7 = w1 * w7
+        w7 = w36 + w7
+        w38 = w8 * w7
+        w35 = w35 - w38
+        w35 = w35 / w0 if w0 else _div(w35, w0)
+        w38 = w24 * w35
+        w39 = 0.03
+        w39 = w39 * w0
+        w40 = w12 * w6
+        w41 = w40 / w14 if w14 else _div(w40, w14)
+        w41 = w41 - w3
+        w41 = w19 * w41
+        w41 = w25 * w41
+        w42 = w20 + w17
+        w42 = w42 / w14 if w14 else _div(w42, w14)
+        w42 = w19 * w42
+        w42 = w26 - w42
+        w42 = w28 * w42
+        w41 = w41 + w42
+        w12 = w12 * w3
+        w42 = w12 / w14 if w14 else _div(w12, w14)
+        w6 = w6 + w42
+        w6 = w19 * w6
+        w6 = w30 * w6
+        w41 = w41 + w6
+        w6 = w1 * w41
+        w13 = w13 + w6
+        w13 = 2.0 * w13
+        w6 = 0.25
+        w6 = w6 * w0
+        w13 = w13 * w6
+        w13 = w1 * w13
+        w13 = w39 + w13
+        w8 = w8 * w13
+        w4 = w41 * w4
+        w8 = w8 - w4
+        w8 = w8 / w0 if w0 else _div(w8, w0)
+        w4 = w21 * w8
+        w38 = w38 - w4
+        w41 = w41 * w7
+        w27 = w27 * w13
+        w41 = w41 - w27
+        w41 = w41 / w0 if w0 else _div(w41, w0)
+        w27 = w19 * w41
+        w38 = w38 + w27
+        w38 = w0 * w38
+        w10 = w10 * w38
+        w40 = w40 / w9 if w9 else _div(w40, w9)
+        w3 = w3 / w14 if w14 else _div(w3, w14)
+        w14 = w40 - w3
+        w27 = w19 * w3
+        w13 = w27 * w8
+        w7 = w19 * w35
+        w13 = w13 + w7
+        w7 = w24 * w41
+        w13 = w13 - w7
+        w13 = w0 * w13
+        w14 = w14 * w13
+        w10 = w10 + w14
+        w17 = w17 / w9 if w9 else _div(w17, w9)
+        w17 = w26 + w17
+        w8 = w19 * w8
+        w35 = w27 * w35
+        w8 = w8 - w35
+        w41 = w21 * w41
+        w8 = w8 + w41
+        w0 = w0 * w8
+        w8 = w17 * w0
+        w10 = w10 + w8
+        w8 = w1 * w28
+        w11 = w11 + w8
+        w11 = 2.0 * w11
+        w11 = w11 * w6
+        w11 = w1 * w11
+        w39 = w39 + w11
+        w11 = w30 * w39
+        w6 = w1 * w30
+        w2 = w2 + w6
+        w2 = 2.0 * w2
+        w2 = w2 * w34
+        w2 = w1 * w2
+        w32 = w32 + w2
+        w2 = w28 * w32
+        w11 = w11 - w2
+        w10 = w10 + w11
+        w22 = w22 + w10
+        w10 = w21 * w22
+        w11 = p[1]
+        w33 = w33 / w9 if w9 else _div(w33, w9)
+        w2 = w33 - w23
+        w2 = w2 * w38
+        w18 = w18 / w9 if w9 else _div(w18, w9)
+        w18 = w26 + w18
+        w34 = w18 * w13
+        w2 = w2 + w34
+        w29 = w29 / w9 if w9 else _div(w29, w9)
+        w34 = w3 + w29
+        w34 = w34 * w0
+        w2 = w2 + w34
+        w32 = w25 * w32
+        w34 = w1 * w25
+        w5 = w5 + w34
+        w5 = 2.0 * w5
+        w5 = w5 * w37
+        w1 = w1 * w5
+        w36 = w36 + w1
+        w30 = w30 * w36
+        w32 = w32 - w30
+        w2 = w2 + w32
+        w11 = w11 + w2
+        w2 = w24 * w11
+        w10 = w10 - w2
+        w2 = p[2]
+        w20 = w20 / w9 if w9 else _div(w20, w9)
+        w26 = w26 + w20
+        w38 = w26 * w38
+        w12 = w12 / w9 if w9 else _div(w12, w9)
+        w20 = w23 + w12
+        w20 = w20 * w13
+        w38 = w38 + w20
+        w31 = w31 / w9 if w9 else _div(w31, w9)
+        w9 = w31 - w15
+        w9 = w9 * w0
+        w38 = w38 + w9
+        w28 = w28 * w36
+        w25 = w25 * w39
+        w28 = w28 - w25
+        w38 = w38 + w28
+        w2 = w2 + w38
+        w38 = w19 * w2
+        w10 = w10 + w38
+        w16 = w16 * w10
+        w40 = w3 + w40
+        w38 = w19 * w11
+        w28 = w27 * w22
+        w38 = w38 - w28
+        w24 = w24 * w2
+        w38 = w38 + w24
+        w40 = w40 * w38
+        w16 = w16 + w40
+        w19 = w19 * w22
+        w27 = w27 * w11
+        w19 = w19 + w27
+        w21 = w21 * w2
+        w19 = w19 - w21
+        w17 = w17 * w19
+        w16 = w16 + w17
+        r0[0] = w16
+        w33 = w23 + w33
+        w33 = w33 * w10
+        w18 = w18 * w38
+        w33 = w33 + w18
+        w29 = w29 - w3
+        w29 = w29 * w19
+        w33 = w33 + w29
+        r0[1] = w33
+        w26 = w26 * w10
+        w12 = w12 - w23
+        w12 = w12 * w38
+        w26 = w26 + w12
+        w15 = w15 + w31
+        w15 = w15 * w19
+        w26 = w26 + w15
+        r0[2] = w26
+    return [r0]
+
+
+def update_p(z, g, p, h):
+    """update_p(z[6], g[9], p[3], h[1]) -> [p1[3]]"""
+    if _type(z) is _NDARRAY and z.dtype is _F64 and z.shape == (6,):
+        z = z.tolist()
+    else:
+        z = _vec(z, 6, "update_p: z")
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "update_p: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (3,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 3, "update_p: p")
+    if _type(h) is _NDARRAY and h.dtype is _F64 and h.shape == (1,):
+        h = h.tolist()
+    else:
+        h = _vec(h, 1, "update_p: h")
+    _r = _raw_update_p(z, g, p, h)
+    return [_fromiter(_r[0], _F64, 3)]
+
+
+def _raw_velocity_step(g, p, xi):
+    """velocity_step on lists of Python floats -> [xi1[3]] as lists (see RAW)"""
+    try:
+        _, _, w0, _, _, w1, _, _, w2 = g
+        w3, w4, w5 = p
+        w6, w7, w8 = xi
+        r0 = [0.0] * 3
+        r0[0] = w6 - (((2.0 * (w6 + (0.5 * w0))) - w3) * 0.5)
+        r0[1] = w7 - ((w7 + (0.5 * w1)) - w4)
+        r0[2] = w8 - (((0.6666666666666666 * (w8 + (0.5 * w2))) - w5) / 0.6666666666666666)
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 3
+        w0 = xi[0]
+        w1 = 0.5
+        w2 = g[2]
+        w2 = w1 * w2
+        w2 = w0 + w2
+        w2 = 2.0 * w2
+        w3 = p[0]
+        w2 = w2 - w3
+        w3 = 2.0
+        w2 = w2 / w3 if w3 else _div(w2, w3)
+        w0 = w0 - w2
+        r0[0] = w0
+        w0 = xi[1]
+        w2 = g[5]
+        w2 = w1 * w2
+        w2 = w0 + w2
+        w3 = p[1]
+        w2 = w2 - w3
+        w0 = w0 - w2
+        r0[1] = w0
+        w0 = xi[2]
+        w2 = 0.6666666666666666
+        w3 = g[8]
+        w1 = w1 * w3
+        w1 = w0 + w1
+        w1 = w2 * w1
+        w3 = p[2]
+        w1 = w1 - w3
+        w1 = w1 / w2 if w2 else _div(w1, w2)
+        w0 = w0 - w1
+        r0[2] = w0
+    return [r0]
+
+
+def velocity_step(g, p, xi):
+    """velocity_step(g[9], p[3], xi[3]) -> [xi1[3]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "velocity_step: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (3,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 3, "velocity_step: p")
+    if _type(xi) is _NDARRAY and xi.dtype is _F64 and xi.shape == (3,):
+        xi = xi.tolist()
+    else:
+        xi = _vec(xi, 3, "velocity_step: xi")
+    _r = _raw_velocity_step(g, p, xi)
+    return [_fromiter(_r[0], _F64, 3)]
+
+
+def _raw_record(g, p, xi):
+    """record on lists of Python floats -> [row[16]] as lists (see RAW)"""
+    w0, w1, w2, w3, w4, w5, w6, w7, w8 = g
+    w9, w10, w11 = p
+    w12, w13, w14 = xi
+    r0 = [0.0] * 16
+    r0[0] = w0
+    r0[1] = w1
+    r0[2] = w2
+    r0[3] = w3
+    r0[4] = w4
+    r0[5] = w5
+    r0[6] = w6
+    r0[7] = w7
+    r0[8] = w8
+    r0[9] = w9
+    r0[10] = w10
+    r0[11] = w11
+    w15 = w12 + (0.5 * w2)
+    w16 = w13 + (0.5 * w5)
+    w17 = w14 + (0.5 * w8)
+    r0[12] = ((((2.0 * w15) * w12) + (w16 * w13)) + ((0.6666666666666666 * w17) * w14)) - ((((((0.5 * (w16 * w16)) + (w15 * w15)) + (0.06 * w5)) + (0.3333333333333333 * (w17 * w17))) + ((-0.09) * w2)) + ((-0.15) * w8))
+    r0[13] = ((((w8 * w4) - (w7 * w5)) * w9) + (((w2 * w7) - (w1 * w8)) * w10)) + (((w5 * w1) - (w4 * w2)) * w11)
+    r0[14] = ((((w6 * w5) - (w8 * w3)) * w9) + (((w0 * w8) - (w2 * w6)) * w10)) + (((w3 * w2) - (w5 * w0)) * w11)
+    r0[15] = ((((w7 * w3) - (w6 * w4)) * w9) + (((w1 * w6) - (w0 * w7)) * w10)) + (((w4 * w0) - (w3 * w1)) * w11)
+    return [r0]
+
+
+def record(g, p, xi):
+    """record(g[9], p[3], xi[3]) -> [row[16]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (9,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 9, "record: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (3,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 3, "record: p")
+    if _type(xi) is _NDARRAY and xi.dtype is _F64 and xi.shape == (3,):
+        xi = xi.tolist()
+    else:
+        xi = _vec(xi, 3, "record: xi")
+    _r = _raw_record(g, p, xi)
+    return [_fromiter(_r[0], _F64, 16)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -4741,6 +5214,9 @@ KERNELS = {
     "section": section,
     "chart_point": chart_point,
     "observe": observe,
+    "update_p": update_p,
+    "velocity_step": velocity_step,
+    "record": record,
 }
 
 RAW = {
@@ -4758,6 +5234,9 @@ RAW = {
     "section": _raw_section,
     "chart_point": _raw_chart_point,
     "observe": _raw_observe,
+    "update_p": _raw_update_p,
+    "velocity_step": _raw_velocity_step,
+    "record": _raw_record,
 }
 
 

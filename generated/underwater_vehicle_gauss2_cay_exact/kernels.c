@@ -3,14 +3,15 @@
  * model: underwater_vehicle
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 8d1dca3eeb1188dcc815367221dd21011a53e23075a92a086ca3ae40eb4e5ccb
+ * content hash: d5ace43f723217a6d562424015154cbfc54cba9fd8ca33ff813590347374d12a
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
  * (g[i + j*n]), h is a scalar at the API and a 1-vector for the kernels. No static mutable
  * state: every function is thread-safe; work arrays live on the stack, sized at codegen time.
  * Status codes: 0 ok, 1 Newton did not converge, 2 non-finite value (or singular Jacobian),
- * 3 tau out of its domain (margin(z, h) <= 0 after convergence), -1 invalid argument.
+ * 3 tau out of its domain (margin(z, h) <= 0 after convergence), 4 a record row not finite
+ * (or its velocity xi not converged), -1 invalid argument.
  */
 /* Standard headers first: the CasADi part below is compiled under hidden visibility. */
 #include <math.h>
@@ -47,6 +48,9 @@
 #define casadi_f10 CASADI_PREFIX(f10)
 #define casadi_f11 CASADI_PREFIX(f11)
 #define casadi_f12 CASADI_PREFIX(f12)
+#define casadi_f13 CASADI_PREFIX(f13)
+#define casadi_f14 CASADI_PREFIX(f14)
+#define casadi_f15 CASADI_PREFIX(f15)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -64,6 +68,7 @@
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
 #define casadi_s5 CASADI_PREFIX(s5)
+#define casadi_s6 CASADI_PREFIX(s6)
 #define casadi_sq CASADI_PREFIX(sq)
 
 /* Symbol visibility in DLLs */
@@ -125,6 +130,7 @@ static const casadi_int casadi_s2[3] = {6, 1, 1};
 static const casadi_int casadi_s3[3] = {1, 1, 1};
 static const casadi_int casadi_s4[3] = {324, 1, 1};
 static const casadi_int casadi_s5[3] = {36, 1, 1};
+static const casadi_int casadi_s6[3] = {29, 1, 1};
 
 /* residual:(z[18],g[16],p[6],h)->(F[18]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -19393,6 +19399,716 @@ CASADI_SYMBOL_EXPORT int observe_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
   return 0;
 }
 
+/* update_p:(z[18],g[16],p[6],h)->(p1[6]) */
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27;
+  a00=arg[3]? arg[3][0] : 0;
+  a01=5.0000000000000000e-01;
+  a02=3.0000000000000004e+00;
+  a03=arg[0]? arg[0][5] : 0;
+  a04=(a02*a03);
+  a05=4.6410161513775439e-01;
+  a06=arg[0]? arg[0][11] : 0;
+  a07=(a05*a06);
+  a04=(a04+a07);
+  a04=(a01*a04);
+  a07=-6.4641016151377553e+00;
+  a03=(a07*a03);
+  a06=(a02*a06);
+  a03=(a03+a06);
+  a03=(a01*a03);
+  a04=(a04+a03);
+  a04=(a00*a04);
+  a03=arg[0]? arg[0][0] : 0;
+  a06=(a02*a03);
+  a08=arg[0]? arg[0][6] : 0;
+  a09=(a05*a08);
+  a06=(a06+a09);
+  a06=(a01*a06);
+  a03=(a07*a03);
+  a08=(a02*a08);
+  a03=(a03+a08);
+  a03=(a01*a03);
+  a06=(a06+a03);
+  a06=(a00*a06);
+  a03=2.;
+  a08=(a06/a03);
+  a09=arg[0]? arg[0][4] : 0;
+  a10=(a02*a09);
+  a11=arg[0]? arg[0][10] : 0;
+  a12=(a05*a11);
+  a10=(a10+a12);
+  a10=(a01*a10);
+  a09=(a07*a09);
+  a11=(a02*a11);
+  a09=(a09+a11);
+  a09=(a01*a09);
+  a10=(a10+a09);
+  a10=(a00*a10);
+  a09=(a08*a10);
+  a09=(a04+a09);
+  a09=(a09/a03);
+  a11=arg[0]? arg[0][16] : 0;
+  a09=(a09*a11);
+  a12=(a08*a04);
+  a12=(a10-a12);
+  a12=(a12/a03);
+  a13=arg[0]? arg[0][17] : 0;
+  a12=(a12*a13);
+  a09=(a09-a12);
+  a12=arg[0]? arg[0][2] : 0;
+  a14=(a02*a12);
+  a15=arg[0]? arg[0][8] : 0;
+  a16=(a05*a15);
+  a14=(a14+a16);
+  a14=(a01*a14);
+  a12=(a07*a12);
+  a15=(a02*a15);
+  a12=(a12+a15);
+  a12=(a01*a12);
+  a14=(a14+a12);
+  a14=(a00*a14);
+  a12=(a14/a03);
+  a15=(a12*a04);
+  a16=arg[0]? arg[0][1] : 0;
+  a17=(a02*a16);
+  a18=arg[0]? arg[0][7] : 0;
+  a19=(a05*a18);
+  a17=(a17+a19);
+  a17=(a01*a17);
+  a16=(a07*a16);
+  a18=(a02*a18);
+  a16=(a16+a18);
+  a16=(a01*a16);
+  a17=(a17+a16);
+  a17=(a00*a17);
+  a16=(a17/a03);
+  a18=(a16*a10);
+  a19=(a15+a18);
+  a19=(a19/a03);
+  a20=arg[0]? arg[0][15] : 0;
+  a19=(a19*a20);
+  a09=(a09-a19);
+  a19=(a14*a06);
+  a21=4.;
+  a19=(a19/a21);
+  a19=(a19-a16);
+  a22=arg[0]? arg[0][14] : 0;
+  a19=(a19*a22);
+  a09=(a09+a19);
+  a19=(a17*a06);
+  a19=(a19/a21);
+  a19=(a12+a19);
+  a23=arg[0]? arg[0][13] : 0;
+  a19=(a19*a23);
+  a09=(a09+a19);
+  a19=1.;
+  a24=casadi_sq(a06);
+  a24=(a24/a21);
+  a24=(a19+a24);
+  a25=arg[0]? arg[0][12] : 0;
+  a24=(a24*a25);
+  a09=(a09+a24);
+  if (res[0]!=0) res[0][0]=a09;
+  a09=(a16*a04);
+  a24=arg[0]? arg[0][3] : 0;
+  a26=(a02*a24);
+  a27=arg[0]? arg[0][9] : 0;
+  a05=(a05*a27);
+  a26=(a26+a05);
+  a26=(a01*a26);
+  a07=(a07*a24);
+  a02=(a02*a27);
+  a07=(a07+a02);
+  a01=(a01*a07);
+  a26=(a26+a01);
+  a00=(a00*a26);
+  a09=(a09+a00);
+  a09=(a09/a03);
+  a09=(a09*a13);
+  a26=(a08*a00);
+  a15=(a15+a26);
+  a15=(a15/a03);
+  a15=(a15*a11);
+  a09=(a09-a15);
+  a15=(a16*a00);
+  a04=(a04-a15);
+  a04=(a04/a03);
+  a04=(a04*a20);
+  a09=(a09-a04);
+  a04=(a14*a17);
+  a04=(a04/a21);
+  a04=(a08+a04);
+  a04=(a04*a22);
+  a09=(a09+a04);
+  a04=casadi_sq(a17);
+  a04=(a04/a21);
+  a04=(a19+a04);
+  a04=(a04*a23);
+  a09=(a09+a04);
+  a04=(a06*a17);
+  a04=(a04/a21);
+  a04=(a04-a12);
+  a04=(a04*a25);
+  a09=(a09+a04);
+  if (res[0]!=0) res[0][1]=a09;
+  a09=(a12*a00);
+  a09=(a10+a09);
+  a09=(a09/a03);
+  a09=(a09*a20);
+  a18=(a18+a26);
+  a18=(a18/a03);
+  a18=(a18*a13);
+  a10=(a12*a10);
+  a00=(a00-a10);
+  a00=(a00/a03);
+  a00=(a00*a11);
+  a18=(a18+a00);
+  a09=(a09-a18);
+  a18=casadi_sq(a14);
+  a18=(a18/a21);
+  a19=(a19+a18);
+  a19=(a19*a22);
+  a09=(a09+a19);
+  a17=(a17*a14);
+  a17=(a17/a21);
+  a17=(a17-a08);
+  a17=(a17*a23);
+  a09=(a09+a17);
+  a06=(a06*a14);
+  a06=(a06/a21);
+  a06=(a16+a06);
+  a06=(a06*a25);
+  a09=(a09+a06);
+  if (res[0]!=0) res[0][2]=a09;
+  a09=(a12*a11);
+  a06=(a16*a13);
+  a09=(a09-a06);
+  a09=(a09+a20);
+  if (res[0]!=0) res[0][3]=a09;
+  a09=(a08*a13);
+  a09=(a09+a11);
+  a12=(a12*a20);
+  a09=(a09-a12);
+  if (res[0]!=0) res[0][4]=a09;
+  a08=(a08*a11);
+  a13=(a13-a08);
+  a16=(a16*a20);
+  a13=(a13+a16);
+  if (res[0]!=0) res[0][5]=a13;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int update_p(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f13(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int update_p_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void update_p_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void update_p_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void update_p_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int update_p_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int update_p_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real update_p_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* update_p_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* update_p_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "p1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* update_p_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s2;
+    case 3: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* update_p_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int update_p_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int update_p_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* velocity_step:(g[16],p[6],xi[6])->(xi1[6]) */
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3;
+  a0=arg[2]? arg[2][0] : 0;
+  a1=(2.*a0);
+  a2=arg[1]? arg[1][0] : 0;
+  a1=(a1-a2);
+  a2=2.;
+  a1=(a1/a2);
+  a0=(a0-a1);
+  if (res[0]!=0) res[0][0]=a0;
+  a0=arg[2]? arg[2][1] : 0;
+  a1=arg[1]? arg[1][1] : 0;
+  a1=(a0-a1);
+  a0=(a0-a1);
+  if (res[0]!=0) res[0][1]=a0;
+  a0=arg[2]? arg[2][2] : 0;
+  a1=6.6666666666666663e-01;
+  a2=(a1*a0);
+  a3=arg[1]? arg[1][2] : 0;
+  a2=(a2-a3);
+  a2=(a2/a1);
+  a0=(a0-a2);
+  if (res[0]!=0) res[0][2]=a0;
+  a0=arg[2]? arg[2][3] : 0;
+  a2=arg[1]? arg[1][3] : 0;
+  a2=(a0-a2);
+  a0=(a0-a2);
+  if (res[0]!=0) res[0][3]=a0;
+  a0=arg[2]? arg[2][4] : 0;
+  a2=1.5000000000000000e+00;
+  a1=(a2*a0);
+  a3=arg[1]? arg[1][4] : 0;
+  a1=(a1-a3);
+  a1=(a1/a2);
+  a0=(a0-a1);
+  if (res[0]!=0) res[0][4]=a0;
+  a0=arg[2]? arg[2][5] : 0;
+  a1=3.;
+  a2=(a1*a0);
+  a3=arg[1]? arg[1][5] : 0;
+  a2=(a2-a3);
+  a2=(a2/a1);
+  a0=(a0-a2);
+  if (res[0]!=0) res[0][5]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f14(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void velocity_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void velocity_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void velocity_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int velocity_step_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int velocity_step_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real velocity_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* velocity_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    case 2: return "xi";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* velocity_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "xi1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* velocity_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    case 2: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* velocity_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* record:(g[16],p[6],xi[6])->(row[29]) */
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26;
+  a00=arg[0]? arg[0][0] : 0;
+  if (res[0]!=0) res[0][0]=a00;
+  a01=arg[0]? arg[0][1] : 0;
+  if (res[0]!=0) res[0][1]=a01;
+  a02=arg[0]? arg[0][2] : 0;
+  if (res[0]!=0) res[0][2]=a02;
+  a03=arg[0]? arg[0][3] : 0;
+  if (res[0]!=0) res[0][3]=a03;
+  a03=arg[0]? arg[0][4] : 0;
+  if (res[0]!=0) res[0][4]=a03;
+  a04=arg[0]? arg[0][5] : 0;
+  if (res[0]!=0) res[0][5]=a04;
+  a05=arg[0]? arg[0][6] : 0;
+  if (res[0]!=0) res[0][6]=a05;
+  a06=arg[0]? arg[0][7] : 0;
+  if (res[0]!=0) res[0][7]=a06;
+  a06=arg[0]? arg[0][8] : 0;
+  if (res[0]!=0) res[0][8]=a06;
+  a07=arg[0]? arg[0][9] : 0;
+  if (res[0]!=0) res[0][9]=a07;
+  a08=arg[0]? arg[0][10] : 0;
+  if (res[0]!=0) res[0][10]=a08;
+  a09=arg[0]? arg[0][11] : 0;
+  if (res[0]!=0) res[0][11]=a09;
+  a09=arg[0]? arg[0][12] : 0;
+  if (res[0]!=0) res[0][12]=a09;
+  a10=arg[0]? arg[0][13] : 0;
+  if (res[0]!=0) res[0][13]=a10;
+  a11=arg[0]? arg[0][14] : 0;
+  if (res[0]!=0) res[0][14]=a11;
+  a12=arg[0]? arg[0][15] : 0;
+  if (res[0]!=0) res[0][15]=a12;
+  a12=arg[1]? arg[1][0] : 0;
+  if (res[0]!=0) res[0][16]=a12;
+  a13=arg[1]? arg[1][1] : 0;
+  if (res[0]!=0) res[0][17]=a13;
+  a14=arg[1]? arg[1][2] : 0;
+  if (res[0]!=0) res[0][18]=a14;
+  a15=arg[1]? arg[1][3] : 0;
+  if (res[0]!=0) res[0][19]=a15;
+  a16=arg[1]? arg[1][4] : 0;
+  if (res[0]!=0) res[0][20]=a16;
+  a17=arg[1]? arg[1][5] : 0;
+  if (res[0]!=0) res[0][21]=a17;
+  a18=arg[2]? arg[2][0] : 0;
+  a19=(2.*a18);
+  a19=(a19*a18);
+  a20=arg[2]? arg[2][1] : 0;
+  a20=casadi_sq(a20);
+  a19=(a19+a20);
+  a21=6.6666666666666663e-01;
+  a22=arg[2]? arg[2][2] : 0;
+  a21=(a21*a22);
+  a21=(a21*a22);
+  a19=(a19+a21);
+  a21=arg[2]? arg[2][3] : 0;
+  a21=casadi_sq(a21);
+  a19=(a19+a21);
+  a23=1.5000000000000000e+00;
+  a24=arg[2]? arg[2][4] : 0;
+  a25=(a23*a24);
+  a25=(a25*a24);
+  a19=(a19+a25);
+  a25=3.;
+  a26=arg[2]? arg[2][5] : 0;
+  a25=(a25*a26);
+  a25=(a25*a26);
+  a19=(a19+a25);
+  a25=5.0000000000000000e-01;
+  a20=(a25*a20);
+  a25=(a25*a21);
+  a20=(a20+a25);
+  a18=casadi_sq(a18);
+  a20=(a20+a18);
+  a18=7.5000000000000000e-01;
+  a24=casadi_sq(a24);
+  a18=(a18*a24);
+  a20=(a20+a18);
+  a26=casadi_sq(a26);
+  a23=(a23*a26);
+  a20=(a20+a23);
+  a23=3.3333333333333331e-01;
+  a22=casadi_sq(a22);
+  a23=(a23*a22);
+  a20=(a20+a23);
+  a19=(a19-a20);
+  if (res[0]!=0) res[0][22]=a19;
+  a19=(a08*a04);
+  a20=(a07*a05);
+  a19=(a19-a20);
+  a19=(a19*a12);
+  a20=(a02*a07);
+  a23=(a01*a08);
+  a20=(a20-a23);
+  a20=(a20*a13);
+  a19=(a19+a20);
+  a20=(a05*a01);
+  a23=(a04*a02);
+  a20=(a20-a23);
+  a20=(a20*a14);
+  a19=(a19+a20);
+  a20=(a00*a09);
+  a23=(a01*a10);
+  a20=(a20+a23);
+  a23=(a02*a11);
+  a20=(a20+a23);
+  a23=(a01*a20);
+  a22=(a03*a09);
+  a26=(a04*a10);
+  a22=(a22+a26);
+  a26=(a05*a11);
+  a22=(a22+a26);
+  a26=(a04*a22);
+  a23=(a23+a26);
+  a09=(a06*a09);
+  a10=(a07*a10);
+  a09=(a09+a10);
+  a11=(a08*a11);
+  a09=(a09+a11);
+  a11=(a07*a09);
+  a23=(a23+a11);
+  a11=(a02*a23);
+  a10=(a02*a20);
+  a26=(a05*a22);
+  a10=(a10+a26);
+  a26=(a08*a09);
+  a10=(a10+a26);
+  a26=(a01*a10);
+  a11=(a11-a26);
+  a11=(a11*a15);
+  a19=(a19+a11);
+  a11=(a05*a23);
+  a26=(a04*a10);
+  a11=(a11-a26);
+  a11=(a11*a16);
+  a19=(a19+a11);
+  a11=(a08*a23);
+  a26=(a07*a10);
+  a11=(a11-a26);
+  a11=(a11*a17);
+  a19=(a19+a11);
+  if (res[0]!=0) res[0][23]=a19;
+  a19=(a06*a05);
+  a11=(a08*a03);
+  a19=(a19-a11);
+  a19=(a19*a12);
+  a11=(a00*a08);
+  a26=(a02*a06);
+  a11=(a11-a26);
+  a11=(a11*a13);
+  a19=(a19+a11);
+  a11=(a03*a02);
+  a26=(a05*a00);
+  a11=(a11-a26);
+  a11=(a11*a14);
+  a19=(a19+a11);
+  a11=(a00*a10);
+  a20=(a00*a20);
+  a22=(a03*a22);
+  a20=(a20+a22);
+  a09=(a06*a09);
+  a20=(a20+a09);
+  a09=(a02*a20);
+  a11=(a11-a09);
+  a11=(a11*a15);
+  a19=(a19+a11);
+  a11=(a03*a10);
+  a09=(a05*a20);
+  a11=(a11-a09);
+  a11=(a11*a16);
+  a19=(a19+a11);
+  a10=(a06*a10);
+  a11=(a08*a20);
+  a10=(a10-a11);
+  a10=(a10*a17);
+  a19=(a19+a10);
+  if (res[0]!=0) res[0][24]=a19;
+  a19=(a07*a03);
+  a10=(a06*a04);
+  a19=(a19-a10);
+  a19=(a19*a12);
+  a12=(a01*a06);
+  a10=(a00*a07);
+  a12=(a12-a10);
+  a12=(a12*a13);
+  a19=(a19+a12);
+  a12=(a04*a00);
+  a13=(a03*a01);
+  a12=(a12-a13);
+  a12=(a12*a14);
+  a19=(a19+a12);
+  a12=(a01*a20);
+  a14=(a00*a23);
+  a12=(a12-a14);
+  a12=(a12*a15);
+  a19=(a19+a12);
+  a12=(a04*a20);
+  a14=(a03*a23);
+  a12=(a12-a14);
+  a12=(a12*a16);
+  a19=(a19+a12);
+  a20=(a07*a20);
+  a23=(a06*a23);
+  a20=(a20-a23);
+  a20=(a20*a17);
+  a19=(a19+a20);
+  if (res[0]!=0) res[0][25]=a19;
+  a00=(a00*a15);
+  a03=(a03*a16);
+  a00=(a00+a03);
+  a06=(a06*a17);
+  a00=(a00+a06);
+  if (res[0]!=0) res[0][26]=a00;
+  a01=(a01*a15);
+  a04=(a04*a16);
+  a01=(a01+a04);
+  a07=(a07*a17);
+  a01=(a01+a07);
+  if (res[0]!=0) res[0][27]=a01;
+  a02=(a02*a15);
+  a05=(a05*a16);
+  a02=(a02+a05);
+  a08=(a08*a17);
+  a02=(a02+a08);
+  if (res[0]!=0) res[0][28]=a02;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int record(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f15(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int record_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void record_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void record_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void record_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int record_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int record_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real record_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* record_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    case 2: return "xi";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* record_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "row";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* record_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    case 2: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* record_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s6;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int record_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int record_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
 
 
 /* ======================= end of CasADi-generated code =================================== */
@@ -19412,6 +20128,14 @@ CASADI_SYMBOL_EXPORT int observe_work_bytes(casadi_int *sz_arg, casadi_int* sz_r
 #define HPGEN_NO_CONVERGENCE 1
 #define HPGEN_NONFINITE 2
 #define HPGEN_DOMAIN 3
+#define HPGEN_RECORD 4
+/* the scene's record row (kernel record): its width and what it needs */
+#define HPGEN_W 29
+#define HPGEN_RECORD_USES_XI 1
+#define HPGEN_LEGENDRE_QUADRATIC 1
+/* neither the step (residual, p_{k+1}) nor the record row use g: hpgen_advance_record does
+   not reconstruct the group at all */
+#define HPGEN_SKIP_G 0
 #define HPGEN_INVALID (-1)
 /* Newton stalls at round-off: stop when |dz| stopped decreasing while below this * (1+|z|) */
 #define HPGEN_ROUNDOFF_FLOOR 1e-11
@@ -19452,9 +20176,10 @@ typedef struct hpgen_run {
     long long lu_valid;              /* lu holds J^{-1} */
     double s;                        /* section(g_k, p_k), when s_valid */
     long long s_valid;
+    long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "8d1dca3eeb1188dcc815367221dd21011a53e23075a92a086ca3ae40eb4e5ccb"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "d5ace43f723217a6d562424015154cbfc54cba9fd8ca33ff813590347374d12a"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -19475,6 +20200,9 @@ static int hpgen_k_margin(const double* in0, const double* in1, double* out0);
 static int hpgen_k_section(const double* in0, const double* in1, double* out0);
 static int hpgen_k_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
 static int hpgen_k_observe(const double* in0, const double* in1, double* out0, double* out1, double* out2, double* out3);
+static int hpgen_k_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_velocity_step(const double* in0, const double* in1, const double* in2, double* out0);
+static int hpgen_k_record(const double* in0, const double* in1, const double* in2, double* out0);
 
 /* residual(z[18], g[16], p[6], h[1]) -> (F[18]) */
 #define HPGEN_RESIDUAL_SZ_ARG 4
@@ -19823,6 +20551,85 @@ HPGEN_EXPORT int hpgen_kernel_observe(const double* in0, const double* in1, doub
     return hpgen_k_observe(in0, in1, out0, out1, out2, out3);
 }
 
+/* update_p(z[18], g[16], p[6], h[1]) -> (p1[6]) */
+#define HPGEN_UPDATE_P_SZ_ARG 4
+#define HPGEN_UPDATE_P_SZ_RES 1
+#define HPGEN_UPDATE_P_SZ_IW 0
+#define HPGEN_UPDATE_P_SZ_W 28
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_update_p exports it */
+static int hpgen_k_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_UPDATE_P_SZ_ARG + 1];
+    casadi_real* res[HPGEN_UPDATE_P_SZ_RES + 1];
+    casadi_int iw[HPGEN_UPDATE_P_SZ_IW + 1];
+    casadi_real w[HPGEN_UPDATE_P_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = update_p(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_update_p(in0, in1, in2, in3, out0);
+}
+
+/* velocity_step(g[16], p[6], xi[6]) -> (xi1[6]) */
+#define HPGEN_VELOCITY_STEP_SZ_ARG 3
+#define HPGEN_VELOCITY_STEP_SZ_RES 1
+#define HPGEN_VELOCITY_STEP_SZ_IW 0
+#define HPGEN_VELOCITY_STEP_SZ_W 4
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_velocity_step exports it */
+static int hpgen_k_velocity_step(const double* in0, const double* in1, const double* in2, double* out0) {
+    const casadi_real* arg[HPGEN_VELOCITY_STEP_SZ_ARG + 1];
+    casadi_real* res[HPGEN_VELOCITY_STEP_SZ_RES + 1];
+    casadi_int iw[HPGEN_VELOCITY_STEP_SZ_IW + 1];
+    casadi_real w[HPGEN_VELOCITY_STEP_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    res[0] = out0;
+    flag = velocity_step(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_velocity_step(const double* in0, const double* in1, const double* in2, double* out0) {
+    return hpgen_k_velocity_step(in0, in1, in2, out0);
+}
+
+/* record(g[16], p[6], xi[6]) -> (row[29]) */
+#define HPGEN_RECORD_SZ_ARG 3
+#define HPGEN_RECORD_SZ_RES 1
+#define HPGEN_RECORD_SZ_IW 0
+#define HPGEN_RECORD_SZ_W 27
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_record exports it */
+static int hpgen_k_record(const double* in0, const double* in1, const double* in2, double* out0) {
+    const casadi_real* arg[HPGEN_RECORD_SZ_ARG + 1];
+    casadi_real* res[HPGEN_RECORD_SZ_RES + 1];
+    casadi_int iw[HPGEN_RECORD_SZ_IW + 1];
+    casadi_real w[HPGEN_RECORD_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    res[0] = out0;
+    flag = record(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_record(const double* in0, const double* in1, const double* in2, double* out0) {
+    return hpgen_k_record(in0, in1, in2, out0);
+}
+
 /* ---- dense linear algebra and Newton ---- */
 
 /* max |x_i|; NaN if any x_i is NaN */
@@ -20061,11 +20868,12 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
 }
 
 /* One step of a run: margin(z, h) > 0 at the start (check_start), Newton from z (in/out),
-   margin(z, h) > 0 at the solution, then update -> (g1, p1). */
+   margin(z, h) > 0 at the solution, then update -> (g1, p1); with_g = 0: update_p -> p1
+   only (g1 untouched). */
 static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
                            const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
                            double* g1, double* p1, long long* iters, long long* jacs,
-                           double* rnorm, int check_start) {
+                           double* rnorm, int check_start, int with_g) {
     double m[1];
     int code;
     /* a start outside tau's domain means h is too large for the chart: do not let Newton
@@ -20084,6 +20892,11 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
     }
     if (hpgen_k_margin(z, hv, m)) return HPGEN_NONFINITE;
     if (!(m[0] > 0.0)) return HPGEN_DOMAIN;
+    if (!with_g) {
+        if (hpgen_k_update_p(z, g, p, hv, p1) || !hpgen_all_finite(p1, HPGEN_D))
+            return HPGEN_NONFINITE;
+        return HPGEN_OK;
+    }
     if (hpgen_k_update(z, g, p, hv, g1, p1)) return HPGEN_NONFINITE;
     if (!hpgen_all_finite(g1, HPGEN_NN) || !hpgen_all_finite(p1, HPGEN_D))
         return HPGEN_NONFINITE;
@@ -20111,7 +20924,8 @@ HPGEN_EXPORT int hpgen_step(const double* g, const double* p, double h, double* 
     hpgen_status_init(st);
     if (!hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return HPGEN_INVALID; }
     hv[0] = h;
-    code = hpgen_step_core(g, p, hv, z, o, lu, piv, &valid, g1, p1, &it, &st->jacobians, &r, 1);
+    code = hpgen_step_core(g, p, hv, z, o, lu, piv, &valid, g1, p1, &it, &st->jacobians, &r, 1,
+                           1);
     st->code = code; st->iterations = it; st->total_iterations = it; st->residual = r;
     return code;
 }
@@ -20142,10 +20956,11 @@ HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, d
    sizes them for the records falling in this call). Stops at the first failed step (the run
    keeps the last good state). Returns the steps done in this call. */
 /* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
-   success the run moved to (g_{k+1}, p_{k+1}); o for the steps after the first, full (o with
-   full Newton) for the first. Updates the counters of st; returns the status code. */
+   success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for the steps
+   after the first, full (o with full Newton) for the first. Updates the counters of st;
+   returns the status code. */
 static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
-                          const hpgen_options* full, hpgen_status* st) {
+                          const hpgen_options* full, hpgen_status* st, int with_g) {
     double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], res;
     long long it;
     int i, code;
@@ -20159,7 +20974,7 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
         for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
     /* the first step starts from the crude guess kernel: full Newton */
     code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? full : o, r->lu, r->piv,
-                           &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0);
+                           &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0, with_g);
     st->iterations = it;
     st->total_iterations += it;
     st->residual = res;
@@ -20168,7 +20983,7 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     memcpy(r->zprev, r->z, sizeof r->z);
     memcpy(r->z, zs, sizeof r->z);
     if (r->have_prev < 2) r->have_prev += 1;
-    memcpy(r->g, g1, sizeof g1);
+    if (with_g) memcpy(r->g, g1, sizeof g1);
     memcpy(r->p, p1, sizeof p1);
     r->k += 1;
     return HPGEN_OK;
@@ -20181,12 +20996,14 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
     long long n, rec = 0;
     hpgen_options full;
     hpgen_status_init(st);
-    if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    if (steps < 0 || every < 1 || !hpgen_options_ok(o) || r->g_stale) {
+        st->code = HPGEN_INVALID; return 0;
+    }
     hv[0] = h;
     full = *o;
     full.simplified = 0;
     for (n = 0; n < steps; ++n) {
-        if (hpgen_run_step(r, hv, o, &full, st) != HPGEN_OK) return n;
+        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
         if (r->k % every == 0) {
             memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof r->g);
             memcpy(p_rec + rec * HPGEN_D, r->p, sizeof r->p);
@@ -20217,7 +21034,9 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
     hpgen_options full;
     hpgen_status_init(st);
     *n_rec = 0;
-    if (steps < 0 || cap < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    if (steps < 0 || cap < 1 || !hpgen_options_ok(o) || r->g_stale) {
+        st->code = HPGEN_INVALID; return 0;
+    }
     hv[0] = h;
     full = *o;
     full.simplified = 0;
@@ -20231,7 +21050,7 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
         const long long k = r->k;
         memcpy(g0, r->g, sizeof g0);
         memcpy(p0, r->p, sizeof p0);
-        if (hpgen_run_step(r, hv, o, &full, st) != HPGEN_OK) return n;
+        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
         if (hpgen_k_section(r->g, r->p, s1) || !isfinite(s1[0])) {
             st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
         }
@@ -20252,6 +21071,107 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
     }
     st->step = r->k;
     return n;
+}
+
+/* xi with legendre(g, xi) = p: Newton (kernel velocity_step) from xi = 0; one step when l is
+   quadratic in xi (then exact), else until |dxi| <= 1e-14 (1 + |xi|) or the round-off floor,
+   at most 50 iterations (the runtime's Integrator.velocity uses the same test). */
+#if HPGEN_RECORD_USES_XI
+static int hpgen_velocity(const double* g, const double* p, double* xi) {
+    double x1[HPGEN_D], dprev = HUGE_VAL;
+    int i, it;
+    for (i = 0; i < HPGEN_D; ++i) xi[i] = 0.0;
+    for (it = 1; it <= 50; ++it) {
+        double dn = 0.0, xn;
+        if (hpgen_k_velocity_step(g, p, xi, x1) || !hpgen_all_finite(x1, HPGEN_D))
+            return HPGEN_RECORD;
+        for (i = 0; i < HPGEN_D; ++i) {
+            const double dx = fabs(x1[i] - xi[i]);
+            if (dx > dn) dn = dx;
+            xi[i] = x1[i];
+        }
+        if (HPGEN_LEGENDRE_QUADRATIC) return HPGEN_OK;
+        xn = hpgen_norm_inf(xi, HPGEN_D);
+        if (dn <= 1e-14 * (1.0 + xn)) return HPGEN_OK;
+        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + xn)) return HPGEN_OK;
+        dprev = dn;
+    }
+    return HPGEN_RECORD;
+}
+#endif
+
+/* The scene's record row at (g, p) (kernel record; xi by hpgen_velocity when the row uses
+   it): HPGEN_OK, or HPGEN_RECORD when the row is not finite or xi did not converge (then the
+   row is all NaN). */
+static int hpgen_record_row(const double* g, const double* p, double* row) {
+    double xi[HPGEN_D];
+#if HPGEN_RECORD_USES_XI
+    if (hpgen_velocity(g, p, xi) != HPGEN_OK) {
+        int i;
+        for (i = 0; i < HPGEN_W; ++i) row[i] = NAN;
+        return HPGEN_RECORD;
+    }
+#else
+    memset(xi, 0, sizeof xi);
+#endif
+    if (hpgen_k_record(g, p, xi, row) || !hpgen_all_finite(row, HPGEN_W)) return HPGEN_RECORD;
+    return HPGEN_OK;
+}
+
+/* The record row at (g, p) (the start of a run: record 0). Returns the status code. */
+HPGEN_EXPORT int hpgen_record(const double* g, const double* p, double* row) {
+    return hpgen_record_row(g, p, row);
+}
+
+/* Advance a run like hpgen_advance, keeping only the scene's record row (W doubles) of the
+   state after global step k when k % every == 0, in rows[j * W], j = 0, 1, ... With
+   HPGEN_SKIP_G (neither the step nor the row use g) g_{k+1} is never formed: the run's g
+   stays g_0 and the run is marked g_stale (hpgen_advance and hpgen_advance_sections then
+   refuse it). The states (p_k, z) are bitwise those of hpgen_advance. A row that is not
+   finite stops the run after its step with code HPGEN_RECORD (the row is written, *n_rec
+   counts it). *n_rec: rows written. Returns the steps done in this call. */
+HPGEN_EXPORT long long hpgen_advance_record(hpgen_run* r, double h, long long steps,
+                                            long long every, const hpgen_options* o,
+                                            double* rows, long long* n_rec, hpgen_status* st) {
+    double hv[1];
+    long long n;
+    hpgen_options full;
+    hpgen_status_init(st);
+    *n_rec = 0;
+    if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    hv[0] = h;
+    full = *o;
+    full.simplified = 0;
+    if (HPGEN_SKIP_G) r->g_stale = 1;
+    for (n = 0; n < steps; ++n) {
+        if (hpgen_run_step(r, hv, o, &full, st, !HPGEN_SKIP_G) != HPGEN_OK) return n;
+        if (r->k % every == 0) {
+            double* row = rows + *n_rec * HPGEN_W;
+            *n_rec += 1;
+            if (hpgen_record_row(r->g, r->p, row) != HPGEN_OK) {
+                st->code = HPGEN_RECORD; st->step = r->k; return n + 1;
+            }
+        }
+    }
+    st->step = r->k;
+    return steps;
+}
+
+/* Advance B independent runs like B calls of hpgen_advance_record: rows of run b start at
+   rows + b * per_run * W, its row count in n_rec[b], its status in st[b]. Returns the number
+   of failed runs. Callers split a batch across threads. */
+HPGEN_EXPORT long long hpgen_advance_record_batch(hpgen_run* runs, long long B, double h,
+                                                  long long steps, long long every,
+                                                  const hpgen_options* o, long long per_run,
+                                                  double* rows, long long* n_rec,
+                                                  hpgen_status* st) {
+    long long b, failed = 0;
+    for (b = 0; b < B; ++b) {
+        hpgen_advance_record(runs + b, h, steps, every, o, rows + b * per_run * HPGEN_W,
+                             n_rec + b, st + b);
+        if (st[b].code != HPGEN_OK) ++failed;
+    }
+    return failed;
 }
 
 /* Observables of K records (g_rec[k * NN], p_rec[k * D], as hpgen_advance writes them):

@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 8d1dca3eeb1188dcc815367221dd21011a53e23075a92a086ca3ae40eb4e5ccb
+# content hash: d5ace43f723217a6d562424015154cbfc54cba9fd8ca33ff813590347374d12a
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
@@ -40753,6 +40753,199 @@ def observe(g, p):
     return [_fromiter(_r[0], _F64, 6), _fromiter(_r[1], _F64, 1), _fromiter(_r[2], _F64, 6), _fromiter(_r[3], _F64, 1)]
 
 
+def _raw_update_p(z, g, p, h):
+    """update_p on lists of Python floats -> [p1[6]] as lists (see RAW)"""
+    w2, w10, w8, w16, w4, w0, w3, w11, w9, w17, w5, w1, w15, w14, w13, w12, w6, w7 = z
+    w18, = h
+    r0 = [0.0] * 6
+    w0 = w18 * ((0.5 * ((3.0000000000000004 * w0) + (0.4641016151377544 * w1))) + (0.5 * (((-6.464101615137755) * w0) + (3.0000000000000004 * w1))))
+    w1 = w18 * ((0.5 * ((3.0000000000000004 * w2) + (0.4641016151377544 * w3))) + (0.5 * (((-6.464101615137755) * w2) + (3.0000000000000004 * w3))))
+    w2 = w1 * 0.5
+    w3 = w18 * ((0.5 * ((3.0000000000000004 * w4) + (0.4641016151377544 * w5))) + (0.5 * (((-6.464101615137755) * w4) + (3.0000000000000004 * w5))))
+    w4 = w18 * ((0.5 * ((3.0000000000000004 * w8) + (0.4641016151377544 * w9))) + (0.5 * (((-6.464101615137755) * w8) + (3.0000000000000004 * w9))))
+    w5 = w4 * 0.5
+    w8 = w5 * w0
+    w9 = w18 * ((0.5 * ((3.0000000000000004 * w10) + (0.4641016151377544 * w11))) + (0.5 * (((-6.464101615137755) * w10) + (3.0000000000000004 * w11))))
+    w10 = w9 * 0.5
+    w11 = w10 * w3
+    w19 = (w4 * w1) * 0.25
+    w20 = (w9 * w1) * 0.25
+    r0[0] = (((((((w0 + (w2 * w3)) * 0.5) * w6) - (((w3 - (w2 * w0)) * 0.5) * w7)) - (((w8 + w11) * 0.5) * w12)) + ((w19 - w10) * w13)) + ((w5 + w20) * w14)) + ((1.0 + ((w1 * w1) * 0.25)) * w15)
+    w1 = w18 * ((0.5 * ((3.0000000000000004 * w16) + (0.4641016151377544 * w17))) + (0.5 * (((-6.464101615137755) * w16) + (3.0000000000000004 * w17))))
+    w16 = w2 * w1
+    w17 = (w4 * w9) * 0.25
+    r0[1] = ((((((((w10 * w0) + w1) * 0.5) * w7) - (((w8 + w16) * 0.5) * w6)) - (((w0 - (w10 * w1)) * 0.5) * w12)) + ((w2 + w17) * w13)) + ((1.0 + ((w9 * w9) * 0.25)) * w14)) + ((w20 - w5) * w15)
+    r0[2] = ((((((w3 + (w5 * w1)) * 0.5) * w12) - ((((w11 + w16) * 0.5) * w7) + (((w1 - (w5 * w3)) * 0.5) * w6))) + ((1.0 + ((w4 * w4) * 0.25)) * w13)) + ((w17 - w2) * w14)) + ((w10 + w19) * w15)
+    r0[3] = ((w5 * w6) - (w10 * w7)) + w12
+    r0[4] = ((w2 * w7) + w6) - (w5 * w12)
+    r0[5] = (w7 - (w2 * w6)) + (w10 * w12)
+    return [r0]
+
+
+def update_p(z, g, p, h):
+    """update_p(z[18], g[16], p[6], h[1]) -> [p1[6]]"""
+    if _type(z) is _NDARRAY and z.dtype is _F64 and z.shape == (18,):
+        z = z.tolist()
+    else:
+        z = _vec(z, 18, "update_p: z")
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (16,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 16, "update_p: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (6,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 6, "update_p: p")
+    if _type(h) is _NDARRAY and h.dtype is _F64 and h.shape == (1,):
+        h = h.tolist()
+    else:
+        h = _vec(h, 1, "update_p: h")
+    _r = _raw_update_p(z, g, p, h)
+    return [_fromiter(_r[0], _F64, 6)]
+
+
+def _raw_velocity_step(g, p, xi):
+    """velocity_step on lists of Python floats -> [xi1[6]] as lists (see RAW)"""
+    try:
+        w0, w1, w2, w3, w4, w5 = p
+        w6, w7, w8, w9, w10, w11 = xi
+        r0 = [0.0] * 6
+        r0[0] = w6 - (((2.0 * w6) - w0) * 0.5)
+        r0[1] = w7 - (w7 - w1)
+        r0[2] = w8 - (((0.6666666666666666 * w8) - w2) / 0.6666666666666666)
+        r0[3] = w9 - (w9 - w3)
+        r0[4] = w10 - (((1.5 * w10) - w4) / 1.5)
+        r0[5] = w11 - (((3.0 * w11) - w5) / 3.0)
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 6
+        w0 = xi[0]
+        w1 = 2.0 * w0
+        w2 = p[0]
+        w1 = w1 - w2
+        w2 = 2.0
+        w1 = w1 / w2 if w2 else _div(w1, w2)
+        w0 = w0 - w1
+        r0[0] = w0
+        w0 = xi[1]
+        w1 = p[1]
+        w1 = w0 - w1
+        w0 = w0 - w1
+        r0[1] = w0
+        w0 = xi[2]
+        w1 = 0.6666666666666666
+        w2 = w1 * w0
+        w3 = p[2]
+        w2 = w2 - w3
+        w2 = w2 / w1 if w1 else _div(w2, w1)
+        w0 = w0 - w2
+        r0[2] = w0
+        w0 = xi[3]
+        w2 = p[3]
+        w2 = w0 - w2
+        w0 = w0 - w2
+        r0[3] = w0
+        w0 = xi[4]
+        w2 = 1.5
+        w1 = w2 * w0
+        w3 = p[4]
+        w1 = w1 - w3
+        w1 = w1 / w2 if w2 else _div(w1, w2)
+        w0 = w0 - w1
+        r0[4] = w0
+        w0 = xi[5]
+        w1 = 3.0
+        w2 = w1 * w0
+        w3 = p[5]
+        w2 = w2 - w3
+        w2 = w2 / w1 if w1 else _div(w2, w1)
+        w0 = w0 - w2
+        r0[5] = w0
+    return [r0]
+
+
+def velocity_step(g, p, xi):
+    """velocity_step(g[16], p[6], xi[6]) -> [xi1[6]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (16,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 16, "velocity_step: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (6,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 6, "velocity_step: p")
+    if _type(xi) is _NDARRAY and xi.dtype is _F64 and xi.shape == (6,):
+        xi = xi.tolist()
+    else:
+        xi = _vec(xi, 6, "velocity_step: xi")
+    _r = _raw_velocity_step(g, p, xi)
+    return [_fromiter(_r[0], _F64, 6)]
+
+
+def _raw_record(g, p, xi):
+    """record on lists of Python floats -> [row[29]] as lists (see RAW)"""
+    w0, w1, w2, w3, w4, w5, w6, w7, w8, w9, w10, w11, w12, w13, w14, w15 = g
+    w16, w17, w18, w19, w20, w21 = p
+    w22, w23, w24, w25, w26, w27 = xi
+    r0 = [0.0] * 29
+    r0[0] = w0
+    r0[1] = w1
+    r0[2] = w2
+    r0[3] = w3
+    r0[4] = w4
+    r0[5] = w5
+    r0[6] = w6
+    r0[7] = w7
+    r0[8] = w8
+    r0[9] = w9
+    r0[10] = w10
+    r0[11] = w11
+    r0[12] = w12
+    r0[13] = w13
+    r0[14] = w14
+    r0[15] = w15
+    r0[16] = w16
+    r0[17] = w17
+    r0[18] = w18
+    r0[19] = w19
+    r0[20] = w20
+    r0[21] = w21
+    w3 = w23 * w23
+    w7 = w25 * w25
+    r0[22] = (((((((2.0 * w22) * w22) + w3) + ((0.6666666666666666 * w24) * w24)) + w7) + ((1.5 * w26) * w26)) + ((3.0 * w27) * w27)) - ((((((0.5 * w3) + (0.5 * w7)) + (w22 * w22)) + (0.75 * (w26 * w26))) + (1.5 * (w27 * w27))) + (0.3333333333333333 * (w24 * w24)))
+    w3 = ((w0 * w12) + (w1 * w13)) + (w2 * w14)
+    w7 = ((w4 * w12) + (w5 * w13)) + (w6 * w14)
+    w11 = ((w8 * w12) + (w9 * w13)) + (w10 * w14)
+    w12 = ((w1 * w3) + (w5 * w7)) + (w9 * w11)
+    w13 = ((w2 * w3) + (w6 * w7)) + (w10 * w11)
+    r0[23] = (((((((w10 * w5) - (w9 * w6)) * w16) + (((w2 * w9) - (w1 * w10)) * w17)) + (((w6 * w1) - (w5 * w2)) * w18)) + (((w2 * w12) - (w1 * w13)) * w19)) + (((w6 * w12) - (w5 * w13)) * w20)) + (((w10 * w12) - (w9 * w13)) * w21)
+    w3 = ((w0 * w3) + (w4 * w7)) + (w8 * w11)
+    r0[24] = (((((((w8 * w6) - (w10 * w4)) * w16) + (((w0 * w10) - (w2 * w8)) * w17)) + (((w4 * w2) - (w6 * w0)) * w18)) + (((w0 * w13) - (w2 * w3)) * w19)) + (((w4 * w13) - (w6 * w3)) * w20)) + (((w8 * w13) - (w10 * w3)) * w21)
+    r0[25] = (((((((w9 * w4) - (w8 * w5)) * w16) + (((w1 * w8) - (w0 * w9)) * w17)) + (((w5 * w0) - (w4 * w1)) * w18)) + (((w1 * w3) - (w0 * w12)) * w19)) + (((w5 * w3) - (w4 * w12)) * w20)) + (((w9 * w3) - (w8 * w12)) * w21)
+    r0[26] = ((w0 * w19) + (w4 * w20)) + (w8 * w21)
+    r0[27] = ((w1 * w19) + (w5 * w20)) + (w9 * w21)
+    r0[28] = ((w2 * w19) + (w6 * w20)) + (w10 * w21)
+    return [r0]
+
+
+def record(g, p, xi):
+    """record(g[16], p[6], xi[6]) -> [row[29]]"""
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (16,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 16, "record: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (6,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 6, "record: p")
+    if _type(xi) is _NDARRAY and xi.dtype is _F64 and xi.shape == (6,):
+        xi = xi.tolist()
+    else:
+        xi = _vec(xi, 6, "record: xi")
+    _r = _raw_record(g, p, xi)
+    return [_fromiter(_r[0], _F64, 29)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -40768,6 +40961,9 @@ KERNELS = {
     "section": section,
     "chart_point": chart_point,
     "observe": observe,
+    "update_p": update_p,
+    "velocity_step": velocity_step,
+    "record": record,
 }
 
 RAW = {
@@ -40785,6 +40981,9 @@ RAW = {
     "section": _raw_section,
     "chart_point": _raw_chart_point,
     "observe": _raw_observe,
+    "update_p": _raw_update_p,
+    "velocity_step": _raw_velocity_step,
+    "record": _raw_record,
 }
 
 

@@ -6,6 +6,7 @@ The sizes below are the positional contract; names come from ``Kernel.inputs/out
 from __future__ import annotations
 
 import keyword
+import math
 import re
 
 from ..errors import HpgenError
@@ -17,7 +18,8 @@ HASH_RE = re.compile(r"[0-9a-f]{16,128}\Z")
 #: argument names the generated Python would shadow (work variables, outputs, imports)
 _RESERVED_ARG = re.compile(r"([wr][0-9]+|math|numpy)\Z")
 
-# size symbols: "nz", "nn" (= n*n), "d", "dd" (= d*d), "nznz" (= nz*nz), "1"
+# size symbols: "nz", "nn" (= n*n), "d", "dd" (= d*d), "nznz" (= nz*nz), "1", "w" (the
+# record row's length, DiscreteStep.record_width)
 SIGNATURES = {
     "residual": (("nz", "nn", "d", "1"), ("nz",)),
     "jacobian": (("nz", "nn", "d", "1"), ("nznz",)),
@@ -33,6 +35,9 @@ SIGNATURES = {
     "section": (("nn", "d"), ("1",)),
     "chart_point": (("nz", "nn", "1", "1"), ("nn",)),
     "observe": (("nn", "d"), ("d", "1", "d", "1")),
+    "update_p": (("nz", "nn", "d", "1"), ("d",)),
+    "velocity_step": (("nn", "d", "d"), ("d",)),
+    "record": (("nn", "d", "d"), ("w",)),
 }
 
 
@@ -41,8 +46,8 @@ class CodegenError(HpgenError, ValueError):
     between stages, or an expression hpgen's code generators cannot print)."""
 
 
-def sizes(n: int, d: int, nz: int) -> dict[str, int]:
-    return {"nz": nz, "nn": n * n, "d": d, "dd": d * d, "nznz": nz * nz, "1": 1}
+def sizes(n: int, d: int, nz: int, w: int = 1) -> dict[str, int]:
+    return {"nz": nz, "nn": n * n, "d": d, "dd": d * d, "nznz": nz * nz, "1": 1, "w": w}
 
 
 def check_arg_name(name: str, where: str) -> str:
@@ -61,7 +66,8 @@ def check_step(step) -> None:
         v = getattr(step, attr)
         if not isinstance(v, int) or isinstance(v, bool) or v < 1:
             raise CodegenError(f"DiscreteStep.{attr} must be a positive int, got {v!r}")
-    size = sizes(step.n, step.d, step.nz)
+    size = sizes(step.n, step.d, step.nz, step.record_width)
+    check_record_layout(step)
     names = [k.name for k in step.kernels]
     if tuple(names) != KERNEL_NAMES:
         raise CodegenError(f"DiscreteStep.kernels must be {KERNEL_NAMES} in this order, "
@@ -97,6 +103,31 @@ def check_step(step) -> None:
                                    f"{f.numel_out(i)} elements, expected {size[s]}")
         if len(set(k.inputs) | set(k.outputs)) != len(k.inputs) + len(k.outputs):
             raise CodegenError(f"kernel {k.name}: argument names are not distinct")
+
+
+RECORD_NAME_RE = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}\Z")
+
+
+def check_record_layout(step) -> None:
+    """record_layout: ((name, offset, shape), ...), names distinct identifiers, offsets
+    contiguous from 0, shapes () | (d,) | (n, n); width >= 1."""
+    layout, offset, seen = step.record_layout, 0, set()
+    if not layout:
+        raise CodegenError("DiscreteStep.record_layout is empty (the scene records nothing)")
+    for entry in layout:
+        try:
+            name, off, shape = entry
+        except (TypeError, ValueError):
+            raise CodegenError(f"record_layout entry {entry!r}: expected (name, offset, "
+                               "shape)") from None
+        if not isinstance(name, str) or not RECORD_NAME_RE.match(name) or name in seen:
+            raise CodegenError(f"record_layout: name {name!r} is not a distinct identifier")
+        if off != offset or tuple(shape) not in ((), (step.d,), (step.n, step.n)):
+            raise CodegenError(f"record_layout: {name!r} at offset {off} with shape {shape}; "
+                               f"expected offset {offset} and shape (), ({step.d},) or "
+                               f"({step.n}, {step.n})")
+        seen.add(name)
+        offset += math.prod(shape)
 
 
 def dense_positions(sp) -> list[int]:

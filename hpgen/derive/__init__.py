@@ -13,6 +13,7 @@ import casadi as ca
 from ..errors import ModelError
 from .action import step_equations
 from .lagrangian import lagrangian_function, to_casadi
+from .records import record_row, velocity_step
 from .step import KERNEL_NAMES, DiscreteStep, Kernel
 
 __all__ = ["derive", "DiscreteStep", "Kernel", "KERNEL_NAMES"]
@@ -72,8 +73,11 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     # the Legendre inverse at a record: one Newton step from xi = 0, exact when l is quadratic
     # in xi (hessian free of xi: legendre_quadratic), the runtime's start otherwise
     at0 = lambda e: ca.substitute(e, xi, ca.SX.zeros(d))  # noqa: E731
-    xi_obs = ca.solve(at0(hess), p - at0(mu))
+    xi_obs = at0(velocity_step(g, p, xi, lag))
     quadratic = not ca.depends_on(hess, xi)
+    row, layout = record_row(model, group, g, p, xi, lag)
+    # what the loop may skip: g_{k+1} is not computed when neither the step nor the row use g
+    step_uses_g = bool(ca.depends_on(eqs.residual, gf) or ca.depends_on(eqs.p1, gf))
     theta = ca.SX.sym("theta", 1)
     chart_point = ca.mtimes(g, group.tau(tau, theta * eqs.chart_step))
     kernels = (
@@ -97,6 +101,10 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
         kernel("observe", [("g", gvec), ("p", p)],
                [("xi", xi_obs), ("E", ca.substitute(ca.dot(mu, xi) - lval, xi, xi_obs)),
                 ("m", group.momentum_map(g, p)), ("e", group.group_defect(g))]),
+        kernel("update_p", [("z", z), ("g", gvec), ("p", p), ("h", h)], [("p1", eqs.p1)]),
+        kernel("velocity_step", [("g", gvec), ("p", p), ("xi", xi)],
+               [("xi1", velocity_step(g, p, xi, lag))]),
+        kernel("record", [("g", gvec), ("p", p), ("xi", xi)], [("row", row)]),
     )
     assert tuple(k.name for k in kernels) == KERNEL_NAMES
     return DiscreteStep(
@@ -104,4 +112,5 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
         tableau_name=tableau.name, tableau_order=tableau.order, tau=tau, rkmk=rkmk,
         reduced=reduced, unknowns=eqs.blocks, kernels=kernels,
         section=getattr(getattr(getattr(model, "scene", None), "section", None), "text", None),
-        legendre_quadratic=quadratic)
+        legendre_quadratic=quadratic, record_layout=layout, step_uses_g=step_uses_g,
+        record_uses_g=bool(ca.depends_on(row, gf)), record_uses_xi=bool(ca.depends_on(row, xi)))

@@ -24,15 +24,23 @@ matrices are flattened column-major (g.ravel(order="F")); h is a 1-vector.
                                            Legendre inverse xi of p (one Newton step from 0:
                                            exact when legendre_quadratic), energy at that xi,
                                            spatial momentum, group defect
+    update_p(z, g, p, h)                 -> p1[d]          p_{k+1} alone (update's p1): the
+                                                           step when g is not needed
+    velocity_step(g, p, xi)              -> xi1[d]         one Newton step of dl/dxi = p:
+                                           xi - H^{-1}(dl/dxi(g, xi) - p); exact from xi = 0
+                                           when legendre_quadratic
+    record(g, p, xi)                     -> row[w]         the scene's record row
+                                           (hpgen.derive.records; layout in record_layout)
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
 KERNEL_NAMES = ("residual", "jacobian", "residual_jacobian", "update", "guess", "legendre",
                 "hessian", "energy", "momentum", "defect", "margin", "section", "chart_point",
-                "observe")
+                "observe", "update_p", "velocity_step", "record")
 
 
 @dataclass(frozen=True)
@@ -64,6 +72,15 @@ class DiscreteStep:
     kernels: tuple               # tuple[Kernel, ...], in KERNEL_NAMES order
     section: str | None = None   # the scene's Poincare section text (None: kernel section = 1)
     legendre_quadratic: bool = False   # d2l/dxi2 free of xi: observe's xi is exact
+    record_layout: tuple = ()    # ((name, offset, shape), ...): see hpgen.derive.records
+    step_uses_g: bool = True     # residual or update_p depend on g
+    record_uses_g: bool = True   # the record row depends on g
+    record_uses_xi: bool = True  # the record row depends on xi (velocity_step needed)
+
+    @property
+    def record_width(self) -> int:
+        """w: the record row's length."""
+        return sum(math.prod(shape) for _, _, shape in self.record_layout)
 
     def kernel(self, name: str) -> Kernel:
         for k in self.kernels:

@@ -6,9 +6,9 @@ Conventions (all groups):
 - Symbolic methods take and return ``casadi.SX`` (column vectors d x 1, matrices n x n or d x d).
 - ``dtau_inv(kind, x)`` returns the d x d matrix of y -> dtau^{-1}_x(y), the paper's inverse
   right-trivialized tangent (Definition def:dtauinverse); ``dtau(kind, x)`` its inverse.
-- Removable singularities (sin t / t at t = 0, ...) are coded as a branch on t^2 with a Taylor
-  series, the exact branch evaluated at a safe argument (see ``hpgen.groups.series``), so that
-  neither branch nor any derivative is NaN at xi = 0.
+- Removable singularities (sin t / t at t = 0, ...) are coded without a branch, as
+  polynomials in the half angle accurate to 2^-54 on the chart domain |t| <= pi (see
+  ``hpgen.groups.series``), so that no value or derivative is NaN at xi = 0.
 """
 from __future__ import annotations
 

@@ -22,9 +22,11 @@ Kinds (``ModelError`` on ``integrator.tau`` for a kind the group does not suppor
   and likewise Dg(W)[V] = cosc V + sinc3 (WV + VW) + 2 (w.v) (cosc' W + sinc3' W^2).
   Everything is assembled entry by entry from W^2 = w w^T - s I and WV + VW =
   v w^T + w v^T - 2 (w.v) I (no 3 x 3 products, no generic ad matrices), and the scalar
-  functions of s of one map come from one ``series.Point`` (one branch, shared
-  transcendentals): the derive stage differentiates dexp^{-1} up to twice more, through both
-  branches, so the size of these expressions is the size of the generated kernels.
+  functions of s of one map come from one ``series.Point`` (two shared half-angle
+  polynomials, no branch and no sqrt/sin/cos/tan): the derive stage differentiates dexp^{-1}
+  up to twice more, so the size of these expressions is the size of the generated kernels.
+  The functions are accurate to round-off on the chart's domain |omega| <= pi and
+  approximate beyond it (``hpgen.groups.series``), where no accepted step evaluates them.
   Margin: the exp chart is injective for |omega| < pi (dexp^{-1} blows up at 2 pi); the
   margin is (pi^2 - |omega|^2) / (2 pi), a smooth function with the sign of pi - |omega|
   and equal to it to first order at the boundary (pi - |omega| itself is not differentiable
@@ -45,7 +47,8 @@ Kinds (``ModelError`` on ``integrator.tau`` for a kind the group does not suppor
   its inverse dskew_x = I + X/(1 + r) + x x^T / (r (1 + r)) (solved in the basis I, X, x x^T;
   x is the eigenvector with eigenvalue r of dskew^{-1}).
 
-Removable singularities go through ``hpgen.groups.series`` (branch on s = |omega|^2).
+Removable singularities go through ``hpgen.groups.series`` (polynomials in s = |omega|^2,
+exactly finite with all derivatives at s = 0).
 """
 from __future__ import annotations
 

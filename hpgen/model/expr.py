@@ -1,7 +1,8 @@
-"""The Lagrangian and the scene's Poincare section: a whitelist parser from text to sympy.
+"""The Lagrangian, the scene's Poincare section and recorded expressions: text -> sympy.
 
-Security: the text goes through ``ast.parse(..., mode="eval")`` only; the tree is checked against
-a whitelist and evaluated by the walker below into sympy objects. Nothing here evaluates strings.
+Security: the text goes through ``ast.parse(..., mode="eval")`` only (hpgen.model.syntax); the
+tree is checked against a whitelist and evaluated by the walker in hpgen.model.evaluator into
+sympy objects. Nothing here evaluates strings.
 
 Allowed: int/float literals; names; ``+ - * / **``; unary ``- +``; indexing with non-negative
 integer literals ``v[i]`` / ``M[i, j]``; calls ``sin cos tan exp log sqrt`` (one argument,
@@ -27,10 +28,14 @@ length d, symbols mu_k; ``mu_k`` slices for products) in place of ``xi``; ``xi``
 refused, and the result must be a scalar that depends on mu or on an entry of g that varies on
 the group (rotation / translation blocks). Its g symbols are equal (==, same hash) to the
 Lagrangian's: same names, same ``real=True`` assumption. Errors have field "scene.section".
+
+A recorded expression (``parse_record``, an entry ``{label: "text"}`` of ``scene.record``) may
+use both ``xi`` and ``mu`` (and g); it must be a scalar depending on xi, mu or a varying entry of
+g. Its xi / mu / g symbols are equal to the Lagrangian's / the section's. Errors carry the field
+the caller passes (the scene uses "scene.record[i].label").
 """
 from __future__ import annotations
 
-import ast
 import math
 import re
 
@@ -38,264 +43,16 @@ import numpy as np
 import sympy as sp
 
 from ..errors import ModelError
-from .syntax import MAX_DEPTH, fail, parse_checked
+# the evaluator's names stay importable from here (hpgen.model.expr was one module)
+from .evaluator import (FUNCTIONS, MAX_EXACT_BITS, MAX_WORK, _FACTOR_ALIAS,  # noqa: F401
+                        _NONFINITE, _as_sympy, _Evaluator, _shape, _shape_text, _to_array)
+from .syntax import MAX_DEPTH, fail, parse_checked  # noqa: F401
 
-MAX_WORK = 50_000
 MAX_TREE = 1_000_000
-MAX_EXACT_BITS = 4096
-
-FUNCTIONS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "exp": sp.exp, "log": sp.log,
-             "sqrt": sp.sqrt, "dot": None}
-_FACTOR_ALIAS = re.compile(r"(R|x)_([0-9]+)")
 SECTION_FIELD = "scene.section"
+RECORD_FIELD = "scene.record"
 _XI_NAME = re.compile(r"xi(_[0-9]+)?")
-_NONFINITE = (sp.S.NaN, sp.S.ComplexInfinity, sp.S.Infinity, sp.S.NegativeInfinity)
-
-
-def _shape(v):
-    return v.shape if isinstance(v, np.ndarray) else ()
-
-
-def _shape_text(shape) -> str:
-    return {0: "scalar", 1: "vector of length {}", 2: "{} x {} matrix"}[len(shape)].format(*shape)
-
-
-def _to_array(values: list, shape) -> np.ndarray:
-    out = np.empty(len(values), dtype=object)
-    out[:] = values
-    return out.reshape(shape)
-
-
-def _as_sympy(v):
-    """A parameter value (int, float, list, list of lists) as a sympy scalar / object array."""
-    if isinstance(v, list):
-        items = [_as_sympy(x) for x in v]
-        if items and isinstance(items[0], np.ndarray):
-            return _to_array([e for row in items for e in row], (len(items), len(items[0])))
-        return _to_array(items, (len(items),))
-    return sp.Integer(v) if type(v) is int else sp.Float(v)
-
-
-class _Evaluator:
-    """Evaluates a checked tree. ``variables``: the algebra-length vectors the expression may use
-    (("xi",) for the Lagrangian, ("mu",) for the section), symbols ``<name>_k``, with ``<name>_k``
-    factor slices for products. ``forbidden``: (regex, message) for names refused with a
-    dedicated message (the section's xi)."""
-
-    def __init__(self, group, parameters: dict, variables=("xi",), forbidden=None):
-        from ..groups import group_from_spec
-        n, d = group.n, group.d
-        self.vars = {v: _to_array([sp.Symbol(f"{v}_{k}", real=True) for k in range(d)], (d,))
-                     for v in variables}
-        self.g = _to_array([sp.Symbol(f"g_{i}_{j}", real=True) for i in range(n)
-                            for j in range(n)], (n, n))
-        self.params, self.cache, self.work = parameters, {}, 0
-        self.forbidden = forbidden
-        names = {**self.vars, "g": self.g, "pi": sp.pi}
-        factors = self.layouts = group.factors
-        self.product = len(factors) > 1
-        varying = set()                     # entries of g that vary on the group
-        for k, lay in enumerate(factors):
-            fg = group_from_spec(lay.name) if self.product else group
-            blk = self.g[lay.row:lay.row + lay.n, lay.row:lay.row + lay.n]
-            sfx = f"_{k}" if self.product else ""
-            if self.product:
-                for v, arr in self.vars.items():
-                    names[v + sfx] = arr[lay.off:lay.off + lay.d]
-                names["g" + sfx] = blk
-            if fg.rotation_block:
-                a, b = fg.rotation_block
-                names["R" + sfx] = blk[a:b, a:b]
-                varying.update(blk[a:b, a:b].flat)
-            if fg.translation_block:
-                a, b = fg.translation_block
-                names["x" + sfx] = blk[a:b, lay.n - 1]
-                varying.update(blk[a:b, lay.n - 1].flat)
-        self.names, self.varying_g = names, varying
-
-    # ---- helpers ---------------------------------------------------------------------------
-    def charge(self, node, amount: int):
-        self.work += amount
-        if self.work > MAX_WORK:
-            raise fail(node, f"expression too large: more than {MAX_WORK} elementwise operations "
-                             f"(limit {MAX_WORK})")
-
-    def checked(self, node, v):
-        """Reject a constant scalar that is not a finite real number within double range."""
-        if isinstance(v, np.ndarray):
-            for e in v.flat:
-                self.checked(node, e)
-            return v
-        if v.is_Atom and v.is_number:
-            if v in _NONFINITE or v is sp.S.NaN:
-                raise fail(node, f"the value is not finite ({v}; a division by zero?)")
-            try:
-                f = float(v)
-            except (TypeError, ValueError):
-                raise fail(node, f"the constant {v} is not a real number") from None
-            except OverflowError:
-                f = math.inf
-            if not math.isfinite(f):
-                raise fail(node, "a constant is not finite or exceeds double precision range")
-            if v.is_Rational and max(int(v.p).bit_length(), int(v.q).bit_length()) > MAX_EXACT_BITS:
-                raise fail(node, f"exact number too large (limit {MAX_EXACT_BITS} bits)")
-        return v
-
-    def elementwise(self, node, fn, values, what):
-        shapes = {_shape(v) for v in values} - {()}
-        if not shapes:
-            self.charge(node, len(values))
-            return self.checked(node, fn(*values))
-        if len(shapes) > 1:
-            desc = " and ".join(_shape_text(s) for s in sorted(shapes, key=len))
-            raise fail(node, f"{what}: shapes do not match ({desc}); use dot(...) for products")
-        shape = shapes.pop()
-        size = int(np.prod(shape))
-        self.charge(node, size * len(values))
-        out = [fn(*[v.flat[i] if isinstance(v, np.ndarray) else v for v in values])
-               for i in range(size)]
-        return self.checked(node, _to_array(out, shape))
-
-    # ---- evaluation ------------------------------------------------------------------------
-    def walk(self, node):
-        try:
-            if isinstance(node, ast.BinOp):
-                return self.binop(node)
-            if isinstance(node, ast.UnaryOp):
-                v = self.walk(node.operand)
-                if isinstance(node.op, ast.UAdd):
-                    return v
-                return self.elementwise(node, lambda a: -a, [v], "unary -")
-            if isinstance(node, ast.Constant):
-                return self.constant(node)
-            if isinstance(node, ast.Name):
-                return self.name(node)
-            if isinstance(node, ast.Subscript):
-                return self.subscript(node)
-            if isinstance(node, ast.Call):
-                return self.call(node)
-        except (TypeError, ValueError, AttributeError, ZeroDivisionError) as e:
-            if isinstance(e, ModelError):
-                raise
-            raise fail(node, f"cannot evaluate this expression ({type(e).__name__}: "
-                             f"{str(e).splitlines()[0][:80] if str(e) else ''})") from None
-        raise fail(node, f"{type(node).__name__} is not allowed", allowed=True)
-
-    def binop(self, node):
-        op = type(node.op)
-        if op is ast.Pow:
-            base, expo = self.walk(node.left), self.walk(node.right)
-            if _shape(expo):
-                raise fail(node, f"the exponent of ** must be a scalar, got a "
-                                 f"{_shape_text(_shape(expo))}")
-            if expo.is_Rational and not expo.is_Integer:
-                big = abs(expo.p) // expo.q + 1
-            else:
-                big = abs(int(expo)) if expo.is_Integer else 0
-            for b in (base.flat if isinstance(base, np.ndarray) else [base]):
-                if b.is_Rational and big and b not in (0, 1, -1):
-                    bits = max(int(b.p).bit_length(), int(b.q).bit_length())
-                    if big * bits > MAX_EXACT_BITS:
-                        raise fail(node, f"exact power too large (limit {MAX_EXACT_BITS} bits); "
-                                         "write the base as a float")
-            return self.elementwise(node, lambda a, b: a ** b, [base, expo], "**")
-        # flatten a left-nested chain of + - (or * /) iteratively
-        kinds = (ast.Add, ast.Sub) if op in (ast.Add, ast.Sub) else (ast.Mult, ast.Div)
-        chain, cur = [], node
-        while isinstance(cur, ast.BinOp) and isinstance(cur.op, kinds):
-            chain.append((type(cur.op), cur.right))
-            cur = cur.left
-        operands = [self.walk(cur)]
-        signs = [True]
-        for opk, right in reversed(chain):
-            v = self.walk(right)
-            if opk is ast.Div:
-                v = self.elementwise(right, lambda a: sp.Integer(1) / a, [v], "/")
-            operands.append(v)
-            signs.append(opk is not ast.Sub)
-        if kinds[0] is ast.Add:
-            def fn(*vals):
-                return sp.Add(*[a if s else -a for a, s in zip(vals, signs)])
-            return self.elementwise(node, fn, operands, "+/-")
-        return self.elementwise(node, lambda *vals: sp.Mul(*vals), operands, "*//")
-
-    def constant(self, node):
-        v = node.value
-        if type(v) is int:
-            if v.bit_length() > 1024:
-                raise fail(node, "integer literal too large (exceeds double precision range)")
-            return sp.Integer(v)
-        if type(v) is float:
-            if not math.isfinite(v):
-                raise fail(node, f"number literal {v} is not finite")
-            return sp.Float(v)
-        raise fail(node, f"{type(v).__name__} constant is not allowed", allowed=True)
-
-    def name(self, node):
-        nm = node.id
-        if nm in self.names:
-            return self.names[nm]
-        if self.forbidden and self.forbidden[0].fullmatch(nm):
-            raise fail(node, self.forbidden[1])
-        if nm in self.params:
-            if nm not in self.cache:
-                self.cache[nm] = self.checked(node, _as_sympy(self.params[nm]))
-            return self.cache[nm]
-        if nm in FUNCTIONS:
-            raise fail(node, f"{nm} is a function; call it as {nm}(...)")
-        if self.product and nm in ("R", "x"):
-            avail = sorted(k for k in self.names if k.startswith(nm + "_"))
-            raise fail(node, f"{nm} is not defined for a product group; use the per-factor "
-                             f"names ({', '.join(avail) or 'no factor has one'})")
-        fac = _FACTOR_ALIAS.fullmatch(nm) if self.product else None
-        if fac and int(fac.group(2)) < len(self.layouts):
-            k = int(fac.group(2))
-            raise fail(node, f"{nm} is not defined: factor {k} ({self.layouts[k].name}) has no "
-                             f"{'rotation block' if fac.group(1) == 'R' else 'translation'}")
-        if nm in ("R", "x"):
-            raise fail(node, f"{nm} is not defined for this group "
-                             f"({'no rotation block' if nm == 'R' else 'no translation'})")
-        avail = sorted(self.names) + sorted(self.params)
-        raise fail(node, f"unknown name {nm!r}; available names: {', '.join(avail)}")
-
-    def subscript(self, node):
-        val = self.walk(node.value)
-        sl = node.slice
-        idx_nodes = sl.elts if isinstance(sl, ast.Tuple) else [sl]
-        idx = tuple(n.value for n in idx_nodes)
-        shape = _shape(val)
-        if len(idx) != len(shape):
-            want = {0: "a scalar cannot be indexed", 1: "index a vector with one index v[i]",
-                    2: "index a matrix with two indices M[i, j]"}[len(shape)]
-            raise fail(node, f"wrong number of indices for a {_shape_text(shape)}: {want}")
-        for i, s in zip(idx, shape):
-            if i >= s:
-                raise fail(node, f"index {list(idx)} out of range for a {_shape_text(shape)}")
-        return val[idx]
-
-    def call(self, node):
-        fname = node.func.id
-        if fname == "dot":
-            if len(node.args) != 2:
-                raise fail(node, f"dot takes 2 arguments, got {len(node.args)}")
-            return self.dot(node, self.walk(node.args[0]), self.walk(node.args[1]))
-        if len(node.args) != 1:
-            raise fail(node, f"{fname} takes 1 argument, got {len(node.args)}")
-        return self.elementwise(node, FUNCTIONS[fname], [self.walk(node.args[0])], fname)
-
-    def dot(self, node, a, b):
-        sa, sb = _shape(a), _shape(b)
-        if not sa or not sb or sa[-1] != sb[0]:
-            raise fail(node, f"dot: shapes do not match ({_shape_text(sa)} and "
-                             f"{_shape_text(sb)}); inner dimensions must agree")
-        A = a if len(sa) == 2 else a.reshape(1, -1)
-        B = b if len(sb) == 2 else b.reshape(-1, 1)
-        m, k, n = A.shape[0], A.shape[1], B.shape[1]
-        self.charge(node, m * k * n)
-        out = [sp.Add(*[A[i, t] * B[t, j] for t in range(k)]) for i in range(m) for j in range(n)]
-        res = _to_array(out, (m, n))
-        shape = sa[:-1] + sb[1:]
-        return self.checked(node, res.reshape(shape) if shape else res[0, 0])
+_MU_NAME = re.compile(r"mu(_[0-9]+)?")
 
 
 def _final_checks(expr, required, field="lagrangian", what="the Lagrangian") -> bool:
@@ -365,13 +122,52 @@ def parse_lagrangian(text: str, group, parameters: dict):
     return result, xi_syms, g_syms
 
 
-def _as_section_error(e: ModelError) -> ModelError:
-    """The shared parser's errors carry field "lagrangian"; relabel them for the section."""
+def _relabel(e: ModelError, field: str) -> ModelError:
+    """The shared parser's errors carry field "lagrangian"; relabel them with ``field``."""
     if e.field not in (None, "lagrangian"):
         return e
-    out = ModelError(e.message, file=e.file, field=SECTION_FIELD, line=e.line)
+    out = ModelError(e.message, file=e.file, field=field, line=e.line)
     out.expr_line = getattr(e, "expr_line", None)
     return out
+
+
+def _as_section_error(e: ModelError) -> ModelError:
+    return _relabel(e, SECTION_FIELD)
+
+
+def _refuse_mu_parameters(parameters: dict, field: str, user: str) -> None:
+    mu_like = sorted(p for p in parameters if _MU_NAME.fullmatch(p))
+    if mu_like:
+        raise ModelError(f"the parameter {mu_like[0]!r} has the name of the momentum mu that "
+                         f"{user} uses; rename the parameter", field=field)
+
+
+def _parse_scalar(text: str, group, parameters: dict, variables, forbidden, field: str,
+                  what: str):
+    """(result, evaluator, depends): ``text`` walked with ``variables``; a scalar, checked by
+    _final_checks; ``depends`` is True when it contains a variable or a varying entry of g.
+    Every ModelError has ``field`` (no file/line; ``expr_line`` kept)."""
+    try:
+        tree = parse_checked(text)
+        ev = _Evaluator(group, parameters, variables=variables, forbidden=forbidden)
+        try:
+            result = ev.walk(tree.body)
+        except RecursionError:
+            raise ModelError(f"expression too large: nested too deeply (limit {MAX_DEPTH})",
+                             field=field) from None
+        if isinstance(result, np.ndarray):
+            raise ModelError(f"{what} must be a scalar, got shape {result.shape} "
+                             f"(a {_shape_text(result.shape)})", field=field)
+        wanted = set(ev.varying_g)
+        for v in variables:
+            wanted.update(ev.vars[v].flat)
+        try:
+            depends = _final_checks(result, wanted, field, what)
+        except RecursionError:
+            raise ModelError("expression too large: nested too deeply", field=field) from None
+    except ModelError as e:
+        raise _relabel(e, field) from None
+    return result, ev, depends
 
 
 def parse_section(text: str, group, parameters: dict):
@@ -383,36 +179,38 @@ def parse_section(text: str, group, parameters: dict):
     on mu or on an entry of g that varies on the group. Raises ModelError(field="scene.section")
     without file/line (the scene parser adds them; ``expr_line`` as for the Lagrangian).
     """
-    mu_like = sorted(p for p in parameters if p == "mu" or re.fullmatch(r"mu_[0-9]+", p))
-    if mu_like:
-        raise ModelError(f"the parameter {mu_like[0]!r} has the name of the momentum mu that "
-                         "the section uses; rename the parameter", field=SECTION_FIELD)
-    try:
-        tree = parse_checked(text)
-        forbidden = (_XI_NAME, "the section may use mu (the node momentum) and g, not xi; "
-                               "write it in terms of mu, e.g. mu[0]")
-        ev = _Evaluator(group, parameters, variables=("mu",), forbidden=forbidden)
-        try:
-            result = ev.walk(tree.body)
-        except RecursionError:
-            raise ModelError(f"expression too large: nested too deeply (limit {MAX_DEPTH})",
-                             field=SECTION_FIELD) from None
-        if isinstance(result, np.ndarray):
-            raise ModelError(f"the section must be a scalar, got shape {result.shape} "
-                             f"(a {_shape_text(result.shape)})", field=SECTION_FIELD)
-        mu_syms = tuple(ev.vars["mu"].tolist())
-        g_syms = tuple(tuple(row) for row in ev.g.tolist())
-        try:
-            depends = _final_checks(result, set(mu_syms) | ev.varying_g, SECTION_FIELD,
-                                    "the section")
-        except RecursionError:
-            raise ModelError("expression too large: nested too deeply",
-                             field=SECTION_FIELD) from None
-    except ModelError as e:
-        raise _as_section_error(e) from None
+    _refuse_mu_parameters(parameters, SECTION_FIELD, "the section")
+    forbidden = (_XI_NAME, "the section may use mu (the node momentum) and g, not xi; "
+                           "write it in terms of mu, e.g. mu[0]")
+    result, ev, depends = _parse_scalar(text, group, parameters, ("mu",), forbidden,
+                                        SECTION_FIELD, "the section")
     if not depends:
         raise ModelError(f"the section is constant on the group (it is {str(result)[:60]}; no "
                          "mu and no varying entry of g) and would never cross zero; expected an "
                          "expression in mu and/or g, e.g. mu[0] or R[2, 2] - 0.5",
                          field=SECTION_FIELD)
+    mu_syms = tuple(ev.vars["mu"].tolist())
+    g_syms = tuple(tuple(row) for row in ev.g.tolist())
     return result, mu_syms, g_syms
+
+
+def parse_record(text: str, group, parameters: dict, field: str = RECORD_FIELD):
+    """(expr, xi_symbols, mu_symbols, g_symbols) for a recorded expression on ``group``.
+
+    Same grammar, functions and limits as the Lagrangian, with both ``xi`` (symbols xi_k, equal
+    to Model.xi_symbols) and ``mu`` (symbols mu_k, equal to SectionSpec.mu_symbols) defined;
+    g_symbols equal to Model.g_symbols. The result must be a scalar depending on xi, mu or an
+    entry of g that varies on the group. Parameters named mu / mu_k are refused. Raises
+    ModelError(field=field) without file/line (the scene parser adds them).
+    """
+    _refuse_mu_parameters(parameters, field, "a recorded expression")
+    result, ev, depends = _parse_scalar(text, group, parameters, ("xi", "mu"), None, field,
+                                        "a recorded expression")
+    if not depends:
+        raise ModelError(f"the recorded expression is constant (it is {str(result)[:60]}; no xi, "
+                         "no mu and no varying entry of g); expected a scalar expression in xi, "
+                         "mu and/or g, e.g. xi[0], mu[0] or R[2, 2]", field=field)
+    xi_syms = tuple(ev.vars["xi"].tolist())
+    mu_syms = tuple(ev.vars["mu"].tolist())
+    g_syms = tuple(tuple(row) for row in ev.g.tolist())
+    return result, xi_syms, mu_syms, g_syms

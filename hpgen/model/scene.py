@@ -10,24 +10,32 @@ Conventions:
   rotation block has |R^T R - I|max and |det R - 1| <= 1e-10; the affine bottom row, the identity
   block of R<k> and the off-diagonal blocks of a product are exact.
 - Exactly one of ``initial.xi`` / ``initial.mu`` (d finite numbers).
-- ``record``: distinct names from RECORDABLE (default g, mu); ``every``: integer >= 1.
+- ``record``: a list of distinct entries (default g, mu): names from RECORDABLE, or one-key
+  mappings ``{label: "expression"}`` recording a scalar expression in xi, mu and g
+  (hpgen.model.expr.parse_record) under ``label`` ([A-Za-z][A-Za-z0-9_]{0,63}; not a RECORDABLE
+  name, not ``t``, not a Python keyword). Scene.record lists names and labels in file order,
+  Scene.expressions the RecordExpr of the labels. ``every``: integer >= 1.
 - ``section``: optional Poincare section s(g, mu), an expression text parsed like the Lagrangian
   with ``mu`` instead of ``xi`` (hpgen.model.expr.parse_section) into a SectionSpec.
 """
 from __future__ import annotations
 
+import keyword
 import math
+import re
 
 import numpy as np
 
 from ..errors import ModelError
-from .types import Scene, SectionSpec
+from .types import RecordExpr, Scene, SectionSpec
 
 SCENE_KEYS = ("h", "steps", "duration", "initial", "record", "every", "section")
 INITIAL_KEYS = ("g", "xi", "mu")
 RECORDABLE = ("g", "mu", "xi", "energy", "momentum", "defect")
 ON_GROUP_TOL = 1e-10
 MAX_STEPS = 2**31 - 1
+LABEL = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}")
+RESERVED_LABELS = ("t",)
 
 
 def _int(doc, path, v, low, what):
@@ -217,9 +225,71 @@ def _section(doc, text, group, parameters) -> SectionSpec:
     return SectionSpec(text=text, expr=expr, mu_symbols=mu_syms, g_symbols=g_syms)
 
 
+def _record_label(doc, path, label, seen):
+    if not isinstance(label, str) or not LABEL.fullmatch(label):
+        raise doc.error(path, f"the label {str(label)[:70]!r} is not a valid name: expected a letter "
+                              "followed by at most 63 letters, digits or _")
+    if label in RECORDABLE:
+        raise doc.error(path, f"the label {label!r} is a built-in record name; list it as the "
+                              f"plain name {label} or choose another label")
+    if label in RESERVED_LABELS:
+        raise doc.error(path, f"the label {label!r} is reserved (the sample times); choose "
+                              "another label")
+    if keyword.iskeyword(label):
+        raise doc.error(path, f"the label {label!r} is a Python keyword; choose another label")
+    if label in seen:
+        raise doc.error(path, f"{label!r} is listed twice")
+
+
+def _record_expr(doc, path, label, text, group, parameters) -> RecordExpr:
+    from .expr import parse_record
+    from .yamldoc import fmt_path
+    if type(text) in (int, float):
+        raise doc.error(path, f"the recorded expression is the constant {text!r}; expected an "
+                              "expression in xi, mu and/or g as a string, e.g. xi[0] or R[2, 2]")
+    if not isinstance(text, str) or not text.strip():
+        raise doc.error(path, "expected an expression in xi, mu and/or g (and parameters), e.g. "
+                              f"xi[0], mu[0] or R[2, 2], got {_describe(doc, text)}")
+    field = fmt_path(path)
+    try:
+        expr, xi_syms, mu_syms, g_syms = parse_record(text, group, parameters, field)
+    except ModelError as e:
+        raise e.located(doc.file, field, doc.line(path)) from None
+    return RecordExpr(label=label, text=text, expr=expr, xi_symbols=xi_syms, mu_symbols=mu_syms,
+                      g_symbols=g_syms)
+
+
+def _record(doc, rec, group, parameters):
+    """(record names and labels, RecordExpr tuple) from the ``record`` list, in file order."""
+    rpath = ("scene", "record")
+    if not isinstance(rec, list) or not rec:
+        raise doc.error(rpath, f"expected a non-empty list of names from {', '.join(RECORDABLE)} "
+                               f"or {{label: expression}} mappings, got {_describe(doc, rec)}")
+    names, exprs, seen = [], [], set()
+    for i, r in enumerate(rec):
+        if isinstance(r, dict):
+            if len(r) != 1:
+                raise doc.error(rpath + (i,), "expected a mapping with exactly one key, "
+                                              f"{{label: expression}}, got {len(r)} keys"
+                                              + (f" ({', '.join(list(r)[:5])})" if r else ""))
+            (label, text), = r.items()
+            _record_label(doc, rpath + (i, label), label, seen)
+            exprs.append(_record_expr(doc, rpath + (i, label), label, text, group, parameters))
+            r = label
+        elif not isinstance(r, str) or r not in RECORDABLE:
+            raise doc.error(rpath + (i,), f"expected one of {', '.join(RECORDABLE)} or a mapping "
+                                          f"{{label: expression}}, got {_describe(doc, r)}")
+        elif r in seen:
+            raise doc.error(rpath + (i,), f"{r!r} is listed twice")
+        seen.add(r)
+        names.append(r)
+    return tuple(names), tuple(exprs)
+
+
 def parse_scene(doc, raw, group, parameters=None) -> Scene:
     """Validate the scene mapping ``raw`` for ``group``; doc is the loader's located document.
-    ``parameters``: the exact parameter values ({name: int | float | lists}) for the section."""
+    ``parameters``: the exact parameter values ({name: int | float | lists}) for the section
+    and the recorded expressions."""
     raw = doc.mapping(("scene",), raw, SCENE_KEYS)
     if raw.get("h") is None:
         raise doc.error(("scene", "h"), "missing h: expected a step size h > 0")
@@ -236,20 +306,9 @@ def parse_scene(doc, raw, group, parameters=None) -> Scene:
                                f"got {'both' if has_xi else 'neither'}")
     key = "xi" if has_xi else "mu"
     vec = doc.vector(ipath + (key,), init[key], group.d)
-    record = ("g", "mu")
+    record, expressions = ("g", "mu"), ()
     if raw.get("record") is not None:
-        rec = raw["record"]
-        rpath = ("scene", "record")
-        if not isinstance(rec, list) or not rec:
-            raise doc.error(rpath, f"expected a non-empty list of names from "
-                                   f"{', '.join(RECORDABLE)}, got {_describe(doc, rec)}")
-        for i, r in enumerate(rec):
-            if r not in RECORDABLE or not isinstance(r, str):
-                raise doc.error(rpath + (i,), f"expected one of {', '.join(RECORDABLE)}, got "
-                                              f"{_describe(doc, r)}")
-            if rec.index(r) != i:
-                raise doc.error(rpath + (i,), f"{r!r} is listed twice")
-        record = tuple(rec)
+        record, expressions = _record(doc, raw["record"], group, parameters or {})
     every = 1
     if raw.get("every") is not None:
         every = _int(doc, ("scene", "every"), raw["every"], 1, "an integer >= 1")
@@ -258,4 +317,4 @@ def parse_scene(doc, raw, group, parameters=None) -> Scene:
         section = _section(doc, raw["section"], group, parameters or {})
     return Scene(h=h, steps=steps, g0=tuple(tuple(float(x) for x in row) for row in G),
                  xi0=vec if has_xi else None, mu0=vec if has_mu else None,
-                 record=record, every=every, section=section)
+                 record=record, every=every, section=section, expressions=expressions)

@@ -38,10 +38,27 @@ class SectionSpec:
 
 
 @dataclass(frozen=True)
+class RecordExpr:
+    """A user expression recorded at each sample: ``label`` (its array name) and ``text``
+    as written; ``expr`` a sympy scalar in ``xi_symbols`` (xi_0..xi_{d-1}, the same
+    symbols as Model.xi_symbols), ``mu_symbols`` (mu_0..mu_{d-1}, real, as SectionSpec's)
+    and ``g_symbols`` (equal to Model.g_symbols), parameters substituted as for the
+    Lagrangian. Built by hpgen.model.expr.parse_record (whitelist parser)."""
+    label: str
+    text: str
+    expr: Any                      # sympy.Expr
+    xi_symbols: tuple
+    mu_symbols: tuple
+    g_symbols: tuple
+
+
+@dataclass(frozen=True)
 class Scene:
     """What ``hpgen run`` simulates. g0 is an n x n tuple-of-tuples matrix on the group;
     exactly one of xi0 / mu0 is set (tuples of length d); section: the optional Poincare
-    section (SectionSpec) or None."""
+    section (SectionSpec) or None. record: the names to record in file order, built-in names
+    (hpgen.model.scene.RECORDABLE) and the labels of the user expressions; expressions: those
+    expressions (RecordExpr, file order), looked up by label."""
     h: float
     steps: int
     g0: tuple
@@ -50,6 +67,7 @@ class Scene:
     record: tuple[str, ...] = ("g", "mu")
     every: int = 1
     section: SectionSpec | None = None
+    expressions: tuple = ()        # tuple of RecordExpr, in file order
 
 
 @dataclass(frozen=True)

@@ -49,12 +49,16 @@ def _array(x, shape, field, what):
 
 
 def _int(x, field, low):
+    if type(x) is int and x >= low:        # the common case, without the ABC checks
+        return x
     if isinstance(x, bool) or not isinstance(x, numbers.Integral) or x < low:
         raise ModelError(f"expected an integer >= {low}, got {x!r}", field=field)
     return int(x)
 
 
 def _positive(x, field):
+    if type(x) is float and 0.0 < x < math.inf:     # the common case
+        return x
     if isinstance(x, bool) or not isinstance(x, numbers.Real) or not (
             math.isfinite(x) and x > 0):
         raise ModelError(f"expected a finite number > 0, got {x!r}", field=field)
@@ -69,6 +73,7 @@ class Integrator:
         self.meta, self._b = meta, backend
         self.backend = backend.name
         self.n, self.d, self.nz = meta["n"], meta["d"], meta["nz"]
+        self._cond_last = None     # (bytes of the last Hessian checked, its cond) (_cond)
 
     def __repr__(self):
         return f"<hpgen Integrator {self.meta['module']} backend={self.backend}>"
@@ -91,23 +96,42 @@ class Integrator:
 
     def velocity(self, g, mu, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT):
         """xi with legendre(g, xi) = mu: Newton from xi = 0 with the hessian kernel."""
-        gf, mu = self._g(g), self._v(mu, "mu")
-        d = self.d
+        return self._velocity(self._g(g), self._v(mu, "mu"), tol, maxit)
+
+    def _cond(self, Hf, H):
+        """cond(H) of the Hessian H (Hf its flat column-major array), None when H has a
+        non-finite entry (Newton reports those). Kept for the last H by its bytes: l
+        quadratic in xi gives the same H at every Newton iterate, and the decision is a
+        function of H alone."""
+        key = Hf.tobytes()
+        last = self._cond_last
+        if last is not None and last[0] == key:
+            return last[1]
+        cond = None
+        if np.isfinite(H).all():
+            with np.errstate(all="ignore"):
+                cond = float(np.linalg.cond(H)) if H.any() else math.inf
+        self._cond_last = (key, cond)
+        return cond
+
+    def _velocity(self, gf, mu, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT):
+        """velocity from g flat column-major and mu, both checked: newton.newton on
+        F = legendre - mu, J = hessian; every Hessian passes the singular-Legendre check
+        first (_cond)."""
+        d, call = self.d, self._b.call
 
         def fun(xi):
-            F = self._b.call("legendre", gf, xi)[0] - mu
-            H = self._b.call("hessian", gf, xi)[0].reshape(d, d, order="F")
-            if np.isfinite(H).all():
-                with np.errstate(all="ignore"):
-                    cond = float(np.linalg.cond(H)) if H.any() else math.inf
-                if not cond <= COND_MAX:
-                    raise ModelError("the Legendre transform is singular at the initial state "
-                                     f"(cond(d2l/dxi2) = {cond:.3g}); check the kinetic "
-                                     "energy terms of the Lagrangian", field="scene.initial")
+            F = call("legendre", gf, xi)[0] - mu
+            Hf = call("hessian", gf, xi)[0]
+            H = Hf.reshape(d, d, order="F")
+            cond = self._cond(Hf, H)          # None: H has a non-finite entry
+            if cond is not None and not cond <= COND_MAX:
+                raise ModelError("the Legendre transform is singular at the initial state "
+                                 f"(cond(d2l/dxi2) = {cond:.3g}); check the kinetic "
+                                 "energy terms of the Lagrangian", field="scene.initial")
             return F, H
 
-        with np.errstate(all="ignore"):
-            code, xi, it, r = newton.newton(fun, np.zeros(d), tol, maxit)
+        code, xi, it, r = newton.newton(fun, np.zeros(d), tol, maxit)
         if code != newton.OK:
             raise ConvergenceError("inverting the Legendre transform (velocity from momentum): "
                                    + _MESSAGES[code], step=0, time=0.0, residual=r,
@@ -183,17 +207,18 @@ class Integrator:
         if (xi0 is None) == (mu0 is None):
             raise ModelError("give exactly one of xi0 (velocity) and mu0 (momentum)",
                              field="xi0" if xi0 is not None else "mu0")
-        e = self.defect(g0)
+        gf = g0.ravel(order="F")      # g0 checked: the kernels take it as it is
+        e = float(self._b.call("defect", gf)[0][0])
         if not e <= DEFECT_MAX:
             raise ModelError(f"g0 is not on the group (defect {e:.3g} > {DEFECT_MAX:g})",
                              field="initial g")
         if xi0 is not None:
             xi0 = self._v(xi0, "xi0")
-            mu0 = self.legendre(g0, xi0)
+            mu0 = self._b.call("legendre", gf, xi0)[0]
         else:
             mu0 = self._v(mu0, "mu0")
-            xi0 = self.velocity(g0, mu0)
-        return g0.ravel(order="F"), mu0, xi0
+            xi0 = self._velocity(gf, mu0)
+        return gf, mu0, xi0
 
     def _trajectory(self, done, g_rec, p_rec, st, h, every):
         K = done // every + 1
@@ -208,7 +233,10 @@ class Integrator:
         if st["code"] != newton.OK:
             err = _error(st["code"], st["step"], st["step"] * h, st["residual"],
                          st["iterations"])
-        traj = Trajectory(t=t0 + np.arange(K) * every * h, g=g, mu=np.array(p_rec), h=h,
+        # t0 + (k every) h; arange(0, K every, every) is arange(K) * every, and adding
+        # t0 = 0.0 to these non-negative numbers changes no bit
+        t = np.arange(0, K * every, every) * h
+        traj = Trajectory(t=t0 + t if t0 else t, g=g, mu=np.array(p_rec), h=h,
                           every=every, partial=err is not None, error=err,
                           newton_iterations=int(st["total_iterations"]),
                           jacobians=int(st["jacobians"]), integrator=self)
@@ -216,17 +244,34 @@ class Integrator:
             err.partial = traj
         return traj
 
+    def _prepare(self, g0, h, steps, xi0, mu0, every, tol, maxit, simplified, predictor):
+        """The checked arguments of a run and its start: (h, steps, every, options, g0 flat,
+        mu0, Newton start z0 from the guess kernel)."""
+        h = _positive(h, "h")
+        steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
+        opts = self._options(tol, maxit, simplified, predictor)
+        gf, mu0, xi0 = self._initial(g0, xi0, mu0)
+        z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
+        return h, steps, every, opts, gf, mu0, z0
+
+    def _prepare_batch(self, g0, h, steps, xi0, mu0, every, tol, maxit, simplified, predictor):
+        """(h, steps, every, options, starts [(g0 flat, mu0, xi0, z0)]) of an ensemble."""
+        h = _positive(h, "h")
+        steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
+        opts = self._options(tol, maxit, simplified, predictor)
+        hv = np.array([h])
+        starts = [(gf, m, x, self._b.call("guess", x, gf, m, hv)[0])
+                  for gf, m, x in self._batch_starts(g0, xi0, mu0)]
+        return h, steps, every, opts, starts
+
     def simulate(self, g0, h, steps, xi0=None, mu0=None, every=1, tol=newton.DEFAULT_TOL,
                  maxit=newton.DEFAULT_MAXIT, simplified=None, predictor=True) -> Trajectory:
         """Run ``steps`` steps of size h from g0 with initial velocity xi0 or momentum mu0
         (exactly one), recording every ``every`` steps. The C backend runs all steps in one
         call. On a failed step raises ConvergenceError (DomainError for tau) whose
         ``.partial`` is the Trajectory so far (partial=True)."""
-        h = _positive(h, "h")
-        steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
-        opts = self._options(tol, maxit, simplified, predictor)
-        gf, mu0, xi0 = self._initial(g0, xi0, mu0)
-        z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
+        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every, tol,
+                                                           maxit, simplified, predictor)
         done, g_rec, p_rec, st = self._b.simulate(gf, mu0, h, z0, steps, every, opts)
         traj = self._trajectory(done, g_rec, p_rec, st, h, every)
         if traj.error is not None:
@@ -241,12 +286,9 @@ class Integrator:
         ``t`` is global). The states are bitwise those of ``simulate`` (the run, its Newton
         memory and predictor carry over between chunks). A failure raises ConvergenceError /
         DomainError with ``.partial`` the records of the failing chunk."""
-        h = _positive(h, "h")
-        steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
         chunk = _int(chunk, "chunk", 1)
-        opts = self._options(tol, maxit, simplified, predictor)
-        gf, mu0, xi0 = self._initial(g0, xi0, mu0)
-        z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
+        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every, tol,
+                                                           maxit, simplified, predictor)
         run = self._b.start(gf, mu0, z0)
         k, first = 0, True
         while first or k < steps:
@@ -369,15 +411,59 @@ class Integrator:
         is partial with ``.error`` set (nothing is raised)."""
         if self.backend != "c":
             raise ModelError("simulate_batch needs the C backend", field="backend")
-        h = _positive(h, "h")
-        steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
-        opts = self._options(tol, maxit, simplified, predictor)
-        starts = self._batch_starts(g0, xi0, mu0)
-        B = len(starts)
-        hv = np.array([h])
-        z0s = [self._b.call("guess", x, gf, m, hv)[0] for gf, m, x in starts]
+        h, steps, every, opts, starts = self._prepare_batch(g0, h, steps, xi0, mu0, every, tol,
+                                                            maxit, simplified, predictor)
         threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
-        done, g_rec, p_rec, sts = self._b.simulate_batch(
-            [s[0] for s in starts], [s[1] for s in starts], h, z0s, steps, every, opts, threads)
+        gs, ms, _, z0s = zip(*starts) if starts else ((), (), (), ())
+        done, g_rec, p_rec, sts = self._b.simulate_batch(gs, ms, h, z0s, steps, every, opts,
+                                                         threads)
         return [self._trajectory(int(done[b]), g_rec[b], p_rec[b], sts[b], h, every)
-                for b in range(B)]
+                for b in range(len(starts))]
+
+    # ---- scene records: only what record: asks for ------------------------------------
+    @property
+    def record_names(self) -> tuple:
+        """What this module's record row holds (the scene's ``record:`` list, in order)."""
+        return tuple(name for name, _, _ in self.meta["record"])
+
+    def stream_record(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000,
+                      tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
+                      predictor=True):
+        """Like ``record`` in chunks of at most ``chunk`` steps (bounded memory): yields one
+        Records per chunk (the first starts with record 0; ``t`` is global). A failure raises
+        ConvergenceError / DomainError / RecordError with ``.partial`` the failing chunk's
+        records."""
+        from .records import stream_records
+        chunk = _int(chunk, "chunk", 1)
+        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every, tol,
+                                                           maxit, simplified, predictor)
+        yield from stream_records(self, self._b, gf, mu0, z0, h, steps, every, chunk, opts)
+
+    def record(self, g0, h, steps, xi0=None, mu0=None, every=1, tol=newton.DEFAULT_TOL,
+               maxit=newton.DEFAULT_MAXIT, simplified=None, predictor=True):
+        """Run ``steps`` steps keeping only the compiled record row (``record_names``: the
+        scene's g, mu, xi, energy, momentum, defect and expressions) every ``every`` steps;
+        returns a hpgen.runtime.records.Records. The row is evaluated inside the C loop;
+        when neither the step nor the row use g, g is not reconstructed (meta skip). The
+        states are bitwise those of ``simulate``. A failure raises (``.partial`` set)."""
+        chunks = list(self.stream_record(g0, h, steps, xi0, mu0, every, max(steps, 1), tol,
+                                         maxit, simplified, predictor))
+        return chunks[0]
+
+    def record_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None,
+                     tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
+                     predictor=True) -> list:
+        """``record`` for an ensemble (starts as in ``simulate_batch``), in C over ``threads``
+        threads (default: the CPU count); each run's rows are bitwise those of ``record`` on
+        its own. Returns B Records; a failed run's Records is partial with ``.error`` set
+        (nothing is raised)."""
+        from .records import make_records
+        if self.backend != "c":
+            raise ModelError("record_batch needs the C backend", field="backend")
+        h, steps, every, opts, starts = self._prepare_batch(g0, h, steps, xi0, mu0, every, tol,
+                                                            maxit, simplified, predictor)
+        threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
+        gs, ms, _, z0s = zip(*starts) if starts else ((), (), (), ())
+        rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps, every, opts, threads)
+        return [make_records(self, rows[b, :n_rows[b]], sts[b], h, every, 0.0)
+                for b in range(len(starts))]

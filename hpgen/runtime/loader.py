@@ -8,6 +8,7 @@ and c_work {name: {sz_arg, sz_res, sz_iw, sz_w}}.
 from __future__ import annotations
 
 import json
+import math
 import re
 from pathlib import Path
 
@@ -19,7 +20,7 @@ META_FORMAT = 1
 BACKENDS = ("c", "python")
 KERNEL_NAMES = ("residual", "jacobian", "residual_jacobian", "update", "guess", "legendre",
                 "hessian", "energy", "momentum", "defect", "margin", "section", "chart_point",
-                "observe")
+                "observe", "update_p", "velocity_step", "record")
 _SIZES = {"residual": ("nz", "nn", "d", "1", "|", "nz"),
           "jacobian": ("nz", "nn", "d", "1", "|", "nznz"),
           "residual_jacobian": ("nz", "nn", "d", "1", "|", "nz", "nznz"),
@@ -29,7 +30,9 @@ _SIZES = {"residual": ("nz", "nn", "d", "1", "|", "nz"),
           "momentum": ("nn", "d", "|", "d"), "defect": ("nn", "|", "1"),
           "margin": ("nz", "1", "|", "1"), "section": ("nn", "d", "|", "1"),
           "chart_point": ("nz", "nn", "1", "1", "|", "nn"),
-          "observe": ("nn", "d", "|", "d", "1", "d", "1")}
+          "observe": ("nn", "d", "|", "d", "1", "d", "1"),
+          "update_p": ("nz", "nn", "d", "1", "|", "d"),
+          "velocity_step": ("nn", "d", "d", "|", "d"), "record": ("nn", "d", "d", "|", "w")}
 
 
 def read_meta(module_dir) -> dict:
@@ -60,7 +63,11 @@ def read_meta(module_dir) -> dict:
     if meta["backend"] not in BACKENDS:
         raise bad("backend", f"expected one of {BACKENDS}")
     n, d, nz = meta["n"], meta["d"], meta["nz"]
-    size = {"nz": nz, "nn": n * n, "d": d, "dd": d * d, "nznz": nz * nz, "1": 1}
+    w = _record_width(meta.get("record"), n, d, bad)
+    for key in ("step_uses_g", "record_uses_g", "record_uses_xi", "legendre_quadratic"):
+        if not isinstance(meta.get(key), bool):
+            raise bad(key, "expected true or false")
+    size = {"nz": nz, "nn": n * n, "d": d, "dd": d * d, "nznz": nz * nz, "1": 1, "w": w}
     kernels = meta.get("kernels")
     if not isinstance(kernels, dict) or set(kernels) != set(KERNEL_NAMES):
         raise bad("kernels", f"expected the kernels {KERNEL_NAMES}")
@@ -75,6 +82,25 @@ def read_meta(module_dir) -> dict:
         if got != want:
             raise bad(f"kernels.{name}", f"sizes {got} do not match the contract {want}")
     return meta
+
+
+def _record_width(layout, n, d, bad) -> int:
+    """The record row's width from meta "record": [[name, offset, shape], ...] (names distinct
+    identifiers, offsets contiguous from 0, shapes [], [d] or [n, n])."""
+    if not isinstance(layout, list) or not layout:
+        raise bad("record", "expected a non-empty list of [name, offset, shape]")
+    offset, seen = 0, set()
+    for entry in layout:
+        ok = (isinstance(entry, list) and len(entry) == 3 and isinstance(entry[0], str)
+              and re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,63}", entry[0])
+              and entry[0] not in seen and entry[1] == offset
+              and entry[2] in ([], [d], [n, n]))
+        if not ok:
+            raise bad("record", f"entry {entry!r} is not [distinct name, offset {offset}, "
+                                f"shape [] | [{d}] | [{n}, {n}]]")
+        seen.add(entry[0])
+        offset += math.prod(entry[2])
+    return offset
 
 
 def load(path, backend=None, *, cc=None, cflags=None) -> Integrator:

@@ -35,7 +35,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-OK, NO_CONVERGENCE, NONFINITE, DOMAIN = 0, 1, 2, 3
+OK, NO_CONVERGENCE, NONFINITE, DOMAIN, RECORD = 0, 1, 2, 3, 4
 ROUNDOFF_FLOOR = 1e-11
 THETA_MAX = 0.05
 SIMPLIFIED_TOL = 0.01
@@ -155,21 +155,21 @@ class Kernels:
     jacobian are called in turn); update and margin are needed by step_lists only. Holds the
     linear solver for nz (linear_solver)."""
     __slots__ = ("residual", "jacobian", "residual_jacobian", "update", "margin", "linear",
-                 "nz")
+                 "nz", "update_p")
 
     def __init__(self, nz, residual, jacobian, residual_jacobian=None, update=None,
-                 margin=None, linear=None):
+                 margin=None, linear=None, update_p=None):
         self.nz = nz
         self.residual, self.jacobian = residual, jacobian
         self.residual_jacobian = residual_jacobian
-        self.update, self.margin = update, margin
+        self.update, self.margin, self.update_p = update, margin, update_p
         self.linear = linear_solver(nz, linear)
 
     @classmethod
     def from_raw(cls, nz, raw: dict, linear=None) -> "Kernels":
         """linear: the module's LINEAR (printed solver functions) or None."""
         return cls(nz, raw["residual"], raw["jacobian"], raw.get("residual_jacobian"),
-                   raw.get("update"), raw.get("margin"), linear)
+                   raw.get("update"), raw.get("margin"), linear, raw.get("update_p"))
 
 
 def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory):
@@ -246,28 +246,44 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
 
 
 def newton(fun, z, tol=DEFAULT_TOL, maxit=DEFAULT_MAXIT):
-    """Full Newton for F(z) = 0 from z; ``fun(z (m,) array) -> (F (m,), J (m, m))``.
+    """Full Newton for F(z) = 0 from z; ``fun(z (m,) array) -> (F (m,), J (m, m))`` arrays.
 
-    Returns (code, z (m,) array, iterations, last residual inf-norm). ``fun`` may raise; it
-    is not caught here (the callers use that for the singular-Legendre check).
+    The logic of ``solve`` with full Newton and numpy's solve for the update (J dz = F), on
+    arrays from ``fun`` without per-iterate conversions: converged when |dz| <= tol (1 + |z|)
+    or at the round-off floor; NONFINITE on a non-finite F, J or z or a singular J.
+    Returns (code, z (m,) array, iterations, residual inf-norm of the last iterate, NaN
+    before the first). ``fun`` may raise; it is not caught here (the callers use that for
+    the singular-Legendre check).
     """
-    z = np.array(z, dtype=np.float64)
-    m = z.shape[0]
-
-    def both(zz, *_):
-        F, J = fun(np.array(zz, dtype=np.float64))
-        return (np.asarray(F, dtype=np.float64).tolist(),
-                np.asarray(J, dtype=np.float64).ravel(order="F").tolist())
-
-    code, zl, it, r, _ = solve(Kernels(m, None, None, both), z.tolist(), None, None, None,
-                               NewtonOptions(tol, maxit, simplified=False), NewtonMemory())
-    return code, np.array(zl, dtype=np.float64), it, r
+    zl = np.asarray(z, dtype=np.float64).tolist()
+    dprev, F, code, it = _INF, None, NO_CONVERGENCE, maxit
+    with np.errstate(all="ignore"):
+        for k in range(1, maxit + 1):
+            Fa, J = fun(np.array(zl, dtype=np.float64))
+            F, it, code = np.asarray(Fa, dtype=np.float64).tolist(), k, NONFINITE
+            if not (all_finite(F) and np.isfinite(J).all()):
+                break
+            try:
+                dz = np.linalg.solve(J, Fa).tolist()
+            except np.linalg.LinAlgError:
+                break
+            zl = [a - b for a, b in zip(zl, dz)]
+            dn, zn = norm_inf(dz), norm_inf(zl)
+            if not (dn < _INF and zn < _INF):
+                break
+            if (k > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + zn)) or \
+                    dn <= tol * (1.0 + zn):
+                code = OK
+                break
+            code, dprev = NO_CONVERGENCE, dn
+    return code, np.array(zl, dtype=np.float64), it, (_NAN if F is None else norm_inf(F))
 
 
 def step_lists(kern: Kernels, g, p, hv, z, opts: NewtonOptions, memory: NewtonMemory,
-               check_start=True):
+               check_start=True, with_g=True):
     """One step on lists of floats (the C template's hpgen_step_core): margin at the start
-    (check_start), Newton from z, margin at the solution, update.
+    (check_start), Newton from z, margin at the solution, update (with_g False: update_p,
+    and g1 is g).
 
     Returns (code, g1, p1, z, iterations, residual norm, Jacobian evaluations); g1/p1 are
     lists, None on failure.
@@ -285,6 +301,11 @@ def step_lists(kern: Kernels, g, p, hv, z, opts: NewtonOptions, memory: NewtonMe
         return (DOMAIN if m <= 0.0 else code), None, None, z, it, r, jacs
     if not m > 0.0:
         return DOMAIN, None, None, z, it, r, jacs
+    if not with_g:
+        p1 = kern.update_p(z, g, p, hv)[0]
+        if not all_finite(p1):
+            return NONFINITE, None, None, z, it, r, jacs
+        return OK, g, p1, z, it, r, jacs
     g1, p1 = kern.update(z, g, p, hv)
     if not (all_finite(g1) and all_finite(p1)):
         return NONFINITE, None, None, z, it, r, jacs
@@ -333,6 +354,7 @@ class Run:
         self.memory = NewtonMemory()
         self.k = 0
         self.s = None            # section(g_k, p_k) once evaluated (advance_sections)
+        self.g_stale = False     # g is g_0, not g_k (advance_record without g)
 
 
 def new_status() -> dict:
@@ -340,10 +362,11 @@ def new_status() -> dict:
             "jacobians": 0}
 
 
-def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOptions, st):
-    """One step of ``run`` like ``hpgen_run_step`` in C: predictor, step, run moved on success;
-    st's counters updated (iterations, residual, total_iterations, jacobians; code and step on
-    failure). Returns the status code."""
+def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOptions, st,
+              with_g=True):
+    """One step of ``run`` like ``hpgen_run_step`` in C: predictor, step, run moved on success
+    (with_g False: p only, g kept); st's counters updated (iterations, residual,
+    total_iterations, jacobians; code and step on failure). Returns the status code."""
     # start: the polynomial through the last solutions, extrapolated one step (quadratic
     # 3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before)
     if opts.predictor and run.have_prev >= 2:
@@ -355,7 +378,8 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
     first = run.k == 0
     # the first step starts from the crude guess kernel: full Newton
     code, g1, p1, zs, it, r, jacs = step_lists(kern, run.g, run.p, hv, zs,
-                                               full if first else opts, run.memory, first)
+                                               full if first else opts, run.memory, first,
+                                               with_g)
     st["iterations"], st["residual"] = it, r
     st["total_iterations"] += it
     st["jacobians"] += jacs
@@ -376,6 +400,9 @@ def advance(kern: Kernels, run: Run, h, steps, every, opts: NewtonOptions):
     Returns (steps done, records [(g flat, p)] (lists) of the global steps k % every == 0
     reached, status dict with code, step, iterations, total_iterations, residual, jacobians).
     """
+    if run.g_stale:
+        raise ValueError("advance: this run was advanced without its group element "
+                         "(advance_record): start a new run")
     hv = [float(h)]
     st, recs = new_status(), []
     full = NewtonOptions(opts.tol, opts.maxit, False, opts.predictor)
@@ -388,12 +415,78 @@ def advance(kern: Kernels, run: Run, h, steps, every, opts: NewtonOptions):
     return steps, recs, st
 
 
+def velocity(velocity_step, g, p, quadratic) -> tuple:
+    """(code, xi) with legendre(g, xi) = p, like ``hpgen_velocity`` in C: Newton steps
+    velocity_step(g, p, xi) -> [xi1] from xi = 0; one step when ``quadratic``, else until
+    |dxi| <= 1e-14 (1 + |xi|) or the round-off floor, at most 50 steps; RECORD on failure."""
+    xi, dprev = [0.0] * len(p), _INF
+    for it in range(1, 51):
+        x1 = velocity_step(g, p, xi)[0]
+        if not all_finite(x1):
+            return RECORD, x1
+        dn = 0.0
+        for a, b in zip(x1, xi):
+            dx = abs(a - b)
+            if dx > dn:
+                dn = dx
+        xi = x1
+        if quadratic:
+            return OK, xi
+        xn = norm_inf(xi)
+        if dn <= 1e-14 * (1.0 + xn):
+            return OK, xi
+        if it > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + xn):
+            return OK, xi
+        dprev = dn
+    return RECORD, xi
+
+
+def record_row(record, velocity_step, width, g, p, uses_xi, quadratic) -> tuple:
+    """(code, row) like ``hpgen_record_row`` in C (raw kernels record and velocity_step; a
+    velocity that does not converge gives a row of ``width`` NaNs)."""
+    if uses_xi:
+        code, xi = velocity(velocity_step, g, p, quadratic)
+        if code != OK:
+            return RECORD, [_NAN] * width
+    else:
+        xi = [0.0] * len(p)
+    row = record(g, p, xi)[0]
+    return (OK if all_finite(row) else RECORD), row
+
+
+def advance_record(kern: Kernels, row_of, run: Run, h, steps, every, opts: NewtonOptions,
+                   skip_g):
+    """Advance ``run`` like ``hpgen_advance_record`` in C: ``row_of(g, p) -> (code, row)`` at
+    the global steps k % every == 0; skip_g: update_p only (run.g stays g_0, g_stale).
+    Returns (steps done, rows (lists), status dict); a failed row stops the run after its
+    step with code RECORD (the row is kept)."""
+    hv = [float(h)]
+    st, rows = new_status(), []
+    full = NewtonOptions(opts.tol, opts.maxit, False, opts.predictor)
+    if skip_g:
+        run.g_stale = True
+    for n in range(steps):
+        if _run_step(kern, run, hv, opts, full, st, not skip_g) != OK:
+            return n, rows, st
+        if run.k % every == 0:
+            code, row = row_of(run.g, run.p)
+            rows.append(row)
+            if code != OK:
+                st.update(code=RECORD, step=run.k)
+                return n + 1, rows, st
+    st["step"] = run.k
+    return steps, rows, st
+
+
 def advance_sections(kern: Kernels, section, chart_point, run: Run, h, steps, cap,
                      opts: NewtonOptions):
     """Advance ``run`` by up to ``steps`` steps recording the upward crossings of
     section(g, p) = 0, like ``hpgen_advance_sections`` in C (same formulas, same order of
     operations). section(g, p) -> [[s]], chart_point(z, g, hv, [theta]) -> [g_theta] (raw
     kernels). Returns (steps done, records [(k, t, g flat, p)], status dict)."""
+    if run.g_stale:
+        raise ValueError("advance_sections: this run was advanced without its group element "
+                         "(advance_record): start a new run")
     hv = [float(h)]
     st, recs = new_status(), []
     full = NewtonOptions(opts.tol, opts.maxit, False, opts.predictor)

@@ -1,12 +1,13 @@
 """Long runs to disk with bounded memory: ``record_to_npz`` steps a scene in chunks
-(``Integrator.stream``) and writes each chunk's requested records (``Trajectory.observables``
-names: g, mu, xi, energy, momentum, defect; t always) into preallocated ``.npy`` memory maps,
-then packs them into the ``.npz`` that ``Trajectory.save`` would write for the whole run.
+(``Integrator.stream_record``: the compiled record row, evaluated inside the C loop, holds
+only what the scene's ``record:`` asks for: g, mu, xi, energy, momentum, defect, expressions)
+and writes each chunk's arrays (and t) into preallocated ``.npy`` memory maps, then packs them
+into one ``.npz``.
 
 Memory holds one chunk of steps' records (``chunk`` steps, every ``every``-th recorded), never
 the run: a 10^8-step run recorded every 10^3 steps keeps 10^5 rows on disk and at most
-chunk / every rows in memory. The file is identical (same arrays, same bytes per array) to
-``simulate`` + ``observables`` + ``save``: the states are bitwise those of ``simulate``.
+chunk / every rows in memory. The file equals that of ``Integrator.record`` on the whole run
+saved at once (the states are bitwise those of ``simulate``).
 The output appears atomically (temp file + os.replace); a failed step saves the records
 before it with partial=True and re-raises. numpy and the standard library only.
 """
@@ -23,9 +24,10 @@ from ..errors import ConvergenceError
 from .trajectory import npz_path, run_metadata, write_npz
 
 
-def record_to_npz(integ, out, names, g0, h, steps, xi0=None, mu0=None, every=1,
+def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
                   chunk=1_000_000, **newton_kw):
-    """Run and save; returns (path, summary): samples written, energy_max_change
+    """Run and save the module's record row (``integ.record_names``, one array each, and t);
+    returns (path, summary): samples written, energy_max_change
     (max |E - E0|, if energy is recorded) and momentum_max_change (per component, if
     momentum is recorded). On a failed step the records before it are saved (partial=True)
     and the ConvergenceError is re-raised with ``.saved = (path, samples)``."""
@@ -36,14 +38,14 @@ def record_to_npz(integ, out, names, g0, h, steps, xi0=None, mu0=None, every=1,
     summary = {"energy_max_change": None, "momentum_max_change": None}
     try:
         try:
-            for traj in integ.stream(g0=g0, h=h, steps=steps, xi0=xi0, mu0=mu0, every=every,
-                                     chunk=chunk, **newton_kw):
-                n = _append(maps, work, K, n, traj.observables(names), summary)
-                iters += traj.newton_iterations
+            for rec in integ.stream_record(g0=g0, h=h, steps=steps, xi0=xi0, mu0=mu0,
+                                           every=every, chunk=chunk, **newton_kw):
+                n = _append(maps, work, K, n, {"t": rec.t, **rec.arrays}, summary)
+                iters += rec.newton_iterations
         except ConvergenceError as exc:
             if exc.partial is None:
                 raise
-            n = _append(maps, work, K, n, exc.partial.observables(names), summary)
+            n = _append(maps, work, K, n, {"t": exc.partial.t, **exc.partial.arrays}, summary)
             iters += exc.partial.newton_iterations
             error = exc
         arrays = {k: v[:n] for k, v in maps.items()}

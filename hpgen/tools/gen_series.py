@@ -3,12 +3,12 @@
     python -m hpgen.tools.gen_series            # rewrite the data file
     python -m hpgen.tools.gen_series --check    # exit 1 if the committed file is stale
 
-Each base function f(t) of ``hpgen.groups.series`` is even in t; sympy expands it to
-f(t) = sum_k a_k s^k, s = t^2, and the a_k are written as exact (numerator, denominator)
-pairs, so the output is deterministic and independent of the float formatting. The test
-suite regenerates the text in memory and compares it with the committed file
-(tests/unit/test_groups.py), so the data cannot go stale. sympy is only needed here, never
-when hpgen compiles a model.
+Each base function f(u) of ``hpgen.groups.series`` is even in u; sympy expands it to
+f(u) = sum_k a_k x^k, x = u^2 (series evaluates them at the half angle u = t/2, x = s/4),
+and the a_k are written as exact (numerator, denominator) pairs, so the output is
+deterministic and independent of the float formatting. The test suite regenerates the
+text in memory and compares it with the committed file (tests/unit/test_groups.py), so the
+data cannot go stale. sympy is only needed here, never when hpgen compiles a model.
 """
 from __future__ import annotations
 
@@ -16,14 +16,12 @@ import argparse
 import sys
 from pathlib import Path
 
-#: base name -> (sympy expression builder in t, number of coefficients a_0 .. a_{K-1})
-#: K is far more than any Taylor branch uses (see series.SPECS), so derivatives
-#: (k + 1) a_{k + 1} and the accuracy analysis of the truncation have room.
+#: base name -> (sympy expression builder in u, number of coefficients a_0 .. a_{K-1})
+#: K is more than the polynomials use (see series.TERMS), so derivatives (k + 1) a_{k + 1}
+#: and the accuracy analysis of the truncation have room.
 BASES = {
-    "sinc": (lambda sp, t: sp.sin(t) / t, 16),
     "cosc": (lambda sp, t: (1 - sp.cos(t)) / t**2, 16),
     "sinc3": (lambda sp, t: (t - sp.sin(t)) / t**3, 16),
-    "dexpinv_c": (lambda sp, t: (1 - (t / 2) * sp.cot(t / 2)) / t**2, 20),
 }
 
 DATA_PATH = Path(__file__).resolve().parents[1] / "groups" / "series_data.py"
@@ -31,10 +29,11 @@ DATA_PATH = Path(__file__).resolve().parents[1] / "groups" / "series_data.py"
 _HEADER = '''"""Exact Taylor coefficients of the series functions (generated, do not edit).
 
 Written by ``python -m hpgen.tools.gen_series`` (sympy). COEFFICIENTS[base][k] = (p, q) means
-a_k = p / q in f(t) = sum_k a_k s^k, s = t^2, for the base functions
+a_k = p / q in f(u) = sum_k a_k x^k, x = u^2, for the base functions
 
-    sinc = sin t / t,  cosc = (1 - cos t) / t^2,  sinc3 = (t - sin t) / t^3,
-    dexpinv_c = (1 - (t/2) cot(t/2)) / t^2.
+    cosc = (1 - cos u) / u^2,  sinc3 = (u - sin u) / u^3
+
+(hpgen.groups.series evaluates them at the half angle u = t/2 of the chart argument).
 """
 
 COEFFICIENTS = {
@@ -60,36 +59,38 @@ def base_coefficients(name: str) -> tuple[tuple[int, int], ...]:
     return tuple(out)
 
 
-#: allowed Taylor tail at s = S0, absolute, after multiplying by the matrix factor (WEIGHTS)
+#: allowed truncation tail at t = series.T_MAX, absolute, after multiplying by the largest
+#: matrix factor the base reaches (series.WEIGHTS)
 TAIL_TOL = 2.0**-54
 
 
-def required_terms(name: str, s0: float | None = None, tol: float = TAIL_TOL) -> int:
-    """Fewest Taylor terms N of series.SPECS[name] with, at s = s0 (default series.S0),
-    t = sqrt(s0) and w = series.WEIGHTS[name](t):
+def required_terms(name: str, t_max: float | None = None, tol: float = TAIL_TOL) -> int:
+    """Fewest terms N of the base polynomial series.TERMS[name] with, at the half angle of
+    t = t_max (default series.T_MAX), x = t^2/4 and w = series.WEIGHTS[name](t):
 
-        w * sum_{k >= N} |a_k| s0^k <= tol                    (value of the matrix)
-        w * 2 t * sum_{k >= N} k |a_k| s0^(k - 1) <= tol      (its first derivative, unit y)
+        w * sum_{k >= N} |a_k| x^k <= tol               (value, in the matrices)
+        w * sum_{k >= N} k |a_k| x^k <= tol             (x d/dx: first derivatives; along a
+                                                         unit direction d/dt = (t/2) d/dx,
+                                                         and t/2 <= x for t >= 2)
 
-    (exact rational arithmetic on series_data; for s < s0 the tails only shrink)."""
-    import math
+    (exact rational arithmetic on series_data; for t < t_max the tails only shrink)."""
     from fractions import Fraction
 
     from hpgen.groups import series
 
-    s0 = series.S0 if s0 is None else s0
+    t = series.T_MAX if t_max is None else t_max
     a = series.exact_coefficients(name)
-    s, t = Fraction(s0), math.sqrt(s0)
+    x = Fraction(t * t / 4)
     w = series.WEIGHTS[name](t)
 
     def ok(n):
-        tail = sum(abs(c) * s**k for k, c in enumerate(a) if k >= n)
-        dtail = sum(k * abs(c) * s**(k - 1) for k, c in enumerate(a) if k >= n)
-        return float(tail) * w <= tol and float(dtail) * 2 * t * w <= tol
+        tail = sum(abs(c) * x**k for k, c in enumerate(a) if k >= n)
+        dtail = sum(k * abs(c) * x**k for k, c in enumerate(a) if k >= n)
+        return float(tail) * w <= tol and float(dtail) * w <= tol
 
     n = len(a)
     if not ok(n - 1):
-        raise RuntimeError(f"{name}: series_data is too short for s0 = {s0}")
+        raise RuntimeError(f"{name}: series_data is too short for t_max = {t}")
     while n > 1 and ok(n - 1):
         n -= 1
     return n

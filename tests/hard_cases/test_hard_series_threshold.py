@@ -1,7 +1,8 @@
-"""Hard case 3: xi exactly 0, and a tau argument exactly on the Taylor/exact branch point of
-exp and dexp^{-1} (hpgen/groups/series.py: one threshold S0 = 1.0 on s = |omega|^2 for every
-function; s < S0 takes the Taylor polynomial, s >= S0 the closed form), on SO3 and SE3, with
-the C and the Python backends.
+"""Hard case 3: xi exactly 0, and a tau argument exactly at s = |omega|^2 = S0 = 1.0, where
+exp and dexp^{-1} used to switch from a Taylor polynomial to the closed form (hpgen/groups/
+series.py is now branch-free: half-angle polynomials on the whole chart domain; the points
+are kept so that any future switch there must stay continuous), on SO3 and SE3, with the C
+and the Python backends.
 
 Models (all tau = exp), chosen so that every place where the chart's series enter is hit:
 - SO3 reduced:  free rigid body, stormer-verlet/exp/truncated (unknown Xi; tau argument
@@ -23,8 +24,8 @@ Pass criteria:
 - every kernel output (residual, jacobian, update, margin) is finite at xi = 0 and at the
   three points around S0;
 - continuity across S0: outputs at s = S0 - 1.8e-15, S0 and S0 + 1.8e-15 differ by at most
-  1e-13 of their size (the inputs differ by 1e-15; both branches agree to 2^-54 by design,
-  series.py) -- for the residual, the Jacobian and the update alike, since Newton uses the
+  1e-13 of their size (the inputs differ by 1e-15; the polynomials are accurate to 2^-54
+  there, series.py) -- for the residual, the Jacobian and the update alike, since Newton uses the
   Jacobian and the exact RKMK residual contains the series' derivatives;
 - reduced steps against an independent dexp^{-1} = phi_1(ad_x)^{-1} (scipy expm, no
   branch): residual, update to 1e-14 relative, Jacobian against the complex-step

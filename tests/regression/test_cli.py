@@ -1,6 +1,7 @@
 """The command line on the shipped examples: compile, run, list."""
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 
@@ -41,6 +42,29 @@ def test_run_scene_saves_requested_records(tmp_path):
     # vertical spatial momentum e3.(R p) is the heavy top's conserved component
     assert np.ptp(data["momentum"][:, 2]) < 1e-12 * np.abs(data["mu"]).max()
     assert "energy error" in out.stdout
+
+
+def test_run_scene_with_record_expressions(tmp_path):
+    # the row compiled into the loop: only what record: lists is saved, labels included
+    text = re.sub(r"(?m)^  record: .*$", '  record: [energy, {spin: "xi[2]"}, {p0: "mu[0]"}]',
+                  (EXAMPLES / "free_rigid_body.yaml").read_text())
+    model = tmp_path / "body.yaml"
+    model.write_text(text)
+    out = hpgen("run", model, "--out", tmp_path / "body.npz", "--steps", "100",
+                "--cache-dir", tmp_path / "cache")
+    assert out.returncode == 0, out.stderr
+    data = np.load(tmp_path / "body.npz")
+    assert {"t", "energy", "spin", "p0"} <= set(data.files)
+    assert not {"g", "mu", "xi", "momentum"} & set(data.files)
+    assert data["spin"].shape == data["p0"].shape == (101,)
+    import hpgen as api
+    from hpgen.model import load_model
+    sc = load_model(model).scene
+    rec = api.compile(model, cache_dir=tmp_path / "cache").record(
+        sc.g0, sc.h, 100, mu0=sc.mu0, every=sc.every)
+    for name in ("t", "energy", "spin", "p0"):
+        assert np.array_equal(data[name], rec.t if name == "t" else rec[name]), name
+    assert data["p0"][0] == sc.mu0[0]
 
 
 def test_bad_option_exits_2_with_one_line(tmp_path):

@@ -4,7 +4,8 @@ Free rigid body on SO(3), Cayley Euler-Poincare step, unknown z = xi (nz = 3):
   F(z) = (dcay^{-1}_{hz})^T I z - p,   dcay^{-1}_x = 1 - x^/2 + x x^T/4
   g1 = g cay(h z),  cay(x) = 1 + 4/(4 + |x|^2) (x^ + x^ x^/2),  p1 = (dcay^{-1}_{-hz})^T I z
   legendre = I xi, hessian = diag(I) (a sparse output on purpose), energy = xi.I xi/2,
-  momentum = g p, defect = max|g^T g - 1|, margin = 1 (or a callable(z, h)), guess = xi.
+  momentum = g p, defect = max|g^T g - 1|, margin = 1 (or a callable(z, h)), guess = xi,
+  update_p = p1, velocity_step = xi - (I xi - p)/I, record row = (g, mu, energy).
 """
 from __future__ import annotations
 
@@ -68,12 +69,22 @@ def toy_step(margin=None, name="free_rigid_body", inertia=INERTIA) -> DiscreteSt
                     [p / inertia, ca.dot(p, p / inertia) / 2, ca.mtimes(Gx, p),
                      ca.mmax(ca.fabs(ca.mtimes(Gx.T, Gx) - ca.SX.eye(3)))],
                     ("xi", "E", "m", "e")),
+        "update_p": ((z, g, p, h), ("z", "g", "p", "h"), [ca.mtimes(dcayinv(-h * z).T, Iz)],
+                     ("p1",)),
+        "velocity_step": ((g, p, xi), ("g", "p", "xi"), [xi - (inertia * xi - p) / inertia],
+                          ("xi1",)),
+        # record: (g, mu, energy)
+        "record": ((g, p, xi), ("g", "p", "xi"), [ca.vertcat(g, p, ca.dot(xi, inertia * xi) / 2)],
+                   ("row",)),
     }
     kernels = tuple(Kernel(k, ca.Function(k, list(a), outs, list(an), list(on)), an, on)
                     for k, (a, an, outs, on) in defs.items())
     return DiscreteStep(model_name=name, group_name="SO3", n=3, d=3, nz=3,
                         tableau_name="euler-poincare", tableau_order=2, tau="cay",
-                        rkmk="exact", reduced=True, unknowns=(("xi", 0, 3),), kernels=kernels)
+                        rkmk="exact", reduced=True, unknowns=(("xi", 0, 3),), kernels=kernels,
+                        legendre_quadratic=True,
+                        record_layout=(("g", 0, (3, 3)), ("mu", 9, (3,)), ("energy", 12, ())),
+                        step_uses_g=False, record_uses_g=True, record_uses_xi=True)
 
 
 def toy_info(module="toy_rb", backend="c", **kw) -> dict:

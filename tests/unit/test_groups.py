@@ -2,7 +2,8 @@
 
 References are independent of the closed forms: scipy expm/logm, finite differences and casadi
 AD of tau (right-trivialized: dtau_x(y) = vee(D tau(x)[y] tau(x)^{-1}), Definition def:dtau),
-the Bernoulli series of eq:dexp, and 50-digit mpmath for the series functions.
+the Bernoulli series of eq:dexp, and 50-digit mpmath for the series functions
+(more in tests/unit/test_maps_series.py).
 """
 from __future__ import annotations
 
@@ -189,22 +190,25 @@ def test_first_order_expansion_of_inverse_chart(spec, kind):
         assert residuals[0] / 200 < residuals[1] < residuals[0] / 50, residuals
 
 
+#: rotation sizes |w| for the NaN check: the former series branch point 1 (where the hard
+#: cases put chart arguments) on both sides, the exp chart's domain bound pi (the series'
+#: accuracy bound) and far outside it (the polynomials stay finite)
+_SPECIAL_NORMS = (1e-300, np.nextafter(1.0, 0.0), 1.0, math.pi, 10.0, 1e3)
+
+
 def _threshold_points(spec, kind):
-    """x = 0 and x whose rotation part has |w|^2 exactly equal to each series threshold s0."""
+    """x = 0 and x whose rotation part has |w| exactly each of _SPECIAL_NORMS."""
     G = _group(spec)
     pts = [np.zeros(G.d)]
     if kind == "skew":
         return pts + [0.5 * np.ones(G.d) / math.sqrt(G.d)]
-    for s0 in sorted({series.threshold(n) for n in series.SPECS}):
-        r = math.sqrt(s0)
-        assert r * r == s0  # thresholds are squares of doubles: |w|^2 == s0 exactly
-        for below in (False, True):
-            x = np.linspace(0.1, 0.6, G.d)  # translation parts stay generic
-            for L in G.factors:
-                if L.name in ("SO2", "SO3", "SE2", "SE3"):
-                    x[L.off:L.off + (3 if L.name in ("SO3", "SE3") else 1)] = 0.0
-                    x[L.off] = np.nextafter(r, 0.0) if below else r
-            pts.append(x)
+    for r in _SPECIAL_NORMS:
+        x = np.linspace(0.1, 0.6, G.d)  # translation parts stay generic
+        for L in G.factors:
+            if L.name in ("SO2", "SO3", "SE2", "SE3"):
+                x[L.off:L.off + (3 if L.name in ("SO3", "SE3") else 1)] = 0.0
+                x[L.off] = r
+        pts.append(x)
     return pts
 
 
@@ -216,40 +220,52 @@ def test_no_nan_in_maps_and_two_derivatives(spec, kind):
             assert np.all(np.isfinite(out)), (spec, kind, x)
 
 
-def test_series_functions_against_mpmath_and_between_branches():
-    """Each function against mpmath, and its two branches against each other around S0.
+#: size of the matrix factor each series function multiplies in the maps, |v| = 1
+_FACTOR = {
+    "sinc": lambda t: max(1.0, t),      # W in exp; v in the se3 translation
+    "cosc": lambda t: max(1.0, t * t),  # W^2 in exp, W in dexp, V in se3 dexp, w x v
+    "sinc3": lambda t: 2 * t * t,       # W^2, WV + VW
+    "dexpinv_c": lambda t: 2 * t * t,   # W^2, WV + VW
+    "d_cosc": lambda t: 2 * t * t,      # 2 (w.v) W
+    "d_sinc3": lambda t: 2 * t**3,      # 2 (w.v) W^2
+    "d_dexpinv_c": lambda t: 2 * t**3,  # 2 (w.v) W^2
+}
 
-    The maps need absolute accuracy of the matrices, so the error of f is weighted by the size
-    of the factor it multiplies there (series.WEIGHTS, |v| = 1; see the series docstring);
-    far below S0 the Taylor branch is also accurate relative to f."""
-    t = mp.mpf
-    exact = {
+
+def _mp_series_function(name):
+    """name -> f(s) in mpmath (closed forms; d_* by mpmath's numerical derivative)."""
+    base = {
         "sinc": lambda s: mp.sin(mp.sqrt(s)) / mp.sqrt(s),
         "cosc": lambda s: (1 - mp.cos(mp.sqrt(s))) / s,
-        "sinc3": lambda s: (mp.sqrt(s) - mp.sin(mp.sqrt(s))) / s**t(1.5),
+        "sinc3": lambda s: (mp.sqrt(s) - mp.sin(mp.sqrt(s))) / s**mp.mpf(1.5),
         "dexpinv_c": lambda s: (1 - mp.sqrt(s) / 2 * mp.cot(mp.sqrt(s) / 2)) / s,
     }
+    if name in base:
+        return base[name]
+    return lambda s, b=base[name[2:]]: mp.diff(b, s)
+
+
+def test_series_functions_against_mpmath():
+    """Each function against mpmath on the accuracy domain |w| <= pi (series.T_MAX).
+
+    The maps need absolute accuracy of the matrices, so the error of f is weighted by the size
+    of the factor it multiplies there (_FACTOR, |v| = 1); for s <= 0.2 each function is also
+    accurate relative to itself. At s = 0 the value functions are their exact limits."""
     S = ca.SX.sym("s")
-    for name, spec in series.SPECS.items():
-        fn = ca.Function("f", [S], [series.evaluate(name, S), series.taylor(name, S),
-                                    series.exact(name, S)])
-        base = exact[spec.base]
-        truth = (lambda s, b=base: b(s)) if spec.deriv == 0 else \
-            (lambda s, b=base: mp.diff(b, s))
-        s0 = series.threshold(name)
-        near = [s0 * (1 - 1e-3), np.nextafter(s0, 0), s0, np.nextafter(s0, 1e9), s0 * (1 + 1e-3)]
-        for s in [1e-20, 1e-9, 0.01, 0.2] + near + [1.5 * s0, 4.0, 9.0]:
-            val, tay, ex = (float(v) for v in fn(s))
+    fn = ca.Function("f", [S], [series.evaluate(name, S) for name in series.NAMES])
+    for s in [1e-20, 1e-9, 0.01, 0.2, np.nextafter(1.0, 0), 1.0, np.nextafter(1.0, 2), 2.25,
+              4.0, 9.0, np.nextafter(math.pi**2, 0), math.pi**2]:
+        vals = [float(v) for v in fn(s)]
+        for name, val in zip(series.NAMES, vals):
             with mp.workdps(120):  # enough digits for the cancellation at s = 1e-20
-                ref = float(truth(mp.mpf(s)))
-            w = series.WEIGHTS[name](math.sqrt(s))
+                ref = float(_mp_series_function(name)(mp.mpf(s)))
+            w = _FACTOR[name](math.sqrt(s))
             assert abs(val - ref) * w <= 8e-16, (name, s, val, ref)
             if s <= 0.2:
                 assert abs(val - ref) <= 1.5e-15 * abs(ref), (name, s, val, ref)
-            if s in near:  # both branches are accurate on both sides of s0
-                assert abs(tay - ex) * w <= 8e-16, (name, s, tay, ex)
-        assert float(fn(0.0)[0]) == series.coefficients(name)[0]
-        assert float(fn(1e-300)[0]) == series.coefficients(name)[0]
+    limits = [1.0, 0.5, 1 / 6, 1 / 12]
+    for s in (0.0, 1e-300):
+        assert [float(v) for v in fn(s)][:4] == limits
 
 
 def test_series_data_is_up_to_date():
@@ -262,9 +278,9 @@ def test_series_data_is_up_to_date():
 def test_series_terms_are_the_fewest_meeting_the_matrix_tolerance():
     from hpgen.tools.gen_series import required_terms
 
-    for name, spec in series.SPECS.items():
-        assert spec.terms == required_terms(name), (name, spec.terms, required_terms(name))
-    assert len({series.threshold(n) for n in series.SPECS}) == 1  # one branch per map
+    for name, terms in series.TERMS.items():
+        assert terms == required_terms(name), (name, terms, required_terms(name))
+    assert series.T_MAX == math.pi  # the exp chart's domain (maps._exp_margin)
 
 
 def test_series_import_does_not_need_sympy():
@@ -299,19 +315,19 @@ def _mp_exp_maps(spec, x):
 @pytest.mark.parametrize("spec", ["SO3", "SE3"])
 def test_exp_chart_matrices_and_derivatives_against_mpmath(spec):
     """Matrix-level accuracy of exp, dexp^{-1} and dexp and of their first directional
-    derivatives (casadi AD, as the derive stage uses them) for |w| in [0, 3], |v| = 1, on both
-    sides of the series branch point: max abs error <= 1e-15 max(1, max abs entry)."""
+    derivatives (casadi AD, as the derive stage uses them) for |w| in [0, pi] (the series'
+    accuracy domain, series.T_MAX), |v| = 1, also around |w| = 1 where the hard cases put
+    chart arguments: max abs error <= 1e-15 max(1, max abs entry)."""
     F = _funcs(spec, "exp")
     G = F["G"]
     x, y = ca.SX.sym("x", G.d), ca.SX.sym("y", G.d)
     Ms = [G.tau("exp", x), G.dtau_inv("exp", x), G.dtau("exp", x)]
     fn = ca.Function("f", [x, y], Ms + [ca.jtimes(ca.vec(M), x, y) for M in Ms])
     rng = np.random.default_rng(11)
-    r0 = math.sqrt(series.threshold("sinc"))
     h = mp.mpf(10)**-20
     with mp.workdps(50):
-        for r in (0.0, 1e-3, 0.3, np.nextafter(r0, 0), r0, np.nextafter(r0, 9), 1.01 * r0, 1.5,
-                  3.0):
+        for r in (0.0, 1e-3, 0.3, np.nextafter(1.0, 0), 1.0, np.nextafter(1.0, 9), 1.01, 1.5,
+                  3.0, series.T_MAX):
             for _ in range(2):
                 w = rng.normal(size=3)
                 w *= r / np.linalg.norm(w)
@@ -335,17 +351,15 @@ def test_exp_chart_matrices_and_derivatives_against_mpmath(spec):
                         assert err <= 1e-15 * scale, (spec, k, r, float(err))
 
 
-def test_series_branches_finite_with_two_derivatives():
-    """Each branch on its own (not only the if_else) is NaN-free at s = 0 and s = s0."""
+def test_series_functions_finite_with_two_derivatives():
+    """Every function and its first two s-derivatives are finite at s = 0, inside and far
+    outside the accuracy domain (no branch: nothing can be NaN * 0)."""
     S = ca.SX.sym("s")
-    for name, spec in series.SPECS.items():
-        _, lo, hi = series.branches(name, S)
-        outs = [lo, hi]
-        outs += [ca.jacobian(o, S) for o in outs]
-        outs += [ca.jacobian(o, S) for o in outs[2:]]
-        fn = ca.Function("b", [S], outs)
-        s0 = series.threshold(name)
-        for s in (0.0, 1e-300, np.nextafter(s0, 0), s0, 2 * s0):
+    for name in series.NAMES:
+        f = series.evaluate(name, S)
+        d1 = ca.jacobian(f, S)
+        fn = ca.Function("b", [S], [f, d1, ca.jacobian(d1, S)])
+        for s in (0.0, 1e-300, np.nextafter(1.0, 0), 1.0, math.pi**2, 100.0, 1e6):
             assert all(np.isfinite(float(v)) for v in fn(s)), (name, s)
 
 

@@ -1,0 +1,117 @@
+"""Runs that keep only what the scene's ``record:`` list asks for (Integrator.record).
+
+The C loop (``hpgen_advance_record``) evaluates the compiled record row (kernel ``record``:
+g, mu, xi, energy, momentum, defect and user expressions, in the scene's order; layout in
+meta.json "record") every ``every`` steps and keeps nothing else; when neither the step nor
+the row use g, the group element is not reconstructed at all (meta step_uses_g /
+record_uses_g). Record k is the state after step k*every, at t_k = k*every*h; record 0 is the
+initial state. The Python backend runs the same loop on lists (hpgen.runtime.newton).
+numpy and the standard library only.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..errors import RecordError
+from . import newton
+
+
+@dataclass(frozen=True, eq=False)
+class Records:
+    """The recorded samples of a run: ``t`` (K,) and one array per record name (``names``, the
+    scene's order): g (K, n, n), mu / xi / momentum (K, d), energy / defect / expressions
+    (K,). ``arrays`` maps names to arrays; ``records[name]`` is the same. partial / error as
+    for Trajectory."""
+    t: np.ndarray
+    arrays: dict
+    h: float
+    every: int
+    partial: bool = False
+    error: Any = None
+    newton_iterations: int = 0
+    jacobians: int = 0
+
+    def __post_init__(self):
+        for a in (self.t, *self.arrays.values()):
+            a.flags.writeable = False
+
+    @property
+    def names(self) -> tuple:
+        return tuple(self.arrays)
+
+    def __getitem__(self, name) -> np.ndarray:
+        return self.arrays[name]
+
+    def __len__(self) -> int:
+        return len(self.t)
+
+
+def split_rows(rows, layout, n) -> dict:
+    """{name: array} from record rows (K, W) and meta "record" [[name, offset, shape]]; g
+    rows are column-major n*n blocks, returned as (K, n, n) matrices."""
+    rows = np.asarray(rows, dtype=np.float64)
+    K, out = len(rows), {}
+    for name, off, shape in layout:
+        width = int(np.prod(shape))
+        block = rows[:, off:off + width]
+        if list(shape) == [n, n]:
+            out[name] = np.ascontiguousarray(block.reshape(K, n, n).transpose(0, 2, 1))
+        elif shape:
+            out[name] = np.array(block)
+        else:
+            out[name] = np.array(block[:, 0])
+    return out
+
+
+def _not_finite(row, layout) -> list:
+    return [name for name, off, shape in layout
+            if not np.isfinite(row[off:off + int(np.prod(shape))]).all()]
+
+
+def make_records(integ, rows, st, h, every, t0) -> Records:
+    """Records of flat rows starting at time t0; error set (partial) when st failed."""
+    layout = integ.meta["record"]
+    err = None
+    if st["code"] == newton.RECORD:
+        bad = _not_finite(rows[-1], layout) if len(rows) else []
+        err = RecordError(f"the recorded value(s) {', '.join(bad) or '?'} are not finite "
+                          "(or the velocity xi behind them did not converge); check where "
+                          "the record expressions are defined", step=int(st["step"]),
+                          time=float(st["step"]) * h, names=bad)
+    elif st["code"] != newton.OK:
+        from .integrator import _error
+        err = _error(st["code"], st["step"], st["step"] * h, st["residual"], st["iterations"])
+    rec = Records(t=t0 + np.arange(len(rows)) * every * h,
+                  arrays=split_rows(rows, layout, integ.n), h=h, every=every,
+                  partial=err is not None, error=err,
+                  newton_iterations=int(st["total_iterations"]), jacobians=int(st["jacobians"]))
+    if err is not None:
+        err.partial = rec
+    return rec
+
+
+def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts):
+    """Yield Records per chunk of at most ``chunk`` steps (the first starts with record 0,
+    the initial state); raises the chunk's error (with .partial) on a failure."""
+    code, row0 = backend.record(gf, mu0)
+    if code != newton.OK:
+        rec = make_records(integ, row0.reshape(1, -1), {**newton.new_status(), "code": code},
+                           h, every, 0.0)
+        raise rec.error
+    run = backend.start(gf, mu0, z0)
+    k, first = 0, True
+    while first or k < steps:
+        todo = min(chunk, steps - k)
+        done, rows, st = backend.advance_record(run, h, todo, every, opts)
+        if first:
+            rows = np.concatenate([row0.reshape(1, -1), rows])
+        t0 = (k // every + (0 if first else 1)) * every * h
+        rec = make_records(integ, rows, st, h, every, t0)
+        if rec.error is not None:
+            raise rec.error
+        yield rec
+        k += done
+        first = False

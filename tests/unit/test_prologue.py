@@ -1,0 +1,362 @@
+"""simulate's Python prologue (argument checks, defect of g0, Legendre transform or its inverse,
+guess) and the C backend's kernel calls: the fast paths give bitwise the results of the
+straightforward code they replace, and keep every check.
+
+- Integrator.velocity runs newton.newton (full Newton on arrays, no per-iterate conversions)
+  for F = legendre - mu, J = hessian and keeps the singular-Legendre decision of the last
+  Hessian: compared here with the reference (the generic list-based Newton loop newton.solve,
+  with np.linalg.cond at every iterate) on
+  random states of compiled models, both backends, and on scripted kernels reaching every
+  branch (non-finite values, exactly singular or ill-conditioned Hessians, no convergence).
+- CBackend.call copies the arguments into per-thread buffers of fixed address and copies the
+  outputs out: nothing returned aliases them or an earlier result; bad arguments fail as before.
+- CBackend.simulate writes step 0 and the steps into one pair of arrays: bitwise the generic
+  start + advance + concatenate (_Backend.simulate), failures included.
+No timing here (see the report of the change for the figures).
+"""
+from __future__ import annotations
+
+import math
+import threading
+
+import numpy as np
+import pytest
+
+from conftest import FREE_BODY, HEAVY_TOP, SE3_BODY
+from hpgen.errors import ConvergenceError, ModelError
+from hpgen.runtime import backends, newton
+from hpgen.runtime.integrator import COND_MAX, Integrator
+
+from _toy_step import integrator as toy_integrator
+
+#: l not quadratic in xi and d2l/dxi2 depending on g: several Newton iterates, a new Hessian
+#: at each (the cond kept for the last Hessian must not carry over)
+QUARTIC = """
+name: quartic
+group: SO3
+lagrangian: 0.5*((2 + R[2,2])*xi[0]**2 + xi[1]**2 + 0.7*xi[2]**2) + 0.05*xi[0]**4 + 0.02*xi[1]**2*xi[2]**2 - R[2,2]
+"""
+MODELS = {"heavy_top": (HEAVY_TOP, dict(tableau="gauss2", tau="exp", rkmk="exact")),
+          "free_body": (FREE_BODY, dict(tableau="gauss2", tau="cay", rkmk="exact")),
+          "se3_body": (SE3_BODY, dict(tableau="stormer-verlet", tau="cay", rkmk="truncated")),
+          "quartic": (QUARTIC, dict(tableau="stormer-verlet", tau="cay", rkmk="truncated"))}
+
+
+def reference_newton(fun, z, tol, maxit):
+    """newton.newton as it was: the generic Newton loop (newton.solve, full Newton, numpy's
+    solver) with list conversions at every iterate: an independent reference."""
+    z = np.array(z, dtype=np.float64)
+
+    def both(zz, *_):
+        F, J = fun(np.array(zz, dtype=np.float64))
+        return (np.asarray(F, dtype=np.float64).tolist(),
+                np.asarray(J, dtype=np.float64).ravel(order="F").tolist())
+
+    code, zl, it, r, _ = newton.solve(newton.Kernels(len(z), None, None, both), z.tolist(),
+                                      None, None, None,
+                                      newton.NewtonOptions(tol, maxit, simplified=False),
+                                      newton.NewtonMemory())
+    return code, np.array(zl, dtype=np.float64), it, r
+
+
+def reference_velocity(integ, g, mu, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT):
+    """Integrator.velocity as it was: the generic Newton loop, np.linalg.cond of every
+    Hessian."""
+    gf, mu = integ._g(g), integ._v(mu, "mu")
+    d = integ.d
+
+    def fun(xi):
+        F = integ._b.call("legendre", gf, xi)[0] - mu
+        H = integ._b.call("hessian", gf, xi)[0].reshape(d, d, order="F")
+        if np.isfinite(H).all():
+            with np.errstate(all="ignore"):
+                cond = float(np.linalg.cond(H)) if H.any() else math.inf
+            if not cond <= COND_MAX:
+                raise ModelError("the Legendre transform is singular at the initial state "
+                                 f"(cond(d2l/dxi2) = {cond:.3g}); check the kinetic "
+                                 "energy terms of the Lagrangian", field="scene.initial")
+        return F, H
+
+    with np.errstate(all="ignore"):
+        code, xi, it, r = reference_newton(fun, np.zeros(d), tol, maxit)
+    if code != newton.OK:
+        raise ConvergenceError("inverting the Legendre transform (velocity from momentum): "
+                               + {newton.NO_CONVERGENCE: "Newton did not converge",
+                                  newton.NONFINITE: "a non-finite value (or a singular "
+                                  "Jacobian) appeared"}[code], step=0, time=0.0, residual=r,
+                               iterations=it)
+    return xi
+
+
+def outcome(fn, *args, **kw):
+    """('ok', bytes of the result) or (exception type, message, field, residual bits,
+    iterations): equal outcomes are bitwise equal."""
+    try:
+        return "ok", np.asarray(fn(*args, **kw)).tobytes()
+    except (ModelError, ConvergenceError) as exc:
+        r = getattr(exc, "residual", None)
+        return (type(exc).__name__, str(exc), getattr(exc, "field", None),
+                None if r is None else np.float64(r).tobytes(), getattr(exc, "iterations", None))
+
+
+def rotation(v):
+    t = np.linalg.norm(v)
+    K = np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]]) / t
+    return np.eye(3) + np.sin(t) * K + (1 - np.cos(t)) * K @ K
+
+
+def random_g(rng, n):
+    g = np.eye(n)
+    g[:3, :3] = rotation(rng.normal(size=3))
+    if n == 4:
+        g[:3, 3] = rng.normal(size=3)
+    return g
+
+
+@pytest.fixture(scope="module", params=sorted(MODELS))
+def compiled(request, compile_model):
+    text, opts = MODELS[request.param]
+    return {b: compile_model(text, backend=b, **opts) for b in ("c", "python")}
+
+
+@pytest.mark.parametrize("backend", ["c", "python"])
+def test_velocity_is_bitwise_the_reference_newton(compiled, backend):
+    integ = compiled[backend]
+    rng = np.random.default_rng(1)
+    for scale in (1e-3, 1.0, 30.0):
+        for _ in range(8):
+            g, mu = random_g(rng, integ.n), scale * rng.normal(size=integ.d)
+            assert outcome(integ.velocity, g, mu) == outcome(reference_velocity, integ, g, mu)
+            for kw in ({"maxit": 1}, {"tol": 1e-3}, {"maxit": 0}):
+                assert outcome(integ.velocity, g, mu, **kw) == \
+                    outcome(reference_velocity, integ, g, mu, **kw)
+
+
+@pytest.mark.parametrize("backend", ["c", "python"])
+def test_initial_and_simulate_from_mu0_match_the_reference(compiled, backend):
+    integ = compiled[backend]
+    rng = np.random.default_rng(2)
+    for _ in range(4):
+        g, mu = random_g(rng, integ.n), rng.normal(size=integ.d)
+        gf, mu0, xi0 = integ._initial(g, None, mu)
+        assert gf.tobytes() == g.ravel(order="F").tobytes()
+        assert mu0.tobytes() == mu.tobytes()
+        assert xi0.tobytes() == reference_velocity(integ, g, mu).tobytes()
+        xi = rng.normal(size=integ.d)
+        gf, mu0, xi0 = integ._initial(g, xi, None)
+        assert mu0.tobytes() == integ.legendre(g, xi).tobytes() and xi0.tobytes() == xi.tobytes()
+    # the whole of simulate against its pieces, run through the generic backend driver
+    g, mu = random_g(rng, integ.n), 0.5 * rng.normal(size=integ.d)
+    h, steps, every = 0.01, 7, 2
+    tr = integ.simulate(g, h, steps, mu0=mu, every=every)
+    gf = g.ravel(order="F")
+    z0 = integ._b.call("guess", reference_velocity(integ, g, mu), gf, mu, np.array([h]))[0]
+    done, G, P, st = backends._Backend.simulate(integ._b, gf, mu, h, z0, steps, every,
+                                                integ._options(newton.DEFAULT_TOL, 50))
+    K = done // every + 1
+    n = integ.n
+    assert tr.g.tobytes() == np.ascontiguousarray(
+        G[:K].reshape(K, n, n).transpose(0, 2, 1)).tobytes()
+    assert tr.mu.tobytes() == P[:K].tobytes()
+    assert tr.t.tobytes() == (0.0 + np.arange(K) * every * h).tobytes()
+    assert tr.newton_iterations == st["total_iterations"] and tr.jacobians == st["jacobians"]
+
+
+# ---- scripted kernels: every branch of the Newton written out ----------------------------
+class _Scripted:
+    """A backend whose legendre/hessian are Python functions of xi (d = 2, n = 1)."""
+    name = "scripted"
+
+    def __init__(self, legendre, hessian):
+        self.legendre, self.hessian = legendre, hessian
+
+    def call(self, name, g, xi):
+        xi = np.asarray(xi, dtype=np.float64)
+        with np.errstate(all="ignore"):
+            out = self.legendre(xi) if name == "legendre" else self.hessian(xi)
+        return [np.asarray(out, dtype=np.float64).ravel(order="F").copy()]
+
+
+def _scripted(legendre, hessian):
+    meta = {"n": 1, "d": 2, "nz": 2, "module": "scripted", "kernels": {}}
+    return Integrator(meta, _Scripted(legendre, hessian))
+
+
+A = np.array([[2.0, 0.3], [0.3, 1.0]])
+SCRIPTS = {
+    "quadratic": (lambda x: A @ x + 0.1, lambda x: A),
+    "cubic": (lambda x: A @ x + 0.2 * x ** 3, lambda x: A + np.diag(0.6 * x ** 2)),
+    "slow": (lambda x: np.arctan(x) * 3.0, lambda x: np.diag(3.0 / (1 + x ** 2))),
+    "nan_F": (lambda x: A @ x + (np.nan if x.any() else 0.0), lambda x: A),
+    "inf_H": (lambda x: A @ x, lambda x: A + (np.inf if x.any() else 0.0)),
+    "nan_H_first": (lambda x: A @ x, lambda x: np.full((2, 2), np.nan)),
+    "zero_H": (lambda x: A @ x, lambda x: np.zeros((2, 2))),
+    "singular_H": (lambda x: A @ x, lambda x: np.ones((2, 2))),
+    "ill_but_regular": (lambda x: A @ x, lambda x: np.diag([1.0, 1e-11])),
+    "ill_singular": (lambda x: A @ x, lambda x: np.diag([1.0, 1e-13])),
+    "becomes_singular": (lambda x: A @ x + 0.2 * x ** 3,
+                         lambda x: A if not x.any() else np.diag([1.0, 0.0])),
+    "huge_step": (lambda x: 1e-300 * x - 1.0, lambda x: 1e-300 * np.eye(2)),
+}
+
+
+@pytest.mark.parametrize("script", sorted(SCRIPTS))
+def test_velocity_branches_match_the_reference(script):
+    rng = np.random.default_rng(3)
+    for mu in [np.array([0.7, -1.2]), np.zeros(2)] + [rng.normal(size=2) for _ in range(4)]:
+        for kw in ({}, {"maxit": 3}, {"tol": 1e-6}):
+            fast, ref = _scripted(*SCRIPTS[script]), _scripted(*SCRIPTS[script])
+            g = np.eye(1)
+            got = outcome(fast.velocity, g, mu, **kw)
+            assert got == outcome(reference_velocity, ref, g, mu, **kw)
+            assert got == outcome(fast.velocity, g, mu, **kw)      # with the kept cond
+
+
+def test_kept_cond_is_per_hessian_and_per_integrator():
+    ok, bad = SCRIPTS["quadratic"], SCRIPTS["singular_H"]
+    it = _scripted(*ok)
+    it.velocity(np.eye(1), [1.0, 2.0])
+    it._b.hessian = bad[1]          # a new Hessian: checked again, refused
+    with pytest.raises(ModelError):
+        it.velocity(np.eye(1), [1.0, 2.0])
+    it._b.hessian = ok[1]
+    assert it.velocity(np.eye(1), [1.0, 2.0]).tobytes() == \
+        reference_velocity(_scripted(*ok), np.eye(1), [1.0, 2.0]).tobytes()
+
+
+@pytest.mark.parametrize("backend", ["c", "python"])
+def test_singular_legendre_still_refused(backend):
+    it = toy_integrator(backend, "singular")
+    for _ in range(2):               # the second time from the kept cond
+        with pytest.raises(ModelError) as info:
+            it.velocity(np.eye(3), [1.0, 0.0, 0.0])
+        assert info.value.field == "scene.initial" and "singular" in str(info.value)
+        assert "cond(d2l/dxi2) = " in str(info.value)
+        with pytest.raises(ModelError) as info:
+            it.simulate(np.eye(3), 0.1, 3, mu0=[1.0, 0.0, 0.0])
+        assert info.value.field == "scene.initial"
+    assert it.simulate(np.eye(3), 0.1, 3, xi0=[1.0, 0.0, 0.0]).mu.shape == (4, 3)
+
+
+# ---- the C backend's kernel calls ---------------------------------------------------------
+@pytest.fixture(scope="module")
+def cb():
+    return toy_integrator("c")._b
+
+
+def test_kernel_outputs_are_fresh_arrays(cb):
+    g, hv = np.eye(3).ravel(), np.array([0.1])
+    a = cb.call("legendre", g, np.array([1.0, 2.0, 3.0]))[0]
+    a_bytes = a.tobytes()
+    b = cb.call("legendre", g, np.array([-4.0, 5.0, 0.5]))[0]
+    assert a.tobytes() == a_bytes and not np.shares_memory(a, b)
+    a[:] = 99.0                               # writing a result changes no later call
+    assert cb.call("legendre", g, np.array([-4.0, 5.0, 0.5]))[0].tobytes() == b.tobytes()
+    F, J = cb.call("residual_jacobian", np.array([0.1, 0.2, 0.3]), g, np.ones(3), hv)
+    g1, p1 = cb.call("update", np.array([0.1, 0.2, 0.3]), g, np.ones(3), hv)
+    outs = [a, b, F, J, g1, p1]
+    assert all(o.flags.owndata and o.flags.writeable for o in outs)
+    assert not any(np.shares_memory(x, y) for i, x in enumerate(outs) for y in outs[i + 1:])
+    # inputs are read, never written
+    z = np.array([0.1, 0.2, 0.3])
+    cb.call("update", z, g, np.ones(3), hv)
+    assert z.tolist() == [0.1, 0.2, 0.3] and g.tolist() == np.eye(3).ravel().tolist()
+    # the run state: copies too
+    run = cb.start(g, np.ones(3), z)
+    s1, s2 = cb.state(run), cb.state(run)
+    assert not any(np.shares_memory(x, y) for x, y in zip(s1[:3], s2[:3]))
+
+
+def test_kernel_results_equal_fresh_buffers(cb):
+    """Each call bitwise as with zeroed output arrays of its own (the former call path)."""
+    rng = np.random.default_rng(4)
+    for name, (ins, outs) in cb._sig.items():
+        for _ in range(3):
+            args = [rng.normal(size=s) for s in ins]
+            fresh = [np.zeros(s) for s in outs]
+            cb._fns[name](*[x.ctypes.data for x in args + fresh])
+            got = cb.call(name, *args)
+            assert [o.tobytes() for o in got] == [o.tobytes() for o in fresh], name
+
+
+def test_kernel_argument_conversion_and_errors(cb):
+    g, xi = np.eye(3), np.array([1.0, 2.0, 3.0])
+    ref = cb.call("legendre", g.ravel(), xi)[0].tobytes()
+    for gg, xx in ((g.ravel().tolist(), xi.tolist()), (g.ravel().astype(np.float32), xi),
+                   (np.eye(3, dtype=int).ravel(), xi), (np.eye(6)[::2, ::2].ravel(), xi),
+                   (np.ascontiguousarray(np.vstack([g.ravel()] * 2).T)[:, 1], xi[::1]),
+                   (g.ravel(), np.array([1.0, 9.0, 2.0, 9.0, 3.0])[::2])):
+        assert cb.call("legendre", gg, xx)[0].tobytes() == ref
+    with pytest.raises(ValueError, match=r"legendre input 0: expected a flat array of 9"):
+        cb.call("legendre", g, xi)                        # (3, 3): not flat
+    with pytest.raises(ValueError, match=r"legendre input 1: expected a flat array of 3"):
+        cb.call("legendre", g.ravel(), np.ones((1, 3)))
+    with pytest.raises(ValueError, match=r"legendre input 1"):
+        cb.call("legendre", g.ravel(), 1.0)
+    with pytest.raises(TypeError, match=r"takes 2 arguments, got 1"):
+        cb.call("legendre", g.ravel())
+    with pytest.raises(KeyError):
+        cb.call("no_such_kernel", g.ravel())
+
+
+def test_kernel_calls_from_threads(cb):
+    """The staging buffers are per thread: concurrent calls give the serial results."""
+    rng = np.random.default_rng(5)
+    g, hv = np.eye(3).ravel(), np.array([0.05])
+    zs = [rng.normal(size=3) for _ in range(200)]
+    want = [[o.tobytes() for o in cb.call("update", z, g, z, hv)] for z in zs]
+    got, errors = {}, []
+
+    def work(i):
+        try:
+            for _ in range(20):
+                for j, z in enumerate(zs):
+                    r = [o.tobytes() for o in cb.call("update", z, g, z, hv)]
+                    if r != want[j]:
+                        got[i] = j
+                        return
+        except Exception as exc:   # pragma: no cover
+            errors.append(exc)
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert not errors and not got
+
+
+# ---- CBackend.simulate against the generic driver -----------------------------------------
+@pytest.mark.parametrize("steps, every, maxit", [(0, 1, 50), (1, 1, 50), (5, 3, 50),
+                                                 (2, 5, 50), (40, 4, 50), (10, 1, 1)])
+def test_c_simulate_is_the_generic_driver(cb, steps, every, maxit):
+    opts = newton.NewtonOptions(1e-14, maxit, True, True)
+    g0, p0 = np.eye(3).ravel(), np.array([0.4, 0.1, 0.8])
+    z0 = cb.call("guess", p0 / np.array([2.0, 1.0, 2.0 / 3.0]), g0, p0, np.array([0.1]))[0]
+    a = cb.simulate(g0, p0, 0.1, z0, steps, every, opts)
+    b = backends._Backend.simulate(cb, g0, p0, 0.1, z0, steps, every, opts)
+    assert a[0] == b[0] and _bits(a[3]) == _bits(b[3])
+    assert a[1].tobytes() == b[1].tobytes() and a[2].tobytes() == b[2].tobytes()
+    assert a[1].shape == b[1].shape and a[2].shape == b[2].shape
+    # advance in chunks (state queries for k) agrees with one call
+    run = cb.start(g0, p0, z0)
+    parts = [cb.advance(run, 0.1, k, every, opts) for k in (steps // 2, steps - steps // 2)]
+    G = np.concatenate([g0.reshape(1, -1)] + [p[1] for p in parts])
+    if all(p[3]["code"] == newton.OK for p in parts):
+        assert G.tobytes() == a[1].tobytes()
+
+
+def _bits(status: dict) -> dict:
+    return {k: np.float64(v).tobytes() if isinstance(v, float) else v
+            for k, v in status.items()}
+
+
+def test_simulate_batch_setup_matches_single_runs():
+    it = toy_integrator("c")
+    rng = np.random.default_rng(6)
+    mus = rng.normal(size=(5, 3))
+    trs = it.simulate_batch(np.eye(3), 0.1, 6, mu0=mus, every=2, threads=2)
+    for tr, mu in zip(trs, mus):
+        one = it.simulate(np.eye(3), 0.1, 6, mu0=mu, every=2)
+        assert tr.g.tobytes() == one.g.tobytes() and tr.mu.tobytes() == one.mu.tobytes()
+        assert tr.t.tobytes() == one.t.tobytes()
