@@ -19,6 +19,7 @@ import pytest
 import scipy.linalg as sla
 
 from hpgen.errors import ModelError
+from _mp_series import mp_series_function
 from hpgen.groups import group_from_spec, series
 
 GROUPS = ("R2", "SO2", "SO3", "SE2", "SE3", ("SO3", "R3"))
@@ -232,19 +233,6 @@ _FACTOR = {
 }
 
 
-def _mp_series_function(name):
-    """name -> f(s) in mpmath (closed forms; d_* by mpmath's numerical derivative)."""
-    base = {
-        "sinc": lambda s: mp.sin(mp.sqrt(s)) / mp.sqrt(s),
-        "cosc": lambda s: (1 - mp.cos(mp.sqrt(s))) / s,
-        "sinc3": lambda s: (mp.sqrt(s) - mp.sin(mp.sqrt(s))) / s**mp.mpf(1.5),
-        "dexpinv_c": lambda s: (1 - mp.sqrt(s) / 2 * mp.cot(mp.sqrt(s) / 2)) / s,
-    }
-    if name in base:
-        return base[name]
-    return lambda s, b=base[name[2:]]: mp.diff(b, s)
-
-
 def test_series_functions_against_mpmath():
     """Each function against mpmath on the accuracy domain |w| <= pi (series.T_MAX).
 
@@ -258,7 +246,7 @@ def test_series_functions_against_mpmath():
         vals = [float(v) for v in fn(s)]
         for name, val in zip(series.NAMES, vals):
             with mp.workdps(120):  # enough digits for the cancellation at s = 1e-20
-                ref = float(_mp_series_function(name)(mp.mpf(s)))
+                ref = float(mp_series_function(name)(mp.mpf(s)))
             w = _FACTOR[name](math.sqrt(s))
             assert abs(val - ref) * w <= 8e-16, (name, s, val, ref)
             if s <= 0.2:

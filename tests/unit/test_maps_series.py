@@ -26,23 +26,12 @@ import mpmath as mp
 import numpy as np
 import pytest
 
+from _mp_series import mp_series_function
 from hpgen.groups import group_from_spec, series
 
 ULP = 2.0**-52
 T_POINTS = (1e-8, 1e-4, 0.1, np.nextafter(1.0, 0.0), 1.0, np.nextafter(1.0, 2.0), 3.0,
             math.pi - 1e-9, math.pi)
-
-
-def _mp_function(name):
-    base = {
-        "sinc": lambda s: mp.sin(mp.sqrt(s)) / mp.sqrt(s),
-        "cosc": lambda s: (1 - mp.cos(mp.sqrt(s))) / s,
-        "sinc3": lambda s: (mp.sqrt(s) - mp.sin(mp.sqrt(s))) / s**mp.mpf(1.5),
-        "dexpinv_c": lambda s: (1 - mp.sqrt(s) / 2 * mp.cot(mp.sqrt(s) / 2)) / s,
-    }
-    if name in base:
-        return base[name]
-    return lambda s, b=base[name[2:]]: mp.diff(b, s)
 
 
 @pytest.fixture(scope="module")
@@ -60,7 +49,7 @@ def functions():
 @pytest.mark.parametrize("name", series.NAMES)
 def test_values_and_ad_derivatives_in_ulps(functions, name):
     worst = [0.0, 0.0, 0.0]
-    truth = _mp_function(name)
+    truth = mp_series_function(name)
     with mp.workdps(50):
         for t in T_POINTS:
             s = t * t
