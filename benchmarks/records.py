@@ -55,10 +55,10 @@ def _case(label, integ, sc, steps, repeats, observe):
     kept_full = tr.t.nbytes + tr.g.nbytes + tr.mu.nbytes + sum(a.nbytes for a in obs.values())
     print(f"{label}, {steps} steps, every step recorded "
           f"(skip g: {integ._b.skip_g}; row {rec.names}):")
-    print(f"  record in the C loop:           {t_rec / steps * 1e9:7.1f} ns/step, "
+    other = f"simulate + {'/'.join(observe)}:"
+    print(f"  {'record in the C loop:':30s} {t_rec / steps * 1e9:7.1f} ns/step, "
           f"{kept_rec / 1e6:7.1f} MB kept")
-    print(f"  simulate + {'/'.join(observe)}: {t_full / steps * 1e9:7.1f} ns/step, "
-          f"{kept_full / 1e6:7.1f} MB kept")
+    print(f"  {other:30s} {t_full / steps * 1e9:7.1f} ns/step, {kept_full / 1e6:7.1f} MB kept")
     print(f"  ratio {t_full / t_rec:.2f}x time, {kept_full / kept_rec:.1f}x memory")
     return rec, tr, obs
 

@@ -3,7 +3,7 @@
  * model: double_body_chain
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 6c094e3463746d4fbc81a732eaf13f21bf8c3b90b0db560e3d2b62ca7dff6313
+ * content hash: 91774cfe79dfbd9b7bb5dad7b2b0484d3fbfb3c0491e501696332867f76b08c4
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -4875,7 +4875,7 @@ CASADI_SYMBOL_EXPORT int record_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 #define HPGEN_EXPORT
 #endif
 
-#define HPGEN_ABI 2
+#define HPGEN_ABI 3
 #define HPGEN_N 6
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 #define HPGEN_D 6
@@ -4935,7 +4935,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "6c094e3463746d4fbc81a732eaf13f21bf8c3b90b0db560e3d2b62ca7dff6313"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "91774cfe79dfbd9b7bb5dad7b2b0484d3fbfb3c0491e501696332867f76b08c4"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 6c094e3463746d4fbc81a732eaf13f21bf8c3b90b0db560e3d2b62ca7dff6313
+# content hash: 91774cfe79dfbd9b7bb5dad7b2b0484d3fbfb3c0491e501696332867f76b08c4
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

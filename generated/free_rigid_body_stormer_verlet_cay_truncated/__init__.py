@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: e65f99f42510846d125436cf295c1e4cc256749b12c4f10664903cdc07469e93
+# content hash: 7b96243b6f693dd0bbed9a498f1fa1cfe29e8841d53285989f8956514672d121
 """hpgen integrator free_rigid_body_stormer_verlet_cay_truncated for the model free_rigid_body.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "free_rigid_body_stormer_verlet_cay_truncated"
-HASH = "e65f99f42510846d125436cf295c1e4cc256749b12c4f10664903cdc07469e93"
+HASH = "7b96243b6f693dd0bbed9a498f1fa1cfe29e8841d53285989f8956514672d121"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

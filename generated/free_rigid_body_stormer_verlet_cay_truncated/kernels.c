@@ -3,7 +3,7 @@
  * model: free_rigid_body
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: e65f99f42510846d125436cf295c1e4cc256749b12c4f10664903cdc07469e93
+ * content hash: 7b96243b6f693dd0bbed9a498f1fa1cfe29e8841d53285989f8956514672d121
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -2489,7 +2489,7 @@ CASADI_SYMBOL_EXPORT int record_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 #define HPGEN_EXPORT
 #endif
 
-#define HPGEN_ABI 2
+#define HPGEN_ABI 3
 #define HPGEN_N 3
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 #define HPGEN_D 3
@@ -2549,7 +2549,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "e65f99f42510846d125436cf295c1e4cc256749b12c4f10664903cdc07469e93"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "7b96243b6f693dd0bbed9a498f1fa1cfe29e8841d53285989f8956514672d121"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

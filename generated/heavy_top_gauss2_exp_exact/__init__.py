@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 80a984ed05e0ec6e5b850f214c8f659dbf422502b425731f60465a9aa1853c72
+# content hash: de90e8aa06c571ab66704de9492ff0cbf822c53b78875749156703924135f3d0
 """hpgen integrator heavy_top_gauss2_exp_exact for the model heavy_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "heavy_top_gauss2_exp_exact"
-HASH = "80a984ed05e0ec6e5b850f214c8f659dbf422502b425731f60465a9aa1853c72"
+HASH = "de90e8aa06c571ab66704de9492ff0cbf822c53b78875749156703924135f3d0"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

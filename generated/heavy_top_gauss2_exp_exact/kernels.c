@@ -3,7 +3,7 @@
  * model: heavy_top
  * options: tableau=gauss2, tau=exp, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 80a984ed05e0ec6e5b850f214c8f659dbf422502b425731f60465a9aa1853c72
+ * content hash: de90e8aa06c571ab66704de9492ff0cbf822c53b78875749156703924135f3d0
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -11386,7 +11386,7 @@ CASADI_SYMBOL_EXPORT int record_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 #define HPGEN_EXPORT
 #endif
 
-#define HPGEN_ABI 2
+#define HPGEN_ABI 3
 #define HPGEN_N 3
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 #define HPGEN_D 3
@@ -11446,7 +11446,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "80a984ed05e0ec6e5b850f214c8f659dbf422502b425731f60465a9aa1853c72"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "de90e8aa06c571ab66704de9492ff0cbf822c53b78875749156703924135f3d0"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

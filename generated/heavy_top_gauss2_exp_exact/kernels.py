@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 80a984ed05e0ec6e5b850f214c8f659dbf422502b425731f60465a9aa1853c72
+# content hash: de90e8aa06c571ab66704de9492ff0cbf822c53b78875749156703924135f3d0
 """Python backend of the hpgen module heavy_top_gauss2_exp_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

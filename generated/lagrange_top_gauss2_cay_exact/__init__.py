@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 132dac27905aa27a8392a129939a7185e4eda742c99d2dcaf44cdb3d8a1d3337
+# content hash: 957cbe70cc6c383104d78109df3a99df5c971016f942a907cb6b6eb1591751b7
 """hpgen integrator lagrange_top_gauss2_cay_exact for the model lagrange_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "lagrange_top_gauss2_cay_exact"
-HASH = "132dac27905aa27a8392a129939a7185e4eda742c99d2dcaf44cdb3d8a1d3337"
+HASH = "957cbe70cc6c383104d78109df3a99df5c971016f942a907cb6b6eb1591751b7"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: lagrange_top
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 132dac27905aa27a8392a129939a7185e4eda742c99d2dcaf44cdb3d8a1d3337
+ * content hash: 957cbe70cc6c383104d78109df3a99df5c971016f942a907cb6b6eb1591751b7
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -7297,7 +7297,7 @@ CASADI_SYMBOL_EXPORT int record_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 #define HPGEN_EXPORT
 #endif
 
-#define HPGEN_ABI 2
+#define HPGEN_ABI 3
 #define HPGEN_N 3
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 #define HPGEN_D 3
@@ -7357,7 +7357,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "132dac27905aa27a8392a129939a7185e4eda742c99d2dcaf44cdb3d8a1d3337"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "957cbe70cc6c383104d78109df3a99df5c971016f942a907cb6b6eb1591751b7"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 7dc1720e1c56d7909db5a0e46302c95b6bb0c5550060578e19f097ae2368a9f1
+# content hash: 05f49e62c6492d08a8078b697b9a5b2c2a096883481ce43400da0855439b7da0
 """hpgen integrator turntable_stormer_verlet_cay_truncated for the model turntable.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "turntable_stormer_verlet_cay_truncated"
-HASH = "7dc1720e1c56d7909db5a0e46302c95b6bb0c5550060578e19f097ae2368a9f1"
+HASH = "05f49e62c6492d08a8078b697b9a5b2c2a096883481ce43400da0855439b7da0"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: turntable
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 7dc1720e1c56d7909db5a0e46302c95b6bb0c5550060578e19f097ae2368a9f1
+ * content hash: 05f49e62c6492d08a8078b697b9a5b2c2a096883481ce43400da0855439b7da0
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -4248,7 +4248,7 @@ CASADI_SYMBOL_EXPORT int record_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 #define HPGEN_EXPORT
 #endif
 
-#define HPGEN_ABI 2
+#define HPGEN_ABI 3
 #define HPGEN_N 3
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 #define HPGEN_D 3
@@ -4308,7 +4308,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "7dc1720e1c56d7909db5a0e46302c95b6bb0c5550060578e19f097ae2368a9f1"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "05f49e62c6492d08a8078b697b9a5b2c2a096883481ce43400da0855439b7da0"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

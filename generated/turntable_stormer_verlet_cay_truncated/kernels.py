@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 7dc1720e1c56d7909db5a0e46302c95b6bb0c5550060578e19f097ae2368a9f1
+# content hash: 05f49e62c6492d08a8078b697b9a5b2c2a096883481ce43400da0855439b7da0
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

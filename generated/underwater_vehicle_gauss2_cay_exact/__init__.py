@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: d5ace43f723217a6d562424015154cbfc54cba9fd8ca33ff813590347374d12a
+# content hash: f6cfa8b39a7598d0fd034166a4afb72427365776457492ce30d334187b80dcde
 """hpgen integrator underwater_vehicle_gauss2_cay_exact for the model underwater_vehicle.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "underwater_vehicle_gauss2_cay_exact"
-HASH = "d5ace43f723217a6d562424015154cbfc54cba9fd8ca33ff813590347374d12a"
+HASH = "f6cfa8b39a7598d0fd034166a4afb72427365776457492ce30d334187b80dcde"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: underwater_vehicle
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: d5ace43f723217a6d562424015154cbfc54cba9fd8ca33ff813590347374d12a
+ * content hash: f6cfa8b39a7598d0fd034166a4afb72427365776457492ce30d334187b80dcde
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -20119,7 +20119,7 @@ CASADI_SYMBOL_EXPORT int record_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
 #define HPGEN_EXPORT
 #endif
 
-#define HPGEN_ABI 2
+#define HPGEN_ABI 3
 #define HPGEN_N 4
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 #define HPGEN_D 6
@@ -20179,7 +20179,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "d5ace43f723217a6d562424015154cbfc54cba9fd8ca33ff813590347374d12a"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "f6cfa8b39a7598d0fd034166a4afb72427365776457492ce30d334187b80dcde"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: d5ace43f723217a6d562424015154cbfc54cba9fd8ca33ff813590347374d12a
+# content hash: f6cfa8b39a7598d0fd034166a4afb72427365776457492ce30d334187b80dcde
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -32,7 +32,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from ..derive.lagrangian import lagrangian_function
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, DomainError
 
 RK4_A = ((0.0, 0.0, 0.0, 0.0), (0.5, 0.0, 0.0, 0.0), (0.0, 0.5, 0.0, 0.0), (0.0, 0.0, 1.0, 0.0))
 RK4_B = (1 / 6, 1 / 3, 1 / 3, 1 / 6)
@@ -208,34 +208,49 @@ class RKMK4:
         x = ca.SX.sym("x", d)
         expm = ca.Function("expm", [x], [grp.tau("exp", x)])
         dexpinv = ca.Function("dexpinv", [x], [grp.dtau_inv("exp", x)])
+        margin = ca.Function("margin", [x], [grp.tau_margin("exp", x)])
         hat = ca.Function("hat", [x], [grp.hat(x)])
         G, D, P, H = ca.MX.sym("g", n, n), ca.MX.sym("delta", d), ca.MX.sym("mu", d), \
             ca.MX.sym("h")
         g0 = ca.mtimes(G, ca.MX.eye(n) + hat(D))
-        K, M, xi = [], [], ca.MX.zeros(d)
+        K, M, xi, margins = [], [], ca.MX.zeros(d), []
         for i, row in enumerate(RK4_A):
             Th = H * sum((a * k for a, k in zip(row, K) if a), ca.MX.zeros(d))
+            margins.append(margin(Th))
             mu_i = P + H * sum((a * m for a, m in zip(row, M) if a), ca.MX.zeros(d))
             Gi = ca.mtimes(g0, expm(Th))
             xi = xi_of(xi, Gi, mu_i)                     # previous stage's xi as the guess
             K.append(ca.mtimes(dexpinv(-Th), xi))
             M.append(mudot(Gi, xi, mu_i))
-        g1 = ca.mtimes(g0, expm(H * sum((b * k for b, k in zip(RK4_B, K)), ca.MX.zeros(d))))
+        chart = H * sum((b * k for b, k in zip(RK4_B, K)), ca.MX.zeros(d))
+        margins.append(margin(chart))
+        g1 = ca.mtimes(g0, expm(chart))
         p1 = P + H * sum((b * m for b, m in zip(RK4_B, M)), ca.MX.zeros(d))
         U = ca.vertcat(ca.reshape(g1, n * n, 1), p1)
         S = ca.vertcat(D, P)
-        self._step = ca.Function("rkmk4", [G, D, P, H], [g1, p1])
+        # exp is accurate on its domain (|omega| < pi, hpgen.groups.series): the step reports
+        # the smallest margin of its chart arguments
+        self._step = ca.Function("rkmk4", [G, D, P, H], [g1, p1, ca.mmin(ca.vertcat(*margins))])
         self._jac = ca.Function("rkmk4_jac", [G, D, P, H], [g1, p1, ca.jacobian(U, S)])
 
     def step(self, g, mu, h):
-        g1, p1 = self._step(g, np.zeros(self.eq.d), mu, h)
+        """(g1, mu1); raises DomainError when a chart argument leaves exp's domain."""
+        g1, p1, m = self._step(g, np.zeros(self.eq.d), mu, h)
+        if not float(m) > 0.0:
+            raise DomainError("RKMK-RK4: a chart argument h Theta left exp's domain "
+                              "(|omega| < pi)", step=0, time=0.0,
+                              residual=float("nan"), iterations=0)
         return _np(g1), _np(p1).ravel()
 
     def simulate(self, g0, mu0, h, steps):
         g, mu = np.array(g0, dtype=float), np.array(mu0, dtype=float)
         gs, mus = [g], [mu]
         for _ in range(steps):
-            g, mu = self.step(g, mu, h)
+            try:
+                g, mu = self.step(g, mu, h)
+            except DomainError as e:
+                raise DomainError(e.reason, step=len(gs) - 1, time=(len(gs) - 1) * h,
+                                  residual=float("nan"), iterations=0) from None
             if not (np.isfinite(g).all() and np.isfinite(mu).all()):
                 raise ConvergenceError("RKMK-RK4 produced non-finite values", step=len(gs) - 1,
                                        time=(len(gs) - 1) * h, residual=float("nan"),

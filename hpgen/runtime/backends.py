@@ -26,7 +26,7 @@ from . import newton
 from .build import build_library
 
 _counter = itertools.count()
-_ABI = 2
+_ABI = 3
 _F64 = np.dtype(np.float64)
 _RUN = ("run",)      # CBackend._staging key of the run state buffers (not a kernel name)
 

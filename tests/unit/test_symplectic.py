@@ -158,3 +158,18 @@ def test_rkmk_jacobian_matches_differences(model_file):
     Phi, g1, p1 = rk.map_jacobian(g0, p0, h)
     FD = _fd_jacobian(rk.step, model.group, g0, p0, h)
     assert np.abs(FD - Phi).max() < 1e-7 * max(1.0, np.abs(Phi).max())
+
+
+def test_rkmk4_refuses_chart_arguments_outside_exp_domain():
+    # exp's half-angle series are accurate for |omega| <= pi only: a step whose chart
+    # argument h Theta reaches past it raises DomainError instead of a silently wrong g
+    from hpgen.errors import DomainError
+    from hpgen.model import load_model
+    model = load_model(EXAMPLES / "heavy_top.yaml")
+    rk = RKMK4(model)
+    g0, mu0 = np.array(model.scene.g0), np.array([0.2, 5.0, 18.0])   # |xi| ~ 3
+    g, mu = rk.simulate(g0, mu0, 0.05, 4)
+    assert np.isfinite(g).all() and len(g) == 5
+    with pytest.raises(DomainError) as info:
+        rk.simulate(g0, mu0, 1.5, 3)
+    assert info.value.step == 0 and "exp's domain" in str(info.value)
