@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 91774cfe79dfbd9b7bb5dad7b2b0484d3fbfb3c0491e501696332867f76b08c4
+# content hash: 2ee0163d1fd581cda6bb4991f2f2505333af02daa95989b4ff55750be8b1c885
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "91774cfe79dfbd9b7bb5dad7b2b0484d3fbfb3c0491e501696332867f76b08c4"
+HASH = "2ee0163d1fd581cda6bb4991f2f2505333af02daa95989b4ff55750be8b1c885"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}
@@ -40,3 +40,9 @@ def step(g, p, h):
 def simulate(**kw):
     """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Trajectory."""
     return integrator().simulate(**kw)
+
+
+def record(**kw):
+    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Records: only the
+    scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
+    return integrator().record(**kw)

@@ -3,7 +3,7 @@
  * model: double_body_chain
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 91774cfe79dfbd9b7bb5dad7b2b0484d3fbfb3c0491e501696332867f76b08c4
+ * content hash: 2ee0163d1fd581cda6bb4991f2f2505333af02daa95989b4ff55750be8b1c885
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -4935,7 +4935,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "91774cfe79dfbd9b7bb5dad7b2b0484d3fbfb3c0491e501696332867f76b08c4"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "2ee0163d1fd581cda6bb4991f2f2505333af02daa95989b4ff55750be8b1c885"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

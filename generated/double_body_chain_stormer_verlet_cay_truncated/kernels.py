@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 91774cfe79dfbd9b7bb5dad7b2b0484d3fbfb3c0491e501696332867f76b08c4
+# content hash: 2ee0163d1fd581cda6bb4991f2f2505333af02daa95989b4ff55750be8b1c885
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

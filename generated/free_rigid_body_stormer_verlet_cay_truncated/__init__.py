@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 7b96243b6f693dd0bbed9a498f1fa1cfe29e8841d53285989f8956514672d121
+# content hash: 33493bb371f1140379742c44a22150c4a497c19c03896ab50c35073899aaa19b
 """hpgen integrator free_rigid_body_stormer_verlet_cay_truncated for the model free_rigid_body.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "free_rigid_body_stormer_verlet_cay_truncated"
-HASH = "7b96243b6f693dd0bbed9a498f1fa1cfe29e8841d53285989f8956514672d121"
+HASH = "33493bb371f1140379742c44a22150c4a497c19c03896ab50c35073899aaa19b"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}
@@ -40,3 +40,9 @@ def step(g, p, h):
 def simulate(**kw):
     """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Trajectory."""
     return integrator().simulate(**kw)
+
+
+def record(**kw):
+    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Records: only the
+    scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
+    return integrator().record(**kw)

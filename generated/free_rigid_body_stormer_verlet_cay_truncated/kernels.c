@@ -3,7 +3,7 @@
  * model: free_rigid_body
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 7b96243b6f693dd0bbed9a498f1fa1cfe29e8841d53285989f8956514672d121
+ * content hash: 33493bb371f1140379742c44a22150c4a497c19c03896ab50c35073899aaa19b
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -2549,7 +2549,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "7b96243b6f693dd0bbed9a498f1fa1cfe29e8841d53285989f8956514672d121"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "33493bb371f1140379742c44a22150c4a497c19c03896ab50c35073899aaa19b"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

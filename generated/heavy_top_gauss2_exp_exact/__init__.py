@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: de90e8aa06c571ab66704de9492ff0cbf822c53b78875749156703924135f3d0
+# content hash: 8eda7937641c677e94dcac652299bc8e3cabd4b11781d567287d4aaf7d7f8567
 """hpgen integrator heavy_top_gauss2_exp_exact for the model heavy_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "heavy_top_gauss2_exp_exact"
-HASH = "de90e8aa06c571ab66704de9492ff0cbf822c53b78875749156703924135f3d0"
+HASH = "8eda7937641c677e94dcac652299bc8e3cabd4b11781d567287d4aaf7d7f8567"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}
@@ -40,3 +40,9 @@ def step(g, p, h):
 def simulate(**kw):
     """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Trajectory."""
     return integrator().simulate(**kw)
+
+
+def record(**kw):
+    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Records: only the
+    scene's record list (g, mu, energy, momentum, height), evaluated inside the step loop."""
+    return integrator().record(**kw)

@@ -3,7 +3,7 @@
  * model: heavy_top
  * options: tableau=gauss2, tau=exp, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: de90e8aa06c571ab66704de9492ff0cbf822c53b78875749156703924135f3d0
+ * content hash: 8eda7937641c677e94dcac652299bc8e3cabd4b11781d567287d4aaf7d7f8567
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -11446,7 +11446,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "de90e8aa06c571ab66704de9492ff0cbf822c53b78875749156703924135f3d0"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "8eda7937641c677e94dcac652299bc8e3cabd4b11781d567287d4aaf7d7f8567"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: de90e8aa06c571ab66704de9492ff0cbf822c53b78875749156703924135f3d0
+# content hash: 8eda7937641c677e94dcac652299bc8e3cabd4b11781d567287d4aaf7d7f8567
 """Python backend of the hpgen module heavy_top_gauss2_exp_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 957cbe70cc6c383104d78109df3a99df5c971016f942a907cb6b6eb1591751b7
+# content hash: f27c3607abbda5ed9577668bd2e7267ecec03bb0a1764b00d06e7ec96439311e
 """hpgen integrator lagrange_top_gauss2_cay_exact for the model lagrange_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "lagrange_top_gauss2_cay_exact"
-HASH = "957cbe70cc6c383104d78109df3a99df5c971016f942a907cb6b6eb1591751b7"
+HASH = "f27c3607abbda5ed9577668bd2e7267ecec03bb0a1764b00d06e7ec96439311e"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}
@@ -40,3 +40,9 @@ def step(g, p, h):
 def simulate(**kw):
     """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Trajectory."""
     return integrator().simulate(**kw)
+
+
+def record(**kw):
+    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Records: only the
+    scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
+    return integrator().record(**kw)

@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 05f49e62c6492d08a8078b697b9a5b2c2a096883481ce43400da0855439b7da0
+# content hash: 4263751fad83be00104f5db2421b49925da76999a1be352efe70f0f43c3111ab
 """hpgen integrator turntable_stormer_verlet_cay_truncated for the model turntable.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "turntable_stormer_verlet_cay_truncated"
-HASH = "05f49e62c6492d08a8078b697b9a5b2c2a096883481ce43400da0855439b7da0"
+HASH = "4263751fad83be00104f5db2421b49925da76999a1be352efe70f0f43c3111ab"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}
@@ -40,3 +40,9 @@ def step(g, p, h):
 def simulate(**kw):
     """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Trajectory."""
     return integrator().simulate(**kw)
+
+
+def record(**kw):
+    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Records: only the
+    scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
+    return integrator().record(**kw)

@@ -3,7 +3,7 @@
  * model: turntable
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 05f49e62c6492d08a8078b697b9a5b2c2a096883481ce43400da0855439b7da0
+ * content hash: 4263751fad83be00104f5db2421b49925da76999a1be352efe70f0f43c3111ab
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -4308,7 +4308,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "05f49e62c6492d08a8078b697b9a5b2c2a096883481ce43400da0855439b7da0"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "4263751fad83be00104f5db2421b49925da76999a1be352efe70f0f43c3111ab"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 05f49e62c6492d08a8078b697b9a5b2c2a096883481ce43400da0855439b7da0
+# content hash: 4263751fad83be00104f5db2421b49925da76999a1be352efe70f0f43c3111ab
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: f6cfa8b39a7598d0fd034166a4afb72427365776457492ce30d334187b80dcde
+# content hash: 9efb800d16bc4a1bd34b01671d42bd561da1827f3711837ab12e25613a83d942
 """hpgen integrator underwater_vehicle_gauss2_cay_exact for the model underwater_vehicle.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "underwater_vehicle_gauss2_cay_exact"
-HASH = "f6cfa8b39a7598d0fd034166a4afb72427365776457492ce30d334187b80dcde"
+HASH = "9efb800d16bc4a1bd34b01671d42bd561da1827f3711837ab12e25613a83d942"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}
@@ -40,3 +40,9 @@ def step(g, p, h):
 def simulate(**kw):
     """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Trajectory."""
     return integrator().simulate(**kw)
+
+
+def record(**kw):
+    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Records: only the
+    scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
+    return integrator().record(**kw)

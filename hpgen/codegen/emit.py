@@ -158,7 +158,9 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
                               safe_unary=[list(p) for p in SAFE_UNARY],
                               kernels=[py_kernel_context(k) for k in step.kernels]),
         "__init__.py.j2": dict(common, module=info["module"], hash=info["hash"],
-                               backend=info["backend"], model_label=_safe(info["model_name"])),
+                               backend=info["backend"], model_label=_safe(info["model_name"]),
+                               record_note=" (" + ", ".join(
+                                   name for name, _, _ in step.record_layout) + ")"),
     }
 
 

@@ -42,6 +42,12 @@ g1, p1 = mod.step(np.eye(n), np.linspace(0.1, 0.3, d), 0.05) if sys.argv[3] == "
     integ.step(np.eye(n), np.linspace(0.1, 0.3, d), 0.05)
 tr = integ.simulate(g0=np.eye(n), mu0=np.linspace(0.1, 0.3, d), h=0.05, steps=20)
 assert np.isfinite(tr.mu).all() and tr.g.shape == (21, n, n)
+rec = mod.record(g0=np.eye(n), mu0=np.linspace(0.1, 0.3, d), h=0.05, steps=20, every=5) \
+    if sys.argv[3] == "c" else integ.record(g0=np.eye(n), mu0=np.linspace(0.1, 0.3, d),
+                                            h=0.05, steps=20, every=5)
+assert rec.names == integ.record_names and "height" in rec.names
+assert np.array_equal(rec["g"], tr.g[::5]) and np.array_equal(rec["mu"], tr.mu[::5])
+assert np.array_equal(rec["height"], tr.g[::5, 2, 2])
 assert not any(m in sys.modules and sys.modules[m] is not None
                for m in ("casadi", "sympy", "jinja2", "hpgen.derive", "hpgen.codegen", "hpgen.model"))
 print("ok", integ.backend, float(np.abs(p1).sum()))
