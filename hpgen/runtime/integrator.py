@@ -13,59 +13,21 @@ the residual kernel (CasADi instruction counts in meta.json), where it is the fa
 from __future__ import annotations
 
 import math
-import numbers
 import os
 
 import numpy as np
 
-from ..errors import ConvergenceError, DomainError, ModelError
+from ..errors import ConvergenceError, ModelError
 from . import newton
-from .trajectory import SectionCrossings, Trajectory
+from .args import _MESSAGES, _array, _error, _int, _positive
+from .records import RecordsMixin
+from .sections import SectionsMixin
+from .trajectory import Trajectory
 
 DEFECT_MAX = 1e-10
 COND_MAX = 1e12
 SIMPLIFIED_RATIO = 4.0
-_MESSAGES = {newton.NO_CONVERGENCE: "Newton did not converge",
-             newton.NONFINITE: "a non-finite value (or a singular Jacobian) appeared",
-             newton.DOMAIN: "the chart map tau left its domain (margin(z, h) <= 0)"}
-
-
-def _error(code, step, time, residual, iterations):
-    cls = DomainError if code == newton.DOMAIN else ConvergenceError
-    return cls(_MESSAGES.get(code, f"step failed with status {code}"), step=int(step),
-               time=float(time), residual=float(residual), iterations=int(iterations))
-
-
-def _array(x, shape, field, what):
-    try:
-        a = np.array(x, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ModelError(f"expected {what}, got {type(x).__name__}", field=field) from None
-    if a.shape != shape:
-        raise ModelError(f"expected {what} of shape {shape}, got shape {a.shape}", field=field)
-    if not np.isfinite(a).all():
-        raise ModelError(f"{what} has non-finite entries", field=field)
-    return a
-
-
-def _int(x, field, low):
-    if type(x) is int and x >= low:        # the common case, without the ABC checks
-        return x
-    if isinstance(x, bool) or not isinstance(x, numbers.Integral) or x < low:
-        raise ModelError(f"expected an integer >= {low}, got {x!r}", field=field)
-    return int(x)
-
-
-def _positive(x, field):
-    if type(x) is float and 0.0 < x < math.inf:     # the common case
-        return x
-    if isinstance(x, bool) or not isinstance(x, numbers.Real) or not (
-            math.isfinite(x) and x > 0):
-        raise ModelError(f"expected a finite number > 0, got {x!r}", field=field)
-    return float(x)
-
-
-class Integrator:
+class Integrator(SectionsMixin, RecordsMixin):
     """A loaded generated module. Attributes: meta (dict from meta.json), backend ("c" or
     "python"), n, d, nz."""
 
@@ -305,52 +267,6 @@ class Integrator:
             k += done
             first = False
 
-    def sections(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
-                 tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
-                 predictor=True, chunk=100_000) -> SectionCrossings:
-        """Run up to ``steps`` steps and return the upward crossings of the model's
-        ``scene.section`` s(g, mu) = 0 (compiled into the step loop: nothing else is kept), at
-        most ``max_crossings`` (then the run stops at that crossing's step). The states are
-        bitwise those of ``simulate``. A failed step raises ConvergenceError / DomainError
-        with ``.partial`` the crossings found before it."""
-        self._need_section()
-        h = _positive(h, "h")
-        steps = _int(steps, "steps", 0)
-        cap_total = None if max_crossings is None else _int(max_crossings, "max_crossings", 1)
-        chunk = _int(chunk, "chunk", 1)
-        opts = self._options(tol, maxit, simplified, predictor)
-        gf, mu0, xi0 = self._initial(g0, xi0, mu0)
-        out = self._sections_run(gf, mu0, xi0, h, steps, cap_total, chunk, opts)
-        if out.error is not None:
-            raise out.error
-        return out
-
-    def sections_batch(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
-                       threads=None, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT,
-                       simplified=None, predictor=True, chunk=100_000) -> list:
-        """``sections`` for B initial states (g0 (n, n) shared or (B, n, n); xi0 or mu0
-        (B, d)), the runs spread over ``threads`` threads (default: the CPU count); each
-        result is bitwise that of ``sections`` on its own. A failed run's SectionCrossings
-        is partial with ``.error`` set (nothing is raised)."""
-        from concurrent.futures import ThreadPoolExecutor
-        self._need_section()
-        h = _positive(h, "h")
-        steps = _int(steps, "steps", 0)
-        cap_total = None if max_crossings is None else _int(max_crossings, "max_crossings", 1)
-        chunk = _int(chunk, "chunk", 1)
-        opts = self._options(tol, maxit, simplified, predictor)
-        starts = self._batch_starts(g0, xi0, mu0)
-        threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
-
-        def one(start):
-            gf, m0, x0 = start
-            return self._sections_run(gf, m0, x0, h, steps, cap_total, chunk, opts)
-
-        if threads == 1 or self.backend != "c":
-            return [one(st) for st in starts]
-        with ThreadPoolExecutor(min(threads, len(starts))) as pool:
-            return list(pool.map(one, starts))
-
     def _batch_starts(self, g0, xi0, mu0) -> list:
         """[(g0 flat, mu0, xi0)] for a batch: g0 (n, n) shared or (B, n, n); xi0 or mu0
         (B, d), exactly one; each start checked as in simulate."""
@@ -368,40 +284,6 @@ class Integrator:
         return [self._initial(G0[b], None if xi0 is None else xi0[b],
                               None if mu0 is None else mu0[b]) for b in range(B)]
 
-    def _need_section(self):
-        if not self.meta.get("section"):
-            raise ModelError("the model's scene has no section; add `section: <expression in "
-                             "mu and g>` to the scene and recompile", field="scene.section")
-
-    def _sections_run(self, gf, mu0, xi0, h, steps, cap_total, chunk, opts):
-        """One run of sections from a checked start; the error (if any) is set, not raised."""
-        z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
-        run = self._b.start(gf, mu0, z0)
-        parts, k, iters, err = [], 0, 0, None
-        found = 0
-        while k < steps:
-            cap = chunk if cap_total is None else min(chunk, cap_total - found)
-            if cap < 1:
-                break
-            done, ks, ts, gs, ps, st = self._b.advance_sections(run, h, steps - k, cap, opts)
-            parts.append((ks, ts, gs, ps))
-            k, found, iters = k + done, found + len(ts), iters + int(st["total_iterations"])
-            if st["code"] != newton.OK:
-                err = _error(st["code"], st["step"], st["step"] * h, st["residual"],
-                             st["iterations"])
-                break
-        n = self.n
-        cat = lambda i, shape: (np.concatenate([q[i] for q in parts]) if parts  # noqa: E731
-                                else np.zeros(shape))
-        gs = cat(2, (0, n * n)).reshape(-1, n, n).transpose(0, 2, 1)
-        out = SectionCrossings(t=cat(1, (0,)), g=np.ascontiguousarray(gs),
-                               mu=cat(3, (0, self.d)).reshape(-1, self.d),
-                               step=cat(0, (0,)).astype(np.int64), h=h, steps=k,
-                               partial=err is not None, error=err, newton_iterations=iters)
-        if err is not None:
-            err.partial = out
-        return out
-
     def simulate_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None,
                        tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
                        predictor=True) -> list:
@@ -418,52 +300,4 @@ class Integrator:
         done, g_rec, p_rec, sts = self._b.simulate_batch(gs, ms, h, z0s, steps, every, opts,
                                                          threads)
         return [self._trajectory(int(done[b]), g_rec[b], p_rec[b], sts[b], h, every)
-                for b in range(len(starts))]
-
-    # ---- scene records: only what record: asks for ------------------------------------
-    @property
-    def record_names(self) -> tuple:
-        """What this module's record row holds (the scene's ``record:`` list, in order)."""
-        return tuple(name for name, _, _ in self.meta["record"])
-
-    def stream_record(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000,
-                      tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
-                      predictor=True):
-        """Like ``record`` in chunks of at most ``chunk`` steps (bounded memory): yields one
-        Records per chunk (the first starts with record 0; ``t`` is global). A failure raises
-        ConvergenceError / DomainError / RecordError with ``.partial`` the failing chunk's
-        records."""
-        from .records import stream_records
-        chunk = _int(chunk, "chunk", 1)
-        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every, tol,
-                                                           maxit, simplified, predictor)
-        yield from stream_records(self, self._b, gf, mu0, z0, h, steps, every, chunk, opts)
-
-    def record(self, g0, h, steps, xi0=None, mu0=None, every=1, tol=newton.DEFAULT_TOL,
-               maxit=newton.DEFAULT_MAXIT, simplified=None, predictor=True):
-        """Run ``steps`` steps keeping only the compiled record row (``record_names``: the
-        scene's g, mu, xi, energy, momentum, defect and expressions) every ``every`` steps;
-        returns a hpgen.runtime.records.Records. The row is evaluated inside the C loop;
-        when neither the step nor the row use g, g is not reconstructed (meta skip). The
-        states are bitwise those of ``simulate``. A failure raises (``.partial`` set)."""
-        chunks = list(self.stream_record(g0, h, steps, xi0, mu0, every, max(steps, 1), tol,
-                                         maxit, simplified, predictor))
-        return chunks[0]
-
-    def record_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None,
-                     tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
-                     predictor=True) -> list:
-        """``record`` for an ensemble (starts as in ``simulate_batch``), in C over ``threads``
-        threads (default: the CPU count); each run's rows are bitwise those of ``record`` on
-        its own. Returns B Records; a failed run's Records is partial with ``.error`` set
-        (nothing is raised)."""
-        from .records import make_records
-        if self.backend != "c":
-            raise ModelError("record_batch needs the C backend", field="backend")
-        h, steps, every, opts, starts = self._prepare_batch(g0, h, steps, xi0, mu0, every, tol,
-                                                            maxit, simplified, predictor)
-        threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
-        gs, ms, _, z0s = zip(*starts) if starts else ((), (), (), ())
-        rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps, every, opts, threads)
-        return [make_records(self, rows[b, :n_rows[b]], sts[b], h, every, 0.0)
                 for b in range(len(starts))]

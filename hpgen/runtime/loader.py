@@ -13,7 +13,8 @@ import re
 from pathlib import Path
 
 from ..errors import ModelError
-from .backends import CBackend, PythonBackend
+from .backends import PythonBackend
+from .cbackend import CBackend
 from .integrator import Integrator
 
 META_FORMAT = 1

@@ -10,13 +10,15 @@ numpy and the standard library only.
 """
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-from ..errors import RecordError
-from . import newton
+from ..errors import ModelError, RecordError
+from . import loop, newton
+from .args import _error, _int
 
 
 @dataclass(frozen=True, eq=False)
@@ -82,7 +84,6 @@ def make_records(integ, rows, st, h, every, t0) -> Records:
                           "the record expressions are defined", step=int(st["step"]),
                           time=float(st["step"]) * h, names=bad)
     elif st["code"] != newton.OK:
-        from .integrator import _error
         err = _error(st["code"], st["step"], st["step"] * h, st["residual"], st["iterations"])
     rec = Records(t=t0 + np.arange(len(rows)) * every * h,
                   arrays=split_rows(rows, layout, integ.n), h=h, every=every,
@@ -98,7 +99,7 @@ def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts):
     the initial state); raises the chunk's error (with .partial) on a failure."""
     code, row0 = backend.record(gf, mu0)
     if code != newton.OK:
-        rec = make_records(integ, row0.reshape(1, -1), {**newton.new_status(), "code": code},
+        rec = make_records(integ, row0.reshape(1, -1), {**loop.new_status(), "code": code},
                            h, every, 0.0)
         raise rec.error
     run = backend.start(gf, mu0, z0)
@@ -115,3 +116,53 @@ def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts):
         yield rec
         k += done
         first = False
+
+
+class RecordsMixin:
+    """Integrator methods for scene records (uses the Integrator's _prepare, _prepare_batch
+    and backend)."""
+
+    @property
+    def record_names(self) -> tuple:
+        """What this module's record row holds (the scene's ``record:`` list, in order)."""
+        return tuple(name for name, _, _ in self.meta["record"])
+
+    def stream_record(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000,
+                      tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
+                      predictor=True):
+        """Like ``record`` in chunks of at most ``chunk`` steps (bounded memory): yields one
+        Records per chunk (the first starts with record 0; ``t`` is global). A failure raises
+        ConvergenceError / DomainError / RecordError with ``.partial`` the failing chunk's
+        records."""
+        chunk = _int(chunk, "chunk", 1)
+        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every, tol,
+                                                           maxit, simplified, predictor)
+        yield from stream_records(self, self._b, gf, mu0, z0, h, steps, every, chunk, opts)
+
+    def record(self, g0, h, steps, xi0=None, mu0=None, every=1, tol=newton.DEFAULT_TOL,
+               maxit=newton.DEFAULT_MAXIT, simplified=None, predictor=True):
+        """Run ``steps`` steps keeping only the compiled record row (``record_names``: the
+        scene's g, mu, xi, energy, momentum, defect and expressions) every ``every`` steps;
+        returns a hpgen.runtime.records.Records. The row is evaluated inside the C loop;
+        when neither the step nor the row use g, g is not reconstructed (meta skip). The
+        states are bitwise those of ``simulate``. A failure raises (``.partial`` set)."""
+        chunks = list(self.stream_record(g0, h, steps, xi0, mu0, every, max(steps, 1), tol,
+                                         maxit, simplified, predictor))
+        return chunks[0]
+
+    def record_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None,
+                     tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
+                     predictor=True) -> list:
+        """``record`` for an ensemble (starts as in ``simulate_batch``), in C over ``threads``
+        threads (default: the CPU count); each run's rows are bitwise those of ``record`` on
+        its own. Returns B Records; a failed run's Records is partial with ``.error`` set
+        (nothing is raised)."""
+        if self.backend != "c":
+            raise ModelError("record_batch needs the C backend", field="backend")
+        h, steps, every, opts, starts = self._prepare_batch(g0, h, steps, xi0, mu0, every, tol,
+                                                            maxit, simplified, predictor)
+        threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
+        gs, ms, _, z0s = zip(*starts) if starts else ((), (), (), ())
+        rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps, every, opts, threads)
+        return [make_records(self, rows[b, :n_rows[b]], sts[b], h, every, 0.0)
+                for b in range(len(starts))]

@@ -1,0 +1,342 @@
+"""The C backend: kernels, Newton, step and the run loops of the compiled kernels.c through
+ctypes (interface: hpgen.runtime.backends). Kernel calls go through per-thread staging
+buffers of fixed address; batches split contiguous slices of runs over threads (the C calls
+release the GIL). Imports only the standard library and numpy.
+"""
+from __future__ import annotations
+
+import ctypes
+import threading
+
+import numpy as np
+
+from ..errors import BuildError
+from . import loop, newton
+from .backends import _Backend, _flat
+from .build import build_library
+
+_ABI = 3
+_F64 = np.dtype(np.float64)
+_RUN = ("run",)      # CBackend._staging key of the run state buffers (not a kernel name)
+
+
+def _addr(a: np.ndarray) -> int:
+    """Address of the data of a writable C-contiguous float64 array (through the buffer
+    protocol when it is not empty: a quarter of the cost of ``a.ctypes.data``)."""
+    return ctypes.addressof(ctypes.c_char.from_buffer(a)) if a.size else a.ctypes.data
+
+
+def _views(sizes):
+    """(block, views, addresses): consecutive flat views of the given sizes in one block."""
+    block = np.zeros(max(1, sum(sizes)))
+    base, views, ptrs, off = _addr(block), [], [], 0
+    for s in sizes:
+        views.append(block[off:off + s])
+        ptrs.append(base + 8 * off)
+        off += s
+    return block, views, ptrs
+
+
+class _Staging:
+    """One thread's argument buffers for a C function of flat double arrays: ``ins`` and
+    ``outs`` views of one block each (``out_all`` the outputs' block), ``ptrs`` their
+    addresses in argument order (inputs, then outputs), made once. Callers copy arguments
+    in and results out: no array handed out is a view of these buffers."""
+    __slots__ = ("ins", "outs", "out_all", "ptrs")
+
+    def __init__(self, ins, outs):
+        _, self.ins, pin = _views(ins)
+        self.out_all, self.outs, pout = _views(outs)
+        self.ptrs = tuple(pin + pout)
+
+
+class _Status(ctypes.Structure):
+    _fields_ = [("code", ctypes.c_longlong), ("step", ctypes.c_longlong),
+                ("iterations", ctypes.c_longlong), ("total_iterations", ctypes.c_longlong),
+                ("residual", ctypes.c_double), ("jacobians", ctypes.c_longlong)]
+
+    def as_dict(self) -> dict:
+        return {f: getattr(self, f) for f, _ in self._fields_}
+
+
+class _Options(ctypes.Structure):
+    _fields_ = [("tol", ctypes.c_double), ("maxit", ctypes.c_longlong),
+                ("simplified", ctypes.c_longlong), ("predictor", ctypes.c_longlong)]
+
+    @classmethod
+    def of(cls, o: newton.NewtonOptions) -> "_Options":
+        return cls(float(o.tol), int(o.maxit), int(bool(o.simplified)), int(bool(o.predictor)))
+
+
+def _over_threads(B: int, threads: int, work) -> None:
+    """work(lo, hi) on contiguous slices of range(B), one slice per thread (at most B
+    threads; the C calls inside release the GIL through ctypes)."""
+    from concurrent.futures import ThreadPoolExecutor
+    threads = max(1, min(int(threads), B))
+    bounds = [B * i // threads for i in range(threads + 1)]
+    slices = [(lo, hi) for lo, hi in zip(bounds, bounds[1:]) if hi > lo]
+    if len(slices) <= 1:
+        for lo, hi in slices:
+            work(lo, hi)
+        return
+    with ThreadPoolExecutor(len(slices)) as pool:
+        list(pool.map(lambda s: work(*s), slices))
+
+
+class CBackend(_Backend):
+    """Kernels, Newton, step and simulate from the compiled kernels.c (built on first use)."""
+    name = "c"
+
+    def __init__(self, module_dir, meta: dict, cc=None, cflags=None):
+        super().__init__(meta)
+        self.library = build_library(module_dir, cc=cc, cflags=cflags)
+        try:
+            lib = ctypes.CDLL(str(self.library))
+        except OSError as exc:
+            raise BuildError(f"cannot load {self.library.name}: {exc}") from None
+        lib.hpgen_hash.restype = ctypes.c_char_p
+        lib.hpgen_hash.argtypes = []
+        if lib.hpgen_hash().decode() != meta["hash"]:
+            raise BuildError(f"{self.library.name} was built from another kernels.c "
+                             "(hash mismatch); delete it to rebuild")
+        dims = (ctypes.c_longlong * 4)()
+        lib.hpgen_dims(dims)
+        if tuple(dims) != (_ABI, self.n, self.d, self.nz):
+            raise BuildError(f"{self.library.name}: ABI/dimensions {tuple(dims)} do not "
+                             "match meta.json")
+        self._fns = {}
+        for k, (ins, outs) in self._sig.items():
+            fn = getattr(lib, f"hpgen_kernel_{k}")
+            fn.argtypes = [ctypes.c_void_p] * (len(ins) + len(outs))
+            fn.restype = ctypes.c_int
+            self._fns[k] = fn
+        P, LL, D = ctypes.c_void_p, ctypes.c_longlong, ctypes.c_double
+        for name, args, res in (
+                ("hpgen_step", [P, P, D, P, P, P, P, P], ctypes.c_int),
+                ("hpgen_run_size", [], LL),
+                ("hpgen_run_init", [P, P, P, P], None),
+                ("hpgen_run_get", [P, P, P, P], LL),
+                ("hpgen_advance", [P, D, LL, LL, P, P, P, P], LL),
+                ("hpgen_advance_sections", [P, D, LL, P, LL, P, P, P, P, P, P], LL),
+                ("hpgen_observe", [LL, P, P, P, P, P, P], LL),
+                ("hpgen_advance_batch", [P, LL, D, LL, LL, P, LL, P, P, P], LL),
+                ("hpgen_record", [P, P, P], ctypes.c_int),
+                ("hpgen_advance_record", [P, D, LL, LL, P, P, P, P], LL),
+                ("hpgen_advance_record_batch", [P, LL, D, LL, LL, P, LL, P, P, P], LL)):
+            fn = getattr(lib, name)
+            fn.argtypes, fn.restype = args, res
+        self.run_size = int(lib.hpgen_run_size())
+        self._lib = lib
+        self._tls = threading.local()    # per thread: {key: _Staging} (see _staging)
+
+    def _staging(self, key) -> _Staging:
+        """This thread's staging buffers for kernel ``key``, or for _RUN (g, p, z in and
+        out: hpgen_run_init / hpgen_run_get); per thread, so that concurrent calls (threads;
+        ctypes releases the GIL) never share them."""
+        try:
+            return self._tls.staging[key]
+        except AttributeError:
+            self._tls.staging = {}
+        except KeyError:
+            pass
+        nn, d, nz = self.n * self.n, self.d, self.nz
+        ins, outs = self._sig[key] if key != _RUN else ([nn, d, nz], [nn, d, nz])
+        st = self._tls.staging[key] = _Staging(ins, outs)
+        return st
+
+    def _run_k(self, run) -> int:
+        """The steps done k of a run (hpgen_run_get into this thread's scratch)."""
+        st = self._staging(_RUN)
+        return int(self._lib.hpgen_run_get(run, *st.ptrs[3:]))
+
+    def call(self, name, *args):
+        # arguments copied into this thread's fixed buffers of the kernel (their addresses
+        # made once), outputs zeroed before and copied out after the call
+        try:
+            st = self._tls.staging[name]
+        except (AttributeError, KeyError):
+            st = self._staging(name)
+        ins = st.ins
+        if len(args) != len(ins):
+            raise TypeError(f"kernel {name} takes {len(ins)} arguments, got {len(args)}")
+        for i, (x, buf) in enumerate(zip(args, ins)):
+            if type(x) is np.ndarray and x.dtype is _F64 and x.shape == buf.shape:
+                buf[...] = x
+            else:
+                buf[...] = _flat(x, len(buf), f"{name} input {i}")
+        st.out_all.fill(0.0)
+        self._fns[name](*st.ptrs)
+        return [o.copy() for o in st.outs]
+
+    def step(self, g, p, hv, z, opts):
+        nn, d = self.n * self.n, self.d
+        g, p = _flat(g, nn, "g"), _flat(p, d, "p")
+        z = np.array(_flat(z, self.nz, "z"))
+        g1, p1, st, o = np.zeros(nn), np.zeros(d), _Status(), _Options.of(opts)
+        code = self._lib.hpgen_step(g.ctypes.data, p.ctypes.data, float(hv[0]), z.ctypes.data,
+                                    ctypes.byref(o), g1.ctypes.data, p1.ctypes.data,
+                                    ctypes.byref(st))
+        if code < 0:
+            raise ValueError("hpgen_step rejected its arguments")
+        if code != newton.OK:
+            return code, None, None, z, st.iterations, st.residual
+        return code, g1, p1, z, st.iterations, st.residual
+
+    def start(self, g0, p0, z0):
+        """A run (a ctypes byte buffer holding a C ``hpgen_run``) at (g0, p0), start z0."""
+        nn, d = self.n * self.n, self.d
+        g0, p0 = _flat(g0, nn, "g0"), _flat(p0, d, "p0")
+        z0 = _flat(z0, self.nz, "z0")
+        run = ctypes.create_string_buffer(self.run_size)
+        self._init_run(run, g0, p0, z0)
+        return run
+
+    def _init_run(self, run, g0, p0, z0):
+        """hpgen_run_init from flat arrays of the right sizes (copied in: this thread's
+        staging buffers)."""
+        st = self._staging(_RUN)
+        st.ins[0][...], st.ins[1][...], st.ins[2][...] = g0, p0, z0
+        self._lib.hpgen_run_init(run, *st.ptrs[:3])
+
+    def simulate(self, g0, p0, h, z0, steps, every, opts):
+        """_Backend.simulate in one pair of record arrays: step 0 in row 0, hpgen_advance
+        writing from row 1 (a new run is at k = 0: no state query)."""
+        nn, d = self.n * self.n, self.d
+        run = self.start(g0, p0, z0)
+        K = self.records_in(0, steps, every) + 1
+        g_all, p_all = np.zeros((K, nn)), np.zeros((K, d))
+        g_all[0], p_all[0] = g0, p0
+        st, o = _Status(), _Options.of(opts)
+        done = self._lib.hpgen_advance(run, float(h), steps, every, ctypes.byref(o),
+                                       _addr(g_all) + 8 * nn, _addr(p_all) + 8 * d,
+                                       ctypes.byref(st))
+        if st.code < 0:
+            raise ValueError("hpgen_advance rejected its arguments")
+        K = self.records_in(0, done, every) + 1
+        return int(done), g_all[:K], p_all[:K], st.as_dict()
+
+    def state(self, run):
+        """(g flat, p, z, k) of a run."""
+        st = self._staging(_RUN)
+        k = self._lib.hpgen_run_get(run, *st.ptrs[3:])
+        g, p, z = (o.copy() for o in st.outs)
+        return g, p, z, int(k)
+
+    def advance(self, run, h, steps, every, opts):
+        """(steps done, g_rec (K, nn), p_rec (K, d), status); K records of this call."""
+        nn, d = self.n * self.n, self.d
+        K = self.records_in(self._run_k(run), steps, every)
+        g_rec, p_rec, st, o = np.zeros((K, nn)), np.zeros((K, d)), _Status(), _Options.of(opts)
+        done = self._lib.hpgen_advance(run, float(h), steps, every, ctypes.byref(o),
+                                       _addr(g_rec), _addr(p_rec), ctypes.byref(st))
+        if st.code < 0:
+            raise ValueError("hpgen_advance rejected its arguments")
+        K = self.records_in(self._run_k(run) - done, done, every)
+        return int(done), g_rec[:K], p_rec[:K], st.as_dict()
+
+    def observe(self, g_rec, p_rec):
+        """(records done, xi (K, d), E (K,), m (K, d), e (K,)) of K records (g column-major
+        flat rows), one C call (hpgen_observe)."""
+        K, d = len(p_rec), self.d
+        g_rec = np.ascontiguousarray(g_rec, dtype=np.float64).reshape(K, self.n * self.n)
+        p_rec = np.ascontiguousarray(p_rec, dtype=np.float64).reshape(K, d)
+        xi, E, m, e = np.zeros((K, d)), np.zeros(K), np.zeros((K, d)), np.zeros(K)
+        done = self._lib.hpgen_observe(K, g_rec.ctypes.data, p_rec.ctypes.data, xi.ctypes.data,
+                                       E.ctypes.data, m.ctypes.data, e.ctypes.data)
+        return int(done), xi, E, m, e
+
+    def advance_sections(self, run, h, steps, cap, opts):
+        """(steps done, k_rec (K,), t_rec (K,), g_rec (K, nn), p_rec (K, d), status): the
+        section crossings of this call, at most cap."""
+        nn, d = self.n * self.n, self.d
+        k_rec, t_rec = np.zeros(cap, dtype=np.int64), np.zeros(cap)
+        g_rec, p_rec = np.zeros((cap, nn)), np.zeros((cap, d))
+        n_rec, st, o = ctypes.c_longlong(0), _Status(), _Options.of(opts)
+        done = self._lib.hpgen_advance_sections(
+            run, float(h), steps, ctypes.byref(o), cap, t_rec.ctypes.data, g_rec.ctypes.data,
+            p_rec.ctypes.data, k_rec.ctypes.data, ctypes.byref(n_rec), ctypes.byref(st))
+        if st.code < 0:
+            raise ValueError("hpgen_advance_sections rejected its arguments")
+        K = n_rec.value
+        return int(done), k_rec[:K], t_rec[:K], g_rec[:K], p_rec[:K], st.as_dict()
+
+    def _batch_runs(self, g0s, p0s, z0s):
+        """(buffer, its address): B C runs, run b started at (g0s[b], p0s[b]), z0s[b]."""
+        nn, d, B = self.n * self.n, self.d, len(g0s)
+        runs = ctypes.create_string_buffer(self.run_size * B)
+        base = ctypes.addressof(runs)
+        for b in range(B):
+            g0, p0 = _flat(g0s[b], nn, "g0"), _flat(p0s[b], d, "p0")
+            self._init_run(base + b * self.run_size, g0, p0, _flat(z0s[b], self.nz, "z0"))
+        return runs, base
+
+    def simulate_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads):
+        """B independent runs; each thread advances a contiguous slice of them with one C
+        call (ctypes releases the GIL). Returns (done (B,), g_rec (B, K, nn), p_rec (B, K, d),
+        statuses); K = steps // every + 1 including step 0; rows after a failure are 0."""
+        nn, d, B = self.n * self.n, self.d, len(g0s)
+        K = steps // every + 1
+        runs, base = self._batch_runs(g0s, p0s, z0s)
+        g_rec, p_rec = np.zeros((B, K, nn)), np.zeros((B, K, d))
+        g_rec[:, 0] = np.asarray(g0s, dtype=np.float64).reshape(B, nn)
+        p_rec[:, 0] = np.asarray(p0s, dtype=np.float64).reshape(B, d)
+        sts, o = (_Status * B)(), _Options.of(opts)
+
+        def work(lo, hi):
+            self._lib.hpgen_advance_batch(
+                base + lo * self.run_size, hi - lo, float(h), steps, every,
+                ctypes.byref(o), K, g_rec[lo:, 1:].ctypes.data, p_rec[lo:, 1:].ctypes.data,
+                ctypes.byref(sts, lo * ctypes.sizeof(_Status)))
+
+        _over_threads(B, threads, work)
+        done = np.array([s.step for s in sts])
+        return done, g_rec, p_rec, [s.as_dict() for s in sts]
+
+    def record(self, g, p):
+        """(code, row (W,)): the scene's record row at (g flat, p) (hpgen_record)."""
+        g, p = _flat(g, self.n * self.n, "g"), _flat(p, self.d, "p")
+        row = np.zeros(self.record_width)
+        code = self._lib.hpgen_record(g.ctypes.data, p.ctypes.data, row.ctypes.data)
+        return int(code), row
+
+    def advance_record(self, run, h, steps, every, opts):
+        """(steps done, rows (K, W), status): the record rows of this call, one C call
+        (hpgen_advance_record; g not reconstructed when skip_g)."""
+        K = self.records_in(self.state(run)[3], steps, every)
+        rows, st, o = np.zeros((K, self.record_width)), _Status(), _Options.of(opts)
+        n_rec = ctypes.c_longlong(0)
+        done = self._lib.hpgen_advance_record(run, float(h), steps, every, ctypes.byref(o),
+                                              rows.ctypes.data, ctypes.byref(n_rec),
+                                              ctypes.byref(st))
+        if st.code < 0:
+            raise ValueError("hpgen_advance_record rejected its arguments")
+        return int(done), rows[:n_rec.value], st.as_dict()
+
+    def record_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads):
+        """B independent runs keeping record rows (hpgen_advance_record_batch), each thread
+        a contiguous slice in one C call. Returns (rows (B, K, W) with row 0 the start,
+        rows written per run (B,) including row 0, statuses); codes of row 0 that failed
+        are reported in the status with step 0 (the run is not stepped)."""
+        B, W = len(g0s), self.record_width
+        K = steps // every + 1
+        runs, base = self._batch_runs(g0s, p0s, z0s)
+        rows = np.zeros((B, K, W))
+        first = [self.record(g0s[b], p0s[b]) for b in range(B)]
+        for b, (_, row) in enumerate(first):
+            rows[b, 0] = row
+        n_rec = np.zeros(B, dtype=np.int64)
+        sts, o = (_Status * B)(), _Options.of(opts)
+
+        def work(lo, hi):
+            self._lib.hpgen_advance_record_batch(
+                base + lo * self.run_size, hi - lo, float(h), steps, every,
+                ctypes.byref(o), K, rows[lo:, 1:].ctypes.data, n_rec[lo:].ctypes.data,
+                ctypes.byref(sts, lo * ctypes.sizeof(_Status)))
+
+        _over_threads(B, threads, work)
+        out = [s.as_dict() for s in sts]
+        for b, (code, _) in enumerate(first):
+            if code != newton.OK:
+                out[b] = {**loop.new_status(), "code": int(code)}
+                n_rec[b] = 0
+        return rows, n_rec + 1, out

@@ -1,0 +1,181 @@
+"""The run loop of kernels.c.j2 in Python (hpgen_run_step, hpgen_advance,
+hpgen_advance_record, hpgen_advance_sections, hpgen_velocity / hpgen_record_row): the same
+order of operations on lists of Python floats with the module's raw kernels, so that the
+Python backend's runs are those of the C backend (bitwise for nz <= UNROLL_MAX, see
+hpgen.runtime.newton). One step is newton.step_lists. numpy and the standard library only.
+"""
+from __future__ import annotations
+
+from .newton import (_INF, _NAN, NONFINITE, OK, RECORD, ROUNDOFF_FLOOR, Kernels,
+                     NewtonMemory, NewtonOptions, _floats, _isfinite, all_finite, norm_inf,
+                     step_lists)
+
+
+class Run:
+    """A run in progress (the C backend's ``hpgen_run``): state (g_k, p_k) flat, the last
+    solution z, the two before (zprev, zprev2: predictor; have_prev of them valid), the Newton
+    memory and the steps done k; vectors are lists of Python floats."""
+
+    def __init__(self, g0, p0, z0):
+        self.g, self.p, self.z = _floats(g0), _floats(p0), _floats(z0)
+        self.zprev = self.zprev2 = None
+        self.have_prev = 0
+        self.memory = NewtonMemory()
+        self.k = 0
+        self.s = None            # section(g_k, p_k) once evaluated (advance_sections)
+        self.g_stale = False     # g is g_0, not g_k (advance_record without g)
+
+
+def new_status() -> dict:
+    return {"code": OK, "step": 0, "iterations": 0, "total_iterations": 0, "residual": 0.0,
+            "jacobians": 0}
+
+
+def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOptions, st,
+              with_g=True):
+    """One step of ``run`` like ``hpgen_run_step`` in C: predictor, step, run moved on success
+    (with_g False: p only, g kept); st's counters updated (iterations, residual,
+    total_iterations, jacobians; code and step on failure). Returns the status code."""
+    # start: the polynomial through the last solutions, extrapolated one step (quadratic
+    # 3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before)
+    if opts.predictor and run.have_prev >= 2:
+        zs = [3.0 * (a - b) + c for a, b, c in zip(run.z, run.zprev, run.zprev2)]
+    elif opts.predictor and run.have_prev == 1:
+        zs = [2.0 * a - b for a, b in zip(run.z, run.zprev)]
+    else:
+        zs = run.z
+    first = run.k == 0
+    # the first step starts from the crude guess kernel: full Newton
+    code, g1, p1, zs, it, r, jacs = step_lists(kern, run.g, run.p, hv, zs,
+                                               full if first else opts, run.memory, first,
+                                               with_g)
+    st["iterations"], st["residual"] = it, r
+    st["total_iterations"] += it
+    st["jacobians"] += jacs
+    if code != OK:
+        st.update(code=code, step=run.k)
+        return code
+    run.zprev2, run.zprev, run.z = run.zprev, run.z, zs
+    if run.have_prev < 2:
+        run.have_prev += 1
+    run.g, run.p = g1, p1
+    run.k += 1
+    return OK
+
+
+def advance(kern: Kernels, run: Run, h, steps, every, opts: NewtonOptions):
+    """Advance ``run`` by ``steps`` steps like ``hpgen_advance`` in C.
+
+    Returns (steps done, records [(g flat, p)] (lists) of the global steps k % every == 0
+    reached, status dict with code, step, iterations, total_iterations, residual, jacobians).
+    """
+    if run.g_stale:
+        raise ValueError("advance: this run was advanced without its group element "
+                         "(advance_record): start a new run")
+    hv = [float(h)]
+    st, recs = new_status(), []
+    full = NewtonOptions(opts.tol, opts.maxit, False, opts.predictor)
+    for n in range(steps):
+        if _run_step(kern, run, hv, opts, full, st) != OK:
+            return n, recs, st
+        if run.k % every == 0:
+            recs.append((run.g, run.p))
+    st["step"] = run.k
+    return steps, recs, st
+
+
+def velocity(velocity_step, g, p, quadratic) -> tuple:
+    """(code, xi) with legendre(g, xi) = p, like ``hpgen_velocity`` in C: Newton steps
+    velocity_step(g, p, xi) -> [xi1] from xi = 0; one step when ``quadratic``, else until
+    |dxi| <= 1e-14 (1 + |xi|) or the round-off floor, at most 50 steps; RECORD on failure."""
+    xi, dprev = [0.0] * len(p), _INF
+    for it in range(1, 51):
+        x1 = velocity_step(g, p, xi)[0]
+        if not all_finite(x1):
+            return RECORD, x1
+        dn = 0.0
+        for a, b in zip(x1, xi):
+            dx = abs(a - b)
+            if dx > dn:
+                dn = dx
+        xi = x1
+        if quadratic:
+            return OK, xi
+        xn = norm_inf(xi)
+        if dn <= 1e-14 * (1.0 + xn):
+            return OK, xi
+        if it > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + xn):
+            return OK, xi
+        dprev = dn
+    return RECORD, xi
+
+
+def record_row(record, velocity_step, width, g, p, uses_xi, quadratic) -> tuple:
+    """(code, row) like ``hpgen_record_row`` in C (raw kernels record and velocity_step; a
+    velocity that does not converge gives a row of ``width`` NaNs)."""
+    if uses_xi:
+        code, xi = velocity(velocity_step, g, p, quadratic)
+        if code != OK:
+            return RECORD, [_NAN] * width
+    else:
+        xi = [0.0] * len(p)
+    row = record(g, p, xi)[0]
+    return (OK if all_finite(row) else RECORD), row
+
+
+def advance_record(kern: Kernels, row_of, run: Run, h, steps, every, opts: NewtonOptions,
+                   skip_g):
+    """Advance ``run`` like ``hpgen_advance_record`` in C: ``row_of(g, p) -> (code, row)`` at
+    the global steps k % every == 0; skip_g: update_p only (run.g stays g_0, g_stale).
+    Returns (steps done, rows (lists), status dict); a failed row stops the run after its
+    step with code RECORD (the row is kept)."""
+    hv = [float(h)]
+    st, rows = new_status(), []
+    full = NewtonOptions(opts.tol, opts.maxit, False, opts.predictor)
+    if skip_g:
+        run.g_stale = True
+    for n in range(steps):
+        if _run_step(kern, run, hv, opts, full, st, not skip_g) != OK:
+            return n, rows, st
+        if run.k % every == 0:
+            code, row = row_of(run.g, run.p)
+            rows.append(row)
+            if code != OK:
+                st.update(code=RECORD, step=run.k)
+                return n + 1, rows, st
+    st["step"] = run.k
+    return steps, rows, st
+
+
+def advance_sections(kern: Kernels, section, chart_point, run: Run, h, steps, cap,
+                     opts: NewtonOptions):
+    """Advance ``run`` by up to ``steps`` steps recording the upward crossings of
+    section(g, p) = 0, like ``hpgen_advance_sections`` in C (same formulas, same order of
+    operations). section(g, p) -> [[s]], chart_point(z, g, hv, [theta]) -> [g_theta] (raw
+    kernels). Returns (steps done, records [(k, t, g flat, p)], status dict)."""
+    if run.g_stale:
+        raise ValueError("advance_sections: this run was advanced without its group element "
+                         "(advance_record): start a new run")
+    hv = [float(h)]
+    st, recs = new_status(), []
+    full = NewtonOptions(opts.tol, opts.maxit, False, opts.predictor)
+    if run.s is None:
+        run.s = section(run.g, run.p)[0][0]
+    n = 0
+    while n < steps and len(recs) < cap:
+        s0, k, g0, p0 = run.s, run.k, run.g, run.p
+        if _run_step(kern, run, hv, opts, full, st) != OK:
+            return n, recs, st
+        n += 1
+        s1 = section(run.g, run.p)[0][0]
+        if not _isfinite(s1):
+            st.update(code=NONFINITE, step=run.k)
+            return n, recs, st
+        run.s = s1
+        if s0 < 0.0 and s1 >= 0.0:
+            theta = s0 / (s0 - s1)
+            p_c = [(1.0 - theta) * a + theta * b for a, b in zip(p0, run.p)]
+            g_c = chart_point(run.z, g0, hv, [theta])[0]
+            recs.append((k, (float(k) + theta) * float(h), g_c, p_c))
+    st["step"] = run.k
+    return n, recs, st

@@ -1,0 +1,99 @@
+"""Poincare sections of the scene's ``section`` s(g, mu) = 0, found inside the C step loop
+(hpgen_advance_sections; the Python backend mirrors it): the Integrator methods ``sections``
+and ``sections_batch`` (see hpgen.runtime.trajectory.SectionCrossings for the conventions).
+"""
+from __future__ import annotations
+
+import os
+
+import numpy as np
+
+from ..errors import ModelError
+from . import newton
+from .args import _error, _int, _positive
+from .trajectory import SectionCrossings
+
+
+class SectionsMixin:
+    """Integrator methods for section crossings (uses the Integrator's _options, _initial,
+    _batch_starts and backend)."""
+
+    def sections(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
+                 tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
+                 predictor=True, chunk=100_000) -> SectionCrossings:
+        """Run up to ``steps`` steps and return the upward crossings of the model's
+        ``scene.section`` s(g, mu) = 0 (compiled into the step loop: nothing else is kept), at
+        most ``max_crossings`` (then the run stops at that crossing's step). The states are
+        bitwise those of ``simulate``. A failed step raises ConvergenceError / DomainError
+        with ``.partial`` the crossings found before it."""
+        self._need_section()
+        h = _positive(h, "h")
+        steps = _int(steps, "steps", 0)
+        cap_total = None if max_crossings is None else _int(max_crossings, "max_crossings", 1)
+        chunk = _int(chunk, "chunk", 1)
+        opts = self._options(tol, maxit, simplified, predictor)
+        gf, mu0, xi0 = self._initial(g0, xi0, mu0)
+        out = self._sections_run(gf, mu0, xi0, h, steps, cap_total, chunk, opts)
+        if out.error is not None:
+            raise out.error
+        return out
+
+    def sections_batch(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
+                       threads=None, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT,
+                       simplified=None, predictor=True, chunk=100_000) -> list:
+        """``sections`` for B initial states (g0 (n, n) shared or (B, n, n); xi0 or mu0
+        (B, d)), the runs spread over ``threads`` threads (default: the CPU count); each
+        result is bitwise that of ``sections`` on its own. A failed run's SectionCrossings
+        is partial with ``.error`` set (nothing is raised)."""
+        from concurrent.futures import ThreadPoolExecutor
+        self._need_section()
+        h = _positive(h, "h")
+        steps = _int(steps, "steps", 0)
+        cap_total = None if max_crossings is None else _int(max_crossings, "max_crossings", 1)
+        chunk = _int(chunk, "chunk", 1)
+        opts = self._options(tol, maxit, simplified, predictor)
+        starts = self._batch_starts(g0, xi0, mu0)
+        threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
+
+        def one(start):
+            gf, m0, x0 = start
+            return self._sections_run(gf, m0, x0, h, steps, cap_total, chunk, opts)
+
+        if threads == 1 or self.backend != "c":
+            return [one(st) for st in starts]
+        with ThreadPoolExecutor(min(threads, len(starts))) as pool:
+            return list(pool.map(one, starts))
+
+    def _need_section(self):
+        if not self.meta.get("section"):
+            raise ModelError("the model's scene has no section; add `section: <expression in "
+                             "mu and g>` to the scene and recompile", field="scene.section")
+
+    def _sections_run(self, gf, mu0, xi0, h, steps, cap_total, chunk, opts):
+        """One run of sections from a checked start; the error (if any) is set, not raised."""
+        z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
+        run = self._b.start(gf, mu0, z0)
+        parts, k, iters, err = [], 0, 0, None
+        found = 0
+        while k < steps:
+            cap = chunk if cap_total is None else min(chunk, cap_total - found)
+            if cap < 1:
+                break
+            done, ks, ts, gs, ps, st = self._b.advance_sections(run, h, steps - k, cap, opts)
+            parts.append((ks, ts, gs, ps))
+            k, found, iters = k + done, found + len(ts), iters + int(st["total_iterations"])
+            if st["code"] != newton.OK:
+                err = _error(st["code"], st["step"], st["step"] * h, st["residual"],
+                             st["iterations"])
+                break
+        n = self.n
+        cat = lambda i, shape: (np.concatenate([q[i] for q in parts]) if parts  # noqa: E731
+                                else np.zeros(shape))
+        gs = cat(2, (0, n * n)).reshape(-1, n, n).transpose(0, 2, 1)
+        out = SectionCrossings(t=cat(1, (0,)), g=np.ascontiguousarray(gs),
+                               mu=cat(3, (0, self.d)).reshape(-1, self.d),
+                               step=cat(0, (0,)).astype(np.int64), h=h, steps=k,
+                               partial=err is not None, error=err, newton_iterations=iters)
+        if err is not None:
+            err.partial = out
+        return out
