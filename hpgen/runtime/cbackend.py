@@ -302,7 +302,7 @@ class CBackend(_Backend):
     def advance_record(self, run, h, steps, every, opts):
         """(steps done, rows (K, W), status): the record rows of this call, one C call
         (hpgen_advance_record; g not reconstructed when skip_g)."""
-        K = self.records_in(self.state(run)[3], steps, every)
+        K = self.records_in(self._run_k(run), steps, every)
         rows, st, o = np.zeros((K, self.record_width)), _Status(), _Options.of(opts)
         n_rec = ctypes.c_longlong(0)
         done = self._lib.hpgen_advance_record(run, float(h), steps, every, ctypes.byref(o),
