@@ -10,9 +10,11 @@ reads ru_maxrss, runs the 10^7 steps, reads it again.
 Pass criteria:
 - memory flat: max RSS growth during the 10^7-step run below 4 MiB. The records need
   1001 x 12 doubles = 96 kB; any per-step allocation would need >= 10^7 x 8 B = 80 MB (a
-  single double per step). Sensitivity check in the same child: 10^6 steps recorded every
-  step (the records alone are 96 MB) must raise the peak by more than 50 MiB -- the
-  measure does see allocations of that kind;
+  single double per step). Sensitivity check in the same child: 2 x 10^6 steps recorded every
+  step (the records alone are 192 MB) must raise the peak by more than 50 MiB -- the
+  measure does see allocations of that kind (ru_maxrss only grows past the child's earlier
+  peak, which the imports and warm-up set: 10^6 steps, 96 MB of records written straight
+  into the result arrays, raised it by 49.9 MiB, too close to the bar);
 - energy error bounded, no drift: every sample's |E_k - E_0| is within 1.01x of the
   energy-error envelope of a dense run (first 10^4 steps, every step; the orbit is periodic
   in Pi, period ~ 10, so 10^3 time units reach the envelope), and a linear fit's slope
@@ -62,7 +64,7 @@ out = {"maxrss_before_kib": r0, "maxrss_after_kib": r1, "wall_s": wall,
        "compile_stack_imported": any(k in sys.modules for k in ("casadi", "sympy"))}
 del tr
 r2 = kb()
-integ.simulate(g0=np.eye(3), mu0=pi0, h=h, steps=1_000_000, every=1)    # sensitivity check
+integ.simulate(g0=np.eye(3), mu0=pi0, h=h, steps=2_000_000, every=1)    # sensitivity check
 out["control_growth_kib"] = kb() - r2
 print(json.dumps(out))
 """
@@ -70,7 +72,7 @@ print(json.dumps(out))
 
 @pytest.mark.slow
 def test_ten_million_steps_flat_memory_bounded_energy(compile_model, model_file, cache_dir):
-    """10^7 steps in a child process: max RSS growth < 4 MiB (control: > 50 MiB for 10^6
+    """10^7 steps in a child process: max RSS growth < 4 MiB (control: > 50 MiB for 2 x 10^6
     recorded steps), energy within 1.01x of the dense envelope, no drift, < 30 s."""
     integ = compile_model(FREE_BODY, **OPTS)            # builds the cache entry and library
     dense = integ.simulate(g0=np.eye(3), mu0=PI0, h=H, steps=10_000, every=1)
@@ -90,7 +92,7 @@ def test_ten_million_steps_flat_memory_bounded_energy(compile_model, model_file,
     print(f"\n[long run] {STEPS} steps h={H} in {res['wall_s']:.2f} s "
           f"({res['wall_s'] / STEPS * 1e6:.3f} us/step), {res['records']} records; max RSS "
           f"{res['maxrss_before_kib']} -> {res['maxrss_after_kib']} KiB (growth {growth} KiB; "
-          f"control: 10^6 steps recorded every step grew it by "
+          f"control: 2 x 10^6 steps recorded every step grew it by "
           f"{res['control_growth_kib'] / 1024:.1f} MiB); energy error: dense envelope "
           f"{envelope:.6e}, samples max {np.abs(err).max():.6e}, first tenth {first:.4e}, "
           f"last tenth {last:.4e}, slope*T {slope * t[-1]:+.2e}; spatial momentum drift "
