@@ -11,7 +11,8 @@ numpy and the standard library only.
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -19,6 +20,7 @@ import numpy as np
 from ..errors import ModelError, RecordError
 from . import loop, newton
 from .args import _error, _int
+from .trajectory import npz_path, run_metadata, write_npz
 
 
 @dataclass(frozen=True, eq=False)
@@ -35,10 +37,21 @@ class Records:
     error: Any = None
     newton_iterations: int = 0
     jacobians: int = 0
+    integrator: Any = field(default=None, repr=False, compare=False)
 
     def __post_init__(self):
         for a in (self.t, *self.arrays.values()):
             a.flags.writeable = False
+
+    def save(self, path) -> Path:
+        """Write t and the record arrays to an .npz (".npz" appended if missing) atomically,
+        with the scalars of Trajectory.save (h, every, partial, newton_iterations, error,
+        module, hash): the file ``hpgen run`` writes. Returns the path written."""
+        path = npz_path(path)
+        write_npz(path, {"t": self.t, **self.arrays,
+                         **run_metadata(self.integrator, self.h, self.every, self.partial,
+                                        self.newton_iterations, self.error)})
+        return path
 
     @property
     def names(self) -> tuple:
@@ -88,7 +101,8 @@ def make_records(integ, rows, st, h, every, t0) -> Records:
     rec = Records(t=t0 + np.arange(len(rows)) * every * h,
                   arrays=split_rows(rows, layout, integ.n), h=h, every=every,
                   partial=err is not None, error=err,
-                  newton_iterations=int(st["total_iterations"]), jacobians=int(st["jacobians"]))
+                  newton_iterations=int(st["total_iterations"]), jacobians=int(st["jacobians"]),
+                  integrator=integ)
     if err is not None:
         err.partial = rec
     return rec
