@@ -63,18 +63,23 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
     return OK
 
 
+def _loop_start(run: Run, h, opts: NewtonOptions, what: str, with_g: bool):
+    """(hv, a new status, the full-Newton options of the first step) for a run loop; a loop
+    that needs g refuses a run advanced without it (g_stale, like the C loops)."""
+    if with_g and run.g_stale:
+        raise ValueError(f"{what}: this run was advanced without its group element "
+                         "(advance_record): start a new run")
+    return [float(h)], new_status(), NewtonOptions(opts.tol, opts.maxit, False, opts.predictor)
+
+
 def advance(kern: Kernels, run: Run, h, steps, every, opts: NewtonOptions):
     """Advance ``run`` by ``steps`` steps like ``hpgen_advance`` in C.
 
     Returns (steps done, records [(g flat, p)] (lists) of the global steps k % every == 0
     reached, status dict with code, step, iterations, total_iterations, residual, jacobians).
     """
-    if run.g_stale:
-        raise ValueError("advance: this run was advanced without its group element "
-                         "(advance_record): start a new run")
-    hv = [float(h)]
-    st, recs = new_status(), []
-    full = NewtonOptions(opts.tol, opts.maxit, False, opts.predictor)
+    hv, st, full = _loop_start(run, h, opts, "advance", with_g=True)
+    recs = []
     for n in range(steps):
         if _run_step(kern, run, hv, opts, full, st) != OK:
             return n, recs, st
@@ -129,9 +134,8 @@ def advance_record(kern: Kernels, row_of, run: Run, h, steps, every, opts: Newto
     the global steps k % every == 0; skip_g: update_p only (run.g stays g_0, g_stale).
     Returns (steps done, rows (lists), status dict); a failed row stops the run after its
     step with code RECORD (the row is kept)."""
-    hv = [float(h)]
-    st, rows = new_status(), []
-    full = NewtonOptions(opts.tol, opts.maxit, False, opts.predictor)
+    hv, st, full = _loop_start(run, h, opts, "advance_record", with_g=False)
+    rows = []
     if skip_g:
         run.g_stale = True
     for n in range(steps):
@@ -153,12 +157,8 @@ def advance_sections(kern: Kernels, section, chart_point, run: Run, h, steps, ca
     section(g, p) = 0, like ``hpgen_advance_sections`` in C (same formulas, same order of
     operations). section(g, p) -> [[s]], chart_point(z, g, hv, [theta]) -> [g_theta] (raw
     kernels). Returns (steps done, records [(k, t, g flat, p)], status dict)."""
-    if run.g_stale:
-        raise ValueError("advance_sections: this run was advanced without its group element "
-                         "(advance_record): start a new run")
-    hv = [float(h)]
-    st, recs = new_status(), []
-    full = NewtonOptions(opts.tol, opts.maxit, False, opts.predictor)
+    hv, st, full = _loop_start(run, h, opts, "advance_sections", with_g=True)
+    recs = []
     if run.s is None:
         run.s = section(run.g, run.p)[0][0]
     n = 0

@@ -26,12 +26,8 @@ class SectionsMixin:
         most ``max_crossings`` (then the run stops at that crossing's step). The states are
         bitwise those of ``simulate``. A failed step raises ConvergenceError / DomainError
         with ``.partial`` the crossings found before it."""
-        self._need_section()
-        h = _positive(h, "h")
-        steps = _int(steps, "steps", 0)
-        cap_total = None if max_crossings is None else _int(max_crossings, "max_crossings", 1)
-        chunk = _int(chunk, "chunk", 1)
-        opts = self._options(tol, maxit, simplified, predictor)
+        h, steps, cap_total, chunk, opts = self._section_args(h, steps, max_crossings, chunk,
+                                                             tol, maxit, simplified, predictor)
         gf, mu0, xi0 = self._initial(g0, xi0, mu0)
         out = self._sections_run(gf, mu0, xi0, h, steps, cap_total, chunk, opts)
         if out.error is not None:
@@ -46,12 +42,8 @@ class SectionsMixin:
         result is bitwise that of ``sections`` on its own. A failed run's SectionCrossings
         is partial with ``.error`` set (nothing is raised)."""
         from concurrent.futures import ThreadPoolExecutor
-        self._need_section()
-        h = _positive(h, "h")
-        steps = _int(steps, "steps", 0)
-        cap_total = None if max_crossings is None else _int(max_crossings, "max_crossings", 1)
-        chunk = _int(chunk, "chunk", 1)
-        opts = self._options(tol, maxit, simplified, predictor)
+        h, steps, cap_total, chunk, opts = self._section_args(h, steps, max_crossings, chunk,
+                                                             tol, maxit, simplified, predictor)
         starts = self._batch_starts(g0, xi0, mu0)
         threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
 
@@ -63,6 +55,16 @@ class SectionsMixin:
             return [one(st) for st in starts]
         with ThreadPoolExecutor(min(threads, len(starts))) as pool:
             return list(pool.map(one, starts))
+
+    def _section_args(self, h, steps, max_crossings, chunk, tol, maxit, simplified, predictor):
+        """(h, steps, crossing cap or None, chunk, options), checked; the module must have a
+        section."""
+        self._need_section()
+        h = _positive(h, "h")
+        steps = _int(steps, "steps", 0)
+        cap_total = None if max_crossings is None else _int(max_crossings, "max_crossings", 1)
+        return (h, steps, cap_total, _int(chunk, "chunk", 1),
+                self._options(tol, maxit, simplified, predictor))
 
     def _need_section(self):
         if not self.meta.get("section"):
