@@ -19,7 +19,7 @@ def add_parser(sub):
                    "cay/truncated, gauss2/exp/exact, gauss2/cay/exact, gauss3/cay/exact)")
     b.add_argument("--tau", help="comma list of chart maps (with --tableau/--rkmk: product)")
     b.add_argument("--rkmk", help="comma list of exact, truncated")
-    b.add_argument("--h", help="comma list of hpgen steps (default scene h * 2^-k, k = 0..4)")
+    b.add_argument("--h", help="comma list of hpgen steps (default scene h * 2^-k, k = -1..4)")
     b.add_argument("--rk4-h", help="comma list of RK4 steps (default: as --h)")
     b.add_argument("--collocation-h", help="comma list (default scene h * 2^-k, k = 0..2)")
     b.add_argument("--rtol", help="comma list for SciPy DOP853/RK45, atol = 1e-3 rtol "
