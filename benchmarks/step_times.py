@@ -54,20 +54,22 @@ def free_body(cache, quick):
     rng = np.random.default_rng(0)
     mus = rng.normal(size=(B, 3))
     mus /= np.linalg.norm(mus, axis=1)[:, None]
-    def batch_seconds(nsteps, threads):
-        times = []
-        for _ in range(3):
-            t0 = time.perf_counter()
-            integ.simulate_batch(np.eye(3), 0.1, nsteps, mu0=mus, every=max(nsteps, 1),
-                                 threads=threads)
-            times.append(time.perf_counter() - t0)
-        return statistics.median(times)
+    def per_body_step(run_batch):
+        """(seconds per body-step on 1 and 2 threads, setup seconds): the per-body setup
+        (Legendre inversion and Newton start in Python, result objects) is timed with 0
+        steps; the stepping rate is the marginal cost beyond it (medians of 3)."""
+        def seconds(nsteps, threads):
+            times = []
+            for _ in range(3):
+                t0 = time.perf_counter()
+                run_batch(np.eye(3), 0.1, nsteps, mu0=mus, every=max(nsteps, 1),
+                          threads=threads)
+                times.append(time.perf_counter() - t0)
+            return statistics.median(times)
+        setup = seconds(0, 1)
+        return {t: (seconds(bsteps, t) - setup) / (B * bsteps) for t in (1, 2)}, setup
 
-    # the per-body setup (Legendre inversion and Newton start in Python, Trajectory objects)
-    # is timed with 0 steps; the stepping rate is the marginal cost beyond it
-    setup = batch_seconds(0, 1)
-    res = {threads: (batch_seconds(bsteps, threads) - setup) / (B * bsteps)
-           for threads in (1, 2)}
+    res, setup = per_body_step(integ.simulate_batch)
     print(f"\nfree rigid body, reduced Cayley step (h = 0.1, {integ.nz} unknowns): "
           f"{one * 1e9:.0f} ns/step = {1 / one / 1e6:.2f} M steps/s; batched ensemble of {B} "
           f"bodies: {res[1] * 1e9:.0f} ns/body-step on 1 thread, {res[2] * 1e9:.0f} on 2 "
@@ -88,18 +90,7 @@ def free_body(cache, quick):
             run(np.eye(3), 0.1, steps, mu0=mu0, every=steps)
             best[name] = min(best[name], time.perf_counter() - t0)
 
-    def record_seconds(nsteps, threads):
-        times = []
-        for _ in range(3):
-            t0 = time.perf_counter()
-            reduced.record_batch(np.eye(3), 0.1, nsteps, mu0=mus, every=max(nsteps, 1),
-                                 threads=threads)
-            times.append(time.perf_counter() - t0)
-        return statistics.median(times)
-
-    setup = record_seconds(0, 1)
-    res = {threads: (record_seconds(bsteps, threads) - setup) / (B * bsteps)
-           for threads in (1, 2)}
+    res, _ = per_body_step(reduced.record_batch)
     print(f"  scene record [mu] (g never formed, update_p): {best['record'] / steps * 1e9:.0f} "
           f"ns/step against {best['simulate'] / steps * 1e9:.0f} forming g (same module, "
           f"interleaved, min of repeats); record_batch: {res[1] * 1e9:.0f} ns/body-step on 1 "

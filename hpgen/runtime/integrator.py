@@ -216,15 +216,21 @@ class Integrator(SectionsMixin, RecordsMixin):
         z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
         return h, steps, every, opts, gf, mu0, z0
 
-    def _prepare_batch(self, g0, h, steps, xi0, mu0, every, tol, maxit, simplified, predictor):
-        """(h, steps, every, options, starts [(g0 flat, mu0, xi0, z0)]) of an ensemble."""
+    def _prepare_batch(self, g0, h, steps, xi0, mu0, every, threads, tol, maxit, simplified,
+                       predictor, what):
+        """The checked arguments of an ensemble run by the C backend (``what``: the method, for
+        the error): (h, steps, every, options, threads, g0s flat, mu0s, Newton starts z0s)."""
+        if self.backend != "c":
+            raise ModelError(f"{what} needs the C backend", field="backend")
         h = _positive(h, "h")
         steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
         opts = self._options(tol, maxit, simplified, predictor)
         hv = np.array([h])
-        starts = [(gf, m, x, self._b.call("guess", x, gf, m, hv)[0])
+        starts = [(gf, m, self._b.call("guess", x, gf, m, hv)[0])
                   for gf, m, x in self._batch_starts(g0, xi0, mu0)]
-        return h, steps, every, opts, starts
+        threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
+        gs, ms, z0s = zip(*starts) if starts else ((), (), ())
+        return h, steps, every, opts, threads, gs, ms, z0s
 
     def simulate(self, g0, h, steps, xi0=None, mu0=None, every=1, tol=newton.DEFAULT_TOL,
                  maxit=newton.DEFAULT_MAXIT, simplified=None, predictor=True) -> Trajectory:
@@ -291,13 +297,10 @@ class Integrator(SectionsMixin, RecordsMixin):
         in C over ``threads`` threads (default: the CPU count). Each run's states are bitwise
         those of ``simulate`` on its own. Returns B Trajectories; a failed run's Trajectory
         is partial with ``.error`` set (nothing is raised)."""
-        if self.backend != "c":
-            raise ModelError("simulate_batch needs the C backend", field="backend")
-        h, steps, every, opts, starts = self._prepare_batch(g0, h, steps, xi0, mu0, every, tol,
-                                                            maxit, simplified, predictor)
-        threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
-        gs, ms, _, z0s = zip(*starts) if starts else ((), (), (), ())
+        h, steps, every, opts, threads, gs, ms, z0s = self._prepare_batch(
+            g0, h, steps, xi0, mu0, every, threads, tol, maxit, simplified, predictor,
+            "simulate_batch")
         done, g_rec, p_rec, sts = self._b.simulate_batch(gs, ms, h, z0s, steps, every, opts,
                                                          threads)
         return [self._trajectory(int(done[b]), g_rec[b], p_rec[b], sts[b], h, every)
-                for b in range(len(starts))]
+                for b in range(len(gs))]

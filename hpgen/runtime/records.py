@@ -10,14 +10,13 @@ numpy and the standard library only.
 """
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from ..errors import ModelError, RecordError
+from ..errors import RecordError
 from . import loop, newton
 from .args import _error, _int
 from .trajectory import npz_path, run_metadata, write_npz
@@ -171,12 +170,9 @@ class RecordsMixin:
         threads (default: the CPU count); each run's rows are bitwise those of ``record`` on
         its own. Returns B Records; a failed run's Records is partial with ``.error`` set
         (nothing is raised)."""
-        if self.backend != "c":
-            raise ModelError("record_batch needs the C backend", field="backend")
-        h, steps, every, opts, starts = self._prepare_batch(g0, h, steps, xi0, mu0, every, tol,
-                                                            maxit, simplified, predictor)
-        threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
-        gs, ms, _, z0s = zip(*starts) if starts else ((), (), (), ())
+        h, steps, every, opts, threads, gs, ms, z0s = self._prepare_batch(
+            g0, h, steps, xi0, mu0, every, threads, tol, maxit, simplified, predictor,
+            "record_batch")
         rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps, every, opts, threads)
         return [make_records(self, rows[b, :n_rows[b]], sts[b], h, every, 0.0)
-                for b in range(len(starts))]
+                for b in range(len(gs))]
