@@ -2,15 +2,15 @@
 
     derive(model, tableau, tau, rkmk) -> DiscreteStep
 
-tableau: a hpgen.tableaus.ButcherTableau; tau: 'exp' | 'cay' | 'skew';
-rkmk: 'exact' | 'truncated'. A left-invariant Lagrangian (no g in l) gives the reduced
-Euler-Poincare step, whose unknowns live in the algebra only.
+tableau: a hpgen.tableaus.ButcherTableau; tau: a chart map the model's group supports; rkmk:
+an RKMK constraint (both registered in hpgen.schemes). A left-invariant Lagrangian (no g in
+l) gives the reduced Euler-Poincare step, whose unknowns live in the algebra only.
 """
 from __future__ import annotations
 
 import casadi as ca
 
-from ..errors import ModelError
+from ..schemes import RKMK
 from .action import step_equations
 from .lagrangian import lagrangian_function, to_casadi
 from .records import record_row, velocity_step
@@ -39,11 +39,8 @@ def section_function(model, g, p):
 
 def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     group = model.group
-    if not group.supports(tau):
-        raise ModelError(f"tau = {tau} is not available on {group.name}; use one of "
-                         f"{', '.join(group.tau_kinds)}", field="integrator.tau")
-    if rkmk not in ("exact", "truncated"):
-        raise ModelError(f"expected 'exact' or 'truncated', got {rkmk!r}", field="integrator.rkmk")
+    group.require_chart(tau)
+    RKMK.check(rkmk, field="integrator.rkmk")
     n, d = group.n, group.d
     lag = lagrangian_function(model)
     reduced = model.left_invariant

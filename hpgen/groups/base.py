@@ -16,7 +16,8 @@ from dataclasses import dataclass
 
 import casadi as ca
 
-TAU_KINDS = ("exp", "cay", "skew")
+from ..errors import ModelError
+from ..schemes import TAU_CHOICES as TAU_KINDS  # noqa: F401  (re-exported by hpgen.groups)
 
 
 @dataclass(frozen=True)
@@ -35,8 +36,8 @@ class LieGroup:
     name: str
     n: int
     d: int
-    #: chart maps this group supports, a subset of TAU_KINDS
-    tau_kinds: tuple[str, ...] = ("exp", "cay")
+    #: chart maps this group supports, a subset of TAU_KINDS (from hpgen.schemes.TAU)
+    tau_kinds: tuple[str, ...] = ()
     #: (start, stop) rows/cols of the rotation block R in g, or None (R^n)
     rotation_block: tuple[int, int] | None = None
     #: (start, stop) rows of the translation column x (last column of g), or None
@@ -83,6 +84,12 @@ class LieGroup:
     # ---- chart maps --------------------------------------------------------------------
     def supports(self, kind: str) -> bool:
         return kind in self.tau_kinds
+
+    def require_chart(self, kind: str) -> None:
+        """ModelError on ``integrator.tau`` unless this group supports the chart ``kind``."""
+        if kind not in self.tau_kinds:
+            raise ModelError(f"tau = {kind} is not available on {self.name}; use one of "
+                             f"{', '.join(self.tau_kinds)}", field="integrator.tau")
 
     def tau(self, kind: str, x):
         """n x n matrix tau(x^)."""

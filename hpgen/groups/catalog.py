@@ -8,7 +8,9 @@ Matrix forms (n x n) and algebra coordinates (d):
 - SE3:  g = [[R, x], [0, 1]] (4 x 4); xi = (omega, v), angular first.
 - Products [G1, G2, ...]: g = blockdiag(g1, g2, ...), xi = (xi1, xi2, ...); every map acts
   factor by factor.
-Adding a group is one new class here plus one entry in ``_SIMPLE``.
+Adding a group is one new class here, one entry in ``_SIMPLE``, its chart functions in
+``hpgen.groups.maps.GROUP_CHARTS`` and its name in the ``groups`` of the charts it supports
+(``hpgen.schemes.TAU``).
 """
 from __future__ import annotations
 
@@ -17,7 +19,8 @@ import re
 import casadi as ca
 
 from ..errors import ModelError
-from .base import FactorLayout, LieGroup
+from ..schemes import charts_on
+from .base import TAU_KINDS, FactorLayout, LieGroup
 from . import maps
 
 
@@ -40,28 +43,35 @@ def _max_abs(M):
     return ca.mmax(ca.fabs(M))
 
 
-class ChartMapsFromModule(LieGroup):
-    """tau, dtau_inv, dtau and tau_margin from the functions ``<maps_prefix>_tau`` etc. of
-    hpgen.groups.maps (signature ``(group, kind, x)``)."""
-    maps_prefix: str
+class TabulatedCharts(LieGroup):
+    """tau, dtau_inv, dtau and tau_margin from the ``GroupCharts`` of the group's family in
+    ``hpgen.groups.maps.GROUP_CHARTS``; the charts it supports from ``hpgen.schemes.TAU``."""
+    family: str
+
+    @property
+    def tau_kinds(self) -> tuple[str, ...]:
+        return charts_on(self.family)
+
+    def _charts(self, kind) -> maps.GroupCharts:
+        self.require_chart(kind)
+        return maps.GROUP_CHARTS[self.family]
 
     def tau(self, kind, x):
-        return getattr(maps, f"{self.maps_prefix}_tau")(self, kind, x)
+        return self._charts(kind).tau(self, kind, x)
 
     def dtau_inv(self, kind, x):
-        return getattr(maps, f"{self.maps_prefix}_dtau_inv")(self, kind, x)
+        return self._charts(kind).dtau_inv(self, kind, x)
 
     def dtau(self, kind, x):
-        return getattr(maps, f"{self.maps_prefix}_dtau")(self, kind, x)
+        return self._charts(kind).dtau(self, kind, x)
 
     def tau_margin(self, kind, x):
-        return getattr(maps, f"{self.maps_prefix}_margin")(self, kind, x)
+        return self._charts(kind).margin(self, kind, x)
 
 
-class Rn(ChartMapsFromModule):
+class Rn(TabulatedCharts):
     """Translations of R^n as (n+1) x (n+1) matrices; abelian, every tau is exact (I + x^)."""
-    tau_kinds = ("exp", "cay")
-    maps_prefix = "rn"
+    family = "R<n>"
 
     def __init__(self, k: int):
         self.k, self.n, self.d, self.name = k, k + 1, k, f"R{k}"
@@ -81,10 +91,9 @@ class Rn(ChartMapsFromModule):
 
 
 
-class SO2(ChartMapsFromModule):
-    maps_prefix = "so2"
+class SO2(TabulatedCharts):
+    family = "SO2"
     name, n, d = "SO2", 2, 1
-    tau_kinds = ("exp", "cay", "skew")
     rotation_block = (0, 2)
 
     def hat(self, v):
@@ -101,10 +110,9 @@ class SO2(ChartMapsFromModule):
 
 
 
-class SO3(ChartMapsFromModule):
-    maps_prefix = "so3"
+class SO3(TabulatedCharts):
+    family = "SO3"
     name, n, d = "SO3", 3, 3
-    tau_kinds = ("exp", "cay", "skew")
     rotation_block = (0, 3)
 
     def hat(self, v):
@@ -121,10 +129,9 @@ class SO3(ChartMapsFromModule):
 
 
 
-class SE2(ChartMapsFromModule):
-    maps_prefix = "se2"
+class SE2(TabulatedCharts):
+    family = "SE2"
     name, n, d = "SE2", 3, 3
-    tau_kinds = ("exp", "cay")
     rotation_block = (0, 2)
     translation_block = (0, 2)
 
@@ -146,10 +153,9 @@ class SE2(ChartMapsFromModule):
 
 
 
-class SE3(ChartMapsFromModule):
-    maps_prefix = "se3"
+class SE3(TabulatedCharts):
+    family = "SE3"
     name, n, d = "SE3", 4, 6
-    tau_kinds = ("exp", "cay")
     rotation_block = (0, 3)
     translation_block = (0, 3)
 
@@ -178,8 +184,7 @@ class ProductGroup(LieGroup):
         self.name = "[" + ", ".join(f.name for f in factors) + "]"
         self.n = sum(f.n for f in factors)
         self.d = sum(f.d for f in factors)
-        self.tau_kinds = tuple(k for k in ("exp", "cay", "skew")
-                               if all(f.supports(k) for f in factors))
+        self.tau_kinds = tuple(k for k in TAU_KINDS if all(f.supports(k) for f in factors))
         lay, row, off = [], 0, 0
         for f in factors:
             lay.append(FactorLayout(f.name, row, f.n, off, f.d))
@@ -230,6 +235,7 @@ class ProductGroup(LieGroup):
 
 _SIMPLE = {"SO2": SO2, "SO3": SO3, "SE2": SE2, "SE3": SE3}
 _RN = re.compile(r"R([1-9][0-9]{0,2})")
+#: the group families, spelled as in hpgen.schemes.ChartMap.groups and maps.GROUP_CHARTS
 GROUP_NAMES = ("R<n>", "SO2", "SO3", "SE2", "SE3")
 
 

@@ -11,7 +11,12 @@ Every function takes ``(group, kind, x)``, x a d x 1 SX column in the convention
                     D tau^{-1}(g) . delta = dtau^{-1}_x(delta tau(x)^{-1}), g = tau(x).
 - ``<g>_margin``    scalar SX, > 0 while x is inside the domain where tau is a usable chart.
 
-Kinds (``ModelError`` on ``integrator.tau`` for a kind the group does not support):
+``GROUP_CHARTS`` tabulates the four functions of each group family; the groups of
+``hpgen.groups.catalog`` dispatch through it after checking the kind against the charts
+registered for their family in ``hpgen.schemes.TAU`` (``LieGroup.require_chart``: a
+``ModelError`` on ``integrator.tau``), so the functions here assume a supported kind.
+
+Kinds:
 
 - ``exp`` (eq:dexp): dexp^{-1}_x = f(ad_x), f(z) = z/(e^z - 1) = sum_j B_j/j! z^j, and
   dexp_x = g(ad_x), g(z) = (e^z - 1)/z. On so3 and se2, M = ad_x satisfies M^3 = -s M,
@@ -53,10 +58,11 @@ exactly finite with all derivatives at s = 0).
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
+from typing import Callable
 
 import casadi as ca
 
-from ..errors import ModelError
 from . import series
 
 _I2 = ca.SX.eye(2)
@@ -65,12 +71,6 @@ _J = ca.SX(ca.DM([[0, -1], [1, 0]]))
 
 
 # ---- helpers ---------------------------------------------------------------------------
-def _check(group, kind, allowed):
-    if kind not in allowed:
-        raise ModelError(f"tau = {kind} is not available on {group.name}; use one of "
-                         f"{', '.join(allowed)}", field="integrator.tau")
-
-
 def _hat3(w):
     return ca.vertcat(ca.horzcat(0, -w[2], w[1]), ca.horzcat(w[2], 0, -w[0]),
                       ca.horzcat(-w[1], w[0], 0))
@@ -159,6 +159,10 @@ def _skew_margin(s):
     return 0.5 - s
 
 
+#: chart -> its margin as a function of s = |omega|^2 (the domains of hpgen.schemes.TAU)
+_MARGINS = {"exp": _exp_margin, "cay": _cay_margin, "skew": _skew_margin}
+
+
 # ---- so3 building blocks (w a 3-vector, s = |w|^2, P = series.Point(s)) --------------------
 def _so3_exp(w, P, W2):
     """Rodrigues: I + (sin t/t) W + ((1 - cos t)/t^2) W^2."""
@@ -199,31 +203,23 @@ def _so2_rot(c, s_):
 # ---- R<n> --------------------------------------------------------------------------------
 def rn_tau(group, kind, x):
     """exp and cay both give I + x^ (x^ is nilpotent)."""
-    _check(group, kind, ("exp", "cay"))
     return ca.SX.eye(group.n) + group.hat(x)
 
 
 def rn_dtau_inv(group, kind, x):
-    _check(group, kind, ("exp", "cay"))
     return ca.SX.eye(group.d)
 
 
 def rn_dtau(group, kind, x):
-    _check(group, kind, ("exp", "cay"))
     return ca.SX.eye(group.d)
 
 
 def rn_margin(group, kind, x):
-    _check(group, kind, ("exp", "cay"))
     return ca.SX(1.0)
 
 
 # ---- SO2 ---------------------------------------------------------------------------------
-_SO_KINDS = ("exp", "cay", "skew")
-
-
 def so2_tau(group, kind, x):
-    _check(group, kind, _SO_KINDS)
     w = x[0]
     if kind == "exp":
         return _so2_rot(ca.cos(w), ca.sin(w))
@@ -234,7 +230,6 @@ def so2_tau(group, kind, x):
 
 
 def so2_dtau_inv(group, kind, x):
-    _check(group, kind, _SO_KINDS)
     w = x[0]
     if kind == "exp":
         return ca.SX.eye(1)
@@ -244,7 +239,6 @@ def so2_dtau_inv(group, kind, x):
 
 
 def so2_dtau(group, kind, x):
-    _check(group, kind, _SO_KINDS)
     w = x[0]
     if kind == "exp":
         return ca.SX.eye(1)
@@ -254,14 +248,12 @@ def so2_dtau(group, kind, x):
 
 
 def so2_margin(group, kind, x):
-    _check(group, kind, _SO_KINDS)
     s = x[0] * x[0]
-    return {"exp": _exp_margin(s), "cay": _cay_margin(s), "skew": _skew_margin(s)}[kind]
+    return _MARGINS[kind](s)
 
 
 # ---- SO3 ---------------------------------------------------------------------------------
 def so3_tau(group, kind, x):
-    _check(group, kind, _SO_KINDS)
     if kind == "exp":
         return _so3_exp(x, series.Point(ca.dot(x, x)), _sq3(x))
     W, s = _hat3(x), ca.dot(x, x)
@@ -271,7 +263,6 @@ def so3_tau(group, kind, x):
 
 
 def so3_dtau_inv(group, kind, x):
-    _check(group, kind, _SO_KINDS)
     if kind == "exp":
         return _so3_dexpinv(x, series.Point(ca.dot(x, x)), _sq3(x))
     W, s = _hat3(x), ca.dot(x, x)
@@ -282,7 +273,6 @@ def so3_dtau_inv(group, kind, x):
 
 
 def so3_dtau(group, kind, x):
-    _check(group, kind, _SO_KINDS)
     if kind == "exp":
         return _so3_dexp(x, series.Point(ca.dot(x, x)), _sq3(x))
     W, s = _hat3(x), ca.dot(x, x)
@@ -293,15 +283,11 @@ def so3_dtau(group, kind, x):
 
 
 def so3_margin(group, kind, x):
-    _check(group, kind, _SO_KINDS)
     s = ca.dot(x, x)
-    return {"exp": _exp_margin(s), "cay": _cay_margin(s), "skew": _skew_margin(s)}[kind]
+    return _MARGINS[kind](s)
 
 
 # ---- SE2: xi = (omega, vx, vy), g = [[R, p], [0, 1]] --------------------------------------
-_SE_KINDS = ("exp", "cay")
-
-
 def _se2_parts(x):
     w, v = x[0], x[1:3]
     return w, v, w * w, w * _J
@@ -318,7 +304,6 @@ def _se2_poly(x, s, a, b, c):
 
 
 def se2_tau(group, kind, x):
-    _check(group, kind, _SE_KINDS)
     w, v, s, W = _se2_parts(x)
     if kind == "exp":  # R = rot(w), p = (sinc I + cosc W) v, cos w = 1 - s cosc, sin w = w sinc
         P = series.Point(s)
@@ -330,7 +315,6 @@ def se2_tau(group, kind, x):
 
 
 def se2_dtau_inv(group, kind, x):
-    _check(group, kind, _SE_KINDS)
     w, v, s, W = _se2_parts(x)
     if kind == "exp":
         c = series.Point(s)["dexpinv_c"]  # f(M) = I - M/2 + c M^2
@@ -340,7 +324,6 @@ def se2_dtau_inv(group, kind, x):
 
 
 def se2_dtau(group, kind, x):
-    _check(group, kind, _SE_KINDS)
     w, v, s, W = _se2_parts(x)
     if kind == "exp":
         P = series.Point(s)  # g(M) = I + cosc M + sinc3 M^2
@@ -351,9 +334,8 @@ def se2_dtau(group, kind, x):
 
 
 def se2_margin(group, kind, x):
-    _check(group, kind, _SE_KINDS)
     s = x[0] * x[0]
-    return {"exp": _exp_margin(s), "cay": _cay_margin(s)}[kind]
+    return _MARGINS[kind](s)
 
 
 # ---- SE3: xi = (omega, v), g = [[R, p], [0, 1]] -------------------------------------------
@@ -363,7 +345,6 @@ def _se3_parts(x):
 
 
 def se3_tau(group, kind, x):
-    _check(group, kind, _SE_KINDS)
     if kind == "exp":  # [[exp(W), V v], [0, 1]], V v = sinc v + cosc w x v + sinc3 (w.v) w
         w, v = x[0:3], x[3:6]
         P = series.Point(ca.dot(w, w))
@@ -374,7 +355,6 @@ def se3_tau(group, kind, x):
 
 
 def se3_dtau_inv(group, kind, x):
-    _check(group, kind, _SE_KINDS)
     Z = ca.SX.zeros(3, 3)
     if kind == "exp":  # [[f(W), 0], [Df(W)[V], f(W)]], Df(W)[V] = -V/2 + c S + 2 (w.v) c' W^2
         w, v = x[0:3], x[3:6]
@@ -390,7 +370,6 @@ def se3_dtau_inv(group, kind, x):
 
 
 def se3_dtau(group, kind, x):
-    _check(group, kind, _SE_KINDS)
     Z = ca.SX.zeros(3, 3)
     if kind == "exp":  # [[g(W), 0], [Dg(W)[V], g(W)]]
         # Dg(W)[V] = cosc V + sinc3 S + 2 (w.v) (cosc' W + sinc3' W^2)
@@ -408,6 +387,24 @@ def se3_dtau(group, kind, x):
 
 
 def se3_margin(group, kind, x):
-    _check(group, kind, _SE_KINDS)
     s = ca.dot(x[0:3], x[0:3])
-    return {"exp": _exp_margin(s), "cay": _cay_margin(s)}[kind]
+    return _MARGINS[kind](s)
+
+
+# ---- the table: group family (hpgen.groups.GROUP_NAMES spelling) -> its chart functions --------
+@dataclass(frozen=True)
+class GroupCharts:
+    """The chart functions of one group family, each ``(group, kind, x)`` as above."""
+    tau: Callable
+    dtau_inv: Callable
+    dtau: Callable
+    margin: Callable
+
+
+GROUP_CHARTS = {
+    "R<n>": GroupCharts(rn_tau, rn_dtau_inv, rn_dtau, rn_margin),
+    "SO2": GroupCharts(so2_tau, so2_dtau_inv, so2_dtau, so2_margin),
+    "SO3": GroupCharts(so3_tau, so3_dtau_inv, so3_dtau, so3_margin),
+    "SE2": GroupCharts(se2_tau, se2_dtau_inv, se2_dtau, se2_margin),
+    "SE3": GroupCharts(se3_tau, se3_dtau_inv, se3_dtau, se3_margin),
+}

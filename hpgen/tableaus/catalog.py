@@ -11,7 +11,8 @@ trees up to order MAX_CHECKED_ORDER = 6 (37 trees): Phi(t) = 1/gamma(t), with th
 weight Phi(t) = b . g(t), g(leaf) = 1, g([t1 ... tm]) = prod_k (A g(t_k)) (componentwise) and
 the density gamma(t) = |t| prod_k gamma(t_k); tolerance 1e-12.
 
-Adding a tableau is one new entry in ``_ENTRIES`` (name -> (A, b, order)).
+Adding a tableau is one new entry in ``_ENTRIES`` (name -> CatalogEntry(A, b, order, summary));
+the CLI, ``hpgen list`` and the order-of-convergence tests pick it up from there.
 """
 from __future__ import annotations
 
@@ -193,27 +194,40 @@ class ButcherTableau:
 
 
 # ---- catalog -----------------------------------------------------------------------------
+@dataclass(frozen=True)
+class CatalogEntry:
+    """One catalog tableau as exact data: A, b (mpmath numbers or ints), its classical order
+    (checked by ButcherTableau) and a one-line summary for ``hpgen list``."""
+    A: list
+    b: list
+    order: int
+    summary: str
+
+
 def _q(p, r=1):
     return mp.mpf(p) / r
 
 
 with mp.workdps(50):  # irrational entries in 50 digits, rounded once to double
     _R3, _R15 = mp.sqrt(3), mp.sqrt(15)
-    #: name -> (A, b, order); the order of TABLEAU_NAMES is the order of this dict
+    #: name -> CatalogEntry; the order of TABLEAU_NAMES is the order of this dict
     _ENTRIES = {
-        "euler-forward": ([[0]], [1], 1),
-        "euler-backward": ([[1]], [1], 1),
-        # the paper's Stormer-Verlet: trapezoid / Lobatto IIIA, 2 stages
-        "stormer-verlet": ([[0, 0], [_q(1, 2), _q(1, 2)]], [_q(1, 2), _q(1, 2)], 2),
-        "midpoint": ([[_q(1, 2)]], [1], 2),
-        "gauss2": ([[_q(1, 4), _q(1, 4) - _R3 / 6],
-                    [_q(1, 4) + _R3 / 6, _q(1, 4)]], [_q(1, 2), _q(1, 2)], 4),
-        "gauss3": ([[_q(5, 36), _q(2, 9) - _R15 / 15, _q(5, 36) - _R15 / 30],
-                    [_q(5, 36) + _R15 / 24, _q(2, 9), _q(5, 36) - _R15 / 24],
-                    [_q(5, 36) + _R15 / 30, _q(2, 9) + _R15 / 15, _q(5, 36)]],
-                   [_q(5, 18), _q(4, 9), _q(5, 18)], 6),
-        "lobatto3a3": ([[0, 0, 0], [_q(5, 24), _q(1, 3), _q(-1, 24)],
-                        [_q(1, 6), _q(2, 3), _q(1, 6)]], [_q(1, 6), _q(2, 3), _q(1, 6)], 4),
+        "euler-forward": CatalogEntry([[0]], [1], 1, "variational Euler, explicit stage"),
+        "euler-backward": CatalogEntry([[1]], [1], 1, "variational Euler, implicit stage"),
+        "stormer-verlet": CatalogEntry(  # the paper's Stormer-Verlet: trapezoid / Lobatto IIIA
+            [[0, 0], [_q(1, 2), _q(1, 2)]], [_q(1, 2), _q(1, 2)], 2,
+            "the paper's Stormer-Verlet (Lobatto IIIA, 2 stages)"),
+        "midpoint": CatalogEntry([[_q(1, 2)]], [1], 2, "implicit midpoint (Gauss, 1 stage)"),
+        "gauss2": CatalogEntry([[_q(1, 4), _q(1, 4) - _R3 / 6],
+                                [_q(1, 4) + _R3 / 6, _q(1, 4)]], [_q(1, 2), _q(1, 2)], 4,
+                               "Gauss-Legendre, 2 stages"),
+        "gauss3": CatalogEntry([[_q(5, 36), _q(2, 9) - _R15 / 15, _q(5, 36) - _R15 / 30],
+                                [_q(5, 36) + _R15 / 24, _q(2, 9), _q(5, 36) - _R15 / 24],
+                                [_q(5, 36) + _R15 / 30, _q(2, 9) + _R15 / 15, _q(5, 36)]],
+                               [_q(5, 18), _q(4, 9), _q(5, 18)], 6, "Gauss-Legendre, 3 stages"),
+        "lobatto3a3": CatalogEntry([[0, 0, 0], [_q(5, 24), _q(1, 3), _q(-1, 24)],
+                                    [_q(1, 6), _q(2, 3), _q(1, 6)]],
+                                   [_q(1, 6), _q(2, 3), _q(1, 6)], 4, "Lobatto IIIA, 3 stages"),
     }
 
 TABLEAU_NAMES = tuple(_ENTRIES)
@@ -221,9 +235,15 @@ TABLEAU_NAMES = tuple(_ENTRIES)
 
 @functools.lru_cache(maxsize=None)
 def _build(name: str) -> ButcherTableau:
-    A, b, order = _ENTRIES[name]
-    return ButcherTableau(name, tuple(tuple(float(a) for a in r) for r in A),
-                          tuple(float(x) for x in b), order)
+    e = _ENTRIES[name]
+    return ButcherTableau(name, tuple(tuple(float(a) for a in r) for r in e.A),
+                          tuple(float(x) for x in e.b), e.order)
+
+
+def tableau_summary(name: str) -> str:
+    """The one-line description of the catalog tableau ``name`` (for ``hpgen list``)."""
+    get_tableau(name)
+    return _ENTRIES[name].summary
 
 
 def get_tableau(name) -> ButcherTableau:
