@@ -17,12 +17,11 @@ from pathlib import Path
 
 from . import __version__, cache
 from .errors import ModelError
+#: the option values (re-exported: hpgen.bench reads TAU_CHOICES, RKMK_CHOICES from here)
+from .schemes import BACKEND, BACKENDS, RKMK, RKMK_CHOICES, TAU, TAU_CHOICES  # noqa: F401
 
 #: bump when the generated layout changes, so stale cache entries are not reused
 CODE_FORMAT = "1"
-TAU_CHOICES = ("exp", "cay", "skew")
-RKMK_CHOICES = ("exact", "truncated")
-BACKENDS = ("c", "python")
 
 
 @dataclass(frozen=True)
@@ -38,12 +37,9 @@ class CompileOptions:
     cflags: tuple[str, ...] | None = None
 
     def validate(self):
-        for field, value, choices in (("tau", self.tau, TAU_CHOICES),
-                                      ("rkmk", self.rkmk, RKMK_CHOICES),
-                                      ("backend", self.backend, BACKENDS)):
-            if value is not None and value not in choices:
-                raise ModelError(f"expected one of {', '.join(choices)}, got {value!r}",
-                                 field=f"option {field}")
+        for option, value in ((TAU, self.tau), (RKMK, self.rkmk), (BACKEND, self.backend)):
+            if value is not None:
+                option.check(value, field=f"option {option.name}")
         if self.tableau is not None and not isinstance(self.tableau, (str, dict)) \
                 and not hasattr(self.tableau, "A"):
             raise ModelError("expected a catalog name or {A: [[...]], b: [...]}",

@@ -16,11 +16,12 @@ from .errors import ConvergenceError, HpgenError, ModelError
 
 def _add_options(p):
     p.add_argument("model", help="model file (YAML, schema version 1)")
+    from .schemes import BACKEND, RKMK, TAU
     p.add_argument("--tableau", help="catalog name (see `hpgen list`); default: the model's")
-    p.add_argument("--tau", choices=("exp", "cay", "skew"), help="chart map; default: the model's")
-    p.add_argument("--rkmk", choices=("exact", "truncated"),
-                   help="RKMK constraint: exact (keeps the tableau's order) or truncated (q = 0)")
-    p.add_argument("--backend", choices=("c", "python"), default="c")
+    p.add_argument("--tau", choices=TAU.names, help=TAU.help("default: the model's"))
+    p.add_argument("--rkmk", choices=RKMK.names, help=RKMK.help("default: the model's"))
+    p.add_argument("--backend", choices=BACKEND.names, default="c",
+                   help=BACKEND.help("default: c"))
     p.add_argument("--cache-dir", help="build cache directory (default ~/.cache/hpgen)")
 
 
@@ -157,16 +158,24 @@ def cmd_check(args) -> int:
 
 
 def cmd_list(args) -> int:
+    """``hpgen list``: the groups and every registered option value (hpgen.schemes)."""
     from .groups import GROUP_NAMES
-    from .tableaus import TABLEAU_NAMES, get_tableau
+    from .schemes import BACKEND, RKMK, TAU, tableaus
+    from .tableaus import tableau_summary
     print("groups: " + ", ".join(GROUP_NAMES) + " and lists of them (direct products)")
-    print("maps (tau): exp (all groups), cay (all groups), skew (SO2, SO3)")
-    print("rkmk: exact (keeps the tableau's order), truncated (the paper's q = 0, order <= 2)")
+    print("tau (chart maps):")
+    for c in TAU.entries:
+        print(f"  {c.name:15s} {c.summary}; on {c.groups_text}; steps need {c.domain}")
+    print("rkmk (RKMK constraints):")
+    for r in RKMK.entries:
+        print(f"  {r.name:15s} {r.summary}")
+    print("backends:")
+    for b in BACKEND.entries:
+        print(f"  {b.name:15s} {b.summary}")
     print("tableaus:")
-    for name in TABLEAU_NAMES:
-        t = get_tableau(name)
-        print(f"  {name:15s} stages {t.stages}  order {t.order}"
-              f"  {'symplectic RK' if t.is_symplectic else ''}")
+    for t in tableaus():
+        print(f"  {t.name:15s} stages {t.stages}  order {t.order}  {tableau_summary(t.name)}"
+              f"{', symplectic RK' if t.is_symplectic else ''}")
     return 0
 
 

@@ -20,14 +20,13 @@ from pathlib import Path
 import jinja2
 
 from .. import __version__
+from ..schemes import BACKENDS, OPTION_KEYS
 from .contract import HASH_RE, MODULE_RE, CodegenError, check_step
 from .csource import c_kernel_context, casadi_c_code, work_sizes
 from . import pylinear
 from .pysource import py_kernel_context
 
 META_FORMAT = 1
-BACKENDS = ("c", "python")
-OPTION_KEYS = ("tableau", "tau", "rkmk")
 TEMPLATES = {"kernels.c": "kernels.c.j2", "kernels.py": "kernels.py.j2",
              "__init__.py": "__init__.py.j2"}
 #: math functions the Python backend wraps: (math name, numpy name of the IEEE fallback)

@@ -17,6 +17,7 @@ import os
 import re
 
 from ..errors import ModelError
+from ..schemes import RKMK, TAU
 from .types import RESERVED_NAMES, IntegratorChoice, Model
 from .yamldoc import MAX_FILE_BYTES, Doc, compose_document, describe, is_number
 
@@ -25,8 +26,6 @@ MAX_MATRIX_SIZE = 64                # n and d of the group (g has n*n symbols)
 
 TOP_KEYS = ("schema", "name", "group", "parameters", "lagrangian", "integrator", "scene")
 INTEGRATOR_KEYS = ("tableau", "tau", "rkmk")
-TAU_CHOICES = ("exp", "cay", "skew")
-RKMK_CHOICES = ("exact", "truncated")
 
 C_KEYWORDS = frozenset("""
 auto break case char const continue default do double else enum extern float for goto if inline
@@ -140,12 +139,13 @@ def _tableau(doc: Doc, raw):
 def _integrator(doc: Doc, raw) -> IntegratorChoice:
     raw = doc.mapping(("integrator",), raw, INTEGRATOR_KEYS)
     kw = {}
-    for key, choices in (("tau", TAU_CHOICES), ("rkmk", RKMK_CHOICES)):
+    for option in (TAU, RKMK):
+        key = option.name
         if raw.get(key) is not None:
-            if raw[key] not in choices or not isinstance(raw[key], str):
-                raise doc.error(("integrator", key), f"expected one of {', '.join(choices)}, "
-                                                     f"got {describe(raw[key])}")
-            kw[key] = raw[key]
+            try:
+                kw[key] = option.check(raw[key], field=f"integrator.{key}", show=describe)
+            except ModelError as e:
+                raise doc.error(("integrator", key), e.message) from None
     if raw.get("tableau") is not None:
         kw["tableau"] = _tableau(doc, raw["tableau"])
     return IntegratorChoice(**kw)

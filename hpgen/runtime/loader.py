@@ -13,12 +13,12 @@ import re
 from pathlib import Path
 
 from ..errors import ModelError
+from ..schemes import BACKENDS
 from .backends import PythonBackend
 from .cbackend import CBackend
 from .integrator import Integrator
 
 META_FORMAT = 1
-BACKENDS = ("c", "python")
 KERNEL_NAMES = ("residual", "jacobian", "residual_jacobian", "update", "guess", "legendre",
                 "hessian", "energy", "momentum", "defect", "margin", "section", "chart_point",
                 "observe", "update_p", "velocity_step", "record")
