@@ -16,10 +16,20 @@ def hpgen(*args, cwd=None):
 
 
 def test_list():
+    """`hpgen list` shows every group family and every registered option value."""
+    from hpgen import schemes
+    from hpgen.groups import GROUP_NAMES
     out = hpgen("list")
     assert out.returncode == 0, out.stderr
-    for name in ("gauss2", "lobatto3a3", "stormer-verlet", "SE3", "skew"):
-        assert name in out.stdout
+    lines = out.stdout.splitlines()
+    listed = {ln.split()[0] for ln in lines if ln.startswith("  ")}
+    registered = {t.name for t in schemes.tableaus()}
+    for option in (schemes.TAU, schemes.RKMK, schemes.BACKEND):
+        registered |= set(option.names)
+    assert listed == registered
+    for t in schemes.tableaus():
+        assert f"order {t.order}" in next(ln for ln in lines if ln.split()[:1] == [t.name])
+    assert all(g in lines[0] for g in GROUP_NAMES)
 
 
 def test_compile_writes_module(tmp_path):
