@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 2ee0163d1fd581cda6bb4991f2f2505333af02daa95989b4ff55750be8b1c885
+# content hash: 7ea81768e6a8c80362d41c44e91ec354b643466fff913d1d05d097700dd47b84
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

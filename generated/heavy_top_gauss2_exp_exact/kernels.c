@@ -3,7 +3,7 @@
  * model: heavy_top
  * options: tableau=gauss2, tau=exp, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 8eda7937641c677e94dcac652299bc8e3cabd4b11781d567287d4aaf7d7f8567
+ * content hash: 3b841f0fd13b47ddb7dbb43d9ddeb5f41daf65707807ec3d2ae2c9b45011e169
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -11446,7 +11446,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "8eda7937641c677e94dcac652299bc8e3cabd4b11781d567287d4aaf7d7f8567"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "3b841f0fd13b47ddb7dbb43d9ddeb5f41daf65707807ec3d2ae2c9b45011e169"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: f27c3607abbda5ed9577668bd2e7267ecec03bb0a1764b00d06e7ec96439311e
+# content hash: 119b312a5702df2093889cf336be5dbe5d563b2aaf97e1fa925eceda979dff8d
 """hpgen integrator lagrange_top_gauss2_cay_exact for the model lagrange_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "lagrange_top_gauss2_cay_exact"
-HASH = "f27c3607abbda5ed9577668bd2e7267ecec03bb0a1764b00d06e7ec96439311e"
+HASH = "119b312a5702df2093889cf336be5dbe5d563b2aaf97e1fa925eceda979dff8d"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: underwater_vehicle
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 9efb800d16bc4a1bd34b01671d42bd561da1827f3711837ab12e25613a83d942
+ * content hash: 127683ac061ad469cf77d5420201fa9c0a4704f4672b1f46c7eff8947903a173
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -20179,7 +20179,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "9efb800d16bc4a1bd34b01671d42bd561da1827f3711837ab12e25613a83d942"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "127683ac061ad469cf77d5420201fa9c0a4704f4672b1f46c7eff8947903a173"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
