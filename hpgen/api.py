@@ -3,14 +3,27 @@
     integ = hpgen.compile("examples/heavy_top.yaml", tableau="gauss2", tau="exp",
                           rkmk="exact", backend="c", out="generated/")
 
-Options left as None take the model's ``integrator:`` defaults. The cache key hashes the
-model file's bytes, the explicit options and the hpgen version, so a cache hit imports
-nothing of the compile-time stack (sympy, casadi, jinja2).
+Options left as None take the model's ``integrator:`` defaults.
+
+The cache has two levels (content-addressed, as pystencils and FFCx do):
+- the *content hash* (``content_hash``) is the sha256 of what the generated code is a
+  function of: the normalized model (hpgen.model.fingerprint: group, Lagrangian, parameters,
+  the scene's record and section; not comments, formatting, h, steps or the initial state),
+  the options in effect (tableau with a user's A/b, tau, rkmk), CODE_FORMAT and the hpgen
+  version. It is the hash written into every generated file's header, meta.json and
+  ``hpgen_hash()``: the same hash means the same model and options, whichever generator
+  revision emitted the files;
+- the *derivation key* (``module_key``, the cache entry's name) adds the digest of the
+  generator's sources, so an edited generator derives again;
+- the C library is keyed by the sha256 of the emitted kernels.c plus compiler and flags
+  (hpgen.runtime.build), so a derivation that emits the same C reuses the built library.
+A cache hit imports nothing of the compile-time stack (sympy, casadi, jinja2).
 """
 from __future__ import annotations
 
 import hashlib
 import json
+import sys
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -93,36 +106,82 @@ def generator_digest() -> str:
     return h.hexdigest()
 
 
+def content_hash(text: str, opts: CompileOptions) -> str:
+    """The content hash of a module (see the module docstring): normalized model, options
+    in effect, CODE_FORMAT and hpgen version; never the generator's sources."""
+    from .model.fingerprint import normalized_model
+    from .model.types import IntegratorChoice
+    norm, written = normalized_model(text)
+    written_opts = written if isinstance(written, dict) else {}
+    effective = {k: next((v for v in (getattr(opts, k), written_opts.get(k),
+                                      getattr(IntegratorChoice(), k)) if v is not None))
+                 for k in ("tableau", "tau", "rkmk")}
+    model = json.dumps({"model": norm, "integrator": written}, sort_keys=True, default=repr)
+    return cache.cache_key(CODE_FORMAT, __version__, model,
+                           CompileOptions(**effective).key())
+
+
 def module_key(text: str, opts: CompileOptions) -> str:
-    """Cache key and content hash of a module: model text, code-changing options, hpgen
-    version and generator sources."""
-    return cache.cache_key(CODE_FORMAT, __version__, generator_digest(), text, opts.key())
+    """The derivation key (the cache entry's name): the content hash and the digest of the
+    generator's sources."""
+    return _derivation_key(content_hash(text, opts))
+
+
+def _derivation_key(chash: str) -> str:
+    return cache.cache_key(chash, generator_digest())
 
 
 def build_module(model, opts: CompileOptions) -> Path:
-    """Generate (or fetch from the cache) the module for ``model``; return its directory."""
+    """Generate (or fetch from the cache) the module for ``model``; return its directory.
+
+    With ``opts.out`` the module (sources, MANIFEST.json, this request's model file and, for
+    the C backend, the checked library) is copied to ``<out>/<module>/``. A cache directory
+    that cannot be written is reported in one line on stderr and a private temporary cache
+    is used instead.
+    """
     opts.validate()
     text = read_model_text(model)
     cache_dir = Path(opts.cache_dir) if opts.cache_dir else cache.default_cache_dir()
-    key = module_key(text, opts)
+    try:
+        entry, library = _cached_module(str(model), text, opts, cache_dir)
+    except cache.CacheUnwritable as exc:
+        tmp = cache.private_cache_dir()
+        print(f"hpgen: warning: the cache directory {cache_dir} cannot be written "
+              f"({exc.reason}); building in {tmp}", file=sys.stderr)
+        entry, library = _cached_module(str(model), text, opts, tmp)
+    if opts.out is None:
+        return entry
+    files = cache.read_tree(entry)
+    files["model.yaml"] = text.encode()      # this request's file (the entry keeps the first)
+    unlisted = {}
+    if library is not None:
+        from .runtime.build import read_library
+        unlisted[library.name], unlisted[library.name + ".json"] = read_library(library)
+    dest = Path(opts.out) / json.loads(files["meta.json"])["module"]
+    if not (_same_tree(dest, {**files, **unlisted}) and cache.is_valid(dest)):
+        cache.write_tree(dest, files, unlisted=unlisted)
+    return dest
+
+
+def _cached_module(path: str, text: str, opts: CompileOptions, cache_dir: Path):
+    """(cache entry, built library or None) of one compile; CacheUnwritable when the cache
+    directory cannot be written and something is missing from it."""
+    chash = content_hash(text, opts)
+    key = _derivation_key(chash)
     entry = cache_dir / key
     if not cache.is_valid(entry):
         with cache.locked(cache_dir, key):
             if not cache.is_valid(entry):
-                files = generate_files(str(model), text, opts, key)
-                cache.write_tree(entry, files)
-    meta = json.loads((entry / "meta.json").read_text())
-    if opts.backend == "c":
-        from .runtime.build import build_library
-        build_library(entry, cc=opts.cc, cflags=opts.cflags)
-    if opts.out is None:
-        return entry
-    files = cache.read_tree(entry)
-    files.update({p.name: p.read_bytes() for p in entry.glob("_kernels_*.so")})
-    dest = Path(opts.out) / meta["module"]
-    if not _same_tree(dest, files):
-        cache.write_tree(dest, files, manifest=False)
-    return dest
+                files = generate_files(path, text, opts, chash)
+                try:
+                    cache.write_tree(entry, files)
+                except OSError as exc:
+                    raise cache.CacheUnwritable(cache_dir, exc) from None
+    if opts.backend != "c":
+        return entry, None
+    from .runtime.build import build_library
+    return entry, build_library(entry, cc=opts.cc, cflags=opts.cflags,
+                                store=cache.library_store(cache_dir))
 
 
 def _same_tree(dest: Path, files: dict) -> bool:

@@ -89,11 +89,11 @@ def _cached(path, tab, tau, rkmk, cache_dir):
     """True when the build cache already holds this module (source and C library)."""
     from .. import cache
     from ..api import CompileOptions, module_key, read_model_text
-    from ..runtime.build import library_name
+    from ..runtime.build import find_library
     try:
         key = module_key(read_model_text(path), CompileOptions(tab, tau, rkmk, "c"))
         entry = (cache.default_cache_dir() if cache_dir is None else Path(cache_dir)) / key
-        return cache.is_valid(entry) and (entry / library_name(key)).exists()
+        return cache.is_valid(entry) and find_library(entry) is not None
     except (OSError, ValueError):
         return False
 

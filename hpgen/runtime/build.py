@@ -1,22 +1,37 @@
-"""Compile a generated module's kernels.c into a shared library next to it (C backend).
+"""Compile a generated module's kernels.c into a shared library (C backend), content-addressed.
 
-The library is ``_kernels_<hash[:16]>.so`` in the module directory (with a suffix naming the
-extra flags when ``cflags`` is given, so differently built libraries never mix). Building is
-race-free: an exclusive ``fcntl.flock`` on ``_kernels.lock`` serialises builders, the compiler
+The library is ``_kernels_<key[:16]>.so`` in the module directory, where ``key`` is the sha256
+of kernels.c's bytes, the compiler command (with the path it resolves to) and the flags
+(``build_key``): the same C built the same way is the same library, whichever derivation
+emitted it. Beside it, ``_kernels_<key[:16]>.so.json`` records the library's sha256 and its
+source's. A library is returned (and so loaded) only when its bytes match that record; one
+that does not (truncated, bytes flipped, record missing) is rebuilt, never loaded.
+
+``store`` (the build cache's ``<cache>/lib``) holds the libraries of all cache entries: an
+intact one found there is linked (or copied) into the module directory instead of compiled,
+so a new derivation that emits the same kernels.c runs no compiler.
+
+Before anything is built or loaded, a module directory holding a MANIFEST.json (cache entries,
+``hpgen compile -o`` output) has its sources checked against it (hpgen.cache.check_sources):
+a hand-edited kernels.c is refused, never compiled or served from a stale library.
+
+Race-free: an exclusive lock per library (hpgen.cache.locked) serialises builders; the compiler
 writes a temp file in the same directory and ``os.replace`` moves it in place atomically.
 Standard library only.
 """
 from __future__ import annotations
 
-import fcntl
 import hashlib
 import json
 import os
 import shlex
+import shutil
 import subprocess
+import sys
 import tempfile
 from pathlib import Path
 
+from .. import cache
 from ..errors import BuildError
 
 #: default flags: portable and reproducible (no -march=native); pass extras via ``cflags``
@@ -24,13 +39,7 @@ DEFAULT_CFLAGS = ("-std=c99", "-O3", "-fPIC", "-shared")
 #: link inputs placed after the source file
 LIBS = ("-lm",)
 _TIMEOUT = 600
-
-
-def library_name(content_hash: str, cflags=None) -> str:
-    if not cflags:
-        return f"_kernels_{content_hash[:16]}.so"
-    tag = hashlib.sha256("\0".join(cflags).encode()).hexdigest()[:8]
-    return f"_kernels_{content_hash[:16]}-{tag}.so"
+RECORD_SUFFIX = ".json"
 
 
 def compiler_command(cc=None) -> list[str]:
@@ -42,32 +51,129 @@ def compiler_command(cc=None) -> list[str]:
     return argv
 
 
-def build_library(module_dir, cc=None, cflags=None) -> Path:
-    """Path of the module's compiled kernels, compiling ``kernels.c`` first if missing.
+def build_key(source: bytes, argv, cflags=()) -> str:
+    """sha256 of the C source, the compiler command (and the file it resolves to) and flags."""
+    return cache.cache_key(hashlib.sha256(source).hexdigest(), json.dumps(list(argv)),
+                           str(shutil.which(argv[0]) or argv[0]),
+                           json.dumps(list(DEFAULT_CFLAGS) + list(cflags) + list(LIBS)))
+
+
+def library_name(key: str) -> str:
+    return f"_kernels_{key[:16]}.so"
+
+
+def _record_path(lib: Path) -> Path:
+    return lib.with_name(lib.name + RECORD_SUFFIX)
+
+
+def _record(lib: Path) -> dict | None:
+    try:
+        rec = json.loads(_record_path(lib).read_text())
+        return rec if isinstance(rec, dict) else None
+    except (OSError, ValueError):
+        return None
+
+
+def intact(lib: Path, source_digest: str) -> bool:
+    """True when ``lib`` exists and its bytes and source match its build record."""
+    rec = _record(lib)
+    try:
+        return (rec is not None and rec.get("source_sha256") == source_digest
+                and hashlib.sha256(lib.read_bytes()).hexdigest() == rec.get("sha256"))
+    except OSError:
+        return False
+
+
+def read_library(lib) -> tuple[bytes, bytes]:
+    """(library bytes, record bytes) of a built library, checked against its record (for
+    copying a library out); BuildError when they do not match."""
+    lib = Path(lib)
+    try:
+        data, rec = lib.read_bytes(), _record_path(lib).read_bytes()
+        ok = hashlib.sha256(data).hexdigest() == json.loads(rec).get("sha256")
+    except (OSError, ValueError, AttributeError):
+        ok = False
+    if not ok:
+        raise BuildError(f"{lib} does not match its build record; compile again to rebuild it")
+    return data, rec
+
+
+def _source(module_dir: Path) -> tuple[Path, bytes]:
+    cache.check_sources(module_dir)
+    source = module_dir / "kernels.c"
+    try:
+        return source, source.read_bytes()
+    except OSError:
+        raise BuildError(f"{source} is missing") from None
+
+
+def find_library(module_dir, cc=None, cflags=None) -> Path | None:
+    """The module's intact library for this compiler and flags, or None (builds nothing)."""
+    module_dir = Path(module_dir)
+    _, src = _source(module_dir)
+    lib = module_dir / library_name(build_key(src, compiler_command(cc), tuple(cflags or ())))
+    return lib if intact(lib, hashlib.sha256(src).hexdigest()) else None
+
+
+def build_library(module_dir, cc=None, cflags=None, store=None) -> Path:
+    """Path of the module's compiled kernels (an intact library), building it if needed.
 
     cc: compiler command (default $CC or ``cc``); cflags: extra flags appended to
-    DEFAULT_CFLAGS (a later -O wins). Raises BuildError (command and stderr) when the compiler
-    is missing or fails, or the directory is not writable.
+    DEFAULT_CFLAGS (a later -O wins); store: a directory of libraries shared by modules (see
+    the module docstring). Raises ModelError when the sources differ from the module's
+    MANIFEST.json, BuildError (command and stderr) when the compiler is missing or fails, and
+    hpgen.cache.CacheUnwritable (a BuildError) when the directory is not writable.
     """
     module_dir = Path(module_dir)
-    meta = json.loads((module_dir / "meta.json").read_text())
-    extra = tuple(cflags or ())
-    target = module_dir / library_name(str(meta["hash"]), extra)
-    if target.exists():
+    source, src = _source(module_dir)
+    argv, extra = compiler_command(cc), tuple(cflags or ())
+    name = library_name(build_key(src, argv, extra))
+    digest = hashlib.sha256(src).hexdigest()
+    target = module_dir / name
+    if intact(target, digest):
         return target
-    source = module_dir / "kernels.c"
-    if not source.exists():
-        raise BuildError(f"{source} is missing")
-    argv = compiler_command(cc)
-    try:
-        lock = open(module_dir / "_kernels.lock", "a")
-    except OSError as exc:
-        raise BuildError(f"cannot build in {module_dir}: {exc}") from None
-    with lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
-        if target.exists():          # another process built it while we waited
+    if store is None:
+        return _compile(source, target, digest, argv, extra)
+    built = _compile(source, Path(store) / name, digest, argv, extra)
+    with cache.locked(module_dir, name):
+        if not intact(target, digest):
+            _link(built, target)
+    return target
+
+
+def _warn_corrupt(lib: Path) -> None:
+    if lib.exists():
+        print(f"hpgen: warning: {lib} does not match its build record (corrupt or "
+              "incomplete); rebuilding it", file=sys.stderr)
+
+
+def _link(built: Path, target: Path) -> None:
+    """Put ``built`` and its record at ``target`` (a hard link, else a copy; atomic)."""
+    for src, dst in ((built, target), (_record_path(built), _record_path(target))):
+        tmp = dst.with_name(f".tmp{os.getpid()}{dst.name}")
+        try:
+            try:
+                os.link(src, tmp)
+            except OSError:
+                shutil.copyfile(src, tmp)
+            os.replace(tmp, dst)
+        finally:
+            if tmp.exists():
+                tmp.unlink()
+
+
+def _compile(source: Path, target: Path, digest: str, argv, extra) -> Path:
+    """Compile ``source`` to ``target`` (with its record) unless an intact one is there."""
+    if intact(target, digest):
+        return target
+    with cache.locked(target.parent, target.name):
+        if intact(target, digest):          # another process built it while we waited
             return target
-        fd, tmp = tempfile.mkstemp(prefix=".tmp_kernels_", suffix=".so", dir=module_dir)
+        _warn_corrupt(target)
+        try:
+            fd, tmp = tempfile.mkstemp(prefix=".tmp_kernels_", suffix=".so", dir=target.parent)
+        except OSError as exc:
+            raise cache.CacheUnwritable(target.parent, exc) from None
         os.close(fd)
         cmd = argv + list(DEFAULT_CFLAGS) + list(extra) + ["-o", tmp, str(source)] + list(LIBS)
         try:
@@ -80,6 +186,10 @@ def build_library(module_dir, cc=None, cflags=None) -> Path:
             if proc.returncode != 0:
                 raise BuildError(f"C compilation failed (exit status {proc.returncode})",
                                  command=cmd, stderr=proc.stderr)
+            record = {"sha256": hashlib.sha256(Path(tmp).read_bytes()).hexdigest(),
+                      "source_sha256": digest, "compiler": list(argv),
+                      "cflags": list(DEFAULT_CFLAGS) + list(extra) + list(LIBS)}
+            cache.write_file(_record_path(target), json.dumps(record, indent=1) + "\n")
             os.replace(tmp, target)
         finally:
             if os.path.exists(tmp):

@@ -12,6 +12,7 @@ import math
 import re
 from pathlib import Path
 
+from ..cache import check_sources
 from ..errors import ModelError
 from ..schemes import BACKENDS
 from .backends import PythonBackend
@@ -109,12 +110,16 @@ def load(path, backend=None, *, cc=None, cflags=None) -> Integrator:
 
     backend: "c" (compile kernels.c once, load with ctypes) or "python" (import kernels.py
     from the directory); None = the module's default from meta.json. cc/cflags: see
-    hpgen.runtime.build.build_library. Raises ModelError (bad directory or backend) and
+    hpgen.runtime.build.build_library. A directory with a MANIFEST.json (``hpgen compile -o``
+    output) is checked against it first. Raises ModelError (bad directory or backend, sources
+    that differ from their recorded digests) and
     BuildError (compiler missing or failing; backend="python" needs no compiler).
     """
     module_dir = Path(path)
     meta = read_meta(module_dir)
     backend = meta["backend"] if backend is None else backend
+    if backend == "python":
+        check_sources(module_dir)     # the C backend's build_library checks them too
     if backend == "c":
         impl = CBackend(module_dir, meta, cc=cc, cflags=cflags)
     elif backend == "python":

@@ -9,7 +9,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from ..api import CompileOptions, generate_files, module_key
+from ..api import CompileOptions, content_hash, generate_files
 from ..cache import write_tree
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -22,7 +22,7 @@ def example_sources(path: Path) -> tuple[str, dict[str, str]]:
     file is referred to by its path relative to the repository (deterministic headers)."""
     text = path.read_text()
     opts = CompileOptions()
-    files = generate_files(f"examples/{path.name}", text, opts, module_key(text, opts))
+    files = generate_files(f"examples/{path.name}", text, opts, content_hash(text, opts))
     import json
     return json.loads(files["meta.json"])["module"], files
 

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -191,7 +192,9 @@ def test_concurrent_builds_both_succeed(tmp_path):
     outs = [p.communicate(timeout=120) for p in procs]
     assert all(p.returncode == 0 for p in procs), outs
     assert outs[0][0] == outs[1][0]
-    assert [p.name for p in d.glob("*.so")] == ["_kernels_0123456789abcdef.so"]
+    (lib,) = d.glob("*.so")              # one library, named by its build key, with its record
+    assert re.fullmatch(r"_kernels_[0-9a-f]{16}\.so", lib.name) and outs[0][0].strip() == str(lib)
+    assert (d / (lib.name + ".json")).is_file()
     assert not list(d.glob(".tmp*"))
 
 
