@@ -1,11 +1,12 @@
-# hpgen developer tasks. `make test` is what CI runs (.ci/run).
+# hpgen developer tasks. CI (.ci/run) runs `make wheel-test`, then `make test`.
+# Installs use the exact versions of constraints.txt; pyproject.toml holds compatible ranges.
 PYTHON ?= python3
-EXAMPLES := free_rigid_body heavy_top underwater_vehicle
+PIP_INSTALL = $(PYTHON) -m pip install --quiet -c constraints.txt
 
-.PHONY: install demo test test-fast generate bench clean
+.PHONY: install demo test test-fast wheel-test generate clean
 
 install:
-	$(PYTHON) -m pip install --quiet -e '.[test]'
+	$(PIP_INSTALL) -e '.[test]'
 
 demo: install
 	$(PYTHON) -m hpgen run examples/heavy_top.yaml --out heavy_top.npz
@@ -16,9 +17,14 @@ test: install
 test-fast: install
 	$(PYTHON) -m pytest -q -ra -m "not slow"
 
+# build the wheel, install it in a fresh virtual environment (pinned versions) and compile
+# and run a shipped example there, outside the checkout (the templates must be in the wheel)
+wheel-test:
+	PYTHON=$(PYTHON) sh .ci/wheel-test
+
 # regenerate the committed sources of the shipped examples (default options of each model)
 generate: install
 	$(PYTHON) -m hpgen.tools.generate_examples
 
 clean:
-	rm -rf build *.egg-info .pytest_cache generated/*/_kernels_*.so
+	rm -rf build dist *.egg-info .pytest_cache generated/*/_kernels_*
