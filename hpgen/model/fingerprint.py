@@ -34,7 +34,8 @@ _SKIP_TOKENS = frozenset((tokenize.NL, tokenize.DEDENT, tokenize.COMMENT, tokeni
 
 def expression_tokens(text):
     """``text`` as its Python tokens joined by one space (spaces, line breaks inside
-    brackets and comments dropped); anything that does not tokenize (or is not a string) is returned unchanged."""
+    brackets and comments dropped); what does not tokenize (or is no string) is returned
+    unchanged."""
     if not isinstance(text, str):
         return text
     try:

@@ -48,7 +48,8 @@ def test_header_names_model_options_version_hash():
         head = "\n".join(gm.file(path).splitlines()[:7])
         assert head.startswith("/*" if path.endswith(".c") else "# "), path
         for needle in ("free_rigid_body", "tableau=euler-poincare", "tau=cay", "rkmk=exact",
-                       f"hpgen version: {hpgen.__version__}", f"content hash (normalized model + options): {info['hash']}"):
+                       f"hpgen version: {hpgen.__version__}",
+                       f"content hash (normalized model + options): {info['hash']}"):
             assert needle in head, (path, needle)
     assert gm.file("model.yaml") == info["model_source"]
 
