@@ -159,7 +159,11 @@ def build_module(model, opts: CompileOptions) -> Path:
         unlisted[library.name], unlisted[library.name + ".json"] = read_library(library)
     dest = Path(opts.out) / json.loads(files["meta.json"])["module"]
     if not (_same_tree(dest, {**files, **unlisted}) and cache.is_valid(dest)):
-        cache.write_tree(dest, files, unlisted=unlisted)
+        try:
+            cache.write_tree(dest, files, unlisted=unlisted)
+        except OSError as exc:
+            raise ModelError(f"cannot write the module to {dest} ({exc.strerror or exc})",
+                             field="option out") from None
     return dest
 
 

@@ -13,7 +13,9 @@ sympy), so that a cache hit stays cheap:
   and ``section`` (the section kernel; its text is also copied into meta.json, so it is
   kept as written). ``h``, ``steps``, ``duration``, ``initial`` and ``every`` are run-time
   values and are dropped; any other key is kept (never a false hit);
-- ``integrator`` is returned apart (the caller merges it with explicit options).
+- ``integrator`` is returned apart (the caller merges it with explicit options);
+- every other top-level key (name, group, parameters, schema, and any key a later schema
+  adds, such as forces or inputs) is kept as parsed: types included (``1`` is not ``1.0``).
 
 A text that cannot be parsed is returned whole (``{"unparsed": text}``): the derivation
 then reports the error with its location. Standard library + PyYAML only.
