@@ -3,7 +3,7 @@
  * model: double_body_chain
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 7ea81768e6a8c80362d41c44e91ec354b643466fff913d1d05d097700dd47b84
+ * content hash (normalized model + options): f1db8c7f42f101f2eff1c614681288e8fab4d5bbe6b695247dbce78a05bbb544
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -4935,7 +4935,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "7ea81768e6a8c80362d41c44e91ec354b643466fff913d1d05d097700dd47b84"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "f1db8c7f42f101f2eff1c614681288e8fab4d5bbe6b695247dbce78a05bbb544"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

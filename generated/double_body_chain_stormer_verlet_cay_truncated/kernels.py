@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 7ea81768e6a8c80362d41c44e91ec354b643466fff913d1d05d097700dd47b84
+# content hash (normalized model + options): f1db8c7f42f101f2eff1c614681288e8fab4d5bbe6b695247dbce78a05bbb544
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 4382fbc4113b0b66e29536092067ee9507f4df670cad838ebd02348dd28e14d0
+# content hash (normalized model + options): 3b5e8c59678a8d08dcfbeb794dc549e09d951a1bd2a11e84fefde85f6aa301ff
 """hpgen integrator free_rigid_body_stormer_verlet_cay_truncated for the model free_rigid_body.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "free_rigid_body_stormer_verlet_cay_truncated"
-HASH = "4382fbc4113b0b66e29536092067ee9507f4df670cad838ebd02348dd28e14d0"
+HASH = "3b5e8c59678a8d08dcfbeb794dc549e09d951a1bd2a11e84fefde85f6aa301ff"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: free_rigid_body
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 4382fbc4113b0b66e29536092067ee9507f4df670cad838ebd02348dd28e14d0
+ * content hash (normalized model + options): 3b5e8c59678a8d08dcfbeb794dc549e09d951a1bd2a11e84fefde85f6aa301ff
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -2549,7 +2549,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "4382fbc4113b0b66e29536092067ee9507f4df670cad838ebd02348dd28e14d0"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "3b5e8c59678a8d08dcfbeb794dc549e09d951a1bd2a11e84fefde85f6aa301ff"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

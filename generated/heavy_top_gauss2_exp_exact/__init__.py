@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 3b841f0fd13b47ddb7dbb43d9ddeb5f41daf65707807ec3d2ae2c9b45011e169
+# content hash (normalized model + options): ffef12b8e3d5ed599c071aa73ae876759b0a16495812b0c3b2d6fbb4a47bc601
 """hpgen integrator heavy_top_gauss2_exp_exact for the model heavy_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "heavy_top_gauss2_exp_exact"
-HASH = "3b841f0fd13b47ddb7dbb43d9ddeb5f41daf65707807ec3d2ae2c9b45011e169"
+HASH = "ffef12b8e3d5ed599c071aa73ae876759b0a16495812b0c3b2d6fbb4a47bc601"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

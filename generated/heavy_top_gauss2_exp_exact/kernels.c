@@ -3,7 +3,7 @@
  * model: heavy_top
  * options: tableau=gauss2, tau=exp, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 3b841f0fd13b47ddb7dbb43d9ddeb5f41daf65707807ec3d2ae2c9b45011e169
+ * content hash (normalized model + options): ffef12b8e3d5ed599c071aa73ae876759b0a16495812b0c3b2d6fbb4a47bc601
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -11446,7 +11446,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "3b841f0fd13b47ddb7dbb43d9ddeb5f41daf65707807ec3d2ae2c9b45011e169"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "ffef12b8e3d5ed599c071aa73ae876759b0a16495812b0c3b2d6fbb4a47bc601"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -3,7 +3,7 @@
  * model: lagrange_top
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 119b312a5702df2093889cf336be5dbe5d563b2aaf97e1fa925eceda979dff8d
+ * content hash (normalized model + options): 72a44fd1ee755e2c4425d908d39fb933f3430a0480e798986ddd5164069c3cd9
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -7357,7 +7357,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "119b312a5702df2093889cf336be5dbe5d563b2aaf97e1fa925eceda979dff8d"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "72a44fd1ee755e2c4425d908d39fb933f3430a0480e798986ddd5164069c3cd9"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

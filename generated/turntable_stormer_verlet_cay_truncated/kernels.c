@@ -3,7 +3,7 @@
  * model: turntable
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: f79404ff989392efabe67ba9e32f1053959f44e5691f1d79da0d7ab268c80f77
+ * content hash (normalized model + options): ace86d66f6af117c072f373783f17d2341e5676df083791d5d67c5ad6f67f369
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -4308,7 +4308,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "f79404ff989392efabe67ba9e32f1053959f44e5691f1d79da0d7ab268c80f77"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "ace86d66f6af117c072f373783f17d2341e5676df083791d5d67c5ad6f67f369"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

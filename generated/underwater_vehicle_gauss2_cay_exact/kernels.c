@@ -3,7 +3,7 @@
  * model: underwater_vehicle
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 127683ac061ad469cf77d5420201fa9c0a4704f4672b1f46c7eff8947903a173
+ * content hash (normalized model + options): 55c81531aeaa9a2cce62c444ecf7b06710dd6c5eebee01c215834efdbf98938a
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
  * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
@@ -20179,7 +20179,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "127683ac061ad469cf77d5420201fa9c0a4704f4672b1f46c7eff8947903a173"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "55c81531aeaa9a2cce62c444ecf7b06710dd6c5eebee01c215834efdbf98938a"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

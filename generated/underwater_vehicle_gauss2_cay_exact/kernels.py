@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 127683ac061ad469cf77d5420201fa9c0a4704f4672b1f46c7eff8947903a173
+# content hash (normalized model + options): 55c81531aeaa9a2cce62c444ecf7b06710dd6c5eebee01c215834efdbf98938a
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
