@@ -12,6 +12,7 @@ import math
 import re
 from pathlib import Path
 
+from .. import abi
 from ..errors import ModelError
 from ..schemes import BACKENDS
 from .backends import PythonBackend
@@ -19,21 +20,6 @@ from .cbackend import CBackend
 from .integrator import Integrator
 
 META_FORMAT = 1
-KERNEL_NAMES = ("residual", "jacobian", "residual_jacobian", "update", "guess", "legendre",
-                "hessian", "energy", "momentum", "defect", "margin", "section", "chart_point",
-                "observe", "update_p", "velocity_step", "record")
-_SIZES = {"residual": ("nz", "nn", "d", "1", "|", "nz"),
-          "jacobian": ("nz", "nn", "d", "1", "|", "nznz"),
-          "residual_jacobian": ("nz", "nn", "d", "1", "|", "nz", "nznz"),
-          "update": ("nz", "nn", "d", "1", "|", "nn", "d"),
-          "guess": ("d", "nn", "d", "1", "|", "nz"), "legendre": ("nn", "d", "|", "d"),
-          "hessian": ("nn", "d", "|", "dd"), "energy": ("nn", "d", "|", "1"),
-          "momentum": ("nn", "d", "|", "d"), "defect": ("nn", "|", "1"),
-          "margin": ("nz", "1", "|", "1"), "section": ("nn", "d", "|", "1"),
-          "chart_point": ("nz", "nn", "1", "1", "|", "nn"),
-          "observe": ("nn", "d", "|", "d", "1", "d", "1"),
-          "update_p": ("nz", "nn", "d", "1", "|", "d"),
-          "velocity_step": ("nn", "d", "d", "|", "d"), "record": ("nn", "d", "d", "|", "w")}
 
 
 def read_meta(module_dir) -> dict:
@@ -68,18 +54,17 @@ def read_meta(module_dir) -> dict:
     for key in ("step_uses_g", "record_uses_g", "record_uses_xi", "legendre_quadratic"):
         if not isinstance(meta.get(key), bool):
             raise bad(key, "expected true or false")
-    size = {"nz": nz, "nn": n * n, "d": d, "dd": d * d, "nznz": nz * nz, "1": 1, "w": w}
+    size = abi.sizes(n, d, nz, w)
     kernels = meta.get("kernels")
-    if not isinstance(kernels, dict) or set(kernels) != set(KERNEL_NAMES):
-        raise bad("kernels", f"expected the kernels {KERNEL_NAMES}")
-    for name, spec in _SIZES.items():
-        k = kernels[name]
-        cut = spec.index("|")
+    if not isinstance(kernels, dict) or set(kernels) != set(abi.KERNEL_NAMES):
+        raise bad("kernels", f"expected the kernels {abi.KERNEL_NAMES}")
+    for spec in abi.KERNELS:
+        name, k = spec.name, kernels[spec.name]
         try:
             got = ([int(s) for _, s in k["inputs"]], [int(s) for _, s in k["outputs"]])
         except (KeyError, TypeError, ValueError):
             raise bad(f"kernels.{name}", "malformed signature") from None
-        want = ([size[s] for s in spec[:cut]], [size[s] for s in spec[cut + 1:]])
+        want = ([size[s] for s in spec.inputs], [size[s] for s in spec.outputs])
         if got != want:
             raise bad(f"kernels.{name}", f"sizes {got} do not match the contract {want}")
     return meta
