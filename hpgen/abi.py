@@ -122,8 +122,7 @@ STATUS = (
     (NO_CONVERGENCE, "NO_CONVERGENCE", "Newton did not converge"),
     (NONFINITE, "NONFINITE", "a non-finite value (or a singular Jacobian) appeared"),
     (DOMAIN, "DOMAIN", "the chart map tau left its domain (margin(z, h) <= 0)"),
-    (RECORD, "RECORD", "a recorded value is not finite (or the velocity xi behind it did "
-                       "not converge)"),
+    (RECORD, "RECORD", "a record row is not finite (or its velocity xi did not converge)"),
     (INVALID, "INVALID", "invalid argument"),
 )
 MESSAGES = {code: message for code, _, message in STATUS}

@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 7ea81768e6a8c80362d41c44e91ec354b643466fff913d1d05d097700dd47b84
+# content hash: 86cc5387b248a21a823680fb1c50b7035f20217bd367129760a1ce67fc8cb0e7
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "7ea81768e6a8c80362d41c44e91ec354b643466fff913d1d05d097700dd47b84"
+HASH = "86cc5387b248a21a823680fb1c50b7035f20217bd367129760a1ce67fc8cb0e7"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

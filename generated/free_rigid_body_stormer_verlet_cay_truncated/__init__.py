@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 4382fbc4113b0b66e29536092067ee9507f4df670cad838ebd02348dd28e14d0
+# content hash: 7bbaca98cb898e73e495c662d12b7f663a4a67a24d0527ddbadcd4cfeeb88cbf
 """hpgen integrator free_rigid_body_stormer_verlet_cay_truncated for the model free_rigid_body.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "free_rigid_body_stormer_verlet_cay_truncated"
-HASH = "4382fbc4113b0b66e29536092067ee9507f4df670cad838ebd02348dd28e14d0"
+HASH = "7bbaca98cb898e73e495c662d12b7f663a4a67a24d0527ddbadcd4cfeeb88cbf"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

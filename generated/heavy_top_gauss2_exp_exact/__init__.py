@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 3b841f0fd13b47ddb7dbb43d9ddeb5f41daf65707807ec3d2ae2c9b45011e169
+# content hash: 04235c71759b368c3d5cbe75444c0a97c80991baa8c7105c1aeef7f64d668b50
 """hpgen integrator heavy_top_gauss2_exp_exact for the model heavy_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "heavy_top_gauss2_exp_exact"
-HASH = "3b841f0fd13b47ddb7dbb43d9ddeb5f41daf65707807ec3d2ae2c9b45011e169"
+HASH = "04235c71759b368c3d5cbe75444c0a97c80991baa8c7105c1aeef7f64d668b50"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

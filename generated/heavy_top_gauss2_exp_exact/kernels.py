@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 3b841f0fd13b47ddb7dbb43d9ddeb5f41daf65707807ec3d2ae2c9b45011e169
+# content hash: 04235c71759b368c3d5cbe75444c0a97c80991baa8c7105c1aeef7f64d668b50
 """Python backend of the hpgen module heavy_top_gauss2_exp_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 119b312a5702df2093889cf336be5dbe5d563b2aaf97e1fa925eceda979dff8d
+# content hash: cbdfd4d8dbfa4b27baf48fd69d00b29690346f5ee9bd99df7a50efb8de1b8026
 """hpgen integrator lagrange_top_gauss2_cay_exact for the model lagrange_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "lagrange_top_gauss2_cay_exact"
-HASH = "119b312a5702df2093889cf336be5dbe5d563b2aaf97e1fa925eceda979dff8d"
+HASH = "cbdfd4d8dbfa4b27baf48fd69d00b29690346f5ee9bd99df7a50efb8de1b8026"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

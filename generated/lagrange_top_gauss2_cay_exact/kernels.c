@@ -3,15 +3,20 @@
  * model: lagrange_top
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 119b312a5702df2093889cf336be5dbe5d563b2aaf97e1fa925eceda979dff8d
+ * content hash: cbdfd4d8dbfa4b27baf48fd69d00b29690346f5ee9bd99df7a50efb8de1b8026
  *
- * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
- * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
+ * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
+ * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
+ * with hpgen.runtime is hpgen.abi. Conventions: all arrays are double, matrices column-major
  * (g[i + j*n]), h is a scalar at the API and a 1-vector for the kernels. No static mutable
  * state: every function is thread-safe; work arrays live on the stack, sized at codegen time.
- * Status codes: 0 ok, 1 Newton did not converge, 2 non-finite value (or singular Jacobian),
- * 3 tau out of its domain (margin(z, h) <= 0 after convergence), 4 a record row not finite
- * (or its velocity xi not converged), -1 invalid argument.
+ * Status codes (hpgen.abi.STATUS):
+ *   HPGEN_OK = 0: ok
+ *   HPGEN_NO_CONVERGENCE = 1: Newton did not converge
+ *   HPGEN_NONFINITE = 2: a non-finite value (or a singular Jacobian) appeared
+ *   HPGEN_DOMAIN = 3: the chart map tau left its domain (margin(z, h) <= 0)
+ *   HPGEN_RECORD = 4: a record row is not finite (or its velocity xi did not converge)
+ *   HPGEN_INVALID = -1: invalid argument
  */
 /* Standard headers first: the CasADi part below is compiled under hidden visibility. */
 #include <math.h>
@@ -7357,7 +7362,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "119b312a5702df2093889cf336be5dbe5d563b2aaf97e1fa925eceda979dff8d"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "cbdfd4d8dbfa4b27baf48fd69d00b29690346f5ee9bd99df7a50efb8de1b8026"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: f79404ff989392efabe67ba9e32f1053959f44e5691f1d79da0d7ab268c80f77
+# content hash: abaaba72f2426d88385054101293baace62d1375e4ebb2f9880830de56d6ec06
 """hpgen integrator turntable_stormer_verlet_cay_truncated for the model turntable.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "turntable_stormer_verlet_cay_truncated"
-HASH = "f79404ff989392efabe67ba9e32f1053959f44e5691f1d79da0d7ab268c80f77"
+HASH = "abaaba72f2426d88385054101293baace62d1375e4ebb2f9880830de56d6ec06"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

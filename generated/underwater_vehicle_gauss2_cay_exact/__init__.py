@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 127683ac061ad469cf77d5420201fa9c0a4704f4672b1f46c7eff8947903a173
+# content hash: 0380194a0706bdaaa2c27f0c98e51e73e7876277b42f40e8475620a9ccb5435a
 """hpgen integrator underwater_vehicle_gauss2_cay_exact for the model underwater_vehicle.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "underwater_vehicle_gauss2_cay_exact"
-HASH = "127683ac061ad469cf77d5420201fa9c0a4704f4672b1f46c7eff8947903a173"
+HASH = "0380194a0706bdaaa2c27f0c98e51e73e7876277b42f40e8475620a9ccb5435a"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

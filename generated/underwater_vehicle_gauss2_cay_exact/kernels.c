@@ -3,15 +3,20 @@
  * model: underwater_vehicle
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 127683ac061ad469cf77d5420201fa9c0a4704f4672b1f46c7eff8947903a173
+ * content hash: 0380194a0706bdaaa2c27f0c98e51e73e7876277b42f40e8475620a9ccb5435a
  *
- * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
- * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
+ * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
+ * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
+ * with hpgen.runtime is hpgen.abi. Conventions: all arrays are double, matrices column-major
  * (g[i + j*n]), h is a scalar at the API and a 1-vector for the kernels. No static mutable
  * state: every function is thread-safe; work arrays live on the stack, sized at codegen time.
- * Status codes: 0 ok, 1 Newton did not converge, 2 non-finite value (or singular Jacobian),
- * 3 tau out of its domain (margin(z, h) <= 0 after convergence), 4 a record row not finite
- * (or its velocity xi not converged), -1 invalid argument.
+ * Status codes (hpgen.abi.STATUS):
+ *   HPGEN_OK = 0: ok
+ *   HPGEN_NO_CONVERGENCE = 1: Newton did not converge
+ *   HPGEN_NONFINITE = 2: a non-finite value (or a singular Jacobian) appeared
+ *   HPGEN_DOMAIN = 3: the chart map tau left its domain (margin(z, h) <= 0)
+ *   HPGEN_RECORD = 4: a record row is not finite (or its velocity xi did not converge)
+ *   HPGEN_INVALID = -1: invalid argument
  */
 /* Standard headers first: the CasADi part below is compiled under hidden visibility. */
 #include <math.h>
@@ -20179,7 +20184,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "127683ac061ad469cf77d5420201fa9c0a4704f4672b1f46c7eff8947903a173"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "0380194a0706bdaaa2c27f0c98e51e73e7876277b42f40e8475620a9ccb5435a"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -7,9 +7,9 @@ The positional contract (kernel names, order, sizes) is hpgen.abi.KERNELS; names
 from __future__ import annotations
 
 import keyword
-import math
 import re
 
+from .. import abi
 from ..abi import KERNEL_NAMES, SIGNATURES, sizes
 from ..errors import HpgenError
 
@@ -79,29 +79,15 @@ def check_step(step) -> None:
             raise CodegenError(f"kernel {k.name}: argument names are not distinct")
 
 
-RECORD_NAME_RE = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}\Z")
-
-
 def check_record_layout(step) -> None:
-    """record_layout: ((name, offset, shape), ...), names distinct identifiers, offsets
-    contiguous from 0, shapes () | (d,) | (n, n); width >= 1."""
-    layout, offset, seen = step.record_layout, 0, set()
-    if not layout:
+    """record_layout: the conventions of hpgen.abi.record_width (names distinct identifiers,
+    offsets contiguous from 0, shapes () | (d,) | (n, n), at least one entry)."""
+    if not step.record_layout:
         raise CodegenError("DiscreteStep.record_layout is empty (the scene records nothing)")
-    for entry in layout:
-        try:
-            name, off, shape = entry
-        except (TypeError, ValueError):
-            raise CodegenError(f"record_layout entry {entry!r}: expected (name, offset, "
-                               "shape)") from None
-        if not isinstance(name, str) or not RECORD_NAME_RE.match(name) or name in seen:
-            raise CodegenError(f"record_layout: name {name!r} is not a distinct identifier")
-        if off != offset or tuple(shape) not in ((), (step.d,), (step.n, step.n)):
-            raise CodegenError(f"record_layout: {name!r} at offset {off} with shape {shape}; "
-                               f"expected offset {offset} and shape (), ({step.d},) or "
-                               f"({step.n}, {step.n})")
-        seen.add(name)
-        offset += math.prod(shape)
+    try:
+        abi.record_width(step.record_layout, step.n, step.d)
+    except ValueError as exc:
+        raise CodegenError(f"record_layout: {exc}") from None
 
 
 def dense_positions(sp) -> list[int]:

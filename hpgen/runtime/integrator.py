@@ -19,7 +19,8 @@ import numpy as np
 
 from ..errors import ConvergenceError, ModelError
 from . import newton
-from .args import _MESSAGES, _array, _error, _int, _positive
+from .. import abi
+from .args import _array, _error, _int, _positive
 from .records import RecordsMixin
 from .sections import SectionsMixin
 from .trajectory import Trajectory
@@ -96,7 +97,7 @@ class Integrator(SectionsMixin, RecordsMixin):
         code, xi, it, r = newton.newton(fun, np.zeros(d), tol, maxit)
         if code != newton.OK:
             raise ConvergenceError("inverting the Legendre transform (velocity from momentum): "
-                                   + _MESSAGES[code], step=0, time=0.0, residual=r,
+                                   + abi.MESSAGES[code], step=0, time=0.0, residual=r,
                                    iterations=it)
         return xi
 

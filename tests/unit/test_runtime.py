@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import hpgen
+from hpgen.abi import META_FORMAT
 from hpgen.runtime import newton
 from hpgen.errors import BuildError, ConvergenceError, DomainError, ModelError
 from hpgen.runtime import build_library, load
@@ -233,8 +234,9 @@ def test_load_rejects_bad_meta_and_backend(tmp_path):
     with pytest.raises(ModelError, match="backend"):
         load(d, backend="fortran")
     meta = (d / "meta.json").read_text()
-    (d / "meta.json").write_text(meta.replace('"format": 1', '"format": 99'))
-    with pytest.raises(ModelError, match="format"):
+    assert f'"format": {META_FORMAT},' in meta
+    (d / "meta.json").write_text(meta.replace(f'"format": {META_FORMAT},', '"format": 1,'))
+    with pytest.raises(ModelError, match=r"format: .*format 1, .*recompile"):
         load(d)
     (d / "meta.json").write_text(meta.replace('"0123456789abcdef', '"../../0123456789abcdef'))
     with pytest.raises(ModelError, match="hash"):
