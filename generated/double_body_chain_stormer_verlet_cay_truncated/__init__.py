@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 86cc5387b248a21a823680fb1c50b7035f20217bd367129760a1ce67fc8cb0e7
+# content hash: bf91cc6bc52866aa7fe724d16d8181d3de2896b3d5b550820440453d6a53ef2e
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "86cc5387b248a21a823680fb1c50b7035f20217bd367129760a1ce67fc8cb0e7"
+HASH = "bf91cc6bc52866aa7fe724d16d8181d3de2896b3d5b550820440453d6a53ef2e"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}
@@ -32,17 +32,19 @@ def integrator(backend=None):
         return _loaded[backend]
 
 
-def step(g, p, h):
-    """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) with the default backend."""
-    return integrator().step(g, p, h)
+def step(g, p, h, **kw):
+    """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) with the default backend (Integrator.step:
+    z=, newton=)."""
+    return integrator().step(g, p, h, **kw)
 
 
 def simulate(**kw):
-    """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Trajectory."""
+    """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1,
+    newton=hpgen.runtime.NewtonOptions(...)) -> Trajectory."""
     return integrator().simulate(**kw)
 
 
 def record(**kw):
-    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Records: only the
-    scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
+    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1, newton=...) ->
+    Records: only the scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
     return integrator().record(**kw)

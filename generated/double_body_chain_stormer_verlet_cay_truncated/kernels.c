@@ -3,7 +3,7 @@
  * model: double_body_chain
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 86cc5387b248a21a823680fb1c50b7035f20217bd367129760a1ce67fc8cb0e7
+ * content hash: bf91cc6bc52866aa7fe724d16d8181d3de2896b3d5b550820440453d6a53ef2e
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -4940,7 +4940,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "86cc5387b248a21a823680fb1c50b7035f20217bd367129760a1ce67fc8cb0e7"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "bf91cc6bc52866aa7fe724d16d8181d3de2896b3d5b550820440453d6a53ef2e"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 7bbaca98cb898e73e495c662d12b7f663a4a67a24d0527ddbadcd4cfeeb88cbf
+# content hash: c31b63ed7f1e9be23f22c9b518226247fe938137a40bd5897b836f475499cb25
 """hpgen integrator free_rigid_body_stormer_verlet_cay_truncated for the model free_rigid_body.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "free_rigid_body_stormer_verlet_cay_truncated"
-HASH = "7bbaca98cb898e73e495c662d12b7f663a4a67a24d0527ddbadcd4cfeeb88cbf"
+HASH = "c31b63ed7f1e9be23f22c9b518226247fe938137a40bd5897b836f475499cb25"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}
@@ -32,17 +32,19 @@ def integrator(backend=None):
         return _loaded[backend]
 
 
-def step(g, p, h):
-    """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) with the default backend."""
-    return integrator().step(g, p, h)
+def step(g, p, h, **kw):
+    """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) with the default backend (Integrator.step:
+    z=, newton=)."""
+    return integrator().step(g, p, h, **kw)
 
 
 def simulate(**kw):
-    """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Trajectory."""
+    """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1,
+    newton=hpgen.runtime.NewtonOptions(...)) -> Trajectory."""
     return integrator().simulate(**kw)
 
 
 def record(**kw):
-    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Records: only the
-    scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
+    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1, newton=...) ->
+    Records: only the scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
     return integrator().record(**kw)

@@ -3,7 +3,7 @@
  * model: free_rigid_body
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 7bbaca98cb898e73e495c662d12b7f663a4a67a24d0527ddbadcd4cfeeb88cbf
+ * content hash: c31b63ed7f1e9be23f22c9b518226247fe938137a40bd5897b836f475499cb25
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -2554,7 +2554,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "7bbaca98cb898e73e495c662d12b7f663a4a67a24d0527ddbadcd4cfeeb88cbf"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "c31b63ed7f1e9be23f22c9b518226247fe938137a40bd5897b836f475499cb25"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

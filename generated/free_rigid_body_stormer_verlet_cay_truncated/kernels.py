@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 7bbaca98cb898e73e495c662d12b7f663a4a67a24d0527ddbadcd4cfeeb88cbf
+# content hash: c31b63ed7f1e9be23f22c9b518226247fe938137a40bd5897b836f475499cb25
 """Python backend of the hpgen module free_rigid_body_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

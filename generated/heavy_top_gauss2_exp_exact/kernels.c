@@ -3,7 +3,7 @@
  * model: heavy_top
  * options: tableau=gauss2, tau=exp, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 04235c71759b368c3d5cbe75444c0a97c80991baa8c7105c1aeef7f64d668b50
+ * content hash: 787a59677608fe63ca72e04134e51afcd146dc17fc81f0ceb5d8e2d01d1180f8
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -11451,7 +11451,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "04235c71759b368c3d5cbe75444c0a97c80991baa8c7105c1aeef7f64d668b50"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "787a59677608fe63ca72e04134e51afcd146dc17fc81f0ceb5d8e2d01d1180f8"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: cbdfd4d8dbfa4b27baf48fd69d00b29690346f5ee9bd99df7a50efb8de1b8026
+# content hash: 72d56d393eeab3dbb0e43aef6eb37f3cc79999531b0465385dcbf0a6443b3373
 """hpgen integrator lagrange_top_gauss2_cay_exact for the model lagrange_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "lagrange_top_gauss2_cay_exact"
-HASH = "cbdfd4d8dbfa4b27baf48fd69d00b29690346f5ee9bd99df7a50efb8de1b8026"
+HASH = "72d56d393eeab3dbb0e43aef6eb37f3cc79999531b0465385dcbf0a6443b3373"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}
@@ -32,17 +32,19 @@ def integrator(backend=None):
         return _loaded[backend]
 
 
-def step(g, p, h):
-    """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) with the default backend."""
-    return integrator().step(g, p, h)
+def step(g, p, h, **kw):
+    """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) with the default backend (Integrator.step:
+    z=, newton=)."""
+    return integrator().step(g, p, h, **kw)
 
 
 def simulate(**kw):
-    """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Trajectory."""
+    """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1,
+    newton=hpgen.runtime.NewtonOptions(...)) -> Trajectory."""
     return integrator().simulate(**kw)
 
 
 def record(**kw):
-    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Records: only the
-    scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
+    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1, newton=...) ->
+    Records: only the scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
     return integrator().record(**kw)

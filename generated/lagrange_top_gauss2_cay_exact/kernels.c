@@ -3,7 +3,7 @@
  * model: lagrange_top
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: cbdfd4d8dbfa4b27baf48fd69d00b29690346f5ee9bd99df7a50efb8de1b8026
+ * content hash: 72d56d393eeab3dbb0e43aef6eb37f3cc79999531b0465385dcbf0a6443b3373
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -7362,7 +7362,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "cbdfd4d8dbfa4b27baf48fd69d00b29690346f5ee9bd99df7a50efb8de1b8026"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "72d56d393eeab3dbb0e43aef6eb37f3cc79999531b0465385dcbf0a6443b3373"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

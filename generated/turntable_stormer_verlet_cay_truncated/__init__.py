@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: abaaba72f2426d88385054101293baace62d1375e4ebb2f9880830de56d6ec06
+# content hash: 71575b29daef5fb2ca4a6d42381d294f33435db19f239c2aca5f4a853bf57867
 """hpgen integrator turntable_stormer_verlet_cay_truncated for the model turntable.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "turntable_stormer_verlet_cay_truncated"
-HASH = "abaaba72f2426d88385054101293baace62d1375e4ebb2f9880830de56d6ec06"
+HASH = "71575b29daef5fb2ca4a6d42381d294f33435db19f239c2aca5f4a853bf57867"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}
@@ -32,17 +32,19 @@ def integrator(backend=None):
         return _loaded[backend]
 
 
-def step(g, p, h):
-    """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) with the default backend."""
-    return integrator().step(g, p, h)
+def step(g, p, h, **kw):
+    """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) with the default backend (Integrator.step:
+    z=, newton=)."""
+    return integrator().step(g, p, h, **kw)
 
 
 def simulate(**kw):
-    """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Trajectory."""
+    """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1,
+    newton=hpgen.runtime.NewtonOptions(...)) -> Trajectory."""
     return integrator().simulate(**kw)
 
 
 def record(**kw):
-    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Records: only the
-    scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
+    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1, newton=...) ->
+    Records: only the scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
     return integrator().record(**kw)

@@ -3,7 +3,7 @@
  * model: turntable
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: abaaba72f2426d88385054101293baace62d1375e4ebb2f9880830de56d6ec06
+ * content hash: 71575b29daef5fb2ca4a6d42381d294f33435db19f239c2aca5f4a853bf57867
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -4313,7 +4313,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "abaaba72f2426d88385054101293baace62d1375e4ebb2f9880830de56d6ec06"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "71575b29daef5fb2ca4a6d42381d294f33435db19f239c2aca5f4a853bf57867"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: abaaba72f2426d88385054101293baace62d1375e4ebb2f9880830de56d6ec06
+# content hash: 71575b29daef5fb2ca4a6d42381d294f33435db19f239c2aca5f4a853bf57867
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -3,7 +3,7 @@
  * model: underwater_vehicle
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 0380194a0706bdaaa2c27f0c98e51e73e7876277b42f40e8475620a9ccb5435a
+ * content hash: d4ef3c08d67d8a748d2f80c24d0c66659b862a51c23d2dfc3379c73a4cabaf0e
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -20184,7 +20184,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "0380194a0706bdaaa2c27f0c98e51e73e7876277b42f40e8475620a9ccb5435a"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "d4ef3c08d67d8a748d2f80c24d0c66659b862a51c23d2dfc3379c73a4cabaf0e"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

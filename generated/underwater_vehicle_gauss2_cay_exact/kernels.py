@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 0380194a0706bdaaa2c27f0c98e51e73e7876277b42f40e8475620a9ccb5435a
+# content hash: d4ef3c08d67d8a748d2f80c24d0c66659b862a51c23d2dfc3379c73a4cabaf0e
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

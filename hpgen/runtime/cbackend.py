@@ -180,7 +180,7 @@ class CBackend(_Backend):
                                     ctypes.byref(st))
         if code < 0:
             raise ValueError("hpgen_step rejected its arguments")
-        if code != newton.OK:
+        if code != abi.OK:
             return code, None, None, z, st.iterations, st.residual
         return code, g1, p1, z, st.iterations, st.residual
 
@@ -338,7 +338,7 @@ class CBackend(_Backend):
         _over_threads(B, threads, work)
         out = [s.as_dict() for s in sts]
         for b, (code, _) in enumerate(first):
-            if code != newton.OK:
+            if code != abi.OK:
                 out[b] = {**loop.new_status(), "code": int(code)}
                 n_rec[b] = 0
         return rows, n_rec + 1, out

@@ -49,11 +49,17 @@ _isfinite = math.isfinite
 
 @dataclass(frozen=True)
 class NewtonOptions:
-    """Runtime Newton settings (the C backend's ``hpgen_options``)."""
+    """Runtime Newton settings, the one argument ``newton=`` of the Integrator's stepping
+    methods (the C backend's ``hpgen_options``, abi.OPTIONS_FIELDS).
+
+    tol: converged when |dz| <= tol (1 + |z|) (inf-norms); maxit: iterations per step >= 1;
+    simplified: reuse J^{-1} across iterations and steps (None: the Integrator decides, see
+    hpgen.runtime.integrator; the loops here read None as False); predictor: start step k+1
+    from the extrapolated last solutions (else from z_k)."""
     tol: float = DEFAULT_TOL
     maxit: int = DEFAULT_MAXIT
-    simplified: bool = True      # reuse J^{-1} across iterations and steps
-    predictor: bool = True       # start step k+1 from the extrapolated last solutions
+    simplified: bool | None = None
+    predictor: bool = True
 
 
 class NewtonMemory:
