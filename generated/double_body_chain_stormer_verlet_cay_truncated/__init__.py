@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: bf91cc6bc52866aa7fe724d16d8181d3de2896b3d5b550820440453d6a53ef2e
+# content hash: fb7fecee76c3739f5b07b968cf5b1307356d06f037834f048fdd9ac2e8e38622
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "bf91cc6bc52866aa7fe724d16d8181d3de2896b3d5b550820440453d6a53ef2e"
+HASH = "fb7fecee76c3739f5b07b968cf5b1307356d06f037834f048fdd9ac2e8e38622"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: double_body_chain
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: bf91cc6bc52866aa7fe724d16d8181d3de2896b3d5b550820440453d6a53ef2e
+ * content hash: fb7fecee76c3739f5b07b968cf5b1307356d06f037834f048fdd9ac2e8e38622
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -4940,7 +4940,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "bf91cc6bc52866aa7fe724d16d8181d3de2896b3d5b550820440453d6a53ef2e"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "fb7fecee76c3739f5b07b968cf5b1307356d06f037834f048fdd9ac2e8e38622"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -5716,11 +5716,6 @@ HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, d
     return r->k;
 }
 
-/* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
-   solution, or from the extrapolation of the last three). The state after global step k is
-   recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
-   sizes them for the records falling in this call). Stops at the first failed step (the run
-   keeps the last good state). Returns the steps done in this call. */
 /* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
    success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for the steps
    after the first, full (o with full Newton) for the first. Updates the counters of st;
@@ -5755,6 +5750,11 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     return HPGEN_OK;
 }
 
+/* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
+   solution, or from the extrapolation of the last three). The state after global step k is
+   recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
+   sizes them for the records falling in this call). Stops at the first failed step (the run
+   keeps the last good state). Returns the steps done in this call. */
 HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, long long every,
                                      const hpgen_options* o, double* g_rec, double* p_rec,
                                      hpgen_status* st) {

@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 787a59677608fe63ca72e04134e51afcd146dc17fc81f0ceb5d8e2d01d1180f8
+# content hash: 00214662561b4a0d8284b956527bfa3c4a913eb4577659d2292634f9a5287ce9
 """hpgen integrator heavy_top_gauss2_exp_exact for the model heavy_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "heavy_top_gauss2_exp_exact"
-HASH = "787a59677608fe63ca72e04134e51afcd146dc17fc81f0ceb5d8e2d01d1180f8"
+HASH = "00214662561b4a0d8284b956527bfa3c4a913eb4577659d2292634f9a5287ce9"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

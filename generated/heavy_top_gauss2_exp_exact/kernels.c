@@ -3,7 +3,7 @@
  * model: heavy_top
  * options: tableau=gauss2, tau=exp, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 787a59677608fe63ca72e04134e51afcd146dc17fc81f0ceb5d8e2d01d1180f8
+ * content hash: 00214662561b4a0d8284b956527bfa3c4a913eb4577659d2292634f9a5287ce9
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -11451,7 +11451,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "787a59677608fe63ca72e04134e51afcd146dc17fc81f0ceb5d8e2d01d1180f8"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "00214662561b4a0d8284b956527bfa3c4a913eb4577659d2292634f9a5287ce9"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {
@@ -12222,11 +12222,6 @@ HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, d
     return r->k;
 }
 
-/* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
-   solution, or from the extrapolation of the last three). The state after global step k is
-   recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
-   sizes them for the records falling in this call). Stops at the first failed step (the run
-   keeps the last good state). Returns the steps done in this call. */
 /* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
    success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for the steps
    after the first, full (o with full Newton) for the first. Updates the counters of st;
@@ -12261,6 +12256,11 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     return HPGEN_OK;
 }
 
+/* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
+   solution, or from the extrapolation of the last three). The state after global step k is
+   recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
+   sizes them for the records falling in this call). Stops at the first failed step (the run
+   keeps the last good state). Returns the steps done in this call. */
 HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, long long every,
                                      const hpgen_options* o, double* g_rec, double* p_rec,
                                      hpgen_status* st) {

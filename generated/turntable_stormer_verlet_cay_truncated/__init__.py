@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 71575b29daef5fb2ca4a6d42381d294f33435db19f239c2aca5f4a853bf57867
+# content hash: 211ef06403a6cb0e5f0df55125ed8498bb225ff1d98a65209fc6e9958e8556f9
 """hpgen integrator turntable_stormer_verlet_cay_truncated for the model turntable.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "turntable_stormer_verlet_cay_truncated"
-HASH = "71575b29daef5fb2ca4a6d42381d294f33435db19f239c2aca5f4a853bf57867"
+HASH = "211ef06403a6cb0e5f0df55125ed8498bb225ff1d98a65209fc6e9958e8556f9"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

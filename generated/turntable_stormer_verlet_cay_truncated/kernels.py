@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 71575b29daef5fb2ca4a6d42381d294f33435db19f239c2aca5f4a853bf57867
+# content hash: 211ef06403a6cb0e5f0df55125ed8498bb225ff1d98a65209fc6e9958e8556f9
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: d4ef3c08d67d8a748d2f80c24d0c66659b862a51c23d2dfc3379c73a4cabaf0e
+# content hash: 58b0c774680d5b92bc3ebf5acfd470120ee9fe463ba3cd220cd38ceb272a4fd5
 """hpgen integrator underwater_vehicle_gauss2_cay_exact for the model underwater_vehicle.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "underwater_vehicle_gauss2_cay_exact"
-HASH = "d4ef3c08d67d8a748d2f80c24d0c66659b862a51c23d2dfc3379c73a4cabaf0e"
+HASH = "58b0c774680d5b92bc3ebf5acfd470120ee9fe463ba3cd220cd38ceb272a4fd5"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

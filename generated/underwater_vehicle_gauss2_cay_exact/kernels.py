@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: d4ef3c08d67d8a748d2f80c24d0c66659b862a51c23d2dfc3379c73a4cabaf0e
+# content hash: 58b0c774680d5b92bc3ebf5acfd470120ee9fe463ba3cd220cd38ceb272a4fd5
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -4,7 +4,8 @@ Generated files (relative paths):
   kernels.c    CasADi's C for all kernels + templates/kernels.c.j2 (LU, Newton, step, runs);
                status codes and Newton constants from hpgen.abi
   kernels.py   the Python backend printed from the same SX algorithms (templates/kernels.py.j2)
-  __init__.py  lazy wrapper: integrator(backend=None), step(g, p, h), simulate(**kw)
+  __init__.py  lazy wrapper: integrator(backend=None), step(g, p, h), simulate(**kw),
+               record(**kw)
   meta.json    dimensions, options, kernel signatures, CasADi work sizes (sorted keys)
   model.yaml   the model source, as is
 Output is deterministic: the same step and info give the same bytes. Every code file starts
