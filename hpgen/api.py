@@ -131,8 +131,8 @@ def build(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
 
 
 #: what produces the generated code, besides the model and options (hashed into the key)
-_GENERATOR_SOURCES = ("hpgen/model", "hpgen/groups", "hpgen/tableaus", "hpgen/derive",
-                      "hpgen/codegen", "templates")
+_GENERATOR_SOURCES = ("hpgen/abi.py", "hpgen/model", "hpgen/groups", "hpgen/tableaus",
+                      "hpgen/derive", "hpgen/codegen", "templates")
 
 
 @lru_cache(maxsize=1)
@@ -141,10 +141,11 @@ def generator_digest() -> str:
     changed generator never serves a stale cache entry."""
     root = Path(__file__).resolve().parents[1]
     h = hashlib.sha256()
-    for folder in _GENERATOR_SOURCES:
-        for f in sorted((root / folder).glob("*")):
+    for source in _GENERATOR_SOURCES:
+        path = root / source
+        for f in [path] if path.is_file() else sorted(path.glob("*")):
             if f.is_file() and f.suffix in (".py", ".j2"):
-                h.update(f"{folder}/{f.name}".encode() + b"\0" + f.read_bytes())
+                h.update(f.relative_to(root).as_posix().encode() + b"\0" + f.read_bytes())
     return h.hexdigest()
 
 

@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: fb7fecee76c3739f5b07b968cf5b1307356d06f037834f048fdd9ac2e8e38622
+# content hash: 560d6e20b2d60b57698adad8810fee8df8c04bdac0f57d64bc255967dbd47d62
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "fb7fecee76c3739f5b07b968cf5b1307356d06f037834f048fdd9ac2e8e38622"
+HASH = "560d6e20b2d60b57698adad8810fee8df8c04bdac0f57d64bc255967dbd47d62"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: fb7fecee76c3739f5b07b968cf5b1307356d06f037834f048fdd9ac2e8e38622
+# content hash: 560d6e20b2d60b57698adad8810fee8df8c04bdac0f57d64bc255967dbd47d62
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 82ff3d41e53a884856d7d7b71d0b9f05c236ecd5c8ac67e013e404f957114fb3
+# content hash: 48f10250fc05b96a47616ed22d76ced3b99aee97b6b2450eef2551674e706a15
 """Python backend of the hpgen module free_rigid_body_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 211ef06403a6cb0e5f0df55125ed8498bb225ff1d98a65209fc6e9958e8556f9
+# content hash: 0905dff342f7b81cfe8e556a78e502656f643979ec0cbfbc2033bf51c23cfda5
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

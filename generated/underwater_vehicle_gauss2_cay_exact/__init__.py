@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 58b0c774680d5b92bc3ebf5acfd470120ee9fe463ba3cd220cd38ceb272a4fd5
+# content hash: a31a5ce7578c94573e30027ccb8988f7ef8bee8d8c1446069012d99fbc9bd448
 """hpgen integrator underwater_vehicle_gauss2_cay_exact for the model underwater_vehicle.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "underwater_vehicle_gauss2_cay_exact"
-HASH = "58b0c774680d5b92bc3ebf5acfd470120ee9fe463ba3cd220cd38ceb272a4fd5"
+HASH = "a31a5ce7578c94573e30027ccb8988f7ef8bee8d8c1446069012d99fbc9bd448"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

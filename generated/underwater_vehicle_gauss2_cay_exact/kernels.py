@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 58b0c774680d5b92bc3ebf5acfd470120ee9fe463ba3cd220cd38ceb272a4fd5
+# content hash: a31a5ce7578c94573e30027ccb8988f7ef8bee8d8c1446069012d99fbc9bd448
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that
