@@ -21,6 +21,8 @@ from pathlib import Path
 
 import numpy as np
 
+from hpgen.runtime import NewtonOptions
+
 ROOT = Path(__file__).resolve().parents[1]
 MODEL = ROOT / "examples" / "heavy_top.yaml"
 CONFIGS = [("stormer-verlet", "cay", "truncated"), ("gauss2", "cay", "exact"),
@@ -119,7 +121,8 @@ def main():
         py = hpgen.compile(MODEL, backend="python", **opts)
         n = 2000 if a.quick else 20000
         tc, it, jac = per_step(c, n, 3 if a.quick else 7)
-        tf, itf, _ = per_step(c, n, 3 if a.quick else 7, simplified=False)
+        tf, itf, _ = per_step(c, n, 3 if a.quick else 7,
+                              newton=NewtonOptions(simplified=False))
         tp, _, _ = per_step(py, 200 if a.quick else 1000, 3)
         mode = "simplified" if c.simplified_default else "full"
         print(f"| {tab} | {tau} | {rk} | {c.nz} | {mode} | {tc * 1e6:.2f} | {it:.2f} | {jac:.2f} "

@@ -8,7 +8,7 @@ from __future__ import annotations
 from .errors import BuildError, ConvergenceError, DomainError, HpgenError, ModelError
 
 __version__ = "0.1.0"
-__all__ = ["compile", "load", "HpgenError", "ModelError", "BuildError", "ConvergenceError",
+__all__ = ["compile", "build", "load", "HpgenError", "ModelError", "BuildError", "ConvergenceError",
            "DomainError", "__version__"]
 
 
@@ -16,6 +16,13 @@ def compile(model, **options):
     """Compile a model file (path) into an integrator; see :func:`hpgen.api.compile`."""
     from .api import compile as _compile
     return _compile(model, **options)
+
+
+def build(model, **options):
+    """Compile a model file like ``compile`` and return what the compile produced (module
+    directory, meta, derivation) as a CompiledModule; see :func:`hpgen.api.build`."""
+    from .api import build as _build
+    return _build(model, **options)
 
 
 def load(path, backend=None):

@@ -18,15 +18,22 @@ The cache has two levels (content-addressed, as pystencils and FFCx do):
 - the C library is keyed by the sha256 of the emitted kernels.c plus compiler and flags
   (hpgen.runtime.build), so a derivation that emits the same C reuses the built library.
 A cache hit imports nothing of the compile-time stack (sympy, casadi, jinja2).
+
+``build`` is the same compile returning what it produced (a CompiledModule: the module
+directory, its meta.json, whether the cache served it, and the derivation: model, resolved
+tableau/tau/rkmk and DiscreteStep), so that consumers (hpgen check, hpgen bench) reuse it
+instead of resolving, deriving or locating cache entries again.
 """
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import json
 import sys
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cached_property, lru_cache
 from pathlib import Path
+from typing import Any
 
 from . import __version__, cache
 from .errors import ModelError
@@ -78,19 +85,67 @@ def read_model_text(path) -> str:
         raise ModelError("expected a UTF-8 text file", file=str(path)) from None
 
 
+@dataclass(frozen=True)
+class Derivation:
+    """The derive stage's result for one compile: the parsed model, the resolved tableau
+    (a ButcherTableau), tau and rkmk, and the DiscreteStep."""
+    model: Any
+    tableau: Any
+    tau: str
+    rkmk: str
+    step: Any
+
+
+@dataclass(frozen=True, eq=False)
+class CompiledModule:
+    """What one compile produced.
+
+    source: the model file; text: its text as compiled; options: the CompileOptions;
+    module_dir: the generated module's directory; meta: its meta.json; cached: the module's
+    sources came from the build cache (nothing was derived); built: this compile ran the C
+    compiler (backend "c"). ``derivation`` is this compile's Derivation, or on a cache hit
+    the same one derived on first access (the compile-time stack is imported only then).
+    """
+    source: str
+    text: str
+    options: "CompileOptions"
+    module_dir: Path
+    meta: dict
+    cached: bool
+    built: bool = False
+    derived: Derivation | None = None
+
+    @cached_property
+    def derivation(self) -> Derivation:
+        return self.derived if self.derived is not None else derive_module(
+            self.source, self.text, self.options)
+
+    def load(self, backend=None):
+        """The runtime Integrator of the module (backend None: the compile's backend)."""
+        from .runtime import load
+        o = self.options
+        return load(self.module_dir, backend=o.backend if backend is None else backend,
+                    cc=o.cc, cflags=o.cflags)
+
+
 def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
             cache_dir=None, cc=None, cflags=None):
-    """Compile ``model`` (a path to a model file) and return a loaded runtime Integrator."""
-    opts = CompileOptions(tableau, tau, rkmk, backend, out, cache_dir, cc,
-                          tuple(cflags) if cflags else None)
-    module_dir = build_module(model, opts)
-    from .runtime import load
-    return load(module_dir, backend=opts.backend, cc=opts.cc, cflags=opts.cflags)
+    """Compile ``model`` (a path to a model file) and return a loaded runtime Integrator
+    (``build(...).load()``)."""
+    return build(model, tableau=tableau, tau=tau, rkmk=rkmk, backend=backend, out=out,
+                 cache_dir=cache_dir, cc=cc, cflags=cflags).load()
+
+
+def build(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
+          cache_dir=None, cc=None, cflags=None) -> CompiledModule:
+    """Compile ``model`` like ``compile`` and return the CompiledModule (not loaded)."""
+    return build_compiled(model, CompileOptions(tableau, tau, rkmk, backend, out, cache_dir,
+                                                cc, tuple(cflags) if cflags else None))
 
 
 #: what produces the generated code, besides the model and options (hashed into the key)
-_GENERATOR_SOURCES = ("hpgen/model", "hpgen/groups", "hpgen/tableaus", "hpgen/derive",
-                      "hpgen/codegen", "templates")
+_GENERATOR_SOURCES = ("hpgen/abi.py", "hpgen/model", "hpgen/groups", "hpgen/tableaus",
+                      "hpgen/derive", "hpgen/codegen", "templates")
 
 
 @lru_cache(maxsize=1)
@@ -99,10 +154,13 @@ def generator_digest() -> str:
     changed generator never serves a stale cache entry."""
     root = Path(__file__).resolve().parents[1]
     h = hashlib.sha256()
-    for folder in _GENERATOR_SOURCES:
-        for f in sorted((root / folder).glob("*")):
+    for source in _GENERATOR_SOURCES:
+        path = root / source
+        if source == "templates" and (root / "hpgen" / "templates").is_dir():
+            path = root / "hpgen" / "templates"      # a wheel ships them inside the package
+        for f in [path] if path.is_file() else sorted(path.glob("*")):
             if f.is_file() and f.suffix in (".py", ".j2"):
-                h.update(f"{folder}/{f.name}".encode() + b"\0" + f.read_bytes())
+                h.update(f.relative_to(root).as_posix().encode() + b"\0" + f.read_bytes())
     return h.hexdigest()
 
 
@@ -132,13 +190,73 @@ def _derivation_key(chash: str) -> str:
 
 
 def build_module(model, opts: CompileOptions) -> Path:
-    """Generate (or fetch from the cache) the module for ``model``; return its directory.
+    """Generate (or fetch from the cache) the module for ``model``; return its directory."""
+    return build_compiled(model, opts).module_dir
+
+
+def build_compiled(model, opts: CompileOptions) -> CompiledModule:
+    """Generate (or fetch from the cache) the module for ``model``, build its C library
+    (backend "c"); return the CompiledModule.
 
     With ``opts.out`` the module (sources, MANIFEST.json, this request's model file and, for
     the C backend, the checked library) is copied to ``<out>/<module>/``. A cache directory
     that cannot be written is reported in one line on stderr and a private temporary cache
     is used instead.
     """
+    opts.validate()
+    text = read_model_text(model)
+    cache_dir = Path(opts.cache_dir) if opts.cache_dir else cache.default_cache_dir()
+    try:
+        result, library = _cached_module(str(model), text, opts, cache_dir)
+    except cache.CacheUnwritable as exc:
+        tmp = cache.private_cache_dir()
+        print(f"hpgen: warning: the cache directory {cache_dir} cannot be written "
+              f"({exc.reason}); building in {tmp}", file=sys.stderr)
+        result, library = _cached_module(str(model), text, opts, tmp)
+    if opts.out is None:
+        return result
+    entry = result.module_dir
+    files = cache.read_tree(entry)
+    files["model.yaml"] = text.encode()      # this request's file (the entry keeps the first)
+    unlisted = {}
+    if library is not None:
+        from .runtime.build import read_library
+        unlisted[library.name], unlisted[library.name + ".json"] = read_library(library)
+    dest = Path(opts.out) / result.meta["module"]
+    if not (_same_tree(dest, {**files, **unlisted}) and cache.is_valid(dest)):
+        try:
+            cache.write_tree(dest, files, unlisted=unlisted)
+        except OSError as exc:
+            raise ModelError(f"cannot write the module to {dest} ({exc.strerror or exc})",
+                             field="option out") from None
+    return dataclasses.replace(result, module_dir=dest)
+
+
+def _cached_module(path: str, text: str, opts: CompileOptions, cache_dir: Path):
+    """(CompiledModule of the cache entry, built library or None) of one compile;
+    CacheUnwritable when the cache directory cannot be written and something is missing
+    from it."""
+    chash = content_hash(text, opts)
+    key = _derivation_key(chash)
+    entry = cache_dir / key
+    derived = None
+    if not cache.is_valid(entry):
+        with cache.locked(cache_dir, key):
+            if not cache.is_valid(entry):
+                derived = derive_module(path, text, opts)
+                try:
+                    cache.write_tree(entry, emit_files(derived, text, opts, chash))
+                except OSError as exc:
+                    raise cache.CacheUnwritable(cache_dir, exc) from None
+    meta = json.loads((entry / "meta.json").read_text())
+    library, built = None, False
+    if opts.backend == "c":
+        from .runtime.build import build_library, find_library
+        built = find_library(entry, cc=opts.cc, cflags=opts.cflags) is None
+        library = build_library(entry, cc=opts.cc, cflags=opts.cflags,
+                                store=cache.library_store(cache_dir))
+    return CompiledModule(path, text, opts, entry, meta, cached=derived is None,
+                          built=built, derived=derived), library
     opts.validate()
     text = read_model_text(model)
     cache_dir = Path(opts.cache_dir) if opts.cache_dir else cache.default_cache_dir()
@@ -167,26 +285,6 @@ def build_module(model, opts: CompileOptions) -> Path:
     return dest
 
 
-def _cached_module(path: str, text: str, opts: CompileOptions, cache_dir: Path):
-    """(cache entry, built library or None) of one compile; CacheUnwritable when the cache
-    directory cannot be written and something is missing from it."""
-    chash = content_hash(text, opts)
-    key = _derivation_key(chash)
-    entry = cache_dir / key
-    if not cache.is_valid(entry):
-        with cache.locked(cache_dir, key):
-            if not cache.is_valid(entry):
-                files = generate_files(path, text, opts, chash)
-                try:
-                    cache.write_tree(entry, files)
-                except OSError as exc:
-                    raise cache.CacheUnwritable(cache_dir, exc) from None
-    if opts.backend != "c":
-        return entry, None
-    from .runtime.build import build_library
-    return entry, build_library(entry, cc=opts.cc, cflags=opts.cflags,
-                                store=cache.library_store(cache_dir))
-
 
 def _same_tree(dest: Path, files: dict) -> bool:
     try:
@@ -212,10 +310,15 @@ def resolve(model_obj, opts: CompileOptions):
 
 def generate_files(path: str, text: str, opts: CompileOptions, key: str) -> dict[str, str]:
     """Run the pipeline model -> derive -> codegen; the files of the generated module."""
+    return emit_files(derive_module(path, text, opts), text, opts, key)
+
+
+def derive_module(path: str, text: str, opts: CompileOptions) -> Derivation:
+    """The model (text of the file ``path``) parsed, its options resolved and its step
+    derived and checked. Raises ModelError naming the file."""
     from .model import load_model_text
 
     model_obj = load_model_text(text, filename=path)   # bad input fails before casadi loads
-    from .codegen import emit, module_name
     from .derive import derive
     from .derive.checks import check_legendre
     try:
@@ -224,8 +327,14 @@ def generate_files(path: str, text: str, opts: CompileOptions, key: str) -> dict
         check_legendre(step, model_obj)
     except ModelError as e:          # errors of the options and the derivation name the file too
         raise e.located(file=path) from None
-    name = module_name(model_obj.name, tab.name, tau, rkmk)
-    gm = emit(step, {"module": name, "model_name": model_obj.name, "model_source": text,
-                     "options": {"tableau": tab.name, "tau": tau, "rkmk": rkmk},
-                     "hash": key, "backend": opts.backend})
+    return Derivation(model_obj, tab, tau, rkmk, step)
+
+
+def emit_files(d: Derivation, text: str, opts: CompileOptions, key: str) -> dict[str, str]:
+    """The files of the generated module of a derivation (codegen)."""
+    from .codegen import emit, module_name
+    name = module_name(d.model.name, d.tableau.name, d.tau, d.rkmk)
+    gm = emit(d.step, {"module": name, "model_name": d.model.name, "model_source": text,
+                       "options": {"tableau": d.tableau.name, "tau": d.tau, "rkmk": d.rkmk},
+                       "hash": key, "backend": opts.backend})
     return dict(gm.files)

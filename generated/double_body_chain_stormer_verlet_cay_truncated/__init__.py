@@ -32,17 +32,19 @@ def integrator(backend=None):
         return _loaded[backend]
 
 
-def step(g, p, h):
-    """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) with the default backend."""
-    return integrator().step(g, p, h)
+def step(g, p, h, **kw):
+    """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) with the default backend (Integrator.step:
+    z=, newton=)."""
+    return integrator().step(g, p, h, **kw)
 
 
 def simulate(**kw):
-    """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Trajectory."""
+    """Integrator.simulate(g0=..., h=..., steps=..., xi0= or mu0=, every=1,
+    newton=hpgen.runtime.NewtonOptions(...)) -> Trajectory."""
     return integrator().simulate(**kw)
 
 
 def record(**kw):
-    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1) -> Records: only the
-    scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
+    """Integrator.record(g0=..., h=..., steps=..., xi0= or mu0=, every=1, newton=...) ->
+    Records: only the scene's record list (g, mu, energy, momentum), evaluated inside the step loop."""
     return integrator().record(**kw)

@@ -5,13 +5,18 @@
  * hpgen version: 0.1.0
  * content hash (normalized model + options): ace86d66f6af117c072f373783f17d2341e5676df083791d5d67c5ad6f67f369
  *
- * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step and
- * hpgen_simulate (exported). Conventions: all arrays are double, matrices column-major
+ * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
+ * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
+ * with hpgen.runtime is hpgen.abi. Conventions: all arrays are double, matrices column-major
  * (g[i + j*n]), h is a scalar at the API and a 1-vector for the kernels. No static mutable
  * state: every function is thread-safe; work arrays live on the stack, sized at codegen time.
- * Status codes: 0 ok, 1 Newton did not converge, 2 non-finite value (or singular Jacobian),
- * 3 tau out of its domain (margin(z, h) <= 0 after convergence), 4 a record row not finite
- * (or its velocity xi not converged), -1 invalid argument.
+ * Status codes (hpgen.abi.STATUS):
+ *   HPGEN_OK = 0: ok
+ *   HPGEN_NO_CONVERGENCE = 1: Newton did not converge
+ *   HPGEN_NONFINITE = 2: a non-finite value (or a singular Jacobian) appeared
+ *   HPGEN_DOMAIN = 3: the chart map tau left its domain (margin(z, h) <= 0)
+ *   HPGEN_RECORD = 4: a record row is not finite (or its velocity xi did not converge)
+ *   HPGEN_INVALID = -1: invalid argument
  */
 /* Standard headers first: the CasADi part below is compiled under hidden visibility. */
 #include <math.h>
@@ -5084,11 +5089,6 @@ HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, d
     return r->k;
 }
 
-/* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
-   solution, or from the extrapolation of the last three). The state after global step k is
-   recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
-   sizes them for the records falling in this call). Stops at the first failed step (the run
-   keeps the last good state). Returns the steps done in this call. */
 /* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
    success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for the steps
    after the first, full (o with full Newton) for the first. Updates the counters of st;
@@ -5123,6 +5123,11 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     return HPGEN_OK;
 }
 
+/* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
+   solution, or from the extrapolation of the last three). The state after global step k is
+   recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
+   sizes them for the records falling in this call). Stops at the first failed step (the run
+   keeps the last good state). Returns the steps done in this call. */
 HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, long long every,
                                      const hpgen_options* o, double* g_rec, double* p_rec,
                                      hpgen_status* st) {

@@ -77,15 +77,15 @@ class _Hpgen:
     """The compiled scheme: simulate with the runtime, Jacobian by implicit differentiation."""
 
     def __init__(self, path, model, tableau, tau, rkmk, backend, cache_dir):
-        import hpgen
-        from ..api import CompileOptions, resolve
-        from ..derive import derive
-        opts = CompileOptions(tableau, tau, rkmk, backend, None, cache_dir)
-        opts.validate()
-        tab, self.tau, self.rkmk = resolve(model, opts)
-        self.integ = hpgen.compile(path, tableau=tableau, tau=tau, rkmk=rkmk, backend=backend,
-                                   cache_dir=cache_dir)
-        self.map = GeneratedMap(self.integ, derive(model, tab, self.tau, self.rkmk), model.group)
+        from ..api import build
+        # the compile's own result: its resolved options and DiscreteStep (derived once,
+        # on a cache hit only when asked for here)
+        compiled = build(path, tableau=tableau, tau=tau, rkmk=rkmk, backend=backend,
+                         cache_dir=cache_dir)
+        self.integ = compiled.load()
+        d = compiled.derivation
+        tab, self.tau, self.rkmk = d.tableau, d.tau, d.rkmk
+        self.map = GeneratedMap(self.integ, d.step, model.group)
         self.order = tab.order if self.rkmk == "exact" else min(tab.order, 2)
         self.info = {"tableau": tab.name, "tau": self.tau, "rkmk": self.rkmk,
                      "backend": backend, "module": self.integ.meta.get("module")}

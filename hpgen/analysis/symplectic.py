@@ -37,7 +37,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import ConvergenceError
-from ..runtime import newton
+from ..runtime import newton as _newton
 from .rkmk import _np, chart_jacobian
 
 BRACKET_SIGN = +1
@@ -96,7 +96,7 @@ class StepSensitivity:
         return out
 
 
-def converged_step(integ, g, p, h, z=None, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT):
+def converged_step(integ, g, p, h, z=None, newton=None):
     """Newton on the compiled module's residual/jacobian kernels (as Integrator.step does),
     returning (z, g1 (n, n), p1). z: start (default the ``guess`` kernel)."""
     n = integ.n
@@ -105,10 +105,10 @@ def converged_step(integ, g, p, h, z=None, tol=newton.DEFAULT_TOL, maxit=newton.
     hv = np.array([float(h)])
     if z is None:
         z = integ.kernel("guess", integ.velocity(g, p), gf, p, hv)[0]
-    opts = newton.NewtonOptions(tol, maxit, simplified=False)
-    code, g1, p1, z, it, r, _ = newton.step_core(integ.kernel, integ.nz, gf, p, hv, z, opts,
-                                                 newton.NewtonMemory())
-    if code != newton.OK:
+    opts = integ._options(newton, full=True)    # full Newton unless newton.simplified
+    code, g1, p1, z, it, r, _ = _newton.step_core(integ.kernel, integ.nz, gf, p, hv, z, opts,
+                                                  _newton.NewtonMemory())
+    if code != _newton.OK:
         raise ConvergenceError("Newton did not converge in the symplecticity check", step=0,
                                time=0.0, residual=r, iterations=it)
     return z, g1.reshape(n, n, order="F"), p1

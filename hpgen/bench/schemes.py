@@ -1,7 +1,7 @@
 """hpgen's own schemes in the benchmark: compile once per (tableau, tau, rkmk), run per h.
 
-Each scheme is ``hpgen.compile(path, tableau, tau, rkmk, backend="c", cache_dir)`` (its wall
-time, a cache hit or not, is the point's setup_s) and each point one C call of
+Each scheme is ``hpgen.build(path, tableau, tau, rkmk, backend="c", cache_dir).load()`` (its
+wall time is the point's setup_s; the CompiledModule says whether the cache served it) and each point one C call of
 ``Integrator.simulate(g0, xi0 or mu0 (as the scene gives it), h, steps, every=steps)``,
 the whole of it timed, including simulate's Python prologue (checks, Legendre transform,
 initial guess), whose cost alone (steps = 0) is given in the notes. The sampled run records
@@ -11,7 +11,6 @@ momentum.
 from __future__ import annotations
 
 import time
-from pathlib import Path
 
 from ..errors import ModelError
 from .measure import FAILURES, Point, measure
@@ -52,12 +51,13 @@ def hpgen_points(pb, y_ref, schemes, hs, timing, samples, cache_dir=None, log=No
     kw0.update({"xi0": pb.xi0} if pb.xi0 is not None else {"mu0": pb.mu0})
     for tab, tau, rkmk in schemes:
         name = scheme_name(tab, tau, rkmk)
-        hit = _cached(pb.path, tab, tau, rkmk, cache_dir)
         t0 = time.perf_counter()
-        integ = hpgen.compile(pb.path, tableau=tab, tau=tau, rkmk=rkmk, backend="c",
-                              cache_dir=cache_dir)
+        compiled = hpgen.build(pb.path, tableau=tab, tau=tau, rkmk=rkmk, backend="c",
+                               cache_dir=cache_dir)
+        integ = compiled.load()
         setup = time.perf_counter() - t0
-        how = "cache hit" if hit else "cold: generate + C build"
+        how = ("cache hit" if compiled.cached and not compiled.built else
+               "cached sources, C build" if compiled.cached else "cold: generate + C build")
         try:      # simulate's fixed cost (checks, Legendre transform, guess): steps = 0
             pro = timing.median(lambda: integ.simulate(h=hs[0], steps=0, **kw0))[0]
         except FAILURES:
@@ -83,19 +83,6 @@ def hpgen_points(pb, y_ref, schemes, hs, timing, samples, cache_dir=None, log=No
                         f"simulate prologue (steps = 0) {pro * 1e6:.0f} us"]}
             out.append(measure(pb, y_ref, p, timing, timed, sampled))
     return out
-
-
-def _cached(path, tab, tau, rkmk, cache_dir):
-    """True when the build cache already holds this module (source and C library)."""
-    from .. import cache
-    from ..api import CompileOptions, module_key, read_model_text
-    from ..runtime.build import find_library
-    try:
-        key = module_key(read_model_text(path), CompileOptions(tab, tau, rkmk, "c"))
-        entry = (cache.default_cache_dir() if cache_dir is None else Path(cache_dir)) / key
-        return cache.is_valid(entry) and find_library(entry) is not None
-    except (OSError, ValueError):
-        return False
 
 
 def ladder(h0, k=4):

@@ -1,14 +1,16 @@
 """What codegen expects from a DiscreteStep (see hpgen.derive.step) and checks before emitting.
 
 Every kernel takes and returns flat float64 vectors (matrices column-major, h a 1-vector).
-The sizes below are the positional contract; names come from ``Kernel.inputs/outputs``.
+The positional contract (kernel names, order, sizes) is hpgen.abi.KERNELS; names come from
+``Kernel.inputs/outputs``.
 """
 from __future__ import annotations
 
 import keyword
-import math
 import re
 
+from .. import abi
+from ..abi import KERNEL_NAMES, SIGNATURES, sizes
 from ..errors import HpgenError
 
 #: identifiers: module names, C symbols, Python argument names
@@ -18,36 +20,9 @@ HASH_RE = re.compile(r"[0-9a-f]{16,128}\Z")
 #: argument names the generated Python would shadow (work variables, outputs, imports)
 _RESERVED_ARG = re.compile(r"([wr][0-9]+|math|numpy)\Z")
 
-# size symbols: "nz", "nn" (= n*n), "d", "dd" (= d*d), "nznz" (= nz*nz), "1", "w" (the
-# record row's length, DiscreteStep.record_width)
-SIGNATURES = {
-    "residual": (("nz", "nn", "d", "1"), ("nz",)),
-    "jacobian": (("nz", "nn", "d", "1"), ("nznz",)),
-    "residual_jacobian": (("nz", "nn", "d", "1"), ("nz", "nznz")),
-    "update": (("nz", "nn", "d", "1"), ("nn", "d")),
-    "guess": (("d", "nn", "d", "1"), ("nz",)),
-    "legendre": (("nn", "d"), ("d",)),
-    "hessian": (("nn", "d"), ("dd",)),
-    "energy": (("nn", "d"), ("1",)),
-    "momentum": (("nn", "d"), ("d",)),
-    "defect": (("nn",), ("1",)),
-    "margin": (("nz", "1"), ("1",)),
-    "section": (("nn", "d"), ("1",)),
-    "chart_point": (("nz", "nn", "1", "1"), ("nn",)),
-    "observe": (("nn", "d"), ("d", "1", "d", "1")),
-    "update_p": (("nz", "nn", "d", "1"), ("d",)),
-    "velocity_step": (("nn", "d", "d"), ("d",)),
-    "record": (("nn", "d", "d"), ("w",)),
-}
-
-
 class CodegenError(HpgenError, ValueError):
     """The DiscreteStep or the emit() info violates the codegen contract (an internal error
     between stages, or an expression hpgen's code generators cannot print)."""
-
-
-def sizes(n: int, d: int, nz: int, w: int = 1) -> dict[str, int]:
-    return {"nz": nz, "nn": n * n, "d": d, "dd": d * d, "nznz": nz * nz, "1": 1, "w": w}
 
 
 def check_arg_name(name: str, where: str) -> str:
@@ -61,7 +36,6 @@ def check_arg_name(name: str, where: str) -> str:
 
 def check_step(step) -> None:
     """Validate dimensions, the presence of every kernel and each kernel's in/out sizes."""
-    from ..derive.step import KERNEL_NAMES
     for attr in ("n", "d", "nz"):
         v = getattr(step, attr)
         if not isinstance(v, int) or isinstance(v, bool) or v < 1:
@@ -105,29 +79,15 @@ def check_step(step) -> None:
             raise CodegenError(f"kernel {k.name}: argument names are not distinct")
 
 
-RECORD_NAME_RE = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}\Z")
-
-
 def check_record_layout(step) -> None:
-    """record_layout: ((name, offset, shape), ...), names distinct identifiers, offsets
-    contiguous from 0, shapes () | (d,) | (n, n); width >= 1."""
-    layout, offset, seen = step.record_layout, 0, set()
-    if not layout:
+    """record_layout: the conventions of hpgen.abi.record_width (names distinct identifiers,
+    offsets contiguous from 0, shapes () | (d,) | (n, n), at least one entry)."""
+    if not step.record_layout:
         raise CodegenError("DiscreteStep.record_layout is empty (the scene records nothing)")
-    for entry in layout:
-        try:
-            name, off, shape = entry
-        except (TypeError, ValueError):
-            raise CodegenError(f"record_layout entry {entry!r}: expected (name, offset, "
-                               "shape)") from None
-        if not isinstance(name, str) or not RECORD_NAME_RE.match(name) or name in seen:
-            raise CodegenError(f"record_layout: name {name!r} is not a distinct identifier")
-        if off != offset or tuple(shape) not in ((), (step.d,), (step.n, step.n)):
-            raise CodegenError(f"record_layout: {name!r} at offset {off} with shape {shape}; "
-                               f"expected offset {offset} and shape (), ({step.d},) or "
-                               f"({step.n}, {step.n})")
-        seen.add(name)
-        offset += math.prod(shape)
+    try:
+        abi.record_width(step.record_layout, step.n, step.d)
+    except ValueError as exc:
+        raise CodegenError(f"record_layout: {exc}") from None
 
 
 def dense_positions(sp) -> list[int]:

@@ -1,9 +1,11 @@
 """emit(): DiscreteStep + caller info -> the files of one generated module (pure, no file I/O).
 
 Generated files (relative paths):
-  kernels.c    CasADi's C for all kernels + templates/kernels.c.j2 (LU, Newton, step, simulate)
+  kernels.c    CasADi's C for all kernels + templates/kernels.c.j2 (LU, Newton, step, runs);
+               status codes and Newton constants from hpgen.abi
   kernels.py   the Python backend printed from the same SX algorithms (templates/kernels.py.j2)
-  __init__.py  lazy wrapper: integrator(backend=None), step(g, p, h), simulate(**kw)
+  __init__.py  lazy wrapper: integrator(backend=None), step(g, p, h), simulate(**kw),
+               record(**kw)
   meta.json    dimensions, options, kernel signatures, CasADi work sizes (sorted keys)
   model.yaml   the model source, as is
 Output is deterministic: the same step and info give the same bytes. Every code file starts
@@ -24,14 +26,14 @@ from pathlib import Path
 
 import jinja2
 
-from .. import __version__
+from .. import __version__, abi
 from ..schemes import BACKENDS, OPTION_KEYS
 from .contract import HASH_RE, MODULE_RE, CodegenError, check_step
 from .csource import c_kernel_context, casadi_c_code, work_sizes
 from . import pylinear
 from .pysource import py_kernel_context
 
-META_FORMAT = 1
+META_FORMAT = abi.META_FORMAT
 TEMPLATES = {"kernels.c": "kernels.c.j2", "kernels.py": "kernels.py.j2",
              "__init__.py": "__init__.py.j2"}
 #: math functions the Python backend wraps: (math name, numpy name of the IEEE fallback)
@@ -145,6 +147,13 @@ def _python_linear(nz: int) -> dict:
             "linear_functions": list(pylinear.FUNCTIONS), "unroll_max": pylinear.UNROLL_MAX}
 
 
+def c_abi_context() -> dict:
+    """kernels.c.j2's share of hpgen.abi: the ABI version, the status codes (code, name,
+    message) and the Newton constants, printed as C literals that read back bitwise."""
+    return dict({k: abi.c_literal(v) for k, v in abi.TEMPLATE_CONSTANTS.items()},
+                status=[list(s) for s in abi.STATUS], status_invalid=abi.INVALID)
+
+
 def template_contexts(step, info: dict) -> dict[str, dict]:
     """The context passed to each template, keyed by template file name."""
     check_step(step)
@@ -160,7 +169,7 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
                              record_uses_xi=bool(step.record_uses_xi),
                              legendre_quadratic=bool(step.legendre_quadratic),
                              step_uses_g=bool(step.step_uses_g),
-                             record_uses_g=bool(step.record_uses_g)),
+                             record_uses_g=bool(step.record_uses_g), **c_abi_context()),
         "kernels.py.j2": dict(common, nz=step.nz, module=info["module"],
                               **_python_linear(step.nz),
                               safe_unary=[list(p) for p in SAFE_UNARY],
@@ -182,7 +191,7 @@ def meta(step, info: dict) -> dict:
             "inputs": [[k.inputs[i], int(f.numel_in(i))] for i in range(f.n_in())],
             "outputs": [[k.outputs[i], int(f.numel_out(i))] for i in range(f.n_out())],
             "instructions": int(f.n_instructions())}
-    return {"format": META_FORMAT, "hpgen_version": __version__, "module": info["module"],
+    return {"format": abi.META_FORMAT, "hpgen_version": __version__, "module": info["module"],
             "model": info["model_name"], "options": info["options"], "hash": info["hash"],
             "backend": info["backend"], "n": step.n, "d": step.d, "nz": step.nz,
             "reduced": bool(step.reduced), "section": step.section,

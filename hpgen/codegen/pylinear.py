@@ -15,8 +15,7 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-#: largest nz whose linear algebra is printed as straight-line Python (above: LAPACK)
-UNROLL_MAX = 12
+from ..abi import UNROLL_MAX   # largest nz printed as straight-line Python (above: LAPACK)
 #: largest nz whose "LU" is the inverse by cofactors in the C template (HPGEN_NZ <= 3)
 COFACTOR_MAX = 3
 

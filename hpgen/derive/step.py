@@ -1,36 +1,11 @@
 """The IR produced by the derive stage: one step of the discrete HP action sum, as CasADi
 functions with a fixed calling convention, ready for code generation.
 
-Calling convention of every kernel: inputs and outputs are dense column vectors of doubles;
-matrices are flattened column-major (g.ravel(order="F")); h is a 1-vector.
-
-    residual(z[nz], g[n*n], p[d], h[1])  -> F[nz]          stationarity conditions of s_k
-    jacobian(z, g, p, h)                 -> J[nz*nz]       dF/dz, dense, column-major
-    residual_jacobian(z, g, p, h)        -> F[nz], J[nz*nz] both in one evaluation
-    update(z, g, p, h)                   -> g1[n*n], p1[d] (g_{k+1}, p_{k+1}), explicit
-    guess(xi[d], g, p, h)                -> z0[nz]         Newton start from a velocity estimate
-    legendre(g, xi)                      -> mu[d]          dl/dxi (Legendre transform)
-    hessian(g, xi)                       -> H[d*d]         d^2 l / dxi^2
-    energy(g, xi)                        -> E[1]           <dl/dxi, xi> - l
-    momentum(g, p)                       -> m[d]           Ad*_{g^{-1}} p (spatial momentum)
-    defect(g)                            -> e[1]           distance of g from the group
-    margin(z, h)                         -> m[1]           > 0 while every tau argument of
-                                                           the step is inside tau's domain
-    section(g, p)                        -> s[1]           the scene's Poincare section
-                                                           s(g, mu = p) (1 without one)
-    chart_point(z, g, h, theta)          -> g_theta[n*n]   g tau(theta h xi_{k+1}(z)): the
-                                                           step's chart curve, theta in [0, 1]
-    observe(g, p)                        -> xi[d], E[1], m[d], e[1]   at a record: the
-                                           Legendre inverse xi of p (one Newton step from 0:
-                                           exact when legendre_quadratic), energy at that xi,
-                                           spatial momentum, group defect
-    update_p(z, g, p, h)                 -> p1[d]          p_{k+1} alone (update's p1): the
-                                                           step when g is not needed
-    velocity_step(g, p, xi)              -> xi1[d]         one Newton step of dl/dxi = p:
-                                           xi - H^{-1}(dl/dxi(g, xi) - p); exact from xi = 0
-                                           when legendre_quadratic
-    record(g, p, xi)                     -> row[w]         the scene's record row
-                                           (hpgen.derive.records; layout in record_layout)
+The kernels, their order and the sizes of their positional inputs and outputs are the
+generated-module contract, hpgen.abi.KERNELS (inputs and outputs dense column vectors of
+doubles, matrices flattened column-major, h a 1-vector); ``Kernel.inputs/outputs`` name the
+arguments (e.g. ("z", "g", "p", "h")). The record row's layout is described in
+hpgen.derive.records and checked by hpgen.abi.record_width.
 """
 from __future__ import annotations
 
@@ -38,9 +13,10 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-KERNEL_NAMES = ("residual", "jacobian", "residual_jacobian", "update", "guess", "legendre",
-                "hessian", "energy", "momentum", "defect", "margin", "section", "chart_point",
-                "observe", "update_p", "velocity_step", "record")
+from ..abi import KERNEL_NAMES
+
+__all__ = ["KERNEL_NAMES", "Kernel", "DiscreteStep"]
+
 
 
 @dataclass(frozen=True)

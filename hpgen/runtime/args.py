@@ -7,17 +7,15 @@ import numbers
 
 import numpy as np
 
+from .. import abi
 from ..errors import ConvergenceError, DomainError, ModelError
-from . import newton
-
-_MESSAGES = {newton.NO_CONVERGENCE: "Newton did not converge",
-             newton.NONFINITE: "a non-finite value (or a singular Jacobian) appeared",
-             newton.DOMAIN: "the chart map tau left its domain (margin(z, h) <= 0)"}
 
 
 def _error(code, step, time, residual, iterations):
-    cls = DomainError if code == newton.DOMAIN else ConvergenceError
-    return cls(_MESSAGES.get(code, f"step failed with status {code}"), step=int(step),
+    """The exception of a failed step's status code (abi.STATUS): DomainError for DOMAIN,
+    else ConvergenceError, with the code's message."""
+    cls = DomainError if code == abi.DOMAIN else ConvergenceError
+    return cls(abi.MESSAGES.get(code, f"step failed with status {code}"), step=int(step),
                time=float(time), residual=float(residual), iterations=int(iterations))
 
 

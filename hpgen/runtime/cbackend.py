@@ -10,12 +10,12 @@ import threading
 
 import numpy as np
 
+from .. import abi
 from ..errors import BuildError
 from . import loop, newton
 from .backends import _Backend, _flat
 from .build import build_library
 
-_ABI = 3
 _F64 = np.dtype(np.float64)
 _RUN = ("run",)      # CBackend._staging key of the run state buffers (not a kernel name)
 
@@ -50,18 +50,20 @@ class _Staging:
         self.ptrs = tuple(pin + pout)
 
 
+_CTYPES = {"q": ctypes.c_longlong, "d": ctypes.c_double}
+
+
 class _Status(ctypes.Structure):
-    _fields_ = [("code", ctypes.c_longlong), ("step", ctypes.c_longlong),
-                ("iterations", ctypes.c_longlong), ("total_iterations", ctypes.c_longlong),
-                ("residual", ctypes.c_double), ("jacobians", ctypes.c_longlong)]
+    """The C ``hpgen_status`` (abi.STATUS_FIELDS)."""
+    _fields_ = [(name, _CTYPES[kind]) for name, kind in abi.STATUS_FIELDS]
 
     def as_dict(self) -> dict:
         return {f: getattr(self, f) for f, _ in self._fields_}
 
 
 class _Options(ctypes.Structure):
-    _fields_ = [("tol", ctypes.c_double), ("maxit", ctypes.c_longlong),
-                ("simplified", ctypes.c_longlong), ("predictor", ctypes.c_longlong)]
+    """The C ``hpgen_options`` (abi.OPTIONS_FIELDS)."""
+    _fields_ = [(name, _CTYPES[kind]) for name, kind in abi.OPTIONS_FIELDS]
 
     @classmethod
     def of(cls, o: newton.NewtonOptions) -> "_Options":
@@ -101,7 +103,7 @@ class CBackend(_Backend):
                              "(hash mismatch); delete it to rebuild")
         dims = (ctypes.c_longlong * 4)()
         lib.hpgen_dims(dims)
-        if tuple(dims) != (_ABI, self.n, self.d, self.nz):
+        if tuple(dims) != (abi.ABI_VERSION, self.n, self.d, self.nz):
             raise BuildError(f"{self.library.name}: ABI/dimensions {tuple(dims)} do not "
                              "match meta.json")
         self._fns = {}
@@ -178,7 +180,7 @@ class CBackend(_Backend):
                                     ctypes.byref(st))
         if code < 0:
             raise ValueError("hpgen_step rejected its arguments")
-        if code != newton.OK:
+        if code != abi.OK:
             return code, None, None, z, st.iterations, st.residual
         return code, g1, p1, z, st.iterations, st.residual
 
@@ -336,7 +338,7 @@ class CBackend(_Backend):
         _over_threads(B, threads, work)
         out = [s.as_dict() for s in sts]
         for b, (code, _) in enumerate(first):
-            if code != newton.OK:
+            if code != abi.OK:
                 out[b] = {**loop.new_status(), "code": int(code)}
                 n_rec[b] = 0
         return rows, n_rec + 1, out

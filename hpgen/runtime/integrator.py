@@ -3,12 +3,13 @@
 Conventions: g is an (n, n) group element (array-like), momenta p/mu and velocities xi are
 length-d vectors (body frame), h > 0 is the step in the model's time unit. Internally and
 across the C boundary matrices are flat column-major (``g.ravel(order="F")``).
-Newton settings default to tol = 1e-14, maxit = 50 and a predictor extrapolating the last
-solutions (quadratic once three exist; see hpgen.runtime.newton). ``simplified`` (reuse the
-Jacobian's inverse across iterations
-and steps) defaults to True when the Jacobian kernel costs more than SIMPLIFIED_RATIO times
-the residual kernel (CasADi instruction counts in meta.json), where it is the faster choice
-(Gauss 2 exact: 7.5 residual evaluations and 0.14 Jacobians per step instead of 2.8 of each).
+Newton settings: every stepping method takes ``newton=NewtonOptions(...)`` (None: the
+defaults, tol = 1e-14, maxit = 50 (hpgen.abi), a predictor extrapolating the last solutions,
+quadratic once three exist; see hpgen.runtime.newton). ``simplified`` (reuse the Jacobian's
+inverse across iterations and steps) left None means: for runs, True when the Jacobian kernel
+costs more than SIMPLIFIED_RATIO times the residual kernel (CasADi instruction counts in
+meta.json), where it is the faster choice (Gauss 2 exact: 7.5 residual evaluations and 0.14
+Jacobians per step instead of 2.8 of each); for ``step`` (a cold start), full Newton.
 """
 from __future__ import annotations
 
@@ -17,9 +18,11 @@ import os
 
 import numpy as np
 
+from .. import abi
 from ..errors import ConvergenceError, ModelError
-from . import newton
-from .args import _MESSAGES, _array, _error, _int, _positive
+from . import newton as _newton
+from .args import _array, _error, _int, _positive
+from .newton import NewtonOptions
 from .records import RecordsMixin
 from .sections import SectionsMixin
 from .trajectory import Trajectory
@@ -56,9 +59,11 @@ class Integrator(SectionsMixin, RecordsMixin):
         """mu = dl/dxi (g, xi)."""
         return self._b.call("legendre", self._g(g), self._v(xi, "xi"))[0]
 
-    def velocity(self, g, mu, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT):
-        """xi with legendre(g, xi) = mu: Newton from xi = 0 with the hessian kernel."""
-        return self._velocity(self._g(g), self._v(mu, "mu"), tol, maxit)
+    def velocity(self, g, mu, *, newton: NewtonOptions | None = None):
+        """xi with legendre(g, xi) = mu: full Newton from xi = 0 with the hessian kernel
+        (newton: its tol and maxit)."""
+        o = self._options(newton, full=True)
+        return self._velocity(self._g(g), self._v(mu, "mu"), o.tol, o.maxit)
 
     def _cond(self, Hf, H):
         """cond(H) of the Hessian H (Hf its flat column-major array), None when H has a
@@ -76,7 +81,7 @@ class Integrator(SectionsMixin, RecordsMixin):
         self._cond_last = (key, cond)
         return cond
 
-    def _velocity(self, gf, mu, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT):
+    def _velocity(self, gf, mu, tol=abi.DEFAULT_TOL, maxit=abi.DEFAULT_MAXIT):
         """velocity from g flat column-major and mu, both checked: newton.newton on
         F = legendre - mu, J = hessian; every Hessian passes the singular-Legendre check
         first (_cond)."""
@@ -93,10 +98,10 @@ class Integrator(SectionsMixin, RecordsMixin):
                                  "energy terms of the Lagrangian", field="scene.initial")
             return F, H
 
-        code, xi, it, r = newton.newton(fun, np.zeros(d), tol, maxit)
-        if code != newton.OK:
+        code, xi, it, r = _newton.newton(fun, np.zeros(d), tol, maxit)
+        if code != abi.OK:
             raise ConvergenceError("inverting the Legendre transform (velocity from momentum): "
-                                   + _MESSAGES[code], step=0, time=0.0, residual=r,
+                                   + abi.MESSAGES[code], step=0, time=0.0, residual=r,
                                    iterations=it)
         return xi
 
@@ -140,26 +145,35 @@ class Integrator(SectionsMixin, RecordsMixin):
         cost = [k[n].get("instructions", 0) for n in ("jacobian", "residual")]
         return cost[0] > SIMPLIFIED_RATIO * cost[1]
 
-    def _options(self, tol, maxit, simplified=None, predictor=True) -> newton.NewtonOptions:
+    def _options(self, newton: NewtonOptions | None, full: bool = False) -> NewtonOptions:
+        """The checked Newton settings of a call, simplified resolved to a bool (None: full
+        Newton when ``full``, else simplified_default). ModelError naming the field."""
+        if newton is None:
+            newton = NewtonOptions()
+        elif not isinstance(newton, NewtonOptions):
+            raise ModelError("expected hpgen.runtime.NewtonOptions(tol=, maxit=, simplified=, "
+                             f"predictor=) or None, got {type(newton).__name__}",
+                             field="newton")
+        simplified = newton.simplified
         if simplified is None:
-            simplified = self.simplified_default
-        return newton.NewtonOptions(_positive(tol, "tol"), _int(maxit, "maxit", 1),
-                                    bool(simplified), bool(predictor))
+            simplified = False if full else self.simplified_default
+        return NewtonOptions(_positive(newton.tol, "newton.tol"),
+                             _int(newton.maxit, "newton.maxit", 1), bool(simplified),
+                             bool(newton.predictor))
 
-    def step(self, g, p, h, z=None, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT,
-             simplified=False):
+    def step(self, g, p, h, z=None, *, newton: NewtonOptions | None = None):
         """(g_{k+1}, p_{k+1}) from (g_k, p_k). z: Newton start (default: guess from the
-        velocity of (g, p)). Full Newton by default (a cold start). Raises ConvergenceError /
-        DomainError (step 0, t = 0)."""
+        velocity of (g, p)). Full Newton unless newton.simplified is True (a cold start).
+        Raises ConvergenceError / DomainError (step 0, t = 0)."""
         gf, p = self._g(g), self._v(p, "p")
         hv = np.array([_positive(h, "h")])
-        opts = self._options(tol, maxit, simplified)
+        opts = self._options(newton, full=True)
         if z is None:
             z = self._b.call("guess", self.velocity(g, p), gf, p, hv)[0]
         else:
             z = _array(z, (self.nz,), "z", "a vector of length nz")
         code, g1, p1, _, it, r = self._b.step(gf, p, hv, z, opts)
-        if code != newton.OK:
+        if code != abi.OK:
             raise _error(code, 0, 0.0, r, it)
         return g1.reshape(self.n, self.n, order="F"), p1
 
@@ -192,7 +206,7 @@ class Integrator(SectionsMixin, RecordsMixin):
         K, n = len(p_rec), self.n
         g = np.ascontiguousarray(g_rec.reshape(K, n, n).transpose(0, 2, 1))
         err = None
-        if st["code"] != newton.OK:
+        if st["code"] != abi.OK:
             err = _error(st["code"], st["step"], st["step"] * h, st["residual"],
                          st["iterations"])
         # t0 + (k every) h; arange(0, K every, every) is arange(K) * every, and adding
@@ -206,25 +220,24 @@ class Integrator(SectionsMixin, RecordsMixin):
             err.partial = traj
         return traj
 
-    def _prepare(self, g0, h, steps, xi0, mu0, every, tol, maxit, simplified, predictor):
+    def _prepare(self, g0, h, steps, xi0, mu0, every, newton):
         """The checked arguments of a run and its start: (h, steps, every, options, g0 flat,
         mu0, Newton start z0 from the guess kernel)."""
         h = _positive(h, "h")
         steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
-        opts = self._options(tol, maxit, simplified, predictor)
+        opts = self._options(newton)
         gf, mu0, xi0 = self._initial(g0, xi0, mu0)
         z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
         return h, steps, every, opts, gf, mu0, z0
 
-    def _prepare_batch(self, g0, h, steps, xi0, mu0, every, threads, tol, maxit, simplified,
-                       predictor, what):
+    def _prepare_batch(self, g0, h, steps, xi0, mu0, every, threads, newton, what):
         """The checked arguments of an ensemble run by the C backend (``what``: the method, for
         the error): (h, steps, every, options, threads, g0s flat, mu0s, Newton starts z0s)."""
         if self.backend != "c":
             raise ModelError(f"{what} needs the C backend", field="backend")
         h = _positive(h, "h")
         steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
-        opts = self._options(tol, maxit, simplified, predictor)
+        opts = self._options(newton)
         hv = np.array([h])
         starts = [(gf, m, self._b.call("guess", x, gf, m, hv)[0])
                   for gf, m, x in self._batch_starts(g0, xi0, mu0)]
@@ -232,31 +245,30 @@ class Integrator(SectionsMixin, RecordsMixin):
         gs, ms, z0s = zip(*starts) if starts else ((), (), ())
         return h, steps, every, opts, threads, gs, ms, z0s
 
-    def simulate(self, g0, h, steps, xi0=None, mu0=None, every=1, tol=newton.DEFAULT_TOL,
-                 maxit=newton.DEFAULT_MAXIT, simplified=None, predictor=True) -> Trajectory:
+    def simulate(self, g0, h, steps, xi0=None, mu0=None, every=1, *,
+                 newton: NewtonOptions | None = None) -> Trajectory:
         """Run ``steps`` steps of size h from g0 with initial velocity xi0 or momentum mu0
         (exactly one), recording every ``every`` steps. The C backend runs all steps in one
         call. On a failed step raises ConvergenceError (DomainError for tau) whose
         ``.partial`` is the Trajectory so far (partial=True)."""
-        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every, tol,
-                                                           maxit, simplified, predictor)
+        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every,
+                                                           newton)
         done, g_rec, p_rec, st = self._b.simulate(gf, mu0, h, z0, steps, every, opts)
         traj = self._trajectory(done, g_rec, p_rec, st, h, every)
         if traj.error is not None:
             raise traj.error
         return traj
 
-    def stream(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000,
-               tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
-               predictor=True):
+    def stream(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000, *,
+               newton: NewtonOptions | None = None):
         """Like ``simulate`` but in chunks of at most ``chunk`` steps, so that memory stays
         bounded on long runs: yields one Trajectory per chunk (the first starts with step 0;
         ``t`` is global). The states are bitwise those of ``simulate`` (the run, its Newton
         memory and predictor carry over between chunks). A failure raises ConvergenceError /
         DomainError with ``.partial`` the records of the failing chunk."""
         chunk = _int(chunk, "chunk", 1)
-        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every, tol,
-                                                           maxit, simplified, predictor)
+        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every,
+                                                           newton)
         run = self._b.start(gf, mu0, z0)
         k, first = 0, True
         while first or k < steps:
@@ -290,16 +302,14 @@ class Integrator(SectionsMixin, RecordsMixin):
         return [self._initial(G0[b], None if xi0 is None else xi0[b],
                               None if mu0 is None else mu0[b]) for b in range(B)]
 
-    def simulate_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None,
-                       tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
-                       predictor=True) -> list:
+    def simulate_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
+                       newton: NewtonOptions | None = None) -> list:
         """An ensemble: B runs from g0 ((n, n) shared, or (B, n, n)) and xi0 or mu0 (B, d),
         in C over ``threads`` threads (default: the CPU count). Each run's states are bitwise
         those of ``simulate`` on its own. Returns B Trajectories; a failed run's Trajectory
         is partial with ``.error`` set (nothing is raised)."""
         h, steps, every, opts, threads, gs, ms, z0s = self._prepare_batch(
-            g0, h, steps, xi0, mu0, every, threads, tol, maxit, simplified, predictor,
-            "simulate_batch")
+            g0, h, steps, xi0, mu0, every, threads, newton, "simulate_batch")
         done, g_rec, p_rec, sts = self._b.simulate_batch(gs, ms, h, z0s, steps, every, opts,
                                                          threads)
         return [self._trajectory(int(done[b]), g_rec[b], p_rec[b], sts[b], h, every)

@@ -1,17 +1,20 @@
 """load(): open a generated module directory as an Integrator.
 
-meta.json (format 1) holds: format, hpgen_version, module, model, options {tableau, tau,
-rkmk}, hash, backend ("c" | "python", the default), n, d, nz, reduced, unknowns
-[[label, start, stop], ...], kernels {name: {"inputs": [[name, size], ...], "outputs": ...}}
-and c_work {name: {sz_arg, sz_res, sz_iw, sz_w}}.
+meta.json (format hpgen.abi.META_FORMAT; any other is refused: recompile the module) holds:
+format, hpgen_version, module, model, options {tableau, tau, rkmk}, hash, backend ("c" |
+"python", the default), n, d, nz, reduced, section, legendre_quadratic, record [[name,
+offset, shape], ...] (hpgen.abi.record_width), step_uses_g, record_uses_g, record_uses_xi,
+unknowns [[label, start, stop], ...], kernels {name: {"inputs": [[name, size], ...],
+"outputs": ..., "instructions": int}} (hpgen.abi.KERNELS) and c_work {name: {sz_arg, sz_res,
+sz_iw, sz_w}}.
 """
 from __future__ import annotations
 
 import json
-import math
 import re
 from pathlib import Path
 
+from .. import abi
 from ..cache import check_sources
 from ..errors import ModelError
 from ..schemes import BACKENDS
@@ -19,22 +22,7 @@ from .backends import PythonBackend
 from .cbackend import CBackend
 from .integrator import Integrator
 
-META_FORMAT = 1
-KERNEL_NAMES = ("residual", "jacobian", "residual_jacobian", "update", "guess", "legendre",
-                "hessian", "energy", "momentum", "defect", "margin", "section", "chart_point",
-                "observe", "update_p", "velocity_step", "record")
-_SIZES = {"residual": ("nz", "nn", "d", "1", "|", "nz"),
-          "jacobian": ("nz", "nn", "d", "1", "|", "nznz"),
-          "residual_jacobian": ("nz", "nn", "d", "1", "|", "nz", "nznz"),
-          "update": ("nz", "nn", "d", "1", "|", "nn", "d"),
-          "guess": ("d", "nn", "d", "1", "|", "nz"), "legendre": ("nn", "d", "|", "d"),
-          "hessian": ("nn", "d", "|", "dd"), "energy": ("nn", "d", "|", "1"),
-          "momentum": ("nn", "d", "|", "d"), "defect": ("nn", "|", "1"),
-          "margin": ("nz", "1", "|", "1"), "section": ("nn", "d", "|", "1"),
-          "chart_point": ("nz", "nn", "1", "1", "|", "nn"),
-          "observe": ("nn", "d", "|", "d", "1", "d", "1"),
-          "update_p": ("nz", "nn", "d", "1", "|", "d"),
-          "velocity_step": ("nn", "d", "d", "|", "d"), "record": ("nn", "d", "d", "|", "w")}
+META_FORMAT = abi.META_FORMAT
 
 
 def read_meta(module_dir) -> dict:
@@ -50,8 +38,13 @@ def read_meta(module_dir) -> dict:
         return ModelError(msg + "; regenerate the module with this hpgen", file=str(path),
                           field=field)
 
-    if not isinstance(meta, dict) or meta.get("format") != META_FORMAT:
-        raise bad("format", f"unsupported format (expected {META_FORMAT})")
+    if not isinstance(meta, dict):
+        raise bad("format", "expected a JSON object")
+    if meta.get("format") != abi.META_FORMAT:
+        raise ModelError(f"the module was generated for meta.json format "
+                         f"{meta.get('format')!r}, this hpgen reads format {abi.META_FORMAT}; "
+                         "recompile it (hpgen compile MODEL.yaml)", file=str(path),
+                         field="format")
     for key in ("n", "d", "nz"):
         if not isinstance(meta.get(key), int) or meta[key] < 1:
             raise bad(key, "expected a positive integer")
@@ -65,44 +58,27 @@ def read_meta(module_dir) -> dict:
     if meta["backend"] not in BACKENDS:
         raise bad("backend", f"expected one of {BACKENDS}")
     n, d, nz = meta["n"], meta["d"], meta["nz"]
-    w = _record_width(meta.get("record"), n, d, bad)
+    try:
+        w = abi.record_width(meta.get("record"), n, d)
+    except ValueError as exc:
+        raise bad("record", str(exc)) from None
     for key in ("step_uses_g", "record_uses_g", "record_uses_xi", "legendre_quadratic"):
         if not isinstance(meta.get(key), bool):
             raise bad(key, "expected true or false")
-    size = {"nz": nz, "nn": n * n, "d": d, "dd": d * d, "nznz": nz * nz, "1": 1, "w": w}
+    size = abi.sizes(n, d, nz, w)
     kernels = meta.get("kernels")
-    if not isinstance(kernels, dict) or set(kernels) != set(KERNEL_NAMES):
-        raise bad("kernels", f"expected the kernels {KERNEL_NAMES}")
-    for name, spec in _SIZES.items():
-        k = kernels[name]
-        cut = spec.index("|")
+    if not isinstance(kernels, dict) or set(kernels) != set(abi.KERNEL_NAMES):
+        raise bad("kernels", f"expected the kernels {abi.KERNEL_NAMES}")
+    for spec in abi.KERNELS:
+        name, k = spec.name, kernels[spec.name]
         try:
             got = ([int(s) for _, s in k["inputs"]], [int(s) for _, s in k["outputs"]])
         except (KeyError, TypeError, ValueError):
             raise bad(f"kernels.{name}", "malformed signature") from None
-        want = ([size[s] for s in spec[:cut]], [size[s] for s in spec[cut + 1:]])
+        want = ([size[s] for s in spec.inputs], [size[s] for s in spec.outputs])
         if got != want:
             raise bad(f"kernels.{name}", f"sizes {got} do not match the contract {want}")
     return meta
-
-
-def _record_width(layout, n, d, bad) -> int:
-    """The record row's width from meta "record": [[name, offset, shape], ...] (names distinct
-    identifiers, offsets contiguous from 0, shapes [], [d] or [n, n])."""
-    if not isinstance(layout, list) or not layout:
-        raise bad("record", "expected a non-empty list of [name, offset, shape]")
-    offset, seen = 0, set()
-    for entry in layout:
-        ok = (isinstance(entry, list) and len(entry) == 3 and isinstance(entry[0], str)
-              and re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,63}", entry[0])
-              and entry[0] not in seen and entry[1] == offset
-              and entry[2] in ([], [d], [n, n]))
-        if not ok:
-            raise bad("record", f"entry {entry!r} is not [distinct name, offset {offset}, "
-                                f"shape [] | [{d}] | [{n}, {n}]]")
-        seen.add(entry[0])
-        offset += math.prod(entry[2])
-    return offset
 
 
 def load(path, backend=None, *, cc=None, cflags=None) -> Integrator:

@@ -6,9 +6,10 @@ hpgen.runtime.newton). One step is newton.step_lists. numpy and the standard lib
 """
 from __future__ import annotations
 
-from .newton import (_INF, _NAN, NONFINITE, OK, RECORD, ROUNDOFF_FLOOR, Kernels,
-                     NewtonMemory, NewtonOptions, _floats, _isfinite, all_finite, norm_inf,
-                     step_lists)
+from ..abi import (NONFINITE, OK, RECORD, ROUNDOFF_FLOOR, STATUS_FIELDS, VELOCITY_MAXIT,
+                   VELOCITY_TOL)
+from .newton import (_INF, _NAN, Kernels, NewtonMemory, NewtonOptions, _floats, _isfinite,
+                     all_finite, norm_inf, step_lists)
 
 
 class Run:
@@ -27,8 +28,9 @@ class Run:
 
 
 def new_status() -> dict:
-    return {"code": OK, "step": 0, "iterations": 0, "total_iterations": 0, "residual": 0.0,
-            "jacobians": 0}
+    """A status as the C ``hpgen_status`` after hpgen_status_init (fields: abi.STATUS_FIELDS,
+    all zero: code OK)."""
+    return {name: (0.0 if kind == "d" else 0) for name, kind in STATUS_FIELDS}
 
 
 def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOptions, st,
@@ -92,9 +94,10 @@ def advance(kern: Kernels, run: Run, h, steps, every, opts: NewtonOptions):
 def velocity(velocity_step, g, p, quadratic) -> tuple:
     """(code, xi) with legendre(g, xi) = p, like ``hpgen_velocity`` in C: Newton steps
     velocity_step(g, p, xi) -> [xi1] from xi = 0; one step when ``quadratic``, else until
-    |dxi| <= 1e-14 (1 + |xi|) or the round-off floor, at most 50 steps; RECORD on failure."""
+    |dxi| <= VELOCITY_TOL (1 + |xi|) or the round-off floor, at most VELOCITY_MAXIT steps;
+    RECORD on failure."""
     xi, dprev = [0.0] * len(p), _INF
-    for it in range(1, 51):
+    for it in range(1, VELOCITY_MAXIT + 1):
         x1 = velocity_step(g, p, xi)[0]
         if not all_finite(x1):
             return RECORD, x1
@@ -107,7 +110,7 @@ def velocity(velocity_step, g, p, quadratic) -> tuple:
         if quadratic:
             return OK, xi
         xn = norm_inf(xi)
-        if dn <= 1e-14 * (1.0 + xn):
+        if dn <= VELOCITY_TOL * (1.0 + xn):
             return OK, xi
         if it > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + xn):
             return OK, xi

@@ -9,7 +9,8 @@ z <- z - J^{-1} F, inf-norms, theta = ||dz_k|| / ||dz_{k-1}||.
   THETA_MAX (if J is already fresh from this step, the rest of the step is full Newton), and
   converges when the linear-rate bound theta/(1 - theta) ||dz|| (or ||dz|| itself) is
   <= SIMPLIFIED_TOL tol (1 + ||z||): the round-off level full Newton's stop leaves.
-- Both stop when ||dz|| stopped decreasing while ||dz|| <= 1e-11 (1 + ||z||) (round-off floor).
+- Both stop when ||dz|| stopped decreasing while ||dz|| <= ROUNDOFF_FLOOR (1 + ||z||) (round-off
+  floor). The constants and status codes are hpgen.abi's, as are the C template's.
 - An iterate that needs J takes F and J from one ``residual_jacobian`` evaluation when the
   module has that kernel (else ``residual`` then ``jacobian``), the others ``residual`` only.
 Non-finite F, J or z, or an exactly singular J, give code NONFINITE. A first step whose start
@@ -36,15 +37,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-OK, NO_CONVERGENCE, NONFINITE, DOMAIN, RECORD = 0, 1, 2, 3, 4
-ROUNDOFF_FLOOR = 1e-11
-THETA_MAX = 0.05
-SIMPLIFIED_TOL = 0.01
-DEFAULT_TOL = 1e-14
-DEFAULT_MAXIT = 50
-#: largest nz whose linear algebra kernels.py carries as straight-line Python (LINEAR; above:
-#: LAPACK); the same constant as hpgen.codegen.pylinear.UNROLL_MAX (checked by a test)
-UNROLL_MAX = 12
+# status codes and Newton constants: the generated-module contract (kernels.c.j2 prints the
+# same values); RECORD and UNROLL_MAX re-exported for the run loops and tests
+from ..abi import (DEFAULT_MAXIT, DEFAULT_TOL, DOMAIN, NO_CONVERGENCE,  # noqa: F401
+                   NONFINITE, OK, RECORD, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, THETA_MAX,
+                   UNROLL_MAX)
 
 _INF, _NAN = math.inf, math.nan
 _isfinite = math.isfinite
@@ -52,11 +49,17 @@ _isfinite = math.isfinite
 
 @dataclass(frozen=True)
 class NewtonOptions:
-    """Runtime Newton settings (the C backend's ``hpgen_options``)."""
+    """Runtime Newton settings, the one argument ``newton=`` of the Integrator's stepping
+    methods (the C backend's ``hpgen_options``, abi.OPTIONS_FIELDS).
+
+    tol: converged when |dz| <= tol (1 + |z|) (inf-norms); maxit: iterations per step >= 1;
+    simplified: reuse J^{-1} across iterations and steps (None: the Integrator decides, see
+    hpgen.runtime.integrator; the loops here read None as False); predictor: start step k+1
+    from the extrapolated last solutions (else from z_k)."""
     tol: float = DEFAULT_TOL
     maxit: int = DEFAULT_MAXIT
-    simplified: bool = True      # reuse J^{-1} across iterations and steps
-    predictor: bool = True       # start step k+1 from the extrapolated last solutions
+    simplified: bool | None = None
+    predictor: bool = True
 
 
 class NewtonMemory:

@@ -16,9 +16,11 @@ from typing import Any
 
 import numpy as np
 
+from .. import abi
 from ..errors import RecordError
-from . import loop, newton
+from . import loop
 from .args import _error, _int
+from .newton import NewtonOptions
 from .trajectory import npz_path, run_metadata, write_npz
 
 
@@ -89,13 +91,13 @@ def make_records(integ, rows, st, h, every, t0) -> Records:
     """Records of flat rows starting at time t0; error set (partial) when st failed."""
     layout = integ.meta["record"]
     err = None
-    if st["code"] == newton.RECORD:
+    if st["code"] == abi.RECORD:
         bad = _not_finite(rows[-1], layout) if len(rows) else []
         err = RecordError(f"the recorded value(s) {', '.join(bad) or '?'} are not finite "
                           "(or the velocity xi behind them did not converge); check where "
                           "the record expressions are defined", step=int(st["step"]),
                           time=float(st["step"]) * h, names=bad)
-    elif st["code"] != newton.OK:
+    elif st["code"] != abi.OK:
         err = _error(st["code"], st["step"], st["step"] * h, st["residual"], st["iterations"])
     rec = Records(t=t0 + np.arange(len(rows)) * every * h,
                   arrays=split_rows(rows, layout, integ.n), h=h, every=every,
@@ -111,7 +113,7 @@ def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts):
     """Yield Records per chunk of at most ``chunk`` steps (the first starts with record 0,
     the initial state); raises the chunk's error (with .partial) on a failure."""
     code, row0 = backend.record(gf, mu0)
-    if code != newton.OK:
+    if code != abi.OK:
         rec = make_records(integ, row0.reshape(1, -1), {**loop.new_status(), "code": code},
                            h, every, 0.0)
         raise rec.error
@@ -140,39 +142,36 @@ class RecordsMixin:
         """What this module's record row holds (the scene's ``record:`` list, in order)."""
         return tuple(name for name, _, _ in self.meta["record"])
 
-    def stream_record(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000,
-                      tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
-                      predictor=True):
+    def stream_record(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000, *,
+                      newton: NewtonOptions | None = None):
         """Like ``record`` in chunks of at most ``chunk`` steps (bounded memory): yields one
         Records per chunk (the first starts with record 0; ``t`` is global). A failure raises
         ConvergenceError / DomainError / RecordError with ``.partial`` the failing chunk's
         records."""
         chunk = _int(chunk, "chunk", 1)
-        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every, tol,
-                                                           maxit, simplified, predictor)
+        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every,
+                                                           newton)
         yield from stream_records(self, self._b, gf, mu0, z0, h, steps, every, chunk, opts)
 
-    def record(self, g0, h, steps, xi0=None, mu0=None, every=1, tol=newton.DEFAULT_TOL,
-               maxit=newton.DEFAULT_MAXIT, simplified=None, predictor=True):
+    def record(self, g0, h, steps, xi0=None, mu0=None, every=1, *,
+               newton: NewtonOptions | None = None):
         """Run ``steps`` steps keeping only the compiled record row (``record_names``: the
         scene's g, mu, xi, energy, momentum, defect and expressions) every ``every`` steps;
         returns a hpgen.runtime.records.Records. The row is evaluated inside the C loop;
         when neither the step nor the row use g, g is not reconstructed (meta skip). The
         states are bitwise those of ``simulate``. A failure raises (``.partial`` set)."""
-        chunks = list(self.stream_record(g0, h, steps, xi0, mu0, every, max(steps, 1), tol,
-                                         maxit, simplified, predictor))
+        chunks = list(self.stream_record(g0, h, steps, xi0, mu0, every, max(steps, 1),
+                                         newton=newton))
         return chunks[0]
 
-    def record_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None,
-                     tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
-                     predictor=True) -> list:
+    def record_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
+                     newton: NewtonOptions | None = None) -> list:
         """``record`` for an ensemble (starts as in ``simulate_batch``), in C over ``threads``
         threads (default: the CPU count); each run's rows are bitwise those of ``record`` on
         its own. Returns B Records; a failed run's Records is partial with ``.error`` set
         (nothing is raised)."""
         h, steps, every, opts, threads, gs, ms, z0s = self._prepare_batch(
-            g0, h, steps, xi0, mu0, every, threads, tol, maxit, simplified, predictor,
-            "record_batch")
+            g0, h, steps, xi0, mu0, every, threads, newton, "record_batch")
         rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps, every, opts, threads)
         return [make_records(self, rows[b, :n_rows[b]], sts[b], h, every, 0.0)
                 for b in range(len(gs))]

@@ -9,8 +9,9 @@ import os
 import numpy as np
 
 from ..errors import ModelError
-from . import newton
+from .. import abi
 from .args import _error, _int, _positive
+from .newton import NewtonOptions
 from .trajectory import SectionCrossings
 
 
@@ -18,16 +19,15 @@ class SectionsMixin:
     """Integrator methods for section crossings (uses the Integrator's _options, _initial,
     _batch_starts and backend)."""
 
-    def sections(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
-                 tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT, simplified=None,
-                 predictor=True, chunk=100_000) -> SectionCrossings:
+    def sections(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None, chunk=100_000,
+                 *, newton: NewtonOptions | None = None) -> SectionCrossings:
         """Run up to ``steps`` steps and return the upward crossings of the model's
         ``scene.section`` s(g, mu) = 0 (compiled into the step loop: nothing else is kept), at
         most ``max_crossings`` (then the run stops at that crossing's step). The states are
         bitwise those of ``simulate``. A failed step raises ConvergenceError / DomainError
         with ``.partial`` the crossings found before it."""
         h, steps, cap_total, chunk, opts = self._section_args(h, steps, max_crossings, chunk,
-                                                             tol, maxit, simplified, predictor)
+                                                             newton)
         gf, mu0, xi0 = self._initial(g0, xi0, mu0)
         out = self._sections_run(gf, mu0, xi0, h, steps, cap_total, chunk, opts)
         if out.error is not None:
@@ -35,15 +35,15 @@ class SectionsMixin:
         return out
 
     def sections_batch(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
-                       threads=None, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT,
-                       simplified=None, predictor=True, chunk=100_000) -> list:
+                       threads=None, chunk=100_000, *,
+                       newton: NewtonOptions | None = None) -> list:
         """``sections`` for B initial states (g0 (n, n) shared or (B, n, n); xi0 or mu0
         (B, d)), the runs spread over ``threads`` threads (default: the CPU count); each
         result is bitwise that of ``sections`` on its own. A failed run's SectionCrossings
         is partial with ``.error`` set (nothing is raised)."""
         from concurrent.futures import ThreadPoolExecutor
         h, steps, cap_total, chunk, opts = self._section_args(h, steps, max_crossings, chunk,
-                                                             tol, maxit, simplified, predictor)
+                                                             newton)
         starts = self._batch_starts(g0, xi0, mu0)
         threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
 
@@ -56,7 +56,7 @@ class SectionsMixin:
         with ThreadPoolExecutor(min(threads, len(starts))) as pool:
             return list(pool.map(one, starts))
 
-    def _section_args(self, h, steps, max_crossings, chunk, tol, maxit, simplified, predictor):
+    def _section_args(self, h, steps, max_crossings, chunk, newton):
         """(h, steps, crossing cap or None, chunk, options), checked; the module must have a
         section."""
         self._need_section()
@@ -64,7 +64,7 @@ class SectionsMixin:
         steps = _int(steps, "steps", 0)
         cap_total = None if max_crossings is None else _int(max_crossings, "max_crossings", 1)
         return (h, steps, cap_total, _int(chunk, "chunk", 1),
-                self._options(tol, maxit, simplified, predictor))
+                self._options(newton))
 
     def _need_section(self):
         if not self.meta.get("section"):
@@ -84,7 +84,7 @@ class SectionsMixin:
             done, ks, ts, gs, ps, st = self._b.advance_sections(run, h, steps - k, cap, opts)
             parts.append((ks, ts, gs, ps))
             k, found, iters = k + done, found + len(ts), iters + int(st["total_iterations"])
-            if st["code"] != newton.OK:
+            if st["code"] != abi.OK:
                 err = _error(st["code"], st["step"], st["step"] * h, st["residual"],
                              st["iterations"])
                 break

@@ -10,6 +10,7 @@ import pytest
 
 import hpgen
 from conftest import FREE_BODY
+from hpgen.runtime import NewtonOptions
 
 SKEW_SCENE = FREE_BODY + """
 integrator: {tableau: midpoint, tau: skew, rkmk: truncated}
@@ -39,7 +40,8 @@ def test_skew_outside_its_domain_is_a_domain_error(compile_model, backend):
 def test_newton_failure_reports_and_keeps_partial_trajectory(compile_model, backend):
     integ = compile_model(FREE_BODY, tableau="gauss2", tau="cay", rkmk="exact", backend=backend)
     with pytest.raises(hpgen.ConvergenceError) as err:
-        integ.simulate(g0=np.eye(3), mu0=[0.4, 0.1, 0.8], h=0.1, steps=10, maxit=1)
+        integ.simulate(g0=np.eye(3), mu0=[0.4, 0.1, 0.8], h=0.1, steps=10,
+                       newton=NewtonOptions(maxit=1))
     e = err.value
     assert (e.step, e.iterations) == (0, 1) and e.residual > 0
     assert "did not converge" in str(e) and e.partial.partial

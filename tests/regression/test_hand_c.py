@@ -33,6 +33,7 @@ import numpy as np
 import pytest
 
 from conftest import EXAMPLES, ROOT
+from hpgen.runtime import NewtonOptions
 
 HAND_DIR = ROOT / "benchmarks" / "hand_sv"
 TOL, LOCAL_TOL, STEPS, LOCAL_EVERY = 1e-12, 1e-14, 1000, 10
@@ -92,7 +93,7 @@ def _states():
 
 
 STATES = _states()
-MODES = {"plain-newton": {"simplified": False, "predictor": False}, "default": {}}
+MODES = {"plain-newton": NewtonOptions(simplified=False, predictor=False), "default": None}
 
 
 def test_hand_c_compiles_without_warnings(tmp_path):
@@ -110,7 +111,7 @@ def _deviation(R_a, p_a, R_b, p_b):
 @pytest.mark.parametrize("mode", list(MODES))
 @pytest.mark.parametrize("label,R0,p0,h", STATES, ids=[s[0] for s in STATES])
 def test_generated_equals_hand_written_c(hand, generated, mode, label, R0, p0, h):
-    tr = generated.simulate(g0=R0, mu0=p0, h=h, steps=STEPS, **MODES[mode])
+    tr = generated.simulate(g0=R0, mu0=p0, h=h, steps=STEPS, newton=MODES[mode])
     R_h, p_h, iters = hand.simulate(R0, p0, h, STEPS)
     assert np.array_equal(R_h[0], R0) and np.array_equal(p_h[0], p0)
     dev = _deviation(tr.g, tr.mu, R_h, p_h)

@@ -52,6 +52,7 @@ from handwritten import flat, lie
 from handwritten import heavy_top as ht
 from handwritten import moser_veselov as mvm
 from handwritten import vprk
+from hpgen.runtime import NewtonOptions
 
 TOL = 1e-12
 N_STATES = 3
@@ -175,7 +176,7 @@ def compare(integ, h, states, hand, steps, flat_space=False, label=""):
         # default linear predictor changes only the start, hence the rounding pattern that the
         # dynamics amplify: up to 3.5e-12 globally for skew, one-step unchanged)
         tr = integ.simulate(g0=translation(g0) if flat_space else g0, mu0=p0, h=h, steps=steps,
-                            predictor=False)
+                            newton=NewtonOptions(predictor=False))
         g_gen = tr.g[:, :-1, -1] if flat_space else tr.g
         d = deviation(g_hw[:, i], p_hw[:, i], g_gen, tr.mu)
         ks = np.arange(0, steps, LOCAL_EVERY)

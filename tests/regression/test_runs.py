@@ -14,6 +14,7 @@ import pytest
 
 from conftest import HEAVY_TOP
 from hpgen.errors import DomainError
+from hpgen.runtime import NewtonOptions
 
 OPTS = dict(tableau="gauss2", tau="cay", rkmk="exact")
 XI0 = np.array([0.2, 1.0, 3.0])
@@ -48,7 +49,8 @@ def test_elimination_leaves_theta_and_mu1(tops):
 def test_newton_modes_agree(tops, backend):
     it = tops[backend]
     steps = 200 if backend == "c" else 30
-    runs = {(s, p): it.simulate(_g0(), H, steps, xi0=XI0, simplified=s, predictor=p)
+    runs = {(s, p): it.simulate(_g0(), H, steps, xi0=XI0,
+                                newton=NewtonOptions(simplified=s, predictor=p))
             for s in (False, True) for p in (False, True)}
     ref = runs[(False, False)]
     for key, tr in runs.items():
@@ -71,8 +73,8 @@ def test_simplified_newton_keeps_invariants(tops):
 
 
 def test_backends_agree_with_simplified_newton(tops):
-    a = tops["c"].simulate(_g0(), H, 40, xi0=XI0, simplified=True)
-    b = tops["python"].simulate(_g0(), H, 40, xi0=XI0, simplified=True)
+    a = tops["c"].simulate(_g0(), H, 40, xi0=XI0, newton=NewtonOptions(simplified=True))
+    b = tops["python"].simulate(_g0(), H, 40, xi0=XI0, newton=NewtonOptions(simplified=True))
     assert np.abs(a.g - b.g).max() < 1e-13 and np.abs(a.mu - b.mu).max() < 1e-12
 
 

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import hpgen
-from hpgen.codegen import (CodegenError, emit, environment, module_name, template_contexts,
+from hpgen.codegen import (META_FORMAT, CodegenError, emit, environment, module_name, template_contexts,
                            template_dir)
 from hpgen.codegen.pysource import kernel_lines
 from hpgen.derive.step import DiscreteStep, Kernel
@@ -59,7 +59,7 @@ def test_meta_json():
     text = gm.file("meta.json")
     meta = json.loads(text)
     assert text.endswith("\n") and text == json.dumps(meta, sort_keys=True, indent=2) + "\n"
-    assert meta["format"] == 1 and meta["module"] == "toy_plain" and meta["backend"] == "c"
+    assert meta["format"] == META_FORMAT == 2 and meta["module"] == "toy_plain" and meta["backend"] == "c"
     assert (meta["n"], meta["d"], meta["nz"], meta["reduced"]) == (3, 3, 3, True)
     assert meta["unknowns"] == [["xi", 0, 3]]
     upd = meta["kernels"]["update"]

@@ -388,7 +388,8 @@ def _runs_equal(c, py):
 @pytest.mark.parametrize("simplified", [False, True])
 def test_toy_python_run_is_bitwise_the_c_run(simplified):
     g0 = rotvec([0.3, 0.2, 0.0])
-    runs = [integrator(b).simulate(g0, 0.1, 300, xi0=[0.3, 1.0, -0.4], simplified=simplified)
+    runs = [integrator(b).simulate(g0, 0.1, 300, xi0=[0.3, 1.0, -0.4],
+                                   newton=newton.NewtonOptions(simplified=simplified))
             for b in ("c", "python")]
     _runs_equal(*runs)
 
@@ -404,12 +405,13 @@ def test_heavy_top_python_run_is_bitwise_the_c_run(compile_model, tableau, tau, 
              for b in ("c", "python")}
     assert integ["c"].nz <= newton.UNROLL_MAX
     for simplified in (None, False, True):
-        c, py = (integ[b].simulate(g0=g0, xi0=xi0, h=0.05, steps=200, simplified=simplified)
+        c, py = (integ[b].simulate(g0=g0, xi0=xi0, h=0.05, steps=200,
+                                   newton=newton.NewtonOptions(simplified=simplified))
                  for b in ("c", "python"))
         _runs_equal(c, py)
     # chunks (stream) carry the Newton memory and the predictor like one call
     parts = list(integ["python"].stream(g0=g0, xi0=xi0, h=0.05, steps=200, chunk=37,
-                                        simplified=True))
+                                        newton=newton.NewtonOptions(simplified=True)))
     assert same_bits(np.concatenate([t.mu for t in parts]), py.mu)
 
 

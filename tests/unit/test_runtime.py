@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import hpgen
+from hpgen.abi import META_FORMAT
 from hpgen.runtime import newton
 from hpgen.errors import BuildError, ConvergenceError, DomainError, ModelError
 from hpgen.runtime import build_library, load
@@ -95,7 +96,8 @@ def test_legendre_velocity_energy():
 def test_newton_failure_raises_with_partial():
     for backend in ("c", "python"):
         with pytest.raises(ConvergenceError) as info:
-            integrator(backend).simulate(G0, 0.1, 100, xi0=XI0, maxit=1)
+            integrator(backend).simulate(G0, 0.1, 100, xi0=XI0,
+                                         newton=newton.NewtonOptions(maxit=1))
         err = info.value
         assert type(err) is ConvergenceError and err.step == 0 and err.iterations == 1
         assert err.partial.partial and len(err.partial) == 1 and err.partial.error is err
@@ -136,7 +138,10 @@ def test_domain_error_mid_run_with_partial():
     ({"xi0": [1.0, np.inf, 0.0]}, "xi0"), ({"xi0": None, "mu0": [1, 2]}, "mu0"),
     ({"mu0": [1.0, 0.0, 0.0]}, "xi0"), ({"g0": np.eye(2)}, "g0"),
     ({"g0": np.full((3, 3), np.nan)}, "g0"), ({"g0": 2 * np.eye(3)}, "initial g"),
-    ({"maxit": 0}, "maxit"), ({"tol": -1.0}, "tol")])
+    ({"newton": newton.NewtonOptions(maxit=0)}, "newton.maxit"),
+    ({"newton": newton.NewtonOptions(tol=-1.0)}, "newton.tol"),
+    ({"newton": newton.NewtonOptions(tol=float("nan"))}, "newton.tol"),
+    ({"newton": {"tol": 1e-3}}, "newton")])
 def test_simulate_validates_inputs(kw, field):
     args = {"g0": G0, "h": 0.1, "steps": 5, "xi0": XI0, **kw}
     with pytest.raises(ModelError) as info:
@@ -236,8 +241,9 @@ def test_load_rejects_bad_meta_and_backend(tmp_path):
     with pytest.raises(ModelError, match="backend"):
         load(d, backend="fortran")
     meta = (d / "meta.json").read_text()
-    (d / "meta.json").write_text(meta.replace('"format": 1', '"format": 99'))
-    with pytest.raises(ModelError, match="format"):
+    assert f'"format": {META_FORMAT},' in meta
+    (d / "meta.json").write_text(meta.replace(f'"format": {META_FORMAT},', '"format": 1,'))
+    with pytest.raises(ModelError, match=r"format: .*format 1, .*recompile"):
         load(d)
     (d / "meta.json").write_text(meta.replace('"0123456789abcdef', '"../../0123456789abcdef'))
     with pytest.raises(ModelError, match="hash"):
@@ -251,3 +257,26 @@ def test_runtime_imports_no_compile_time_stack():
                    ".model"):
         assert f"import {banned}" not in src and f"from {banned}" not in src
     assert module_dir().is_dir()
+
+
+STEPPING = ("step", "velocity", "simulate", "stream", "simulate_batch", "sections",
+            "sections_batch", "record", "stream_record", "record_batch")
+
+
+def test_newton_settings_are_one_keyword_object():
+    import inspect
+    from hpgen.runtime import Integrator, NewtonOptions
+    for name in STEPPING:
+        params = inspect.signature(getattr(Integrator, name)).parameters
+        assert params["newton"].kind is inspect.Parameter.KEYWORD_ONLY, name
+        assert params["newton"].default is None, name
+        assert not {"tol", "maxit", "simplified", "predictor"} & set(params), name
+    it = integrator("python")
+    # an old or misspelt keyword: Python's one-line TypeError naming it
+    with pytest.raises(TypeError, match="unexpected keyword argument 'tol'"):
+        it.simulate(G0, 0.1, 5, xi0=XI0, tol=1e-3)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'tolerance'"):
+        NewtonOptions(tolerance=1e-3)
+    # None is the defaults; step resolves simplified=None to full Newton, runs to the module's
+    assert it._options(None) == NewtonOptions(1e-14, 50, it.simplified_default, True)
+    assert it._options(NewtonOptions(maxit=7), full=True) == NewtonOptions(1e-14, 7, False, True)

@@ -1,0 +1,176 @@
+"""The contract between a generated module and hpgen.runtime, written once.
+
+Standard library only and at the bottom of the import graph: the derive stage, codegen (which
+renders kernels.c / kernels.py from these values), the runtime (loader, Newton in Python, the
+run loops, the C backend through ctypes) and the tests read it; it imports nothing of hpgen.
+
+What it holds:
+- KERNELS: every kernel of a DiscreteStep, in order, with the size symbols of its positional
+  inputs and outputs (``sizes`` gives their values). Inputs and outputs are dense float64
+  column vectors, matrices flattened column-major (g.ravel(order="F")), h a 1-vector.
+- the record row's layout conventions (``record_width``): meta.json "record" /
+  DiscreteStep.record_layout.
+- STATUS: the status codes of a step or a run with their messages (C ``HPGEN_<NAME>``).
+- the Newton constants shared by the C template and its Python mirror
+  (hpgen.runtime.newton / loop), which must stay bitwise equal: both take them from here.
+- ABI_VERSION (``hpgen_dims()[0]`` of a compiled kernels.c) and META_FORMAT (meta.json
+  "format"): bump ABI_VERSION when an exported C signature or struct changes, META_FORMAT when
+  a meta.json key is added, removed or changes meaning.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+#: version of the exported C API of kernels.c (hpgen_dims()[0]); checked when it is loaded
+ABI_VERSION = 3
+#: version of meta.json's layout; the loader refuses any other (recompile the module)
+META_FORMAT = 2
+
+
+# ---- kernels -----------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class KernelSpec:
+    """One kernel: its name and the size symbols of its positional inputs and outputs.
+
+    Size symbols: "nz" (unknowns of the step), "nn" (n*n, a group element), "d" (algebra
+    dimension), "dd" (d*d), "nznz" (nz*nz), "1", "w" (the record row's width)."""
+    name: str
+    inputs: tuple
+    outputs: tuple
+    doc: str
+
+
+KERNELS = (
+    KernelSpec("residual", ("nz", "nn", "d", "1"), ("nz",),
+               "(z, g, p, h) -> F: stationarity conditions of the step"),
+    KernelSpec("jacobian", ("nz", "nn", "d", "1"), ("nznz",),
+               "(z, g, p, h) -> J = dF/dz, dense, column-major"),
+    KernelSpec("residual_jacobian", ("nz", "nn", "d", "1"), ("nz", "nznz"),
+               "(z, g, p, h) -> F, J in one evaluation"),
+    KernelSpec("update", ("nz", "nn", "d", "1"), ("nn", "d"),
+               "(z, g, p, h) -> g_{k+1}, p_{k+1}, explicit"),
+    KernelSpec("guess", ("d", "nn", "d", "1"), ("nz",),
+               "(xi, g, p, h) -> z0: Newton start from a velocity estimate"),
+    KernelSpec("legendre", ("nn", "d"), ("d",), "(g, xi) -> mu = dl/dxi"),
+    KernelSpec("hessian", ("nn", "d"), ("dd",), "(g, xi) -> d^2 l / dxi^2"),
+    KernelSpec("energy", ("nn", "d"), ("1",), "(g, xi) -> <dl/dxi, xi> - l"),
+    KernelSpec("momentum", ("nn", "d"), ("d",), "(g, p) -> Ad*_{g^{-1}} p (spatial)"),
+    KernelSpec("defect", ("nn",), ("1",), "(g) -> distance of g from the group"),
+    KernelSpec("margin", ("nz", "1"), ("1",),
+               "(z, h) -> > 0 while every tau argument of the step is inside tau's domain"),
+    KernelSpec("section", ("nn", "d"), ("1",),
+               "(g, p) -> the scene's Poincare section s(g, mu = p) (1 without one)"),
+    KernelSpec("chart_point", ("nz", "nn", "1", "1"), ("nn",),
+               "(z, g, h, theta) -> g tau(theta h xi_{k+1}(z)), theta in [0, 1]"),
+    KernelSpec("observe", ("nn", "d"), ("d", "1", "d", "1"),
+               "(g, p) -> xi, E, m, e at a record (xi: one Newton step of dl/dxi = p from 0)"),
+    KernelSpec("update_p", ("nz", "nn", "d", "1"), ("d",),
+               "(z, g, p, h) -> p_{k+1} alone (update's p1)"),
+    KernelSpec("velocity_step", ("nn", "d", "d"), ("d",),
+               "(g, p, xi) -> xi - H^{-1}(dl/dxi(g, xi) - p): one Newton step"),
+    KernelSpec("record", ("nn", "d", "d"), ("w",), "(g, p, xi) -> the scene's record row"),
+)
+KERNEL_NAMES = tuple(k.name for k in KERNELS)
+#: name -> (input size symbols, output size symbols)
+SIGNATURES = {k.name: (k.inputs, k.outputs) for k in KERNELS}
+
+
+def sizes(n: int, d: int, nz: int, w: int = 1) -> dict:
+    """The value of every size symbol for a module of dimensions n, d, nz and record width w."""
+    return {"nz": nz, "nn": n * n, "d": d, "dd": d * d, "nznz": nz * nz, "1": 1, "w": w}
+
+
+# ---- the record row ----------------------------------------------------------------------
+
+#: a record entry's name
+RECORD_NAME_RE = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}\Z")
+
+
+def record_width(layout, n: int, d: int) -> int:
+    """Width w of a record row from its layout ((name, offset, shape), ...): names distinct
+    identifiers (RECORD_NAME_RE), offsets contiguous from 0, shapes () (a scalar), (d,) (a
+    vector) or (n, n) (a matrix, column-major in the row), at least one entry. Raises
+    ValueError naming the first bad entry."""
+    if not isinstance(layout, (list, tuple)) or not layout:
+        raise ValueError("expected a non-empty list of (name, offset, shape)")
+    offset, seen = 0, set()
+    for entry in layout:
+        ok = isinstance(entry, (list, tuple)) and len(entry) == 3
+        if ok:
+            name, off, shape = entry
+            ok = (isinstance(name, str) and bool(RECORD_NAME_RE.match(name))
+                  and name not in seen and isinstance(shape, (list, tuple))
+                  and off == offset and tuple(shape) in ((), (d,), (n, n)))
+        if not ok:
+            raise ValueError(f"entry {entry!r} is not (distinct name, offset {offset}, shape "
+                             f"() | ({d},) | ({n}, {n}))")
+        seen.add(name)
+        offset += math.prod(shape)
+    return offset
+
+
+# ---- status codes ------------------------------------------------------------------------
+
+OK, NO_CONVERGENCE, NONFINITE, DOMAIN, RECORD, INVALID = 0, 1, 2, 3, 4, -1
+#: (code, C name HPGEN_<name>, message), in code order; INVALID is the C API's answer to
+#: arguments it rejects (never a step's outcome)
+STATUS = (
+    (OK, "OK", "ok"),
+    (NO_CONVERGENCE, "NO_CONVERGENCE", "Newton did not converge"),
+    (NONFINITE, "NONFINITE", "a non-finite value (or a singular Jacobian) appeared"),
+    (DOMAIN, "DOMAIN", "the chart map tau left its domain (margin(z, h) <= 0)"),
+    (RECORD, "RECORD", "a record row is not finite (or its velocity xi did not converge)"),
+    (INVALID, "INVALID", "invalid argument"),
+)
+MESSAGES = {code: message for code, _, message in STATUS}
+
+#: fields of the C ``hpgen_status`` (ctypes type letter: "q" long long, "d" double), in order
+STATUS_FIELDS = (("code", "q"), ("step", "q"), ("iterations", "q"),
+                 ("total_iterations", "q"), ("residual", "d"), ("jacobians", "q"))
+#: fields of the C ``hpgen_options``, in order (hpgen.runtime.newton.NewtonOptions)
+OPTIONS_FIELDS = (("tol", "d"), ("maxit", "q"), ("simplified", "q"), ("predictor", "q"))
+
+
+# ---- Newton ------------------------------------------------------------------------------
+
+#: default tolerance: converged when |dz| <= tol (1 + |z|), inf-norms
+DEFAULT_TOL = 1e-14
+#: default cap on Newton iterations per step
+DEFAULT_MAXIT = 50
+#: round-off floor: stop when |dz| stopped decreasing while |dz| <= ROUNDOFF_FLOOR (1 + |z|)
+ROUNDOFF_FLOOR = 1e-11
+#: simplified Newton: a contraction rate |dz_k| / |dz_{k-1}| above this refreshes J (or,
+#: with a J fresh from this step, switches the step to full Newton)
+THETA_MAX = 0.05
+#: simplified Newton stops when its error estimate is <= SIMPLIFIED_TOL tol (1 + |z|)
+SIMPLIFIED_TOL = 0.01
+#: the velocity xi of a record row (Newton on dl/dxi = p from xi = 0, compiled into the
+#: record loop): the tolerance and iteration cap of Integrator.velocity's defaults
+VELOCITY_TOL = DEFAULT_TOL
+VELOCITY_MAXIT = DEFAULT_MAXIT
+#: largest nz whose Newton linear algebra kernels.py carries as straight-line Python
+#: (bitwise the C template's; above it numpy/LAPACK, equal to C to round-off)
+UNROLL_MAX = 12
+
+#: the compile-time constants kernels.c.j2 receives (template variable -> value)
+TEMPLATE_CONSTANTS = {"abi_version": ABI_VERSION, "roundoff_floor": ROUNDOFF_FLOOR,
+                      "theta_max": THETA_MAX, "simplified_tol": SIMPLIFIED_TOL,
+                      "velocity_tol": VELOCITY_TOL, "velocity_maxit": VELOCITY_MAXIT}
+
+
+def c_literal(value) -> str:
+    """A C literal of an int or a double that the C compiler reads back bitwise: repr of a
+    float is the shortest decimal that rounds to it (C parses decimals correctly rounded)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise TypeError(f"not a C number: {value!r}")
+    if isinstance(value, int):
+        return str(value)
+    if not math.isfinite(value):
+        raise ValueError(f"not a finite double: {value!r}")
+    text = repr(value)
+    if float(text) != value or ("." not in text and "e" not in text):
+        raise ValueError(f"{value!r} has no exact short C literal")
+    return text

@@ -1,0 +1,145 @@
+"""hpgen.abi is the one contract between generated code and the runtime: the emitted C of a
+shipped example, the template, the Python mirror of the Newton loop, the ctypes structs and
+the meta.json loader all agree with it."""
+from __future__ import annotations
+
+import ast
+import json
+import re
+import struct
+
+import pytest
+
+from conftest import ROOT
+from hpgen import abi
+
+GENERATED = ROOT / "generated"
+#: a shipped example whose committed module test_generated keeps current
+MODULE = GENERATED / "heavy_top_gauss2_exp_exact"
+
+
+def _c_source() -> str:
+    return (MODULE / "kernels.c").read_text()
+
+
+def _defines(src: str) -> dict:
+    return dict(re.findall(r"^#define (HPGEN_[A-Z0-9_]+) (.+)$", src, re.M))
+
+
+def _bits(x: float) -> bytes:
+    return struct.pack("<d", x)
+
+
+def test_emitted_c_status_codes_and_abi_version():
+    defs = _defines(_c_source())
+    assert int(defs["HPGEN_ABI"]) == abi.ABI_VERSION
+    for code, name, message in abi.STATUS:
+        assert int(defs[f"HPGEN_{name}"].strip("()")) == code, name
+        assert f"HPGEN_{name} = {code}: {message}" in _c_source(), name
+    codes = [code for code, _, _ in abi.STATUS]
+    assert len(set(codes)) == len(codes) and set(abi.MESSAGES) == set(codes)
+
+
+def test_emitted_c_newton_constants_read_back_bitwise():
+    src = _c_source()
+    defs = _defines(src)
+    for name in ("ROUNDOFF_FLOOR", "THETA_MAX", "SIMPLIFIED_TOL"):
+        assert _bits(float(defs[f"HPGEN_{name}"])) == _bits(getattr(abi, name)), name
+    vel = src[src.index("static int hpgen_velocity("):]
+    vel = vel[:vel.index("\n}\n")]
+    assert int(re.search(r"it <= (\d+); \+\+it", vel).group(1)) == abi.VELOCITY_MAXIT
+    tol = re.search(r"if \(dn <= ([0-9.e+-]+) \* \(1\.0 \+ xn\)\)", vel).group(1)
+    assert _bits(float(tol)) == _bits(abi.VELOCITY_TOL)
+
+
+def test_emitted_c_kernel_table():
+    src, meta = _c_source(), json.loads((MODULE / "meta.json").read_text())
+    exported = re.findall(r"^HPGEN_EXPORT int hpgen_kernel_(\w+)\(([^)]*)\)", src, re.M)
+    assert tuple(name for name, _ in exported) == abi.KERNEL_NAMES
+    w = abi.record_width(meta["record"], meta["n"], meta["d"])
+    size = abi.sizes(meta["n"], meta["d"], meta["nz"], w)
+    for spec in abi.KERNELS:
+        # /* name(a[k], ...) -> (b[k], ...) */ above each kernel: the sizes, in order
+        m = re.search(rf"^/\* {spec.name}\(([^)]*)\) -> \(([^)]*)\) \*/$", src, re.M)
+        ins, outs = ([int(x) for x in re.findall(r"\[(\d+)\]", part)] for part in m.groups())
+        assert ins == [size[s] for s in spec.inputs], spec.name
+        assert outs == [size[s] for s in spec.outputs], spec.name
+        args = dict(exported)[spec.name].split(",")
+        assert len(args) == len(spec.inputs) + len(spec.outputs), spec.name
+
+
+def _c_struct(src: str, name: str) -> list:
+    body = re.search(rf"typedef struct {name} \{{(.*?)\}} {name};", src, re.S).group(1)
+    return [(f, "d" if t == "double" else "q")
+            for t, f in re.findall(r"^\s*(long long|double) (\w+);", body, re.M)]
+
+
+def test_c_structs_match_the_ctypes_side():
+    from hpgen.runtime.cbackend import _Options, _Status
+    src = _c_source()
+    assert _c_struct(src, "hpgen_status") == list(abi.STATUS_FIELDS)
+    assert _c_struct(src, "hpgen_options") == list(abi.OPTIONS_FIELDS)
+    assert [f for f, _ in _Status._fields_] == [f for f, _ in abi.STATUS_FIELDS]
+    assert [f for f, _ in _Options._fields_] == [f for f, _ in abi.OPTIONS_FIELDS]
+
+
+def test_template_has_no_contract_literals():
+    """The constants and codes reach kernels.c.j2 through its context only."""
+    text = (ROOT / "templates" / "kernels.c.j2").read_text()
+    code = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    for lit in ("1e-14", "1e-11", "0.05", "0.01", "<= 50"):
+        assert lit not in code, lit
+    assert not re.search(r"#define HPGEN_(ABI|OK|NO_CONVERGENCE|NONFINITE|DOMAIN|RECORD|"
+                         r"INVALID|ROUNDOFF_FLOOR|THETA_MAX|SIMPLIFIED_TOL) \(?[\-0-9]", text)
+
+
+def test_python_mirror_takes_the_same_constants():
+    from hpgen.codegen import pylinear
+    from hpgen.runtime import loop, newton
+    for name in ("OK", "NO_CONVERGENCE", "NONFINITE", "DOMAIN", "RECORD", "ROUNDOFF_FLOOR",
+                 "THETA_MAX", "SIMPLIFIED_TOL", "DEFAULT_TOL", "DEFAULT_MAXIT", "UNROLL_MAX"):
+        assert getattr(newton, name) is getattr(abi, name), name
+    assert pylinear.UNROLL_MAX is abi.UNROLL_MAX
+    assert loop.VELOCITY_TOL is abi.VELOCITY_TOL and loop.VELOCITY_MAXIT is abi.VELOCITY_MAXIT
+    assert list(loop.new_status()) == [f for f, _ in abi.STATUS_FIELDS]
+    # no bare tolerance or iteration cap left in the Python mirror
+    for mod in (newton, loop):
+        tree = ast.parse(open(mod.__file__).read())
+        nums = {n.value for n in ast.walk(tree) if isinstance(n, ast.Constant)
+                and type(n.value) in (int, float)}
+        assert not nums & {1e-14, 1e-11, 0.05, 0.01, 50, 51}, mod.__name__
+
+
+@pytest.mark.parametrize("x", [1e-14, 1e-11, 0.05, 0.01, 0.1, 1 / 3, 2.0 ** -1074, 1e308, 50])
+def test_c_literal_reads_back_bitwise(x):
+    text = abi.c_literal(x)
+    assert (int(text) if isinstance(x, int) else float(text)) == x
+    if isinstance(x, float):
+        assert _bits(float(text)) == _bits(x) and re.search(r"[.e]", text)
+
+
+@pytest.mark.parametrize("x", [float("nan"), float("inf"), True, "1"])
+def test_c_literal_refuses_what_c_cannot_read(x):
+    with pytest.raises((TypeError, ValueError)):
+        abi.c_literal(x)
+
+
+def test_record_width_conventions():
+    assert abi.record_width((("g", 0, (3, 3)), ("mu", 9, (3,)), ("E", 12, ())), 3, 3) == 13
+    for bad in ((), (("g", 1, ()),), (("a", 0, ()), ("a", 1, ())), (("1x", 0, ()),),
+                (("v", 0, (2,)),)):
+        with pytest.raises(ValueError):
+            abi.record_width(bad, 3, 3)
+
+
+def test_loader_refuses_an_older_meta_format(tmp_path):
+    from hpgen.errors import ModelError
+    from hpgen.runtime import read_meta
+    meta = json.loads((MODULE / "meta.json").read_text())
+    assert meta["format"] == abi.META_FORMAT
+    read_meta(MODULE)
+    meta["format"] = abi.META_FORMAT - 1
+    (tmp_path / "meta.json").write_text(json.dumps(meta))
+    with pytest.raises(ModelError, match=r"meta\.json.*format: .*format 1.*recompile") as e:
+        read_meta(tmp_path)
+    assert "\n" not in str(e.value)
