@@ -4,7 +4,7 @@
 - derivation key: content hash + generator digest;
 - C library: sha256 of kernels.c + compiler + flags.
 Compiler runs are counted with a wrapper around the real compiler, derivations by wrapping
-hpgen.api.generate_files.
+hpgen.api.derive_module.
 """
 from __future__ import annotations
 
@@ -103,12 +103,12 @@ def counting_cc(tmp_path):
 @pytest.fixture
 def counting_derive(monkeypatch):
     calls = []
-    real = api.generate_files
+    real = api.derive_module
 
     def counted(*args, **kw):
         calls.append(args[0])
         return real(*args, **kw)
-    monkeypatch.setattr(api, "generate_files", counted)
+    monkeypatch.setattr(api, "derive_module", counted)
     return calls
 
 
