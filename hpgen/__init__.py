@@ -8,8 +8,8 @@ from __future__ import annotations
 from .errors import BuildError, ConvergenceError, DomainError, HpgenError, ModelError
 
 __version__ = "0.1.0"
-__all__ = ["compile", "build", "load", "HpgenError", "ModelError", "BuildError", "ConvergenceError",
-           "DomainError", "__version__"]
+__all__ = ["compile", "build", "load", "sweep", "HpgenError", "ModelError", "BuildError",
+           "ConvergenceError", "DomainError", "__version__"]
 
 
 def compile(model, **options):
@@ -29,3 +29,10 @@ def load(path, backend=None):
     """Load a generated module directory; see :func:`hpgen.runtime.load`."""
     from .runtime import load as _load
     return _load(path, backend=backend)
+
+
+def sweep(integ, **kwargs):
+    """Run many members (initial states, steps) of an integrator on local threads or a Dask
+    cluster; see :func:`hpgen.ensemble.sweep.sweep`."""
+    from .ensemble.sweep import sweep as _sweep
+    return _sweep(integ, **kwargs)

@@ -70,19 +70,28 @@ class _Options(ctypes.Structure):
         return cls(float(o.tol), int(o.maxit), int(bool(o.simplified)), int(bool(o.predictor)))
 
 
-def _over_threads(B: int, threads: int, work) -> None:
+def _over_threads(B: int, threads: int, work, bar=None) -> None:
     """work(lo, hi) on contiguous slices of range(B), one slice per thread (at most B
-    threads; the C calls inside release the GIL through ctypes)."""
+    threads; the C calls inside release the GIL through ctypes). With a progress ``bar``
+    (hpgen.runtime.progress) the slices are about 20 per thread, the bar advancing by each
+    slice's members as it completes (runs are independent: the states do not change)."""
     from concurrent.futures import ThreadPoolExecutor
     threads = max(1, min(int(threads), B))
-    bounds = [B * i // threads for i in range(threads + 1)]
+    parts = threads if bar is None else min(B, 20 * threads)
+    bounds = [B * i // parts for i in range(parts + 1)]
     slices = [(lo, hi) for lo, hi in zip(bounds, bounds[1:]) if hi > lo]
-    if len(slices) <= 1:
-        for lo, hi in slices:
-            work(lo, hi)
+
+    def run(s):
+        work(*s)
+        if bar is not None:
+            bar.update(s[1] - s[0])
+
+    if threads <= 1 or len(slices) <= 1:
+        for s in slices:
+            run(s)
         return
-    with ThreadPoolExecutor(len(slices)) as pool:
-        list(pool.map(lambda s: work(*s), slices))
+    with ThreadPoolExecutor(threads) as pool:
+        list(pool.map(run, slices))
 
 
 class CBackend(_Backend):
@@ -272,7 +281,7 @@ class CBackend(_Backend):
             self._init_run(base + b * self.run_size, g0, p0, _flat(z0s[b], self.nz, "z0"))
         return runs, base
 
-    def simulate_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads):
+    def simulate_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads, bar=None):
         """B independent runs; each thread advances a contiguous slice of them with one C
         call (ctypes releases the GIL). Returns (done (B,), g_rec (B, K, nn), p_rec (B, K, d),
         statuses); K = steps // every + 1 including step 0; rows after a failure are 0."""
@@ -290,7 +299,7 @@ class CBackend(_Backend):
                 ctypes.byref(o), K, g_rec[lo:, 1:].ctypes.data, p_rec[lo:, 1:].ctypes.data,
                 ctypes.byref(sts, lo * ctypes.sizeof(_Status)))
 
-        _over_threads(B, threads, work)
+        _over_threads(B, threads, work, bar)
         done = np.array([s.step for s in sts])
         return done, g_rec, p_rec, [s.as_dict() for s in sts]
 
@@ -314,7 +323,7 @@ class CBackend(_Backend):
             raise ValueError("hpgen_advance_record rejected its arguments")
         return int(done), rows[:n_rec.value], st.as_dict()
 
-    def record_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads):
+    def record_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads, bar=None):
         """B independent runs keeping record rows (hpgen_advance_record_batch), each thread
         a contiguous slice in one C call. Returns (rows (B, K, W) with row 0 the start,
         rows written per run (B,) including row 0, statuses); codes of row 0 that failed
@@ -335,7 +344,7 @@ class CBackend(_Backend):
                 ctypes.byref(o), K, rows[lo:, 1:].ctypes.data, n_rec[lo:].ctypes.data,
                 ctypes.byref(sts, lo * ctypes.sizeof(_Status)))
 
-        _over_threads(B, threads, work)
+        _over_threads(B, threads, work, bar)
         out = [s.as_dict() for s in sts]
         for b, (code, _) in enumerate(first):
             if code != abi.OK:

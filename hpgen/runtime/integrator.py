@@ -23,6 +23,7 @@ from ..errors import ConvergenceError, ModelError
 from . import newton as _newton
 from .args import _array, _error, _int, _positive
 from .newton import NewtonOptions
+from .progress import bar as progress_bar
 from .records import RecordsMixin
 from .sections import SectionsMixin
 from .trajectory import Trajectory
@@ -32,10 +33,10 @@ COND_MAX = 1e12
 SIMPLIFIED_RATIO = 4.0
 class Integrator(SectionsMixin, RecordsMixin):
     """A loaded generated module. Attributes: meta (dict from meta.json), backend ("c" or
-    "python"), n, d, nz."""
+    "python"), n, d, nz, module_dir (the directory it was loaded from, or None)."""
 
-    def __init__(self, meta: dict, backend):
-        self.meta, self._b = meta, backend
+    def __init__(self, meta: dict, backend, module_dir=None):
+        self.meta, self._b, self.module_dir = meta, backend, module_dir
         self.backend = backend.name
         self.n, self.d, self.nz = meta["n"], meta["d"], meta["nz"]
         self._cond_last = None     # (bytes of the last Hessian checked, its cond) (_cond)
@@ -303,14 +304,16 @@ class Integrator(SectionsMixin, RecordsMixin):
                               None if mu0 is None else mu0[b]) for b in range(B)]
 
     def simulate_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
-                       newton: NewtonOptions | None = None) -> list:
+                       newton: NewtonOptions | None = None, progress=None) -> list:
         """An ensemble: B runs from g0 ((n, n) shared, or (B, n, n)) and xi0 or mu0 (B, d),
         in C over ``threads`` threads (default: the CPU count). Each run's states are bitwise
         those of ``simulate`` on its own. Returns B Trajectories; a failed run's Trajectory
-        is partial with ``.error`` set (nothing is raised)."""
+        is partial with ``.error`` set (nothing is raised). progress: a bar of the members
+        done on stderr (None: when stderr is a terminal; hpgen.runtime.progress)."""
         h, steps, every, opts, threads, gs, ms, z0s = self._prepare_batch(
             g0, h, steps, xi0, mu0, every, threads, newton, "simulate_batch")
-        done, g_rec, p_rec, sts = self._b.simulate_batch(gs, ms, h, z0s, steps, every, opts,
-                                                         threads)
+        with progress_bar(len(gs), "simulate_batch", "member", progress) as bar:
+            done, g_rec, p_rec, sts = self._b.simulate_batch(gs, ms, h, z0s, steps, every,
+                                                             opts, threads, bar)
         return [self._trajectory(int(done[b]), g_rec[b], p_rec[b], sts[b], h, every)
                 for b in range(len(gs))]

@@ -103,4 +103,4 @@ def load(path, backend=None, *, cc=None, cflags=None) -> Integrator:
     else:
         raise ModelError(f"unknown backend {backend!r}; expected one of {BACKENDS}",
                          field="backend")
-    return Integrator(meta, impl)
+    return Integrator(meta, impl, module_dir)

@@ -21,6 +21,7 @@ from ..errors import RecordError
 from . import loop
 from .args import _error, _int
 from .newton import NewtonOptions
+from .progress import bar as progress_bar
 from .trajectory import npz_path, run_metadata, write_npz
 
 
@@ -165,13 +166,15 @@ class RecordsMixin:
         return chunks[0]
 
     def record_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
-                     newton: NewtonOptions | None = None) -> list:
+                     newton: NewtonOptions | None = None, progress=None) -> list:
         """``record`` for an ensemble (starts as in ``simulate_batch``), in C over ``threads``
         threads (default: the CPU count); each run's rows are bitwise those of ``record`` on
         its own. Returns B Records; a failed run's Records is partial with ``.error`` set
-        (nothing is raised)."""
+        (nothing is raised). progress: as for ``simulate_batch``."""
         h, steps, every, opts, threads, gs, ms, z0s = self._prepare_batch(
             g0, h, steps, xi0, mu0, every, threads, newton, "record_batch")
-        rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps, every, opts, threads)
+        with progress_bar(len(gs), "record_batch", "member", progress) as bar:
+            rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps, every, opts,
+                                                     threads, bar)
         return [make_records(self, rows[b, :n_rows[b]], sts[b], h, every, 0.0)
                 for b in range(len(gs))]

@@ -1,0 +1,101 @@
+"""The members of a sweep: their initial states and step sizes, checked once, and their chunks.
+
+A sweep has B members, member i starting at (g0[i], xi0[i] or mu0[i]) with step h[i]; every
+member runs the same ``steps`` steps and keeps a sample every ``every`` steps (K = steps //
+every + 1 samples, sample 0 the initial state). ``g0`` and ``h`` given once are shared by all
+members. Member order is the input order everywhere (chunks are contiguous slices).
+numpy and the standard library only.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import ModelError
+from ..runtime.args import _int, _positive
+
+#: error text of a params= sweep on a model without runtime parameters
+NO_RUNTIME_PARAMETERS = "params sweeps need runtime_parameters in the model"
+
+
+@dataclass(frozen=True, eq=False)
+class Members:
+    """Checked member inputs: g0 (B, n, n), init (B, d) (``kind`` "xi0" or "mu0"), h (B,)."""
+    g0: np.ndarray
+    init: np.ndarray
+    kind: str
+    h: np.ndarray
+
+    def __len__(self) -> int:
+        return len(self.init)
+
+    def slice(self, lo: int, hi: int) -> "Members":
+        return Members(self.g0[lo:hi], self.init[lo:hi], self.kind, self.h[lo:hi])
+
+
+def members(integ, g0, xi0, mu0, h, params=None) -> Members:
+    """Members from the sweep arguments (shapes, finiteness and h > 0 checked here; the
+    group defect and the Legendre transform are checked per member when it starts).
+    ModelError naming the argument."""
+    if params is not None:
+        # runtime parameters arrive with issue 16; until a model declares them, a params
+        # sweep has nothing to vary
+        if not integ.meta.get("runtime_parameters"):
+            raise ModelError(NO_RUNTIME_PARAMETERS, field="params")
+        raise ModelError("params sweeps are not supported by this hpgen runtime yet",
+                         field="params")
+    if (xi0 is None) == (mu0 is None):
+        raise ModelError("give exactly one of xi0 (velocities) and mu0 (momenta), each (B, d)",
+                         field="xi0" if xi0 is not None else "mu0")
+    kind = "xi0" if xi0 is not None else "mu0"
+    init = _finite(xi0 if xi0 is not None else mu0, kind)
+    if init.ndim != 2 or init.shape[1] != integ.d or len(init) == 0:
+        raise ModelError(f"expected an array of shape (B, {integ.d}) with B >= 1, got shape "
+                         f"{init.shape}", field=kind)
+    B, n = len(init), integ.n
+    G = _finite(g0, "g0")
+    if G.shape == (n, n):
+        G = np.broadcast_to(G, (B, n, n))
+    if G.shape != (B, n, n):
+        raise ModelError(f"expected g0 of shape ({n}, {n}) or ({B}, {n}, {n}), got {G.shape}",
+                         field="g0")
+    H = np.asarray(h, dtype=object)
+    if H.ndim == 0:
+        H = np.full(B, _positive(h, "h"))
+    elif H.shape == (B,):
+        H = np.array([_positive(x, f"h[{i}]") for i, x in enumerate(H.tolist())])
+    else:
+        raise ModelError(f"expected a number or {B} numbers (one per member), got shape "
+                         f"{H.shape}", field="h")
+    return Members(np.ascontiguousarray(G), init, kind, H)
+
+
+def _finite(x, field) -> np.ndarray:
+    try:
+        a = np.array(x, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ModelError(f"expected an array of numbers, got {type(x).__name__}",
+                         field=field) from None
+    if not np.isfinite(a).all():
+        raise ModelError("has non-finite entries", field=field)
+    return a
+
+
+def run_length(steps, every) -> tuple[int, int, int]:
+    """(steps, every, K samples) checked."""
+    steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
+    return steps, every, steps // every + 1
+
+
+def chunk_bounds(B: int, chunk_size) -> list[tuple[int, int]]:
+    """Contiguous member slices [lo, hi) of at most ``chunk_size`` members."""
+    size = _int(chunk_size, "chunk_size", 1)
+    return [(lo, min(lo + size, B)) for lo in range(0, B, size)]
+
+
+def default_chunk_size(B: int, slots: int) -> int:
+    """About 4 chunks per worker thread (load balance, and a lost worker costs little),
+    at least 1 member each."""
+    return max(1, math.ceil(B / (4 * max(1, slots))))

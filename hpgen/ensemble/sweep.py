@@ -1,0 +1,177 @@
+"""hpgen.sweep: run many members of one integrator, on local threads or on a Dask cluster.
+
+    res = hpgen.sweep(integ, xi0=W0, h=0.05, steps=10**5, record=["energy"], every=100)
+    res = hpgen.sweep(integ, xi0=W0, h=0.05, steps=10**5, client=Client("tcp://..."))
+    res.save("sweep.zarr")            # or .nc, .npz: hpgen.ensemble.result
+
+The members are split into contiguous chunks (``chunk_size`` members); each chunk runs the C
+batch loop of the integrator (hpgen.ensemble.chunk). Without ``client`` the chunks run one
+after the other, each over ``threads`` local threads; with a dask.distributed Client each
+chunk is one task, shipped with the module's sources and their content hash
+(hpgen.ensemble.remote) and run on one worker thread. The numbers do not depend on the path,
+the chunking or the threads: every member's samples are bitwise those of ``simulate_batch``
+(or ``record_batch``) on the same inputs. A worker lost mid-task costs its chunk only: the
+scheduler runs it again on another worker (Dask's own retry of tasks of lost workers).
+
+``checkpoint``: a directory where each completed chunk is saved as it completes; a sweep
+started again with the same inputs and checkpoint reuses the chunks found there (``hpgen sweep
+--resume``). It holds ``sweep.json`` (the sweep's fingerprint: module content hash, inputs,
+steps, every, record, chunking) and ``chunk-<lo>-<hi>.npz`` files, written atomically.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import zipfile
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import ModelError
+from ..runtime.args import _int
+from ..runtime.progress import bar as progress_bar
+from ..runtime.trajectory import write_npz
+from . import remote
+from .chunk import layout, run_chunk
+from .members import chunk_bounds, default_chunk_size, members, run_length
+from .result import concat
+
+FINGERPRINT = "sweep.json"
+CHUNK_KEYS = ("failed", "error", "samples", "steps_done", "newton_iterations")
+
+
+def sweep(integ, g0=None, xi0=None, mu0=None, h=None, steps=None, record=None, every=1,
+          chunk_size=None, client=None, threads=None, progress=None, params=None,
+          checkpoint=None):
+    """Run B members and return a SweepResult (hpgen.ensemble.result).
+
+    integ: a C-backend Integrator (hpgen.compile / hpgen.load). g0: (n, n) shared or
+    (B, n, n), default the identity; xi0 or mu0: (B, d), exactly one; h: a step shared by all
+    members or one per member (B,); steps, every: as for simulate (K = steps // every + 1
+    samples). record: None keeps g and mu; a list of names keeps those entries of the
+    module's record row (``integ.record_names``). params: runtime parameters per member
+    (needs a model with runtime_parameters). chunk_size: members per chunk (default: all in
+    one chunk locally, about 4 chunks per worker thread on Dask, smaller when a checkpoint or
+    progress bar wants progress). client: a dask.distributed Client, or None for the local
+    threads (``threads``, default the CPU count). progress: tqdm bar of members done on
+    stderr (None: when stderr is a terminal). checkpoint: directory of completed chunks (see
+    the module docstring). Failed members are marked (``failed``, ``error``) with their
+    samples before the failure; nothing is raised for them. Raises ModelError for bad input.
+    """
+    if integ.backend != "c":
+        raise ModelError("sweep needs the C backend (hpgen.compile(..., backend='c'))",
+                         field="backend")
+    if h is None or steps is None:
+        raise ModelError("give the step h and the number of steps", field="h" if h is None
+                         else "steps")
+    g0 = np.eye(integ.n) if g0 is None else g0
+    m = members(integ, g0, xi0, mu0, h, params)
+    steps, every, K = run_length(steps, every)
+    layout(integ, record)                                   # check the names before running
+    B = len(m)
+    threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
+    slots = sum(client.nthreads().values()) if client is not None else threads
+    if chunk_size is None:
+        local_whole = client is None and checkpoint is None and not _wants(progress)
+        chunk_size = B if local_whole else (default_chunk_size(B, slots) if client is not None
+                                            else max(threads, -(-B // 20)))
+    bounds = chunk_bounds(B, chunk_size)
+    payload = remote.payload_of(integ) if (client is not None or checkpoint) else None
+    store = _Checkpoint(checkpoint, _fingerprint(payload, m, steps, every, record, bounds)) \
+        if checkpoint is not None else None
+    done = {} if store is None else store.load(bounds)
+    with progress_bar(B, "sweep", "member", progress) as pbar:
+        pbar.update(sum(hi - lo for lo, hi in done))
+        todo = [b for b in bounds if b not in done]
+        if client is None:
+            for lo, hi in todo:
+                done[lo, hi] = _keep(store, (lo, hi), run_chunk(
+                    integ, m.slice(lo, hi), lo, steps, every, record, threads))
+                pbar.update(hi - lo)
+        else:
+            _on_dask(client, payload, m, todo, steps, every, record, store, done, pbar)
+    step = np.arange(0, K * every, every)
+    initial = {"g0": np.array(m.g0), m.kind: m.init}
+    attrs = {"module": integ.meta["module"], "hash": integ.meta["hash"], "steps": steps,
+             "every": every}
+    return concat([done[b] for b in bounds], step, m.h, initial, attrs)
+
+
+def _wants(progress) -> bool:
+    from ..runtime.progress import wanted
+    return wanted(progress)
+
+
+def _keep(store, bounds, result):
+    if store is not None:
+        store.save(bounds, result)
+    return result
+
+
+def _on_dask(client, payload, m, todo, steps, every, record, store, done, pbar):
+    """One task per chunk; results kept as they complete; on an error (bad input) or an
+    interrupt the remaining tasks are cancelled."""
+    from distributed import as_completed
+    if not todo:
+        return
+    shipped = client.scatter(payload, broadcast=True, hash=False)
+    futures = {client.submit(remote.run_task, shipped, m.slice(lo, hi), lo, steps, every,
+                             record, 1, pure=False): (lo, hi) for lo, hi in todo}
+    try:
+        for fut in as_completed(list(futures)):
+            lo, hi = futures[fut]
+            done[lo, hi] = _keep(store, (lo, hi), fut.result())
+            pbar.update(hi - lo)
+    finally:
+        client.cancel(list(futures) + [shipped])
+
+
+def _fingerprint(payload, m, steps, every, record, bounds) -> str:
+    h = hashlib.sha256()
+    h.update(payload.digest.encode())
+    for a in (m.g0, m.init, m.h):
+        h.update(np.ascontiguousarray(a, dtype=np.float64).tobytes())
+    h.update(json.dumps([m.kind, steps, every, None if record is None else list(record),
+                         bounds]).encode())
+    return h.hexdigest()
+
+
+class _Checkpoint:
+    """The chunks of one sweep on disk (``directory``): see the module docstring."""
+
+    def __init__(self, directory, fingerprint: str):
+        self.dir, self.fingerprint = Path(directory), fingerprint
+        path = self.dir / FINGERPRINT
+        if path.exists():
+            try:
+                found = json.loads(path.read_text()).get("fingerprint")
+            except (OSError, ValueError, AttributeError):
+                found = None
+            if found != fingerprint:
+                raise ModelError("holds the chunks of a different sweep (other module, inputs "
+                                 "or chunking); remove it or choose another", file=str(self.dir))
+        else:
+            self.dir.mkdir(parents=True, exist_ok=True)
+            path.write_text(json.dumps({"fingerprint": fingerprint}) + "\n")
+
+    def _path(self, bounds) -> Path:
+        return self.dir / f"chunk-{bounds[0]}-{bounds[1]}.npz"
+
+    def save(self, bounds, result: dict) -> None:
+        data = {f"a:{k}": v for k, v in result["arrays"].items()}
+        data.update({k: result[k] for k in CHUNK_KEYS})
+        data["error"] = np.asarray(result["error"], dtype=str)
+        write_npz(self._path(bounds), data)
+
+    def load(self, bounds) -> dict:
+        """{bounds: chunk dict} of the chunks already on disk (unreadable ones are redone)."""
+        out = {}
+        for b in bounds:
+            try:
+                with np.load(self._path(b), allow_pickle=False) as z:
+                    out[b] = {"arrays": {k[2:]: z[k] for k in z.files if k.startswith("a:")},
+                              **{k: z[k] for k in CHUNK_KEYS}}
+            except (OSError, ValueError, KeyError, EOFError, zipfile.BadZipFile):
+                continue
+        return out
