@@ -1,4 +1,4 @@
-"""Command line: ``hpgen compile``, ``hpgen run``, ``hpgen list``.
+"""Command line: ``hpgen compile``, ``hpgen run``, ``hpgen list``, ``hpgen sweep``.
 
 Exit status: 0 success, 2 bad input (ModelError; usage errors), 1 any other hpgen failure
 (BuildError, ConvergenceError). Errors are one line on stderr, never a traceback.
@@ -55,6 +55,8 @@ def _parser():
     k.add_argument("--json", help="also write the figures to this JSON file")
     from .bench.cli import add_parser as _add_bench_parser
     _add_bench_parser(sub)
+    from .ensemble.cli import add_parser as _add_sweep_parser
+    _add_sweep_parser(sub, _add_options)
     return ap
 
 
@@ -185,6 +187,9 @@ def main(argv=None) -> int:
         if args.command == "bench":
             from .bench.cli import cmd_bench
             return cmd_bench(args)
+        if args.command == "sweep":
+            from .ensemble.cli import cmd_sweep
+            return cmd_sweep(args, _options)
         return {"compile": cmd_compile, "run": cmd_run, "list": cmd_list,
                 "check": cmd_check}[args.command](args)
     except ModelError as e:
