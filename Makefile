@@ -6,7 +6,7 @@ PIP_INSTALL = $(PYTHON) -m pip install --quiet -c constraints.txt
 .PHONY: install demo test test-fast wheel-test generate clean
 
 install:
-	$(PIP_INSTALL) -e '.[test]'
+	$(PIP_INSTALL) -e '.[test,scale]'
 
 demo: install
 	$(PYTHON) -m hpgen run examples/heavy_top.yaml --out heavy_top.npz
