@@ -39,6 +39,7 @@ def _parser():
     r.add_argument("--steps", type=int, help="override scene.steps")
     r.add_argument("--chunk", type=int, default=1_000_000,
                    help="steps per C call; memory holds one chunk's records (default 10^6)")
+    r.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     sub.add_parser("list", help="groups, tableaus and chart maps")
     k = sub.add_parser("check", help="observed order, energy, momentum map, group and "
                        "symplecticity defects of an integrator on the model's scene",
@@ -95,7 +96,8 @@ def cmd_run(args) -> int:
     t0 = time.perf_counter()
     try:
         path, summary = record_to_npz(integ, out, g0=sc.g0, h=h, steps=steps,
-                                      xi0=sc.xi0, mu0=sc.mu0, every=sc.every, chunk=args.chunk)
+                                      xi0=sc.xi0, mu0=sc.mu0, every=sc.every, chunk=args.chunk,
+                                      progress=False if args.no_progress else None)
     except ConvergenceError as e:
         saved = getattr(e, "saved", None)
         if saved is not None and saved[1]:

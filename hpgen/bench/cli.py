@@ -33,6 +33,7 @@ def add_parser(sub):
     b.add_argument("--min-time", default="0.2", help="timing: seconds of repeats (default 0.2)")
     b.add_argument("--out", help="output directory (default bench-<model name>/)")
     b.add_argument("--cache-dir", help="build cache directory (default ~/.cache/hpgen)")
+    b.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     return b
 
 
@@ -49,19 +50,25 @@ def _number(text, field, convert=float):
 def cmd_bench(args) -> int:
     from .core import parse_list, run_bench
     from .report import comparison_table, md_table
-    res = run_bench(
-        args.model, T=_number(args.T, "option T"),
-        tableau=parse_list(args.tableau, "option tableau", str),
-        tau=parse_list(args.tau, "option tau", str),
-        rkmk=parse_list(args.rkmk, "option rkmk", str),
-        h=parse_list(args.h, "option h"), rk4_h=parse_list(args.rk4_h, "option rk4_h"),
-        collocation_h=parse_list(args.collocation_h, "option collocation_h"),
-        rtol=parse_list(args.rtol, "option rtol"),
-        cvodes_tol=parse_list(args.cvodes_tol, "option cvodes_tol"),
-        peers=parse_list(args.peers, "option peers", str), reference=args.reference,
-        samples=_number(args.samples, "option samples", int),
-        min_time=_number(args.min_time, "option min_time"), out=args.out,
-        cache_dir=args.cache_dir)
+    from ..runtime.progress import bar
+    # the stages run_bench reports (compiles, peers), counted by a bar; lines above it
+    with bar(None, "bench", "stage", False if args.no_progress else None) as stages:
+        def log(line):
+            stages.write(line, file=sys.stderr)
+            stages.update()
+        res = run_bench(
+            args.model, T=_number(args.T, "option T"),
+            tableau=parse_list(args.tableau, "option tableau", str),
+            tau=parse_list(args.tau, "option tau", str),
+            rkmk=parse_list(args.rkmk, "option rkmk", str),
+            h=parse_list(args.h, "option h"), rk4_h=parse_list(args.rk4_h, "option rk4_h"),
+            collocation_h=parse_list(args.collocation_h, "option collocation_h"),
+            rtol=parse_list(args.rtol, "option rtol"),
+            cvodes_tol=parse_list(args.cvodes_tol, "option cvodes_tol"),
+            peers=parse_list(args.peers, "option peers", str), reference=args.reference,
+            samples=_number(args.samples, "option samples", int),
+            min_time=_number(args.min_time, "option min_time"), out=args.out,
+            cache_dir=args.cache_dir, log=log)
     print(f"# {res.model_name}, T = {res.T:g}; reference: {res.reference}\n")
     print(md_table(res.points))
     print("\nhpgen against each peer at equal error (peer time / hpgen time, log-log "

@@ -10,13 +10,17 @@ import sys
 
 
 class _NoBar:
-    """What ``bar`` returns when no bar is shown: the calls of a tqdm bar that hpgen uses."""
+    """What ``bar`` returns when no bar is shown: the calls of a tqdm bar that hpgen uses
+    (update, close, write a line to stderr, context manager)."""
 
     def update(self, n=1):
         pass
 
     def close(self):
         pass
+
+    def write(self, text, file=None):
+        print(text, file=file or sys.stderr, flush=True)
 
     def __enter__(self):
         return self
@@ -36,8 +40,8 @@ def wanted(progress) -> bool:
 
 
 def bar(total, desc: str, unit: str, progress=None):
-    """A tqdm bar on stderr over ``total`` ``unit``s, or a no-op with the same calls (update,
-    close, context manager) when not ``wanted`` or tqdm is not installed."""
+    """A tqdm bar on stderr over ``total`` ``unit``s (None: a counter), or a no-op with the
+    same calls when not ``wanted`` or tqdm is not installed."""
     if not wanted(progress):
         return _NoBar()
     try:

@@ -21,16 +21,18 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import ConvergenceError
+from .progress import bar as progress_bar
 from .trajectory import npz_path, run_metadata, write_npz
 
 
 def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
-                  chunk=1_000_000, **newton_kw):
+                  chunk=1_000_000, progress=False, **newton_kw):
     """Run and save the module's record row (``integ.record_names``, one array each, and t);
     returns (path, summary): samples written, energy_max_change
     (max |E - E0|, if energy is recorded) and momentum_max_change (per component, if
     momentum is recorded). On a failed step the records before it are saved (partial=True)
-    and the ConvergenceError is re-raised with ``.saved = (path, samples)``."""
+    and the ConvergenceError is re-raised with ``.saved = (path, samples)``. progress: a bar
+    of the steps done, per chunk (hpgen.runtime.progress; None: when stderr is a terminal)."""
     path = npz_path(out)
     K = steps // every + 1
     work = Path(tempfile.mkdtemp(prefix=f".{path.name}.", dir=path.parent))
@@ -38,10 +40,14 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     summary = {"energy_max_change": None, "momentum_max_change": None}
     try:
         try:
-            for rec in integ.stream_record(g0=g0, h=h, steps=steps, xi0=xi0, mu0=mu0,
-                                           every=every, chunk=chunk, **newton_kw):
-                n = _append(maps, work, K, n, {"t": rec.t, **rec.arrays}, summary)
-                iters += rec.newton_iterations
+            stepped = 0
+            with progress_bar(steps, "run", "step", progress) as bar:
+                for rec in integ.stream_record(g0=g0, h=h, steps=steps, xi0=xi0, mu0=mu0,
+                                               every=every, chunk=chunk, **newton_kw):
+                    n = _append(maps, work, K, n, {"t": rec.t, **rec.arrays}, summary)
+                    iters += rec.newton_iterations
+                    bar.update(min(chunk, steps - stepped))
+                    stepped += min(chunk, steps - stepped)
         except ConvergenceError as exc:
             if exc.partial is None:
                 raise

@@ -287,3 +287,16 @@ def test_progress_bar_only_when_asked(body, capsys, monkeypatch):
 def test_result_type(body):
     res = hpgen.sweep(body, xi0=W0[:2], h=H, steps=4, progress=False)
     assert isinstance(res, SweepResult) and res.attrs["module"] == body.meta["module"]
+
+
+def test_run_progress_bar_keeps_the_file(body, tmp_path, capsys):
+    """record_to_npz (hpgen run) with its bar on gives the same file as without."""
+    pytest.importorskip("tqdm")
+    from hpgen.runtime.recorder import record_to_npz
+    kw = dict(g0=np.eye(3), h=H, steps=50, xi0=W0[0], every=5, chunk=20)
+    a, _ = record_to_npz(body, tmp_path / "a.npz", progress=False, **kw)
+    assert capsys.readouterr().err == ""
+    b, _ = record_to_npz(body, tmp_path / "b.npz", progress=True, **kw)
+    assert "run:" in capsys.readouterr().err
+    with np.load(a) as za, np.load(b) as zb:
+        assert za.files == zb.files and all(np.array_equal(za[k], zb[k]) for k in za.files)
