@@ -31,8 +31,9 @@ def read_grid(path, n: int, d: int) -> dict:
     doc = compose_document(text, str(path))
     data = doc.mapping((), doc.data, KEYS)
     if ("xi0" in data) == ("mu0" in data):
-        raise doc.error(("xi0",) if "xi0" in data else (), "give exactly one of xi0 (velocities) and mu0 (momenta): a list "
-                            f"of vectors of length {d}, one per member")
+        raise doc.error(("xi0",) if "xi0" in data else (),
+                        "give exactly one of xi0 (velocities) and mu0 (momenta): a list "
+                        f"of vectors of length {d}, one per member")
     kind = "xi0" if "xi0" in data else "mu0"
     out = {kind: _vectors(doc, kind, data[kind], d)}
     B = len(out[kind])

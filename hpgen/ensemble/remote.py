@@ -2,10 +2,12 @@
 
 Workers need hpgen and a C compiler, no shared file system: the client sends the module's
 source files the C backend reads (meta.json and kernels.c, never a built library) with
-``digest``, the sha256 of their names and bytes. A worker checks the digest of what it received, writes the files into
-its own build cache (``<cache>/sweep/<digest>/``, atomic, with a manifest of their sha256),
-builds the C library there once (hpgen.runtime.build, locked against concurrent builders) and
-keeps the loaded Integrator for the life of its process. An entry already in the cache is used
+``digest``, the sha256 of their names and bytes, once per worker (scattered, broadcast). A
+worker checks the digest of what it received, writes the files into its own build cache
+(``<cache>/sweep/<digest>/``, atomic, with a manifest of their sha256; hpgen.runtime.build
+checks the sources against it before building or loading), builds the C library there once
+(locked against concurrent builders) and keeps the loaded Integrator for the life of its
+process. An entry already in the cache is used
 only when its files still match the manifest and the digest; otherwise it is rewritten.
 Standard library and numpy (hpgen.runtime) only: no compile-time stack on the workers.
 """
