@@ -92,3 +92,12 @@ def test_worker_killed_mid_chunk_is_retried(body, client):
         os.kill(victim, 0)
     _same(out["res"], local)
     assert not out["res"].failed.any()
+
+
+def test_bad_member_on_a_worker_is_a_model_error(body, client):
+    from hpgen.errors import ModelError
+    g0 = np.broadcast_to(np.eye(3), (4, 3, 3)).copy()
+    g0[2] *= 2.0                                        # member 2 is off the group
+    with pytest.raises(ModelError, match="member 2: initial g: g0 is not on the group"):
+        hpgen.sweep(body, g0=g0, xi0=W0[:4], h=0.1, steps=5, client=client, chunk_size=2,
+                    progress=False)
