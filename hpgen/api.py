@@ -75,10 +75,10 @@ class CompileOptions:
 
 
 def read_model_text(path) -> str:
-    try:
-        data = Path(path).read_bytes()
-    except OSError as e:
-        raise ModelError(f"cannot read the model file ({e.strerror})", file=str(path)) from None
+    """The text of a model file (hpgen.model.loader.read_model_bytes: a regular file of at
+    most 2 MB, never read past that), decoded as UTF-8."""
+    from .model.loader import read_model_bytes
+    data = read_model_bytes(path)
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError:

@@ -1,11 +1,16 @@
-"""Command line: ``hpgen compile``, ``hpgen run``, ``hpgen list``, ``hpgen sweep``.
+"""hpgen: compile a model's variational integrator, run, sweep, check and benchmark it.
 
-Exit status: 0 success, 2 bad input (ModelError; usage errors), 1 any other hpgen failure
-(BuildError, ConvergenceError). Errors are one line on stderr, never a traceback.
+Exit status: 0 success; 2 bad input (ModelError; usage errors); 1 any other hpgen failure
+(BuildError; a failed step of ``hpgen run``: ConvergenceError, DomainError, RecordError, the
+samples before it saved with partial=True); 3 a failed ``hpgen check``; 130 / 143 ``hpgen
+run`` interrupted by SIGINT / SIGTERM (the completed chunks saved with partial=True and kept
+for ``--resume``). Errors are one line on stderr, never a traceback.
 """
 from __future__ import annotations
 
 import argparse
+import shlex
+import signal
 import sys
 import time
 from pathlib import Path
@@ -31,17 +36,23 @@ def _parser():
     sub = ap.add_subparsers(dest="command", required=True)
     c = sub.add_parser("compile", help="generate (and build) the integrator module of a model")
     _add_options(c)
-    c.add_argument("-o", "--out", default="generated", help="output directory (default generated/)")
-    r = sub.add_parser("run", help="simulate the model's scene and save the recorded samples")
+    c.add_argument("-o", "--out", help="directory receiving <module>/ (default: none, the "
+                   "module stays in the build cache, whose path is printed)")
+    r = sub.add_parser("run", help="simulate the model's scene, save its records (.npz)")
     _add_options(r)
     r.add_argument("--out", help="output .npz file (default <model name>.npz)")
     r.add_argument("--h", type=float, help="override scene.h")
     r.add_argument("--steps", type=int, help="override scene.steps")
     r.add_argument("--chunk", type=int, default=1_000_000,
-                   help="steps per C call; memory holds one chunk's records (default 10^6)")
+                   help="steps per C call; memory holds one chunk's records, each completed "
+                   "chunk is kept on disk in <out>.partial/ until the run ends (default 10^6)")
+    r.add_argument("--resume", action="store_true",
+                   help="continue the interrupted run kept in <out>.partial/ (the final file "
+                   "equals that of an uninterrupted run); without one, start a new run")
     r.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     sub.add_parser("list", help="groups, tableaus and chart maps")
-    k = sub.add_parser("check", help="observed order, energy, momentum map, group and "
+    k = sub.add_parser("check", help="order, energy, momentum, group, symplecticity checks",
+                       description="observed order, energy, momentum map, group and "
                        "symplecticity defects of an integrator on the model's scene",
                        epilog="exit status 3 when a structure check fails")
     _add_options(k)
@@ -71,51 +82,168 @@ def cmd_compile(args) -> int:
     from .api import build_module
     t0 = time.perf_counter()
     path = build_module(args.model, _options(args, out=args.out))
-    print(f"{path} ({args.backend} backend, {time.perf_counter() - t0:.2f} s)")
+    where = "" if args.out else " (in the build cache; -o DIR writes the module there)"
+    print(f"{path}{where} ({args.backend} backend, {time.perf_counter() - t0:.2f} s)")
+    print(_scheme_line(path, args))
     return 0
+
+
+def _load_model(file):
+    from .api import read_model_text
+    from .model import load_model_text
+    return load_model_text(read_model_text(file), filename=file)
+
+
+def _scheme_line(module_dir, args) -> str:
+    """The scheme a compile used (meta.json options) and where each part came from: an
+    option, the model's ``integrator:`` section, or hpgen's default (the model file's YAML
+    only is read: a cache hit imports no compile-time stack)."""
+    import json
+    from .api import read_model_text
+    from .model.yamldoc import compose_document
+    o = json.loads((Path(module_dir) / "meta.json").read_text())["options"]
+    section = compose_document(read_model_text(args.model), args.model).data.get("integrator")
+    section = section if isinstance(section, dict) else {}
+    parts = ("tableau", "tau", "rkmk")
+    given = [f"--{k}" for k in parts if getattr(args, k) is not None]
+    model = [k for k in parts if getattr(args, k) is None and k in section]
+    default = [k for k in parts if getattr(args, k) is None and k not in section]
+    src = ([f"{', '.join(given)} given"] if given else []) + \
+        ([f"{', '.join(model)} from the model's integrator:"] if model else []) + \
+        ([f"{', '.join(default)}: hpgen's default"] if default else [])
+    return (f"scheme: tableau {o['tableau']}, tau {o['tau']}, rkmk {o['rkmk']} "
+            f"({'; '.join(src)})")
 
 
 def cmd_run(args) -> int:
     from .api import build_module
     from .runtime import load
     from .runtime.recorder import record_to_npz
-    from .model import load_model_text
-    from .api import read_model_text
 
-    text = read_model_text(args.model)
-    model = load_model_text(text, filename=args.model)
+    model = _load_model(args.model)
     if model.scene is None:
         raise ModelError("the model has no scene section to run", file=args.model, field="scene")
     sc = model.scene
     h = sc.h if args.h is None else args.h
     steps = sc.steps if args.steps is None else args.steps
-    integ = load(build_module(args.model, _options(args)), backend=args.backend)
+    module_dir = build_module(args.model, _options(args))
+    integ = load(module_dir, backend=args.backend)
+    print(_scheme_line(module_dir, args))
     out = Path(args.out or f"{model.name}.npz")
     if getattr(sc, "section", None) is not None:
         return _run_sections(integ, model, sc, h, steps, out, args)
+    directions = None
+    if "momentum" in integ.record_names:
+        from .analysis.symmetry import conserved_directions
+        directions = conserved_directions(model)
     t0 = time.perf_counter()
     try:
-        path, summary = record_to_npz(integ, out, g0=sc.g0, h=h, steps=steps,
-                                      xi0=sc.xi0, mu0=sc.mu0, every=sc.every, chunk=args.chunk,
-                                      progress=False if args.no_progress else None)
+        with _sigterm_raises():
+            path, summary = record_to_npz(integ, out, g0=sc.g0, h=h, steps=steps, xi0=sc.xi0,
+                                          mu0=sc.mu0, every=sc.every, chunk=args.chunk,
+                                          resume=args.resume, resume_hint=_resume_command(args),
+                                          directions=directions,
+                                          progress=False if args.no_progress else None)
     except ConvergenceError as e:
-        saved = getattr(e, "saved", None)
-        if saved is not None and saved[1]:
-            raise type(e)(f"{e.reason}; the {saved[1]} samples before the failure were saved "
-                          f"to {saved[0]} with partial=True", step=e.step, time=e.time,
-                          residual=e.residual, iterations=e.iterations,
-                          partial=e.partial) from None
-        raise
+        return _failed(e, "samples")
     wall = time.perf_counter() - t0
-    print(f"{model.name}: {steps} steps of h = {h:g} in {wall:.3f} s "
-          f"({wall / max(steps, 1) * 1e6:.2f} us/step, {args.backend}); "
+    for old in summary["removed"]:
+        print(f"removed {old}/: the memory maps of a run of {out} killed under an older hpgen "
+              "(not resumable)")
+    ran = steps - summary["resumed_at"]
+    resumed = (f" (resumed at step {summary['resumed_at']})" if summary["resumed_at"] else "")
+    print(f"{model.name}: {ran} steps of h = {h:g} in {wall:.3f} s "
+          f"({wall / max(ran, 1) * 1e6:.2f} us/step, {args.backend}){resumed}; "
           f"{summary['samples']} samples -> {path}")
     if summary["energy_max_change"] is not None:
         print(f"  energy error max |E - E0| = {float(summary['energy_max_change']):.3e}")
     if summary["momentum_max_change"] is not None:
-        print("  spatial momentum Ad*_{g^-1} p, max change per component: "
-              + " ".join(f"{v:.2e}" for v in summary["momentum_max_change"]))
+        print(_momentum_line(model, summary["momentum_max_change"], directions,
+                             summary["conserved_max_change"]))
     return 0
+
+
+def _momentum_line(model, change, directions, conserved_change) -> str:
+    """Only the spatial momenta the Lagrangian's symmetry conserves are conservation
+    figures (hpgen.analysis.symmetry decides them from the model)."""
+    from .analysis.symmetry import describe
+    head = "  spatial momentum J = Ad*_{g^-1} p"
+    if not len(directions):
+        return (f"{head}: nothing conserved (l is invariant under no left translation); "
+                "no conservation figure")
+    if len(directions) == len(change):
+        return (f"{head}, conserved (l is left-invariant), max change per component: "
+                + " ".join(f"{v:.2e}" for v in change))
+    return (f"{head}: l's symmetry conserves only "
+            + ", ".join(f"{q} (max change {v:.2e})"
+                        for q, v in zip(describe(directions), conserved_change)))
+
+
+def _failed(e, what: str) -> int:
+    """A failed step: its one line, with where the samples before it were saved."""
+    saved = getattr(e, "saved", None)
+    note = (f"; the {saved[1]} {what} before the failure were saved to {saved[0]} with "
+            "partial=True" if saved and saved[1] else "")
+    print(f"hpgen: error: {e}{note}", file=sys.stderr)
+    return 1
+
+
+class _Terminated(KeyboardInterrupt):
+    """SIGTERM (what ``timeout`` and job schedulers send), raised like SIGINT's
+    KeyboardInterrupt so that ``hpgen run`` saves its completed chunks."""
+    signum = signal.SIGTERM
+
+
+class _sigterm_raises:
+    """Within: the first SIGTERM raises _Terminated, later ones are ignored (the save in
+    progress completes); the previous handler is restored on exit. Main thread only."""
+
+    def __enter__(self):
+        import threading
+        self.old = None
+        if threading.current_thread() is threading.main_thread():
+            self.old = signal.signal(signal.SIGTERM, self._raise)
+        return self
+
+    def __exit__(self, *exc):
+        if self.old is not None:
+            signal.signal(signal.SIGTERM, self.old)
+        return False
+
+    @staticmethod
+    def _raise(signum, frame):
+        signal.signal(signal.SIGTERM, signal.SIG_IGN)
+        raise _Terminated()
+
+
+def _resume_command(args) -> str:
+    argv = list(getattr(args, "argv", None) or [])
+    return shlex.join(["hpgen", *argv, *([] if "--resume" in argv else ["--resume"])])
+
+
+def _interrupted(e) -> int:
+    """One line for an interrupted command: what was saved and how to resume; 128 + signal."""
+    signum = getattr(e, "signum", signal.SIGINT)
+    line = f"hpgen: interrupted by {signal.Signals(signum).name}"
+    saved = getattr(e, "saved", None)
+    if saved is not None:
+        path, samples, k, parts = saved
+        if path is None:
+            line += "; no chunk had completed, nothing was saved"
+        else:
+            line += (f" after {k} steps; the {samples} samples of the completed chunks were "
+                     f"saved to {path} with partial=True, and kept in {parts}/ for "
+                     f"--resume: {_resume_hint(parts)}")
+    print(line, file=sys.stderr)
+    return 128 + signum
+
+
+def _resume_hint(parts) -> str:
+    import json
+    try:
+        return json.loads((Path(parts) / "manifest.json").read_text())["resume"]
+    except (OSError, ValueError, KeyError):
+        return "run the same command with --resume"
 
 
 def _run_sections(integ, model, sc, h, steps, out, args) -> int:
@@ -130,16 +258,16 @@ def _run_sections(integ, model, sc, h, steps, out, args) -> int:
     t0 = time.perf_counter()
     path = npz_path(out)
     try:
-        cr = integ.sections(g0=sc.g0, h=h, steps=steps, xi0=sc.xi0, mu0=sc.mu0,
-                            chunk=args.chunk)
+        with _sigterm_raises():
+            cr = integ.sections(g0=sc.g0, h=h, steps=steps, xi0=sc.xi0, mu0=sc.mu0,
+                                chunk=args.chunk)
     except ConvergenceError as e:
         cr = e.partial
         if cr is None:
             raise
         save(cr, e)
-        raise type(e)(f"{e.reason}; the {len(cr)} section crossings before the failure were "
-                      f"saved to {path} with partial=True", step=e.step, time=e.time,
-                      residual=e.residual, iterations=e.iterations, partial=cr) from None
+        e.saved = (path, len(cr))
+        return _failed(e, "section crossings")
     wall = time.perf_counter() - t0
     save(cr, None)
     print(f"{model.name}: {steps} steps of h = {h:g} in {wall:.3f} s "
@@ -184,7 +312,9 @@ def cmd_list(args) -> int:
 
 
 def main(argv=None) -> int:
+    argv = sys.argv[1:] if argv is None else [str(a) for a in argv]
     args = _parser().parse_args(argv)
+    args.argv = argv
     try:
         if args.command == "bench":
             from .bench.cli import cmd_bench
@@ -200,9 +330,8 @@ def main(argv=None) -> int:
     except HpgenError as e:
         print(f"hpgen: error: {e}", file=sys.stderr)
         return 1
-    except KeyboardInterrupt:
-        print("hpgen: interrupted", file=sys.stderr)
-        return 130
+    except KeyboardInterrupt as e:
+        return _interrupted(e)
 
 
 if __name__ == "__main__":

@@ -11,7 +11,8 @@ import sys
 
 def add_parser(sub):
     """Add ``bench`` to hpgen's subparsers."""
-    b = sub.add_parser("bench", help="work-precision benchmark of hpgen schemes against "
+    b = sub.add_parser("bench", help="work-precision benchmark against SciPy, CasADi, RK4",
+                       description="work-precision benchmark of hpgen schemes against "
                        "SciPy, CasADi and RK4 (NumPy and C) on the model's scene")
     b.add_argument("model", help="model file with a scene")
     b.add_argument("--T", help="horizon (default scene steps * h)")

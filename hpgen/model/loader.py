@@ -15,6 +15,7 @@ from __future__ import annotations
 import keyword
 import os
 import re
+import stat
 
 from ..errors import ModelError
 from ..schemes import RKMK, TAU
@@ -215,16 +216,49 @@ def load_model_text(text, filename: str = "<string>") -> Model:
         raise ModelError(f"numeric overflow while reading the model: {e}", file=file) from None
 
 
-def load_model(path) -> Model:
-    """Read and validate a model file (at most 2 MB of UTF-8 YAML)."""
+def read_model_bytes(path) -> bytes:
+    """The bytes of a model file: a regular file (after symlinks) of at most MAX_FILE_BYTES.
+    A device (/dev/zero), FIFO, socket or directory is refused before anything is read (a
+    FIFO is opened non-blocking, so it never hangs); at most MAX_FILE_BYTES + 1 bytes are
+    read, so a file that grows while it is read cannot exhaust memory."""
     file = os.fspath(path)
+    limit = f"limit {MAX_FILE_BYTES // 1024 // 1024} MB"
     try:
-        size = os.path.getsize(file)
-        if size > MAX_FILE_BYTES:
-            raise ModelError(f"the model file is too large ({size} bytes; limit "
-                             f"{MAX_FILE_BYTES // 1024 // 1024} MB)", file=file)
-        with open(file, "rb") as fh:
-            data = fh.read(MAX_FILE_BYTES + 1)
+        fd = os.open(file, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
     except OSError as e:
-        raise ModelError(f"cannot read the model file: {e.strerror or e}", file=file) from None
-    return load_model_text(data, filename=file)
+        raise ModelError(f"cannot read the model file ({e.strerror or e})", file=file) from None
+    try:
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            raise ModelError(f"expected a regular file, got {_file_kind(st.st_mode)}", file=file)
+        if st.st_size > MAX_FILE_BYTES:
+            raise ModelError(f"the model file is too large ({st.st_size} bytes; {limit})",
+                             file=file)
+        chunks, size = [], 0
+        while size <= MAX_FILE_BYTES:
+            block = os.read(fd, MAX_FILE_BYTES + 1 - size)
+            if not block:
+                break
+            chunks.append(block)
+            size += len(block)
+    except OSError as e:
+        raise ModelError(f"cannot read the model file ({e.strerror or e})", file=file) from None
+    finally:
+        os.close(fd)
+    if size > MAX_FILE_BYTES:
+        raise ModelError(f"the model file is too large ({limit})", file=file)
+    return b"".join(chunks)
+
+
+def _file_kind(mode) -> str:
+    for test, name in ((stat.S_ISDIR, "a directory"), (stat.S_ISCHR, "a character device"),
+                       (stat.S_ISBLK, "a block device"), (stat.S_ISFIFO, "a FIFO (named pipe)"),
+                       (stat.S_ISSOCK, "a socket")):
+        if test(mode):
+            return name
+    return "a special file"
+
+
+def load_model(path) -> Model:
+    """Read and validate a model file (at most 2 MB of UTF-8 YAML; read_model_bytes)."""
+    return load_model_text(read_model_bytes(path), filename=os.fspath(path))

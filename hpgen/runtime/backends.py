@@ -89,6 +89,17 @@ class PythonBackend(_Backend):
     def call(self, name, *args):
         return self._kernels[name](*args)
 
+    def steps_done(self, run) -> int:
+        return run.k
+
+    def snapshot(self, run) -> dict:
+        """A run's whole state as arrays (a checkpoint; restore continues it bitwise)."""
+        return run.to_arrays()
+
+    def restore(self, state: dict):
+        """The run a snapshot holds."""
+        return loop.Run.from_arrays(state)
+
     def _lists(self, g, p, z):
         nn, d = self.n * self.n, self.d
         return (_flat(g, nn, "g").tolist(), _flat(p, d, "p").tolist(),

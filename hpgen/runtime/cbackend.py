@@ -160,6 +160,24 @@ class CBackend(_Backend):
         st = self._staging(_RUN)
         return int(self._lib.hpgen_run_get(run, *st.ptrs[3:]))
 
+    def steps_done(self, run) -> int:
+        return self._run_k(run)
+
+    def snapshot(self, run) -> dict:
+        """A run's whole state (the bytes of its C ``hpgen_run``: state, Newton start and
+        memory, steps done) as a uint8 array; restore continues it bitwise."""
+        return {"run": np.frombuffer(run.raw, dtype=np.uint8).copy()}
+
+    def restore(self, state: dict):
+        """The run a snapshot of this library holds (same hash, same run_size)."""
+        raw = np.asarray(state["run"], dtype=np.uint8)
+        if raw.shape != (self.run_size,):
+            raise ValueError(f"a run snapshot of {raw.size} bytes; this library's runs are "
+                             f"{self.run_size} bytes")
+        run = ctypes.create_string_buffer(self.run_size)
+        ctypes.memmove(run, raw.tobytes(), self.run_size)
+        return run
+
     def call(self, name, *args):
         # arguments copied into this thread's fixed buffers of the kernel (their addresses
         # made once), outputs zeroed before and copied out after the call

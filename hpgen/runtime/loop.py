@@ -6,6 +6,8 @@ hpgen.runtime.newton). One step is newton.step_lists. numpy and the standard lib
 """
 from __future__ import annotations
 
+import numpy as np
+
 from ..abi import (NONFINITE, OK, RECORD, ROUNDOFF_FLOOR, STATUS_FIELDS, VELOCITY_MAXIT,
                    VELOCITY_TOL)
 from .newton import (_INF, _NAN, Kernels, NewtonMemory, NewtonOptions, _floats, _isfinite,
@@ -25,6 +27,36 @@ class Run:
         self.k = 0
         self.s = None            # section(g_k, p_k) once evaluated (advance_sections)
         self.g_stale = False     # g is g_0, not g_k (advance_record without g)
+
+    def to_arrays(self) -> dict:
+        """Every field as float64 / int64 arrays (a checkpoint: from_arrays of them continues
+        bitwise as this run would). The kept J^{-1} is a tuple of floats (printed solver) or
+        an (nz, nz) array (numpy solver); its dimension tells which."""
+        lu, opt = self.memory.lu, (self.zprev, self.zprev2, self.s)
+        flags = [self.k, self.have_prev, int(self.g_stale), -1 if lu is None else np.ndim(lu)]
+        flags += [int(v is not None) for v in opt]
+        return {"g": np.array(self.g, dtype=np.float64), "p": np.array(self.p, dtype=np.float64),
+                "z": np.array(self.z, dtype=np.float64),
+                "zprev": np.array(self.zprev or [], dtype=np.float64),
+                "zprev2": np.array(self.zprev2 or [], dtype=np.float64),
+                "s": np.array([self.s or 0.0], dtype=np.float64),
+                "lu": np.array([] if lu is None else lu, dtype=np.float64),
+                "flags": np.array(flags, dtype=np.int64)}
+
+    @classmethod
+    def from_arrays(cls, a: dict) -> "Run":
+        """The run to_arrays saved (Python floats again: bitwise the same values)."""
+        k, have_prev, g_stale, lu_dim, has_zprev, has_zprev2, has_s = (
+            int(v) for v in a["flags"])
+        run = cls(a["g"].tolist(), a["p"].tolist(), a["z"].tolist())
+        run.zprev = a["zprev"].tolist() if has_zprev else None
+        run.zprev2 = a["zprev2"].tolist() if has_zprev2 else None
+        run.s = float(a["s"][0]) if has_s else None
+        run.k, run.have_prev, run.g_stale = k, have_prev, bool(g_stale)
+        lu = a["lu"]
+        run.memory.lu = None if lu_dim < 0 else (np.array(lu) if lu_dim == 2
+                                                 else tuple(lu.tolist()))
+        return run
 
 
 def new_status() -> dict:

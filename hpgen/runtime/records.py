@@ -88,8 +88,10 @@ def _not_finite(row, layout) -> list:
             if not np.isfinite(row[off:off + int(np.prod(shape))]).all()]
 
 
-def make_records(integ, rows, st, h, every, t0) -> Records:
-    """Records of flat rows starting at time t0; error set (partial) when st failed."""
+def make_records(integ, rows, st, h, every, first=0) -> Records:
+    """Records of flat rows, the first of them record number ``first`` (t = j every h for
+    record j, computed so: a chunk's t is bitwise the whole run's); error set (partial)
+    when st failed."""
     layout = integ.meta["record"]
     err = None
     if st["code"] == abi.RECORD:
@@ -100,7 +102,7 @@ def make_records(integ, rows, st, h, every, t0) -> Records:
                           time=float(st["step"]) * h, names=bad)
     elif st["code"] != abi.OK:
         err = _error(st["code"], st["step"], st["step"] * h, st["residual"], st["iterations"])
-    rec = Records(t=t0 + np.arange(len(rows)) * every * h,
+    rec = Records(t=(first + np.arange(len(rows))) * every * h,
                   arrays=split_rows(rows, layout, integ.n), h=h, every=every,
                   partial=err is not None, error=err,
                   newton_iterations=int(st["total_iterations"]), jacobians=int(st["jacobians"]),
@@ -110,23 +112,28 @@ def make_records(integ, rows, st, h, every, t0) -> Records:
     return rec
 
 
-def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts):
+def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts, run=None):
     """Yield Records per chunk of at most ``chunk`` steps (the first starts with record 0,
-    the initial state); raises the chunk's error (with .partial) on a failure."""
-    code, row0 = backend.record(gf, mu0)
-    if code != abi.OK:
-        rec = make_records(integ, row0.reshape(1, -1), {**loop.new_status(), "code": code},
-                           h, every, 0.0)
-        raise rec.error
-    run = backend.start(gf, mu0, z0)
-    k, first = 0, True
+    the initial state); raises the chunk's error (with .partial) on a failure. ``run``: the
+    run to advance (default a new one at gf, mu0, z0); one restored from a snapshot
+    (``backend.restore``) after k > 0 steps continues at step k without record 0, bitwise as
+    the uninterrupted run (hpgen.runtime.recorder's resume)."""
+    if run is None:
+        run = backend.start(gf, mu0, z0)
+    k = backend.steps_done(run)
+    first = k == 0
+    if first:
+        code, row0 = backend.record(gf, mu0)
+        if code != abi.OK:
+            rec = make_records(integ, row0.reshape(1, -1), {**loop.new_status(), "code": code},
+                               h, every, 0)
+            raise rec.error
     while first or k < steps:
         todo = min(chunk, steps - k)
         done, rows, st = backend.advance_record(run, h, todo, every, opts)
         if first:
             rows = np.concatenate([row0.reshape(1, -1), rows])
-        t0 = (k // every + (0 if first else 1)) * every * h
-        rec = make_records(integ, rows, st, h, every, t0)
+        rec = make_records(integ, rows, st, h, every, k // every + (0 if first else 1))
         if rec.error is not None:
             raise rec.error
         yield rec
@@ -176,5 +183,5 @@ class RecordsMixin:
         with progress_bar(len(gs), "record_batch", "member", progress) as bar:
             rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps, every, opts,
                                                      threads, bar)
-        return [make_records(self, rows[b, :n_rows[b]], sts[b], h, every, 0.0)
+        return [make_records(self, rows[b, :n_rows[b]], sts[b], h, every, 0)
                 for b in range(len(gs))]

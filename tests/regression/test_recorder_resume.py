@@ -1,0 +1,76 @@
+"""record_to_npz interrupted after some chunks and resumed (hpgen.runtime.recorder), in
+process, for the backends' run snapshots: C (the hpgen_run bytes), Python with the printed
+linear solver (J^{-1} kept as a tuple) and with the numpy solver (nz > 12: an array). The
+resumed file's arrays equal the uninterrupted run's bitwise, Newton counts included."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from conftest import EXAMPLES
+from hpgen import compile as hpgen_compile
+from hpgen.model import load_model
+from hpgen.runtime.recorder import load_partial, partial_dir, record_to_npz
+
+CASES = [("heavy_top", "gauss2", "exp", "c", 240), ("heavy_top", "gauss2", "exp", "python", 120),
+         ("underwater_vehicle", "gauss2", "cay", "python", 40)]
+CHUNK = 10
+
+
+@pytest.mark.parametrize("example, tableau, tau, backend, steps", CASES)
+def test_interrupted_then_resumed_equals_uninterrupted(cache_dir, tmp_path, example, tableau,
+                                                       tau, backend, steps):
+    path = EXAMPLES / f"{example}.yaml"
+    integ = hpgen_compile(path, tableau=tableau, tau=tau, rkmk="exact", backend=backend,
+                          cache_dir=cache_dir)
+    sc = load_model(path).scene
+    kw = dict(g0=sc.g0, h=sc.h, steps=steps, xi0=sc.xi0, mu0=sc.mu0, every=sc.every // 2 or 1,
+              chunk=CHUNK)
+    ref_path, ref_summary = record_to_npz(integ, tmp_path / "ref", **kw)
+
+    advance, calls = integ._b.advance_record, []
+
+    def interrupted(*a, **k):        # the 4th chunk is interrupted: 3 are committed
+        calls.append(1)
+        if len(calls) == 4:
+            raise KeyboardInterrupt
+        return advance(*a, **k)
+    integ._b.advance_record = interrupted
+    try:
+        with pytest.raises(KeyboardInterrupt) as info:
+            record_to_npz(integ, tmp_path / "run", **kw)
+    finally:
+        del integ._b.advance_record
+    saved, samples, k, parts = info.value.saved
+    assert k == 3 * CHUNK and parts == partial_dir(tmp_path / "run.npz")
+    with np.load(saved) as f, np.load(ref_path) as r:
+        assert bool(f["partial"]) and len(f["t"]) == samples
+        for key in ("t", *integ.record_names):
+            assert np.array_equal(f[key], r[key][:samples]), key
+        assert np.array_equal(load_partial(saved)["t"], r["t"][:samples])
+
+    path2, summary = record_to_npz(integ, tmp_path / "run", resume=True, **kw)
+    assert summary["resumed_at"] == 3 * CHUNK and summary["steps"] == steps
+    with np.load(path2) as f, np.load(ref_path) as r:
+        assert sorted(f.files) == sorted(r.files)
+        for key in r.files:
+            assert np.array_equal(f[key], r[key]), key
+    for key in ("samples", "energy_max_change", "momentum_max_change"):
+        assert np.array_equal(summary[key], ref_summary[key]), key
+    assert not parts.exists()
+
+
+def test_an_older_hpgen_leftover_is_removed_and_named(cache_dir, tmp_path):
+    # hpgen <= 0.1 left a hidden folder of preallocated memory maps per killed run
+    old = tmp_path / ".run.npz.t_x1y2"
+    old.mkdir()
+    np.lib.format.open_memmap(old / "g.npy", mode="w+", dtype=np.float64, shape=(1000, 3, 3))
+    keep = tmp_path / ".other.npz.t_x1y2"        # another output's: not touched
+    keep.mkdir()
+    path = EXAMPLES / "free_rigid_body.yaml"
+    integ = hpgen_compile(path, cache_dir=cache_dir)
+    sc = load_model(path).scene
+    out, summary = record_to_npz(integ, tmp_path / "run.npz", g0=sc.g0, h=sc.h, steps=20,
+                                 xi0=sc.xi0, mu0=sc.mu0, chunk=7)
+    assert summary["removed"] == [old] and not old.exists() and keep.is_dir()
+    assert sorted(p.name for p in tmp_path.iterdir()) == [".other.npz.t_x1y2", "run.npz"]
