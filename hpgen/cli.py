@@ -1,4 +1,4 @@
-"""hpgen: compile a model's variational integrator, run, sweep, check and benchmark it.
+"""hpgen: compile, run, sweep, check and benchmark variational integrators.
 
 Exit status: 0 success; 2 bad input (ModelError; usage errors); 1 any other hpgen failure
 (BuildError; a failed step of ``hpgen run``: ConvergenceError, DomainError, RecordError, the

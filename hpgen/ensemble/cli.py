@@ -17,7 +17,8 @@ from pathlib import Path
 
 def add_parser(sub, add_options):
     """Add ``sweep`` to hpgen's subparsers (``add_options``: the shared compile options)."""
-    s = sub.add_parser("sweep", help="run many members (initial states, steps) of the model "
+    s = sub.add_parser("sweep", help="many members on local threads or a Dask cluster",
+                       description="run many members (initial states, steps) of the model "
                        "on local threads or a Dask cluster; save member x time arrays")
     add_options(s)
     s.add_argument("--grid", required=True, help="grid file (YAML: xi0 or mu0 per member, "
