@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 560d6e20b2d60b57698adad8810fee8df8c04bdac0f57d64bc255967dbd47d62
+# content hash: 599173fac7b8d7fa15851f9fcdf8eaef190635b447e041a9ebef53b699f1def4
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "560d6e20b2d60b57698adad8810fee8df8c04bdac0f57d64bc255967dbd47d62"
+HASH = "599173fac7b8d7fa15851f9fcdf8eaef190635b447e041a9ebef53b699f1def4"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 560d6e20b2d60b57698adad8810fee8df8c04bdac0f57d64bc255967dbd47d62
+# content hash: 599173fac7b8d7fa15851f9fcdf8eaef190635b447e041a9ebef53b699f1def4
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

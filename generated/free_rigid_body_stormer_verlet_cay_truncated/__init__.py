@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 48f10250fc05b96a47616ed22d76ced3b99aee97b6b2450eef2551674e706a15
+# content hash: 80550e9880f07bdf866c7d3e011cfb9202391e5db8d864676795628e3250e6e6
 """hpgen integrator free_rigid_body_stormer_verlet_cay_truncated for the model free_rigid_body.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "free_rigid_body_stormer_verlet_cay_truncated"
-HASH = "48f10250fc05b96a47616ed22d76ced3b99aee97b6b2450eef2551674e706a15"
+HASH = "80550e9880f07bdf866c7d3e011cfb9202391e5db8d864676795628e3250e6e6"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 48f10250fc05b96a47616ed22d76ced3b99aee97b6b2450eef2551674e706a15
+# content hash: 80550e9880f07bdf866c7d3e011cfb9202391e5db8d864676795628e3250e6e6
 """Python backend of the hpgen module free_rigid_body_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

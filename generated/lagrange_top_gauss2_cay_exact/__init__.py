@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 97f727448207c4be0324177ede4645904adc14d170e05b403a771dd156293e6d
+# content hash: 056c9410979f521869e1e6de4f20e26874590a1ab60c00a820b048ca492e58c9
 """hpgen integrator lagrange_top_gauss2_cay_exact for the model lagrange_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "lagrange_top_gauss2_cay_exact"
-HASH = "97f727448207c4be0324177ede4645904adc14d170e05b403a771dd156293e6d"
+HASH = "056c9410979f521869e1e6de4f20e26874590a1ab60c00a820b048ca492e58c9"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 0905dff342f7b81cfe8e556a78e502656f643979ec0cbfbc2033bf51c23cfda5
+# content hash: acdbea9eb179b577f97dde49e13e9c1209ba7496980e0c18be05e94c551c196e
 """hpgen integrator turntable_stormer_verlet_cay_truncated for the model turntable.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "turntable_stormer_verlet_cay_truncated"
-HASH = "0905dff342f7b81cfe8e556a78e502656f643979ec0cbfbc2033bf51c23cfda5"
+HASH = "acdbea9eb179b577f97dde49e13e9c1209ba7496980e0c18be05e94c551c196e"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}
