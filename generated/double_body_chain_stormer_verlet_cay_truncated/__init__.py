@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 599173fac7b8d7fa15851f9fcdf8eaef190635b447e041a9ebef53b699f1def4
+# content hash: ca6c6bd808e3c03e1a69d10c21fd59db6f6781cada465d61b48b58acc1ee5aa3
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "599173fac7b8d7fa15851f9fcdf8eaef190635b447e041a9ebef53b699f1def4"
+HASH = "ca6c6bd808e3c03e1a69d10c21fd59db6f6781cada465d61b48b58acc1ee5aa3"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: free_rigid_body
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 80550e9880f07bdf866c7d3e011cfb9202391e5db8d864676795628e3250e6e6
+ * content hash: c8a02b050bc8ae8d49b97b99cbc853497553e1ce7afc7ffd121d2127ec845fa2
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -2554,7 +2554,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "80550e9880f07bdf866c7d3e011cfb9202391e5db8d864676795628e3250e6e6"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "c8a02b050bc8ae8d49b97b99cbc853497553e1ce7afc7ffd121d2127ec845fa2"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 056c9410979f521869e1e6de4f20e26874590a1ab60c00a820b048ca492e58c9
+# content hash: c6330f5e69d0b57e12489e1e49d5a9174bde4402e8569fd09cd925f43b19589f
 """Python backend of the hpgen module lagrange_top_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

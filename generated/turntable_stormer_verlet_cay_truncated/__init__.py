@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: acdbea9eb179b577f97dde49e13e9c1209ba7496980e0c18be05e94c551c196e
+# content hash: 83a229a4d8fe2b1a9fa571a10c799defa4151d78930208623108ff77ca241b11
 """hpgen integrator turntable_stormer_verlet_cay_truncated for the model turntable.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "turntable_stormer_verlet_cay_truncated"
-HASH = "acdbea9eb179b577f97dde49e13e9c1209ba7496980e0c18be05e94c551c196e"
+HASH = "83a229a4d8fe2b1a9fa571a10c799defa4151d78930208623108ff77ca241b11"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

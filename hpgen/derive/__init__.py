@@ -5,6 +5,12 @@
 tableau: a hpgen.tableaus.ButcherTableau; tau: a chart map the model's group supports; rkmk:
 an RKMK constraint (both registered in hpgen.schemes). A left-invariant Lagrangian (no g in
 l) gives the reduced Euler-Poincare step, whose unknowns live in the algebra only.
+
+An open model (Model.open_system: forces, control inputs, runtime parameters or t) appends
+the inputs t[1] (t_k, the step's start time), u[m] (the control inputs, constant over the
+step) and params[P] (the runtime parameters, Model.runtime_symbols order) to every kernel
+that evaluates l or the forces (see hpgen.derive.step.OPEN_INPUTS); a closed model derives
+exactly the conservative kernels (zero forces included).
 """
 from __future__ import annotations
 
@@ -12,11 +18,15 @@ import casadi as ca
 
 from ..schemes import RKMK
 from .action import step_equations
-from .lagrangian import lagrangian_function, to_casadi
+from .lagrangian import lagrangian_function, open_functions, to_casadi
 from .records import record_row, velocity_step
-from .step import KERNEL_NAMES, DiscreteStep, Kernel
+from .step import KERNEL_NAMES, OPEN_INPUTS, DiscreteStep, Kernel
 
-__all__ = ["derive", "DiscreteStep", "Kernel", "KERNEL_NAMES"]
+__all__ = ["derive", "DiscreteStep", "Kernel", "KERNEL_NAMES", "OPEN_INPUTS"]
+
+#: the kernels that take (t, u, params) for an open model: every one that evaluates l or f
+OPEN_KERNELS = ("residual", "jacobian", "residual_jacobian", "update", "guess", "legendre",
+                "hessian", "energy", "observe", "update_p", "velocity_step", "record")
 
 
 def _flat(M):
@@ -42,12 +52,27 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     group.require_chart(tau)
     RKMK.check(rkmk, field="integrator.rkmk")
     n, d = group.n, group.d
-    lag = lagrangian_function(model)
-    reduced = model.left_invariant
     g = ca.SX.sym("g", n, n)
     p = ca.SX.sym("p", d)
     h = ca.SX.sym("h", 1)
-    eqs = step_equations(group, lag, tableau, tau, rkmk, reduced, g, p, h)
+    is_open = model.open_system
+    if is_open:
+        t = ca.SX.sym("t", 1)
+        u = ca.SX.sym("u", len(model.inputs))
+        P = ca.SX.sym("params", len(model.runtime_symbols))
+        lag_f, force_f = open_functions(model)
+        lag_t = lambda G, X, tt: lag_f(G, X, tt, P)  # noqa: E731
+        lag = lambda G, X: lag_f(G, X, t, P)  # noqa: E731  (at t_k: records, energy)
+        force = (lambda G, X, tt: force_f(G, X, tt, u, P)) if model.forced else None
+        reduced = model.left_invariant and not model.forced and not model.time_dependent
+        eqs = step_equations(group, lag_t, tableau, tau, rkmk, reduced, g, p, h, t, force)
+        extra = [("t", t), ("u", u), ("params", P)]
+    else:
+        lag = lagrangian_function(model)
+        reduced = model.left_invariant
+        eqs = step_equations(group, lag, tableau, tau, rkmk, reduced, g, p, h)
+        extra = []
+    assert tuple(nm for nm, _ in extra) in ((), OPEN_INPUTS)
     z = eqs.z
     nz = z.numel()
     gf = _flat(g)
@@ -60,6 +85,8 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     hess = ca.jacobian(mu, xi)
 
     def kernel(name, inputs, outputs):
+        if extra and name in OPEN_KERNELS:
+            inputs = list(inputs) + extra
         names_in = tuple(nm for nm, _ in inputs)
         names_out = tuple(nm for nm, _ in outputs)
         outs = ca.cse([ca.densify(to_mat(e)) for _, e in outputs])  # merge repeated subtrees
@@ -109,5 +136,6 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
         tableau_name=tableau.name, tableau_order=tableau.order, tau=tau, rkmk=rkmk,
         reduced=reduced, unknowns=eqs.blocks, kernels=kernels,
         section=getattr(getattr(getattr(model, "scene", None), "section", None), "text", None),
+        open_inputs=(len(model.inputs), len(model.runtime_symbols)) if is_open else None,
         legendre_quadratic=quadratic, record_layout=layout, step_uses_g=step_uses_g,
         record_uses_g=bool(ca.depends_on(row, gf)), record_uses_xi=bool(ca.depends_on(row, xi)))

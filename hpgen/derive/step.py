@@ -18,6 +18,10 @@ from ..abi import KERNEL_NAMES
 __all__ = ["KERNEL_NAMES", "Kernel", "DiscreteStep"]
 
 
+#: the inputs an open model's kernels append (hpgen.derive.OPEN_KERNELS): t[1] the start
+#: time t_k of the step, u[m] the control inputs, params[P] the runtime parameters
+OPEN_INPUTS = ("t", "u", "params")
+
 
 @dataclass(frozen=True)
 class Kernel:
@@ -52,6 +56,7 @@ class DiscreteStep:
     step_uses_g: bool = True     # residual or update_p depend on g
     record_uses_g: bool = True   # the record row depends on g
     record_uses_xi: bool = True  # the record row depends on xi (velocity_step needed)
+    open_inputs: tuple | None = None   # (m, P) when the kernels take OPEN_INPUTS, else None
 
     @property
     def record_width(self) -> int:
