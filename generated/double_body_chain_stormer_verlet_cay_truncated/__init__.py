@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: ca6c6bd808e3c03e1a69d10c21fd59db6f6781cada465d61b48b58acc1ee5aa3
+# content hash: 9a3394bdf539cd260bf9eb79aaf02df0cfbc060bbcb2bdde45a61f94b705f067
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "ca6c6bd808e3c03e1a69d10c21fd59db6f6781cada465d61b48b58acc1ee5aa3"
+HASH = "9a3394bdf539cd260bf9eb79aaf02df0cfbc060bbcb2bdde45a61f94b705f067"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: c8a02b050bc8ae8d49b97b99cbc853497553e1ce7afc7ffd121d2127ec845fa2
+# content hash: c6137db177ee21bc8ec396be31e1594aa67a3e759941d10beafbfd8cc3737d5a
 """hpgen integrator free_rigid_body_stormer_verlet_cay_truncated for the model free_rigid_body.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "free_rigid_body_stormer_verlet_cay_truncated"
-HASH = "c8a02b050bc8ae8d49b97b99cbc853497553e1ce7afc7ffd121d2127ec845fa2"
+HASH = "c6137db177ee21bc8ec396be31e1594aa67a3e759941d10beafbfd8cc3737d5a"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

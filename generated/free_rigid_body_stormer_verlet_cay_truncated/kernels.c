@@ -3,7 +3,7 @@
  * model: free_rigid_body
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: c8a02b050bc8ae8d49b97b99cbc853497553e1ce7afc7ffd121d2127ec845fa2
+ * content hash: c6137db177ee21bc8ec396be31e1594aa67a3e759941d10beafbfd8cc3737d5a
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -2554,7 +2554,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "c8a02b050bc8ae8d49b97b99cbc853497553e1ce7afc7ffd121d2127ec845fa2"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "c6137db177ee21bc8ec396be31e1594aa67a3e759941d10beafbfd8cc3737d5a"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

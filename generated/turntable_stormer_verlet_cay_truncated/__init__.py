@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 83a229a4d8fe2b1a9fa571a10c799defa4151d78930208623108ff77ca241b11
+# content hash: e7374f7a747b5d089c59b065439ee3793c71c52db39275d1d4c715d3e068d776
 """hpgen integrator turntable_stormer_verlet_cay_truncated for the model turntable.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "turntable_stormer_verlet_cay_truncated"
-HASH = "83a229a4d8fe2b1a9fa571a10c799defa4151d78930208623108ff77ca241b11"
+HASH = "e7374f7a747b5d089c59b065439ee3793c71c52db39275d1d4c715d3e068d776"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

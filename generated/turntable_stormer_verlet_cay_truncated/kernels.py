@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 83a229a4d8fe2b1a9fa571a10c799defa4151d78930208623108ff77ca241b11
+# content hash: e7374f7a747b5d089c59b065439ee3793c71c52db39275d1d4c715d3e068d776
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

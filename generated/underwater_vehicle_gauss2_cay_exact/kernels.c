@@ -3,7 +3,7 @@
  * model: underwater_vehicle
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 9f96cdc3b19c00c07e3e9e6d1cf0d5b5896c14a31da28a43f6a24ac03800a9d7
+ * content hash: fe14940cf3ad8e9dc4dbd683918b8ee858cf33a6e99cfe4e995dced898dce3b7
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -20184,7 +20184,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "9f96cdc3b19c00c07e3e9e6d1cf0d5b5896c14a31da28a43f6a24ac03800a9d7"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "fe14940cf3ad8e9dc4dbd683918b8ee858cf33a6e99cfe4e995dced898dce3b7"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

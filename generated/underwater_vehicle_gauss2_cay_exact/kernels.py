@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 9f96cdc3b19c00c07e3e9e6d1cf0d5b5896c14a31da28a43f6a24ac03800a9d7
+# content hash: fe14940cf3ad8e9dc4dbd683918b8ee858cf33a6e99cfe4e995dced898dce3b7
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

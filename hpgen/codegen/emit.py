@@ -193,7 +193,21 @@ def meta(step, info: dict) -> dict:
             "record_uses_xi": bool(step.record_uses_xi),
             "unknowns": [[str(u[0]), int(u[1]), int(u[2])] for u in step.unknowns],
             "kernels": kernels,
-            "c_work": {k.name: work_sizes(k.function) for k in step.kernels}}
+            "c_work": {k.name: work_sizes(k.function) for k in step.kernels},
+            **_open_meta(step)}
+
+
+def _open_meta(step) -> dict:
+    """meta.json's "open" entry for an open model (absent for a closed one, whose meta.json
+    is unchanged): the step vector's content (hpgen.abi.step_vector_size)."""
+    spec = step.open_spec
+    if spec is None:
+        return {}
+    return {"open": {"H": spec.H, "inputs": list(spec.inputs),
+                     "runtime_parameters": [[name, [int(x) for x in shape]]
+                                            for name, shape in spec.runtime_parameters],
+                     "defaults": [float(v) for v in spec.defaults],
+                     "forced": bool(spec.forced), "time_dependent": bool(spec.time_dependent)}}
 
 
 def emit(step, info: dict) -> GeneratedModule:

@@ -6,11 +6,14 @@ tableau: a hpgen.tableaus.ButcherTableau; tau: a chart map the model's group sup
 an RKMK constraint (both registered in hpgen.schemes). A left-invariant Lagrangian (no g in
 l) gives the reduced Euler-Poincare step, whose unknowns live in the algebra only.
 
-An open model (Model.open_system: forces, control inputs, runtime parameters or t) appends
-the inputs t[1] (t_k, the step's start time), u[m] (the control inputs, constant over the
-step) and params[P] (the runtime parameters, Model.runtime_symbols order) to every kernel
-that evaluates l or the forces (see hpgen.derive.step.OPEN_INPUTS); a closed model derives
-exactly the conservative kernels (zero forces included).
+An open model (Model.open_system: forces, control inputs, runtime parameters or t) packs
+what a step needs besides (g, p) into its ``h`` input, the step vector
+hv = [h, t_k, u (m), params (P)] of size H = 2 + m + P (hpgen.abi.step_vector_size): t_k the
+step's start time, u the control inputs (constant over the step), params the runtime
+parameters (Model.runtime_symbols order). The kernels that evaluate l but take no h
+(hpgen.abi.OPEN_EXTRA: legendre, hessian, energy, observe, velocity_step, record) take hv
+as a last input (their t is t_k). A closed model derives exactly the conservative kernels
+(zero forces included), with H = 1.
 """
 from __future__ import annotations
 
@@ -20,13 +23,10 @@ from ..schemes import RKMK
 from .action import step_equations
 from .lagrangian import lagrangian_function, open_functions, to_casadi
 from .records import record_row, velocity_step
-from .step import KERNEL_NAMES, OPEN_INPUTS, DiscreteStep, Kernel
+from ..abi import OPEN_EXTRA
+from .step import KERNEL_NAMES, DiscreteStep, Kernel, OpenSpec
 
-__all__ = ["derive", "DiscreteStep", "Kernel", "KERNEL_NAMES", "OPEN_INPUTS"]
-
-#: the kernels that take (t, u, params) for an open model: every one that evaluates l or f
-OPEN_KERNELS = ("residual", "jacobian", "residual_jacobian", "update", "guess", "legendre",
-                "hessian", "energy", "observe", "update_p", "velocity_step", "record")
+__all__ = ["derive", "DiscreteStep", "Kernel", "KERNEL_NAMES"]
 
 
 def _flat(M):
@@ -54,25 +54,24 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     n, d = group.n, group.d
     g = ca.SX.sym("g", n, n)
     p = ca.SX.sym("p", d)
-    h = ca.SX.sym("h", 1)
     is_open = model.open_system
     if is_open:
-        t = ca.SX.sym("t", 1)
-        u = ca.SX.sym("u", len(model.inputs))
-        P = ca.SX.sym("params", len(model.runtime_symbols))
+        m, nP = len(model.inputs), len(model.runtime_symbols)
+        hv = ca.SX.sym("h", 2 + m + nP)           # [h, t_k, u, params]
+        h, t, u, P = hv[0], hv[1], hv[2:2 + m], hv[2 + m:]
         lag_f, force_f = open_functions(model)
         lag_t = lambda G, X, tt: lag_f(G, X, tt, P)  # noqa: E731
         lag = lambda G, X: lag_f(G, X, t, P)  # noqa: E731  (at t_k: records, energy)
         force = (lambda G, X, tt: force_f(G, X, tt, u, P)) if model.forced else None
         reduced = model.left_invariant and not model.forced and not model.time_dependent
         eqs = step_equations(group, lag_t, tableau, tau, rkmk, reduced, g, p, h, t, force)
-        extra = [("t", t), ("u", u), ("params", P)]
+        extra = [("h", hv)]
     else:
+        h = hv = ca.SX.sym("h", 1)
         lag = lagrangian_function(model)
         reduced = model.left_invariant
         eqs = step_equations(group, lag, tableau, tau, rkmk, reduced, g, p, h)
         extra = []
-    assert tuple(nm for nm, _ in extra) in ((), OPEN_INPUTS)
     z = eqs.z
     nz = z.numel()
     gf = _flat(g)
@@ -85,7 +84,7 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     hess = ca.jacobian(mu, xi)
 
     def kernel(name, inputs, outputs):
-        if extra and name in OPEN_KERNELS:
+        if extra and name in OPEN_EXTRA:
             inputs = list(inputs) + extra
         names_in = tuple(nm for nm, _ in inputs)
         names_out = tuple(nm for nm, _ in outputs)
@@ -105,27 +104,27 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     theta = ca.SX.sym("theta", 1)
     chart_point = ca.mtimes(g, group.tau(tau, theta * eqs.chart_step))
     kernels = (
-        kernel("residual", [("z", z), ("g", gvec), ("p", p), ("h", h)], [("F", eqs.residual)]),
-        kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", h)], [("J", _flat(J))]),
+        kernel("residual", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("F", eqs.residual)]),
+        kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("J", _flat(J))]),
         # F and J in one pass (shared subexpressions): full Newton's iteration
-        kernel("residual_jacobian", [("z", z), ("g", gvec), ("p", p), ("h", h)],
+        kernel("residual_jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
                [("F", eqs.residual), ("J", _flat(J))]),
-        kernel("update", [("z", z), ("g", gvec), ("p", p), ("h", h)],
+        kernel("update", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
                [("g1", _flat(eqs.g1)), ("p1", eqs.p1)]),
-        kernel("guess", [("xi", eqs.xi_hat), ("g", gvec), ("p", p), ("h", h)], [("z0", eqs.guess)]),
+        kernel("guess", [("xi", eqs.xi_hat), ("g", gvec), ("p", p), ("h", hv)], [("z0", eqs.guess)]),
         kernel("legendre", [("g", gvec), ("xi", xi)], [("mu", mu)]),
         kernel("hessian", [("g", gvec), ("xi", xi)], [("H", _flat(hess))]),
         kernel("energy", [("g", gvec), ("xi", xi)], [("E", ca.dot(mu, xi) - lval)]),
         kernel("momentum", [("g", gvec), ("p", p)], [("m", group.momentum_map(g, p))]),
         kernel("defect", [("g", gvec)], [("e", group.group_defect(g))]),
-        kernel("margin", [("z", z), ("h", h)], [("m", eqs.margin)]),
+        kernel("margin", [("z", z), ("h", hv)], [("m", eqs.margin)]),
         kernel("section", [("g", gvec), ("p", p)], [("s", section_function(model, g, p))]),
-        kernel("chart_point", [("z", z), ("g", gvec), ("h", h), ("theta", theta)],
+        kernel("chart_point", [("z", z), ("g", gvec), ("h", hv), ("theta", theta)],
                [("g_theta", _flat(chart_point))]),
         kernel("observe", [("g", gvec), ("p", p)],
                [("xi", xi_obs), ("E", ca.substitute(ca.dot(mu, xi) - lval, xi, xi_obs)),
                 ("m", group.momentum_map(g, p)), ("e", group.group_defect(g))]),
-        kernel("update_p", [("z", z), ("g", gvec), ("p", p), ("h", h)], [("p1", eqs.p1)]),
+        kernel("update_p", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("p1", eqs.p1)]),
         kernel("velocity_step", [("g", gvec), ("p", p), ("xi", xi)],
                [("xi1", velocity_step(g, p, xi, lag))]),
         kernel("record", [("g", gvec), ("p", p), ("xi", xi)], [("row", row)]),
@@ -136,6 +135,7 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
         tableau_name=tableau.name, tableau_order=tableau.order, tau=tau, rkmk=rkmk,
         reduced=reduced, unknowns=eqs.blocks, kernels=kernels,
         section=getattr(getattr(getattr(model, "scene", None), "section", None), "text", None),
-        open_inputs=(len(model.inputs), len(model.runtime_symbols)) if is_open else None,
+        open_spec=OpenSpec(model.inputs, model.runtime_parameters, model.runtime_defaults,
+                           model.forced, model.time_dependent) if is_open else None,
         legendre_quadratic=quadratic, record_layout=layout, step_uses_g=step_uses_g,
         record_uses_g=bool(ca.depends_on(row, gf)), record_uses_xi=bool(ca.depends_on(row, xi)))

@@ -18,10 +18,6 @@ from ..abi import KERNEL_NAMES
 __all__ = ["KERNEL_NAMES", "Kernel", "DiscreteStep"]
 
 
-#: the inputs an open model's kernels append (hpgen.derive.OPEN_KERNELS): t[1] the start
-#: time t_k of the step, u[m] the control inputs, params[P] the runtime parameters
-OPEN_INPUTS = ("t", "u", "params")
-
 
 @dataclass(frozen=True)
 class Kernel:
@@ -29,6 +25,32 @@ class Kernel:
     function: Any               # casadi.Function over SX, dense inputs/outputs as above
     inputs: tuple[str, ...]     # argument names, e.g. ("z", "g", "p", "h")
     outputs: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class OpenSpec:
+    """What an open model's step vector hv = [h, t_k, u, params] holds (hpgen.abi).
+
+    inputs: the control inputs' names (m); runtime_parameters: ((name, shape), ...) in order,
+    their entries flat row-major in params (P); defaults: the P default values (the model
+    file's); forced: some force is not identically zero; time_dependent: l or f uses t."""
+    inputs: tuple
+    runtime_parameters: tuple
+    defaults: tuple
+    forced: bool
+    time_dependent: bool
+
+    @property
+    def m(self) -> int:
+        return len(self.inputs)
+
+    @property
+    def P(self) -> int:
+        return len(self.defaults)
+
+    @property
+    def H(self) -> int:
+        return 2 + self.m + self.P
 
 
 @dataclass(frozen=True)
@@ -56,7 +78,7 @@ class DiscreteStep:
     step_uses_g: bool = True     # residual or update_p depend on g
     record_uses_g: bool = True   # the record row depends on g
     record_uses_xi: bool = True  # the record row depends on xi (velocity_step needed)
-    open_inputs: tuple | None = None   # (m, P) when the kernels take OPEN_INPUTS, else None
+    open_spec: OpenSpec | None = None  # an open model's step vector, else None (closed)
 
     @property
     def record_width(self) -> int:

@@ -54,8 +54,8 @@ class _Backend:
         """Number of global steps k in (k0, k0 + steps] with k % every == 0."""
         return (k0 + steps) // every - k0 // every
 
-    def simulate(self, g0, p0, h, z0, steps, every, opts):
-        run = self.start(g0, p0, z0)
+    def simulate(self, g0, p0, h, z0, steps, every, opts, inputs=None):
+        run = self.start(g0, p0, z0) if inputs is None else self.start(g0, p0, z0, inputs)
         done, g_rec, p_rec, st = self.advance(run, h, steps, every, opts)
         nn = self.n * self.n
         g_all = np.concatenate([np.asarray(g0, dtype=np.float64).reshape(1, nn), g_rec])
@@ -96,13 +96,13 @@ class PythonBackend(_Backend):
 
     def step(self, g, p, hv, z, opts):
         g, p, z = self._lists(g, p, z)
-        hv = [float(np.asarray(hv, dtype=np.float64).reshape(-1)[0])]
+        hv = np.asarray(hv, dtype=np.float64).reshape(-1).tolist()
         code, g1, p1, z, it, r, _ = newton._arrays(newton.step_lists(
             self._newton, g, p, hv, z, opts, newton.NewtonMemory()))
         return code, g1, p1, z, it, r
 
-    def start(self, g0, p0, z0):
-        return loop.Run(*self._lists(g0, p0, z0))
+    def start(self, g0, p0, z0, inputs=None):
+        return loop.Run(*self._lists(g0, p0, z0), inputs)
 
     def advance(self, run, h, steps, every, opts):
         """(steps done, g_rec (K, nn), p_rec (K, d), status); K records of this call."""

@@ -11,7 +11,7 @@ import threading
 import numpy as np
 
 from .. import abi
-from ..errors import BuildError
+from ..errors import BuildError, ModelError
 from . import loop, newton
 from .backends import _Backend, _flat
 from .build import build_library
@@ -91,6 +91,10 @@ class CBackend(_Backend):
 
     def __init__(self, module_dir, meta: dict, cc=None, cflags=None):
         super().__init__(meta)
+        if meta.get("open") is not None:
+            raise ModelError("the C backend does not run models with forces, inputs, runtime "
+                             "parameters or t yet (issue 16, in progress); use "
+                             "backend='python'", field="backend")
         self.library = build_library(module_dir, cc=cc, cflags=cflags)
         try:
             lib = ctypes.CDLL(str(self.library))

@@ -17,8 +17,9 @@ class Run:
     solution z, the two before (zprev, zprev2: predictor; have_prev of them valid), the Newton
     memory and the steps done k; vectors are lists of Python floats."""
 
-    def __init__(self, g0, p0, z0):
+    def __init__(self, g0, p0, z0, inputs=None):
         self.g, self.p, self.z = _floats(g0), _floats(p0), _floats(z0)
+        self.inputs = inputs     # an open module's StepInputs (hpgen.runtime.inputs) or None
         self.zprev = self.zprev2 = None
         self.have_prev = 0
         self.memory = NewtonMemory()
@@ -46,6 +47,8 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
         zs = [2.0 * a - b for a, b in zip(run.z, run.zprev)]
     else:
         zs = run.z
+    if run.inputs is not None:           # an open module: hv = [h, t_k, u_k, params]
+        hv = run.inputs.hv(hv[0], run.k)
     first = run.k == 0
     # the first step starts from the crude guess kernel: full Newton
     code, g1, p1, zs, it, r, jacs = step_lists(kern, run.g, run.p, hv, zs,

@@ -149,8 +149,9 @@ class RecordsMixin:
         ConvergenceError / DomainError / RecordError with ``.partial`` the failing chunk's
         records."""
         chunk = _int(chunk, "chunk", 1)
-        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every,
-                                                           newton)
+        self._closed_only("stream_record")
+        h, steps, every, opts, gf, mu0, z0, _ = self._prepare(g0, h, steps, xi0, mu0, every,
+                                                              newton)
         yield from stream_records(self, self._b, gf, mu0, z0, h, steps, every, chunk, opts)
 
     def record(self, g0, h, steps, xi0=None, mu0=None, every=1, *,

@@ -59,6 +59,7 @@ class SectionsMixin:
     def _section_args(self, h, steps, max_crossings, chunk, newton):
         """(h, steps, crossing cap or None, chunk, options), checked; the module must have a
         section."""
+        self._closed_only("sections")
         self._need_section()
         h = _positive(h, "h")
         steps = _int(steps, "steps", 0)

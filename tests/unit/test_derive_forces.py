@@ -59,23 +59,26 @@ class Stepper:
 
     def __init__(self, step, u=(), params=()):
         self.K = {k.name: k.function for k in step.kernels}
-        self.open = step.open_inputs is not None
+        self.open = step.open_spec is not None
         self.extra = (np.asarray(u, float), np.asarray(params, float))
         self.n, self.nz = step.n, step.nz
 
-    def args(self, t):
-        return (t,) + self.extra if self.open else ()
+    def hv(self, h, t):
+        """the step vector: [h] closed, [h, t_k, u, params] open (hpgen.abi)"""
+        return np.concatenate([[h, t], *self.extra]) if self.open else np.array([h])
 
     def momentum(self, g, xi, t=0.0):
-        return np.array(self.K["legendre"](g.ravel("F"), xi, *self.args(t))).ravel()
+        a = (self.hv(0.0, t),) if self.open else ()
+        return np.array(self.K["legendre"](g.ravel("F"), xi, *a)).ravel()
 
     def step(self, g, p, h, t):
         gf, K = g.ravel("F"), self.K
-        a = self.args(t)
+        hv = self.hv(h, t)
+        a = (hv,) if self.open else ()
         H = np.array(K["hessian"](gf, np.zeros_like(p), *a)).reshape(len(p), len(p))
-        z = np.array(K["guess"](np.linalg.solve(H, p), gf, p, h, *a)).ravel()
+        z = np.array(K["guess"](np.linalg.solve(H, p), gf, p, hv)).ravel()
         for _ in range(40):
-            F, J = K["residual_jacobian"](z, gf, p, h, *a)
+            F, J = K["residual_jacobian"](z, gf, p, hv)
             dz = np.linalg.solve(np.array(J).reshape(self.nz, self.nz, order="F"),
                                  np.array(F).ravel())
             z = z - dz
@@ -83,7 +86,7 @@ class Stepper:
                 break
         else:
             raise AssertionError("Newton did not converge")
-        g1, p1 = K["update"](z, gf, p, h, *a)
+        g1, p1 = K["update"](z, gf, p, hv)
         return np.array(g1).reshape(self.n, self.n, order="F"), np.array(p1).ravel()
 
     def run(self, g, p, h, steps, t0=0.0):
@@ -121,7 +124,7 @@ def test_zero_forces_derive_the_closed_step(tableau, rkmk):
     _, closed = _derive(plain, tableau, rkmk)
     model, zero = _derive(plain + "forces: [0, 0.0, '0*xi[0]']\n", tableau, rkmk)
     assert len(model.forces) == 3 and not model.open_system
-    assert zero.open_inputs is None and zero.unknowns == closed.unknowns
+    assert zero.open_spec is None and zero.unknowns == closed.unknowns
     for a, b in zip(closed.kernels, zero.kernels):
         assert a.function.serialize() == b.function.serialize(), a.name
 
