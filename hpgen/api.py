@@ -225,10 +225,6 @@ def derive_module(path: str, text: str, opts: CompileOptions) -> Derivation:
     from .model import load_model_text
 
     model_obj = load_model_text(text, filename=path)   # bad input fails before casadi loads
-    if model_obj.open_system and opts.backend != "python":
-        raise ModelError("a model with forces, inputs, runtime_parameters or t runs on the "
-                         "Python backend only for now (the C backend is in progress); "
-                         "compile it with backend='python'", file=path, field="backend")
     from .derive import derive
     from .derive.checks import check_legendre
     try:

@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 9a3394bdf539cd260bf9eb79aaf02df0cfbc060bbcb2bdde45a61f94b705f067
+# content hash: 88154e1ec22a70ad8718c558ab81bbd7966c4d51a3ada72cb3d576aa0598abde
 """hpgen integrator double_body_chain_stormer_verlet_cay_truncated for the model double_body_chain.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "double_body_chain_stormer_verlet_cay_truncated"
-HASH = "9a3394bdf539cd260bf9eb79aaf02df0cfbc060bbcb2bdde45a61f94b705f067"
+HASH = "88154e1ec22a70ad8718c558ab81bbd7966c4d51a3ada72cb3d576aa0598abde"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

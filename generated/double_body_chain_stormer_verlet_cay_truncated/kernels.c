@@ -3,7 +3,7 @@
  * model: double_body_chain
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: 9a3394bdf539cd260bf9eb79aaf02df0cfbc060bbcb2bdde45a61f94b705f067
+ * content hash: 88154e1ec22a70ad8718c558ab81bbd7966c4d51a3ada72cb3d576aa0598abde
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -4940,7 +4940,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "9a3394bdf539cd260bf9eb79aaf02df0cfbc060bbcb2bdde45a61f94b705f067"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "88154e1ec22a70ad8718c558ab81bbd7966c4d51a3ada72cb3d576aa0598abde"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

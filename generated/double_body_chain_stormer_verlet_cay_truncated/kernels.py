@@ -2,7 +2,7 @@
 # model: double_body_chain
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: 9a3394bdf539cd260bf9eb79aaf02df0cfbc060bbcb2bdde45a61f94b705f067
+# content hash: 88154e1ec22a70ad8718c558ab81bbd7966c4d51a3ada72cb3d576aa0598abde
 """Python backend of the hpgen module double_body_chain_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: c6137db177ee21bc8ec396be31e1594aa67a3e759941d10beafbfd8cc3737d5a
+# content hash: 4f264c750993e0ea25fa5c46330f46f7937f300b8de80d682696f9f76638186c
 """hpgen integrator free_rigid_body_stormer_verlet_cay_truncated for the model free_rigid_body.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "free_rigid_body_stormer_verlet_cay_truncated"
-HASH = "c6137db177ee21bc8ec396be31e1594aa67a3e759941d10beafbfd8cc3737d5a"
+HASH = "4f264c750993e0ea25fa5c46330f46f7937f300b8de80d682696f9f76638186c"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

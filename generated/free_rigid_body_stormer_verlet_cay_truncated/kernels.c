@@ -3,7 +3,7 @@
  * model: free_rigid_body
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: c6137db177ee21bc8ec396be31e1594aa67a3e759941d10beafbfd8cc3737d5a
+ * content hash: 4f264c750993e0ea25fa5c46330f46f7937f300b8de80d682696f9f76638186c
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -2554,7 +2554,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "c6137db177ee21bc8ec396be31e1594aa67a3e759941d10beafbfd8cc3737d5a"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "4f264c750993e0ea25fa5c46330f46f7937f300b8de80d682696f9f76638186c"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: free_rigid_body
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: c6137db177ee21bc8ec396be31e1594aa67a3e759941d10beafbfd8cc3737d5a
+# content hash: 4f264c750993e0ea25fa5c46330f46f7937f300b8de80d682696f9f76638186c
 """Python backend of the hpgen module free_rigid_body_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 7ca58b1392db7832f05cfb804a00aaa2f7a20510947e0e6a2a2e291942ce7718
+# content hash: 1223c20406b2d2e84bfc29cbc584e60b099137a1778b486ca4d516492d2b25ec
 """hpgen integrator heavy_top_gauss2_exp_exact for the model heavy_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "heavy_top_gauss2_exp_exact"
-HASH = "7ca58b1392db7832f05cfb804a00aaa2f7a20510947e0e6a2a2e291942ce7718"
+HASH = "1223c20406b2d2e84bfc29cbc584e60b099137a1778b486ca4d516492d2b25ec"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

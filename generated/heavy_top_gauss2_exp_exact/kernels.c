@@ -3,7 +3,7 @@
  * model: heavy_top
  * options: tableau=gauss2, tau=exp, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 7ca58b1392db7832f05cfb804a00aaa2f7a20510947e0e6a2a2e291942ce7718
+ * content hash: 1223c20406b2d2e84bfc29cbc584e60b099137a1778b486ca4d516492d2b25ec
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -11451,7 +11451,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "7ca58b1392db7832f05cfb804a00aaa2f7a20510947e0e6a2a2e291942ce7718"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "1223c20406b2d2e84bfc29cbc584e60b099137a1778b486ca4d516492d2b25ec"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

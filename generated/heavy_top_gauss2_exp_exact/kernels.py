@@ -2,7 +2,7 @@
 # model: heavy_top
 # options: tableau=gauss2, tau=exp, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 7ca58b1392db7832f05cfb804a00aaa2f7a20510947e0e6a2a2e291942ce7718
+# content hash: 1223c20406b2d2e84bfc29cbc584e60b099137a1778b486ca4d516492d2b25ec
 """Python backend of the hpgen module heavy_top_gauss2_exp_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

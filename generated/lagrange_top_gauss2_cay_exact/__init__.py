@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 0e68f560234ceed53fb9e9bd3d1855b15c8c930618f88f925af55fe20c72788c
+# content hash: 77cd0acada942e9fc3ffb1dcd922014b4548c923e356e49276fe8d3d77ec31d2
 """hpgen integrator lagrange_top_gauss2_cay_exact for the model lagrange_top.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "lagrange_top_gauss2_cay_exact"
-HASH = "0e68f560234ceed53fb9e9bd3d1855b15c8c930618f88f925af55fe20c72788c"
+HASH = "77cd0acada942e9fc3ffb1dcd922014b4548c923e356e49276fe8d3d77ec31d2"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

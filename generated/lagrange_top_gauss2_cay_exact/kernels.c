@@ -3,7 +3,7 @@
  * model: lagrange_top
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: 0e68f560234ceed53fb9e9bd3d1855b15c8c930618f88f925af55fe20c72788c
+ * content hash: 77cd0acada942e9fc3ffb1dcd922014b4548c923e356e49276fe8d3d77ec31d2
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -7362,7 +7362,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "0e68f560234ceed53fb9e9bd3d1855b15c8c930618f88f925af55fe20c72788c"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "77cd0acada942e9fc3ffb1dcd922014b4548c923e356e49276fe8d3d77ec31d2"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: lagrange_top
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: 0e68f560234ceed53fb9e9bd3d1855b15c8c930618f88f925af55fe20c72788c
+# content hash: 77cd0acada942e9fc3ffb1dcd922014b4548c923e356e49276fe8d3d77ec31d2
 """Python backend of the hpgen module lagrange_top_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: e7374f7a747b5d089c59b065439ee3793c71c52db39275d1d4c715d3e068d776
+# content hash: 7e32dbdc79e1bfd695f2e15d3f3e2da8dbf9b6b2b16dec78b788ffca049a5057
 """hpgen integrator turntable_stormer_verlet_cay_truncated for the model turntable.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "turntable_stormer_verlet_cay_truncated"
-HASH = "e7374f7a747b5d089c59b065439ee3793c71c52db39275d1d4c715d3e068d776"
+HASH = "7e32dbdc79e1bfd695f2e15d3f3e2da8dbf9b6b2b16dec78b788ffca049a5057"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

@@ -3,7 +3,7 @@
  * model: turntable
  * options: tableau=stormer-verlet, tau=cay, rkmk=truncated
  * hpgen version: 0.1.0
- * content hash: e7374f7a747b5d089c59b065439ee3793c71c52db39275d1d4c715d3e068d776
+ * content hash: 7e32dbdc79e1bfd695f2e15d3f3e2da8dbf9b6b2b16dec78b788ffca049a5057
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -4313,7 +4313,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "e7374f7a747b5d089c59b065439ee3793c71c52db39275d1d4c715d3e068d776"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "7e32dbdc79e1bfd695f2e15d3f3e2da8dbf9b6b2b16dec78b788ffca049a5057"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

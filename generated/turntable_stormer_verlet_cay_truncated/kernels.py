@@ -2,7 +2,7 @@
 # model: turntable
 # options: tableau=stormer-verlet, tau=cay, rkmk=truncated
 # hpgen version: 0.1.0
-# content hash: e7374f7a747b5d089c59b065439ee3793c71c52db39275d1d4c715d3e068d776
+# content hash: 7e32dbdc79e1bfd695f2e15d3f3e2da8dbf9b6b2b16dec78b788ffca049a5057
 """Python backend of the hpgen module turntable_stormer_verlet_cay_truncated: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: fe14940cf3ad8e9dc4dbd683918b8ee858cf33a6e99cfe4e995dced898dce3b7
+# content hash: d313dc86544489012ed721ad035b4005355415403d4173d464b38d014f33dc6c
 """hpgen integrator underwater_vehicle_gauss2_cay_exact for the model underwater_vehicle.
 
 Importing this package has no side effects; the first call of integrator(), step() or
@@ -15,7 +15,7 @@ import threading as _threading
 from pathlib import Path as _Path
 
 MODULE = "underwater_vehicle_gauss2_cay_exact"
-HASH = "fe14940cf3ad8e9dc4dbd683918b8ee858cf33a6e99cfe4e995dced898dce3b7"
+HASH = "d313dc86544489012ed721ad035b4005355415403d4173d464b38d014f33dc6c"
 BACKEND = "c"
 _lock = _threading.Lock()
 _loaded = {}

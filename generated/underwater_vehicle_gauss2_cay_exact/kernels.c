@@ -3,7 +3,7 @@
  * model: underwater_vehicle
  * options: tableau=gauss2, tau=cay, rkmk=exact
  * hpgen version: 0.1.0
- * content hash: fe14940cf3ad8e9dc4dbd683918b8ee858cf33a6e99cfe4e995dced898dce3b7
+ * content hash: d313dc86544489012ed721ad035b4005355415403d4173d464b38d014f33dc6c
  *
  * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
  * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
@@ -20184,7 +20184,7 @@ typedef struct hpgen_run {
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
 } hpgen_run;
 
-HPGEN_EXPORT const char* hpgen_hash(void) { return "fe14940cf3ad8e9dc4dbd683918b8ee858cf33a6e99cfe4e995dced898dce3b7"; }
+HPGEN_EXPORT const char* hpgen_hash(void) { return "d313dc86544489012ed721ad035b4005355415403d4173d464b38d014f33dc6c"; }
 
 /* out[0..3] = ABI version, n, d, nz */
 HPGEN_EXPORT void hpgen_dims(long long* out) {

@@ -2,7 +2,7 @@
 # model: underwater_vehicle
 # options: tableau=gauss2, tau=cay, rkmk=exact
 # hpgen version: 0.1.0
-# content hash: fe14940cf3ad8e9dc4dbd683918b8ee858cf33a6e99cfe4e995dced898dce3b7
+# content hash: d313dc86544489012ed721ad035b4005355415403d4173d464b38d014f33dc6c
 """Python backend of the hpgen module underwater_vehicle_gauss2_cay_exact: straight-line kernels printed from the
 CasADi SX algorithms (same operations, same order as the C backend). Each kernel first runs a
 fast body (inlined constants and single-use values, plain ``/`` and math calls); if that

@@ -157,6 +157,8 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
                              kernels=[c_kernel_context(k) for k in step.kernels],
                              flatten=_step_instructions(step) <= FLATTEN_MAX_INSTRUCTIONS,
                              record_width=step.record_width,
+                             open=None if step.open_spec is None else {
+                                 "m": step.open_spec.m, "P": step.open_spec.P},
                              record_uses_xi=bool(step.record_uses_xi),
                              legendre_quadratic=bool(step.legendre_quadratic),
                              step_uses_g=bool(step.step_uses_g),

@@ -136,23 +136,33 @@ class PythonBackend(_Backend):
                                                  opts)
         return _section_arrays(done, recs, st, self.n * self.n, self.d)
 
-    def _row_of(self):
+    def _row_of(self, inputs=None):
+        """row_of(g, p, k, h) -> (code, row) of the record after global step k (an open
+        module's kernels get the run's step vector at that time, StepInputs.at_record)."""
         m = self.meta
         raw = self._raw
         rec, vel, w = raw["record"], raw["velocity_step"], self.record_width
         uses_xi, quad = m["record_uses_xi"], m["legendre_quadratic"]
-        return lambda g, p: loop.record_row(rec, vel, w, g, p, uses_xi, quad)
+        if inputs is None:
+            return lambda g, p, k=0, h=0.0: loop.record_row(rec, vel, w, g, p, uses_xi, quad)
 
-    def record(self, g, p):
-        """(code, row (W,)): the scene's record row at (g flat, p), like hpgen_record."""
-        code, row = self._row_of()(_flat(g, self.n * self.n, "g").tolist(),
-                                   _flat(p, self.d, "p").tolist())
+        def row_of(g, p, k=0, h=0.0):
+            hv = inputs.at_record(h, k)
+            return loop.record_row(lambda *a: rec(*a, hv), lambda *a: vel(*a, hv), w, g, p,
+                                   uses_xi, quad)
+        return row_of
+
+    def record(self, g, p, inputs=None):
+        """(code, row (W,)): the scene's record row at (g flat, p), like hpgen_record (an
+        open module: at the start time of ``inputs``)."""
+        code, row = self._row_of(inputs)(_flat(g, self.n * self.n, "g").tolist(),
+                                         _flat(p, self.d, "p").tolist())
         return code, np.array(row, dtype=np.float64)
 
     def advance_record(self, run, h, steps, every, opts):
         """(steps done, rows (K, W), status): the record rows of this call (hpgen_advance_record;
         without g when meta skip_g)."""
-        done, rows, st = loop.advance_record(self._newton, self._row_of(), run, h, steps,
+        done, rows, st = loop.advance_record(self._newton, self._row_of(run.inputs), run, h, steps,
                                                every, opts, self.skip_g)
         return done, np.array(rows, dtype=np.float64).reshape(len(rows), self.record_width), st
 

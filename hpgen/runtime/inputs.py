@@ -16,6 +16,7 @@ import numbers
 import numpy as np
 
 from ..errors import ModelError
+from .args import _array
 
 
 class StepInputs:
@@ -32,23 +33,16 @@ class StepInputs:
         row = self.rows[0] if self.constant else self.rows[k]
         return [h, self.t0 + k * h, *row, *self.params]
 
+    def at_record(self, h: float, k: int) -> list:
+        """The step vector a record row after global step k is evaluated with: the time
+        t0 + k h and the parameters (the record kernels take no u: zeros)."""
+        return [h, self.t0 + k * h, *([0.0] * len(self.rows[0])), *self.params]
+
 
 def check_t0(t0) -> float:
     if isinstance(t0, bool) or not isinstance(t0, numbers.Real) or not math.isfinite(t0):
         raise ModelError(f"expected a finite start time, got {t0!r}", field="t0")
     return float(t0)
-
-
-def _values(x, shape, field, what) -> np.ndarray:
-    try:
-        a = np.array(x, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ModelError(f"expected {what}, got {type(x).__name__}", field=field) from None
-    if a.shape != tuple(shape):
-        raise ModelError(f"expected {what}, got shape {a.shape}", field=field)
-    if not np.isfinite(a).all():
-        raise ModelError(f"{what} has non-finite entries (NaN or inf)", field=field)
-    return a
 
 
 def check_params(open_meta, params) -> list:
@@ -72,9 +66,9 @@ def check_params(open_meta, params) -> list:
     for name, shape in spec:
         size = math.prod(shape)
         if name in params:
-            what = "a number" if not shape else f"an array of shape {tuple(shape)}"
-            flat[off:off + size] = _values(params[name], shape, f"params[{name!r}]",
-                                           what).ravel().tolist()
+            what = "a number" if not shape else "an array"
+            flat[off:off + size] = _array(params[name], tuple(shape), f"params[{name!r}]",
+                                          what).ravel().tolist()
         off += size
     return flat
 
@@ -93,10 +87,30 @@ def check_u(open_meta, u, steps: int) -> list:
                          f"an array of shape ({m},) or (steps, {m})", field="u")
     a = np.asarray(u, dtype=object)
     shape = (m,) if a.ndim <= 1 else (steps, m)
-    what = f"an array of shape ({m},) (constant) or ({steps}, {m}) (one row per step) " \
-           f"for the inputs {names}"
-    a = _values(u, shape, "u", what)
+    what = f"the inputs ({names}: ({m},) constant or ({steps}, {m}) one row per step)"
+    a = _array(u, shape, "u", what)
     return [a.tolist()] if a.ndim == 1 else a.tolist()
+
+
+def batch_inputs(open_meta, B: int, steps: int, u=None, params=None, t0=0.0) -> list | None:
+    """B StepInputs for an ensemble (None for a closed module): u and t0 shared; each value
+    of ``params`` either of the parameter's shape (shared) or with a leading axis of length
+    B (run b takes entry b: a sweep without recompiling)."""
+    if open_meta is None or not isinstance(params, dict):
+        one = step_inputs(open_meta, steps, u, params, t0)
+        return None if one is None else [one] * B
+    shapes = {name: tuple(shape) for name, shape in open_meta["runtime_parameters"]}
+    per_run = set()
+    for key, v in params.items():
+        try:
+            if key in shapes and np.shape(v) == (B,) + shapes[key]:
+                per_run.add(key)
+        except ValueError:                   # ragged: step_inputs reports it
+            pass
+    return [step_inputs(open_meta, steps, u,
+                        {k: (np.asarray(v, dtype=np.float64)[b] if k in per_run else v)
+                         for k, v in params.items()}, t0)
+            for b in range(B)]
 
 
 def step_inputs(open_meta, steps: int, u=None, params=None, t0=0.0) -> StepInputs | None:

@@ -22,7 +22,7 @@ from .. import abi
 from ..errors import ConvergenceError, ModelError
 from . import newton as _newton
 from .args import _array, _error, _int, _positive
-from .inputs import check_params, check_t0, step_inputs
+from .inputs import batch_inputs, check_params, check_t0, step_inputs
 from .newton import NewtonOptions
 from .records import RecordsMixin
 from .sections import SectionsMixin
@@ -278,21 +278,30 @@ class Integrator(SectionsMixin, RecordsMixin):
             z0 = self._b.call("guess", xi0, gf, mu0, np.array(inputs.hv(h, 0)))[0]
         return h, steps, every, opts, gf, mu0, z0, inputs
 
-    def _prepare_batch(self, g0, h, steps, xi0, mu0, every, threads, newton, what):
+    def _prepare_batch(self, g0, h, steps, xi0, mu0, every, threads, newton, what,
+                       u=None, params=None, t0=0.0):
         """The checked arguments of an ensemble run by the C backend (``what``: the method, for
-        the error): (h, steps, every, options, threads, g0s flat, mu0s, Newton starts z0s)."""
+        the error): (h, steps, every, options, threads, g0s flat, mu0s, Newton starts z0s,
+        per-run StepInputs or None (closed))."""
         if self.backend != "c":
             raise ModelError(f"{what} needs the C backend", field="backend")
-        self._closed_only(what)
         h = _positive(h, "h")
         steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
         opts = self._options(newton)
-        hv = np.array([h])
-        starts = [(gf, m, self._b.call("guess", x, gf, m, hv)[0])
-                  for gf, m, x in self._batch_starts(g0, xi0, mu0)]
+        init = xi0 if xi0 is not None else mu0
+        B = len(init) if hasattr(init, "__len__") else None
+        inputs = batch_inputs(self.open, B or 0, steps, u, params, t0) if B else None
+        if inputs is None:
+            hv = np.array([h])
+            starts = [(gf, m, self._b.call("guess", x, gf, m, hv)[0])
+                      for gf, m, x in self._batch_starts(g0, xi0, mu0)]
+        else:
+            lvs = [self._lv(i.t0, i.params) for i in inputs]
+            starts = [(gf, m, self._b.call("guess", x, gf, m, np.array(i.hv(h, 0)))[0])
+                      for (gf, m, x), i in zip(self._batch_starts(g0, xi0, mu0, lvs), inputs)]
         threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
         gs, ms, z0s = zip(*starts) if starts else ((), (), ())
-        return h, steps, every, opts, threads, gs, ms, z0s
+        return h, steps, every, opts, threads, gs, ms, z0s, inputs
 
     def simulate(self, g0, h, steps, xi0=None, mu0=None, every=1, *,
                  newton: NewtonOptions | None = None, u=None, params=None,
@@ -346,7 +355,7 @@ class Integrator(SectionsMixin, RecordsMixin):
             k += done
             first = False
 
-    def _batch_starts(self, g0, xi0, mu0) -> list:
+    def _batch_starts(self, g0, xi0, mu0, lvs=None) -> list:
         """[(g0 flat, mu0, xi0)] for a batch: g0 (n, n) shared or (B, n, n); xi0 or mu0
         (B, d), exactly one; each start checked as in simulate."""
         init = xi0 if xi0 is not None else mu0
@@ -361,17 +370,28 @@ class Integrator(SectionsMixin, RecordsMixin):
             raise ModelError(f"expected g0 of shape ({self.n}, {self.n}) or ({B}, {self.n}, "
                              f"{self.n}), got {G0.shape}", field="g0")
         return [self._initial(G0[b], None if xi0 is None else xi0[b],
-                              None if mu0 is None else mu0[b]) for b in range(B)]
+                              None if mu0 is None else mu0[b], () if lvs is None else lvs[b])
+                for b in range(B)]
 
     def simulate_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
-                       newton: NewtonOptions | None = None) -> list:
+                       newton: NewtonOptions | None = None, u=None, params=None,
+                       t0=0.0) -> list:
         """An ensemble: B runs from g0 ((n, n) shared, or (B, n, n)) and xi0 or mu0 (B, d),
         in C over ``threads`` threads (default: the CPU count). Each run's states are bitwise
         those of ``simulate`` on its own. Returns B Trajectories; a failed run's Trajectory
-        is partial with ``.error`` set (nothing is raised)."""
-        h, steps, every, opts, threads, gs, ms, z0s = self._prepare_batch(
-            g0, h, steps, xi0, mu0, every, threads, newton, "simulate_batch")
-        done, g_rec, p_rec, sts = self._b.simulate_batch(gs, ms, h, z0s, steps, every, opts,
-                                                         threads)
-        return [self._trajectory(int(done[b]), g_rec[b], p_rec[b], sts[b], h, every)
+        is partial with ``.error`` set (nothing is raised). An open module takes u and t0
+        (shared) and params, whose values may carry a leading axis of length B: run b takes
+        entry b (a parameter sweep, no recompilation); each run is bitwise ``simulate`` with
+        its own params."""
+        h, steps, every, opts, threads, gs, ms, z0s, inputs = self._prepare_batch(
+            g0, h, steps, xi0, mu0, every, threads, newton, "simulate_batch", u, params, t0)
+        if inputs is None:
+            done, g_rec, p_rec, sts = self._b.simulate_batch(gs, ms, h, z0s, steps, every,
+                                                             opts, threads)
+        else:
+            done, g_rec, p_rec, sts = self._b.simulate_batch(gs, ms, h, z0s, steps, every,
+                                                             opts, threads, inputs)
+        t0 = check_t0(t0)
+        return [self._trajectory(int(done[b]), g_rec[b], p_rec[b], sts[b], h, every,
+                                 None if inputs is None else inputs[b], t0)
                 for b in range(len(gs))]

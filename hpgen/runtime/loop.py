@@ -136,7 +136,7 @@ def record_row(record, velocity_step, width, g, p, uses_xi, quadratic) -> tuple:
 
 def advance_record(kern: Kernels, row_of, run: Run, h, steps, every, opts: NewtonOptions,
                    skip_g):
-    """Advance ``run`` like ``hpgen_advance_record`` in C: ``row_of(g, p) -> (code, row)`` at
+    """Advance ``run`` like ``hpgen_advance_record`` in C: ``row_of(g, p, k, h) -> (code, row)`` at
     the global steps k % every == 0; skip_g: update_p only (run.g stays g_0, g_stale).
     Returns (steps done, rows (lists), status dict); a failed row stops the run after its
     step with code RECORD (the row is kept)."""
@@ -148,7 +148,7 @@ def advance_record(kern: Kernels, row_of, run: Run, h, steps, every, opts: Newto
         if _run_step(kern, run, hv, opts, full, st, not skip_g) != OK:
             return n, rows, st
         if run.k % every == 0:
-            code, row = row_of(run.g, run.p)
+            code, row = row_of(run.g, run.p, run.k, h)
             rows.append(row)
             if code != OK:
                 st.update(code=RECORD, step=run.k)

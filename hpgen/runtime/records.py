@@ -109,15 +109,19 @@ def make_records(integ, rows, st, h, every, t0) -> Records:
     return rec
 
 
-def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts):
+def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts, inputs=None,
+                   t_start=0.0):
     """Yield Records per chunk of at most ``chunk`` steps (the first starts with record 0,
-    the initial state); raises the chunk's error (with .partial) on a failure."""
-    code, row0 = backend.record(gf, mu0)
+    the initial state); raises the chunk's error (with .partial) on a failure. inputs: an
+    open module's StepInputs; t_start: the time of step 0."""
+    code, row0 = backend.record(gf, mu0) if inputs is None else \
+        backend.record(gf, mu0, inputs)
     if code != abi.OK:
         rec = make_records(integ, row0.reshape(1, -1), {**loop.new_status(), "code": code},
-                           h, every, 0.0)
+                           h, every, t_start)
         raise rec.error
-    run = backend.start(gf, mu0, z0)
+    run = backend.start(gf, mu0, z0) if inputs is None else \
+        backend.start(gf, mu0, z0, inputs)
     k, first = 0, True
     while first or k < steps:
         todo = min(chunk, steps - k)
@@ -125,7 +129,7 @@ def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts):
         if first:
             rows = np.concatenate([row0.reshape(1, -1), rows])
         t0 = (k // every + (0 if first else 1)) * every * h
-        rec = make_records(integ, rows, st, h, every, t0)
+        rec = make_records(integ, rows, st, h, every, t_start + t0 if t_start else t0)
         if rec.error is not None:
             raise rec.error
         yield rec
@@ -143,26 +147,26 @@ class RecordsMixin:
         return tuple(name for name, _, _ in self.meta["record"])
 
     def stream_record(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000, *,
-                      newton: NewtonOptions | None = None):
+                      newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
         """Like ``record`` in chunks of at most ``chunk`` steps (bounded memory): yields one
         Records per chunk (the first starts with record 0; ``t`` is global). A failure raises
         ConvergenceError / DomainError / RecordError with ``.partial`` the failing chunk's
-        records."""
+        records. u, params, t0: as in ``simulate``."""
         chunk = _int(chunk, "chunk", 1)
-        self._closed_only("stream_record")
-        h, steps, every, opts, gf, mu0, z0, _ = self._prepare(g0, h, steps, xi0, mu0, every,
-                                                              newton)
-        yield from stream_records(self, self._b, gf, mu0, z0, h, steps, every, chunk, opts)
+        h, steps, every, opts, gf, mu0, z0, inputs = self._prepare(
+            g0, h, steps, xi0, mu0, every, newton, u, params, t0)
+        yield from stream_records(self, self._b, gf, mu0, z0, h, steps, every, chunk, opts,
+                                  inputs, float(t0))
 
     def record(self, g0, h, steps, xi0=None, mu0=None, every=1, *,
-               newton: NewtonOptions | None = None):
+               newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
         """Run ``steps`` steps keeping only the compiled record row (``record_names``: the
         scene's g, mu, xi, energy, momentum, defect and expressions) every ``every`` steps;
         returns a hpgen.runtime.records.Records. The row is evaluated inside the C loop;
         when neither the step nor the row use g, g is not reconstructed (meta skip). The
         states are bitwise those of ``simulate``. A failure raises (``.partial`` set)."""
         chunks = list(self.stream_record(g0, h, steps, xi0, mu0, every, max(steps, 1),
-                                         newton=newton))
+                                         newton=newton, u=u, params=params, t0=t0))
         return chunks[0]
 
     def record_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
@@ -171,7 +175,8 @@ class RecordsMixin:
         threads (default: the CPU count); each run's rows are bitwise those of ``record`` on
         its own. Returns B Records; a failed run's Records is partial with ``.error`` set
         (nothing is raised)."""
-        h, steps, every, opts, threads, gs, ms, z0s = self._prepare_batch(
+        self._closed_only("record_batch")
+        h, steps, every, opts, threads, gs, ms, z0s, _ = self._prepare_batch(
             g0, h, steps, xi0, mu0, every, threads, newton, "record_batch")
         rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps, every, opts, threads)
         return [make_records(self, rows[b, :n_rows[b]], sts[b], h, every, 0.0)

@@ -1,6 +1,6 @@
 """Open modules (forces, control inputs, runtime parameters, t; issue 16) through the public
-API on the Python backend: u, params and t0 in simulate / stream / step, their checks, and
-the refusals of what does not run them yet (the C backend, record, sections, batches)."""
+API: u, params and t0 in simulate / stream / step / simulate_batch on both backends, their
+checks, C against Python, and the refusals of what does not run them yet (record, sections)."""
 from __future__ import annotations
 
 import numpy as np
@@ -13,26 +13,38 @@ from hpgen.runtime import NewtonOptions
 from test_derive_forces import FREE_BODY, HEAVY_TOP, TAU_S, VEHICLE
 
 FULL = NewtonOptions(simplified=False)
+SCENE = """\
+scene:
+  h: 0.05
+  steps: 60
+  initial: {g: identity, xi: [0.2, 1.0, 3.0]}
+  record: [g, mu, energy, {height: "R[2, 2]"}]
+  every: 10
+"""
 
 
 @pytest.fixture(scope="module")
 def modules(tmp_path_factory):
     root = tmp_path_factory.mktemp("forces")
     out = {}
-    for name, text in (("body", FREE_BODY), ("top", HEAVY_TOP), ("vehicle", VEHICLE)):
+    for name, text in (("body", FREE_BODY), ("top", HEAVY_TOP), ("vehicle", VEHICLE),
+                       ("scene", HEAVY_TOP + SCENE)):
         path = root / f"{name}.yaml"
         path.write_text(text)
         out[name] = hpgen.compile(path, tableau="gauss2", tau="cay", rkmk="exact",
                                   backend="python", cache_dir=root / "cache")
+        out[name + "_c"] = hpgen.compile(path, tableau="gauss2", tau="cay", rkmk="exact",
+                                         cache_dir=root / "cache")
     out["root"] = root
     return out
 
 
-def test_spatial_torque_identity_python_backend(modules):
+@pytest.mark.parametrize("backend", ["python", "c"])
+def test_spatial_torque_identity(modules, backend):
     """R_k p_k = R_0 p_0 + k h tau_s over 10^4 steps to 1e-12 relative (full Newton: the
     default simplified Newton's stop, ~1e-16 (1 + |z|) per step with a stale Jacobian, adds
     up to 2e-12 over 10^4 steps, measured)."""
-    body = modules["body"]
+    body = modules["body" if backend == "python" else "body_c"]
     tr = body.simulate(np.eye(3), 0.01, 10_000, xi0=[0.3, 0.2, -0.5], every=1000,
                        newton=FULL)
     m = np.einsum("kij,kj->ki", tr.g, tr.mu)
@@ -120,9 +132,61 @@ def test_closed_modules_refuse_u_and_params(tmp_path):
     assert np.array_equal(a.mu, b.mu) and np.array_equal(a.t, b.t + 2.0)
 
 
+def test_c_and_python_agree(modules):
+    """Forced, time-dependent, runtime-parameter runs: bitwise for nz <= abi.UNROLL_MAX (the
+    same kernels and the same linear algebra), to round-off above (numpy's LAPACK)."""
+    kw = dict(xi0=[0.2, 1.0, 3.0], params={"Mg": 1.3}, t0=0.3)
+    a = modules["top"].simulate(np.eye(3), 0.05, 300, **kw)
+    b = modules["top_c"].simulate(np.eye(3), 0.05, 300, **kw)
+    assert modules["top_c"].nz <= 12
+    assert np.array_equal(a.mu, b.mu) and np.array_equal(a.g, b.g)
+    U = np.linspace(0.0, 1.0, 300).reshape(300, 1)
+    kw = dict(mu0=[0.3, 1.0, 0.2, 1.0, 0.0, 0.5], u=U, t0=0.1)
+    a = modules["vehicle"].simulate(np.eye(4), 0.05, 300, **kw)
+    b = modules["vehicle_c"].simulate(np.eye(4), 0.05, 300, **kw)
+    assert np.abs(a.mu - b.mu).max() <= 1e-12 * np.abs(a.mu).max()
+    assert np.abs(a.g - b.g).max() <= 1e-12 * np.abs(a.g).max()
+    g1, p1 = modules["vehicle_c"].step(np.eye(4), kw["mu0"], 0.05, u=U[0], t=0.1)
+    assert np.array_equal(p1, b.mu[1])
+
+
+def test_parameter_sweep_in_one_batch(modules):
+    """64 values of a runtime parameter in one simulate_batch of one compiled module; each run
+    bitwise the one-at-a-time simulate."""
+    top = modules["top_c"]
+    Mg = np.linspace(0.5, 2.0, 64)
+    W0 = np.tile([0.2, 1.0, 3.0], (64, 1))
+    runs = top.simulate_batch(np.eye(3), 0.05, 200, xi0=W0, params={"Mg": Mg}, t0=0.3,
+                              threads=2)
+    assert len(runs) == 64
+    for b in (0, 17, 63):
+        one = top.simulate(np.eye(3), 0.05, 200, xi0=W0[b], params={"Mg": Mg[b]}, t0=0.3)
+        assert np.array_equal(runs[b].mu, one.mu) and np.array_equal(runs[b].g, one.g)
+        assert np.array_equal(runs[b].t, one.t)
+    assert np.abs(runs[0].mu[-1] - runs[63].mu[-1]).max() > 1e-2
+    with pytest.raises(ModelError, match="params"):
+        top.simulate_batch(np.eye(3), 0.05, 10, xi0=W0, params={"Mg": Mg[:5]})
+
+
+@pytest.mark.parametrize("backend", ["python", "c"])
+def test_record_of_an_open_module(modules, backend):
+    """record / stream_record: the compiled row (g, mu, energy at the record's time and
+    params) of the same states as simulate, bitwise; C and Python rows bitwise."""
+    top = modules["scene" if backend == "python" else "scene_c"]
+    kw = dict(xi0=[0.2, 1.0, 3.0], params={"Mg": 1.3}, t0=0.3)
+    rec = top.record(np.eye(3), 0.05, 60, every=10, **kw)
+    sim = top.simulate(np.eye(3), 0.05, 60, every=10, **kw)
+    assert np.array_equal(rec["mu"], sim.mu) and np.array_equal(rec.t, sim.t)
+    assert np.abs(rec["energy"] - sim.energy()).max() <= 1e-13 * np.abs(sim.energy()).max()
+    parts = list(top.stream_record(np.eye(3), 0.05, 60, every=10, chunk=25, **kw))
+    assert np.array_equal(np.concatenate([p["mu"] for p in parts]), rec["mu"])
+    assert np.array_equal(rec["height"], sim.g[:, 2, 2])
+    other = modules["scene_c" if backend == "python" else "scene"]
+    assert np.array_equal(other.record(np.eye(3), 0.05, 60, every=10, **kw)["energy"],
+                          rec["energy"])
+
+
 def test_what_does_not_run_open_modules_yet(modules):
-    top = modules["top"]
-    with pytest.raises(ModelError, match="backend='python'"):
-        hpgen.compile(modules["root"] / "top.yaml", cache_dir=modules["root"] / "cache")
+    top = modules["top_c"]
     with pytest.raises(ModelError, match="does not run models with forces"):
-        top.record(np.eye(3), 0.05, 3, xi0=[0.2, 1.0, 3.0])
+        top.record_batch(np.eye(3), 0.05, 3, xi0=[[0.2, 1.0, 3.0]])
