@@ -190,3 +190,26 @@ def test_what_does_not_run_open_modules_yet(modules):
     top = modules["top_c"]
     with pytest.raises(ModelError, match="does not run models with forces"):
         top.record_batch(np.eye(3), 0.05, 3, xi0=[[0.2, 1.0, 3.0]])
+
+
+def test_cli_on_an_open_model(modules, tmp_path):
+    """hpgen run records an open model's scene (default params, t0 = 0); hpgen check and
+    hpgen bench refuse it with one line and exit status 2 (not implemented yet)."""
+    import subprocess
+    import sys
+    path = modules["root"] / "scene.yaml"
+    env_cache = str(modules["root"] / "cache")
+    run = subprocess.run([sys.executable, "-m", "hpgen", "run", str(path), "--out",
+                          str(tmp_path / "o.npz"), "--cache-dir", env_cache, "--tableau",
+                          "gauss2", "--tau", "cay", "--rkmk", "exact"],
+                         capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stderr
+    out = np.load(tmp_path / "o.npz")
+    sim = modules["scene_c"].simulate(np.eye(3), 0.05, 60, xi0=[0.2, 1.0, 3.0], every=10)
+    assert np.array_equal(out["mu"], sim.mu)
+    for cmd in (["check"], ["bench", "--T", "0.5", "--peers", "DOP853"]):
+        res = subprocess.run([sys.executable, "-m", "hpgen", cmd[0], str(path), *cmd[1:],
+                              "--cache-dir", env_cache], capture_output=True, text=True,
+                             timeout=600)
+        assert res.returncode == 2 and len(res.stderr.strip().splitlines()) == 1, res.stderr
+        assert "forces" in res.stderr and "Traceback" not in res.stderr
