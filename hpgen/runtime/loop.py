@@ -181,7 +181,8 @@ def advance_sections(kern: Kernels, section, chart_point, run: Run, h, steps, ca
         if s0 < 0.0 and s1 >= 0.0:
             theta = s0 / (s0 - s1)
             p_c = [(1.0 - theta) * a + theta * b for a, b in zip(p0, run.p)]
-            g_c = chart_point(run.z, g0, hv, [theta])[0]
+            hv_k = hv if run.inputs is None else run.inputs.hv(hv[0], k)   # step k's
+            g_c = chart_point(run.z, g0, hv_k, [theta])[0]
             recs.append((k, (float(k) + theta) * float(h), g_c, p_c))
     st["step"] = run.k
     return n, recs, st

@@ -28,7 +28,8 @@ def modules(tmp_path_factory):
     root = tmp_path_factory.mktemp("forces")
     out = {}
     for name, text in (("body", FREE_BODY), ("top", HEAVY_TOP), ("vehicle", VEHICLE),
-                       ("scene", HEAVY_TOP + SCENE)):
+                       ("scene", HEAVY_TOP + SCENE),
+                       ("section", HEAVY_TOP + SCENE + "  section: mu[0]\n")):
         path = root / f"{name}.yaml"
         path.write_text(text)
         out[name] = hpgen.compile(path, tableau="gauss2", tau="cay", rkmk="exact",
@@ -184,6 +185,21 @@ def test_record_of_an_open_module(modules, backend):
     other = modules["scene_c" if backend == "python" else "scene"]
     assert np.array_equal(other.record(np.eye(3), 0.05, 60, every=10, **kw)["energy"],
                           rec["energy"])
+
+
+def test_sections_of_an_open_module(modules):
+    """Upward crossings of s = mu[0] with params and t0: at the steps where simulate's p_k
+    changes sign, times t0 + (k + theta) h; C and Python bitwise."""
+    kw = dict(xi0=[0.2, 1.0, 3.0], params={"Mg": 1.3}, t0=0.3)
+    cs = modules["section_c"].sections(np.eye(3), 0.05, 400, **kw)
+    cp = modules["section"].sections(np.eye(3), 0.05, 400, **kw)
+    assert np.array_equal(cs.t, cp.t) and np.array_equal(cs.mu, cp.mu)
+    sim = modules["section_c"].simulate(np.eye(3), 0.05, 400, **kw)
+    s = sim.mu[:, 0]
+    ks = np.nonzero((s[:-1] < 0) & (s[1:] >= 0))[0]
+    assert len(ks) >= 3 and np.array_equal(cs.step, ks)
+    theta = s[ks] / (s[ks] - s[ks + 1])
+    assert np.allclose(cs.t, 0.3 + (ks + theta) * 0.05, rtol=0, atol=1e-12)
 
 
 def test_what_does_not_run_open_modules_yet(modules):
