@@ -36,7 +36,9 @@ class KernelSpec:
     """One kernel: its name and the size symbols of its positional inputs and outputs.
 
     Size symbols: "nz" (unknowns of the step), "nn" (n*n, a group element), "d" (algebra
-    dimension), "dd" (d*d), "nznz" (nz*nz), "1", "w" (the record row's width)."""
+    dimension), "dd" (d*d), "nznz" (nz*nz), "1", "w" (the record row's width), "H" (the step
+    vector: [h] for a closed model, [h, t_k, u, params] for an open one, see
+    step_vector_size)."""
     name: str
     inputs: tuple
     outputs: tuple
@@ -44,30 +46,30 @@ class KernelSpec:
 
 
 KERNELS = (
-    KernelSpec("residual", ("nz", "nn", "d", "1"), ("nz",),
+    KernelSpec("residual", ("nz", "nn", "d", "H"), ("nz",),
                "(z, g, p, h) -> F: stationarity conditions of the step"),
-    KernelSpec("jacobian", ("nz", "nn", "d", "1"), ("nznz",),
+    KernelSpec("jacobian", ("nz", "nn", "d", "H"), ("nznz",),
                "(z, g, p, h) -> J = dF/dz, dense, column-major"),
-    KernelSpec("residual_jacobian", ("nz", "nn", "d", "1"), ("nz", "nznz"),
+    KernelSpec("residual_jacobian", ("nz", "nn", "d", "H"), ("nz", "nznz"),
                "(z, g, p, h) -> F, J in one evaluation"),
-    KernelSpec("update", ("nz", "nn", "d", "1"), ("nn", "d"),
+    KernelSpec("update", ("nz", "nn", "d", "H"), ("nn", "d"),
                "(z, g, p, h) -> g_{k+1}, p_{k+1}, explicit"),
-    KernelSpec("guess", ("d", "nn", "d", "1"), ("nz",),
+    KernelSpec("guess", ("d", "nn", "d", "H"), ("nz",),
                "(xi, g, p, h) -> z0: Newton start from a velocity estimate"),
     KernelSpec("legendre", ("nn", "d"), ("d",), "(g, xi) -> mu = dl/dxi"),
     KernelSpec("hessian", ("nn", "d"), ("dd",), "(g, xi) -> d^2 l / dxi^2"),
     KernelSpec("energy", ("nn", "d"), ("1",), "(g, xi) -> <dl/dxi, xi> - l"),
     KernelSpec("momentum", ("nn", "d"), ("d",), "(g, p) -> Ad*_{g^{-1}} p (spatial)"),
     KernelSpec("defect", ("nn",), ("1",), "(g) -> distance of g from the group"),
-    KernelSpec("margin", ("nz", "1"), ("1",),
+    KernelSpec("margin", ("nz", "H"), ("1",),
                "(z, h) -> > 0 while every tau argument of the step is inside tau's domain"),
     KernelSpec("section", ("nn", "d"), ("1",),
                "(g, p) -> the scene's Poincare section s(g, mu = p) (1 without one)"),
-    KernelSpec("chart_point", ("nz", "nn", "1", "1"), ("nn",),
+    KernelSpec("chart_point", ("nz", "nn", "H", "1"), ("nn",),
                "(z, g, h, theta) -> g tau(theta h xi_{k+1}(z)), theta in [0, 1]"),
     KernelSpec("observe", ("nn", "d"), ("d", "1", "d", "1"),
                "(g, p) -> xi, E, m, e at a record (xi: one Newton step of dl/dxi = p from 0)"),
-    KernelSpec("update_p", ("nz", "nn", "d", "1"), ("d",),
+    KernelSpec("update_p", ("nz", "nn", "d", "H"), ("d",),
                "(z, g, p, h) -> p_{k+1} alone (update's p1)"),
     KernelSpec("velocity_step", ("nn", "d", "d"), ("d",),
                "(g, p, xi) -> xi - H^{-1}(dl/dxi(g, xi) - p): one Newton step"),
@@ -77,10 +79,30 @@ KERNEL_NAMES = tuple(k.name for k in KERNELS)
 #: name -> (input size symbols, output size symbols)
 SIGNATURES = {k.name: (k.inputs, k.outputs) for k in KERNELS}
 
+#: Open models (forces, control inputs, runtime parameters or the time t; issue 16): every
+#: "H" input is the step vector hv = [h, t_k, u_0..u_{m-1}, params_0..params_{P-1}]
+#: (t_k the start time of the step, u the control inputs held over the step, params the
+#: runtime parameters, flat, in the model's order), and these kernels, which evaluate the
+#: Lagrangian but take no h, take hv as one more, last input (t = t_k there).
+OPEN_EXTRA = ("legendre", "hessian", "energy", "observe", "velocity_step", "record")
 
-def sizes(n: int, d: int, nz: int, w: int = 1) -> dict:
-    """The value of every size symbol for a module of dimensions n, d, nz and record width w."""
-    return {"nz": nz, "nn": n * n, "d": d, "dd": d * d, "nznz": nz * nz, "1": 1, "w": w}
+
+def step_vector_size(m: int, P: int, is_open: bool) -> int:
+    """H: 1 for a closed module, 2 + m + P for an open one (m inputs, P runtime parameters)."""
+    return 2 + m + P if is_open else 1
+
+
+def signature(name: str, is_open: bool = False) -> tuple:
+    """(input size symbols, output size symbols) of kernel ``name`` in a closed or open module."""
+    ins, outs = SIGNATURES[name]
+    return (ins + ("H",) if is_open and name in OPEN_EXTRA else ins), outs
+
+
+def sizes(n: int, d: int, nz: int, w: int = 1, H: int = 1) -> dict:
+    """The value of every size symbol for a module of dimensions n, d, nz, record width w and
+    step vector size H."""
+    return {"nz": nz, "nn": n * n, "d": d, "dd": d * d, "nznz": nz * nz, "1": 1, "w": w,
+            "H": H}
 
 
 # ---- the record row ----------------------------------------------------------------------

@@ -133,6 +133,10 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     if sc is None:
         raise ModelError("hpgen check needs the model's scene (initial state)", file=str(path),
                          field="scene")
+    if model.open_system:
+        raise ModelError("hpgen check does not check models with forces, inputs, runtime "
+                         "parameters or t yet (the energy-work balance is not implemented); "
+                         "check the model without them", file=str(path), field="forces")
     h = _positive(sc.h if h is None else h, "h")
     steps = sc.steps if steps is None else steps
     if isinstance(steps, bool) or not isinstance(steps, int) or steps < 1:

@@ -3,12 +3,15 @@ scheme on them: a deliberately non-variational integrator, so that ``hpgen check
 
 Continuous equations (math.md sec. 5, the paper's eq. lthp), built generically with CasADi:
 
-    g' = g xi,   mu' = ad*_xi mu + g dl/dg,   mu = dl/dxi(g, xi),
+    g' = g xi,   mu' = ad*_xi mu + g dl/dg + f,   mu = dl/dxi(g, xi),
 
 with ad*_xi mu = ad(xi)^T mu (``group.ad(x)`` is the d x d matrix of ad_x y = [x^, y^]^vee),
 <g dl/dg, eta> = d/de l(g (I + e eta^), xi) at e = 0 (AD of l at eps = 0), and xi from mu by
 Newton on the Legendre map (d^2l/dxi^2 as the Newton matrix). The state is (g, mu): g an
 n x n matrix, mu the body momentum in g* (d-vector, the pairing is the dot product).
+For an open model (forces, inputs, runtime parameters, time; math.md sec. 9) l = l(g, xi, t)
+and f = f(g, xi, t, u, params) is the left-trivialized generalized force, with u and params
+fixed when the equations are built; the point evaluations then take the time t.
 
 RKMK-RK4 (Munthe-Kaas): classical RK4 on the algebra chart g = g_k exp(Theta), Theta' =
 dexp^{-1}_{-Theta} xi (the paper's eq. liealgebradeq with tau = exp, hpgen's
@@ -49,45 +52,67 @@ class ContinuousEquations:
 
     g is an (n, n) array, xi/mu (d,) arrays. Functions: legendre(g, xi), hessian(g, xi),
     rhs(g, xi, mu) -> (g', mu'), energy(g, xi), momentum(g, p) (spatial momentum
-    Ad*_{g^-1} p), defect(g) (distance of g from the group), velocity(g, mu).
+    Ad*_{g^-1} p), defect(g) (distance of g from the group), velocity(g, mu). For an open
+    model (model.open_system) legendre, energy, velocity, rhs and reference take the time t
+    (keyword, default 0); ``u`` (m) and ``params`` (P, default Model.runtime_defaults) are
+    fixed here. flow_jacobian and RKMK4 are for closed models.
     """
 
-    def __init__(self, model):
+    def __init__(self, model, u=None, params=None):
         self.model, self.group = model, model.group
         grp, n, d = model.group, model.group.n, model.group.d
         self.n, self.d = n, d
-        self.lag = lagrangian_function(model)
         g, xi, mu, eps = (ca.SX.sym("g", n, n), ca.SX.sym("xi", d), ca.SX.sym("mu", d),
                           ca.SX.sym("eps", d))
+        self.open = model.open_system
+        t = ca.SX.sym("t", 1)
+        if self.open:
+            from ..derive.lagrangian import open_functions
+            lag_f, force_f = open_functions(model)
+            P = model.runtime_defaults if params is None else params
+            U = np.zeros(len(model.inputs)) if u is None else u
+            P = ca.DM(np.asarray(P, float).reshape(-1, 1))
+            U = ca.DM(np.asarray(U, float).reshape(-1, 1))
+            self.lag = lambda G, X: lag_f(G, X, t, P)  # noqa: E731
+            applied = force_f(g, xi, t, U, P)
+            targs = [t]
+        else:
+            self.lag = lagrangian_function(model)
+            applied, targs = ca.SX.zeros(d), []
         L = self.lag(g, xi)
         leg = ca.gradient(L, xi)
         hess = ca.jacobian(leg, xi)
         force = ca.gradient(self.lag(ca.mtimes(g, ca.SX.eye(n) + grp.hat(eps)), xi), eps)
         force = ca.substitute(force, eps, ca.SX.zeros(d))          # g dl/dg, left-trivialized
         mudot = ca.mtimes(grp.ad(xi).T, mu) + force                  # ad*_xi mu + g dl/dg
+        if self.open:
+            mudot = mudot + applied                                  # + f (math.md sec. 9)
         gdot = ca.mtimes(g, grp.hat(xi))
         F = ca.Function
-        self._leg = F("legendre", [g, xi], [leg])
-        self._newton = F("newton", [g, xi, mu], [leg - mu, hess])
-        self._rhs = F("rhs", [g, xi, mu], [gdot, mudot])
-        self._energy = F("energy", [g, xi], [ca.dot(leg, xi) - L])
+        self._leg = F("legendre", [g, xi] + targs, [leg])
+        self._newton = F("newton", [g, xi, mu] + targs, [leg - mu, hess])
+        self._rhs = F("rhs", [g, xi, mu] + targs, [gdot, mudot])
+        self._energy = F("energy", [g, xi] + targs, [ca.dot(leg, xi) - L])
         p = ca.SX.sym("p", d)
         self._momentum = F("momentum", [g, p], [grp.momentum_map(g, p)])
         self._defect = F("defect", [g], [grp.group_defect(g)])
         # partial derivatives for the variational equations (exact flow Jacobians)
         gv = ca.reshape(g, n * n, 1)
-        self._lin = F("lin", [g, xi, mu], [ca.jacobian(ca.vertcat(ca.reshape(gdot, n * n, 1),
+        self._lin = F("lin", [g, xi, mu] + targs, [ca.jacobian(ca.vertcat(ca.reshape(gdot, n * n, 1),
                                                                       mudot), v)
                                            for v in (gv, xi, mu)] + [ca.jacobian(leg, gv), hess])
         # symbolic pieces reused by RKMK-RK4
         self.sx = {"g": g, "xi": xi, "mu": mu, "leg": leg, "mudot": mudot}
 
     # ---- point evaluations -------------------------------------------------------------
-    def legendre(self, g, xi):
-        return _np(self._leg(g, xi)).ravel()
+    def _t(self, t) -> tuple:
+        return (float(t),) if self.open else ()
 
-    def energy(self, g, xi) -> float:
-        return float(self._energy(g, xi))
+    def legendre(self, g, xi, t=0.0):
+        return _np(self._leg(g, xi, *self._t(t))).ravel()
+
+    def energy(self, g, xi, t=0.0) -> float:
+        return float(self._energy(g, xi, *self._t(t)))
 
     def momentum(self, g, p):
         return _np(self._momentum(g, p)).ravel()
@@ -95,12 +120,12 @@ class ContinuousEquations:
     def defect(self, g) -> float:
         return float(self._defect(g))
 
-    def velocity(self, g, mu, xi=None):
+    def velocity(self, g, mu, xi=None, t=0.0):
         """xi with dl/dxi(g, xi) = mu, Newton from ``xi`` (default 0) to round-off."""
         xi = np.zeros(self.d) if xi is None else np.array(xi, dtype=float)
         prev = np.inf
         for it in range(1, NEWTON_MAXIT + 1):
-            r, H = self._newton(g, xi, mu)
+            r, H = self._newton(g, xi, mu, *self._t(t))
             dx = np.linalg.solve(_np(H), _np(r).ravel())
             xi = xi - dx
             dn, scale = np.abs(dx).max(), 1.0 + np.abs(xi).max()
@@ -111,21 +136,22 @@ class ContinuousEquations:
                                step=0, time=0.0, residual=float(np.abs(r).max()),
                                iterations=NEWTON_MAXIT)
 
-    def rhs(self, g, mu, xi):
-        gd, md = self._rhs(g, xi, mu)
+    def rhs(self, g, mu, xi, t=0.0):
+        gd, md = self._rhs(g, xi, mu, *self._t(t))
         return _np(gd), _np(md).ravel()
 
     # ---- reference solutions -----------------------------------------------------------
-    def reference(self, g0, mu0, times, rtol=1e-12):
-        """(g(t), mu(t)) at ``times`` from DOP853 with rtol = atol = ``rtol`` on the state
-        (g row-major, mu); returns arrays (K, n, n) and (K, d)."""
+    def reference(self, g0, mu0, times, rtol=1e-12, t0=0.0):
+        """(g(t), mu(t)) at ``times`` (measured from t0, the time of (g0, mu0)) from DOP853
+        with rtol = atol = ``rtol`` on the state (g row-major, mu); returns arrays (K, n, n)
+        and (K, d)."""
         n, d = self.n, self.d
-        state = {"xi": self.velocity(g0, mu0)}
+        state = {"xi": self.velocity(g0, mu0, t=t0)}
 
         def f(t, y):
             g, mu = y[:n * n].reshape(n, n), y[n * n:]
-            xi = state["xi"] = self.velocity(g, mu, state["xi"])
-            gd, md = self.rhs(g, mu, xi)
+            xi = state["xi"] = self.velocity(g, mu, state["xi"], t=t0 + t)
+            gd, md = self.rhs(g, mu, xi, t=t0 + t)
             return np.concatenate([gd.ravel(), md])
 
         times = np.atleast_1d(np.asarray(times, dtype=float))

@@ -55,6 +55,10 @@ class Problem:
         if model.scene is None:
             raise ModelError("hpgen bench needs the model's scene (initial state, h)",
                              file=self.path, field="scene")
+        if model.open_system:
+            raise ModelError("hpgen bench does not run models with forces, inputs, runtime "
+                             "parameters or t yet (its peers integrate the closed equations)",
+                             file=self.path, field="forces")
         self.scene = sc = model.scene
         self.T = positive(sc.steps * sc.h if T is None else T, "option T")
         self.eq = eq = ContinuousEquations(model)

@@ -10,7 +10,7 @@ import keyword
 import re
 
 from .. import abi
-from ..abi import KERNEL_NAMES, SIGNATURES, sizes
+from ..abi import KERNEL_NAMES, signature, sizes
 from ..errors import HpgenError
 
 #: identifiers: module names, C symbols, Python argument names
@@ -40,7 +40,8 @@ def check_step(step) -> None:
         v = getattr(step, attr)
         if not isinstance(v, int) or isinstance(v, bool) or v < 1:
             raise CodegenError(f"DiscreteStep.{attr} must be a positive int, got {v!r}")
-    size = sizes(step.n, step.d, step.nz, step.record_width)
+    spec = getattr(step, "open_spec", None)
+    size = sizes(step.n, step.d, step.nz, step.record_width, 1 if spec is None else spec.H)
     check_record_layout(step)
     names = [k.name for k in step.kernels]
     if tuple(names) != KERNEL_NAMES:
@@ -58,7 +59,7 @@ def check_step(step) -> None:
             raise CodegenError(f"kernel {k.name}: casadi function name {fname!r} is reused "
                                "or reserved")
         seen_fn.add(fname)
-        ins, outs = SIGNATURES[k.name]
+        ins, outs = signature(k.name, spec is not None)
         if len(k.inputs) != f.n_in() or len(k.outputs) != f.n_out():
             raise CodegenError(f"kernel {k.name}: Kernel.inputs/outputs do not match the "
                                f"function ({f.n_in()} inputs, {f.n_out()} outputs)")

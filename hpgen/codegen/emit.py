@@ -166,6 +166,8 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
                              kernels=[c_kernel_context(k) for k in step.kernels],
                              flatten=_step_instructions(step) <= FLATTEN_MAX_INSTRUCTIONS,
                              record_width=step.record_width,
+                             open=None if step.open_spec is None else {
+                                 "m": step.open_spec.m, "P": step.open_spec.P},
                              record_uses_xi=bool(step.record_uses_xi),
                              legendre_quadratic=bool(step.legendre_quadratic),
                              step_uses_g=bool(step.step_uses_g),
@@ -202,7 +204,21 @@ def meta(step, info: dict) -> dict:
             "record_uses_xi": bool(step.record_uses_xi),
             "unknowns": [[str(u[0]), int(u[1]), int(u[2])] for u in step.unknowns],
             "kernels": kernels,
-            "c_work": {k.name: work_sizes(k.function) for k in step.kernels}}
+            "c_work": {k.name: work_sizes(k.function) for k in step.kernels},
+            **_open_meta(step)}
+
+
+def _open_meta(step) -> dict:
+    """meta.json's "open" entry for an open model (absent for a closed one, whose meta.json
+    is unchanged): the step vector's content (hpgen.abi.step_vector_size)."""
+    spec = step.open_spec
+    if spec is None:
+        return {}
+    return {"open": {"H": spec.H, "inputs": list(spec.inputs),
+                     "runtime_parameters": [[name, [int(x) for x in shape]]
+                                            for name, shape in spec.runtime_parameters],
+                     "defaults": [float(v) for v in spec.defaults],
+                     "forced": bool(spec.forced), "time_dependent": bool(spec.time_dependent)}}
 
 
 def emit(step, info: dict) -> GeneratedModule:

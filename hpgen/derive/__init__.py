@@ -5,6 +5,15 @@
 tableau: a hpgen.tableaus.ButcherTableau; tau: a chart map the model's group supports; rkmk:
 an RKMK constraint (both registered in hpgen.schemes). A left-invariant Lagrangian (no g in
 l) gives the reduced Euler-Poincare step, whose unknowns live in the algebra only.
+
+An open model (Model.open_system: forces, control inputs, runtime parameters or t) packs
+what a step needs besides (g, p) into its ``h`` input, the step vector
+hv = [h, t_k, u (m), params (P)] of size H = 2 + m + P (hpgen.abi.step_vector_size): t_k the
+step's start time, u the control inputs (constant over the step), params the runtime
+parameters (Model.runtime_symbols order). The kernels that evaluate l but take no h
+(hpgen.abi.OPEN_EXTRA: legendre, hessian, energy, observe, velocity_step, record) take hv
+as a last input (their t is t_k). A closed model derives exactly the conservative kernels
+(zero forces included), with H = 1.
 """
 from __future__ import annotations
 
@@ -12,9 +21,10 @@ import casadi as ca
 
 from ..schemes import RKMK
 from .action import step_equations
-from .lagrangian import lagrangian_function, to_casadi
+from .lagrangian import lagrangian_function, open_functions, to_casadi
 from .records import record_row, velocity_step
-from .step import KERNEL_NAMES, DiscreteStep, Kernel
+from ..abi import OPEN_EXTRA
+from .step import KERNEL_NAMES, DiscreteStep, Kernel, OpenSpec
 
 __all__ = ["derive", "DiscreteStep", "Kernel", "KERNEL_NAMES"]
 
@@ -42,12 +52,26 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     group.require_chart(tau)
     RKMK.check(rkmk, field="integrator.rkmk")
     n, d = group.n, group.d
-    lag = lagrangian_function(model)
-    reduced = model.left_invariant
     g = ca.SX.sym("g", n, n)
     p = ca.SX.sym("p", d)
-    h = ca.SX.sym("h", 1)
-    eqs = step_equations(group, lag, tableau, tau, rkmk, reduced, g, p, h)
+    is_open = model.open_system
+    if is_open:
+        m, nP = len(model.inputs), len(model.runtime_symbols)
+        hv = ca.SX.sym("h", 2 + m + nP)           # [h, t_k, u, params]
+        h, t, u, P = hv[0], hv[1], hv[2:2 + m], hv[2 + m:]
+        lag_f, force_f = open_functions(model)
+        lag_t = lambda G, X, tt: lag_f(G, X, tt, P)  # noqa: E731
+        lag = lambda G, X: lag_f(G, X, t, P)  # noqa: E731  (at t_k: records, energy)
+        force = (lambda G, X, tt: force_f(G, X, tt, u, P)) if model.forced else None
+        reduced = model.left_invariant and not model.forced and not model.time_dependent
+        eqs = step_equations(group, lag_t, tableau, tau, rkmk, reduced, g, p, h, t, force)
+        extra = [("h", hv)]
+    else:
+        h = hv = ca.SX.sym("h", 1)
+        lag = lagrangian_function(model)
+        reduced = model.left_invariant
+        eqs = step_equations(group, lag, tableau, tau, rkmk, reduced, g, p, h)
+        extra = []
     z = eqs.z
     nz = z.numel()
     gf = _flat(g)
@@ -60,6 +84,8 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     hess = ca.jacobian(mu, xi)
 
     def kernel(name, inputs, outputs):
+        if extra and name in OPEN_EXTRA:
+            inputs = list(inputs) + extra
         names_in = tuple(nm for nm, _ in inputs)
         names_out = tuple(nm for nm, _ in outputs)
         outs = ca.cse([ca.densify(to_mat(e)) for _, e in outputs])  # merge repeated subtrees
@@ -78,27 +104,27 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     theta = ca.SX.sym("theta", 1)
     chart_point = ca.mtimes(g, group.tau(tau, theta * eqs.chart_step))
     kernels = (
-        kernel("residual", [("z", z), ("g", gvec), ("p", p), ("h", h)], [("F", eqs.residual)]),
-        kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", h)], [("J", _flat(J))]),
+        kernel("residual", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("F", eqs.residual)]),
+        kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("J", _flat(J))]),
         # F and J in one pass (shared subexpressions): full Newton's iteration
-        kernel("residual_jacobian", [("z", z), ("g", gvec), ("p", p), ("h", h)],
+        kernel("residual_jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
                [("F", eqs.residual), ("J", _flat(J))]),
-        kernel("update", [("z", z), ("g", gvec), ("p", p), ("h", h)],
+        kernel("update", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
                [("g1", _flat(eqs.g1)), ("p1", eqs.p1)]),
-        kernel("guess", [("xi", eqs.xi_hat), ("g", gvec), ("p", p), ("h", h)], [("z0", eqs.guess)]),
+        kernel("guess", [("xi", eqs.xi_hat), ("g", gvec), ("p", p), ("h", hv)], [("z0", eqs.guess)]),
         kernel("legendre", [("g", gvec), ("xi", xi)], [("mu", mu)]),
         kernel("hessian", [("g", gvec), ("xi", xi)], [("H", _flat(hess))]),
         kernel("energy", [("g", gvec), ("xi", xi)], [("E", ca.dot(mu, xi) - lval)]),
         kernel("momentum", [("g", gvec), ("p", p)], [("m", group.momentum_map(g, p))]),
         kernel("defect", [("g", gvec)], [("e", group.group_defect(g))]),
-        kernel("margin", [("z", z), ("h", h)], [("m", eqs.margin)]),
+        kernel("margin", [("z", z), ("h", hv)], [("m", eqs.margin)]),
         kernel("section", [("g", gvec), ("p", p)], [("s", section_function(model, g, p))]),
-        kernel("chart_point", [("z", z), ("g", gvec), ("h", h), ("theta", theta)],
+        kernel("chart_point", [("z", z), ("g", gvec), ("h", hv), ("theta", theta)],
                [("g_theta", _flat(chart_point))]),
         kernel("observe", [("g", gvec), ("p", p)],
                [("xi", xi_obs), ("E", ca.substitute(ca.dot(mu, xi) - lval, xi, xi_obs)),
                 ("m", group.momentum_map(g, p)), ("e", group.group_defect(g))]),
-        kernel("update_p", [("z", z), ("g", gvec), ("p", p), ("h", h)], [("p1", eqs.p1)]),
+        kernel("update_p", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("p1", eqs.p1)]),
         kernel("velocity_step", [("g", gvec), ("p", p), ("xi", xi)],
                [("xi1", velocity_step(g, p, xi, lag))]),
         kernel("record", [("g", gvec), ("p", p), ("xi", xi)], [("row", row)]),
@@ -109,5 +135,7 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
         tableau_name=tableau.name, tableau_order=tableau.order, tau=tau, rkmk=rkmk,
         reduced=reduced, unknowns=eqs.blocks, kernels=kernels,
         section=getattr(getattr(getattr(model, "scene", None), "section", None), "text", None),
+        open_spec=OpenSpec(model.inputs, model.runtime_parameters, model.runtime_defaults,
+                           model.forced, model.time_dependent) if is_open else None,
         legendre_quadratic=quadratic, record_layout=layout, step_uses_g=step_uses_g,
         record_uses_g=bool(ca.depends_on(row, gf)), record_uses_xi=bool(ca.depends_on(row, xi)))

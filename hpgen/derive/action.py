@@ -14,6 +14,16 @@ Conventions (../shared/notes/math.md, sections 1, 2, 4, 7):
 - Stage multipliers are scaled, mu^i = h N^i, so that every unknown and equation is O(1).
 - The state is (g_k, p_k) with p_k the node momentum (the discrete Legendre transform at
   t_k): p_k + ds_k/deta_0 = 0 and p_{k+1} = ds_k/deta_1.
+- Forces (math.md sec. 9, the discrete Lagrange-d'Alembert principle): the virtual work
+  sum_i h b_i <F_i, eps_i> is added to s_k with F_i = f(G^i, Xi^i, t_k + c_i h) built from
+  the stage variables WITHOUT the variation (G^i = g_k tau(h Theta^i)): it is linear in eps_i,
+  so d/deps_i at 0 gives exactly h b_i F_i and nothing else, and F is never differentiated
+  as a gradient. The residual then depends on F(z), and its Jacobian (taken afterwards by
+  CasADi) contains dF/dz, as Newton needs. The virtual work enters only the eps_i conditions
+  ("b_i f_i + ..."), which every elimination below already carries: the common stage
+  velocity and exact-RKMK eliminations keep working with forces. The reduced Euler-Poincare
+  step does not (a force makes N^i != 0), so the caller passes reduced=False for a forced
+  or time-dependent model.
 """
 from __future__ import annotations
 
@@ -37,12 +47,18 @@ class StepEquations:
 
 
 def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
-                   g, p, h) -> StepEquations:
+                   g, p, h, t=None, force=None) -> StepEquations:
     """Stationarity conditions of s_k for one step.
 
-    group: hpgen.groups.LieGroup; lag: casadi.Function l(g, xi); g (n x n), p (d), h (1):
-    SX symbols of the known state. reduced: l does not depend on g (Euler-Poincare step).
+    group: hpgen.groups.LieGroup; lag: casadi.Function l(g, xi), or with ``t`` given a
+    callable l(g, xi, t); g (n x n), p (d), h (1): SX symbols of the known state.
+    reduced: l does not depend on g nor t and there is no force (Euler-Poincare step).
+    t: SX t_k (None: l does not depend on time); force: None or a callable
+    f(g, xi, t) -> SX d, the left-trivialized generalized force (inputs, parameters bound).
     """
+    if t is None:
+        lag2, lag = lag, (lambda G, X, tt: lag2(G, X))
+        t = ca.SX(0)
     s, d = tableau.stages, group.d
     A, b, c = tableau.A, tableau.b, tableau.c
     exact = rkmk == "exact"
@@ -67,8 +83,12 @@ def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
     # s_k, eq. hpsumfuture, with the multipliers' constraint terms multiplied through by h
     action = ca.SX(0)
     for i in range(s):
-        Gi = ca.mtimes([g, group.tau(tau, h * Th[i]), I_n + group.hat(eps[i])])
-        action += h * b[i] * lag(Gi, Xi[i])
+        Gi0 = ca.mtimes(g, group.tau(tau, h * Th[i]))
+        Gi = ca.mtimes([Gi0, I_n + group.hat(eps[i])])
+        ti = t + c[i] * h
+        action += h * b[i] * lag(Gi, Xi[i], ti)
+        if force is not None:      # virtual work, linear in eps_i: F_i from unvaried stages
+            action += h * b[i] * ca.dot(force(Gi0, Xi[i], ti), eps[i])
         action += ca.dot(h * N[i], chart[i] - h * sum((A[i][j] * R[j] for j in range(s)), ca.SX.zeros(d)))
     chart1 = h * xi1 + ca.mtimes(dti(h * xi1), -eta0) + ca.mtimes(dti(-h * xi1), eta1)
     action += ca.dot(mu1, chart1 - h * sum((b[j] * R[j] for j in range(s)), ca.SX.zeros(d)))
@@ -91,7 +111,7 @@ def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
         # Euler-Poincare, q = 0: N^i = 0, all Xi^i equal (Legendre injective), mu_{k+1} =
         # dl/dxi(Xi): one unknown Xi in the algebra, equation eq. dlp.
         Xc = sym("Xi", d)
-        mu_of = ca.gradient(lag(g, Xc), Xc)
+        mu_of = ca.gradient(lag(g, Xc, t), Xc)
         subs_from = ca.vertcat(*Xi, *N, mu1, *Th, xi1)
         subs_to = ca.vertcat(*[Xc] * s, ca.SX.zeros(d * s), mu_of,
                              *[c[i] * Xc for i in range(s)], Xc)
@@ -104,11 +124,13 @@ def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
 
     if not exact:
         xs = sym("xs", d)
-        common = (_rows_proportional_to_b(A, b)
-                  and not ca.depends_on(ca.gradient(lag(g, xs), xs), g))
+        dldxi = ca.gradient(lag(g, xs, t), xs)
+        common = (_rows_proportional_to_b(A, b) and not ca.depends_on(dldxi, g)
+                  and (not isinstance(t, ca.SX) or t.is_constant() or
+                       not ca.depends_on(dldxi, t)))
         if common:
             return _common_velocity_step(group, lag, tau, tableau, Xi, N, Th, xi1, eq_eps, g,
-                                         p, h, xi_hat)
+                                         p, h, xi_hat, t)
         return _truncated_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_g0,
                                g1, p1, xi_hat, h)
 
@@ -176,9 +198,11 @@ def _truncated_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_
     return _finish(group, tau, z, blocks, residual, final(g1), final(p1), guess, xi_hat, taus, h)
 
 
-def _common_velocity_step(group, lag, tau, tableau, Xi, N, Th, xi1, eq_eps, g, p, h, xi_hat):
+def _common_velocity_step(group, lag, tau, tableau, Xi, N, Th, xi1, eq_eps, g, p, h, xi_hat,
+                          t):
     """q = 0, rows of A multiples of b (a_ij = c_i b_j: Stormer-Verlet, the midpoint rule,
-    symplectic Euler) and dl/dxi independent of g: d unknowns.
+    symplectic Euler) and dl/dxi independent of g and t: d unknowns (forces allowed: they
+    enter through f_i, the eps_i conditions).
 
     The Legendre conditions read dl/dxi(Xi^j) = sum_i (a_ij / b_j) h N^i + mu_{k+1}
     = sum_i c_i h N^i + mu_{k+1} =: M, the same for every j, so every Xi^j is one X
@@ -198,7 +222,7 @@ def _common_velocity_step(group, lag, tau, tableau, Xi, N, Th, xi1, eq_eps, g, p
     c = [float(ci) for ci in tableau.c]
     at_X = lambda e: ca.substitute(e, ca.vertcat(*Xi, *Th, xi1),  # noqa: E731
                                    ca.vertcat(*[X] * s, *[ci * X for ci in c], X))
-    M = ca.gradient(lag(g, X), X)
+    M = ca.gradient(lag(g, X, t), X)
     D_hX = group.dtau_inv(tau, h * X).T
     residual, mu1, kick = p - ca.mtimes(D_hX, M), M, ca.SX.zeros(d)
     for i in range(s):

@@ -11,7 +11,8 @@ MAX_HESSIAN_CONDITION = 1e12
 
 def check_legendre(step, model) -> None:
     """d^2 l / d xi^2 must be nonsingular at the initial state (the scene's, else g = identity,
-    xi = 0), or the discrete Legendre transform, and with it the step, is not defined."""
+    xi = 0; t = 0 and the default runtime parameters for an open model), or the discrete
+    Legendre transform, and with it the step, is not defined."""
     n, d = step.n, step.d
     if model.scene is not None:
         g0 = np.array(model.scene.g0, dtype=float)
@@ -19,7 +20,11 @@ def check_legendre(step, model) -> None:
         where = "at the scene's initial state"
     else:
         g0, xi0, where = np.eye(n), np.zeros(d), "at g = identity, xi = 0"
-    H = np.array(step.kernel("hessian").function(g0.ravel(order="F"), xi0)).reshape(d, d, order="F")
+    spec = step.open_spec     # an open model: at t = 0 with the default runtime parameters
+    extra = () if spec is None else (np.concatenate([[0.0, 0.0], np.zeros(spec.m),
+                                                     spec.defaults]),)
+    H = np.array(step.kernel("hessian").function(g0.ravel(order="F"), xi0, *extra)).reshape(
+        d, d, order="F")
     cond = np.linalg.cond(H) if np.all(np.isfinite(H)) else np.inf
     if not cond < MAX_HESSIAN_CONDITION:
         raise ModelError(f"the Legendre transform is singular {where}: d2l/dxi2 has condition "

@@ -54,14 +54,43 @@ def to_casadi(expr, mapping: dict):
     return walk(expr)
 
 
-def lagrangian_function(model):
-    """l(g, xi) as a casadi.Function of the n x n matrix g and the d-vector xi."""
-    n, d = model.group.n, model.group.d
-    g = ca.SX.sym("g", n, n)
-    xi = ca.SX.sym("xi", d)
+def _mapping(model, g, xi, t=None, params=None, u=None) -> dict:
     mapping = {s: xi[k] for k, s in enumerate(model.xi_symbols)}
     for i, row in enumerate(model.g_symbols):
         for j, s in enumerate(row):
             mapping[s] = g[i, j]
-    expr = to_casadi(model.lagrangian, mapping)
+    if t is not None:
+        from ..model.types import TIME_SYMBOL
+        mapping[TIME_SYMBOL] = t
+        mapping.update({s: params[k] for k, s in enumerate(model.runtime_symbols)})
+        mapping.update({s: u[k] for k, s in enumerate(model.input_symbols)})
+    return mapping
+
+
+def open_functions(model):
+    """(l, f) for a model with forces, inputs, runtime parameters or time (Model.open_system):
+    l(g, xi, t, params) -> scalar and f(g, xi, t, u, params) -> d (the generalized force in
+    g*, left-trivialized, zero when the model has none) as casadi.Functions; g n x n, t a
+    scalar, u (m) the control inputs, params (P) the flat runtime parameters
+    (Model.runtime_symbols order)."""
+    n, d = model.group.n, model.group.d
+    g, xi, t = ca.SX.sym("g", n, n), ca.SX.sym("xi", d), ca.SX.sym("t", 1)
+    u = ca.SX.sym("u", len(model.input_symbols))
+    P = ca.SX.sym("params", len(model.runtime_symbols))
+    mapping = _mapping(model, g, xi, t, P, u)
+    lag = ca.Function("l", [g, xi, t, P], [to_casadi(model.lagrangian, mapping)],
+                      ["g", "xi", "t", "params"], ["l"])
+    f = ca.vertcat(*[to_casadi(e, mapping) for e in model.forces]) if model.forces \
+        else ca.SX.zeros(d)
+    force = ca.Function("f", [g, xi, t, u, P], [f], ["g", "xi", "t", "u", "params"], ["f"])
+    return lag, force
+
+
+def lagrangian_function(model):
+    """l(g, xi) as a casadi.Function of the n x n matrix g and the d-vector xi (a closed
+    model: no t, no runtime parameter; see open_functions otherwise)."""
+    n, d = model.group.n, model.group.d
+    g = ca.SX.sym("g", n, n)
+    xi = ca.SX.sym("xi", d)
+    expr = to_casadi(model.lagrangian, _mapping(model, g, xi))
     return ca.Function("l", [g, xi], [expr], ["g", "xi"], ["l"])

@@ -28,6 +28,32 @@ class Kernel:
 
 
 @dataclass(frozen=True)
+class OpenSpec:
+    """What an open model's step vector hv = [h, t_k, u, params] holds (hpgen.abi).
+
+    inputs: the control inputs' names (m); runtime_parameters: ((name, shape), ...) in order,
+    their entries flat row-major in params (P); defaults: the P default values (the model
+    file's); forced: some force is not identically zero; time_dependent: l or f uses t."""
+    inputs: tuple
+    runtime_parameters: tuple
+    defaults: tuple
+    forced: bool
+    time_dependent: bool
+
+    @property
+    def m(self) -> int:
+        return len(self.inputs)
+
+    @property
+    def P(self) -> int:
+        return len(self.defaults)
+
+    @property
+    def H(self) -> int:
+        return 2 + self.m + self.P
+
+
+@dataclass(frozen=True)
 class DiscreteStep:
     """One step (g_k, p_k) -> (g_{k+1}, p_{k+1}) of a Lie group VPRK method.
 
@@ -52,6 +78,7 @@ class DiscreteStep:
     step_uses_g: bool = True     # residual or update_p depend on g
     record_uses_g: bool = True   # the record row depends on g
     record_uses_xi: bool = True  # the record row depends on xi (velocity_step needed)
+    open_spec: OpenSpec | None = None  # an open model's step vector, else None (closed)
 
     @property
     def record_width(self) -> int:

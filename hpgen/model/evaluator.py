@@ -46,7 +46,10 @@ def _to_array(values: list, shape) -> np.ndarray:
 
 
 def _as_sympy(v):
-    """A parameter value (int, float, list, list of lists) as a sympy scalar / object array."""
+    """A parameter value (int, float, list, list of lists) as a sympy scalar / object array;
+    a runtime parameter's symbol (sympy scalar or object array of them) is returned as is."""
+    if isinstance(v, (np.ndarray, sp.Basic)):
+        return v
     if isinstance(v, list):
         items = [_as_sympy(x) for x in v]
         if items and isinstance(items[0], np.ndarray):
@@ -59,9 +62,12 @@ class _Evaluator:
     """Evaluates a checked tree. ``variables``: the algebra-length vectors the expression may use
     (("xi",) for the Lagrangian, ("mu",) for the section, ("xi", "mu") for a recorded
     expression), symbols ``<name>_k`` (real), with ``<name>_k`` factor slices for products. ``forbidden``: (regex, message) for names refused with a
-    dedicated message (the section's xi)."""
+    dedicated message (the section's xi). ``extra``: further names and their sympy values
+    (the time t, the control inputs of a force). ``refused``: {name: message} for names
+    that exist in the model but not in this expression (an input in the Lagrangian)."""
 
-    def __init__(self, group, parameters: dict, variables=("xi",), forbidden=None):
+    def __init__(self, group, parameters: dict, variables=("xi",), forbidden=None,
+                 extra=None, refused=None):
         from ..groups import group_from_spec
         n, d = group.n, group.d
         self.vars = {v: _to_array([sp.Symbol(f"{v}_{k}", real=True) for k in range(d)], (d,))
@@ -70,6 +76,7 @@ class _Evaluator:
                             for j in range(n)], (n, n))
         self.params, self.cache, self.work = parameters, {}, 0
         self.forbidden = forbidden
+        self.refused = dict(refused or {})
         names = {**self.vars, "g": self.g, "pi": sp.pi}
         factors = self.layouts = group.factors
         self.product = len(factors) > 1
@@ -90,6 +97,7 @@ class _Evaluator:
                 a, b = fg.translation_block
                 names["x" + sfx] = blk[a:b, lay.n - 1]
                 varying.update(blk[a:b, lay.n - 1].flat)
+        names.update(extra or {})
         self.names, self.varying_g = names, varying
 
     # ---- helpers ---------------------------------------------------------------------------
@@ -216,6 +224,8 @@ class _Evaluator:
             return self.names[nm]
         if self.forbidden and self.forbidden[0].fullmatch(nm):
             raise fail(node, self.forbidden[1])
+        if nm in self.refused:
+            raise fail(node, self.refused[nm])
         if nm in self.params:
             if nm not in self.cache:
                 self.cache[nm] = self.checked(node, _as_sympy(self.params[nm]))

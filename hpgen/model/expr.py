@@ -94,14 +94,16 @@ def _final_checks(expr, required, field="lagrangian", what="the Lagrangian") -> 
     return depends
 
 
-def parse_lagrangian(text: str, group, parameters: dict):
+def parse_lagrangian(text: str, group, parameters: dict, extra=None, refused=None):
     """(expr, xi_symbols, g_symbols) for the Lagrangian text on ``group`` (n, d, factors).
 
-    ``parameters`` maps names to validated values (int, float, lists of them). Raises
-    ModelError(field="lagrangian") without file/line (the loader adds them).
+    ``parameters`` maps names to validated values (int, float, lists of them) or, for a
+    runtime parameter, to its sympy symbol(s). ``extra``: further names ({"t": time symbol});
+    ``refused``: {name: message} (the control inputs). Raises ModelError(field="lagrangian")
+    without file/line (the loader adds them).
     """
     tree = parse_checked(text)
-    ev = _Evaluator(group, parameters)
+    ev = _Evaluator(group, parameters, extra=extra, refused=refused)
     try:
         result = ev.walk(tree.body)
     except RecursionError:
@@ -143,13 +145,14 @@ def _refuse_mu_parameters(parameters: dict, field: str, user: str) -> None:
 
 
 def _parse_scalar(text: str, group, parameters: dict, variables, forbidden, field: str,
-                  what: str):
+                  what: str, extra=None, refused=None):
     """(result, evaluator, depends): ``text`` walked with ``variables``; a scalar, checked by
     _final_checks; ``depends`` is True when it contains a variable or a varying entry of g.
     Every ModelError has ``field`` (no file/line; ``expr_line`` kept)."""
     try:
         tree = parse_checked(text)
-        ev = _Evaluator(group, parameters, variables=variables, forbidden=forbidden)
+        ev = _Evaluator(group, parameters, variables=variables, forbidden=forbidden,
+                        extra=extra, refused=refused)
         try:
             result = ev.walk(tree.body)
         except RecursionError:
@@ -168,6 +171,21 @@ def _parse_scalar(text: str, group, parameters: dict, variables, forbidden, fiel
     except ModelError as e:
         raise _relabel(e, field) from None
     return result, ev, depends
+
+
+def parse_force(text: str, group, parameters: dict, extra: dict, field: str):
+    """(expr, xi_symbols, g_symbols) for one component of the generalized force f in g*.
+
+    Same grammar, functions and limits as the Lagrangian, with ``xi`` (symbols equal to
+    Model.xi_symbols), ``g`` and its aliases, the parameters (runtime ones as symbols) and the
+    names in ``extra`` (the time ``t`` and the control inputs). The result must be a finite
+    scalar; it may be constant (a constant torque). Raises ModelError(field=field) without
+    file/line (the loader adds them).
+    """
+    result, ev, _ = _parse_scalar(text, group, parameters, ("xi",), None, field,
+                                  "a force component", extra=extra)
+    return (result, tuple(ev.vars["xi"].tolist()),
+            tuple(tuple(row) for row in ev.g.tolist()))
 
 
 def parse_section(text: str, group, parameters: dict):

@@ -19,13 +19,15 @@ import stat
 
 from ..errors import ModelError
 from ..schemes import RKMK, TAU
-from .types import RESERVED_NAMES, IntegratorChoice, Model
+from .types import (RESERVED_NAMES, TIME_SYMBOL, IntegratorChoice, Model, input_symbol,
+                    runtime_symbol)
 from .yamldoc import MAX_FILE_BYTES, Doc, compose_document, describe, is_number
 
 MAX_NAME_LEN = 64
 MAX_MATRIX_SIZE = 64                # n and d of the group (g has n*n symbols)
 
-TOP_KEYS = ("schema", "name", "group", "parameters", "lagrangian", "integrator", "scene")
+TOP_KEYS = ("schema", "name", "group", "parameters", "lagrangian", "integrator", "scene",
+            "runtime_parameters", "inputs", "forces")
 INTEGRATOR_KEYS = ("tableau", "tau", "rkmk")
 
 C_KEYWORDS = frozenset("""
@@ -152,7 +154,7 @@ def _integrator(doc: Doc, raw) -> IntegratorChoice:
     return IntegratorChoice(**kw)
 
 
-def _lagrangian(doc: Doc, text, group, exact_params):
+def _lagrangian(doc: Doc, text, group, exact_params, refused=None):
     from .expr import parse_lagrangian
     if is_number(text):
         raise doc.error(("lagrangian",), f"the Lagrangian does not depend on xi (it is the "
@@ -161,12 +163,115 @@ def _lagrangian(doc: Doc, text, group, exact_params):
         raise doc.error(("lagrangian",), "expected an expression in xi (and g, parameters), "
                                          f"e.g. 0.5*(xi[0]**2 + xi[1]**2), got {describe(text)}")
     try:
-        return parse_lagrangian(text, group, exact_params)
+        return parse_lagrangian(text, group, exact_params, extra={"t": TIME_SYMBOL},
+                                refused=refused)
     except ModelError as e:
         line = doc.line(("lagrangian",))
         if line and doc.lagrangian_style == "|" and getattr(e, "expr_line", None):
             line += e.expr_line
         raise e.located(doc.file, "lagrangian", line) from None
+
+
+def _name_list(doc: Doc, key: str, raw, what: str) -> list:
+    """A YAML list of distinct identifiers (``runtime_parameters``, ``inputs``)."""
+    if not isinstance(raw, list):
+        raise doc.error((key,), f"expected a list of {what} names, e.g. [{'c' if key != 'inputs' else 'u0'}], "
+                                f"got {describe(raw)}")
+    seen = set()
+    for i, name in enumerate(raw):
+        check_identifier(doc, (key, i), name, f"{what} name")
+        if name in seen:
+            raise doc.error((key, i), f"{name!r} is listed twice")
+        seen.add(name)
+    return list(raw)
+
+
+def _runtime_parameters(doc: Doc, raw, stored, exact) -> tuple:
+    """((name, shape), ...), the flat symbols, their defaults, and ``exact`` with each runtime
+    parameter replaced by its symbol(s) (a sympy scalar or an object array of the shape)."""
+    import numpy as np
+    if raw is None:
+        return (), (), (), exact
+    names = _name_list(doc, "runtime_parameters", raw, "runtime parameter")
+    values = dict(stored)
+    exact = dict(exact)
+    spec, syms, defaults = [], [], []
+    for i, name in enumerate(names):
+        if name not in values:
+            avail = ", ".join(values) or "none"
+            raise doc.error(("runtime_parameters", i),
+                            f"unknown runtime parameter {name!r}: it must be declared in "
+                            f"parameters (its value there is the default; declared: {avail})")
+        v = np.asarray(values[name], dtype=float)
+        entries = [runtime_symbol(name, idx) for idx in np.ndindex(v.shape)]
+        spec.append((name, v.shape))
+        syms += entries
+        defaults += [float(x) for x in v.ravel()]
+        if v.shape:
+            arr = np.empty(len(entries), dtype=object)
+            arr[:] = entries
+            exact[name] = arr.reshape(v.shape)
+        else:
+            exact[name] = entries[0]
+    return tuple(spec), tuple(syms), tuple(defaults), exact
+
+
+def _inputs(doc: Doc, raw, stored) -> tuple:
+    if raw is None:
+        return ()
+    names = _name_list(doc, "inputs", raw, "input")
+    params = dict(stored)
+    for i, name in enumerate(names):
+        if name in params:
+            raise doc.error(("inputs", i), f"input name {name!r} is also a parameter; "
+                                           "choose another name")
+        if name in RESERVED_NAMES or name in ("pi", "mu") or _FACTOR_NAME.fullmatch(name) \
+                or keyword.iskeyword(name):
+            raise doc.error(("inputs", i), f"input name {name!r} is reserved (reserved: "
+                                           f"{', '.join(RESERVED_NAMES)}, pi, mu, xi_k, g_k, "
+                                           "R_k, x_k and Python keywords)")
+    return tuple(names)
+
+
+def _forces(doc: Doc, raw, group, exact, inputs) -> tuple:
+    """(sympy expressions, texts): one component of f in g* per algebra coordinate."""
+    from .expr import parse_force
+    d = group.d
+    if not isinstance(raw, list):
+        raise doc.error(("forces",), f"expected a list of {d} expressions (one per algebra "
+                                     f"coordinate, in the order of xi), got {describe(raw)}")
+    if len(raw) != d:
+        raise doc.error(("forces",), f"expected {d} expressions (one per algebra coordinate of "
+                                     f"{group.name}, in the order of xi), got {len(raw)}")
+    extra = {"t": TIME_SYMBOL, **{u: input_symbol(u) for u in inputs}}
+    exprs, texts = [], []
+    for i, text in enumerate(raw):
+        field = f"forces[{i}]"
+        if is_number(text):
+            text = repr(float(text)) if not isinstance(text, int) else str(text)
+        if not isinstance(text, str) or not text.strip():
+            raise doc.error(("forces", i), "expected an expression in xi, g, t, parameters and "
+                                           f"inputs (or a number), got {describe(text)}")
+        try:
+            expr, _, _ = parse_force(text, group, exact, extra, field)
+        except ModelError as e:
+            raise e.located(doc.file, field, doc.line(("forces", i))) from None
+        exprs.append(expr)
+        texts.append(text)
+    return tuple(exprs), tuple(texts)
+
+
+def _refuse_runtime_in_scene(doc: Doc, scene, runtime_syms) -> None:
+    """The scene's section and recorded expressions are frozen: no runtime parameter."""
+    rs = set(runtime_syms)
+    items = [(("scene", "section"), scene.section)] if scene.section is not None else []
+    items += [(("scene", "record"), r) for r in scene.expressions]
+    for path, item in items:
+        used = sorted(str(s).split(":", 1)[1] for s in item.expr.free_symbols & rs)
+        if used:
+            raise doc.error(path, f"uses the runtime parameter {used[0].split('[')[0]!r}; the "
+                                  "scene's section and recorded expressions may use only fixed "
+                                  "parameters")
 
 
 def build_model(doc: Doc, text: str) -> Model:
@@ -180,15 +285,27 @@ def build_model(doc: Doc, text: str) -> Model:
     name = check_identifier(doc, ("name",), data["name"], "model name")
     group = _group(doc, data["group"])
     stored, exact = _parameters(doc, data.get("parameters"))
+    runtime, rsyms, rdefaults, lag_params = _runtime_parameters(
+        doc, data.get("runtime_parameters"), stored, exact)
+    inputs = _inputs(doc, data.get("inputs"), stored)
     integrator = _integrator(doc, data.get("integrator"))
-    lag, xi_syms, g_syms = _lagrangian(doc, data["lagrangian"], group, exact)
+    refused = {u: f"the input {u!r} may not appear in the Lagrangian (control inputs enter "
+                  "through forces only)" for u in inputs}
+    lag, xi_syms, g_syms = _lagrangian(doc, data["lagrangian"], group, lag_params, refused)
+    forces, forces_text = (), ()
+    if data.get("forces") is not None:
+        forces, forces_text = _forces(doc, data["forces"], group, lag_params, inputs)
     scene = None
     if data.get("scene") is not None:
         from .scene import parse_scene
-        scene = parse_scene(doc, data["scene"], group, exact)
+        scene = parse_scene(doc, data["scene"], group, lag_params)
+        _refuse_runtime_in_scene(doc, scene, rsyms)
     return Model(name=name, path=doc.file, source=text, group_spec=data["group"], group=group,
                  parameters=stored, lagrangian_text=data["lagrangian"], lagrangian=lag,
-                 xi_symbols=xi_syms, g_symbols=g_syms, integrator=integrator, scene=scene)
+                 xi_symbols=xi_syms, g_symbols=g_syms, integrator=integrator, scene=scene,
+                 runtime_parameters=runtime, runtime_symbols=rsyms, runtime_defaults=rdefaults,
+                 inputs=inputs, input_symbols=tuple(input_symbol(u) for u in inputs),
+                 forces=forces, forces_text=forces_text)
 
 
 def load_model_text(text, filename: str = "<string>") -> Model:

@@ -4,8 +4,24 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+import sympy as sp
+
 #: names the Lagrangian may use besides parameters (see hpgen.model.expr for products)
-RESERVED_NAMES = ("xi", "g", "R", "x", "dot", "sin", "cos", "tan", "exp", "log", "sqrt")
+RESERVED_NAMES = ("xi", "g", "R", "x", "t", "dot", "sin", "cos", "tan", "exp", "log", "sqrt")
+
+#: the time t of the Lagrangian and the forces (at stage i of step k: t_k + c_i h)
+TIME_SYMBOL = sp.Symbol("t", real=True)
+
+
+def runtime_symbol(name: str, index=()) -> Any:
+    """The symbol of entry ``index`` (() for a scalar) of the runtime parameter ``name``.
+    Its name holds a ':' so it can clash with no variable or parameter symbol."""
+    return sp.Symbol("param:" + name + "".join(f"[{i}]" for i in index), real=True)
+
+
+def input_symbol(name: str) -> Any:
+    """The symbol of the control input ``name`` (held constant over each step)."""
+    return sp.Symbol("input:" + name, real=True)
 
 
 @dataclass(frozen=True)
@@ -90,6 +106,42 @@ class Model:
     g_symbols: tuple
     integrator: IntegratorChoice = field(default_factory=IntegratorChoice)
     scene: Scene | None = None
+    # forced, controlled and time-dependent models (issue 16); the defaults are a closed,
+    # conservative model whose parameters are all frozen into the generated code.
+    #: ((name, shape), ...) in file order: the parameters that are kernel inputs; shape () for
+    #: a number, (k,) a vector, (r, c) a matrix. Their file values are the defaults.
+    runtime_parameters: tuple = ()
+    #: the flat symbols of the runtime parameters, names in order, entries row-major: the
+    #: kernel input ``params`` in this order (runtime_symbol)
+    runtime_symbols: tuple = ()
+    #: the defaults of runtime_symbols (floats, same order)
+    runtime_defaults: tuple = ()
+    #: the control inputs' names and their symbols (input_symbol): the kernel input ``u``
+    inputs: tuple = ()
+    input_symbols: tuple = ()
+    #: the generalized force f in g*, left-trivialized (body frame), one sympy scalar per
+    #: algebra coordinate in the order of xi (SE3: torque first); () when the file has none.
+    #: Free symbols: xi_symbols, g_symbols, TIME_SYMBOL, runtime_symbols, input_symbols.
+    forces: tuple = ()
+    forces_text: tuple = ()
+
+    @property
+    def forced(self) -> bool:
+        """True when some force component is not identically zero."""
+        return any(f.is_zero is not True for f in self.forces)
+
+    @property
+    def open_system(self) -> bool:
+        """True when the step kernels need the inputs t, u and params: forces that are not
+        identically zero, control inputs, runtime parameters or a time-dependent Lagrangian.
+        A closed model (zero forces included) derives exactly the conservative step."""
+        return bool(self.forced or self.inputs or self.runtime_parameters
+                    or self.time_dependent)
+
+    @property
+    def time_dependent(self) -> bool:
+        """True when the Lagrangian or a force depends on the time t."""
+        return any(TIME_SYMBOL in e.free_symbols for e in (self.lagrangian, *self.forces))
 
     @property
     def left_invariant(self) -> bool:

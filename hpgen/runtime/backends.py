@@ -54,8 +54,8 @@ class _Backend:
         """Number of global steps k in (k0, k0 + steps] with k % every == 0."""
         return (k0 + steps) // every - k0 // every
 
-    def simulate(self, g0, p0, h, z0, steps, every, opts):
-        run = self.start(g0, p0, z0)
+    def simulate(self, g0, p0, h, z0, steps, every, opts, inputs=None):
+        run = self.start(g0, p0, z0) if inputs is None else self.start(g0, p0, z0, inputs)
         done, g_rec, p_rec, st = self.advance(run, h, steps, every, opts)
         nn = self.n * self.n
         g_all = np.concatenate([np.asarray(g0, dtype=np.float64).reshape(1, nn), g_rec])
@@ -107,13 +107,13 @@ class PythonBackend(_Backend):
 
     def step(self, g, p, hv, z, opts):
         g, p, z = self._lists(g, p, z)
-        hv = [float(np.asarray(hv, dtype=np.float64).reshape(-1)[0])]
+        hv = np.asarray(hv, dtype=np.float64).reshape(-1).tolist()
         code, g1, p1, z, it, r, _ = newton._arrays(newton.step_lists(
             self._newton, g, p, hv, z, opts, newton.NewtonMemory()))
         return code, g1, p1, z, it, r
 
-    def start(self, g0, p0, z0):
-        return loop.Run(*self._lists(g0, p0, z0))
+    def start(self, g0, p0, z0, inputs=None):
+        return loop.Run(*self._lists(g0, p0, z0), inputs)
 
     def advance(self, run, h, steps, every, opts):
         """(steps done, g_rec (K, nn), p_rec (K, d), status); K records of this call."""
@@ -147,23 +147,33 @@ class PythonBackend(_Backend):
                                                  opts)
         return _section_arrays(done, recs, st, self.n * self.n, self.d)
 
-    def _row_of(self):
+    def _row_of(self, inputs=None):
+        """row_of(g, p, k, h) -> (code, row) of the record after global step k (an open
+        module's kernels get the run's step vector at that time, StepInputs.at_record)."""
         m = self.meta
         raw = self._raw
         rec, vel, w = raw["record"], raw["velocity_step"], self.record_width
         uses_xi, quad = m["record_uses_xi"], m["legendre_quadratic"]
-        return lambda g, p: loop.record_row(rec, vel, w, g, p, uses_xi, quad)
+        if inputs is None:
+            return lambda g, p, k=0, h=0.0: loop.record_row(rec, vel, w, g, p, uses_xi, quad)
 
-    def record(self, g, p):
-        """(code, row (W,)): the scene's record row at (g flat, p), like hpgen_record."""
-        code, row = self._row_of()(_flat(g, self.n * self.n, "g").tolist(),
-                                   _flat(p, self.d, "p").tolist())
+        def row_of(g, p, k=0, h=0.0):
+            hv = inputs.at_record(h, k)
+            return loop.record_row(lambda *a: rec(*a, hv), lambda *a: vel(*a, hv), w, g, p,
+                                   uses_xi, quad)
+        return row_of
+
+    def record(self, g, p, inputs=None):
+        """(code, row (W,)): the scene's record row at (g flat, p), like hpgen_record (an
+        open module: at the start time of ``inputs``)."""
+        code, row = self._row_of(inputs)(_flat(g, self.n * self.n, "g").tolist(),
+                                         _flat(p, self.d, "p").tolist())
         return code, np.array(row, dtype=np.float64)
 
     def advance_record(self, run, h, steps, every, opts):
         """(steps done, rows (K, W), status): the record rows of this call (hpgen_advance_record;
         without g when meta skip_g)."""
-        done, rows, st = loop.advance_record(self._newton, self._row_of(), run, h, steps,
+        done, rows, st = loop.advance_record(self._newton, self._row_of(run.inputs), run, h, steps,
                                                every, opts, self.skip_g)
         return done, np.array(rows, dtype=np.float64).reshape(len(rows), self.record_width), st
 

@@ -100,6 +100,9 @@ class CBackend(_Backend):
 
     def __init__(self, module_dir, meta: dict, cc=None, cflags=None):
         super().__init__(meta)
+        #: an open module (meta "open"): hpgen_step takes the step vector, runs carry their
+        #: inputs (hpgen_run_set_inputs), and the record/observe functions are not built
+        self.open = meta.get("open")
         self.library = build_library(module_dir, cc=cc, cflags=cflags)
         try:
             lib = ctypes.CDLL(str(self.library))
@@ -122,8 +125,9 @@ class CBackend(_Backend):
             fn.restype = ctypes.c_int
             self._fns[k] = fn
         P, LL, D = ctypes.c_void_p, ctypes.c_longlong, ctypes.c_double
+        closed_only = ("hpgen_observe",)
         for name, args, res in (
-                ("hpgen_step", [P, P, D, P, P, P, P, P], ctypes.c_int),
+                ("hpgen_step", [P, P, P if self.open else D, P, P, P, P, P], ctypes.c_int),
                 ("hpgen_run_size", [], LL),
                 ("hpgen_run_init", [P, P, P, P], None),
                 ("hpgen_run_get", [P, P, P, P], LL),
@@ -131,9 +135,13 @@ class CBackend(_Backend):
                 ("hpgen_advance_sections", [P, D, LL, P, LL, P, P, P, P, P, P], LL),
                 ("hpgen_observe", [LL, P, P, P, P, P, P], LL),
                 ("hpgen_advance_batch", [P, LL, D, LL, LL, P, LL, P, P, P], LL),
-                ("hpgen_record", [P, P, P], ctypes.c_int),
+                ("hpgen_record", [P, P, P] + [P] * bool(self.open), ctypes.c_int),
                 ("hpgen_advance_record", [P, D, LL, LL, P, P, P, P], LL),
-                ("hpgen_advance_record_batch", [P, LL, D, LL, LL, P, LL, P, P, P], LL)):
+                ("hpgen_advance_record_batch", [P, LL, D, LL, LL, P, LL, P, P, P], LL),
+                ("hpgen_run_set_inputs", [P, D, P, LL, P], None)):
+            if (self.open and name in closed_only) or (
+                    not self.open and name == "hpgen_run_set_inputs"):
+                continue
             fn = getattr(lib, name)
             fn.argtypes, fn.restype = args, res
         self.run_size = int(lib.hpgen_run_size())
@@ -202,7 +210,12 @@ class CBackend(_Backend):
         g, p = _flat(g, nn, "g"), _flat(p, d, "p")
         z = np.array(_flat(z, self.nz, "z"))
         g1, p1, st, o = np.zeros(nn), np.zeros(d), _Status(), _Options.of(opts)
-        code = self._lib.hpgen_step(g.ctypes.data, p.ctypes.data, float(hv[0]), z.ctypes.data,
+        if self.open:
+            hv = np.array(hv, dtype=np.float64)
+            harg = hv.ctypes.data
+        else:
+            harg = float(hv[0])
+        code = self._lib.hpgen_step(g.ctypes.data, p.ctypes.data, harg, z.ctypes.data,
                                     ctypes.byref(o), g1.ctypes.data, p1.ctypes.data,
                                     ctypes.byref(st))
         if code < 0:
@@ -211,14 +224,27 @@ class CBackend(_Backend):
             return code, None, None, z, st.iterations, st.residual
         return code, g1, p1, z, st.iterations, st.residual
 
-    def start(self, g0, p0, z0):
-        """A run (a ctypes byte buffer holding a C ``hpgen_run``) at (g0, p0), start z0."""
+    def start(self, g0, p0, z0, inputs=None):
+        """A run (a ctypes byte buffer holding a C ``hpgen_run``) at (g0, p0), start z0; an
+        open module's run gets its StepInputs (the input rows and parameters are kept alive
+        on the buffer, which the C run points into)."""
         nn, d = self.n * self.n, self.d
         g0, p0 = _flat(g0, nn, "g0"), _flat(p0, d, "p0")
         z0 = _flat(z0, self.nz, "z0")
         run = ctypes.create_string_buffer(self.run_size)
         self._init_run(run, g0, p0, z0)
+        if self.open:
+            run.keep = self._set_inputs(run, inputs)
         return run
+
+    def _set_inputs(self, run, inputs):
+        if inputs is None:
+            raise ValueError("an open module's run needs its inputs (t0, u, params)")
+        U = np.ascontiguousarray(inputs.rows, dtype=np.float64)
+        params = np.ascontiguousarray(inputs.params, dtype=np.float64)
+        self._lib.hpgen_run_set_inputs(run, float(inputs.t0), U.ctypes.data, len(inputs.rows),
+                                       params.ctypes.data)
+        return U, params
 
     def _init_run(self, run, g0, p0, z0):
         """hpgen_run_init from flat arrays of the right sizes (copied in: this thread's
@@ -227,11 +253,11 @@ class CBackend(_Backend):
         st.ins[0][...], st.ins[1][...], st.ins[2][...] = g0, p0, z0
         self._lib.hpgen_run_init(run, *st.ptrs[:3])
 
-    def simulate(self, g0, p0, h, z0, steps, every, opts):
+    def simulate(self, g0, p0, h, z0, steps, every, opts, inputs=None):
         """_Backend.simulate in one pair of record arrays: step 0 in row 0, hpgen_advance
         writing from row 1 (a new run is at k = 0: no state query)."""
         nn, d = self.n * self.n, self.d
-        run = self.start(g0, p0, z0)
+        run = self.start(g0, p0, z0, inputs)
         K = self.records_in(0, steps, every) + 1
         g_all, p_all = np.zeros((K, nn)), np.zeros((K, d))
         g_all[0], p_all[0] = g0, p0
@@ -289,23 +315,29 @@ class CBackend(_Backend):
         K = n_rec.value
         return int(done), k_rec[:K], t_rec[:K], g_rec[:K], p_rec[:K], st.as_dict()
 
-    def _batch_runs(self, g0s, p0s, z0s):
-        """(buffer, its address): B C runs, run b started at (g0s[b], p0s[b]), z0s[b]."""
+    def _batch_runs(self, g0s, p0s, z0s, inputs=None):
+        """(buffer, its address): B C runs, run b started at (g0s[b], p0s[b]), z0s[b], with
+        inputs[b] (StepInputs) for an open module."""
         nn, d, B = self.n * self.n, self.d, len(g0s)
         runs = ctypes.create_string_buffer(self.run_size * B)
         base = ctypes.addressof(runs)
+        keep = []
         for b in range(B):
             g0, p0 = _flat(g0s[b], nn, "g0"), _flat(p0s[b], d, "p0")
             self._init_run(base + b * self.run_size, g0, p0, _flat(z0s[b], self.nz, "z0"))
+            if self.open:
+                keep.append(self._set_inputs(base + b * self.run_size, inputs[b]))
+        runs.keep = keep
         return runs, base
 
-    def simulate_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads, bar=None):
+    def simulate_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads, inputs=None,
+                       bar=None):
         """B independent runs; each thread advances a contiguous slice of them with one C
         call (ctypes releases the GIL). Returns (done (B,), g_rec (B, K, nn), p_rec (B, K, d),
         statuses); K = steps // every + 1 including step 0; rows after a failure are 0."""
         nn, d, B = self.n * self.n, self.d, len(g0s)
         K = steps // every + 1
-        runs, base = self._batch_runs(g0s, p0s, z0s)
+        runs, base = self._batch_runs(g0s, p0s, z0s, inputs)
         g_rec, p_rec = np.zeros((B, K, nn)), np.zeros((B, K, d))
         g_rec[:, 0] = np.asarray(g0s, dtype=np.float64).reshape(B, nn)
         p_rec[:, 0] = np.asarray(p0s, dtype=np.float64).reshape(B, d)
@@ -321,11 +353,16 @@ class CBackend(_Backend):
         done = np.array([s.step for s in sts])
         return done, g_rec, p_rec, [s.as_dict() for s in sts]
 
-    def record(self, g, p):
-        """(code, row (W,)): the scene's record row at (g flat, p) (hpgen_record)."""
+    def record(self, g, p, inputs=None):
+        """(code, row (W,)): the scene's record row at (g flat, p) (hpgen_record; an open
+        module's at the start time of ``inputs``)."""
         g, p = _flat(g, self.n * self.n, "g"), _flat(p, self.d, "p")
         row = np.zeros(self.record_width)
-        code = self._lib.hpgen_record(g.ctypes.data, p.ctypes.data, row.ctypes.data)
+        extra = ()
+        if self.open:
+            hv = np.array(inputs.at_record(0.0, 0), dtype=np.float64)
+            extra = (hv.ctypes.data,)
+        code = self._lib.hpgen_record(g.ctypes.data, p.ctypes.data, row.ctypes.data, *extra)
         return int(code), row
 
     def advance_record(self, run, h, steps, every, opts):

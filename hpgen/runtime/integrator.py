@@ -22,6 +22,7 @@ from .. import abi
 from ..errors import ConvergenceError, ModelError
 from . import newton as _newton
 from .args import _array, _error, _int, _positive
+from .inputs import batch_inputs, check_params, check_t0, step_inputs
 from .newton import NewtonOptions
 from .progress import bar as progress_bar
 from .records import RecordsMixin
@@ -40,6 +41,8 @@ class Integrator(SectionsMixin, RecordsMixin):
         self.backend = backend.name
         self.n, self.d, self.nz = meta["n"], meta["d"], meta["nz"]
         self._cond_last = None     # (bytes of the last Hessian checked, its cond) (_cond)
+        #: an open module's step vector (meta.json "open", hpgen.abi), None when closed
+        self.open = meta.get("open")
 
     def __repr__(self):
         return f"<hpgen Integrator {self.meta['module']} backend={self.backend}>"
@@ -55,16 +58,35 @@ class Integrator(SectionsMixin, RecordsMixin):
         """Evaluate one kernel on flat column-major arrays; returns its outputs (a list)."""
         return self._b.call(name, *args)
 
-    # ---- kernels ------------------------------------------------------------------------
-    def legendre(self, g, xi) -> np.ndarray:
-        """mu = dl/dxi (g, xi)."""
-        return self._b.call("legendre", self._g(g), self._v(xi, "xi"))[0]
+    # ---- open modules (forces, inputs, runtime parameters, t; hpgen.runtime.inputs) ------
+    def _lv(self, t=0.0, params=None) -> tuple:
+        """The extra argument of the kernels that evaluate l without h (abi.OPEN_EXTRA):
+        () for a closed module, else (hv,) with hv = [0, t, 0 (m), params] (l takes no u)."""
+        if self.open is None:
+            return ()
+        flat = params if isinstance(params, list) else check_params(self.open, params)
+        return (np.array([0.0, float(t)] + [0.0] * len(self.open["inputs"]) + flat),)
 
-    def velocity(self, g, mu, *, newton: NewtonOptions | None = None):
+    def _closed_only(self, what: str) -> None:
+        """Refuse a method that does not run open modules yet (issue 16, work in progress)."""
+        if self.open is not None:
+            raise ModelError(f"{what} does not run models with forces, inputs, runtime "
+                             "parameters or t yet; use simulate, stream or step",
+                             field="backend")
+
+    # ---- kernels ------------------------------------------------------------------------
+    def legendre(self, g, xi, *, t=0.0, params=None) -> np.ndarray:
+        """mu = dl/dxi (g, xi) (at time t, with the runtime parameters ``params``, for an
+        open module)."""
+        return self._b.call("legendre", self._g(g), self._v(xi, "xi"),
+                            *self._lv(check_t0(t), params))[0]
+
+    def velocity(self, g, mu, *, newton: NewtonOptions | None = None, t=0.0, params=None):
         """xi with legendre(g, xi) = mu: full Newton from xi = 0 with the hessian kernel
         (newton: its tol and maxit)."""
         o = self._options(newton, full=True)
-        return self._velocity(self._g(g), self._v(mu, "mu"), o.tol, o.maxit)
+        return self._velocity(self._g(g), self._v(mu, "mu"), o.tol, o.maxit,
+                              self._lv(check_t0(t), params))
 
     def _cond(self, Hf, H):
         """cond(H) of the Hessian H (Hf its flat column-major array), None when H has a
@@ -82,15 +104,15 @@ class Integrator(SectionsMixin, RecordsMixin):
         self._cond_last = (key, cond)
         return cond
 
-    def _velocity(self, gf, mu, tol=abi.DEFAULT_TOL, maxit=abi.DEFAULT_MAXIT):
+    def _velocity(self, gf, mu, tol=abi.DEFAULT_TOL, maxit=abi.DEFAULT_MAXIT, lv=()):
         """velocity from g flat column-major and mu, both checked: newton.newton on
         F = legendre - mu, J = hessian; every Hessian passes the singular-Legendre check
         first (_cond)."""
         d, call = self.d, self._b.call
 
         def fun(xi):
-            F = call("legendre", gf, xi)[0] - mu
-            Hf = call("hessian", gf, xi)[0]
+            F = call("legendre", gf, xi, *lv)[0] - mu
+            Hf = call("hessian", gf, xi, *lv)[0]
             H = Hf.reshape(d, d, order="F")
             cond = self._cond(Hf, H)          # None: H has a non-finite entry
             if cond is not None and not cond <= COND_MAX:
@@ -106,29 +128,42 @@ class Integrator(SectionsMixin, RecordsMixin):
                                    iterations=it)
         return xi
 
-    def observe(self, g, mu) -> dict:
+    def observe(self, g, mu, *, t=None, inputs=None) -> dict:
         """Observables of K records, g (K, n, n), mu (K, d) node momenta: arrays xi (K, d)
         (Legendre inverse), energy (K,), momentum (K, d) (spatial), defect (K,). One C call
         (kernel observe) when l is quadratic in xi (meta legendre_quadratic: its one Newton
         step from xi = 0 is exact); otherwise xi and energy are refined record by record with
-        ``velocity`` (Newton, the singular-Legendre check included)."""
+        ``velocity`` (Newton, the singular-Legendre check included). An open module
+        evaluates l at the records' times ``t`` (K,) with the run's ``inputs`` (StepInputs:
+        its runtime parameters), record by record."""
         g = np.asarray(g, dtype=np.float64).reshape(-1, self.n, self.n)
         mu = np.asarray(mu, dtype=np.float64).reshape(-1, self.d)
         K = len(mu)
         gf = np.ascontiguousarray(g.transpose(0, 2, 1)).reshape(K, self.n * self.n)
-        done, xi, E, m, e = self._b.observe(gf, mu)
-        exact = bool(self.meta.get("legendre_quadratic"))
+        if self.open is None:
+            done, xi, E, m, e = self._b.observe(gf, mu)
+            exact = bool(self.meta.get("legendre_quadratic"))
+        else:
+            done, exact = 0, False
+            xi, E, m, e = np.zeros((K, self.d)), np.zeros(K), np.zeros((K, self.d)), np.zeros(K)
+            params = inputs.params if inputs is not None else check_params(self.open, None)
+            t = np.zeros(K) if t is None else np.asarray(t, dtype=np.float64)
         for k in range(0 if not exact else done, K):
-            xi[k] = self.velocity(g[k], mu[k])
-            E[k] = self._b.call("energy", gf[k], xi[k])[0][0]
+            lv = () if self.open is None else self._lv(t[k], params)
+            xi[k] = self._velocity(gf[k], mu[k], lv=lv)
+            E[k] = self._b.call("energy", gf[k], xi[k], *lv)[0][0]
             if k >= done:
                 m[k] = self._b.call("momentum", gf[k], mu[k])[0]
                 e[k] = self._b.call("defect", gf[k])[0][0]
         return {"xi": xi, "energy": E, "momentum": m, "defect": e}
 
-    def energy(self, g, mu) -> float:
-        """Energy <dl/dxi, xi> - l at (g, xi = velocity(g, mu))."""
-        return float(self._b.call("energy", self._g(g), self.velocity(g, mu))[0][0])
+    def energy(self, g, mu, *, t=0.0, params=None) -> float:
+        """Energy <dl/dxi, xi> - l at (g, xi = velocity(g, mu)) (at time t, with ``params``,
+        for an open module)."""
+        lv = self._lv(check_t0(t), params)
+        return float(self._b.call("energy", self._g(g),
+                                  self._velocity(self._g(g), self._v(mu, "mu"), lv=lv),
+                                  *lv)[0][0])
 
     def momentum(self, g, mu) -> np.ndarray:
         """Spatial momentum Ad*_{g^{-1}} mu."""
@@ -162,15 +197,21 @@ class Integrator(SectionsMixin, RecordsMixin):
                              _int(newton.maxit, "newton.maxit", 1), bool(simplified),
                              bool(newton.predictor))
 
-    def step(self, g, p, h, z=None, *, newton: NewtonOptions | None = None):
+    def step(self, g, p, h, z=None, *, newton: NewtonOptions | None = None, u=None,
+             params=None, t=0.0):
         """(g_{k+1}, p_{k+1}) from (g_k, p_k). z: Newton start (default: guess from the
         velocity of (g, p)). Full Newton unless newton.simplified is True (a cold start).
-        Raises ConvergenceError / DomainError (step 0, t = 0)."""
+        An open module takes the step's start time t, its inputs u (m,) and ``params``
+        (overrides of the runtime parameters). Raises ConvergenceError / DomainError
+        (step 0, t = 0)."""
         gf, p = self._g(g), self._v(p, "p")
-        hv = np.array([_positive(h, "h")])
+        h = _positive(h, "h")
+        inputs = step_inputs(self.open, 1, u, params, t)
+        hv = np.array([h] if inputs is None else inputs.hv(h, 0))
         opts = self._options(newton, full=True)
         if z is None:
-            z = self._b.call("guess", self.velocity(g, p), gf, p, hv)[0]
+            lv = () if inputs is None else self._lv(inputs.t0, inputs.params)
+            z = self._b.call("guess", self._velocity(gf, p, lv=lv), gf, p, hv)[0]
         else:
             z = _array(z, (self.nz,), "z", "a vector of length nz")
         code, g1, p1, _, it, r = self._b.step(gf, p, hv, z, opts)
@@ -178,8 +219,9 @@ class Integrator(SectionsMixin, RecordsMixin):
             raise _error(code, 0, 0.0, r, it)
         return g1.reshape(self.n, self.n, order="F"), p1
 
-    def _initial(self, g0, xi0, mu0):
-        """(g0 flat, mu0, xi0) from g0 and exactly one of xi0 / mu0, checked."""
+    def _initial(self, g0, xi0, mu0, lv=()):
+        """(g0 flat, mu0, xi0) from g0 and exactly one of xi0 / mu0, checked; lv: the
+        open module's extra argument of l at the start (_lv)."""
         g0 = _array(g0, (self.n, self.n), "g0", "an n x n matrix")
         if (xi0 is None) == (mu0 is None):
             raise ModelError("give exactly one of xi0 (velocity) and mu0 (momentum)",
@@ -191,17 +233,18 @@ class Integrator(SectionsMixin, RecordsMixin):
                              field="initial g")
         if xi0 is not None:
             xi0 = self._v(xi0, "xi0")
-            mu0 = self._b.call("legendre", gf, xi0)[0]
+            mu0 = self._b.call("legendre", gf, xi0, *lv)[0]
         else:
             mu0 = self._v(mu0, "mu0")
-            xi0 = self._velocity(gf, mu0)
+            xi0 = self._velocity(gf, mu0, lv=lv)
         return gf, mu0, xi0
 
-    def _trajectory(self, done, g_rec, p_rec, st, h, every):
+    def _trajectory(self, done, g_rec, p_rec, st, h, every, inputs=None, t0=0.0):
         K = done // every + 1
-        return self._records(np.asarray(g_rec)[:K], np.asarray(p_rec)[:K], st, h, every, 0.0)
+        return self._records(np.asarray(g_rec)[:K], np.asarray(p_rec)[:K], st, h, every, t0,
+                             inputs)
 
-    def _records(self, g_rec, p_rec, st, h, every, t0):
+    def _records(self, g_rec, p_rec, st, h, every, t0, inputs=None):
         """Trajectory of flat column-major records starting at time t0; error set (and its
         .partial) when the status is a failure."""
         K, n = len(p_rec), self.n
@@ -216,61 +259,87 @@ class Integrator(SectionsMixin, RecordsMixin):
         traj = Trajectory(t=t0 + t if t0 else t, g=g, mu=np.array(p_rec), h=h,
                           every=every, partial=err is not None, error=err,
                           newton_iterations=int(st["total_iterations"]),
-                          jacobians=int(st["jacobians"]), integrator=self)
+                          jacobians=int(st["jacobians"]), integrator=self, inputs=inputs)
         if err is not None:
             err.partial = traj
         return traj
 
-    def _prepare(self, g0, h, steps, xi0, mu0, every, newton):
+    def _prepare(self, g0, h, steps, xi0, mu0, every, newton, u=None, params=None, t0=0.0):
         """The checked arguments of a run and its start: (h, steps, every, options, g0 flat,
-        mu0, Newton start z0 from the guess kernel)."""
+        mu0, Newton start z0 from the guess kernel, StepInputs or None (closed))."""
         h = _positive(h, "h")
         steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
         opts = self._options(newton)
-        gf, mu0, xi0 = self._initial(g0, xi0, mu0)
-        z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
-        return h, steps, every, opts, gf, mu0, z0
+        inputs = step_inputs(self.open, steps, u, params, t0)
+        if inputs is None:
+            gf, mu0, xi0 = self._initial(g0, xi0, mu0)
+            z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
+        else:
+            gf, mu0, xi0 = self._initial(g0, xi0, mu0, self._lv(inputs.t0, inputs.params))
+            z0 = self._b.call("guess", xi0, gf, mu0, np.array(inputs.hv(h, 0)))[0]
+        return h, steps, every, opts, gf, mu0, z0, inputs
 
-    def _prepare_batch(self, g0, h, steps, xi0, mu0, every, threads, newton, what):
+    def _prepare_batch(self, g0, h, steps, xi0, mu0, every, threads, newton, what,
+                       u=None, params=None, t0=0.0):
         """The checked arguments of an ensemble run by the C backend (``what``: the method, for
-        the error): (h, steps, every, options, threads, g0s flat, mu0s, Newton starts z0s)."""
+        the error): (h, steps, every, options, threads, g0s flat, mu0s, Newton starts z0s,
+        per-run StepInputs or None (closed))."""
         if self.backend != "c":
             raise ModelError(f"{what} needs the C backend", field="backend")
         h = _positive(h, "h")
         steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
         opts = self._options(newton)
-        hv = np.array([h])
-        starts = [(gf, m, self._b.call("guess", x, gf, m, hv)[0])
-                  for gf, m, x in self._batch_starts(g0, xi0, mu0)]
+        init = xi0 if xi0 is not None else mu0
+        B = len(init) if hasattr(init, "__len__") else None
+        inputs = batch_inputs(self.open, B or 0, steps, u, params, t0) if B else None
+        if inputs is None:
+            hv = np.array([h])
+            starts = [(gf, m, self._b.call("guess", x, gf, m, hv)[0])
+                      for gf, m, x in self._batch_starts(g0, xi0, mu0)]
+        else:
+            lvs = [self._lv(i.t0, i.params) for i in inputs]
+            starts = [(gf, m, self._b.call("guess", x, gf, m, np.array(i.hv(h, 0)))[0])
+                      for (gf, m, x), i in zip(self._batch_starts(g0, xi0, mu0, lvs), inputs)]
         threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
         gs, ms, z0s = zip(*starts) if starts else ((), (), ())
-        return h, steps, every, opts, threads, gs, ms, z0s
+        return h, steps, every, opts, threads, gs, ms, z0s, inputs
 
     def simulate(self, g0, h, steps, xi0=None, mu0=None, every=1, *,
-                 newton: NewtonOptions | None = None) -> Trajectory:
+                 newton: NewtonOptions | None = None, u=None, params=None,
+                 t0=0.0) -> Trajectory:
         """Run ``steps`` steps of size h from g0 with initial velocity xi0 or momentum mu0
         (exactly one), recording every ``every`` steps. The C backend runs all steps in one
         call. On a failed step raises ConvergenceError (DomainError for tau) whose
-        ``.partial`` is the Trajectory so far (partial=True)."""
-        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every,
-                                                           newton)
-        done, g_rec, p_rec, st = self._b.simulate(gf, mu0, h, z0, steps, every, opts)
-        traj = self._trajectory(done, g_rec, p_rec, st, h, every)
+        ``.partial`` is the Trajectory so far (partial=True). t0: the start time (record k is
+        at t0 + k every h). An open module (forces, inputs, runtime parameters, t) takes
+        u ((m,) held for every step, or (steps, m), row k held over step k) and params
+        ({runtime parameter: value}, overrides of the model file's defaults)."""
+        h, steps, every, opts, gf, mu0, z0, inputs = self._prepare(
+            g0, h, steps, xi0, mu0, every, newton, u, params, t0)
+        if inputs is None:
+            done, g_rec, p_rec, st = self._b.simulate(gf, mu0, h, z0, steps, every, opts)
+        else:
+            done, g_rec, p_rec, st = self._b.simulate(gf, mu0, h, z0, steps, every, opts,
+                                                      inputs)
+        traj = self._trajectory(done, g_rec, p_rec, st, h, every, inputs, check_t0(t0))
         if traj.error is not None:
             raise traj.error
         return traj
 
     def stream(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000, *,
-               newton: NewtonOptions | None = None):
+               newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
         """Like ``simulate`` but in chunks of at most ``chunk`` steps, so that memory stays
         bounded on long runs: yields one Trajectory per chunk (the first starts with step 0;
         ``t`` is global). The states are bitwise those of ``simulate`` (the run, its Newton
         memory and predictor carry over between chunks). A failure raises ConvergenceError /
-        DomainError with ``.partial`` the records of the failing chunk."""
+        DomainError with ``.partial`` the records of the failing chunk. u, params, t0: as
+        in ``simulate``."""
         chunk = _int(chunk, "chunk", 1)
-        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every,
-                                                           newton)
-        run = self._b.start(gf, mu0, z0)
+        h, steps, every, opts, gf, mu0, z0, inputs = self._prepare(
+            g0, h, steps, xi0, mu0, every, newton, u, params, t0)
+        run = self._b.start(gf, mu0, z0) if inputs is None else \
+            self._b.start(gf, mu0, z0, inputs)
+        t_start = check_t0(t0)
         k, first = 0, True
         while first or k < steps:
             todo = min(chunk, steps - k)
@@ -278,15 +347,16 @@ class Integrator(SectionsMixin, RecordsMixin):
             if first:
                 g_rec = np.concatenate([gf.reshape(1, -1), g_rec])
                 p_rec = np.concatenate([mu0.reshape(1, -1), p_rec])
-            t0 = (k // every + (0 if first else 1)) * every * h
-            traj = self._records(g_rec, p_rec, st, h, every, t0)
+            tc = (k // every + (0 if first else 1)) * every * h
+            traj = self._records(g_rec, p_rec, st, h, every, t_start + tc if t_start else tc,
+                                 inputs)
             if traj.error is not None:
                 raise traj.error
             yield traj
             k += done
             first = False
 
-    def _batch_starts(self, g0, xi0, mu0) -> list:
+    def _batch_starts(self, g0, xi0, mu0, lvs=None) -> list:
         """[(g0 flat, mu0, xi0)] for a batch: g0 (n, n) shared or (B, n, n); xi0 or mu0
         (B, d), exactly one; each start checked as in simulate."""
         init = xi0 if xi0 is not None else mu0
@@ -301,19 +371,26 @@ class Integrator(SectionsMixin, RecordsMixin):
             raise ModelError(f"expected g0 of shape ({self.n}, {self.n}) or ({B}, {self.n}, "
                              f"{self.n}), got {G0.shape}", field="g0")
         return [self._initial(G0[b], None if xi0 is None else xi0[b],
-                              None if mu0 is None else mu0[b]) for b in range(B)]
+                              None if mu0 is None else mu0[b], () if lvs is None else lvs[b])
+                for b in range(B)]
 
     def simulate_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
-                       newton: NewtonOptions | None = None, progress=None) -> list:
+                       newton: NewtonOptions | None = None, u=None, params=None,
+                       t0=0.0, progress=None) -> list:
         """An ensemble: B runs from g0 ((n, n) shared, or (B, n, n)) and xi0 or mu0 (B, d),
         in C over ``threads`` threads (default: the CPU count). Each run's states are bitwise
         those of ``simulate`` on its own. Returns B Trajectories; a failed run's Trajectory
-        is partial with ``.error`` set (nothing is raised). progress: a bar of the members
-        done on stderr (None: when stderr is a terminal; hpgen.runtime.progress)."""
-        h, steps, every, opts, threads, gs, ms, z0s = self._prepare_batch(
-            g0, h, steps, xi0, mu0, every, threads, newton, "simulate_batch")
+        is partial with ``.error`` set (nothing is raised). An open module takes u and t0
+        (shared) and params, whose values may carry a leading axis of length B: run b takes
+        entry b (a parameter sweep, no recompilation); each run is bitwise ``simulate`` with
+        its own params. progress: a bar of the members done on stderr (None: when stderr is
+        a terminal; hpgen.runtime.progress)."""
+        h, steps, every, opts, threads, gs, ms, z0s, inputs = self._prepare_batch(
+            g0, h, steps, xi0, mu0, every, threads, newton, "simulate_batch", u, params, t0)
         with progress_bar(len(gs), "simulate_batch", "member", progress) as bar:
             done, g_rec, p_rec, sts = self._b.simulate_batch(gs, ms, h, z0s, steps, every,
-                                                             opts, threads, bar)
-        return [self._trajectory(int(done[b]), g_rec[b], p_rec[b], sts[b], h, every)
+                                                             opts, threads, inputs, bar)
+        t0 = check_t0(t0)
+        return [self._trajectory(int(done[b]), g_rec[b], p_rec[b], sts[b], h, every,
+                                 None if inputs is None else inputs[b], t0)
                 for b in range(len(gs))]

@@ -11,6 +11,7 @@ sz_iw, sz_w}}.
 from __future__ import annotations
 
 import json
+import math
 import re
 from pathlib import Path
 
@@ -65,7 +66,8 @@ def read_meta(module_dir) -> dict:
     for key in ("step_uses_g", "record_uses_g", "record_uses_xi", "legendre_quadratic"):
         if not isinstance(meta.get(key), bool):
             raise bad(key, "expected true or false")
-    size = abi.sizes(n, d, nz, w)
+    op = _open_entry(meta, bad)
+    size = abi.sizes(n, d, nz, w, 1 if op is None else op["H"])
     kernels = meta.get("kernels")
     if not isinstance(kernels, dict) or set(kernels) != set(abi.KERNEL_NAMES):
         raise bad("kernels", f"expected the kernels {abi.KERNEL_NAMES}")
@@ -75,10 +77,35 @@ def read_meta(module_dir) -> dict:
             got = ([int(s) for _, s in k["inputs"]], [int(s) for _, s in k["outputs"]])
         except (KeyError, TypeError, ValueError):
             raise bad(f"kernels.{name}", "malformed signature") from None
-        want = ([size[s] for s in spec.inputs], [size[s] for s in spec.outputs])
+        ins, outs = abi.signature(name, op is not None)
+        want = ([size[s] for s in ins], [size[s] for s in outs])
         if got != want:
             raise bad(f"kernels.{name}", f"sizes {got} do not match the contract {want}")
     return meta
+
+
+def _open_entry(meta: dict, bad):
+    """meta["open"] (an open model's step vector, hpgen.abi) checked, or None (closed)."""
+    op = meta.get("open")
+    if op is None:
+        return None
+    ok = (isinstance(op, dict) and isinstance(op.get("inputs"), list)
+          and all(isinstance(u, str) for u in op["inputs"])
+          and isinstance(op.get("runtime_parameters"), list)
+          and isinstance(op.get("defaults"), list)
+          and all(isinstance(v, (int, float)) for v in op["defaults"])
+          and isinstance(op.get("forced"), bool) and isinstance(op.get("time_dependent"), bool))
+    if ok:
+        try:
+            P = sum(math.prod(shape) for _, shape in op["runtime_parameters"])
+        except (TypeError, ValueError):
+            P = -1
+        ok = P == len(op["defaults"]) and op.get("H") == abi.step_vector_size(
+            len(op["inputs"]), P, True)
+    if not ok:
+        raise bad("open", "expected {H, inputs, runtime_parameters, defaults, forced, "
+                          "time_dependent} consistent with H = 2 + m + P")
+    return op
 
 
 def load(path, backend=None, *, cc=None, cflags=None) -> Integrator:

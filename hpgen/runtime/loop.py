@@ -19,8 +19,9 @@ class Run:
     solution z, the two before (zprev, zprev2: predictor; have_prev of them valid), the Newton
     memory and the steps done k; vectors are lists of Python floats."""
 
-    def __init__(self, g0, p0, z0):
+    def __init__(self, g0, p0, z0, inputs=None):
         self.g, self.p, self.z = _floats(g0), _floats(p0), _floats(z0)
+        self.inputs = inputs     # an open module's StepInputs (hpgen.runtime.inputs) or None
         self.zprev = self.zprev2 = None
         self.have_prev = 0
         self.memory = NewtonMemory()
@@ -78,6 +79,8 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
         zs = [2.0 * a - b for a, b in zip(run.z, run.zprev)]
     else:
         zs = run.z
+    if run.inputs is not None:           # an open module: hv = [h, t_k, u_k, params]
+        hv = run.inputs.hv(hv[0], run.k)
     first = run.k == 0
     # the first step starts from the crude guess kernel: full Newton
     code, g1, p1, zs, it, r, jacs = step_lists(kern, run.g, run.p, hv, zs,
@@ -165,7 +168,7 @@ def record_row(record, velocity_step, width, g, p, uses_xi, quadratic) -> tuple:
 
 def advance_record(kern: Kernels, row_of, run: Run, h, steps, every, opts: NewtonOptions,
                    skip_g):
-    """Advance ``run`` like ``hpgen_advance_record`` in C: ``row_of(g, p) -> (code, row)`` at
+    """Advance ``run`` like ``hpgen_advance_record`` in C: ``row_of(g, p, k, h) -> (code, row)`` at
     the global steps k % every == 0; skip_g: update_p only (run.g stays g_0, g_stale).
     Returns (steps done, rows (lists), status dict); a failed row stops the run after its
     step with code RECORD (the row is kept)."""
@@ -177,7 +180,7 @@ def advance_record(kern: Kernels, row_of, run: Run, h, steps, every, opts: Newto
         if _run_step(kern, run, hv, opts, full, st, not skip_g) != OK:
             return n, rows, st
         if run.k % every == 0:
-            code, row = row_of(run.g, run.p)
+            code, row = row_of(run.g, run.p, run.k, h)
             rows.append(row)
             if code != OK:
                 st.update(code=RECORD, step=run.k)
@@ -210,7 +213,8 @@ def advance_sections(kern: Kernels, section, chart_point, run: Run, h, steps, ca
         if s0 < 0.0 and s1 >= 0.0:
             theta = s0 / (s0 - s1)
             p_c = [(1.0 - theta) * a + theta * b for a, b in zip(p0, run.p)]
-            g_c = chart_point(run.z, g0, hv, [theta])[0]
+            hv_k = hv if run.inputs is None else run.inputs.hv(hv[0], k)   # step k's
+            g_c = chart_point(run.z, g0, hv_k, [theta])[0]
             recs.append((k, (float(k) + theta) * float(h), g_c, p_c))
     st["step"] = run.k
     return n, recs, st

@@ -88,10 +88,10 @@ def _not_finite(row, layout) -> list:
             if not np.isfinite(row[off:off + int(np.prod(shape))]).all()]
 
 
-def make_records(integ, rows, st, h, every, first=0) -> Records:
-    """Records of flat rows, the first of them record number ``first`` (t = j every h for
-    record j, computed so: a chunk's t is bitwise the whole run's); error set (partial)
-    when st failed."""
+def make_records(integ, rows, st, h, every, first=0, t_start=0.0) -> Records:
+    """Records of flat rows, the first of them record number ``first`` (t = t_start + j every
+    h for record j, computed so: a chunk's t is bitwise the whole run's); error set
+    (partial) when st failed."""
     layout = integ.meta["record"]
     err = None
     if st["code"] == abi.RECORD:
@@ -102,7 +102,8 @@ def make_records(integ, rows, st, h, every, first=0) -> Records:
                           time=float(st["step"]) * h, names=bad)
     elif st["code"] != abi.OK:
         err = _error(st["code"], st["step"], st["step"] * h, st["residual"], st["iterations"])
-    rec = Records(t=(first + np.arange(len(rows))) * every * h,
+    t = (first + np.arange(len(rows))) * every * h
+    rec = Records(t=t_start + t if t_start else t,
                   arrays=split_rows(rows, layout, integ.n), h=h, every=every,
                   partial=err is not None, error=err,
                   newton_iterations=int(st["total_iterations"]), jacobians=int(st["jacobians"]),
@@ -112,28 +113,33 @@ def make_records(integ, rows, st, h, every, first=0) -> Records:
     return rec
 
 
-def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts, run=None):
+def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts, run=None,
+                   inputs=None, t_start=0.0):
     """Yield Records per chunk of at most ``chunk`` steps (the first starts with record 0,
     the initial state); raises the chunk's error (with .partial) on a failure. ``run``: the
     run to advance (default a new one at gf, mu0, z0); one restored from a snapshot
     (``backend.restore``) after k > 0 steps continues at step k without record 0, bitwise as
-    the uninterrupted run (hpgen.runtime.recorder's resume)."""
+    the uninterrupted run (hpgen.runtime.recorder's resume). inputs: an open module's
+    StepInputs; t_start: the time of step 0."""
     if run is None:
-        run = backend.start(gf, mu0, z0)
+        run = backend.start(gf, mu0, z0) if inputs is None else \
+            backend.start(gf, mu0, z0, inputs)
     k = backend.steps_done(run)
     first = k == 0
     if first:
-        code, row0 = backend.record(gf, mu0)
+        code, row0 = backend.record(gf, mu0) if inputs is None else \
+            backend.record(gf, mu0, inputs)
         if code != abi.OK:
             rec = make_records(integ, row0.reshape(1, -1), {**loop.new_status(), "code": code},
-                               h, every, 0)
+                               h, every, 0, t_start)
             raise rec.error
     while first or k < steps:
         todo = min(chunk, steps - k)
         done, rows, st = backend.advance_record(run, h, todo, every, opts)
         if first:
             rows = np.concatenate([row0.reshape(1, -1), rows])
-        rec = make_records(integ, rows, st, h, every, k // every + (0 if first else 1))
+        rec = make_records(integ, rows, st, h, every, k // every + (0 if first else 1),
+                           t_start)
         if rec.error is not None:
             raise rec.error
         yield rec
@@ -151,25 +157,26 @@ class RecordsMixin:
         return tuple(name for name, _, _ in self.meta["record"])
 
     def stream_record(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000, *,
-                      newton: NewtonOptions | None = None):
+                      newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
         """Like ``record`` in chunks of at most ``chunk`` steps (bounded memory): yields one
         Records per chunk (the first starts with record 0; ``t`` is global). A failure raises
         ConvergenceError / DomainError / RecordError with ``.partial`` the failing chunk's
-        records."""
+        records. u, params, t0: as in ``simulate``."""
         chunk = _int(chunk, "chunk", 1)
-        h, steps, every, opts, gf, mu0, z0 = self._prepare(g0, h, steps, xi0, mu0, every,
-                                                           newton)
-        yield from stream_records(self, self._b, gf, mu0, z0, h, steps, every, chunk, opts)
+        h, steps, every, opts, gf, mu0, z0, inputs = self._prepare(
+            g0, h, steps, xi0, mu0, every, newton, u, params, t0)
+        yield from stream_records(self, self._b, gf, mu0, z0, h, steps, every, chunk, opts,
+                                  inputs=inputs, t_start=float(t0))
 
     def record(self, g0, h, steps, xi0=None, mu0=None, every=1, *,
-               newton: NewtonOptions | None = None):
+               newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
         """Run ``steps`` steps keeping only the compiled record row (``record_names``: the
         scene's g, mu, xi, energy, momentum, defect and expressions) every ``every`` steps;
         returns a hpgen.runtime.records.Records. The row is evaluated inside the C loop;
         when neither the step nor the row use g, g is not reconstructed (meta skip). The
         states are bitwise those of ``simulate``. A failure raises (``.partial`` set)."""
         chunks = list(self.stream_record(g0, h, steps, xi0, mu0, every, max(steps, 1),
-                                         newton=newton))
+                                         newton=newton, u=u, params=params, t0=t0))
         return chunks[0]
 
     def record_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
@@ -178,7 +185,8 @@ class RecordsMixin:
         threads (default: the CPU count); each run's rows are bitwise those of ``record`` on
         its own. Returns B Records; a failed run's Records is partial with ``.error`` set
         (nothing is raised). progress: as for ``simulate_batch``."""
-        h, steps, every, opts, threads, gs, ms, z0s = self._prepare_batch(
+        self._closed_only("record_batch")
+        h, steps, every, opts, threads, gs, ms, z0s, _ = self._prepare_batch(
             g0, h, steps, xi0, mu0, every, threads, newton, "record_batch")
         with progress_bar(len(gs), "record_batch", "member", progress) as bar:
             rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps, every, opts,

@@ -11,6 +11,7 @@ import numpy as np
 from ..errors import ModelError
 from .. import abi
 from .args import _error, _int, _positive
+from .inputs import step_inputs
 from .newton import NewtonOptions
 from .trajectory import SectionCrossings
 
@@ -20,16 +21,20 @@ class SectionsMixin:
     _batch_starts and backend)."""
 
     def sections(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None, chunk=100_000,
-                 *, newton: NewtonOptions | None = None) -> SectionCrossings:
+                 *, newton: NewtonOptions | None = None, u=None, params=None,
+                 t0=0.0) -> SectionCrossings:
         """Run up to ``steps`` steps and return the upward crossings of the model's
         ``scene.section`` s(g, mu) = 0 (compiled into the step loop: nothing else is kept), at
         most ``max_crossings`` (then the run stops at that crossing's step). The states are
         bitwise those of ``simulate``. A failed step raises ConvergenceError / DomainError
-        with ``.partial`` the crossings found before it."""
+        with ``.partial`` the crossings found before it. u, params, t0: as in ``simulate``
+        (crossing times are t0 + (k + theta) h)."""
         h, steps, cap_total, chunk, opts = self._section_args(h, steps, max_crossings, chunk,
                                                              newton)
-        gf, mu0, xi0 = self._initial(g0, xi0, mu0)
-        out = self._sections_run(gf, mu0, xi0, h, steps, cap_total, chunk, opts)
+        inputs = step_inputs(self.open, steps, u, params, t0)
+        lv = () if inputs is None else self._lv(inputs.t0, inputs.params)
+        gf, mu0, xi0 = self._initial(g0, xi0, mu0, lv)
+        out = self._sections_run(gf, mu0, xi0, h, steps, cap_total, chunk, opts, inputs)
         if out.error is not None:
             raise out.error
         return out
@@ -42,6 +47,7 @@ class SectionsMixin:
         result is bitwise that of ``sections`` on its own. A failed run's SectionCrossings
         is partial with ``.error`` set (nothing is raised)."""
         from concurrent.futures import ThreadPoolExecutor
+        self._closed_only("sections_batch")
         h, steps, cap_total, chunk, opts = self._section_args(h, steps, max_crossings, chunk,
                                                              newton)
         starts = self._batch_starts(g0, xi0, mu0)
@@ -71,10 +77,15 @@ class SectionsMixin:
             raise ModelError("the model's scene has no section; add `section: <expression in "
                              "mu and g>` to the scene and recompile", field="scene.section")
 
-    def _sections_run(self, gf, mu0, xi0, h, steps, cap_total, chunk, opts):
-        """One run of sections from a checked start; the error (if any) is set, not raised."""
-        z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
-        run = self._b.start(gf, mu0, z0)
+    def _sections_run(self, gf, mu0, xi0, h, steps, cap_total, chunk, opts, inputs=None):
+        """One run of sections from a checked start; the error (if any) is set, not raised.
+        inputs: an open module's StepInputs."""
+        if inputs is None:
+            z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
+            run = self._b.start(gf, mu0, z0)
+        else:
+            z0 = self._b.call("guess", xi0, gf, mu0, np.array(inputs.hv(h, 0)))[0]
+            run = self._b.start(gf, mu0, z0, inputs)
         parts, k, iters, err = [], 0, 0, None
         found = 0
         while k < steps:
@@ -92,7 +103,10 @@ class SectionsMixin:
         cat = lambda i, shape: (np.concatenate([q[i] for q in parts]) if parts  # noqa: E731
                                 else np.zeros(shape))
         gs = cat(2, (0, n * n)).reshape(-1, n, n).transpose(0, 2, 1)
-        out = SectionCrossings(t=cat(1, (0,)), g=np.ascontiguousarray(gs),
+        t = cat(1, (0,))
+        if inputs is not None and inputs.t0:
+            t = inputs.t0 + t
+        out = SectionCrossings(t=t, g=np.ascontiguousarray(gs),
                                mu=cat(3, (0, self.d)).reshape(-1, self.d),
                                step=cat(0, (0,)).astype(np.int64), h=h, steps=k,
                                partial=err is not None, error=err, newton_iterations=iters)

@@ -29,6 +29,8 @@ class Trajectory:
     newton_iterations: int = 0    # total over all steps attempted
     jacobians: int = 0            # Jacobian evaluations (LU factorizations) over all steps
     integrator: Any = field(default=None, repr=False, compare=False)
+    #: an open module's run inputs (hpgen.runtime.inputs.StepInputs: t0, u, params) or None
+    inputs: Any = field(default=None, repr=False, compare=False)
     _obs: dict = field(default_factory=dict, repr=False, compare=False)
 
     def __post_init__(self):
@@ -46,7 +48,11 @@ class Trajectory:
     def _observed(self, name) -> np.ndarray:
         """One of Integrator.observe's arrays, computed once for all of them (cached)."""
         if not self._obs:
-            self._obs.update(self._need().observe(self.g, self.mu))
+            integ = self._need()
+            if self.inputs is None:
+                self._obs.update(integ.observe(self.g, self.mu))
+            else:
+                self._obs.update(integ.observe(self.g, self.mu, t=self.t, inputs=self.inputs))
         return self._obs[name].copy()
 
     def energy(self) -> np.ndarray:

@@ -1,0 +1,124 @@
+"""The step vector of an open module (forces, control inputs, runtime parameters or the time t;
+issue 16): checking the user's ``u``, ``params`` and ``t0`` and building
+hv = [h, t_k, u_k, params] for step k (hpgen.abi.step_vector_size; meta.json "open").
+
+Conventions: t_k = t0 + k h (computed from k, never accumulated); u is (m,) (held for every
+step) or (steps, m) (row k held over step k); params is a dict {runtime parameter name: value}
+of overrides of the model file's defaults (a number, or an array of the parameter's shape).
+Every problem is a one-line ModelError (a ValueError) naming the argument, raised before any
+step runs. numpy and the standard library only.
+"""
+from __future__ import annotations
+
+import math
+import numbers
+
+import numpy as np
+
+from ..errors import ModelError
+from .args import _array
+
+
+class StepInputs:
+    """What an open module's steps take besides (g, p, h): t0, the input rows U (one row
+    when constant) and the flat runtime parameters. ``hv(h, k)`` is step k's step vector
+    (a list of floats)."""
+    __slots__ = ("t0", "rows", "params", "constant")
+
+    def __init__(self, t0: float, rows: list, params: list):
+        self.t0, self.rows, self.params = t0, rows, params
+        self.constant = len(rows) == 1
+
+    def hv(self, h: float, k: int) -> list:
+        row = self.rows[0] if self.constant else self.rows[k]
+        return [h, self.t0 + k * h, *row, *self.params]
+
+    def at_record(self, h: float, k: int) -> list:
+        """The step vector a record row after global step k is evaluated with: the time
+        t0 + k h and the parameters (the record kernels take no u: zeros)."""
+        return [h, self.t0 + k * h, *([0.0] * len(self.rows[0])), *self.params]
+
+
+def check_t0(t0) -> float:
+    if isinstance(t0, bool) or not isinstance(t0, numbers.Real) or not math.isfinite(t0):
+        raise ModelError(f"expected a finite start time, got {t0!r}", field="t0")
+    return float(t0)
+
+
+def check_params(open_meta, params) -> list:
+    """The flat runtime parameters: the defaults with ``params``'s overrides."""
+    spec = [] if open_meta is None else open_meta["runtime_parameters"]
+    if params is None or (isinstance(params, dict) and not params):
+        return [] if open_meta is None else [float(v) for v in open_meta["defaults"]]
+    if not isinstance(params, dict):
+        raise ModelError(f"expected a dict {{runtime parameter name: value}}, got "
+                         f"{type(params).__name__}", field="params")
+    names = [name for name, _ in spec]
+    if not names:
+        raise ModelError("this model has no runtime parameters (declare them in the model "
+                         "file's runtime_parameters to change them without recompiling)",
+                         field="params")
+    for key in params:
+        if key not in names:
+            raise ModelError(f"unknown runtime parameter {key!r}; expected one of "
+                             f"{', '.join(names)}", field="params")
+    flat, off = [float(v) for v in open_meta["defaults"]], 0
+    for name, shape in spec:
+        size = math.prod(shape)
+        if name in params:
+            what = "a number" if not shape else "an array"
+            flat[off:off + size] = _array(params[name], tuple(shape), f"params[{name!r}]",
+                                          what).ravel().tolist()
+        off += size
+    return flat
+
+
+def check_u(open_meta, u, steps: int) -> list:
+    """The input rows: [row] for a constant u (m,), steps rows for u (steps, m)."""
+    m = 0 if open_meta is None else len(open_meta["inputs"])
+    if m == 0:
+        if u is not None:
+            raise ModelError("this model has no control inputs (declare them in the model "
+                             "file's inputs)", field="u")
+        return [[]]
+    names = ", ".join(open_meta["inputs"])
+    if u is None:
+        raise ModelError(f"u is required: the model has {m} control input(s) ({names}); pass "
+                         f"an array of shape ({m},) or (steps, {m})", field="u")
+    a = np.asarray(u, dtype=object)
+    shape = (m,) if a.ndim <= 1 else (steps, m)
+    what = f"the inputs ({names}: ({m},) constant or ({steps}, {m}) one row per step)"
+    a = _array(u, shape, "u", what)
+    return [a.tolist()] if a.ndim == 1 else a.tolist()
+
+
+def batch_inputs(open_meta, B: int, steps: int, u=None, params=None, t0=0.0) -> list | None:
+    """B StepInputs for an ensemble (None for a closed module): u and t0 shared; each value
+    of ``params`` either of the parameter's shape (shared) or with a leading axis of length
+    B (run b takes entry b: a sweep without recompiling)."""
+    if open_meta is None or not isinstance(params, dict):
+        one = step_inputs(open_meta, steps, u, params, t0)
+        return None if one is None else [one] * B
+    shapes = {name: tuple(shape) for name, shape in open_meta["runtime_parameters"]}
+    per_run = set()
+    for key, v in params.items():
+        try:
+            if key in shapes and np.shape(v) == (B,) + shapes[key]:
+                per_run.add(key)
+        except ValueError:                   # ragged: step_inputs reports it
+            pass
+    return [step_inputs(open_meta, steps, u,
+                        {k: (np.asarray(v, dtype=np.float64)[b] if k in per_run else v)
+                         for k, v in params.items()}, t0)
+            for b in range(B)]
+
+
+def step_inputs(open_meta, steps: int, u=None, params=None, t0=0.0) -> StepInputs | None:
+    """The checked StepInputs of a run of ``steps`` steps, or None for a closed module
+    (which takes no u and no params)."""
+    t0 = check_t0(t0)
+    flat = check_params(open_meta, params)
+    rows = check_u(open_meta, u, steps)
+    if open_meta is None:
+        return None
+    return StepInputs(t0, rows, flat)
