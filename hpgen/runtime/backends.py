@@ -96,9 +96,11 @@ class PythonBackend(_Backend):
         """A run's whole state as arrays (a checkpoint; restore continues it bitwise)."""
         return run.to_arrays()
 
-    def restore(self, state: dict):
-        """The run a snapshot holds."""
-        return loop.Run.from_arrays(state)
+    def restore(self, state: dict, inputs=None):
+        """The run a snapshot holds (an open module's run gets its StepInputs again)."""
+        run = loop.Run.from_arrays(state)
+        run.inputs = inputs
+        return run
 
     def _lists(self, g, p, z):
         nn, d = self.n * self.n, self.d

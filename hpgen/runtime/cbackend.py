@@ -176,14 +176,17 @@ class CBackend(_Backend):
         memory, steps done) as a uint8 array; restore continues it bitwise."""
         return {"run": np.frombuffer(run.raw, dtype=np.uint8).copy()}
 
-    def restore(self, state: dict):
-        """The run a snapshot of this library holds (same hash, same run_size)."""
+    def restore(self, state: dict, inputs=None):
+        """The run a snapshot of this library holds (same hash, same run_size); an open
+        module's run is pointed at its StepInputs again (the snapshot's pointers are stale)."""
         raw = np.asarray(state["run"], dtype=np.uint8)
         if raw.shape != (self.run_size,):
             raise ValueError(f"a run snapshot of {raw.size} bytes; this library's runs are "
                              f"{self.run_size} bytes")
         run = ctypes.create_string_buffer(self.run_size)
         ctypes.memmove(run, raw.tobytes(), self.run_size)
+        if self.open:
+            run.keep = self._set_inputs(run, inputs)
         return run
 
     def call(self, name, *args):

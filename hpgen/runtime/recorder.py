@@ -85,23 +85,24 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     path = npz_path(out)
     parts = partial_dir(path)
     chunk = _int(chunk, "chunk", 1)
-    h, steps, every, opts, gf, mu0, z0 = integ._prepare(g0, h, steps, xi0, mu0, every, newton)
+    h, steps, every, opts, gf, mu0, z0, inputs = integ._prepare(g0, h, steps, xi0, mu0, every,
+                                                                newton)
     ident = _identity(integ, h, steps, every, opts, gf, mu0, z0)
     removed = _remove_old_leftovers(path)
     with _Folder(parts, path) as folder:
         prog = (folder.resume if resume else folder.fresh)(ident, resume_hint)
         prog.directions = None if directions is None else np.asarray(directions, np.float64)
-        run = None if prog.state is None else integ._b.restore(prog.state)
+        run = None if prog.state is None else integ._b.restore(prog.state, inputs)
         if run is not None and integ._b.steps_done(run) != prog.k:
             raise ModelError(f"cannot resume {parts}: its state is not at step {prog.k}; "
                              "delete the folder to start over", file=str(parts))
         resumed_at, error = prog.k, None
         try:
-            run = integ._b.start(gf, mu0, z0) if run is None else run
+            run = integ._b.start(gf, mu0, z0, inputs) if run is None else run
             with progress_bar(steps, "run", "step", progress) as bar:
                 bar.update(prog.k)
                 for rec in stream_records(integ, integ._b, gf, mu0, z0, h, steps, every, chunk,
-                                          opts, run=run):
+                                          opts, run=run, inputs=inputs):
                     new = prog.added(rec, integ._b.steps_done(run))
                     folder.commit(new, rec, integ._b.snapshot(run))
                     bar.update(new.k - prog.k)
