@@ -7,13 +7,13 @@ Scheme: ``"hpgen"`` (the compiled VPRK scheme for tableau/tau/rkmk, model defaul
 or ``"rkmk-rk4"`` (explicit RKMK-RK4 on the continuous equations, hpgen.analysis.rkmk, not
 symplectic: the check must fail on it). The initial state is the model's scene (g0 and xi0 or
 mu0); h and steps default to the scene's. States are (g, p), p the node momentum
-(docs/numerics.md, "Node momentum"), compared with mu(t) = dl/dxi of the reference.
+(docs/numerics.md sec. 4), compared with mu(t) = dl/dxi of the reference.
 
 Figures (the keys of the JSON report):
 - ``order``: {expected, why, horizon T, h: [h, h/2, h/4], error: [3], observed: [2], floor,
   refined: {h, error, observed}, asymptotic_h, status}:
   error = max(|g_N - g(T)|, |p_N - mu(T)|) against DOP853 at rtol = atol = 1e-12 on the
-  continuous equations (docs/numerics.md, "Continuous equations"); observed = log2 of
+  continuous equations (docs/numerics.md sec. 9); observed = log2 of
   successive error ratios, the last is the estimate. T = ``order_horizon`` (default
   min(1, steps h)) rounded to whole steps of h. floor: the finest error is below 1e-10, where
   the reference's own error (about 1e-12) may spoil the estimate. expected: see
