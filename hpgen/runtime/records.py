@@ -163,11 +163,44 @@ class RecordsMixin:
 
     def record(self, g0, h, steps, xi0=None, mu0=None, every=1, *,
                newton: NewtonOptions | None = None):
-        """Run ``steps`` steps keeping only the compiled record row (``record_names``: the
-        scene's g, mu, xi, energy, momentum, defect and expressions) every ``every`` steps;
-        returns a hpgen.runtime.records.Records. The row is evaluated inside the C loop;
-        when neither the step nor the row use g, g is not reconstructed (meta skip). The
-        states are bitwise those of ``simulate``. A failure raises (``.partial`` set)."""
+        """Run ``steps`` steps keeping only the scene's record row every ``every`` steps.
+
+        The row (``record_names``: the scene's g, mu, xi, energy, momentum, defect and
+        expressions) is evaluated inside the C loop; when neither the step nor the row use
+        g, g is not reconstructed. The states are bitwise those of ``simulate``.
+
+        Parameters
+        ----------
+        g0 : array_like, shape (n, n)
+            Initial group element, on the group to 1e-10 (n = ``integ.n``).
+        h : float
+            Step size, > 0, in the model's time unit.
+        steps : int
+            Number of steps, >= 0.
+        xi0 : array_like, shape (d,), optional
+            Initial body velocity (d = ``integ.d``); p_0 = dl/dxi(g0, xi0).
+        mu0 : array_like, shape (d,), optional
+            Initial body momentum (node momentum p_0). Exactly one of xi0 and mu0.
+        every : int, optional
+            Record interval in steps, >= 1 (default 1); record 0 is the initial state.
+        newton : NewtonOptions or None, optional
+            Newton settings, as for ``simulate``.
+
+        Returns
+        -------
+        Records
+            ``t`` (K,) and one array per record name, K = steps // every + 1: g (K, n, n);
+            mu, xi, momentum (K, d); energy, defect, expressions (K,). ``rec["energy"]``,
+            ``rec.save(path)``.
+
+        Raises
+        ------
+        ModelError
+            A bad argument.
+        ConvergenceError, DomainError, RecordError
+            A step failed, or a recorded value is not finite (``RecordError`` names the
+            entries); ``.partial`` holds the records up to the failure.
+        """
         chunks = list(self.stream_record(g0, h, steps, xi0, mu0, every, max(steps, 1),
                                          newton=newton))
         return chunks[0]

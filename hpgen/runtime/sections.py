@@ -21,11 +21,43 @@ class SectionsMixin:
 
     def sections(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None, chunk=100_000,
                  *, newton: NewtonOptions | None = None) -> SectionCrossings:
-        """Run up to ``steps`` steps and return the upward crossings of the model's
-        ``scene.section`` s(g, mu) = 0 (compiled into the step loop: nothing else is kept), at
-        most ``max_crossings`` (then the run stops at that crossing's step). The states are
-        bitwise those of ``simulate``. A failed step raises ConvergenceError / DomainError
-        with ``.partial`` the crossings found before it."""
+        """Run up to ``steps`` steps and keep only the upward crossings of ``scene.section``.
+
+        s(g, mu) = 0 is tested inside the step loop (docs/numerics.md sec. 12); the states are
+        bitwise those of ``simulate``. The module's model must have a ``section``.
+
+        Parameters
+        ----------
+        g0 : array_like, shape (n, n)
+            Initial group element, on the group to 1e-10 (n = ``integ.n``).
+        h : float
+            Step size, > 0, in the model's time unit.
+        steps : int
+            Number of steps, >= 0.
+        xi0 : array_like, shape (d,), optional
+            Initial body velocity (d = ``integ.d``); p_0 = dl/dxi(g0, xi0).
+        mu0 : array_like, shape (d,), optional
+            Initial body momentum (node momentum p_0). Exactly one of xi0 and mu0.
+        max_crossings : int or None, optional
+            Stop the run at the step of this crossing; None (default): run all steps.
+        newton : NewtonOptions or None, optional
+            Newton settings, as for ``simulate``.
+        chunk : int, optional
+            Steps per C call, >= 1 (default 100,000); bounds the memory of a run.
+
+        Returns
+        -------
+        SectionCrossings
+            ``t`` (K,), ``g`` (K, n, n) on the step's chart curve, ``mu`` (K, d) interpolated
+            linearly, ``step`` (K,) the step of each crossing; ``steps`` run.
+
+        Raises
+        ------
+        ModelError
+            A bad argument, or a model without ``section``.
+        ConvergenceError, DomainError
+            A step failed; ``.partial`` holds the crossings found before it.
+        """
         h, steps, cap_total, chunk, opts = self._section_args(h, steps, max_crossings, chunk,
                                                              newton)
         gf, mu0, xi0 = self._initial(g0, xi0, mu0)
