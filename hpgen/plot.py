@@ -124,12 +124,16 @@ def _pyplot():
 
 
 def _save(fig, path: Path) -> Path:
-    """savefig into a temp file next to ``path``, then os.replace (atomic)."""
+    """savefig into a temp file next to ``path``, then os.replace (atomic); the file gets
+    the permissions of a plain open() (mkstemp's are 0600)."""
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".png", dir=path.parent)
     os.close(fd)
     try:
         fig.savefig(tmp, dpi=110)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
         os.replace(tmp, path)
     finally:
         if os.path.exists(tmp):

@@ -3,6 +3,8 @@ that they are real non-empty PNGs, and that a bad file is one line on stderr wit
 from __future__ import annotations
 
 import csv
+import os
+import stat
 import subprocess
 import sys
 
@@ -28,6 +30,10 @@ scene:
 def _png(path):
     data = path.read_bytes()
     assert data.startswith(PNG) and len(data) > 5000, path     # a drawn figure, not a stub
+    umask = os.umask(0)
+    os.umask(umask)
+    assert stat.S_IMODE(path.stat().st_mode) == 0o666 & ~umask   # as open() would create it
+    assert not list(path.parent.glob(".*.png"))                   # no temp file left
     return path
 
 
