@@ -28,16 +28,9 @@ class SectionsMixin:
 
         Parameters
         ----------
-        g0 : array_like, shape (n, n)
-            Initial group element, on the group to 1e-10 (n = ``integ.n``).
-        h : float
-            Step size, > 0, in the model's time unit.
-        steps : int
-            Number of steps, >= 0.
-        xi0 : array_like, shape (d,), optional
-            Initial body velocity (d = ``integ.d``); p_0 = dl/dxi(g0, xi0).
-        mu0 : array_like, shape (d,), optional
-            Initial body momentum (node momentum p_0). Exactly one of xi0 and mu0.
+        g0, h, steps, xi0, mu0
+            As for ``simulate``: g0 (n, n) on the group, h > 0 in the model's time unit,
+            steps >= 0, exactly one of xi0 / mu0 (d,).
         max_crossings : int or None, optional
             Stop the run at the step of this crossing; None (default): run all steps.
         newton : NewtonOptions or None, optional

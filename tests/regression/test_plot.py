@@ -9,7 +9,6 @@ import subprocess
 import sys
 
 import numpy as np
-import pytest
 
 from conftest import EXAMPLES, FREE_BODY, ROOT
 from hpgen.bench.report import CSV_COLUMNS
