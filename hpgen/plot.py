@@ -16,6 +16,9 @@ What is drawn depends on what the file holds (names as ``scene.record`` spells t
 - a benchmark (the ``hpgen bench`` output directory or its ``work_precision.csv``):
   ``work_precision.png``, error against wall time (hpgen.bench.report).
 Figures go next to the input unless ``out_dir`` is given; each is written atomically.
+Memory stays bounded for runs larger than memory: uncompressed members (as hpgen writes
+them) are memory-mapped and read BLOCK_ROWS rows at a time; the group distance computed from
+g uses at most MAX_DEFECT_SAMPLES evenly spaced records.
 matplotlib (Agg backend) is imported only when a figure is drawn: never on the runtime path.
 A file that is none of these raises ModelError naming it (``hpgen plot``: exit status 2).
 """
@@ -24,6 +27,7 @@ from __future__ import annotations
 import csv
 import math
 import os
+import struct
 import tempfile
 import zipfile
 from pathlib import Path
@@ -34,6 +38,10 @@ import numpy as np
 from .errors import HpgenError, ModelError
 
 MAX_POINTS = 4000
+#: rows read at once from a (memory-mapped) record array
+BLOCK_ROWS = 1_000_000
+#: records at which the group distance is computed from g when it is not recorded
+MAX_DEFECT_SAMPLES = 100_000
 #: arrays of a saved run that are metadata, not records
 META_KEYS = ("h", "every", "partial", "newton_iterations", "error", "module", "hash")
 CHANGE_FIGURES = (("energy", "energy error |E(t) - E(0)|"),
@@ -69,9 +77,8 @@ def _load_npz(path: Path) -> dict:
         raise ModelError("not an .npz file (expected the output of hpgen run / save)",
                          file=str(path))
     try:
-        with np.load(path, allow_pickle=False) as z:
-            data = {k: z[k] for k in z.files}
-    except (OSError, ValueError, zipfile.BadZipFile, EOFError) as e:
+        data = _npz_arrays(path)
+    except (OSError, ValueError, zipfile.BadZipFile, EOFError, struct.error) as e:
         raise ModelError(f"not a readable .npz file ({type(e).__name__}: "
                          f"{str(e).splitlines()[0] if str(e) else 'unreadable'})",
                          file=str(path)) from None
@@ -88,6 +95,38 @@ def _load_npz(path: Path) -> dict:
                              f"numeric rows, got shape {a.shape}, dtype {a.dtype})",
                              file=str(path))
     return data
+
+
+def _npz_arrays(path: Path) -> dict:
+    """{name: array} of an .npz, memory-mapped where the member is stored uncompressed (as
+    np.savez and hpgen's writers store them), so that a file larger than memory is read
+    bin by bin; compressed members and scalars are loaded."""
+    out = {}
+    with zipfile.ZipFile(path) as zf, open(path, "rb") as fh:
+        for info in zf.infolist():
+            name = info.filename[:-4] if info.filename.endswith(".npy") else info.filename
+            arr = None
+            if info.compress_type == zipfile.ZIP_STORED:
+                fh.seek(info.header_offset)
+                local = fh.read(30)
+                if local[:4] != b"PK\x03\x04":
+                    raise ValueError(f"bad local header of member {info.filename!r}")
+                n_name, n_extra = struct.unpack("<HH", local[26:30])
+                fh.seek(info.header_offset + 30 + n_name + n_extra)
+                version = np.lib.format.read_magic(fh)
+                read = (np.lib.format.read_array_header_1_0 if version == (1, 0)
+                        else np.lib.format.read_array_header_2_0)
+                shape, fortran, dtype = read(fh)
+                if dtype.hasobject:
+                    raise ValueError(f"member {name!r} holds Python objects")
+                if shape and dtype.itemsize and int(np.prod(shape)):
+                    arr = np.memmap(path, dtype=dtype, mode="r", offset=fh.tell(), shape=shape,
+                                    order="F" if fortran else "C")
+            if arr is None:
+                with zf.open(info) as member:
+                    arr = np.lib.format.read_array(member, allow_pickle=False)
+            out[name] = arr
+    return out
 
 
 def _read_bench_csv(path: Path) -> list:
@@ -143,21 +182,32 @@ def _save(fig, path: Path) -> Path:
     return path
 
 
-def envelope(t, y, n=MAX_POINTS):
-    """(t, y) reduced to at most n points: the first t of each bin and the largest y in it."""
-    t, y = np.asarray(t), np.asarray(y)
-    if len(t) <= n:
-        return t, y
-    edges = np.linspace(0, len(t), n + 1).astype(int)
-    return t[edges[:-1]], np.maximum.reduceat(y, edges[:-1], axis=0)
+def envelope(t, y, n=MAX_POINTS, ref=None, block=BLOCK_ROWS):
+    """(t, m): t at the start of each of at most n bins of rows and m the largest
+    |y - ref| in each bin (|y| when ref is None), per column; y (K,) or (K, c), possibly a
+    memory map, read ``block`` rows at a time (memory stays bounded)."""
+    K = len(t)
+    bins = min(n, K)
+    edges = np.linspace(0, K, bins + 1).astype(np.int64)
+    width = max(1, int(np.prod(y.shape[1:])))
+    out = np.empty((bins, width))
+    b = 0
+    while b < bins:
+        e = b + 1
+        while e < bins and edges[e + 1] - edges[b] <= block:
+            e += 1
+        rows = np.asarray(y[edges[b]:edges[e]], dtype=float).reshape(-1, width)
+        dev = np.abs(rows if ref is None else rows - ref)
+        out[b:e] = np.maximum.reduceat(dev, edges[b:e] - edges[b], axis=0)
+        b = e
+    return np.asarray(t[edges[:-1]], dtype=float), out
 
 
 def _change_figure(t, values, what, path, title, labels=None, absolute=False):
     """|values - values[0]| (or |values| when ``absolute``) against t, log axis."""
     plt = _pyplot()
-    v = np.asarray(values, dtype=float)
-    change = (np.abs(v) if absolute else np.abs(v - v[0])).reshape(len(t), -1)
-    tt, env = envelope(t, change)
+    ref = None if absolute else np.asarray(values[0], dtype=float).reshape(-1)
+    tt, env = envelope(t, values, ref=ref)
     fig, ax = plt.subplots(figsize=(7, 4))
     for i in range(env.shape[1]):
         col = np.where(env[:, i] > 0, env[:, i], np.nan)     # exact zeros: gaps on a log axis
@@ -179,17 +229,19 @@ def _change_figure(t, values, what, path, title, labels=None, absolute=False):
 def _run(data, out, stem, path, integrator) -> list[Path]:
     t = data["t"]
     files = []
+    sources = {name: (t, data[name]) for name, _ in CHANGE_FIGURES if name in data}
     if "defect" not in data and "g" in data and integrator is not None:
-        g = data["g"]
-        data = {**data, "defect": np.array([integrator.defect(gk) for gk in g])}
+        stride = -(-len(t) // MAX_DEFECT_SAMPLES)          # ceil: at most that many samples
+        sources["defect"] = (t[::stride], np.array([integrator.defect(gk)
+                                                    for gk in data["g"][::stride]]))
     title = _title(data, path)
     for name, what in CHANGE_FIGURES:
-        if name not in data:
+        if name not in sources:
             continue
-        v = data[name]
+        tn, v = sources[name]
         labels = [f"m_{i}" for i in range(v.shape[1])] if v.ndim == 2 else None
         png = out / f"{stem}-{'group' if name == 'defect' else name}.png"
-        files.append(_change_figure(t, v, what, png, title, labels, absolute=name == "defect"))
+        files.append(_change_figure(tn, v, what, png, title, labels, absolute=name == "defect"))
     series = [k for k in data if k not in META_KEYS + ("t", "g", "energy", "momentum",
                                                        "defect")]
     if series:
@@ -214,10 +266,11 @@ def _series(t, data, names, path, title) -> Path:
     fig, axes = plt.subplots(len(names), 1, figsize=(7, 1.0 + 1.9 * len(names)), sharex=True,
                              squeeze=False)
     step = max(1, len(t) // MAX_POINTS)
+    ts = np.asarray(t[::step], dtype=float)
     for ax, name in zip(axes[:, 0], names):
-        v = np.asarray(data[name], dtype=float).reshape(len(t), -1)
+        v = np.asarray(data[name][::step], dtype=float).reshape(len(ts), -1)
         for i in range(v.shape[1]):
-            ax.plot(t[::step], v[::step, i], lw=0.9,
+            ax.plot(ts, v[:, i], lw=0.9,
                     label=f"{name}[{i}]" if v.shape[1] > 1 else None)
         ax.set_ylabel(name)
         ax.grid(True, alpha=0.3)

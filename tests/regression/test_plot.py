@@ -13,7 +13,7 @@ import numpy as np
 from conftest import EXAMPLES, FREE_BODY, ROOT
 from hpgen.bench.report import CSV_COLUMNS
 from hpgen.cli import main
-from hpgen.plot import envelope, plot_file
+from hpgen.plot import _npz_arrays, envelope, plot_file
 
 PNG = b"\x89PNG\r\n\x1a\n"
 SECTION_BODY = FREE_BODY + """
@@ -141,3 +141,24 @@ def test_envelope_keeps_the_peaks():
     assert len(tt) == 1000 and yy.max() == 7.0 and tt[0] == 0.0
     t2, y2 = envelope(t[:50], y[:50], n=1000)
     assert len(t2) == 50
+
+
+def test_large_files_are_read_by_memory_map_and_blocks(tmp_path):
+    """A run file is memory-mapped (np.savez stores members uncompressed) and the binned
+    maxima are computed a block of rows at a time: the same figures as in memory."""
+    rng = np.random.default_rng(3)
+    K = 250_001
+    t = np.arange(K) * 0.01
+    m = rng.standard_normal((K, 3)).cumsum(axis=0) * 1e-9
+    np.savez(tmp_path / "big.npz", t=t, momentum=m, h=np.float64(0.01), module=np.str_("x"))
+    np.savez_compressed(tmp_path / "small.npz", t=t[:10], momentum=m[:10])
+    data = _npz_arrays(tmp_path / "big.npz")
+    assert isinstance(data["momentum"], np.memmap) and str(data["module"]) == "x"
+    assert np.array_equal(data["momentum"], m) and float(data["h"]) == 0.01
+    assert np.array_equal(_npz_arrays(tmp_path / "small.npz")["momentum"], m[:10])
+    ref = m[0]
+    tt, blocked = envelope(data["t"], data["momentum"], n=997, ref=ref, block=1000)
+    edges = np.linspace(0, K, 998).astype(np.int64)
+    direct = np.maximum.reduceat(np.abs(m - ref), edges[:-1], axis=0)
+    assert np.array_equal(tt, t[edges[:-1]]) and np.array_equal(blocked, direct)
+    assert [p.name for p in plot_file(tmp_path / "big.npz")] == ["big-momentum.png"]
