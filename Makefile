@@ -8,8 +8,12 @@ PIP_INSTALL = $(PYTHON) -m pip install --quiet -c constraints.txt
 install:
 	$(PIP_INSTALL) -e '.[test,scale]'
 
+# the heavy top's scene -> out/heavy_top.npz and its figures out/heavy_top-*.png (out/ is
+# ignored by git; DEMO_OUT=dir to write elsewhere)
+DEMO_OUT ?= out
 demo: install
-	$(PYTHON) -m hpgen run examples/heavy_top.yaml --out heavy_top.npz
+	mkdir -p $(DEMO_OUT)
+	$(PYTHON) -m hpgen run examples/heavy_top.yaml --out $(DEMO_OUT)/heavy_top.npz
 
 test: install
 	$(PYTHON) -m pytest -q -ra

@@ -2,7 +2,7 @@
 
     python benchmarks/poincare.py [--quick] [--states N] [--T T] [--tableau euler-forward]
 
-Kirchhoff's equations for mu = (Pi, P) (math.md sec. 8), I = (2, 1, 2/3), M = (1, 1.5, 3):
+Kirchhoff's equations for mu = (Pi, P) (docs/numerics.md sec. 11), I = (2, 1, 2/3), M = (1, 1.5, 3):
     Pi' = Pi x Omega + P x v,  P' = P x Omega,  Omega = Pi / I,  v = P / M,
 H = 1/2 Pi.Omega + 1/2 P.v, Casimirs |P|^2 and Pi.P. All initial states lie on the level
 set of H and both Casimirs through (Pi0; P0) = (0.3, 1, 0.2; 1, 0, 0.5) (a chaotic set):

@@ -130,8 +130,52 @@ class CompiledModule:
 
 def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
             cache_dir=None, cc=None, cflags=None):
-    """Compile ``model`` (a path to a model file) and return a loaded runtime Integrator
-    (``build(...).load()``)."""
+    """Compile a model file into an integrator and load it.
+
+    The module is generated (or taken from the build cache), built (C backend) and loaded.
+    A cache hit imports none of sympy, casadi, jinja2.
+
+    Parameters
+    ----------
+    model : str or pathlib.Path
+        Path of the model file (YAML, docs/model-file.md).
+    tableau : str, dict, ButcherTableau or None, optional
+        Catalog name (``euler-forward``, ``euler-backward``, ``stormer-verlet``, ``midpoint``,
+        ``gauss2``, ``gauss3``, ``lobatto3a3``; ``hpgen list``), or a user tableau
+        ``{"A": [[...]], "b": [...]}`` (optional ``"c"``; every b_j != 0). None: the
+        model's ``integrator.tableau``, else ``stormer-verlet``.
+    tau : {"exp", "cay", "skew"} or None, optional
+        Chart map (``skew`` on SO2 and SO3 only). None: the model's, else ``cay``.
+    rkmk : {"exact", "truncated"} or None, optional
+        RKMK constraint: ``exact`` keeps the tableau's order, ``truncated`` is the paper's
+        q = 0 (order <= 2). None: the model's, else ``exact``.
+    backend : {"c", "python"}, optional
+        ``c`` (default) builds the kernels with the C compiler; ``python`` needs no compiler
+        and gives bitwise the same states for up to 12 unknowns.
+    out : str, pathlib.Path or None, optional
+        Directory that receives a copy of the module as ``<out>/<module>/`` (importable on
+        its own with numpy and hpgen.runtime). None (default): load from the cache entry.
+    cache_dir : str, pathlib.Path or None, optional
+        Build cache directory. None: ``$XDG_CACHE_HOME/hpgen``, else ``~/.cache/hpgen``.
+    cc : str or None, optional
+        C compiler command (may include arguments). None: ``$CC``, else ``cc``.
+    cflags : sequence of str or None, optional
+        Extra compiler flags after the defaults ``-std=c99 -O3 -fPIC -shared`` (a library
+        built with extra flags is kept apart from the portable one).
+
+    Returns
+    -------
+    hpgen.runtime.integrator.Integrator
+        The loaded integrator (``step``, ``simulate``, ``stream``, ``record``, ``sections``,
+        ``simulate_batch``, ...; docs/api.md).
+
+    Raises
+    ------
+    ModelError
+        Bad model file or option (one line: file, line, field, what was expected).
+    BuildError
+        The C compiler is missing or failed (``backend="python"`` is the fallback).
+    """
     return build(model, tableau=tableau, tau=tau, rkmk=rkmk, backend=backend, out=out,
                  cache_dir=cache_dir, cc=cc, cflags=cflags).load()
 

@@ -50,6 +50,8 @@ def _parser():
                    help="continue the interrupted run kept in <out>.partial/ (the final file "
                    "equals that of an uninterrupted run); without one, start a new run")
     r.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
+    r.add_argument("--no-plot", action="store_true",
+                   help="do not write the PNGs of the run next to --out (see hpgen plot)")
     sub.add_parser("list", help="groups, tableaus and chart maps")
     k = sub.add_parser("check", help="order, energy, momentum, group, symplecticity checks",
                        description="observed order, energy, momentum map, group and "
@@ -69,6 +71,13 @@ def _parser():
     _add_bench_parser(sub)
     from .ensemble.cli import add_parser as _add_sweep_parser
     _add_sweep_parser(sub, _add_options)
+    pl = sub.add_parser("plot", help="PNG figures of a saved run, section run or benchmark",
+                        description="PNGs of what the file holds: energy error, momentum "
+                        "change, group distance, records (a run), crossings (a section run), "
+                        "work-precision (a bench directory)")
+    pl.add_argument("file", help=".npz of hpgen run (or Trajectory/Records.save), or the "
+                    "output directory of hpgen bench (or its work_precision.csv)")
+    pl.add_argument("--out-dir", help="directory for the PNGs (default: next to the file)")
     return ap
 
 
@@ -160,6 +169,29 @@ def cmd_run(args) -> int:
     if summary["momentum_max_change"] is not None:
         print(_momentum_line(model, summary["momentum_max_change"], directions,
                              summary["conserved_max_change"]))
+    _plot_run(path, args, integ)
+    return 0
+
+
+def _plot_run(path, args, integ=None):
+    """The PNGs of a finished run next to it (hpgen.plot), unless --no-plot; a plotting
+    failure (matplotlib missing) is a note, the run's result stands."""
+    if args.no_plot:
+        return
+    from .plot import plot_file
+    try:
+        files = plot_file(path, integrator=integ)
+    except HpgenError as e:
+        print(f"hpgen: note: no figures ({e})", file=sys.stderr)
+        return
+    print("  figures: " + ", ".join(str(f) for f in files))
+
+
+def cmd_plot(args) -> int:
+    """``hpgen plot FILE``: write the PNGs (hpgen.plot) and print their paths."""
+    from .plot import plot_file
+    for f in plot_file(args.file, out_dir=args.out_dir):
+        print(f)
     return 0
 
 
@@ -273,6 +305,7 @@ def _run_sections(integ, model, sc, h, steps, out, args) -> int:
     print(f"{model.name}: {steps} steps of h = {h:g} in {wall:.3f} s "
           f"({wall / max(steps, 1) * 1e6:.2f} us/step, {args.backend}); "
           f"{len(cr)} crossings of the section {sc.section.text!r} -> {path}")
+    _plot_run(path, args)
     return 0
 
 
@@ -323,7 +356,7 @@ def main(argv=None) -> int:
             from .ensemble.cli import cmd_sweep
             return cmd_sweep(args, _options)
         return {"compile": cmd_compile, "run": cmd_run, "list": cmd_list,
-                "check": cmd_check}[args.command](args)
+                "check": cmd_check, "plot": cmd_plot}[args.command](args)
     except ModelError as e:
         print(f"hpgen: error: {e}", file=sys.stderr)
         return 2

@@ -1,4 +1,4 @@
-"""Independent reference solutions: the continuous equations (math.md sec. 5)
+"""Independent reference solutions: the continuous equations (docs/numerics.md sec. 9)
     g' = g xi,  mu' = ad*_xi mu + f(g),  mu = dl/dxi = diag(inertia) xi,
 hand-coded per problem (no hpgen import), integrated by SciPy's DOP853.
 

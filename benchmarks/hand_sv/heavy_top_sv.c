@@ -14,7 +14,7 @@
  *
  * Paper variables and hpgen's state. The paper steps (g_k, mu_k) and eq. sv3 also needs the
  * previous increment xi_k, only through (dcay^{-1}_{-h xi_k})^* mu_k. That combination is hpgen's
- * node momentum p_k (math.md sec. 2; tests/handwritten/heavy_top.py, class StormerVerlet):
+ * node momentum p_k (docs/numerics.md sec. 4; tests/handwritten/heavy_top.py, class StormerVerlet):
  *     p_k = (dcay^{-1}_{-h xi_k})^* mu_k.
  * With it the paper's equations read, for a separable l (no g_{k+1} in sv2's kinetic term):
  *   sv1, sv2:  M = I Xi^1 = I Xi^2, so Xi^1 = Xi^2 =: X and xi_{k+1} = (Xi^1 + Xi^2)/2 = X;

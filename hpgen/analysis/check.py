@@ -6,16 +6,24 @@
 Scheme: ``"hpgen"`` (the compiled VPRK scheme for tableau/tau/rkmk, model defaults for None)
 or ``"rkmk-rk4"`` (explicit RKMK-RK4 on the continuous equations, hpgen.analysis.rkmk, not
 symplectic: the check must fail on it). The initial state is the model's scene (g0 and xi0 or
-mu0); h and steps default to the scene's. States are (g, p), p the node momentum (math.md
-sec. 2), compared with mu(t) = dl/dxi of the reference.
+mu0); h and steps default to the scene's. States are (g, p), p the node momentum
+(docs/numerics.md sec. 4), compared with mu(t) = dl/dxi of the reference.
 
 Figures (the keys of the JSON report):
-- ``order``: {expected, horizon T, h: [h, h/2, h/4], error: [3], observed: [2], floor}:
+- ``order``: {expected, why, horizon T, h: [h, h/2, h/4], error: [3], observed: [2], floor,
+  refined: {h, error, observed}, asymptotic_h, status}:
   error = max(|g_N - g(T)|, |p_N - mu(T)|) against DOP853 at rtol = atol = 1e-12 on the
-  continuous equations (math.md sec. 5); observed = log2 of successive error ratios, the
-  last is the estimate. T = ``order_horizon`` (default min(1, steps h)) rounded to whole
-  steps of h. floor: the finest error is below 1e-10, where the reference's own error
-  (about 1e-12) may spoil the estimate.
+  continuous equations (docs/numerics.md sec. 9); observed = log2 of
+  successive error ratios, the last is the estimate. T = ``order_horizon`` (default
+  min(1, steps h)) rounded to whole steps of h. floor: the finest error is below 1e-10, where
+  the reference's own error (about 1e-12) may spoil the estimate. expected: see
+  ``expected_order`` (it depends on the model: a left-invariant l makes every q = 0 and every
+  variational Euler step order 2). When the observed orders do not yet agree with it (within
+  ORDER_TOL), h keeps being halved (``refined``: every level, from h) until two successive
+  orders agree, the errors reach the floor or a run would exceed REFINE_MAX_STEPS steps;
+  asymptotic_h is the largest h from which they agree (None if not reached) and status
+  ``asymptotic`` | ``floor`` | ``not reached``. Informative: the order is not a pass
+  criterion (a pre-asymptotic slope is no structure fault).
 - ``energy``: {initial, max_error = max_k |E_k - E_0|, relative_max_error, drift_slope}
   over the run of ``steps`` steps at h; drift_slope is the slope of the least-squares line
   through (t_k, E_k - E_0), per unit time.
@@ -34,10 +42,11 @@ Pass criteria and why:
 - symplectic: relative <= SYMPLECTIC_RTOL * max(1, cond_J / 100). Round-off model: Phi' comes
   from an LU solve with dF/dz, so its relative error is a few eps * cond(dF/dz); the defect
   sums products of two Phi' entries with Omega, so defect / (|Phi'|^2 |Omega|) ~ a few
-  eps cond(J). Measured 1e-16 to 4e-16 at cond(J) <= 171 (SO3, SE3, R2, SO3 x R3); 1e-12
-  leaves a margin of more than 10^3, while a non-symplectic 4th order method shows h^5-size
-  defects (RKMK-RK4 at h = 0.1: 0.9e-7 to 1.5e-7 relative on the free rigid body, 1.6e-6 on
-  the heavy top).
+  eps cond(J). Measured with ``hpgen check --h 0.1`` (4 states): 1.05e-15 (free body
+  gauss2/exp/exact), 2.83e-15 (free body gauss3/cay/exact), 1.45e-15 (underwater vehicle
+  gauss2/cay/exact); the bound (1e-12 times cond_J / 100 when larger) leaves a margin above
+  10^3, while a non-symplectic 4th order method shows h^5-size defects (RKMK-RK4 at
+  h = 0.1: 2.31e-6 relative on the heavy top).
 - group: max defect <= GROUP_TOL = 1e-10 (the runtime's bound for an initial g).
 - momentum (left-invariant l only): max change <= MOMENTUM_RTOL (1e-10) * max(1, |m_0|).
 Exit status of the CLI: 0 all pass, 3 a check failed (2 bad input, 1 other failures).
@@ -63,6 +72,11 @@ GROUP_TOL = 1e-10
 MOMENTUM_RTOL = 1e-10
 REFERENCE_RTOL = 1e-12
 FLOOR = 1e-10
+#: an observed order within this of the expected one agrees (the slope of three halvings
+#: of a clean h^p error is p to about 0.05; 0.25 leaves room for the next term)
+ORDER_TOL = 0.25
+#: the step budget of one refinement run of the order study (T / h_finest steps)
+REFINE_MAX_STEPS = 2 ** 17
 SCHEMES = ("hpgen", "rkmk-rk4")
 FORM = "omega((eta_a,nu_a),(eta_b,nu_b)) = <nu_b,eta_a> - <nu_a,eta_b> + <p,[eta_a,eta_b]>"
 
@@ -115,6 +129,66 @@ class _Rkmk:
         return self.rk.map_jacobian(g, p, h)
 
 
+def expected_order(left_invariant: bool, scheme_order: int, rkmk) -> tuple[int, str]:
+    """(order, why) that a scheme shows on a model (docs/numerics.md sec. 7).
+
+    scheme_order: the tableau's order with the exact RKMK constraint, min(order, 2) with
+    ``truncated`` (q = 0), 4 for RKMK-RK4; rkmk: 'exact' | 'truncated', None for a scheme
+    that is not one of hpgen's (RKMK-RK4). A left-invariant l (no g in l) turns every
+    q = 0 step into the reduced Euler-Poincare step of eq. ``dlp``, which is order 2 whatever
+    the tableau; the variational Euler tableaus (order 1) are order 2 there with either
+    constraint (measured: free rigid body, euler-forward and euler-backward, exp and cay).
+    When l depends on g (heavy top) they are order 1, which shows only at small h: 2.1 is
+    observed on h = 0.1 .. 0.0125, 1.19 between h = 7.8e-4 and 3.9e-4 (see ``_refine``).
+    """
+    if rkmk is None:
+        return scheme_order, "explicit RKMK-RK4"
+    if left_invariant and rkmk == "truncated":
+        return 2, "l left-invariant: a q = 0 step is the reduced step of eq. dlp"
+    if left_invariant and scheme_order == 1:
+        return 2, "l left-invariant: variational Euler is order 2"
+    if rkmk == "truncated":
+        return scheme_order, ("l depends on g: variational Euler is order 1" if scheme_order == 1
+                              else "the truncated constraint (q = 0) caps the order at 2")
+    return scheme_order, "the tableau's order, exact RKMK constraint"
+
+
+def _slopes(errs):
+    """log2 of successive error ratios (None where an error is 0)."""
+    return [float(np.log2(a / b)) if a > 0 and b > 0 else None
+            for a, b in zip(errs[:-1], errs[1:])]
+
+
+def _agreeing(errs, expected):
+    """The first k from which the slopes k and k + 1 agree with ``expected`` (within
+    ORDER_TOL), the errors down to h / 2^(k+2) above FLOOR; None if there is none. Two
+    slopes, not one: an error that changes sign between two h gives one accidental slope
+    (heavy top, euler-backward: 0.97 then 0.10 near h = 2e-3)."""
+    obs = _slopes(errs)
+    for k in range(len(obs) - 1):
+        pair = obs[k:k + 2]
+        if (errs[k + 2] >= FLOOR and None not in pair
+                and all(abs(o - expected) <= ORDER_TOL for o in pair)):
+            return k
+    return None
+
+
+def _refine(errs, expected, error_at, h, n_o) -> dict:
+    """Halve h beyond h/4 (appending to ``errs``) until the observed order agrees with the
+    expected one, the finest error falls below FLOOR or a run would exceed REFINE_MAX_STEPS
+    steps; ``error_at(k)`` is the error with step h / 2^k. Returns the report's ``refined``
+    ({h, error, observed} over every level), ``asymptotic_h`` and ``status``."""
+    errs = list(errs)
+    k = _agreeing(errs, expected)
+    while (k is None and errs[-1] >= FLOOR and n_o * 2 ** len(errs) <= REFINE_MAX_STEPS):
+        errs.append(error_at(len(errs)))
+        k = _agreeing(errs, expected)
+    status = "asymptotic" if k is not None else ("floor" if errs[-1] < FLOOR else "not reached")
+    return {"refined": {"h": [h / 2 ** i for i in range(len(errs))], "error": errs,
+                        "observed": _slopes(errs)},
+            "asymptotic_h": None if k is None else h / 2 ** k, "status": status}
+
+
 def _positive(x, name):
     if x is None or not (isinstance(x, (int, float)) and math.isfinite(x) and x > 0):
         raise ModelError(f"expected a finite number > 0, got {x!r}", field=f"option {name}")
@@ -154,13 +228,17 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     n_o = max(1, round(T / h))
     T = n_o * h
     gT, muT = (a[0] for a in eq.reference(g0, mu0, [T], rtol=REFERENCE_RTOL))
-    hs, errs = [h, h / 2, h / 4], []
-    for k, hk in enumerate(hs):
+
+    def error_at(k):            # error at T of the run with step h / 2^k
         N = n_o * 2 ** k
-        g, mu = sch.simulate(g0, mu0, hk, N, every=N)
-        errs.append(float(max(np.abs(g[-1] - gT).max(), np.abs(mu[-1] - muT).max())))
-    observed = [float(np.log2(a / b)) if a > 0 and b > 0 else None    # None: an error is 0
-                for a, b in zip(errs[:-1], errs[1:])]
+        g, mu = sch.simulate(g0, mu0, h / 2 ** k, N, every=N)
+        return float(max(np.abs(g[-1] - gT).max(), np.abs(mu[-1] - muT).max()))
+
+    expected, why = expected_order(model.left_invariant, sch.order,
+                                   sch.info.get("rkmk") if scheme == "hpgen" else None)
+    errs = [error_at(k) for k in range(3)]
+    hs, observed = [h, h / 2, h / 4], _slopes(errs)
+    refined = _refine(errs, expected, error_at, h, n_o)
 
     # the run at h: energy, momentum map, group defect
     g, mu = sch.simulate(g0, mu0, h, steps)
@@ -194,9 +272,9 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
         "hpgen_version": __version__, "model": model.name, "file": str(path),
         "group": model.group.name, "scheme": scheme, "integrator": sch.info,
         "h": h, "steps": steps, "duration": steps * h,
-        "order": {"expected": sch.order, "horizon": T, "h": hs, "error": errs,
+        "order": {"expected": expected, "why": why, "horizon": T, "h": hs, "error": errs,
                   "observed": observed, "floor": bool(errs[-1] < FLOOR),
-                  "reference": f"DOP853 rtol=atol={REFERENCE_RTOL:g}"},
+                  "reference": f"DOP853 rtol=atol={REFERENCE_RTOL:g}", **refined},
         "energy": {"initial": float(E[0]), "max_error": float(np.abs(dE).max()),
                    "relative_max_error": float(np.abs(dE).max() / max(abs(E[0]), 1e-300)),
                    "drift_slope": slope},
@@ -215,6 +293,29 @@ def _verdict(ok):
     return "n/a" if ok is None else ("PASS" if ok else "FAIL")
 
 
+def _regime(o) -> str:
+    """Where the expected order shows: 'from h = X', or why it was not seen."""
+    if o["asymptotic_h"] is not None:
+        return f"from h = {o['asymptotic_h']:.3g}"
+    return "floor" if o["status"] == "floor" else f"not by h = {o['refined']['h'][-1]:.3g}"
+
+
+def _regime_note(o) -> str:
+    ref = o["refined"]
+    extra = len(ref["h"]) - len(o["h"])
+    slopes = " ".join("-" if v is None else f"{v:.2f}" for v in ref["observed"])
+    if o["status"] == "asymptotic" and not extra:
+        return f"the observed order agrees with {o['expected']} (within {ORDER_TOL:g})"
+    if o["status"] == "floor":
+        return (f"the errors reach the reference floor ({FLOOR:g}) before two slopes agree "
+                f"with {o['expected']}: {slopes}")
+    if o["status"] == "asymptotic":
+        return (f"pre-asymptotic at h = {o['h'][0]:g}: halving h down to {ref['h'][-1]:.3g}, "
+                f"the slopes are {slopes}")
+    return (f"the slopes {slopes} down to h = {ref['h'][-1]:.3g} (budget "
+            f"{REFINE_MAX_STEPS} steps per run) do not agree with {o['expected']}")
+
+
 def format_report(r: dict) -> str:
     """The report as a plain-text table."""
     it = r["integrator"]
@@ -224,10 +325,11 @@ def format_report(r: dict) -> str:
     fmt = " ".join
     rows = [
         ("observed order", fmt("-" if v is None else f"{v:.2f}" for v in o["observed"]),
-         f"expected {o['expected']}; T = {o['horizon']:g}; errors "
+         f"expected {o['expected']} ({o['why']}); T = {o['horizon']:g}; errors "
          + fmt(f"{v:.2e}" for v in o["error"])
          + f" at h = {o['h'][0]:g}, /2, /4" + (" (near the reference floor)" if o["floor"]
                                                else "")),
+        ("asymptotic regime", _regime(o), _regime_note(o)),
         ("energy max |E - E0|", f"{e['max_error']:.3e}",
          f"relative {e['relative_max_error']:.2e}"),
         ("energy drift slope", f"{e['drift_slope']:.3e}", "per unit time (linear fit)"),

@@ -1,6 +1,6 @@
 """Exact solution of the free rigid body (Euler's equations) in Jacobi elliptic functions.
 
-Body angular momentum Pi (hpgen's convention, math.md sec. 5): Pi' = Pi x Omega,
+Body angular momentum Pi (hpgen's convention, docs/numerics.md sec. 9): Pi' = Pi x Omega,
 Omega = Pi / I, I the principal moments (a diagonal inertia). Energy E = 1/2 Pi.Omega and
 M^2 = |Pi|^2 are constant. Landau-Lifshitz, Mechanics, par. 37:
 

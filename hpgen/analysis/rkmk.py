@@ -1,7 +1,7 @@
 """The continuous equations of a model (for reference solutions) and an explicit RKMK-RK4
 scheme on them: a deliberately non-variational integrator, so that ``hpgen check`` can fail.
 
-Continuous equations (math.md sec. 5, the paper's eq. lthp), built generically with CasADi:
+Continuous equations (docs/numerics.md sec. 9, the paper's eq. lthp), built generically with CasADi:
 
     g' = g xi,   mu' = ad*_xi mu + g dl/dg + f,   mu = dl/dxi(g, xi),
 

@@ -17,7 +17,7 @@ Conventions:
   rtol 1e-13) preserve this form to ~1e-12 and violate the opposite sign at O(1)
   (tests/unit/test_symplectic.py); on R^n (ad = 0) it is dq ^ dp, Omega = [[0, I], [-I, 0]].
   A map given by a type-1 generating function s(g_0, g_1) with p_0 = -d_0 s, p_1 = d_1 s
-  (hpgen's discrete Legendre transforms, math.md sec. 2) pulls theta back to theta + ds,
+  (hpgen's discrete Legendre transforms, docs/numerics.md sec. 4) pulls theta back to theta + ds,
   hence preserves d theta.
 - In matrix form omega(a, b) = a^T Omega(p) b, Omega(p) = [[C(p), I], [-I, 0]] with
   C(p)_ij = <p, [e_i, e_j]>. Defect of Phi' from (g0, p0) to (g1, p1):

@@ -181,9 +181,18 @@ def write_png(result, path: Path):
         import matplotlib.pyplot as plt
     except ImportError:
         return False
+    fig = draw_work_precision(plt, result.points, f"{result.model_name}, T = {result.T:g}")
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return True
+
+
+def draw_work_precision(plt, points, title):
+    """The work-precision figure of ``points`` (objects with family, kind, ok, error, wall_s;
+    hpgen.bench.measure.Point or rows read back by hpgen.plot) with pyplot ``plt``."""
     fig, ax = plt.subplots(figsize=(8, 5.5))
     drawn = 0
-    for fam, pts in families(result.points).items():
+    for fam, pts in families(points).items():
         pts = sorted((p for p in pts if _usable(p)), key=lambda p: p.wall_s)
         if not pts:
             continue
@@ -192,7 +201,7 @@ def write_png(result, path: Path):
         drawn += 1
     ax.set_xlabel("wall time [s] (median)")
     ax.set_ylabel("error at T: max(|g - g_ref|, |mu - mu_ref|)")
-    ax.set_title(f"{result.model_name}, T = {result.T:g}")
+    ax.set_title(title)
     ax.grid(True, which="both", alpha=0.3)
     if drawn:
         ax.legend(fontsize=7)
@@ -200,6 +209,4 @@ def write_png(result, path: Path):
         ax.text(0.5, 0.5, "no point with a finite error (no reference?)", ha="center",
                 transform=ax.transAxes)
     fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return True
+    return fig

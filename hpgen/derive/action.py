@@ -1,7 +1,7 @@
 """Step k of the discrete Hamilton-Pontryagin action sum (eq. hpsumfuture) and its
 stationarity conditions, derived by CasADi's automatic differentiation.
 
-Conventions (../shared/notes/math.md, sections 1, 2, 4, 7):
+Conventions (docs/numerics.md, sections 2, 3, 4, 7):
 - Group variables are parametrized in the chart at g_k: G^i = g_k tau(h Theta^i),
   g_{k+1} = g_k tau(h xi_{k+1}). Their variations are right-multiplied algebra elements
   g_k (I + eta_0^), G^i (I + eps_i^), g_{k+1} (I + eta_1^); only first derivatives at 0 are

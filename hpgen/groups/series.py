@@ -2,7 +2,7 @@
 polynomials in the half angle (safe for casadi AD, cheap in the generated kernels).
 
 The exp chart maps of ``hpgen.groups.maps`` need functions such as sin t / t whose exact
-formula is 0/0 at t = 0 (math.md section 3). A map evaluates every function it needs at one
+formula is 0/0 at t = 0 (docs/numerics.md sec. 6). A map evaluates every function it needs at one
 ``Point(s)``, s = t^2 = |w|^2. Everything is built from two entire functions of the half
 angle u = t/2, x = u^2 = s/4 (exact in floating point):
 
@@ -41,7 +41,7 @@ switch point either: their AD derivatives cancel (d/du (sin u / u) = (cos u - si
 loses ~1/u^2 digits), which forced the switch to s = 1 and 9-11 term Taylor branches. A and
 B are entire, so polynomials cover the whole chart domain, and AD of a polynomial is a
 polynomial: value and every derivative are accurate, and exactly finite at s = 0 (no NaN,
-nothing to mask: math.md's branch rule is met trivially).
+nothing to mask: docs/numerics.md sec. 6's branch rule is met trivially).
 
 Accuracy domain: t <= T_MAX = pi, the exp chart's own domain (its margin (pi^2 - s)/(2 pi)
 is > 0 exactly there; the runtime accepts a step only with every chart argument inside,

@@ -199,11 +199,40 @@ class Integrator(SectionsMixin, RecordsMixin):
 
     def step(self, g, p, h, z=None, *, newton: NewtonOptions | None = None, u=None,
              params=None, t=0.0):
-        """(g_{k+1}, p_{k+1}) from (g_k, p_k). z: Newton start (default: guess from the
-        velocity of (g, p)). Full Newton unless newton.simplified is True (a cold start).
-        An open module takes the step's start time t, its inputs u (m,) and ``params``
-        (overrides of the runtime parameters). Raises ConvergenceError / DomainError
-        (step 0, t = 0)."""
+        """One step (g_k, p_k) -> (g_(k+1), p_(k+1)).
+
+        Parameters
+        ----------
+        g : array_like, shape (n, n)
+            Group element g_k.
+        p : array_like, shape (d,)
+            Node momentum p_k (body frame).
+        h : float
+            Step size, > 0, in the model's time unit.
+        z : array_like, shape (nz,), optional
+            Newton start (``integ.nz`` unknowns); default: the guess kernel at the velocity
+            of (g, p).
+        newton : hpgen.runtime.newton.NewtonOptions or None, optional
+            Newton settings (tol 1e-14, maxit 50); here full Newton unless
+            ``newton.simplified`` is True (a cold start).
+        u : array_like, shape (m,), optional
+            Control inputs of a model with ``inputs:`` (required there), held over the step.
+        params : dict, optional
+            Overrides of the model's ``runtime_parameters`` (defaults: the model file's
+            values); no recompilation.
+        t : float, optional
+            The step's start time t_k (default 0).
+
+        Returns
+        -------
+        g1 : ndarray, shape (n, n)
+        p1 : ndarray, shape (d,)
+
+        Raises
+        ------
+        ConvergenceError, DomainError
+            Newton failed, or the solution left the chart's domain (step 0, t = 0).
+        """
         gf, p = self._g(g), self._v(p, "p")
         h = _positive(h, "h")
         inputs = step_inputs(self.open, 1, u, params, t)
@@ -307,13 +336,52 @@ class Integrator(SectionsMixin, RecordsMixin):
     def simulate(self, g0, h, steps, xi0=None, mu0=None, every=1, *,
                  newton: NewtonOptions | None = None, u=None, params=None,
                  t0=0.0) -> Trajectory:
-        """Run ``steps`` steps of size h from g0 with initial velocity xi0 or momentum mu0
-        (exactly one), recording every ``every`` steps. The C backend runs all steps in one
-        call. On a failed step raises ConvergenceError (DomainError for tau) whose
-        ``.partial`` is the Trajectory so far (partial=True). t0: the start time (record k is
-        at t0 + k every h). An open module (forces, inputs, runtime parameters, t) takes
-        u ((m,) held for every step, or (steps, m), row k held over step k) and params
-        ({runtime parameter: value}, overrides of the model file's defaults)."""
+        """Run ``steps`` steps of size h and keep every ``every``-th state.
+
+        The C backend runs all steps in one call.
+
+        Parameters
+        ----------
+        g0 : array_like, shape (n, n)
+            Initial group element, on the group to 1e-10 (n = ``integ.n``).
+        h : float
+            Step size, > 0, in the model's time unit.
+        steps : int
+            Number of steps, >= 0.
+        xi0 : array_like, shape (d,), optional
+            Initial body velocity (d = ``integ.d``); p_0 = dl/dxi(g0, xi0).
+        mu0 : array_like, shape (d,), optional
+            Initial body momentum (node momentum p_0). Exactly one of xi0 and mu0.
+        every : int, optional
+            Record interval in steps, >= 1 (default 1). Record k is the state after step
+            k*every; the last step is recorded only if ``steps % every == 0``.
+        newton : hpgen.runtime.newton.NewtonOptions or None, optional
+            Newton settings: tol (1e-14: ||dz|| <= tol (1 + ||z||)), maxit (50), simplified
+            (None: keep J^{-1} across iterations and steps when the Jacobian kernel costs more
+            than 4 residuals, docs/numerics.md sec. 8), predictor (True: start each step from
+            the extrapolation of the last solutions). None: all defaults.
+        u : array_like, shape (m,) or (steps, m), optional
+            Control inputs of a model with ``inputs:`` (required there): one row held for
+            every step, or row k held over step k.
+        params : dict, optional
+            Overrides of the model's ``runtime_parameters`` (defaults: the model file's
+            values); no recompilation.
+        t0 : float, optional
+            Start time (default 0): record k is at t0 + k every h.
+
+        Returns
+        -------
+        Trajectory
+            ``t`` (K,), ``g`` (K, n, n), ``mu`` (K, d) node momenta, K = steps // every + 1;
+            ``energy()``, ``momentum()``, ``xi()``, ``defect()``, ``save(path)``.
+
+        Raises
+        ------
+        ModelError
+            A bad argument (shape, value, g0 off the group, both or neither of xi0/mu0).
+        ConvergenceError, DomainError
+            A step failed; ``.partial`` is the Trajectory so far (partial=True).
+        """
         h, steps, every, opts, gf, mu0, z0, inputs = self._prepare(
             g0, h, steps, xi0, mu0, every, newton, u, params, t0)
         if inputs is None:
@@ -328,12 +396,43 @@ class Integrator(SectionsMixin, RecordsMixin):
 
     def stream(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000, *,
                newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
-        """Like ``simulate`` but in chunks of at most ``chunk`` steps, so that memory stays
-        bounded on long runs: yields one Trajectory per chunk (the first starts with step 0;
-        ``t`` is global). The states are bitwise those of ``simulate`` (the run, its Newton
-        memory and predictor carry over between chunks). A failure raises ConvergenceError /
-        DomainError with ``.partial`` the records of the failing chunk. u, params, t0: as
-        in ``simulate``."""
+        """``simulate`` in chunks of at most ``chunk`` steps (bounded memory on long runs).
+
+        The states are bitwise those of ``simulate``: the run, its Newton memory and
+        predictor carry over between chunks.
+
+        Parameters
+        ----------
+        g0, h, steps, xi0, mu0
+            As for ``simulate``: g0 (n, n) on the group, h > 0 in the model's time unit,
+            steps >= 0, exactly one of xi0 / mu0 (d,).
+        every : int, optional
+            Record interval in steps, >= 1 (default 1).
+        chunk : int, optional
+            Steps per chunk (one C call each), >= 1 (default 100,000).
+        newton : NewtonOptions or None, optional
+            Newton settings, as for ``simulate``.
+        u : array_like, shape (m,) or (steps, m), optional
+            Control inputs of a model with ``inputs:`` (required there): one row held for
+            every step, or row k held over step k.
+        params : dict, optional
+            Overrides of the model's ``runtime_parameters`` (defaults: the model file's
+            values); no recompilation.
+        t0 : float, optional
+            Start time (default 0): record k is at t0 + k every h.
+
+        Yields
+        ------
+        Trajectory
+            One per chunk; the first starts with step 0, ``t`` is global.
+
+        Raises
+        ------
+        ModelError
+            A bad argument.
+        ConvergenceError, DomainError
+            A step failed; ``.partial`` holds the records of the failing chunk.
+        """
         chunk = _int(chunk, "chunk", 1)
         h, steps, every, opts, gf, mu0, z0, inputs = self._prepare(
             g0, h, steps, xi0, mu0, every, newton, u, params, t0)
@@ -377,14 +476,50 @@ class Integrator(SectionsMixin, RecordsMixin):
     def simulate_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
                        newton: NewtonOptions | None = None, u=None, params=None,
                        t0=0.0, progress=None) -> list:
-        """An ensemble: B runs from g0 ((n, n) shared, or (B, n, n)) and xi0 or mu0 (B, d),
-        in C over ``threads`` threads (default: the CPU count). Each run's states are bitwise
-        those of ``simulate`` on its own. Returns B Trajectories; a failed run's Trajectory
-        is partial with ``.error`` set (nothing is raised). An open module takes u and t0
-        (shared) and params, whose values may carry a leading axis of length B: run b takes
-        entry b (a parameter sweep, no recompilation); each run is bitwise ``simulate`` with
-        its own params. progress: a bar of the members done on stderr (None: when stderr is
-        a terminal; hpgen.runtime.progress)."""
+        """An ensemble of B runs, in C over ``threads`` threads (C backend only).
+
+        Each run's states are bitwise those of ``simulate`` on its own.
+
+        Parameters
+        ----------
+        g0 : array_like, shape (n, n) or (B, n, n)
+            Initial group element, shared or one per run.
+        h : float
+            Step size, > 0, in the model's time unit.
+        steps : int
+            Number of steps of every run, >= 0.
+        xi0, mu0 : array_like, shape (B, d), optional
+            Initial velocities or momenta, one row per run; exactly one of the two.
+        every : int, optional
+            Record interval in steps, >= 1 (default 1).
+        threads : int or None, optional
+            Worker threads, >= 1; None (default): the CPU count.
+        progress : bool or None, optional
+            A bar of the runs done on stderr; None (default): when stderr is a terminal.
+        newton : NewtonOptions or None, optional
+            Newton settings, as for ``simulate``.
+        u : array_like, shape (m,) or (steps, m), optional
+            Control inputs of a model with ``inputs:`` (required there): one row held for
+            every step, or row k held over step k.
+        params : dict, optional
+            Overrides of the model's ``runtime_parameters`` (defaults: the model file's
+            values); no recompilation.
+            In ``simulate_batch`` a value may carry a leading axis of length B:
+            run b takes entry b (a parameter sweep).
+        t0 : float, optional
+            Start time (default 0): record k is at t0 + k every h.
+
+        Returns
+        -------
+        list of Trajectory
+            B trajectories; a failed run's is partial with ``.error`` set (nothing is
+            raised for a failed run).
+
+        Raises
+        ------
+        ModelError
+            A bad argument, or the Python backend.
+        """
         h, steps, every, opts, threads, gs, ms, z0s, inputs = self._prepare_batch(
             g0, h, steps, xi0, mu0, every, threads, newton, "simulate_batch", u, params, t0)
         with progress_bar(len(gs), "simulate_batch", "member", progress) as bar:

@@ -170,11 +170,45 @@ class RecordsMixin:
 
     def record(self, g0, h, steps, xi0=None, mu0=None, every=1, *,
                newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
-        """Run ``steps`` steps keeping only the compiled record row (``record_names``: the
-        scene's g, mu, xi, energy, momentum, defect and expressions) every ``every`` steps;
-        returns a hpgen.runtime.records.Records. The row is evaluated inside the C loop;
-        when neither the step nor the row use g, g is not reconstructed (meta skip). The
-        states are bitwise those of ``simulate``. A failure raises (``.partial`` set)."""
+        """Run ``steps`` steps keeping only the scene's record row every ``every`` steps.
+
+        The row (``record_names``: the scene's g, mu, xi, energy, momentum, defect and
+        expressions) is evaluated inside the C loop; when neither the step nor the row use
+        g, g is not reconstructed. The states are bitwise those of ``simulate``.
+
+        Parameters
+        ----------
+        g0, h, steps, xi0, mu0
+            As for ``simulate``: g0 (n, n) on the group, h > 0 in the model's time unit,
+            steps >= 0, exactly one of xi0 / mu0 (d,).
+        every : int, optional
+            Record interval in steps, >= 1 (default 1); record 0 is the initial state.
+        newton : NewtonOptions or None, optional
+            Newton settings, as for ``simulate``.
+        u : array_like, shape (m,) or (steps, m), optional
+            Control inputs of a model with ``inputs:`` (required there): one row held for
+            every step, or row k held over step k.
+        params : dict, optional
+            Overrides of the model's ``runtime_parameters`` (defaults: the model file's
+            values); no recompilation.
+        t0 : float, optional
+            Start time (default 0): record k is at t0 + k every h.
+
+        Returns
+        -------
+        Records
+            ``t`` (K,) and one array per record name, K = steps // every + 1: g (K, n, n);
+            mu, xi, momentum (K, d); energy, defect, expressions (K,). ``rec["energy"]``,
+            ``rec.save(path)``.
+
+        Raises
+        ------
+        ModelError
+            A bad argument.
+        ConvergenceError, DomainError, RecordError
+            A step failed, or a recorded value is not finite (``RecordError`` names the
+            entries); ``.partial`` holds the records up to the failure.
+        """
         chunks = list(self.stream_record(g0, h, steps, xi0, mu0, every, max(steps, 1),
                                          newton=newton, u=u, params=params, t0=t0))
         return chunks[0]

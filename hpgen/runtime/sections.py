@@ -23,12 +23,44 @@ class SectionsMixin:
     def sections(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None, chunk=100_000,
                  *, newton: NewtonOptions | None = None, u=None, params=None,
                  t0=0.0) -> SectionCrossings:
-        """Run up to ``steps`` steps and return the upward crossings of the model's
-        ``scene.section`` s(g, mu) = 0 (compiled into the step loop: nothing else is kept), at
-        most ``max_crossings`` (then the run stops at that crossing's step). The states are
-        bitwise those of ``simulate``. A failed step raises ConvergenceError / DomainError
-        with ``.partial`` the crossings found before it. u, params, t0: as in ``simulate``
-        (crossing times are t0 + (k + theta) h)."""
+        """Run up to ``steps`` steps and keep only the upward crossings of ``scene.section``.
+
+        s(g, mu) = 0 is tested inside the step loop (docs/numerics.md sec. 12); the states are
+        bitwise those of ``simulate``. The module's model must have a ``section``.
+
+        Parameters
+        ----------
+        g0, h, steps, xi0, mu0
+            As for ``simulate``: g0 (n, n) on the group, h > 0 in the model's time unit,
+            steps >= 0, exactly one of xi0 / mu0 (d,).
+        max_crossings : int or None, optional
+            Stop the run at the step of this crossing; None (default): run all steps.
+        newton : NewtonOptions or None, optional
+            Newton settings, as for ``simulate``.
+        chunk : int, optional
+            Steps per C call, >= 1 (default 100,000); bounds the memory of a run.
+        u : array_like, shape (m,) or (steps, m), optional
+            Control inputs of a model with ``inputs:`` (required there): one row held for
+            every step, or row k held over step k.
+        params : dict, optional
+            Overrides of the model's ``runtime_parameters`` (defaults: the model file's
+            values); no recompilation.
+        t0 : float, optional
+            Start time (default 0): record k is at t0 + k every h.
+
+        Returns
+        -------
+        SectionCrossings
+            ``t`` (K,), ``g`` (K, n, n) on the step's chart curve, ``mu`` (K, d) interpolated
+            linearly, ``step`` (K,) the step of each crossing; ``steps`` run.
+
+        Raises
+        ------
+        ModelError
+            A bad argument, or a model without ``section``.
+        ConvergenceError, DomainError
+            A step failed; ``.partial`` holds the crossings found before it.
+        """
         h, steps, cap_total, chunk, opts = self._section_args(h, steps, max_crossings, chunk,
                                                              newton)
         inputs = step_inputs(self.open, steps, u, params, t0)

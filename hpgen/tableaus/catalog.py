@@ -1,7 +1,7 @@
 """Butcher tableaus (A, b) of the VPRK / Hamilton-Pontryagin methods and their catalog.
 
 Conventions: s stages, A an s x s tuple of rows, b the s weights, c = row sums of A (the
-stage nodes). The discrete Hamilton-Pontryagin principle (math.md sec. 1) divides by every
+stage nodes). The discrete Hamilton-Pontryagin principle (docs/numerics.md sec. 2) divides by every
 b_j, so all weights must be nonzero; consistency requires sum(b) = 1. The VPRK method built
 from ANY such tableau is symplectic; ``is_symplectic`` reports whether the Runge-Kutta method
 itself is (b_i a_ij + b_j a_ji = b_i b_j).

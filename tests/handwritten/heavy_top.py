@@ -10,7 +10,7 @@ Derivatives of l (by hand):
                   -Mg chi.((e - e eta^) R^T e3)' = Mg chi.(eta x R^T e3) = eta.((R^T e3) x chi)).
 
 Every method below keeps the paper's state and indexing, and reports hpgen's node momentum
-p_k (the left-trivialized derivative of the action sum's terms in g_k, math.md sec. 2). The
+p_k (the left-trivialized derivative of the action sum's terms in g_k, docs/numerics.md sec. 4). The
 paper's multiplier mu_k is a different quantity in each method:
 
 Stormer-Verlet (tableau [[0, 0], [1/2, 1/2]], b = (1/2, 1/2)). State (g_k, mu_k, xi_k) with

@@ -5,7 +5,8 @@ not from the closed forms specific to SO(3) that hpgen uses (``hpgen/groups/maps
 
 - hat: R^3 -> so(3), hat(w) y = w x y; vee its inverse. The pairing of g* with g is the dot
   product of vectors (equivalently <M, X> = tr(M^T X) / 2 for M = hat(mu), X = hat(xi)).
-- ad_x y = [x, y] = x x y, so ad_x is the matrix hat(x); ad*_x mu = mu x x (math.md sec. 5).
+- ad_x y = [x, y] = x x y, so ad_x is the matrix hat(x); ad*_x mu = mu x x
+  (docs/numerics.md sec. 1).
 - cay(x) = (e - x/2)^{-1} (e + x/2)                                   (eq. cay)
   dcay^{-1}(x) y = (e - x/2) y (e + x/2),
   dcay(x) y = (e - x/2)^{-1} y (e + x/2)^{-1}                          (eq. dcay)

@@ -4,7 +4,7 @@ MV (Moser & Veselov 1991): the rigid body as a constrained system in R^{3x3} wit
 L(R, R') = 1/2 tr(R' J R'^T), J = tr(I)/2 e - I (J_i = (I_j + I_k - I_i)/2, so that
 L = 1/2 Omega.I Omega), discretized by L_d(R_k, R_{k+1}) = 1/(2h) |R_{k+1} - R_k|_J^2
 = (tr J - tr(f_k J))/h, f_k = R_k^T R_{k+1} in SO(3). Its discrete Euler-Lagrange equations,
-with the node momentum p_k = -left-trivialized D_1 L_d (as in hpgen, math.md sec. 2), are
+with the node momentum p_k = -left-trivialized D_1 L_d (as in hpgen, docs/numerics.md sec. 4), are
 
     f_k J - J f_k^T = h hat(p_k)      (solved for f_k in SO(3)),
     hat(p_{k+1}) = f_k^T hat(p_k) f_k  (= (J f_k - f_k^T J)/h),     R_{k+1} = R_k f_k,

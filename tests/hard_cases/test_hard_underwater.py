@@ -1,6 +1,6 @@
 """Hard case 6: the chaotic underwater vehicle (examples/underwater_vehicle.yaml: Kirchhoff's
 equations on SE3, I = (2, 1, 2/3), M = (1, 1.5, 3), (Pi0; P0) = (0.3, 1, 0.2; 1, 0, 0.5),
-largest Lyapunov exponent ~0.117, math.md sec. 8) at h = 0.05 up to T = 5000 (10^5 steps),
+largest Lyapunov exponent ~0.117, docs/numerics.md sec. 11) at h = 0.05 up to T = 5000 (10^5 steps),
 gauss2/cay/exact (order 4, variational) against a plain RK4 on the reduced Kirchhoff
 equations written here:
     Pi' = Pi x Omega + P x v,  P' = P x Omega,  Omega = Pi / I,  v = P / M.
@@ -10,7 +10,8 @@ e^{0.117 t}); the discriminator is the drift of the invariants.
 Pass criteria:
 - energy: hpgen's error is bounded (last tenth within 1.5x of the first tenth) and its
   largest value over the last tenth is at least 10x smaller than RK4's |H(T) - H(0)|;
-  RK4's error is a secular drift (|dH(T)| > 1.5 |dH(T/2)|; math.md: -1.3e-4 by T = 10^4);
+  RK4's error is a secular drift (|dH(T)| > 1.5 |dH(T/2)|; docs/numerics.md sec. 11: -1.3e-4
+  by T = 10^4);
 - Casimirs |P|^2 and Pi.P conserved by hpgen to 1e-11 relative: the scheme conserves the
   spatial momentum Ad*_{g_k^-1} p_k (discrete Noether), so p_{k+1} = Ad*_{g_k^-1 g_k+1} p_k
   stays on the coadjoint orbit of p_0, where the Casimirs are constant (round-off only);

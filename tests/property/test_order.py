@@ -1,6 +1,6 @@
 """Observed order of convergence against an independent DOP853 reference (rtol 2.5e-14).
 
-Error = max(|g_N - g(T)|, |p_N - mu(T)|) with p_N the node momentum (math.md sec. 2).
+Error = max(|g_N - g(T)|, |p_N - mu(T)|) with p_N the node momentum (docs/numerics.md sec. 4).
 The observed order is log2(e(h) / e(h/2)) on the two finest step sizes; it must be within
 0.25 of the scheme's order: the leading error term dominates there (measured: the finest
 pair is within 0.07 of the order for every case, and moves towards it from the previous

@@ -83,7 +83,8 @@ def test_exact_free_body_near_separatrix_against_dop853(delta):
 
 @pytest.mark.parametrize("delta", [1.35e-8, -1.35e-8])
 def test_exact_free_body_at_the_separatrix_against_mpmath_ode(delta):
-    """1 - k^2 = 5.4e-8 (math.md: SciPy's ellipj is off by 3e-8 at 2.7e-8). Reference:
+    """1 - k^2 = 5.4e-8 (docs/numerics.md sec. 11: SciPy's ellipj is off by 3e-8 at 2.7e-8).
+    Reference:
     mpmath's Taylor ODE solver at 20 digits, at t = K/lam (at the saddle) and 2K/lam.
     Criterion: 1e-14 absolute (|Pi| = 1). Measured: 1.6e-25 and 6.2e-25 (identical
     doubles). The same formulas with SciPy's functions and m = 1 - (1 - k^2) in double are
@@ -362,8 +363,8 @@ def test_underwater_drift_rk4_against_variational_euler(cache_dir):
     > 5 and |slope T| > 0.8 max |H - H0| for every state (linear drift), |P|^2 drifts by
     > 1e-6; VE last/first tenth < 1.5 and |slope T| < 0.2 max |H - H0| (bounded), Casimirs
     < 1e-12.
-    The RK4 benchmark claim at T = 10^4 (math.md: -1.3e-4) follows: slope*T = -5.2e-5 at
-    T = 4000 in the full run."""
+    The RK4 benchmark claim at T = 10^4 (docs/numerics.md sec. 11: -1.3e-4) follows:
+    slope*T = -5.2e-5 at T = 4000 in the full run."""
     pc = _poincare()
     states = pc.initial_states(8)[::2]
     T, h = 500.0, 0.05

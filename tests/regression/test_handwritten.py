@@ -246,7 +246,7 @@ def test_euler_poincare_free_body(compile_model, tau, backend):
 
 @pytest.mark.parametrize("tableau", ["midpoint", "gauss2"])
 def test_euler_poincare_reduction_any_tableau(compile_model, tableau):
-    """With q = 0 the Euler-Poincare step does not depend on the tableau (math.md sec. 2):
+    """With q = 0 the Euler-Poincare step does not depend on the tableau (docs/numerics.md sec. 4):
     midpoint and Gauss-2 give eq. cayhpvi too (C backend)."""
     integ = compile_model(FREE_BODY, tableau=tableau, tau="cay", rkmk="truncated", backend="c")
     d, dl = compare(integ, H_SO3, free_body_states(), hand_ep("cay"), STEPS,
