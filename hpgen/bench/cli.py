@@ -27,7 +27,8 @@ def add_parser(sub):
                    "(default 1e-4,1e-6,...,1e-12)")
     b.add_argument("--cvodes-tol", help="comma list of cvodes reltol (default: as --rtol)")
     b.add_argument("--peers", help="comma list of DOP853, RK45, cvodes-bdf, cvodes-adams, "
-                   "collocation, RK4-numpy, RK4-C (default all)")
+                   "collocation, RK4-numpy, RK4-C, splitting-2, splitting-4, splitting-6, RATTLE "
+                   "(default all; the last four on rigid bodies only)")
     b.add_argument("--reference", default="auto", help="auto (exact if known, else DOP853 "
                    "rtol = atol = 1e-13), exact, dop853, none")
     b.add_argument("--samples", default="200", help="samples for the energy drift (default 200)")

@@ -14,7 +14,8 @@ Grids (API lists, or comma lists on the CLI), defaults from the scene's h = h0:
   h0 * 2^-k, k = 0..2. Every h is turned into steps = round(T / h), h = T / steps (noted if it moves).
 - ``rtol`` (SciPy DOP853 / RK45) and ``cvodes_tol``: 1e-4, 1e-6, ..., 1e-12 (``cvodes_tol``
   defaults to ``rtol``); atol = rtol * 1e-3 (hpgen.bench.peers.ATOL_FACTOR).
-- ``peers``: names of hpgen.bench.peers.PEERS (default all).
+- ``peers``: names of hpgen.bench.peers.PEERS (default all; the rigid-body C peers
+  splitting-2/4/6 and RATTLE are skipped, with a note, on a model they do not fit).
 Reference: ``reference`` = auto (exact solution when hpgen.analysis.exact has one, else
 DOP853 at rtol = atol = 1e-13 on the same f), exact, dop853 or none; computed once per run.
 Bad input (file, scene, grid values, names) raises ModelError before anything is built.
@@ -186,7 +187,9 @@ def run_bench(model, *, T=None, schemes=None, tableau=None, tau=None, rkmk=None,
         _check_steps(pb.T, grid, fld)
 
     from .crk4 import CRK4
-    from .peers import (collocation_points, cvodes_points, rk4_points, scipy_points)
+    from .peers import (RIGID_PEERS, collocation_points, cvodes_points, rk4_points,
+                        scipy_points)
+    from .rigid import RigidPeers, rigid_parameters, rigid_points
     log(f"hpgen bench {pb.model.name}: T = {pb.T:g}, {len(schemes)} schemes x {len(hs)} h, "
         f"peers {', '.join(peers)}")
     crk4 = CRK4(pb, cache_dir)
@@ -197,6 +200,17 @@ def run_bench(model, *, T=None, schemes=None, tableau=None, tau=None, rkmk=None,
     log(f"  reference: {ref_text}")
 
     points = hpgen_points(pb, y_ref, schemes, hs, timing, samples, cache_dir, log)
+    notes, rigid = list(pb.notes), None
+    if any(name in RIGID_PEERS for name in peers):
+        body = rigid_parameters(pb.eq)
+        if body is None:
+            skipped = [name for name in peers if name in RIGID_PEERS]
+            peers = [name for name in peers if name not in RIGID_PEERS]
+            notes.append(f"{', '.join(skipped)} skipped: they need an SO3 body with "
+                         "l = 1/2 xi.diag(I) xi - m.(R^T e3)")
+        else:
+            rigid = RigidPeers(*body, cache_dir)
+            log(f"  rigid-body peers (C) built in {rigid.setup_s:.2f} s")
     for name in peers:
         log(f"  {name} ...")
         if name in ("DOP853", "RK45"):
@@ -205,12 +219,14 @@ def run_bench(model, *, T=None, schemes=None, tableau=None, tau=None, rkmk=None,
             points += cvodes_points(pb, y_ref, name.split("-")[1], ctols, timing, samples)
         elif name == "collocation":
             points += collocation_points(pb, y_ref, chs, timing, samples)
+        elif name in RIGID_PEERS:
+            points += rigid_points(pb, y_ref, rigid, name, rhs_, timing, samples)
         else:
             points += rk4_points(pb, y_ref, crk4, rhs_, timing, samples, name)
     rule = (f"repeats until >= {timing.min_repeats} runs and >= {timing.min_time:g} s, or "
             f">= {timing.max_time:g} s")
     res = BenchResult(pb.model.name, pb.path, pb.T, ref_text, samples, rule, points,
-                      notes=list(pb.notes))
+                      notes=notes)
     if write:
         res.files = write_files(res, Path(out) if out else Path(f"bench-{pb.model.name}"))
     log(f"  done in {time.perf_counter() - t_start:.1f} s")

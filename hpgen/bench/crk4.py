@@ -41,15 +41,16 @@ def render(problem) -> str:
         sz_iw=max(1, f.sz_iw()), sz_w=max(1, f.sz_w()))
 
 
-def build(source: str, cache_dir=None, cc=None) -> Path:
-    """Compile ``source`` (cached by its sha256); returns the shared library's path."""
+def build(source: str, cache_dir=None, cc=None, prefix="bench-rk4") -> Path:
+    """Compile ``source`` (cached by its sha256, in the cache entry ``<prefix>-<sha256[:24]>``);
+    returns the shared library's path."""
     from .. import cache
     from ..runtime.build import build_library
     cache_dir = Path(cache_dir) if cache_dir else cache.default_cache_dir()
     key = hashlib.sha256(source.encode()).hexdigest()
-    entry = cache_dir / f"bench-rk4-{key[:24]}"
+    entry = cache_dir / f"{prefix}-{key[:24]}"
     if not cache.is_valid(entry):
-        with cache.locked(cache_dir, f"bench-rk4-{key[:24]}"):
+        with cache.locked(cache_dir, f"{prefix}-{key[:24]}"):
             if not cache.is_valid(entry):
                 cache.write_tree(entry, {"kernels.c": source,
                                          "meta.json": json.dumps({"hash": key})})

@@ -14,6 +14,7 @@ Families (names used by --peers, the CSV ``family`` column and the comparisons):
   largest divisor of N <= samples (so that output times are element boundaries).
 - ``RK4-numpy``: classical RK4, the loop in NumPy, f = the C vector field (as SciPy's).
 - ``RK4-C``: the same RK4 (same arithmetic, same order) emitted as C (hpgen.bench.crk4).
+- ``splitting-2/4/6``, ``RATTLE``: hand-written C, rigid bodies only (hpgen.bench.rigid).
 Fixed-step samples: every max(1, steps // samples)-th node and the final state.
 """
 from __future__ import annotations
@@ -23,11 +24,16 @@ import time
 import numpy as np
 
 from .measure import Point, measure, thin
+from .rigid import FAMILIES
 
 ATOL_FACTOR = 1e-3
 COLLOCATION_ORDER = 2
 CVODES_MAX_STEPS = 10 ** 7
-PEERS = ("DOP853", "RK45", "cvodes-bdf", "cvodes-adams", "collocation", "RK4-numpy", "RK4-C")
+#: the structure-preserving rigid-body peers (hpgen.bench.rigid): only for a body with
+#: l = 1/2 xi.diag(I) xi - m.(R^T e3) (heavy top, free body); skipped with a note elsewhere
+RIGID_PEERS = FAMILIES
+PEERS = ("DOP853", "RK45", "cvodes-bdf", "cvodes-adams", "collocation", "RK4-numpy",
+         "RK4-C") + RIGID_PEERS
 
 
 def steps_for(T, h):

@@ -9,7 +9,8 @@ Files written into the output directory:
 - ``work_precision.md``: the same points as a Markdown table with MD_COLUMNS, then the
   setup times and the equal-error comparisons.
 - ``work_precision.png``: error against wall time, log-log, one line per family
-  (matplotlib, Agg backend, imported only here).
+  (matplotlib, Agg backend, imported only here): hpgen solid, general ODE peers dashed, the
+  structure-preserving rigid-body peers (STRUCTURE_PEERS) dash-dotted.
 
 Equal error: a peer's time at error e is read off its Pareto front (the points no other
 point of the family beats in both error and time: the setting a user would pick), by linear
@@ -24,6 +25,8 @@ import math
 from pathlib import Path
 
 import numpy as np
+
+from .rigid import FAMILIES as STRUCTURE_PEERS
 
 CSV_COLUMNS = ("method", "family", "kind", "parameter_name", "parameter", "error",
                "energy_drift", "group_defect", "wall_time_s", "steps_per_s", "f_evals",
@@ -133,6 +136,8 @@ def setup_table(points):
         what = f"{p.method}, {_param(p)}" if per_point else p.method
         if p.family in ("DOP853", "RK45", "RK4-numpy", "RK4-C"):
             what += " (C vector field: emit, build, load; shared)"
+        elif p.family in STRUCTURE_PEERS:
+            what += " (hand-written rigid.c: build, load; shared)"
         if p.setup_note:
             what += f" ({p.setup_note})"
         out.append(f"| {what} | {_e(p.setup_s)} |")
@@ -196,7 +201,8 @@ def draw_work_precision(plt, points, title):
         pts = sorted((p for p in pts if _usable(p)), key=lambda p: p.wall_s)
         if not pts:
             continue
-        style = "-o" if pts[0].kind == "hpgen" else "--s"
+        style = ("-o" if pts[0].kind == "hpgen" else "-.^" if fam in STRUCTURE_PEERS
+                 else "--s")
         ax.loglog([p.wall_s for p in pts], [p.error for p in pts], style, label=fam, ms=4)
         drawn += 1
     ax.set_xlabel("wall time [s] (median)")
