@@ -1,4 +1,4 @@
-"""The classical RK4 peer emitted as C by hpgen, so that RK4 and hpgen run in one language.
+"""The classical RK4 peer (and the implicit midpoint rule) emitted as C by hpgen, so that RK4 and hpgen run in one language.
 
 CasADi's C generator writes f (the Problem's vector field, a dense casadi.Function y -> y');
 ``rk4.c.j2`` (next to this file, rendered with Jinja2 StrictUndefined) adds the RK4 loop and a
@@ -38,7 +38,8 @@ def render(problem) -> str:
     return env.get_template(TEMPLATE).render(
         model=problem.model.name, version=__version__, ny=problem.ny, fname=f.name(),
         casadi_source=cg.dump(), sz_arg=max(1, f.sz_arg()), sz_res=max(1, f.sz_res()),
-        sz_iw=max(1, f.sz_iw()), sz_w=max(1, f.sz_w()))
+        sz_iw=max(1, f.sz_iw()), sz_w=max(1, f.sz_w()),
+        so3=problem.model.group.name == "SO3")
 
 
 def build(source: str, cache_dir=None, cc=None, prefix="bench-rk4") -> Path:
@@ -73,6 +74,13 @@ class CRK4:
         lib.hpgen_bench_rk4.argtypes = [ctypes.c_void_p, ctypes.c_double, ctypes.c_long,
                                         ctypes.c_long, ctypes.c_void_p]
         lib.hpgen_bench_rk4.restype = ctypes.c_long
+        lib.hpgen_bench_midpoint.argtypes = [ctypes.c_void_p, ctypes.c_double, ctypes.c_long,
+                                             ctypes.c_long, ctypes.c_void_p, ctypes.c_void_p]
+        lib.hpgen_bench_midpoint.restype = ctypes.c_long
+        self.has_lie_midpoint = problem.model.group.name == "SO3"
+        if self.has_lie_midpoint:
+            lib.hpgen_bench_lie_midpoint.argtypes = lib.hpgen_bench_midpoint.argtypes
+            lib.hpgen_bench_lie_midpoint.restype = ctypes.c_long
         self._f = lib.hpgen_bench_f
         self.setup_s = time.perf_counter() - t0
 
@@ -99,3 +107,17 @@ class CRK4:
         if rec is not None:
             rec = rec[:done // (every or 1) + 1]
         return rec, y, int(done)
+
+    def midpoint(self, y0, h, steps, every=None, lie=False):
+        """The implicit midpoint rule on the same f (rk4.c.j2), or with lie=True (SO3 only)
+        the Lie (RKMK, exp chart) midpoint rule: (records or None, last state, steps done,
+        f evaluations of the fixed-point iterations)."""
+        fn = self.lib.hpgen_bench_lie_midpoint if lie else self.lib.hpgen_bench_midpoint
+        y = np.array(y0, dtype=np.float64)
+        rec = np.empty((steps // every + 1, self.ny)) if every else None
+        its = ctypes.c_long(0)
+        done = fn(y.ctypes.data, float(h), int(steps), int(every or 1),
+                  None if rec is None else rec.ctypes.data, ctypes.byref(its))
+        if rec is not None:
+            rec = rec[:done // (every or 1) + 1]
+        return rec, y, int(done), int(its.value)
