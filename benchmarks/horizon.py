@@ -10,9 +10,10 @@ Scenes (examples/*.yaml, the scene's initial state): heavy_top, free_rigid_body,
 underwater_vehicle, turntable. Methods, all on one process, in C except DOP853:
 - hpgen candidates (CANDIDATES: Stormer-Verlet/Cayley/truncated and Gauss 2/Cayley/exact),
   each at the scene's h, run by Integrator.stream_record (bounded memory);
-- RK4 in C (hpgen.bench.crk4) at the step h_RK4 = h * c_hpgen / c_RK4 (c: measured seconds
-  per step, minimum of 5 interleaved repeats of a calibration run, the same statistic for
-  every method),
+- RK4 in C (hpgen.bench.crk4) at the step h_RK4 = h * c_RK4 / c_hpgen (c: measured seconds
+  per step, minimum of 5 interleaved repeats of a calibration run of 2*10^5 steps, the
+  same statistic for every method; the long runs' own wall times are reported beside, as
+  the machine is shared and loads vary),
   so that its wall time per unit T equals the hpgen scheme's;
 - SciPy DOP853 (the class, stepped in Python, f = the C vector field, atol = 1e-3 rtol) at
   the tightest rtol of DOP_RTOLS whose calibrated cost per unit T is at most the hpgen
@@ -27,7 +28,8 @@ underwater_vehicle, turntable. Methods, all on one process, in C except DOP853:
 Wall times (the figure's "cost x": a method's wall time per unit T over the hpgen scheme's)
 count the integrator calls only, not the error evaluation between chunks.
 Every method runs from T = 0 to T_max = min(10^7, --budget / c_hpgen) hpgen steps (the
-others: the same T_max, at their own h), in chunks; records every ``every`` steps.
+others: the same T_max, at their own h), in chunks; records about PER_SEGMENT times per
+decade of T (see ``segments``).
 
 Errors, as functions of T (the running maximum over the records up to T, so each curve is
 non-decreasing): energy error max |E - E(0)|; invariant error max |J - J(0)|max, J the
@@ -36,11 +38,15 @@ the free body and the underwater vehicle, e3.(R mu) for the heavy top and the tu
 Errors below the round-off floor FLOOR_ULPS * eps * (1 + |quantity|) count as equal.
 
 A peer that diverges (non-finite state: RK4 at a step beyond its stability at equal cost)
-loses at every later checkpoint. T* against a peer: the smallest checkpoint T (CHECKPOINTS_PER_DECADE per decade from T_MIN)
-from which on, at every later checkpoint the peer reached, the hpgen scheme's energy error
+loses at every later checkpoint. T* against a peer: the smallest checkpoint T
+(CHECKPOINTS_PER_DECADE per decade from T_MIN) from which on, at every later checkpoint
+the peer reached, the hpgen scheme's energy error
 and invariant error are both lower (or both at the floor). "<= T_MIN" when hpgen wins from
-the start, "> T_end" when it never does. T* of a scheme = the largest over RK4-C and DOP853;
-the best scheme is the one with the smallest T*. The midpoint rule's T* is reported beside.
+the start, "> T_end" when it never does; then, when the peer's energy error grows as a
+power of T over its last decade, "(extrapolated T)" gives where that power law would reach
+hpgen's bounded energy error (an estimate beyond the run, not a measurement). T* of a
+scheme = the largest over RK4-C and DOP853; the best scheme is the one with the smallest
+T*. The midpoint rules' T* are reported beside.
 
 Output: one figure per scene (docs/figures/horizon_<scene>.png by default, --figures DIR):
 energy and invariant error against T at fixed cost, T* marked; a Markdown table on stdout;
@@ -73,7 +79,7 @@ MAX_STEPS = 10 ** 7
 T_MIN = 1.0
 CHECKPOINTS_PER_DECADE = 8
 FLOOR_ULPS = 64
-RECORDS = 20_000          # records per run (about), for the running maxima
+PER_SEGMENT = 2000        # records per decade of T (about), for the running maxima
 REPEATS = 3
 
 
@@ -163,50 +169,82 @@ def _min_times(fns, repeats=REPEATS):
 
 
 # ---- the runs --------------------------------------------------------------------------
-def run_hpgen(sc, integ, h, steps, grid, every, chunk):
+def segments(h, steps):
+    """[(steps, every)] covering ``steps`` steps of size h: one segment per decade of T
+    (boundaries T_MIN 10^k), each recorded PER_SEGMENT times (about), so that the early
+    checkpoints see as many records as the late ones. Each segment's steps are a multiple
+    of its ``every`` (its last record is its last state); the total may exceed ``steps`` by
+    less than one ``every`` of the last segment."""
+    out, done, bound = [], 0, T_MIN
+    while done < steps:
+        end = min(steps, max(done + 1, int(round(bound / h))))
+        n = end - done
+        every = max(1, n // PER_SEGMENT)
+        n = -(-n // every) * every
+        out.append((n, every))
+        done += n
+        bound *= 10.0
+    return out
+
+
+def run_hpgen(sc, integ, h, steps, grid):
+    """The hpgen scheme by Integrator.stream_record, segment after segment (each restarts
+    from the last recorded (g, p): the state of the method)."""
     env = Envelope(grid)
     pb = sc.pb
     kw = {"g0": pb.g0, **({"xi0": pb.xi0} if pb.xi0 is not None else {"mu0": pb.mu0})}
-    wall = 0.0
-    it = integ.stream_record(h=h, steps=steps, every=every, chunk=chunk, **kw)
-    while True:
-        t0 = time.perf_counter()
-        try:
-            rec = next(it)
-        except StopIteration:
-            break
-        except Exception as e:            # a failed step: the curve stops there
-            env.note = f"stopped: {str(e).splitlines()[0][:120]}"
-            env.failed = True
-            break
-        finally:
-            wall += time.perf_counter() - t0
-        env.add(rec.t, *sc.errors(pb.pack(rec["g"], rec["mu"])))
+    wall, k, first = 0.0, 0, True
+    for n, every in segments(h, steps):
+        it = integ.stream_record(h=h, steps=n, every=every, chunk=every * 1000, **kw)
+        while True:
+            t0 = time.perf_counter()
+            try:
+                rec = next(it)
+            except StopIteration:
+                break
+            except Exception as e:            # a failed step: the curve stops there
+                env.note = f"stopped: {str(e).splitlines()[0][:120]}"
+                env.failed = True
+                return env, wall + time.perf_counter() - t0
+            finally:
+                wall += time.perf_counter() - t0
+            t, g, mu = rec.t + k * h, rec["g"], rec["mu"]
+            if not first and t[0] == k * h:     # record 0 repeats the previous last state
+                t, g, mu = t[1:], g[1:], mu[1:]
+            first = False
+            env.add(t, *sc.errors(pb.pack(g, mu)))
+            kw = {"g0": rec["g"][-1], "mu0": rec["mu"][-1]}
+        k += n
+    env.steps = k
     return env, wall
 
 
-def run_fixed(sc, kind, h, steps, grid, every, chunk):
-    """RK4-C or the implicit midpoint rule, streamed in chunks of ``chunk`` steps."""
+def run_fixed(sc, kind, h, steps, grid):
+    """RK4-C or a midpoint rule (C), segment after segment, in chunks of <= 1000 records."""
     env = Envelope(grid)
     y, k, its, wall = sc.pb.y0.copy(), 0, 0, 0.0
     env.add(np.array([0.0]), *sc.errors(y[None]))
-    while k < steps:
-        n = min(chunk, steps - k)
-        t0 = time.perf_counter()
-        if kind == "RK4-C":
-            rec, y, done = sc.crk4.run(y, h, n, every)
-        else:
-            rec, y, done, it = sc.crk4.midpoint(y, h, n, every, lie=kind == "lie-midpoint")
-            its += it
-        wall += time.perf_counter() - t0
-        times = (k + every * np.arange(1, len(rec))) * h
-        env.add(times, *sc.errors(rec[1:]))
-        k += done
-        if done < n:
-            env.note = f"stopped at step {k} (non-finite or no convergence)"
-            env.failed = True
-            break
-    env.iterations = its
+    for n_seg, every in segments(h, steps):
+        end = k + n_seg
+        while k < end:
+            n = min(every * 1000, end - k)
+            t0 = time.perf_counter()
+            if kind == "RK4-C":
+                rec, y, done = sc.crk4.run(y, h, n, every)
+            else:
+                rec, y, done, it = sc.crk4.midpoint(y, h, n, every,
+                                                    lie=kind == "lie-midpoint")
+                its += it
+            wall += time.perf_counter() - t0
+            times = (k + every * np.arange(1, len(rec))) * h
+            env.add(times, *sc.errors(rec[1:]))
+            k += done
+            if done < n:
+                env.note = f"stopped at step {k} (non-finite or no convergence)"
+                env.failed = True
+                env.iterations, env.steps = its, k
+                return env, wall
+    env.iterations, env.steps = its, k
     return env, wall
 
 
@@ -282,6 +320,24 @@ def t_star(grid, w):
     return float(grid[j]), float(grid[last])
 
 
+def extrapolate(grid, hp_E, peer_E):
+    """When the peer's energy error grows as a power of T over the last decade it reached
+    (slope > 0.5 in log-log) and is still below hpgen's, the T where that power law reaches
+    hpgen's last energy error (an estimate beyond the run, labelled so), else None."""
+    grid, hp_E, peer_E = (np.asarray(a, dtype=float) for a in (grid, hp_E, peer_E))
+    ok = np.isfinite(peer_E) & (peer_E > 0)
+    if ok.sum() < CHECKPOINTS_PER_DECADE + 1 or not np.isfinite(hp_E).all():
+        return None
+    i1 = np.flatnonzero(ok)[-1]
+    i0 = i1 - CHECKPOINTS_PER_DECADE
+    if not ok[i0] or peer_E[i1] >= hp_E[i1]:
+        return None
+    slope = math.log(peer_E[i1] / peer_E[i0]) / math.log(grid[i1] / grid[i0])
+    if slope <= 0.5:
+        return None
+    return float(grid[i1] * (hp_E[i1] / peer_E[i1]) ** (1.0 / slope))
+
+
 def fmt_tstar(T, reached):
     if T is None:
         return f"> {reached:.3g}"
@@ -314,20 +370,17 @@ def scene_run(name, args, log):
         steps = int(min(args.max_steps, max(1000, args.budget / c_hp)))
         T_end = steps * h
         grid = checkpoints(T_end)
-        every = max(1, steps // RECORDS)
-        chunk = every * 1000
         log(f"  hpgen {sname}: {c_hp * 1e9:.0f} ns/step, RK4-C {c_rk4 * 1e9:.0f} ns/step "
             f"(minimum of 5 interleaved calibration runs; built in {build_s:.1f} s), "
             f"{steps} steps to T = {T_end:.4g}")
         methods = {}
-        env, wall = run_hpgen(sc, integ, h, steps, grid, every, chunk)
+        env, wall = run_hpgen(sc, integ, h, steps, grid)
         methods["hpgen " + sname] = _entry(env, wall, T_end, h=h, steps=steps)
         cost = c_hp / h                  # calibrated seconds per unit T of the hpgen scheme
         # RK4-C: equal cost per unit T
-        h_rk = h * c_hp / c_rk4
+        h_rk = h * c_rk4 / c_hp          # c_rk4 / h_rk = c_hp / h: equal cost per unit T
         n_rk = int(round(T_end / h_rk))
-        env_rk, wall_rk = run_fixed(sc, "RK4-C", T_end / n_rk, n_rk, grid,
-                                    max(1, n_rk // RECORDS), max(1, n_rk // RECORDS) * 1000)
+        env_rk, wall_rk = run_fixed(sc, "RK4-C", T_end / n_rk, n_rk, grid)
         methods["RK4-C"] = _entry(env_rk, wall_rk, T_end, h=T_end / n_rk, steps=n_rk)
         log(f"    RK4-C h = {T_end / n_rk:.4g}: {wall_rk:.1f} s (hpgen {wall:.1f} s)")
         symmetric = {}
@@ -339,10 +392,9 @@ def scene_run(name, args, log):
                         [lambda: integ.simulate(h=h, steps=cal, every=cal, **kw),
                          lambda: sc.crk4.midpoint(pb.y0, h_mp, cal,
                                                   lie=kind == "lie-midpoint")], 5))
-                    h_mp = h * c_hp2 / c_mp
+                    h_mp = h * c_mp / c_hp2
                 n_mp = int(round(T_end / h_mp))
-                ev = max(1, n_mp // RECORDS)
-                env_mp, wall_mp = run_fixed(sc, kind, T_end / n_mp, n_mp, grid, ev, ev * 1000)
+                env_mp, wall_mp = run_fixed(sc, kind, T_end / n_mp, n_mp, grid)
                 methods[label] = _entry(env_mp, wall_mp, T_end, h=T_end / n_mp, steps=n_mp,
                                         iterations_per_step=env_mp.iterations / max(n_mp, 1))
                 symmetric[label] = env_mp
@@ -368,6 +420,11 @@ def scene_run(name, args, log):
         for peer, e in [("RK4-C", env_rk), ("DOP853", env_d)] + list(symmetric.items()):
             T, reached = t_star(grid, wins(sc, hp, e))
             ts[peer] = {"T_star": T, "reached": reached, "text": fmt_tstar(T, reached)}
+            if T is None:
+                est = extrapolate(grid, hp.E, e.E)
+                ts[peer]["extrapolated"] = est
+                if est is not None:
+                    ts[peer]["text"] += f" (extrapolated {est:.2g})"
         worst = [ts[p]["T_star"] for p in ("RK4-C", "DOP853")]
         overall = None if None in worst else max(worst)
         reached = min(ts["RK4-C"]["reached"], ts["DOP853"]["reached"])
@@ -397,45 +454,48 @@ def _entry(env, wall, T_reached, **kw):
 
 # ---- figure and table ------------------------------------------------------------------
 def figure(res, path):
+    """One row per hpgen candidate, each with its peers at its own cost: energy error (left)
+    and invariant error (right) against T, T* marked."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    sch = res["schemes"][res["best"]]
-    grid = np.array(sch["checkpoints"])
-    hp_cost = sch["methods"]["hpgen " + res["best"]]["cost_per_T"]
-    fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
+    schemes = list(res["schemes"].items())
+    fig, axes = plt.subplots(len(schemes), 2, figsize=(12, 4.3 * len(schemes)),
+                             squeeze=False)
     styles = {"RK4-C": "--s", "DOP853": ":D", "implicit midpoint (C)": "-.v",
               "Lie midpoint (RKMK, C)": "-.^"}
-    for ax, key, label in ((axes[0], "energy_error", "energy error max |E - E(0)|"),
-                           (axes[1], "invariant_error", "invariant error")):
-        for sname, s in res["schemes"].items():
-            m = s["methods"]["hpgen " + sname]
-            y = np.array([np.nan if v is None else v for v in m[key]])
-            ax.loglog(s["checkpoints"], y, "-o", ms=3, lw=2 if sname == res["best"] else 1,
-                      label=f"hpgen {sname} (h = {m['h']:g})")
-        for mname, m in sch["methods"].items():
-            if mname.startswith("hpgen"):
-                continue
-            y = np.array([np.nan if v is None else v for v in m[key]])
-            par = f"rtol = {m['rtol']:g}" if "rtol" in m else f"h = {m['h']:.3g}"
-            if m.get("failed"):
-                par += f", diverged at T = {m['T_failed']:.3g}"
-            ax.loglog(grid, y, styles.get(mname, "--"), ms=3,
-                      label=f"{mname} ({par}, cost x{m['cost_per_T'] / hp_cost:.2f})")
-        T = sch["T_star_overall"]
-        if T is not None:
-            ax.axvline(T, color="k", lw=0.8, ls="--")
-            ax.text(T, ax.get_ylim()[1], f" T* = {T:.3g}", va="top", fontsize=8)
-        ax.set_xlabel("T (simulated time)")
-        ax.set_ylabel(label + (" (" + res["invariant"] + ")" if key == "invariant_error"
-                               else ""), fontsize=8)
-        ax.grid(True, which="both", alpha=0.3)
-    axes[0].legend(fontsize=7)
-    fig.suptitle(f"{res['scene']}: errors against T at fixed cost "
-                 f"({hp_cost * 1e6:.2g} us per unit T, hpgen {res['best']}); "
-                 f"T* = {sch['T_star_text']}", fontsize=10)
+    for row, (sname, sch) in zip(axes, schemes):
+        grid = np.array(sch["checkpoints"])
+        hp_cost = sch["methods"]["hpgen " + sname]["cost_per_T"]
+        for ax, key, label in ((row[0], "energy_error", "energy error max |E - E(0)|"),
+                               (row[1], "invariant_error", "invariant error")):
+            for mname, m in sch["methods"].items():
+                y = np.array([np.nan if v is None else v for v in m[key]], dtype=float)
+                if mname.startswith("hpgen"):
+                    ax.loglog(grid, y, "-o", ms=3, lw=2, label=f"{mname} (h = {m['h']:g})")
+                    continue
+                par = f"rtol = {m['rtol']:g}" if "rtol" in m else f"h = {m['h']:.3g}"
+                if m.get("failed"):
+                    par += f", diverged at T = {m['T_failed']:.3g}"
+                ax.loglog(grid, y, styles.get(mname, "--"), ms=3,
+                          label=f"{mname} ({par}, wall x{m['cost_per_T'] / hp_cost:.2f})")
+            T = sch["T_star_overall"]
+            if T is not None:
+                ax.axvline(T, color="k", lw=0.8, ls="--")
+            ax.set_xlabel("T (simulated time)")
+            ax.set_ylabel(label + (f" ({res['invariant']})" if key == "invariant_error"
+                                   else ""), fontsize=8)
+            ax.grid(True, which="both", alpha=0.3)
+        row[0].legend(fontsize=7)
+        best = " (best)" if sname == res["best"] else ""
+        row[0].set_title(f"hpgen {sname}{best}, {hp_cost * 1e6:.2g} us per unit T; "
+                         f"T* = {sch['T_star_text']}", fontsize=9)
+        row[1].set_title("wall x: the method's wall time per unit T / hpgen's (same run)",
+                         fontsize=8)
+    fig.suptitle(f"{res['scene']}: errors against T at fixed cost (peers at the hpgen "
+                 "scheme's cost per unit T)", fontsize=10)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=100)
     plt.close(fig)
 
 
@@ -467,9 +527,16 @@ def main(argv=None):
     ap.add_argument("--figures", default=str(ROOT / "docs" / "figures"))
     ap.add_argument("--json", help="write the numbers here")
     ap.add_argument("--cache-dir")
+    ap.add_argument("--replot", help="only redraw the figures from this --json file")
     args = ap.parse_args(argv)
+    if args.replot:
+        figdir = Path(args.figures)
+        figdir.mkdir(parents=True, exist_ok=True)
+        for r in json.loads(Path(args.replot).read_text())["results"]:
+            figure(r, figdir / f"horizon_{r['scene']}.png")
+        return 0
     args.candidates = CANDIDATES
-    args.calibration, args.dop_calibration_T = 50_000, 50.0
+    args.calibration, args.dop_calibration_T = 200_000, 50.0
     if args.quick:
         args.max_steps, args.budget, args.dop_budget = min(args.max_steps, 20_000), 2.0, 1.0
         args.candidates = CANDIDATES[:1]

@@ -111,3 +111,13 @@ def test_turntable_symmetric_peers(cache_dir):
     R = rec[:, :9].reshape(-1, 3, 3)
     assert np.abs(np.einsum("kji,kjl->kil", R, R) - np.eye(3)).max() < 1e-13
     assert np.abs(pb.energy(rec) - pb.E0).max() > 1e-8       # not an energy-preserving map
+
+
+def test_extrapolated_horizon(horizon):
+    # a peer whose energy error grows linearly, 1e-6 T, against hpgen's bounded 1e-3: the
+    # power law reaches 1e-3 at T = 1000 exactly; a non-growing peer gives no estimate
+    grid = horizon.checkpoints(100.0)
+    hp = np.full(len(grid), 1e-3)
+    assert horizon.extrapolate(grid, hp, 1e-6 * grid) == pytest.approx(1000.0, rel=1e-9)
+    assert horizon.extrapolate(grid, hp, np.full(len(grid), 1e-6)) is None
+    assert horizon.extrapolate(grid, hp, 1e-2 * grid) is None       # already above hpgen
