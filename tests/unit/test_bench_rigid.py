@@ -159,3 +159,14 @@ def test_bench_tables_and_plot(tmp_path, cache_dir):
     assert "hand-written rigid.c" in md
     csv = (tmp_path / "work_precision.csv").read_text()
     assert csv.count("splitting-4") == 2 and (tmp_path / "work_precision.png").exists()
+
+
+def test_rigid_c_ships_as_package_data():
+    import tomllib
+    from pathlib import Path
+
+    from conftest import ROOT
+    data = tomllib.loads((ROOT / "pyproject.toml").read_text())
+    shipped = data["tool"]["setuptools"]["package-data"]["hpgen.bench"]
+    assert any(Path("rigid.c").match(pat) for pat in shipped)
+    assert (ROOT / "hpgen" / "bench" / "rigid.c").is_file()
