@@ -38,7 +38,7 @@ class KernelSpec:
     Size symbols: "nz" (unknowns of the step), "nn" (n*n, a group element), "d" (algebra
     dimension), "dd" (d*d), "nznz" (nz*nz), "1", "w" (the record row's width), "H" (the step
     vector: [h] for a closed model, [h, t_k, u, params] for an open one, see
-    step_vector_size)."""
+    step_vector_size), "nzs" (nz*2d), "ss" (2d*2d)."""
     name: str
     inputs: tuple
     outputs: tuple
@@ -74,6 +74,10 @@ KERNELS = (
     KernelSpec("velocity_step", ("nn", "d", "d"), ("d",),
                "(g, p, xi) -> xi - H^{-1}(dl/dxi(g, xi) - p): one Newton step"),
     KernelSpec("record", ("nn", "d", "d"), ("w",), "(g, p, xi) -> the scene's record row"),
+    KernelSpec("step_partials", ("nz", "nn", "d", "H"), ("nznz", "nzs", "nzs", "ss"),
+               "(z, g, p, h) -> J = dF/dz, Fs = dF/ds, Yz = dY/dz, Ys = dY/ds: the step's "
+               "partials in s = (eta, dp), g -> g tau(eta), p -> p + dp, "
+               "Y = (eta_{k+1}, p_{k+1}) (hpgen.derive.linearize)"),
 )
 KERNEL_NAMES = tuple(k.name for k in KERNELS)
 #: name -> (input size symbols, output size symbols)
@@ -102,7 +106,7 @@ def sizes(n: int, d: int, nz: int, w: int = 1, H: int = 1) -> dict:
     """The value of every size symbol for a module of dimensions n, d, nz, record width w and
     step vector size H."""
     return {"nz": nz, "nn": n * n, "d": d, "dd": d * d, "nznz": nz * nz, "1": 1, "w": w,
-            "H": H}
+            "H": H, "nzs": 2 * d * nz, "ss": 4 * d * d}
 
 
 # ---- the record row ----------------------------------------------------------------------

@@ -56,6 +56,7 @@
 #define casadi_f13 CASADI_PREFIX(f13)
 #define casadi_f14 CASADI_PREFIX(f14)
 #define casadi_f15 CASADI_PREFIX(f15)
+#define casadi_f16 CASADI_PREFIX(f16)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -71,6 +72,8 @@
 #define casadi_s1 CASADI_PREFIX(s1)
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s3 CASADI_PREFIX(s3)
+#define casadi_s4 CASADI_PREFIX(s4)
+#define casadi_s5 CASADI_PREFIX(s5)
 #define casadi_sq CASADI_PREFIX(sq)
 
 /* Symbol visibility in DLLs */
@@ -130,6 +133,8 @@ static const casadi_int casadi_s0[3] = {3, 1, 1};
 static const casadi_int casadi_s1[3] = {9, 1, 1};
 static const casadi_int casadi_s2[3] = {1, 1, 1};
 static const casadi_int casadi_s3[3] = {16, 1, 1};
+static const casadi_int casadi_s4[3] = {18, 1, 1};
+static const casadi_int casadi_s5[3] = {36, 1, 1};
 
 /* residual:(z[3],g[9],p[3],h)->(F[3]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -2484,6 +2489,779 @@ CASADI_SYMBOL_EXPORT int record_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
   return 0;
 }
 
+/* step_partials:(z[3],g[9],p[3],h)->(J[9],Fs[18],Yz[18],Ys[36]) */
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53, a54, a55, a56, a57, a58, a59;
+  casadi_real a60, a61, a62, a63, a64, a65, a66, a67, a68, a69, a70, a71;
+  casadi_real a72;
+  a00=6.6666666666666663e-01;
+  a01=arg[0]? arg[0][2] : 0;
+  a02=(a00*a01);
+  a03=2.5000000000000000e-01;
+  a04=arg[3]? arg[3][0] : 0;
+  a01=(a04*a01);
+  a05=(a01*a04);
+  a06=(a03*a05);
+  a07=(a02*a06);
+  a08=arg[0]? arg[0][1] : 0;
+  a09=(a04*a08);
+  a10=(a09*a04);
+  a11=(a03*a10);
+  a12=(a08*a11);
+  a13=(a07+a12);
+  a14=arg[0]? arg[0][0] : 0;
+  a15=(2.*a14);
+  a14=(a04*a14);
+  a16=(2.*a14);
+  a16=(a16*a04);
+  a17=(a03*a16);
+  a17=(a15*a17);
+  a18=1.;
+  a19=casadi_sq(a14);
+  a20=4.;
+  a21=(a19/a20);
+  a21=(a18+a21);
+  a21=(2.*a21);
+  a17=(a17+a21);
+  a13=(a13+a17);
+  a17=(-a13);
+  if (res[0]!=0) res[0][0]=a17;
+  a17=(a15*a11);
+  a21=2.;
+  a22=(a01/a21);
+  a23=(a14*a09);
+  a24=(a23/a20);
+  a25=(a22+a24);
+  a25=(2.*a25);
+  a25=(a17+a25);
+  a26=5.0000000000000000e-01;
+  a27=(a26*a04);
+  a28=(a02*a27);
+  a25=(a25-a28);
+  a25=(-a25);
+  if (res[0]!=0) res[0][1]=a25;
+  a25=(a08*a27);
+  a29=(a15*a06);
+  a30=(a14*a01);
+  a31=(a30/a20);
+  a32=(a09/a21);
+  a33=(a31-a32);
+  a33=(2.*a33);
+  a33=(a29+a33);
+  a33=(a25+a33);
+  a33=(-a33);
+  if (res[0]!=0) res[0][2]=a33;
+  a33=(a14*a04);
+  a34=(a03*a33);
+  a35=(a08*a34);
+  a36=(a09*a14);
+  a37=(a36/a20);
+  a38=(a37-a22);
+  a38=(a35+a38);
+  a38=(a28+a38);
+  a38=(-a38);
+  if (res[0]!=0) res[0][3]=a38;
+  a38=(2.*a09);
+  a38=(a38*a04);
+  a39=(a03*a38);
+  a39=(a08*a39);
+  a40=casadi_sq(a09);
+  a41=(a40/a20);
+  a41=(a18+a41);
+  a39=(a39+a41);
+  a07=(a07+a39);
+  a39=(a15*a34);
+  a07=(a07+a39);
+  a41=(-a07);
+  if (res[0]!=0) res[0][4]=a41;
+  a08=(a08*a06);
+  a06=(a14/a21);
+  a41=(a09*a01);
+  a42=(a41/a20);
+  a43=(a06+a42);
+  a43=(a08+a43);
+  a15=(a15*a27);
+  a43=(a43-a15);
+  a43=(-a43);
+  if (res[0]!=0) res[0][5]=a43;
+  a34=(a02*a34);
+  a43=(a01*a14);
+  a27=(a43/a20);
+  a44=(a32+a27);
+  a44=(a00*a44);
+  a44=(a34+a44);
+  a44=(a44-a25);
+  a44=(-a44);
+  if (res[0]!=0) res[0][6]=a44;
+  a11=(a02*a11);
+  a44=(a01*a09);
+  a45=(a44/a20);
+  a46=(a45-a06);
+  a46=(a00*a46);
+  a46=(a11+a46);
+  a46=(a46+a15);
+  a46=(-a46);
+  if (res[0]!=0) res[0][7]=a46;
+  a46=(2.*a01);
+  a46=(a46*a04);
+  a03=(a03*a46);
+  a02=(a02*a03);
+  a03=casadi_sq(a01);
+  a47=(a03/a20);
+  a47=(a18+a47);
+  a47=(a00*a47);
+  a02=(a02+a47);
+  a02=(a02+a12);
+  a02=(a02+a39);
+  a39=(-a02);
+  if (res[0]!=0) res[0][8]=a39;
+  a39=0.;
+  if (res[1]!=0) res[1][0]=a39;
+  if (res[1]!=0) res[1][1]=a39;
+  if (res[1]!=0) res[1][2]=a39;
+  if (res[1]!=0) res[1][3]=a39;
+  if (res[1]!=0) res[1][4]=a39;
+  if (res[1]!=0) res[1][5]=a39;
+  if (res[1]!=0) res[1][6]=a39;
+  if (res[1]!=0) res[1][7]=a39;
+  if (res[1]!=0) res[1][8]=a39;
+  if (res[1]!=0) res[1][9]=a18;
+  if (res[1]!=0) res[1][10]=a39;
+  if (res[1]!=0) res[1][11]=a39;
+  if (res[1]!=0) res[1][12]=a39;
+  if (res[1]!=0) res[1][13]=a18;
+  if (res[1]!=0) res[1][14]=a39;
+  if (res[1]!=0) res[1][15]=a39;
+  if (res[1]!=0) res[1][16]=a39;
+  if (res[1]!=0) res[1][17]=a18;
+  a12=arg[1]? arg[1][0] : 0;
+  a47=(a19+a40);
+  a47=(a47+a03);
+  a47=(a20+a47);
+  a20=(a20/a47);
+  a43=(a43/a21);
+  a43=(a09+a43);
+  a48=(a20*a43);
+  a49=(a12*a48);
+  a50=arg[1]? arg[1][3] : 0;
+  a44=(a44/a21);
+  a44=(a44-a14);
+  a51=(a20*a44);
+  a52=(a50*a51);
+  a49=(a49+a52);
+  a52=arg[1]? arg[1][6] : 0;
+  a53=(a40+a19);
+  a53=(a53/a21);
+  a54=(a20*a53);
+  a54=(a18-a54);
+  a55=(a52*a54);
+  a49=(a49+a55);
+  a10=(a26*a10);
+  a10=(a20*a10);
+  a36=(a36/a21);
+  a36=(a36-a01);
+  a47=(a20/a47);
+  a55=(a47*a16);
+  a56=(a36*a55);
+  a56=(a10-a56);
+  a57=(a12*a56);
+  a16=(a26*a16);
+  a16=(a20*a16);
+  a19=(a03+a19);
+  a19=(a19/a21);
+  a58=(a19*a55);
+  a58=(a16-a58);
+  a59=(a50*a58);
+  a57=(a57-a59);
+  a04=(a20*a04);
+  a41=(a41/a21);
+  a14=(a14+a41);
+  a41=(a14*a55);
+  a41=(a04-a41);
+  a59=(a52*a41);
+  a57=(a57+a59);
+  a57=(a49*a57);
+  a59=arg[1]? arg[1][1] : 0;
+  a60=(a59*a48);
+  a61=arg[1]? arg[1][4] : 0;
+  a62=(a61*a51);
+  a60=(a60+a62);
+  a62=arg[1]? arg[1][7] : 0;
+  a63=(a62*a54);
+  a60=(a60+a63);
+  a63=(a59*a56);
+  a64=(a61*a58);
+  a63=(a63-a64);
+  a64=(a62*a41);
+  a63=(a63+a64);
+  a63=(a60*a63);
+  a57=(a57+a63);
+  a63=arg[1]? arg[1][2] : 0;
+  a64=(a63*a48);
+  a65=arg[1]? arg[1][5] : 0;
+  a66=(a65*a51);
+  a64=(a64+a66);
+  a66=arg[1]? arg[1][8] : 0;
+  a67=(a66*a54);
+  a64=(a64+a67);
+  a56=(a63*a56);
+  a58=(a65*a58);
+  a56=(a56-a58);
+  a41=(a66*a41);
+  a56=(a56+a41);
+  a56=(a64*a56);
+  a57=(a57+a56);
+  if (res[2]!=0) res[2][0]=a57;
+  a03=(a03+a40);
+  a03=(a03/a21);
+  a40=(a20*a03);
+  a40=(a18-a40);
+  a57=(a12*a40);
+  a23=(a23/a21);
+  a01=(a01+a23);
+  a23=(a20*a01);
+  a56=(a50*a23);
+  a57=(a57+a56);
+  a30=(a30/a21);
+  a30=(a30-a09);
+  a09=(a20*a30);
+  a21=(a52*a09);
+  a57=(a57+a21);
+  a05=(a26*a05);
+  a05=(a20*a05);
+  a21=(a43*a55);
+  a21=(a05-a21);
+  a56=(a12*a21);
+  a41=(a44*a55);
+  a41=(a41+a04);
+  a58=(a50*a41);
+  a56=(a56-a58);
+  a58=(a53*a55);
+  a16=(a16-a58);
+  a58=(a52*a16);
+  a56=(a56-a58);
+  a56=(a57*a56);
+  a58=(a59*a40);
+  a67=(a61*a23);
+  a58=(a58+a67);
+  a67=(a62*a09);
+  a58=(a58+a67);
+  a67=(a59*a21);
+  a68=(a61*a41);
+  a67=(a67-a68);
+  a68=(a62*a16);
+  a67=(a67-a68);
+  a67=(a58*a67);
+  a56=(a56+a67);
+  a67=(a63*a40);
+  a68=(a65*a23);
+  a67=(a67+a68);
+  a68=(a66*a09);
+  a67=(a67+a68);
+  a21=(a63*a21);
+  a41=(a65*a41);
+  a21=(a21-a41);
+  a16=(a66*a16);
+  a21=(a21-a16);
+  a21=(a67*a21);
+  a56=(a56+a21);
+  if (res[2]!=0) res[2][1]=a56;
+  a56=(a20*a36);
+  a21=(a12*a56);
+  a16=(a20*a19);
+  a18=(a18-a16);
+  a16=(a50*a18);
+  a21=(a21+a16);
+  a16=(a20*a14);
+  a41=(a52*a16);
+  a21=(a21+a41);
+  a41=(a03*a55);
+  a68=(a12*a41);
+  a69=(a01*a55);
+  a69=(a10-a69);
+  a70=(a50*a69);
+  a68=(a68+a70);
+  a55=(a30*a55);
+  a55=(a05-a55);
+  a70=(a52*a55);
+  a68=(a68+a70);
+  a68=(a21*a68);
+  a70=(a59*a56);
+  a71=(a61*a18);
+  a70=(a70+a71);
+  a71=(a62*a16);
+  a70=(a70+a71);
+  a71=(a59*a41);
+  a72=(a61*a69);
+  a71=(a71+a72);
+  a72=(a62*a55);
+  a71=(a71+a72);
+  a71=(a70*a71);
+  a68=(a68+a71);
+  a71=(a63*a56);
+  a72=(a65*a18);
+  a71=(a71+a72);
+  a72=(a66*a16);
+  a71=(a71+a72);
+  a41=(a63*a41);
+  a69=(a65*a69);
+  a41=(a41+a69);
+  a55=(a66*a55);
+  a41=(a41+a55);
+  a41=(a71*a41);
+  a68=(a68+a41);
+  if (res[2]!=0) res[2][2]=a68;
+  if (res[2]!=0) res[2][3]=a13;
+  a24=(a24-a22);
+  a24=(2.*a24);
+  a17=(a17+a24);
+  a17=(a28+a17);
+  if (res[2]!=0) res[2][4]=a17;
+  a31=(a32+a31);
+  a31=(2.*a31);
+  a29=(a29+a31);
+  a29=(a29-a25);
+  if (res[2]!=0) res[2][5]=a29;
+  a33=(a26*a33);
+  a33=(a20*a33);
+  a29=(a47*a38);
+  a31=(a36*a29);
+  a31=(a33-a31);
+  a17=(a12*a31);
+  a24=(a19*a29);
+  a13=(a50*a24);
+  a17=(a17+a13);
+  a13=(a14*a29);
+  a13=(a05-a13);
+  a68=(a52*a13);
+  a17=(a17+a68);
+  a17=(a49*a17);
+  a68=(a59*a31);
+  a41=(a61*a24);
+  a68=(a68+a41);
+  a41=(a62*a13);
+  a68=(a68+a41);
+  a68=(a60*a68);
+  a17=(a17+a68);
+  a31=(a63*a31);
+  a24=(a65*a24);
+  a31=(a31+a24);
+  a13=(a66*a13);
+  a31=(a31+a13);
+  a31=(a64*a31);
+  a17=(a17+a31);
+  if (res[2]!=0) res[2][6]=a17;
+  a17=(a43*a29);
+  a17=(a04-a17);
+  a31=(a12*a17);
+  a13=(a44*a29);
+  a05=(a05-a13);
+  a13=(a50*a05);
+  a31=(a31+a13);
+  a38=(a26*a38);
+  a38=(a20*a38);
+  a13=(a53*a29);
+  a13=(a38-a13);
+  a24=(a52*a13);
+  a31=(a31-a24);
+  a31=(a57*a31);
+  a24=(a59*a17);
+  a68=(a61*a05);
+  a24=(a24+a68);
+  a68=(a62*a13);
+  a24=(a24-a68);
+  a24=(a58*a24);
+  a31=(a31+a24);
+  a17=(a63*a17);
+  a05=(a65*a05);
+  a17=(a17+a05);
+  a13=(a66*a13);
+  a17=(a17-a13);
+  a17=(a67*a17);
+  a31=(a31+a17);
+  if (res[2]!=0) res[2][7]=a31;
+  a31=(a01*a29);
+  a31=(a33-a31);
+  a17=(a50*a31);
+  a13=(a03*a29);
+  a38=(a38-a13);
+  a13=(a12*a38);
+  a17=(a17-a13);
+  a29=(a30*a29);
+  a29=(a29+a04);
+  a13=(a52*a29);
+  a17=(a17-a13);
+  a17=(a21*a17);
+  a13=(a61*a31);
+  a05=(a59*a38);
+  a13=(a13-a05);
+  a05=(a62*a29);
+  a13=(a13-a05);
+  a13=(a70*a13);
+  a17=(a17+a13);
+  a31=(a65*a31);
+  a38=(a63*a38);
+  a31=(a31-a38);
+  a29=(a66*a29);
+  a31=(a31-a29);
+  a31=(a71*a31);
+  a17=(a17+a31);
+  if (res[2]!=0) res[2][8]=a17;
+  a22=(a22+a37);
+  a35=(a35+a22);
+  a35=(a35-a28);
+  if (res[2]!=0) res[2][9]=a35;
+  if (res[2]!=0) res[2][10]=a07;
+  a42=(a42-a06);
+  a08=(a08+a42);
+  a08=(a08+a15);
+  if (res[2]!=0) res[2][11]=a08;
+  a47=(a47*a46);
+  a14=(a14*a47);
+  a14=(a10-a14);
+  a08=(a52*a14);
+  a36=(a36*a47);
+  a36=(a36+a04);
+  a42=(a12*a36);
+  a26=(a26*a46);
+  a20=(a20*a26);
+  a19=(a19*a47);
+  a19=(a20-a19);
+  a26=(a50*a19);
+  a42=(a42+a26);
+  a08=(a08-a42);
+  a08=(a49*a08);
+  a42=(a62*a14);
+  a26=(a59*a36);
+  a46=(a61*a19);
+  a26=(a26+a46);
+  a42=(a42-a26);
+  a42=(a60*a42);
+  a08=(a08+a42);
+  a14=(a66*a14);
+  a36=(a63*a36);
+  a19=(a65*a19);
+  a36=(a36+a19);
+  a14=(a14-a36);
+  a14=(a64*a14);
+  a08=(a08+a14);
+  if (res[2]!=0) res[2][12]=a08;
+  a43=(a43*a47);
+  a43=(a33-a43);
+  a08=(a12*a43);
+  a44=(a44*a47);
+  a10=(a10-a44);
+  a44=(a50*a10);
+  a08=(a08+a44);
+  a53=(a53*a47);
+  a44=(a52*a53);
+  a08=(a08+a44);
+  a08=(a57*a08);
+  a44=(a59*a43);
+  a14=(a61*a10);
+  a44=(a44+a14);
+  a14=(a62*a53);
+  a44=(a44+a14);
+  a44=(a58*a44);
+  a08=(a08+a44);
+  a43=(a63*a43);
+  a10=(a65*a10);
+  a43=(a43+a10);
+  a53=(a66*a53);
+  a43=(a43+a53);
+  a43=(a67*a43);
+  a08=(a08+a43);
+  if (res[2]!=0) res[2][13]=a08;
+  a01=(a01*a47);
+  a04=(a04-a01);
+  a01=(a50*a04);
+  a03=(a03*a47);
+  a20=(a20-a03);
+  a03=(a12*a20);
+  a01=(a01-a03);
+  a30=(a30*a47);
+  a33=(a33-a30);
+  a30=(a52*a33);
+  a01=(a01+a30);
+  a01=(a21*a01);
+  a30=(a61*a04);
+  a47=(a59*a20);
+  a30=(a30-a47);
+  a47=(a62*a33);
+  a30=(a30+a47);
+  a30=(a70*a30);
+  a01=(a01+a30);
+  a04=(a65*a04);
+  a20=(a63*a20);
+  a04=(a04-a20);
+  a33=(a66*a33);
+  a04=(a04+a33);
+  a04=(a71*a04);
+  a01=(a01+a04);
+  if (res[2]!=0) res[2][14]=a01;
+  a27=(a27-a32);
+  a27=(a00*a27);
+  a34=(a34+a27);
+  a34=(a34+a25);
+  if (res[2]!=0) res[2][15]=a34;
+  a06=(a06+a45);
+  a00=(a00*a06);
+  a11=(a11+a00);
+  a11=(a11-a15);
+  if (res[2]!=0) res[2][16]=a11;
+  if (res[2]!=0) res[2][17]=a02;
+  a02=(a18*a52);
+  a11=(a16*a50);
+  a02=(a02-a11);
+  a02=(a49*a02);
+  a11=(a18*a62);
+  a15=(a16*a61);
+  a11=(a11-a15);
+  a11=(a60*a11);
+  a02=(a02+a11);
+  a11=(a18*a66);
+  a15=(a16*a65);
+  a11=(a11-a15);
+  a11=(a64*a11);
+  a02=(a02+a11);
+  if (res[3]!=0) res[3][0]=a02;
+  a02=(a51*a52);
+  a11=(a54*a50);
+  a02=(a02-a11);
+  a02=(a57*a02);
+  a11=(a51*a62);
+  a15=(a54*a61);
+  a11=(a11-a15);
+  a11=(a58*a11);
+  a02=(a02+a11);
+  a11=(a51*a66);
+  a15=(a54*a65);
+  a11=(a11-a15);
+  a11=(a67*a11);
+  a02=(a02+a11);
+  if (res[3]!=0) res[3][1]=a02;
+  a02=(a23*a52);
+  a11=(a09*a50);
+  a02=(a02-a11);
+  a02=(a21*a02);
+  a11=(a23*a62);
+  a15=(a09*a61);
+  a11=(a11-a15);
+  a11=(a70*a11);
+  a02=(a02+a11);
+  a11=(a23*a66);
+  a15=(a09*a65);
+  a11=(a11-a15);
+  a11=(a71*a11);
+  a02=(a02+a11);
+  if (res[3]!=0) res[3][2]=a02;
+  if (res[3]!=0) res[3][3]=a39;
+  if (res[3]!=0) res[3][4]=a39;
+  if (res[3]!=0) res[3][5]=a39;
+  a02=(a16*a12);
+  a11=(a56*a52);
+  a02=(a02-a11);
+  a02=(a49*a02);
+  a11=(a16*a59);
+  a15=(a56*a62);
+  a11=(a11-a15);
+  a11=(a60*a11);
+  a02=(a02+a11);
+  a16=(a16*a63);
+  a11=(a56*a66);
+  a16=(a16-a11);
+  a16=(a64*a16);
+  a02=(a02+a16);
+  if (res[3]!=0) res[3][6]=a02;
+  a02=(a54*a12);
+  a16=(a48*a52);
+  a02=(a02-a16);
+  a02=(a57*a02);
+  a16=(a54*a59);
+  a11=(a48*a62);
+  a16=(a16-a11);
+  a16=(a58*a16);
+  a02=(a02+a16);
+  a54=(a54*a63);
+  a16=(a48*a66);
+  a54=(a54-a16);
+  a54=(a67*a54);
+  a02=(a02+a54);
+  if (res[3]!=0) res[3][7]=a02;
+  a02=(a09*a12);
+  a52=(a40*a52);
+  a02=(a02-a52);
+  a02=(a21*a02);
+  a52=(a09*a59);
+  a62=(a40*a62);
+  a52=(a52-a62);
+  a52=(a70*a52);
+  a02=(a02+a52);
+  a09=(a09*a63);
+  a66=(a40*a66);
+  a09=(a09-a66);
+  a09=(a71*a09);
+  a02=(a02+a09);
+  if (res[3]!=0) res[3][8]=a02;
+  if (res[3]!=0) res[3][9]=a39;
+  if (res[3]!=0) res[3][10]=a39;
+  if (res[3]!=0) res[3][11]=a39;
+  a02=(a56*a50);
+  a09=(a18*a12);
+  a02=(a02-a09);
+  a49=(a49*a02);
+  a02=(a56*a61);
+  a09=(a18*a59);
+  a02=(a02-a09);
+  a60=(a60*a02);
+  a49=(a49+a60);
+  a56=(a56*a65);
+  a18=(a18*a63);
+  a56=(a56-a18);
+  a64=(a64*a56);
+  a49=(a49+a64);
+  if (res[3]!=0) res[3][12]=a49;
+  a49=(a48*a50);
+  a64=(a51*a12);
+  a49=(a49-a64);
+  a57=(a57*a49);
+  a49=(a48*a61);
+  a64=(a51*a59);
+  a49=(a49-a64);
+  a58=(a58*a49);
+  a57=(a57+a58);
+  a48=(a48*a65);
+  a51=(a51*a63);
+  a48=(a48-a51);
+  a67=(a67*a48);
+  a57=(a57+a67);
+  if (res[3]!=0) res[3][13]=a57;
+  a50=(a40*a50);
+  a12=(a23*a12);
+  a50=(a50-a12);
+  a21=(a21*a50);
+  a61=(a40*a61);
+  a59=(a23*a59);
+  a61=(a61-a59);
+  a70=(a70*a61);
+  a21=(a21+a70);
+  a40=(a40*a65);
+  a23=(a23*a63);
+  a40=(a40-a23);
+  a71=(a71*a40);
+  a21=(a21+a71);
+  if (res[3]!=0) res[3][14]=a21;
+  if (res[3]!=0) res[3][15]=a39;
+  if (res[3]!=0) res[3][16]=a39;
+  if (res[3]!=0) res[3][17]=a39;
+  if (res[3]!=0) res[3][18]=a39;
+  if (res[3]!=0) res[3][19]=a39;
+  if (res[3]!=0) res[3][20]=a39;
+  if (res[3]!=0) res[3][21]=a39;
+  if (res[3]!=0) res[3][22]=a39;
+  if (res[3]!=0) res[3][23]=a39;
+  if (res[3]!=0) res[3][24]=a39;
+  if (res[3]!=0) res[3][25]=a39;
+  if (res[3]!=0) res[3][26]=a39;
+  if (res[3]!=0) res[3][27]=a39;
+  if (res[3]!=0) res[3][28]=a39;
+  if (res[3]!=0) res[3][29]=a39;
+  if (res[3]!=0) res[3][30]=a39;
+  if (res[3]!=0) res[3][31]=a39;
+  if (res[3]!=0) res[3][32]=a39;
+  if (res[3]!=0) res[3][33]=a39;
+  if (res[3]!=0) res[3][34]=a39;
+  if (res[3]!=0) res[3][35]=a39;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int step_partials(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f16(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int step_partials_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void step_partials_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void step_partials_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void step_partials_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int step_partials_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int step_partials_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real step_partials_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* step_partials_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* step_partials_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "J";
+    case 1: return "Fs";
+    case 2: return "Yz";
+    case 3: return "Ys";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* step_partials_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s0;
+    case 3: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* step_partials_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s4;
+    case 2: return casadi_s4;
+    case 3: return casadi_s5;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int step_partials_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int step_partials_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
 
 
 /* ======================= end of CasADi-generated code =================================== */
@@ -2578,6 +3356,7 @@ static int hpgen_k_observe(const double* in0, const double* in1, double* out0, d
 static int hpgen_k_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
 static int hpgen_k_velocity_step(const double* in0, const double* in1, const double* in2, double* out0);
 static int hpgen_k_record(const double* in0, const double* in1, const double* in2, double* out0);
+static int hpgen_k_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2, double* out3);
 
 /* residual(z[3], g[9], p[3], h[1]) -> (F[3]) */
 #define HPGEN_RESIDUAL_SZ_ARG 4
@@ -3003,6 +3782,36 @@ static int hpgen_k_record(const double* in0, const double* in1, const double* in
 
 HPGEN_EXPORT int hpgen_kernel_record(const double* in0, const double* in1, const double* in2, double* out0) {
     return hpgen_k_record(in0, in1, in2, out0);
+}
+
+/* step_partials(z[3], g[9], p[3], h[1]) -> (J[9], Fs[18], Yz[18], Ys[36]) */
+#define HPGEN_STEP_PARTIALS_SZ_ARG 4
+#define HPGEN_STEP_PARTIALS_SZ_RES 4
+#define HPGEN_STEP_PARTIALS_SZ_IW 0
+#define HPGEN_STEP_PARTIALS_SZ_W 73
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_step_partials exports it */
+static int hpgen_k_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2, double* out3) {
+    const casadi_real* arg[HPGEN_STEP_PARTIALS_SZ_ARG + 1];
+    casadi_real* res[HPGEN_STEP_PARTIALS_SZ_RES + 1];
+    casadi_int iw[HPGEN_STEP_PARTIALS_SZ_IW + 1];
+    casadi_real w[HPGEN_STEP_PARTIALS_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    res[1] = out1;
+    res[2] = out2;
+    res[3] = out3;
+    flag = step_partials(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2, double* out3) {
+    return hpgen_k_step_partials(in0, in1, in2, in3, out0, out1, out2, out3);
 }
 
 /* ---- dense linear algebra and Newton ---- */
@@ -3585,4 +4394,70 @@ HPGEN_EXPORT long long hpgen_advance_batch(hpgen_run* runs, long long B, double 
         if (st[b].code != HPGEN_OK) ++failed;
     }
     return failed;
+}
+
+/* ---- linearization along recorded steps (issue 12; hpgen.runtime.linearize) ---- */
+
+/* For k = 0..K-1: Newton on step k from the record (g_k, p_k) = (g_rec + k NN,
+   p_rec + k D): step 0 by full Newton from z (in/out: z_0 in, the last solution out), step
+   k > 0 from the predictor of hpgen_run_step (o->predictor) with o's Newton, whose simplified
+   iterations use J^{-1} of the previous step's converged z; dev[k] = max |update(z_k) -
+   record k+1| (the caller checks that the records are this module's steps). At the
+   converged z_k: (J, Fs, Yz, Ys) = step_partials(z_k), J inverted once (and kept as the
+   next step's Newton matrix), A_k = Ys - Yz J^{-1} Fs, 2D x 2D column-major
+   at A + k 4 D^2. Returns the steps done (K, or the failing step with st->code set). */
+HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const double* p_rec,
+                                       double h, double* z, const hpgen_options* o,
+                                       double* A, double* dev, hpgen_status* st) {
+    enum { S = 2 * HPGEN_D };
+    double hv[1], g1[HPGEN_NN], p1[HPGEN_D], J[HPGEN_NZ * HPGEN_NZ], Fs[HPGEN_NZ * S],
+        Yz[S * HPGEN_NZ], Ys[S * S], zlast[HPGEN_NZ], zprev[HPGEN_NZ], zprev2[HPGEN_NZ], res;
+    int piv[HPGEN_NZ];
+    long long k, it, valid = 0;
+    int i, j, l, code;
+    hpgen_options full;
+    hpgen_status_init(st);
+    if (K < 0 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    hv[0] = h;
+    full = *o;
+    full.simplified = 0;
+    for (k = 0; k < K; ++k) {
+        const double* g = g_rec + k * HPGEN_NN;
+        const double* p = p_rec + k * HPGEN_D;
+        double* Ak = A + k * S * S;
+        double m = 0.0;
+        /* the start: the extrapolation of hpgen_run_step through z_{k-1}, z_{k-2}, z_{k-3} */
+        memcpy(zlast, z, sizeof zlast);
+        if (o->predictor && k >= 3)
+            for (i = 0; i < HPGEN_NZ; ++i) z[i] = 3.0 * (z[i] - zprev[i]) + zprev2[i];
+        else if (o->predictor && k == 2)
+            for (i = 0; i < HPGEN_NZ; ++i) z[i] = 2.0 * z[i] - zprev[i];
+        code = hpgen_step_core(g, p, hv, z, k == 0 ? &full : o, J, piv, &valid, g1, p1, &it,
+                               &st->jacobians, &res, k == 0, 1);
+        st->iterations = it; st->total_iterations += it; st->residual = res;
+        if (code != HPGEN_OK) { st->code = code; st->step = k; return k; }
+        for (i = 0; i < HPGEN_NN; ++i) m = fmax(m, fabs(g1[i] - g[HPGEN_NN + i]));
+        for (i = 0; i < HPGEN_D; ++i) m = fmax(m, fabs(p1[i] - p[HPGEN_D + i]));
+        dev[k] = m;
+        ++st->jacobians;
+        valid = 0;
+        if (hpgen_k_step_partials(z, g, p, hv, J, Fs, Yz, Ys)
+            || hpgen_lu_factor_solve(J, piv, Fs, 1)) {
+            st->code = HPGEN_NONFINITE; st->step = k; return k;
+        }
+        valid = o->simplified ? 1 : 0;    /* J holds J^{-1} at z_k: the next Newton matrix */
+        /* Fs's first column is solved, the others by J^{-1} */
+        for (j = 1; j < S; ++j) hpgen_lu_apply(J, piv, Fs + j * HPGEN_NZ);
+        for (j = 0; j < S; ++j)
+            for (i = 0; i < S; ++i) {
+                double a = Ys[i + j * S];
+                for (l = 0; l < HPGEN_NZ; ++l) a -= Yz[i + l * S] * Fs[l + j * HPGEN_NZ];
+                Ak[i + j * S] = a;
+            }
+        if (!hpgen_all_finite(Ak, S * S)) { st->code = HPGEN_NONFINITE; st->step = k; return k; }
+        memcpy(zprev2, zprev, sizeof zprev);
+        memcpy(zprev, zlast, sizeof zprev);
+    }
+    st->step = K;
+    return K;
 }

@@ -24,12 +24,15 @@ Conventions:
   max_ij |Phi'^T Omega(p1) Phi' - Omega(p0)|; ``relative`` divides it by
   |Phi'|_2^2 |Omega(p1)|_2, the size of the terms whose round-off it measures.
 
-Jacobian of a generated step (``StepSensitivity``): the step solves F(z; g, p, h) = 0 and
+Jacobian of a generated step (``GeneratedMap``): the step solves F(z; g, p, h) = 0 and
 applies the explicit update U(z, g, p, h) = (g1, p1). With s = (delta, dp),
-dz/ds = -(dF/dz)^{-1} dF/ds and d(g1, p1)/ds = dU/ds + dU/dz dz/ds. dF/dz is the generated
-``jacobian`` kernel of the compiled module (C or Python backend) at the converged z;
-dF/ds, dU/dz and dU/ds are built at check time by CasADi from the DiscreteStep's residual
-and update functions (``hpgen.derive.derive``), never by finite differences.
+dz/ds = -(dF/dz)^{-1} dF/ds and d(g1, p1)/ds = dU/ds + dU/dz dz/ds, composed by the one
+implementation hpgen.runtime.linearize.implicit_derivative. Phi' is that of
+``Integrator.linearize``: the generated ``step_partials`` kernel (J and the partials) of the
+compiled module (C or Python backend) at the converged z. ``StepSensitivity`` rebuilds the
+same partials at check time by CasADi AD of the DiscreteStep's residual and update in
+ambient coordinates (g (I + delta^), then the Frobenius projection ``chart_jacobian``), an
+independent route whose agreement is reported (``ad_mismatch``); never finite differences.
 """
 from __future__ import annotations
 
@@ -38,6 +41,7 @@ import numpy as np
 
 from ..errors import ConvergenceError
 from ..runtime import newton as _newton
+from ..runtime.linearize import implicit_derivative, partials_at
 from .rkmk import _np, chart_jacobian
 
 BRACKET_SIGN = +1
@@ -124,23 +128,25 @@ class GeneratedMap:
         self.last = {}
 
     def map_jacobian(self, g, p, h, z=None):
-        """(Phi' (2d, 2d), g1, p1); diagnostics of the last call in ``self.last``:
-        cond_J (2-norm condition of dF/dz), kernel_mismatch (max |generated dF/dz - CasADi
-        dF/dz| / max(1, max|dF/dz|)), update_mismatch (generated update vs CasADi)."""
-        integ, nz = self.integ, self.integ.nz
-        z, g1, p1 = converged_step(integ, g, p, h, z)
+        """(Phi' (2d, 2d), g1, p1) from the generated kernels (``Integrator.linearize``'s
+        partials); diagnostics of the last call in ``self.last``: cond_J (2-norm condition of
+        dF/dz), kernel_mismatch (max |generated dF/dz - CasADi dF/dz| / max(1, max|dF/dz|)),
+        update_mismatch (generated update vs CasADi), ad_mismatch (max |Phi' - Phi' by CasADi
+        AD in ambient coordinates| / max(1, max|Phi'|))."""
+        z, g1, p1 = converged_step(self.integ, g, p, h, z)
         gf = np.asarray(g, dtype=float).ravel(order="F")
-        hv = np.array([float(h)])
-        J = integ.kernel("jacobian", z, gf, np.asarray(p, float), hv)[0].reshape(
-            nz, nz, order="F")
+        J, Fs, Yz, Ys = partials_at(self.integ, z, gf, np.asarray(p, float),
+                                    np.array([float(h)]))
+        Phi = implicit_derivative(J, Fs, Yz, Ys)
         dF_ds, dU_dz, dU_ds, J_ca, g1c, p1c = self.sens.partials(z, g, p, h)
-        dU = dU_ds - dU_dz @ np.linalg.solve(J, dF_ds)
+        dU = implicit_derivative(J_ca, dF_ds, dU_dz, dU_ds)
         nn = self.group.n ** 2
-        Phi = chart_jacobian(self.group, g1, dU[:nn], dU[nn:])
+        Phi_ad = chart_jacobian(self.group, g1c, dU[:nn], dU[nn:])
         self.last = {
             "cond_J": float(np.linalg.cond(J)),
             "kernel_mismatch": float(np.abs(J - J_ca).max() / max(1.0, np.abs(J_ca).max())),
             "update_mismatch": float(max(np.abs(g1 - g1c).max(), np.abs(p1 - p1c).max())),
+            "ad_mismatch": float(np.abs(Phi - Phi_ad).max() / max(1.0, np.abs(Phi).max())),
             "z": z,
         }
         return Phi, g1, p1

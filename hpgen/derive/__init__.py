@@ -22,6 +22,7 @@ import casadi as ca
 from ..schemes import RKMK
 from .action import step_equations
 from .lagrangian import lagrangian_function, open_functions, to_casadi
+from .linearize import step_partials
 from .records import record_row, velocity_step
 from ..abi import OPEN_EXTRA
 from .step import KERNEL_NAMES, DiscreteStep, Kernel, OpenSpec
@@ -128,6 +129,9 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
         kernel("velocity_step", [("g", gvec), ("p", p), ("xi", xi)],
                [("xi1", velocity_step(g, p, xi, lag))]),
         kernel("record", [("g", gvec), ("p", p), ("xi", xi)], [("row", row)]),
+        kernel("step_partials", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
+               [(nm, _flat(e)) for nm, e in zip(("J", "Fs", "Yz", "Ys"), (J,) + step_partials(
+                   group, g, p, z, eqs.residual, eqs.g1, eqs.p1))]),
     )
     assert tuple(k.name for k in kernels) == KERNEL_NAMES
     return DiscreteStep(

@@ -125,7 +125,7 @@ class CBackend(_Backend):
             fn.restype = ctypes.c_int
             self._fns[k] = fn
         P, LL, D = ctypes.c_void_p, ctypes.c_longlong, ctypes.c_double
-        closed_only = ("hpgen_observe",)
+        closed_only = ("hpgen_observe", "hpgen_linearize")
         for name, args, res in (
                 ("hpgen_step", [P, P, P if self.open else D, P, P, P, P, P], ctypes.c_int),
                 ("hpgen_run_size", [], LL),
@@ -138,7 +138,8 @@ class CBackend(_Backend):
                 ("hpgen_record", [P, P, P] + [P] * bool(self.open), ctypes.c_int),
                 ("hpgen_advance_record", [P, D, LL, LL, P, P, P, P], LL),
                 ("hpgen_advance_record_batch", [P, LL, D, LL, LL, P, LL, P, P, P], LL),
-                ("hpgen_run_set_inputs", [P, D, P, LL, P], None)):
+                ("hpgen_run_set_inputs", [P, D, P, LL, P], None),
+                ("hpgen_linearize", [LL, P, P, D, P, P, P, P, P], LL)):
             if (self.open and name in closed_only) or (
                     not self.open and name == "hpgen_run_set_inputs"):
                 continue
@@ -409,3 +410,18 @@ class CBackend(_Backend):
                 out[b] = {**loop.new_status(), "code": int(code)}
                 n_rec[b] = 0
         return rows, n_rec + 1, out
+
+    def linearize(self, gf, p, h, z0, opts):
+        """hpgen_linearize over the records gf (K+1, n*n), p (K+1, d) (hpgen.runtime.linearize):
+        (A (K, 2d, 2d), dev (K,), None or (code, iterations, residual), steps done)."""
+        K, s = len(gf) - 1, 2 * self.d
+        gf, p = np.array(gf, dtype=_F64, order="C"), np.array(p, dtype=_F64, order="C")
+        z = np.array(z0, dtype=np.float64)
+        A, dev = np.zeros((K, s, s)), np.zeros(K)
+        st = _Status()
+        done = int(self._lib.hpgen_linearize(K, _addr(gf), _addr(p), float(h), _addr(z),
+                                             ctypes.byref(_Options.of(opts)), _addr(A),
+                                             _addr(dev), ctypes.byref(st)))
+        err = None if st.code == newton.OK else (st.code, st.iterations, st.residual)
+        # C's column-major 2d x 2d blocks are row-major transposes
+        return A.transpose(0, 2, 1).copy(), dev, err, done

@@ -248,6 +248,23 @@ class Integrator(SectionsMixin, RecordsMixin):
             raise _error(code, 0, 0.0, r, it)
         return g1.reshape(self.n, self.n, order="F"), p1
 
+    def linearize(self, traj, *, newton: NewtonOptions | None = None):
+        """A (K, 2d, 2d): A[k] = d(eta_{k+1}, dp_{k+1}) / d(eta_k, dp_k) along ``traj`` (this
+        module's ``simulate(..., every=1)``), perturbations g -> g tau(eta), p -> p + dp; by
+        the implicit function theorem at each converged step (hpgen.runtime.linearize).
+        newton: the Newton settings recovering each step's solution (as simulate's)."""
+        self._closed_only("linearize")     # B = d/du and wrt="params": issue 12, to do
+        from .linearize import linearize
+        return linearize(self, traj, self._options(newton))
+
+    def casadi_step(self):
+        """casadi.Function step(g, p, h, z) -> (F, g1, p1): this module's residual and explicit
+        update as CasADi expressions, for optimal control (compile-time stack: needs casadi;
+        hpgen.api.casadi_step, hpgen.derive.export)."""
+        self._closed_only("casadi_step")   # (u, params) inputs: issue 12, to do
+        from .. import api     # the compile side: it alone imports casadi (lazily)
+        return api.casadi_step(self)
+
     def _initial(self, g0, xi0, mu0, lv=()):
         """(g0 flat, mu0, xi0) from g0 and exactly one of xi0 / mu0, checked; lv: the
         open module's extra argument of l at the start (_lv)."""

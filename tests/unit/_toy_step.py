@@ -5,7 +5,8 @@ Free rigid body on SO(3), Cayley Euler-Poincare step, unknown z = xi (nz = 3):
   g1 = g cay(h z),  cay(x) = 1 + 4/(4 + |x|^2) (x^ + x^ x^/2),  p1 = (dcay^{-1}_{-hz})^T I z
   legendre = I xi, hessian = diag(I) (a sparse output on purpose), energy = xi.I xi/2,
   momentum = g p, defect = max|g^T g - 1|, margin = 1 (or a callable(z, h)), guess = xi,
-  update_p = p1, velocity_step = xi - (I xi - p)/I, record row = (g, mu, energy).
+  update_p = p1, velocity_step = xi - (I xi - p)/I, record row = (g, mu, energy),
+  step_partials = (J, and the state partials of hpgen.derive.linearize).
 """
 from __future__ import annotations
 
@@ -17,7 +18,9 @@ from pathlib import Path
 
 import casadi as ca
 
+from hpgen.derive.linearize import step_partials
 from hpgen.derive.step import DiscreteStep, Kernel
+from hpgen.groups.catalog import group_from_spec
 
 INERTIA = (2.0, 1.0, 2.0 / 3.0)
 HASH = "0123456789abcdef" * 4
@@ -76,6 +79,11 @@ def toy_step(margin=None, name="free_rigid_body", inertia=INERTIA) -> DiscreteSt
         # record: (g, mu, energy)
         "record": ((g, p, xi), ("g", "p", "xi"), [ca.vertcat(g, p, ca.dot(xi, inertia * xi) / 2)],
                    ("row",)),
+        "step_partials": ((z, g, p, h), ("z", "g", "p", "h"),
+                          [ca.vec(e) for e in (ca.jacobian(F, z),) + step_partials(
+                              group_from_spec("SO3"), G, p, z, F, ca.mtimes(G, cay(h * z)),
+                              ca.mtimes(dcayinv(-h * z).T, Iz))],
+                          ("J", "Fs", "Yz", "Ys")),
     }
     kernels = tuple(Kernel(k, ca.Function(k, list(a), outs, list(an), list(on)), an, on)
                     for k, (a, an, outs, on) in defs.items())

@@ -220,6 +220,8 @@ g2, p2 = ip.step(np.eye(3), mu0, 0.1)
 assert np.abs(g1 - g2).max() < 1e-14 and np.abs(p1 - p2).max() < 1e-14
 tr = m.simulate(g0=np.eye(3), h=0.1, steps=50, xi0=xi0)
 assert len(tr) == 51
+A = ic.linearize(tr)   # issue 12: the step's derivatives, runtime path only
+assert A.shape == (50, 6, 6) and np.abs(A - ip.linearize(tr)).max() < 1e-12
 bad = [k for k in sys.modules if k.split('.')[0] in ('casadi', 'sympy', 'jinja2')
        and sys.modules[k] is not None]
 assert not bad, bad

@@ -1,0 +1,48 @@
+"""A compiled module's step as a CasADi function, for optimal control (issue 12).
+
+    casadi_step(module_dir, meta) -> casadi.Function
+        step(g[n x n], p[d], h, z[nz]) -> (F[nz], g1[n x n], p1[d])
+
+F is the step's residual (the stationarity conditions of one term of the discrete action,
+F(z; g, p, h) = 0 defines the step) and (g1, p1) = (g_{k+1}, p_{k+1}) its explicit update, as
+SX expressions: K steps go into ``casadi.Opti`` as the constraints F(z_k; g_k, p_k, h) = 0,
+g_{k+1} = g1(z_k, ...), p_{k+1} = p1(z_k, ...) (the Function may be called on MX).
+
+Compile-time stack (casadi): reached only through Integrator.casadi_step -> hpgen.api, never
+on the runtime path. The DiscreteStep is hpgen.api.derive_module's, from the module's
+model.yaml and meta.json options (derive is deterministic); it is checked against the
+module's own residual kernel at a sample point.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import ModelError
+
+#: relative agreement required between the re-derived residual and the module's kernel
+#: (the same SX algorithm evaluated by CasADi and by generated code: round-off only)
+MATCH_RTOL = 1e-12
+
+
+def casadi_step(step, residual_kernel=None, where="the module"):
+    """The DiscreteStep ``step`` as casadi.Function (see the module docstring).
+    residual_kernel: the module's compiled residual (z, g, p, h) -> [F], checked against
+    the derivation (ModelError naming ``where`` when they differ)."""
+    import casadi as ca
+    n, d, nz = step.n, step.d, step.nz
+    res = step.kernel("residual").function
+    upd = step.kernel("update").function
+    G, P, H, Z = ca.SX.sym("g", n, n), ca.SX.sym("p", d), ca.SX.sym("h"), ca.SX.sym("z", nz)
+    gv = ca.reshape(G, n * n, 1)
+    g1, p1 = upd(Z, gv, P, H)
+    f = ca.Function("hpgen_step", [G, P, H, Z], [res(Z, gv, P, H), ca.reshape(g1, n, n), p1],
+                    ["g", "p", "h", "z"], ["F", "g1", "p1"])
+    if residual_kernel is not None:
+        rng = np.random.default_rng(0)
+        z, g, p = rng.standard_normal(nz) * 0.1, np.eye(n), rng.standard_normal(d)
+        ours = np.array(f(g, p, 0.01, z)[0]).ravel()
+        theirs = np.asarray(residual_kernel(z, g.ravel(order="F"), p, np.array([0.01]))[0])
+        if not np.abs(ours - theirs).max() <= MATCH_RTOL * (1.0 + np.abs(theirs).max()):
+            raise ModelError("the re-derived residual differs from the module's kernel; "
+                             "regenerate the module with this hpgen", file=where)
+    return f

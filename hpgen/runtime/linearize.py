@@ -1,0 +1,117 @@
+"""Derivatives of the step along a trajectory (issue 12; math.md sec. 10).
+
+    Integrator.linearize(traj) -> A (K, 2d, 2d),  A[k] = d(eta_{k+1}, dp_{k+1}) / d(eta_k, dp_k)
+
+Perturbations are right-trivialized in the module's chart: g_k -> g_k tau(eta_k),
+p_k -> p_k + dp_k, and the output is read the same way at g_{k+1}. Every registered chart has
+tau(eta) = e + eta^ + O(|eta|^2), so A is the same whichever tau the module uses (it is the
+derivative in left-trivialized coordinates; ``hpgen check``'s canonical form
+hpgen.analysis.symplectic.omega_matrix applies to it: A^T Omega(p_{k+1}) A = Omega(p_k) for a
+conservative scheme). A's columns/rows are ordered (eta, dp), column-major in C.
+
+How: at each step k the converged z_k solves F(z; g_k, p_k, h) = 0. The generated kernel
+``step_partials`` (hpgen.derive.linearize) gives J = dF/dz, Fs = dF/ds, Yz = dY/dz,
+Ys = dY/ds at z_k (Y = (eta_{k+1}, p_{k+1}), s = (eta_k, dp_k)); J is factored once; the implicit function theorem gives A = Ys - Yz J^{-1} Fs
+(``implicit_derivative``). No finite differences, no perturbed solves.
+
+z_k is not stored in a Trajectory: each step's z_k is recovered by full Newton from
+(g_k, p_k) (the guess kernel for k = 0, z_{k-1} after), and the step's output is compared with
+the next record (``RECORD_RTOL``): a trajectory of another module, step size or model is
+refused. The C backend runs the whole loop in ``hpgen_linearize`` (kernels.c); the Python
+backend runs the same loop here on the module's kernels.py.
+
+Runtime path only: numpy and hpgen.runtime.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..errors import ModelError
+from .. import abi
+from .args import _error
+
+#: the step recomputed from record k must reproduce record k+1 to this relative accuracy
+#: (max-norm, relative to 1 + max|state|). simulate's own steps (simplified Newton, predictor
+#: starts) and full Newton here agree to the Newton tolerance, ~1e-14; another scheme, step
+#: size or model differs by its local error, orders of magnitude above 1e-9 for any step size
+#: whose results are meant to be accurate.
+RECORD_RTOL = 1e-9
+
+
+def implicit_derivative(J, Fs, Yz, Ys):
+    """Ys - Yz J^{-1} Fs: d Y / d s of the output Y(z(s), s) where F(z(s), s) = 0 (the implicit
+    function theorem). J (nz, nz), Fs (nz, m), Yz (r, nz), Ys (r, m). The one implementation
+    used by the Python backend and by hpgen.analysis.symplectic."""
+    return Ys - Yz @ np.linalg.solve(J, Fs)
+
+
+def partials_at(integ, z, gf, p, hv):
+    """(J (nz, nz), Fs (nz, 2d), Yz (2d, nz), Ys (2d, 2d)) from the module's generated
+    ``step_partials`` kernel at z (flat column-major g, hv = [h])."""
+    nz, s = integ.nz, 2 * integ.d
+    J, Fs, Yz, Ys = integ.kernel("step_partials", z, gf, p, hv)
+    return (J.reshape(nz, nz, order="F"), Fs.reshape(nz, s, order="F"),
+            Yz.reshape(s, nz, order="F"), Ys.reshape(s, s, order="F"))
+
+
+def _check_traj(integ, traj):
+    """(g records flat (K+1, n*n), p records (K+1, d), h) of ``traj``, checked."""
+    n, d = integ.n, integ.d
+    if not all(hasattr(traj, a) for a in ("g", "mu", "h", "every")):
+        raise ModelError(f"expected a Trajectory from simulate, got {type(traj).__name__}",
+                         field="traj")
+    other = getattr(traj, "integrator", None)
+    if other is not None and getattr(other, "meta", {}).get("hash") != integ.meta["hash"]:
+        raise ModelError(f"the trajectory comes from module {other.meta.get('module')!r}, "
+                         f"not {integ.meta['module']!r}", field="traj")
+    if traj.every != 1:
+        raise ModelError(f"expected a trajectory recorded at every step (every=1), got "
+                         f"every={traj.every}", field="traj")
+    g, mu = np.asarray(traj.g, dtype=np.float64), np.asarray(traj.mu, dtype=np.float64)
+    if g.ndim != 3 or g.shape[1:] != (n, n) or mu.shape != (len(g), d) or len(g) < 2:
+        raise ModelError(f"expected g of shape (K+1, {n}, {n}) and mu of shape (K+1, {d}) "
+                         f"with K >= 1, got {g.shape} and {mu.shape}", field="traj")
+    if not (np.isfinite(g).all() and np.isfinite(mu).all()):
+        raise ModelError("the trajectory has non-finite entries", field="traj")
+    gf = np.ascontiguousarray(g.transpose(0, 2, 1).reshape(len(g), n * n))
+    return gf, np.array(mu, order="C"), float(traj.h)
+
+
+def _python_loop(integ, gf, p, hv, z, opts):
+    """The Python backend's twin of hpgen_linearize: (A (K, 2d, 2d), dev (K,), code, k)."""
+    K, s = len(gf) - 1, 2 * integ.d
+    A, dev = np.zeros((K, s, s)), np.zeros(K)
+    for k in range(K):
+        code, g1, p1, z, it, r = integ._b.step(gf[k], p[k], hv, z, opts)
+        if code != abi.OK:
+            return A, dev, (code, it, r), k
+        dev[k] = max(np.abs(g1 - gf[k + 1]).max(), np.abs(p1 - p[k + 1]).max())
+        A[k] = implicit_derivative(*partials_at(integ, z, gf[k], p[k], hv))
+    return A, dev, None, K
+
+
+def linearize(integ, traj, opts):
+    """A (K, 2d, 2d) along ``traj`` (K + 1 records of ``integ.simulate(..., every=1)``); see
+    the module docstring. opts: resolved NewtonOptions (Integrator._options). Raises
+    ModelError (field traj) for a trajectory that is not this module's, ConvergenceError if a
+    step's Newton fails."""
+    gf, p, h = _check_traj(integ, traj)
+    hv = np.array([h])
+    g0 = gf[0].reshape(integ.n, integ.n, order="F")
+    z0 = integ.kernel("guess", integ.velocity(g0, p[0]), gf[0], p[0], hv)[0]
+    loop = getattr(integ._b, "linearize", None)
+    if loop is not None:
+        A, dev, err, done = loop(gf, p, hv[0], z0, opts)
+    else:
+        A, dev, err, done = _python_loop(integ, gf, p, hv, z0, opts)
+    if err is not None:
+        code, it, r = err
+        raise _error(code, done, done * h, r, it)
+    scale = 1.0 + max(np.abs(gf).max(), np.abs(p).max())
+    bad = np.flatnonzero(~(dev <= RECORD_RTOL * scale))
+    if bad.size:
+        k = int(bad[0])
+        raise ModelError(f"record {k + 1} is not this module's step from record {k} at "
+                         f"h = {h!r} (deviation {dev[k]:.1e}); expected a trajectory "
+                         f"simulated by {integ.meta['module']!r}", field="traj")
+    return A
