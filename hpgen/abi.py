@@ -74,8 +74,8 @@ KERNELS = (
     KernelSpec("velocity_step", ("nn", "d", "d"), ("d",),
                "(g, p, xi) -> xi - H^{-1}(dl/dxi(g, xi) - p): one Newton step"),
     KernelSpec("record", ("nn", "d", "d"), ("w",), "(g, p, xi) -> the scene's record row"),
-    KernelSpec("step_partials", ("nz", "nn", "d", "H"), ("nznz", "nzs", "nzs", "ss"),
-               "(z, g, p, h) -> J = dF/dz, Fs = dF/ds, Yz = dY/dz, Ys = dY/ds: the step's "
+    KernelSpec("step_partials", ("nz", "nn", "d", "H"), ("nzs", "nzs", "ss"),
+               "(z, g, p, h) -> Fs = dF/ds, Yz = dY/dz, Ys = dY/ds: the step's "
                "partials in s = (eta, dp), g -> g tau(eta), p -> p + dp, "
                "Y = (eta_{k+1}, p_{k+1}) (hpgen.derive.linearize)"),
 )

@@ -28,7 +28,7 @@ Jacobian of a generated step (``GeneratedMap``): the step solves F(z; g, p, h) =
 applies the explicit update U(z, g, p, h) = (g1, p1). With s = (delta, dp),
 dz/ds = -(dF/dz)^{-1} dF/ds and d(g1, p1)/ds = dU/ds + dU/dz dz/ds, composed by the one
 implementation hpgen.runtime.linearize.implicit_derivative. Phi' is that of
-``Integrator.linearize``: the generated ``step_partials`` kernel (J and the partials) of the
+``Integrator.linearize``: the generated ``jacobian`` and ``step_partials`` kernels of the
 compiled module (C or Python backend) at the converged z. ``StepSensitivity`` rebuilds the
 same partials at check time by CasADi AD of the DiscreteStep's residual and update in
 ambient coordinates (g (I + delta^), then the Frobenius projection ``chart_jacobian``), an

@@ -10,8 +10,9 @@ hpgen.analysis.symplectic.omega_matrix applies to it: A^T Omega(p_{k+1}) A = Ome
 conservative scheme). A's columns/rows are ordered (eta, dp), column-major in C.
 
 How: at each step k the converged z_k solves F(z; g_k, p_k, h) = 0. The generated kernel
-``step_partials`` (hpgen.derive.linearize) gives J = dF/dz, Fs = dF/ds, Yz = dY/dz,
-Ys = dY/ds at z_k (Y = (eta_{k+1}, p_{k+1}), s = (eta_k, dp_k)); J is factored once; the implicit function theorem gives A = Ys - Yz J^{-1} Fs
+``step_partials`` (hpgen.derive.linearize) gives Fs = dF/ds, Yz = dY/dz, Ys = dY/ds at z_k
+(Y = (eta_{k+1}, p_{k+1}), s = (eta_k, dp_k)), the ``jacobian`` kernel J = dF/dz, factored
+once; the implicit function theorem gives A = Ys - Yz J^{-1} Fs
 (``implicit_derivative``). No finite differences, no perturbed solves.
 
 z_k is not stored in a Trajectory: each step's z_k is recovered by full Newton from
@@ -47,9 +48,10 @@ def implicit_derivative(J, Fs, Yz, Ys):
 
 def partials_at(integ, z, gf, p, hv):
     """(J (nz, nz), Fs (nz, 2d), Yz (2d, nz), Ys (2d, 2d)) from the module's generated
-    ``step_partials`` kernel at z (flat column-major g, hv = [h])."""
+    ``jacobian`` and ``step_partials`` kernels at z (flat column-major g, hv = [h])."""
     nz, s = integ.nz, 2 * integ.d
-    J, Fs, Yz, Ys = integ.kernel("step_partials", z, gf, p, hv)
+    J = integ.kernel("jacobian", z, gf, p, hv)[0]
+    Fs, Yz, Ys = integ.kernel("step_partials", z, gf, p, hv)
     return (J.reshape(nz, nz, order="F"), Fs.reshape(nz, s, order="F"),
             Yz.reshape(s, nz, order="F"), Ys.reshape(s, s, order="F"))
 
