@@ -15,11 +15,13 @@ How: at each step k the converged z_k solves F(z; g_k, p_k, h) = 0. The generate
 once; the implicit function theorem gives A = Ys - Yz J^{-1} Fs
 (``implicit_derivative``). No finite differences, no perturbed solves.
 
-z_k is not stored in a Trajectory: each step's z_k is recovered by full Newton from
-(g_k, p_k) (the guess kernel for k = 0, z_{k-1} after), and the step's output is compared with
-the next record (``RECORD_RTOL``): a trajectory of another module, step size or model is
-refused. The C backend runs the whole loop in ``hpgen_linearize`` (kernels.c); the Python
-backend runs the same loop here on the module's kernels.py.
+z_k is not stored in a Trajectory: each step's z_k is recovered by Newton from (g_k, p_k)
+(the ``newton=`` settings; step 0 by full Newton from the guess kernel, step k > 0 from the
+predictor through z_{k-1}, z_{k-2}, ... in C, from z_{k-1} in Python; C's simplified Newton
+reuses J^{-1} at z_{k-1}, evaluated for the derivative anyway), and the step's output is
+compared with the next record (``RECORD_RTOL``): a trajectory of another module, step size or
+model is refused. The C backend runs the whole loop in ``hpgen_linearize`` (kernels.c); the
+Python backend runs it here on the module's kernels.py. The two agree to round-off.
 
 Runtime path only: numpy and hpgen.runtime.
 """
@@ -27,8 +29,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import ModelError
 from .. import abi
+from ..errors import ModelError
 from .args import _error
 
 #: the step recomputed from record k must reproduce record k+1 to this relative accuracy
