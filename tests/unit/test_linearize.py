@@ -159,3 +159,23 @@ def test_casadi_step_reproduces_step(compile_model):
     assert np.abs(np.array(F)).max() < 1e-13
     assert np.abs(np.array(g1) - traj.g[3]).max() < 1e-12
     assert np.abs(np.array(p1).ravel() - traj.mu[3]).max() < 1e-12
+
+
+FORCED = """\
+name: forced_top
+group: SO3
+parameters: {I: [1.0, 5.0, 6.0], Mg: 1.0, c: 0.1, a: 0.4}
+runtime_parameters: [Mg]
+lagrangian: 0.5*(I[0]*xi[0]**2 + I[1]*xi[1]**2 + I[2]*xi[2]**2) - Mg*R[2, 2]
+forces: ["-c*xi[0] + a*cos(2*t)", "-c*xi[1]", "-c*xi[2] + a*R[2, 0]*sin(t)"]
+"""
+
+
+def test_open_models_are_refused_in_one_line(compile_model):
+    """B = d/du_k, wrt="params" and the (u, params) casadi_step are not built yet: an open
+    module (forces, inputs, runtime parameters or t) is refused, not linearized wrongly."""
+    integ = compile_model(FORCED, backend="python")
+    for call in (lambda: integ.linearize(None), integ.casadi_step):
+        with pytest.raises(ModelError) as e:
+            call()
+        assert "\n" not in str(e.value) and "forces, inputs, runtime parameters" in str(e.value)
