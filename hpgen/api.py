@@ -37,8 +37,7 @@ from typing import Any
 
 from . import __version__, cache
 from .errors import ModelError
-#: the option values (re-exported: hpgen.bench reads TAU_CHOICES, RKMK_CHOICES from here)
-from .schemes import BACKEND, BACKENDS, RKMK, RKMK_CHOICES, TAU, TAU_CHOICES  # noqa: F401
+from .schemes import BACKEND, RKMK, TAU
 
 #: bump when the generated layout changes, so stale cache entries are not reused
 CODE_FORMAT = "1"
@@ -301,33 +300,6 @@ def _cached_module(path: str, text: str, opts: CompileOptions, cache_dir: Path):
                                 store=cache.library_store(cache_dir))
     return CompiledModule(path, text, opts, entry, meta, cached=derived is None,
                           built=built, derived=derived), library
-    opts.validate()
-    text = read_model_text(model)
-    cache_dir = Path(opts.cache_dir) if opts.cache_dir else cache.default_cache_dir()
-    try:
-        entry, library = _cached_module(str(model), text, opts, cache_dir)
-    except cache.CacheUnwritable as exc:
-        tmp = cache.private_cache_dir()
-        print(f"hpgen: warning: the cache directory {cache_dir} cannot be written "
-              f"({exc.reason}); building in {tmp}", file=sys.stderr)
-        entry, library = _cached_module(str(model), text, opts, tmp)
-    if opts.out is None:
-        return entry
-    files = cache.read_tree(entry)
-    files["model.yaml"] = text.encode()      # this request's file (the entry keeps the first)
-    unlisted = {}
-    if library is not None:
-        from .runtime.build import read_library
-        unlisted[library.name], unlisted[library.name + ".json"] = read_library(library)
-    dest = Path(opts.out) / json.loads(files["meta.json"])["module"]
-    if not (_same_tree(dest, {**files, **unlisted}) and cache.is_valid(dest)):
-        try:
-            cache.write_tree(dest, files, unlisted=unlisted)
-        except OSError as exc:
-            raise ModelError(f"cannot write the module to {dest} ({exc.strerror or exc})",
-                             field="option out") from None
-    return dest
-
 
 
 def _same_tree(dest: Path, files: dict) -> bool:

@@ -23,7 +23,7 @@ DEFAULT_SCHEMES = (("stormer-verlet", "cay", "truncated"), ("gauss2", "exp", "ex
 
 def validate_schemes(schemes):
     """ModelError (one line) for an unknown tableau, tau or rkmk, before anything is built."""
-    from ..api import RKMK_CHOICES, TAU_CHOICES
+    from ..schemes import RKMK_CHOICES, TAU_CHOICES
     from ..tableaus import TABLEAU_NAMES
     if not schemes:
         raise ModelError("expected at least one scheme", field="option tableau")

@@ -60,7 +60,7 @@ def _mapping(model, g, xi, t=None, params=None, u=None) -> dict:
         for j, s in enumerate(row):
             mapping[s] = g[i, j]
     if t is not None:
-        from ..model.types import TIME_SYMBOL
+        from ..model.symbols import TIME_SYMBOL
         mapping[TIME_SYMBOL] = t
         mapping.update({s: params[k] for k, s in enumerate(model.runtime_symbols)})
         mapping.update({s: u[k] for k, s in enumerate(model.input_symbols)})

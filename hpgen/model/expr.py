@@ -43,10 +43,8 @@ import numpy as np
 import sympy as sp
 
 from ..errors import ModelError
-# the evaluator's names stay importable from here (hpgen.model.expr was one module)
-from .evaluator import (FUNCTIONS, MAX_EXACT_BITS, MAX_WORK, _FACTOR_ALIAS,  # noqa: F401
-                        _NONFINITE, _as_sympy, _Evaluator, _shape, _shape_text, _to_array)
-from .syntax import MAX_DEPTH, fail, parse_checked  # noqa: F401
+from .evaluator import _NONFINITE, _Evaluator, _shape_text
+from .syntax import MAX_DEPTH, parse_checked
 
 MAX_TREE = 1_000_000
 SECTION_FIELD = "scene.section"

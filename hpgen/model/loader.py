@@ -19,8 +19,7 @@ import stat
 
 from ..errors import ModelError
 from ..schemes import RKMK, TAU
-from .types import (RESERVED_NAMES, TIME_SYMBOL, IntegratorChoice, Model, input_symbol,
-                    runtime_symbol)
+from .types import RESERVED_NAMES, IntegratorChoice, Model
 from .yamldoc import MAX_FILE_BYTES, Doc, compose_document, describe, is_number
 
 MAX_NAME_LEN = 64
@@ -156,6 +155,7 @@ def _integrator(doc: Doc, raw) -> IntegratorChoice:
 
 def _lagrangian(doc: Doc, text, group, exact_params, refused=None):
     from .expr import parse_lagrangian
+    from .symbols import TIME_SYMBOL
     if is_number(text):
         raise doc.error(("lagrangian",), f"the Lagrangian does not depend on xi (it is the "
                                          f"constant {text!r}); it must contain the velocity xi")
@@ -189,6 +189,7 @@ def _name_list(doc: Doc, key: str, raw, what: str) -> list:
 def _runtime_parameters(doc: Doc, raw, stored, exact) -> tuple:
     """((name, shape), ...), the flat symbols, their defaults, and ``exact`` with each runtime
     parameter replaced by its symbol(s) (a sympy scalar or an object array of the shape)."""
+    from .symbols import runtime_symbol
     import numpy as np
     if raw is None:
         return (), (), (), exact
@@ -236,6 +237,7 @@ def _inputs(doc: Doc, raw, stored) -> tuple:
 def _forces(doc: Doc, raw, group, exact, inputs) -> tuple:
     """(sympy expressions, texts): one component of f in g* per algebra coordinate."""
     from .expr import parse_force
+    from .symbols import TIME_SYMBOL, input_symbol
     d = group.d
     if not isinstance(raw, list):
         raise doc.error(("forces",), f"expected a list of {d} expressions (one per algebra "
@@ -275,6 +277,7 @@ def _refuse_runtime_in_scene(doc: Doc, scene, runtime_syms) -> None:
 
 
 def build_model(doc: Doc, text: str) -> Model:
+    from .symbols import input_symbol
     data = doc.mapping((), doc.data, TOP_KEYS)
     if "schema" in data and (type(data["schema"]) is not int or data["schema"] != 1):
         raise doc.error(("schema",), f"unsupported schema {data['schema']!r}: expected 1")

@@ -4,24 +4,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-import sympy as sp
-
 #: names the Lagrangian may use besides parameters (see hpgen.model.expr for products)
 RESERVED_NAMES = ("xi", "g", "R", "x", "t", "dot", "sin", "cos", "tan", "exp", "log", "sqrt")
-
-#: the time t of the Lagrangian and the forces (at stage i of step k: t_k + c_i h)
-TIME_SYMBOL = sp.Symbol("t", real=True)
-
-
-def runtime_symbol(name: str, index=()) -> Any:
-    """The symbol of entry ``index`` (() for a scalar) of the runtime parameter ``name``.
-    Its name holds a ':' so it can clash with no variable or parameter symbol."""
-    return sp.Symbol("param:" + name + "".join(f"[{i}]" for i in index), real=True)
-
-
-def input_symbol(name: str) -> Any:
-    """The symbol of the control input ``name`` (held constant over each step)."""
-    return sp.Symbol("input:" + name, real=True)
 
 
 @dataclass(frozen=True)
@@ -141,6 +125,7 @@ class Model:
     @property
     def time_dependent(self) -> bool:
         """True when the Lagrangian or a force depends on the time t."""
+        from .symbols import TIME_SYMBOL
         return any(TIME_SYMBOL in e.free_symbols for e in (self.lagrangian, *self.forces))
 
     @property

@@ -10,7 +10,6 @@ in chunks of 5000 (400 chunks, a few seconds); the signal is sent once three chu
 committed (their files exist), long before the run can end."""
 from __future__ import annotations
 
-import os
 import signal
 import subprocess
 import sys

@@ -7,7 +7,7 @@ import sympy as sp
 
 from hpgen.errors import ModelError
 from hpgen.model import load_model_text
-from hpgen.model.types import TIME_SYMBOL, input_symbol, runtime_symbol
+from hpgen.model.symbols import TIME_SYMBOL, input_symbol, runtime_symbol
 
 TOP = """\
 name: controlled_top

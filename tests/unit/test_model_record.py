@@ -10,7 +10,6 @@ import sympy as sp
 from hpgen.errors import ModelError
 from hpgen.groups import group_from_spec
 from hpgen.model import load_model_text
-from hpgen.model import evaluator as evaluator_mod
 from hpgen.model import expr as expr_mod
 from hpgen.model.types import RecordExpr
 
@@ -133,14 +132,6 @@ def test_parse_record_direct():
     with pytest.raises(ModelError) as info:
         expr_mod.parse_record("xi", group_from_spec("SO3"), {}, "scene.record[3].v")
     assert info.value.field == "scene.record[3].v" and "scalar" in info.value.message
-
-
-def test_expr_module_still_exports_the_evaluator():
-    assert expr_mod._Evaluator is evaluator_mod._Evaluator
-    for name in ("FUNCTIONS", "MAX_WORK", "MAX_EXACT_BITS", "_shape_text", "_as_sympy",
-                 "_to_array", "parse_checked", "MAX_DEPTH", "MAX_TREE", "SECTION_FIELD",
-                 "parse_lagrangian", "parse_section", "_final_checks"):
-        assert hasattr(expr_mod, name), name
 
 
 # ---- refused -------------------------------------------------------------------------------
