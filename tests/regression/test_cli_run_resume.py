@@ -28,7 +28,7 @@ SCHEME = ("--tableau", "stormer-verlet", "--tau", "cay", "--rkmk", "truncated")
 def _argv(out, cache, *extra):
     return [sys.executable, "-m", "hpgen", "run", str(EXAMPLES / "heavy_top.yaml"), "--out",
             str(out), "--cache-dir", str(cache), "--steps", str(STEPS), "--chunk", str(CHUNK),
-            *SCHEME, *extra]
+            "--no-plot", *SCHEME, *extra]
 
 
 def _run(*argv):
