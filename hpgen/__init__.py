@@ -5,11 +5,12 @@ jinja2) is imported only when ``hpgen.compile`` runs; ``hpgen.runtime`` needs nu
 """
 from __future__ import annotations
 
-from .errors import BuildError, ConvergenceError, DomainError, HpgenError, ModelError
+from .errors import (ArgumentError, BuildError, ConvergenceError, DomainError, HpgenError,
+                     ModelError)
 
 __version__ = "0.1.0"
-__all__ = ["compile", "build", "load", "sweep", "HpgenError", "ModelError", "BuildError",
-           "ConvergenceError", "DomainError", "__version__"]
+__all__ = ["compile", "build", "load", "sweep", "HpgenError", "ModelError", "ArgumentError",
+           "BuildError", "ConvergenceError", "DomainError", "__version__"]
 
 
 def compile(model, **options):

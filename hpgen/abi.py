@@ -26,7 +26,8 @@ from dataclasses import dataclass
 #: version of the exported C API of kernels.c (hpgen_dims()[0]); checked when it is loaded
 ABI_VERSION = 3
 #: version of meta.json's layout; the loader refuses any other (recompile the module)
-META_FORMAT = 2
+#: (3: "group", the group's name, e.g. "SO3" or "[SO3, R3]")
+META_FORMAT = 3
 
 
 # ---- kernels -----------------------------------------------------------------------------
@@ -146,8 +147,12 @@ OK, NO_CONVERGENCE, NONFINITE, DOMAIN, RECORD, INVALID = 0, 1, 2, 3, 4, -1
 STATUS = (
     (OK, "OK", "ok"),
     (NO_CONVERGENCE, "NO_CONVERGENCE", "Newton did not converge"),
-    (NONFINITE, "NONFINITE", "a non-finite value (or a singular Jacobian) appeared"),
-    (DOMAIN, "DOMAIN", "the chart map tau left its domain (margin(z, h) <= 0)"),
+    (NONFINITE, "NONFINITE", "Newton diverged: a non-finite value (or a singular Jacobian) "
+     "appeared"),
+    # a start (the first step's) or a converged solution outside the chart; a Newton that
+    # fails is NO_CONVERGENCE or NONFINITE wherever its iterates went
+    (DOMAIN, "DOMAIN", "the converged solution left the chart map tau's domain "
+     "(margin(z, h) <= 0)"),
     (RECORD, "RECORD", "a record row is not finite (or its velocity xi did not converge)"),
     (INVALID, "INVALID", "invalid argument"),
 )

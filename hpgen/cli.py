@@ -1,10 +1,10 @@
 """hpgen: compile, run, sweep, check and benchmark variational integrators.
 
-Exit status: 0 success; 2 bad input (ModelError; usage errors); 1 any other hpgen failure
-(BuildError; a failed step of ``hpgen run``: ConvergenceError, DomainError, RecordError, the
-samples before it saved with partial=True); 3 a failed ``hpgen check``; 130 / 143 ``hpgen
-run`` interrupted by SIGINT / SIGTERM (the completed chunks saved with partial=True and kept
-for ``--resume``). Errors are one line on stderr, never a traceback.
+Exit status: 0 success; 2 bad input (ModelError, ArgumentError; usage errors); 1 any other
+hpgen failure (BuildError; a failed step of ``hpgen run``: ConvergenceError, DomainError,
+RecordError, the samples before it saved with partial=True); 3 a failed ``hpgen check``; 130 /
+143 ``hpgen run`` interrupted by SIGINT / SIGTERM (the completed chunks saved with partial=True
+and kept for ``--resume``). Errors are one line on stderr, never a traceback.
 """
 from __future__ import annotations
 
@@ -16,7 +16,7 @@ import time
 from pathlib import Path
 
 from . import __version__
-from .errors import ConvergenceError, HpgenError, ModelError
+from .errors import ArgumentError, ConvergenceError, HpgenError, ModelError
 
 
 def _add_options(p):
@@ -357,7 +357,7 @@ def main(argv=None) -> int:
             return cmd_sweep(args, _options)
         return {"compile": cmd_compile, "run": cmd_run, "list": cmd_list,
                 "check": cmd_check, "plot": cmd_plot}[args.command](args)
-    except ModelError as e:
+    except (ModelError, ArgumentError) as e:
         print(f"hpgen: error: {e}", file=sys.stderr)
         return 2
     except HpgenError as e:

@@ -2,9 +2,11 @@
 
 HpgenError
  +-- ModelError        bad model file, option or initial state (CLI exit status 2)
+ +-- ArgumentError     bad argument of the Python API (shape, h, steps, ...; a ValueError)
  +-- BuildError        the C compiler is missing or failed (the Python backend is the fallback)
  +-- ConvergenceError  Newton did not converge, or a step produced non-finite values
-      +-- DomainError  the chart map tau was evaluated outside its domain (reduce h)
+      +-- DomainError  a start or a converged solution outside the chart map tau's domain
+                       (reduce h; a Newton divergence is a plain ConvergenceError)
 
 Every message is one line and says what to do.
 """
@@ -38,6 +40,16 @@ class ModelError(HpgenError, ValueError):
         """A copy with missing location parts filled in."""
         return ModelError(self.message, file=self.file or file, field=self.field or field,
                           line=self.line or line)
+
+
+class ArgumentError(HpgenError, ValueError):
+    """A bad argument of the Python API (an array's shape or entries, h, steps, ...): one line,
+    ``"<field>: <message>"``, field the argument's name. A ValueError, so ``except
+    ValueError`` catches it; ModelError is for model files and compile options."""
+
+    def __init__(self, message: str, *, field: str | None = None):
+        self.field, self.message = field, message
+        super().__init__(((f"{field}: " if field else "") + message).replace("\n", " "))
 
 
 class BuildError(HpgenError):

@@ -19,6 +19,7 @@ Choices are listed in registration order, which is the order of CLI choices and 
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from .errors import ModelError
@@ -35,9 +36,12 @@ class Choice:
 class ChartMap(Choice):
     """A chart map tau: g -> G. ``groups``: the group families (``hpgen.groups.GROUP_NAMES``
     spelling) that implement it, None for every group (and so every product of groups);
-    ``domain``: where steps may evaluate it (where ``tau_margin`` > 0), in words."""
+    ``domain``: where steps may evaluate it (where ``tau_margin`` > 0), in words;
+    ``radius``: that domain as |omega| < radius, omega the rotation part of a chart argument
+    (the runtime's message for a start outside it)."""
     groups: tuple[str, ...] | None
     domain: str
+    radius: float = math.inf
 
     def on(self, family: str) -> bool:
         """Whether the group family ``family`` (e.g. "SO3", "R<n>") implements this chart."""
@@ -101,11 +105,11 @@ class Option:
 # ---- the registry: one entry per choice ------------------------------------------------------
 TAU = Option("tau", "chart map", (
     ChartMap("exp", "exponential map", None,
-             "|omega| < pi (margin (pi^2 - |omega|^2) / (2 pi))"),
+             "|omega| < pi (margin (pi^2 - |omega|^2) / (2 pi))", math.pi),
     ChartMap("cay", "Cayley map", None,
-             "|omega|^2 < 4, at most a quarter turn per evaluation"),
+             "|omega|^2 < 4, at most a quarter turn per evaluation", 2.0),
     ChartMap("skew", "inverse of g -> (g - g^T)/2", ("SO2", "SO3"),
-             "|omega|^2 < 1/2, the fold of the discrete Legendre map"),
+             "|omega|^2 < 1/2, the fold of the discrete Legendre map", math.sqrt(0.5)),
 ))
 RKMK = Option("rkmk", "RKMK constraint", (
     RkmkVariant("exact", "R = dtau^-1 Xi, keeps the tableau's order", None),

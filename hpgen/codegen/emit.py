@@ -195,7 +195,8 @@ def meta(step, info: dict) -> dict:
             "instructions": int(f.n_instructions())}
     return {"format": abi.META_FORMAT, "hpgen_version": __version__, "module": info["module"],
             "model": info["model_name"], "options": info["options"], "hash": info["hash"],
-            "backend": info["backend"], "n": step.n, "d": step.d, "nz": step.nz,
+            "backend": info["backend"], "group": step.group_name,
+            "n": step.n, "d": step.d, "nz": step.nz,
             "reduced": bool(step.reduced), "section": step.section,
             "legendre_quadratic": bool(step.legendre_quadratic),
             "record": [[name, int(off), [int(x) for x in shape]]

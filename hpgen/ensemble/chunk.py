@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import ConvergenceError, ModelError
+from ..errors import ArgumentError, ConvergenceError, ModelError
 from .members import Members
 
 STATE = ("g", "mu")
@@ -55,7 +55,7 @@ def run_chunk(integ, m: Members, start: int, steps: int, every: int, record,
         idx = np.flatnonzero(m.h == hv)
         try:
             runs = _batch(integ, m, idx, hv, steps, every, rows, threads)
-        except (ConvergenceError, ModelError):
+        except (ConvergenceError, ModelError, ArgumentError):
             runs = [_alone(integ, m, i, hv, steps, every, rows, start) for i in idx]
         for i, run in zip(idx, runs):
             _store(out, i, run, names, steps)
@@ -78,6 +78,9 @@ def _alone(integ, m, i, h, steps, every, rows, start):
         raise e.located(field=f"member {start + i}") if not e.field else ModelError(
             e.message, file=e.file, line=e.line, field=f"member {start + i}: {e.field}") \
             from None
+    except ArgumentError as e:        # the runtime's check of one member's start
+        raise ModelError(e.message, field=f"member {start + i}"
+                         + (f": {e.field}" if e.field else "")) from None
     except ConvergenceError as e:
         return e
 

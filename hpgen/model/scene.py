@@ -27,6 +27,7 @@ import re
 import numpy as np
 
 from ..errors import ModelError
+from ..runtime.initial import compose, rotation_from_angle, rotation_from_rotvec
 from .types import RecordExpr, Scene, SectionSpec
 
 SCENE_KEYS = ("h", "steps", "duration", "initial", "record", "every", "section")
@@ -59,20 +60,12 @@ def _rotation(doc, path, fgroup, spec):
             raise doc.error(path + ("rotvec",), f"{fgroup.name} takes angle: a, not rotvec")
         if "angle" not in spec:
             return np.eye(2)
-        a = doc.number(path + ("angle",), spec["angle"])
-        c, s = math.cos(a), math.sin(a)
-        return np.array([[c, -s], [s, c]])
+        return rotation_from_angle(doc.number(path + ("angle",), spec["angle"]))
     if "angle" in spec:
         raise doc.error(path + ("angle",), f"{fgroup.name} takes rotvec: [3 numbers], not angle")
     if "rotvec" not in spec:
         return np.eye(3)
-    w = np.array(doc.vector(path + ("rotvec",), spec["rotvec"], 3))
-    theta = math.hypot(*w)
-    if theta == 0.0:
-        return np.eye(3)
-    u = w / theta
-    K = np.array([[0, -u[2], u[1]], [u[2], 0, -u[0]], [-u[1], u[0], 0]])
-    return np.eye(3) + math.sin(theta) * K + (1 - math.cos(theta)) * (K @ K)
+    return rotation_from_rotvec(doc.vector(path + ("rotvec",), spec["rotvec"], 3))
 
 
 def _from_mapping(doc, path, fgroup, spec):
@@ -83,14 +76,12 @@ def _from_mapping(doc, path, fgroup, spec):
     if not allowed:
         raise doc.error(path, f"for {fgroup.name} expected identity or a matrix")
     doc.mapping(path, spec, allowed)
-    G = np.eye(fgroup.n)
-    if rot:
-        a, b = fgroup.rotation_block
-        G[a:b, a:b] = _rotation(doc, path, fgroup, spec)
+    R = _rotation(doc, path, fgroup, spec) if rot else None
+    x = None
     if tr and spec.get("position") is not None:
         a, b = fgroup.translation_block
-        G[a:b, fgroup.n - 1] = doc.vector(path + ("position",), spec["position"], b - a)
-    return G
+        x = doc.vector(path + ("position",), spec["position"], b - a)
+    return compose(fgroup.n, fgroup.rotation_block, fgroup.translation_block, R, x)
 
 
 def _factor_matrix(doc, path, fgroup, spec):

@@ -1,41 +1,63 @@
 """Argument checks and status-to-exception mapping shared by the Integrator API (one-line
-ModelError naming the argument; ConvergenceError / DomainError for a failed step)."""
+ArgumentError naming the argument; ConvergenceError / DomainError for a failed step)."""
 from __future__ import annotations
 
 import math
 import numbers
+import os
 
 import numpy as np
 
 from .. import abi
-from ..errors import ConvergenceError, DomainError, ModelError
+from ..errors import ArgumentError, ConvergenceError, DomainError
+
+#: the largest steps / every the C loops take (long long)
+STEPS_MAX = 2**63 - 1
+
+_START = "the Newton start lies outside the chart map tau's domain (margin(z, h) <= 0)"
 
 
-def _error(code, step, time, residual, iterations):
+def _error(code, step, time, residual, iterations, hint=""):
     """The exception of a failed step's status code (abi.STATUS): DomainError for DOMAIN,
-    else ConvergenceError, with the code's message."""
+    else ConvergenceError, with the code's message; DOMAIN after 0 iterations is the first
+    step's start (``hint``: what the chart needs, Integrator._domain_hint)."""
     cls = DomainError if code == abi.DOMAIN else ConvergenceError
-    return cls(abi.MESSAGES.get(code, f"step failed with status {code}"), step=int(step),
-               time=float(time), residual=float(residual), iterations=int(iterations))
+    msg = abi.MESSAGES.get(code, f"step failed with status {code}")
+    if code == abi.DOMAIN and int(iterations) == 0:
+        msg = _START + (f"; {hint}" if hint else "")
+    return cls(msg, step=int(step), time=float(time), residual=float(residual),
+               iterations=int(iterations))
 
 
 def _array(x, shape, field, what):
     try:
-        a = np.array(x, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ModelError(f"expected {what}, got {type(x).__name__}", field=field) from None
+        a = np.asarray(x)
+        if np.iscomplexobj(a):
+            raise ArgumentError(f"expected {what} of real numbers, got complex entries",
+                                field=field)
+        a = np.array(a, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        if isinstance(e, ArgumentError):
+            raise
+        raise ArgumentError(f"expected {what}, got {type(x).__name__}", field=field) from None
     if a.shape != shape:
-        raise ModelError(f"expected {what} of shape {shape}, got shape {a.shape}", field=field)
+        if shape == (1,) and a.shape == ():         # a scalar for a 1-dimensional algebra
+            return a.reshape(1)
+        raise ArgumentError(f"expected {what} of shape {shape}, got shape {a.shape}",
+                            field=field)
     if not np.isfinite(a).all():
-        raise ModelError(f"{what} has non-finite entries", field=field)
+        raise ArgumentError(f"{what} has non-finite entries", field=field)
     return a
 
 
-def _int(x, field, low):
-    if type(x) is int and x >= low:        # the common case, without the ABC checks
+def _int(x, field, low, high=STEPS_MAX):
+    if type(x) is int and low <= x <= high:        # the common case, without the ABC checks
         return x
     if isinstance(x, bool) or not isinstance(x, numbers.Integral) or x < low:
-        raise ModelError(f"expected an integer >= {low}, got {x!r}", field=field)
+        raise ArgumentError(f"expected an integer >= {low}, got {x!r}", field=field)
+    if x > high:
+        raise ArgumentError(f"{x} is more than a run can count (at most {high}); run long "
+                            "runs in pieces with stream / stream_record", field=field)
     return int(x)
 
 
@@ -44,5 +66,36 @@ def _positive(x, field):
         return x
     if isinstance(x, bool) or not isinstance(x, numbers.Real) or not (
             math.isfinite(x) and x > 0):
-        raise ModelError(f"expected a finite number > 0, got {x!r}", field=field)
+        raise ArgumentError(f"expected a finite number > 0, got {x!r}", field=field)
     return float(x)
+
+
+def _step_size(x, field="h"):
+    """h: a finite non-zero number (h < 0 integrates backwards in time)."""
+    if type(x) is float and 0.0 < abs(x) < math.inf:     # the common case
+        return x
+    if isinstance(x, bool) or not isinstance(x, numbers.Real) or not (
+            math.isfinite(x) and x != 0):
+        raise ArgumentError(f"expected a finite non-zero number (h < 0 runs backwards in "
+                            f"time), got {x!r}", field=field)
+    return float(x)
+
+
+def _memory_bytes():
+    """This machine's physical memory in bytes, None where the OS does not say."""
+    try:
+        return os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    except (AttributeError, ValueError, OSError):
+        return None
+
+
+def _fits(records, doubles, what):
+    """Refuse a run whose ``records`` rows of ``doubles`` float64 each would not fit in this
+    machine's memory (before allocating them)."""
+    need = records * doubles * 8
+    have = _memory_bytes()
+    if have is not None and need > have:
+        raise ArgumentError(f"{what} would keep {records} records ({need:.3g} bytes), more "
+                            f"than this machine's memory ({have:.3g} bytes); record fewer "
+                            "(every=...) or run long runs with stream / stream_record "
+                            "(hpgen run --chunk)", field="steps")

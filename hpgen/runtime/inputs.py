@@ -5,7 +5,7 @@ hv = [h, t_k, u_k, params] for step k (hpgen.abi.step_vector_size; meta.json "op
 Conventions: t_k = t0 + k h (computed from k, never accumulated); u is (m,) (held for every
 step) or (steps, m) (row k held over step k); params is a dict {runtime parameter name: value}
 of overrides of the model file's defaults (a number, or an array of the parameter's shape).
-Every problem is a one-line ModelError (a ValueError) naming the argument, raised before any
+Every problem is a one-line ArgumentError (a ValueError) naming the argument, raised before any
 step runs. numpy and the standard library only.
 """
 from __future__ import annotations
@@ -15,7 +15,7 @@ import numbers
 
 import numpy as np
 
-from ..errors import ModelError
+from ..errors import ArgumentError
 from .args import _array
 
 
@@ -41,7 +41,7 @@ class StepInputs:
 
 def check_t0(t0) -> float:
     if isinstance(t0, bool) or not isinstance(t0, numbers.Real) or not math.isfinite(t0):
-        raise ModelError(f"expected a finite start time, got {t0!r}", field="t0")
+        raise ArgumentError(f"expected a finite start time, got {t0!r}", field="t0")
     return float(t0)
 
 
@@ -51,16 +51,16 @@ def check_params(open_meta, params) -> list:
     if params is None or (isinstance(params, dict) and not params):
         return [] if open_meta is None else [float(v) for v in open_meta["defaults"]]
     if not isinstance(params, dict):
-        raise ModelError(f"expected a dict {{runtime parameter name: value}}, got "
+        raise ArgumentError(f"expected a dict {{runtime parameter name: value}}, got "
                          f"{type(params).__name__}", field="params")
     names = [name for name, _ in spec]
     if not names:
-        raise ModelError("this model has no runtime parameters (declare them in the model "
+        raise ArgumentError("this model has no runtime parameters (declare them in the model "
                          "file's runtime_parameters to change them without recompiling)",
                          field="params")
     for key in params:
         if key not in names:
-            raise ModelError(f"unknown runtime parameter {key!r}; expected one of "
+            raise ArgumentError(f"unknown runtime parameter {key!r}; expected one of "
                              f"{', '.join(names)}", field="params")
     flat, off = [float(v) for v in open_meta["defaults"]], 0
     for name, shape in spec:
@@ -78,12 +78,12 @@ def check_u(open_meta, u, steps: int) -> list:
     m = 0 if open_meta is None else len(open_meta["inputs"])
     if m == 0:
         if u is not None:
-            raise ModelError("this model has no control inputs (declare them in the model "
+            raise ArgumentError("this model has no control inputs (declare them in the model "
                              "file's inputs)", field="u")
         return [[]]
     names = ", ".join(open_meta["inputs"])
     if u is None:
-        raise ModelError(f"u is required: the model has {m} control input(s) ({names}); pass "
+        raise ArgumentError(f"u is required: the model has {m} control input(s) ({names}); pass "
                          f"an array of shape ({m},) or (steps, {m})", field="u")
     a = np.asarray(u, dtype=object)
     shape = (m,) if a.ndim <= 1 else (steps, m)

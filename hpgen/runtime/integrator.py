@@ -1,7 +1,9 @@
 """Integrator: the public API of a loaded module, the same for the C and Python backends.
 
 Conventions: g is an (n, n) group element (array-like), momenta p/mu and velocities xi are
-length-d vectors (body frame), h > 0 is the step in the model's time unit. Internally and
+length-d vectors (body frame; a scalar for d = 1), h != 0 is the step in the model's time unit
+(h < 0 runs backwards: the schemes are defined for either sign, and a symmetric tableau with
+exact RKMK steps back exactly, step(g1, p1, -h) = (g, p) to round-off). Internally and
 across the C boundary matrices are flat column-major (``g.ravel(order="F")``).
 Newton settings: every stepping method takes ``newton=NewtonOptions(...)`` (None: the
 defaults, tol = 1e-14, maxit = 50 (hpgen.abi), a predictor extrapolating the last solutions,
@@ -19,9 +21,11 @@ import os
 import numpy as np
 
 from .. import abi
-from ..errors import ConvergenceError, ModelError
+from ..errors import ArgumentError, ConvergenceError, ModelError
+from ..schemes import TAU
 from . import newton as _newton
-from .args import _array, _error, _int, _positive
+from .args import _array, _error, _fits, _int, _positive, _step_size
+from .initial import GroupElements
 from .inputs import batch_inputs, check_params, check_t0, step_inputs
 from .newton import NewtonOptions
 from .progress import bar as progress_bar
@@ -32,6 +36,7 @@ from .trajectory import Trajectory
 DEFECT_MAX = 1e-10
 COND_MAX = 1e12
 SIMPLIFIED_RATIO = 4.0
+
 class Integrator(SectionsMixin, RecordsMixin):
     """A loaded generated module. Attributes: meta (dict from meta.json), backend ("c" or
     "python"), n, d, nz, module_dir (the directory it was loaded from, or None)."""
@@ -46,6 +51,15 @@ class Integrator(SectionsMixin, RecordsMixin):
 
     def __repr__(self):
         return f"<hpgen Integrator {self.meta['module']} backend={self.backend}>"
+
+    @property
+    def group(self) -> GroupElements:
+        """Constructors of initial group elements, as the model file's ``initial.g``:
+        ``group.from_rotvec(rotvec, position=None)`` (SO3, SE3),
+        ``group.from_angle_position(angle, position=None)`` (SO2, SE2),
+        ``group.from_position(position)`` (R<k>, SE2, SE3), ``group.identity()`` and
+        ``group.product(*factor_elements)``; see hpgen.runtime.initial."""
+        return GroupElements(self.meta["group"])
 
     # ---- argument helpers -----------------------------------------------------------
     def _g(self, g, field="g"):
@@ -183,13 +197,13 @@ class Integrator(SectionsMixin, RecordsMixin):
 
     def _options(self, newton: NewtonOptions | None, full: bool = False) -> NewtonOptions:
         """The checked Newton settings of a call, simplified resolved to a bool (None: full
-        Newton when ``full``, else simplified_default). ModelError naming the field."""
+        Newton when ``full``, else simplified_default). ArgumentError naming the field."""
         if newton is None:
             newton = NewtonOptions()
         elif not isinstance(newton, NewtonOptions):
-            raise ModelError("expected hpgen.runtime.NewtonOptions(tol=, maxit=, simplified=, "
-                             f"predictor=) or None, got {type(newton).__name__}",
-                             field="newton")
+            raise ArgumentError("expected hpgen.runtime.NewtonOptions(tol=, maxit=, "
+                                f"simplified=, predictor=) or None, got "
+                                f"{type(newton).__name__}", field="newton")
         simplified = newton.simplified
         if simplified is None:
             simplified = False if full else self.simplified_default
@@ -208,10 +222,10 @@ class Integrator(SectionsMixin, RecordsMixin):
         p : array_like, shape (d,)
             Node momentum p_k (body frame).
         h : float
-            Step size, > 0, in the model's time unit.
+            Step size, != 0, in the model's time unit (h < 0 steps backwards).
         z : array_like, shape (nz,), optional
             Newton start (``integ.nz`` unknowns); default: the guess kernel at the velocity
-            of (g, p).
+            of (g, p), by continuation in h when that start fails (closed models).
         newton : hpgen.runtime.newton.NewtonOptions or None, optional
             Newton settings (tol 1e-14, maxit 50); here full Newton unless
             ``newton.simplified`` is True (a cold start).
@@ -234,18 +248,29 @@ class Integrator(SectionsMixin, RecordsMixin):
             Newton failed, or the solution left the chart's domain (step 0, t = 0).
         """
         gf, p = self._g(g), self._v(p, "p")
-        h = _positive(h, "h")
+        h = _step_size(h)
         inputs = step_inputs(self.open, 1, u, params, t)
         hv = np.array([h] if inputs is None else inputs.hv(h, 0))
+        xi = None
         opts = self._options(newton, full=True)
+        xi = None
         if z is None:
-            lv = () if inputs is None else self._lv(inputs.t0, inputs.params)
-            z = self._b.call("guess", self._velocity(gf, p, lv=lv), gf, p, hv)[0]
+            if inputs is None:
+                xi = self._velocity(gf, p)
+                z = self._start(gf, p, xi, h, opts)
+            else:
+                lv = () if inputs is None else self._lv(inputs.t0, inputs.params)
+                z = self._b.call("guess", self._velocity(gf, p, lv=lv), gf, p, hv)[0]
         else:
             z = _array(z, (self.nz,), "z", "a vector of length nz")
         code, g1, p1, _, it, r = self._b.step(gf, p, hv, z, opts)
+        z1 = None if xi is None else self._restart({"code": code, "step": 0}, gf, p, h, z,
+                                                  opts)
+        if z1 is not None:
+            code, g1, p1, _, it, r = self._b.step(gf, p, hv, z1, opts)
         if code != abi.OK:
-            raise _error(code, 0, 0.0, r, it)
+            hint = self._domain_hint(gf, p, xi, h) if xi is not None else ""
+            raise _error(code, 0, 0.0, r, it, hint)
         return g1.reshape(self.n, self.n, order="F"), p1
 
     def linearize(self, traj, *, newton: NewtonOptions | None = None):
@@ -270,13 +295,13 @@ class Integrator(SectionsMixin, RecordsMixin):
         open module's extra argument of l at the start (_lv)."""
         g0 = _array(g0, (self.n, self.n), "g0", "an n x n matrix")
         if (xi0 is None) == (mu0 is None):
-            raise ModelError("give exactly one of xi0 (velocity) and mu0 (momentum)",
-                             field="xi0" if xi0 is not None else "mu0")
+            raise ArgumentError("give exactly one of xi0 (velocity) and mu0 (momentum)",
+                                field="xi0" if xi0 is not None else "mu0")
         gf = g0.ravel(order="F")      # g0 checked: the kernels take it as it is
         e = float(self._b.call("defect", gf)[0][0])
         if not e <= DEFECT_MAX:
-            raise ModelError(f"g0 is not on the group (defect {e:.3g} > {DEFECT_MAX:g})",
-                             field="initial g")
+            raise ArgumentError(f"g0 is not on the group (defect {e:.3g} > {DEFECT_MAX:g})",
+                                field="initial g")
         if xi0 is not None:
             xi0 = self._v(xi0, "xi0")
             mu0 = self._b.call("legendre", gf, xi0, *lv)[0]
@@ -297,8 +322,11 @@ class Integrator(SectionsMixin, RecordsMixin):
         g = np.ascontiguousarray(g_rec.reshape(K, n, n).transpose(0, 2, 1))
         err = None
         if st["code"] != abi.OK:
+            hint = ""
+            if st["code"] == abi.DOMAIN and st["iterations"] == 0 and t0 == 0.0:
+                hint = self._domain_hint(g_rec[0], p_rec[0], None, h)
             err = _error(st["code"], st["step"], st["step"] * h, st["residual"],
-                         st["iterations"])
+                         st["iterations"], hint)
         # t0 + (k every) h; arange(0, K every, every) is arange(K) * every, and adding
         # t0 = 0.0 to these non-negative numbers changes no bit
         t = np.arange(0, K * every, every) * h
@@ -310,16 +338,117 @@ class Integrator(SectionsMixin, RecordsMixin):
             err.partial = traj
         return traj
 
+    def _inside(self, z, h) -> bool:
+        return bool(self._b.call("margin", z, np.array([h]))[0][0] > 0.0)
+
+    def _largest_h(self, gf, mu0, xi0, h) -> float:
+        """The largest |h'| <= |h| (sign of h, by bisection to 2^-40 relative) whose guess
+        start lies inside the chart, 0.0 if none does."""
+        call, lo, hi = self._b.call, 0.0, h
+        for _ in range(40):
+            mid = 0.5 * (lo + hi)
+            if self._inside(call("guess", xi0, gf, mu0, np.array([mid]))[0], mid):
+                lo = mid
+            else:
+                hi = mid
+        return lo
+
+    def _continued(self, gf, mu0, xi0, h, opts=None):
+        """(t, z): the first step solved at h' = t h by continuation: from the largest h'
+        whose guess start lies inside the chart (times 0.9, halved until its step solves
+        from the guess), h' grows towards h, each solve (full Newton, the run's tol and
+        maxit) from the solution before; t = 1.0 when it reached h, 0.0 when not even the
+        first h' solved."""
+        call = self._b.call
+        t = self._largest_h(gf, mu0, xi0, h) / h * 0.9
+        if not t > 0.0:
+            return 0.0, None
+        base = opts or NewtonOptions()      # the run's tol and maxit, full Newton
+        opts = NewtonOptions(base.tol, base.maxit, False, False)
+        for _ in range(20):          # a first h' whose step solves from its guess
+            hv = np.array([t * h])
+            code, _, _, z, _, _ = self._b.step(gf, mu0, hv, call("guess", xi0, gf, mu0, hv)[0],
+                                               opts)
+            if code == abi.OK:
+                break
+            t *= 0.5
+        else:
+            return 0.0, None
+        dt = t
+        for _ in range(200):
+            if t == 1.0 or dt < 1e-6:
+                break
+            tn = min(1.0, t + dt)
+            c, _, _, zn, _, _ = self._b.step(gf, mu0, np.array([tn * h]), z, opts)
+            if c == abi.OK:
+                t, z, dt = tn, zn, 1.5 * dt
+            else:
+                dt *= 0.5
+        return t, z
+
+    def _start(self, gf, mu0, xi0, h, opts=None):
+        """Newton start of the first step: the guess kernel's (built from the continuous
+        velocity xi0). When that start lies outside the chart although the step may exist
+        (the discrete |h xi| is smaller than the continuous one: Stormer-Verlet/Cayley at
+        h |xi0| = 2.2-3.3 has steps inside the chart), the step is solved by continuation in
+        h (_continued) and its solution at h is the start; when the continuation does not
+        reach h, the guess (the run then reports the start as a DomainError)."""
+        z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
+        if self._inside(z0, h):
+            return z0
+        t, z = self._continued(gf, mu0, xi0, h, opts)
+        return z if t == 1.0 else z0
+
+    def _restart(self, st, gf, mu0, h, z0, opts):
+        """The start of a second try when the run's first step failed from z0 (Newton
+        diverged, or converged outside the chart): the first step solved by continuation in
+        h (_continued), or None when that does not reach h or gives z0 again."""
+        if st["code"] in (abi.OK, abi.RECORD) or st["step"] != 0 or self.open:
+            return None
+        try:
+            xi0 = self._velocity(gf, mu0)
+        except ConvergenceError:
+            return None
+        t, z = self._continued(gf, mu0, xi0, h, opts)
+        return z if t == 1.0 and not np.array_equal(z, z0) else None
+
+    def _domain_hint(self, gf, mu0, xi0, h) -> str:
+        """What the chart needs when the first step's start lies outside it: tau's limit on
+        the rotation part omega of h xi, |omega| at the start, and the largest |h| for which
+        the first step was solved inside the chart (by continuation)."""
+        tau = self.meta["options"]["tau"]
+        chart = TAU.get(tau)
+        limit = f"{tau} needs {chart.domain}"
+        if self.open:          # the kernels' step vector carries t, u, params: not searched
+            return limit
+        try:
+            if xi0 is None:
+                xi0 = self._velocity(np.asarray(gf, dtype=np.float64).ravel(),
+                                     np.asarray(mu0, dtype=np.float64).ravel())
+            hs = abs(self._largest_h(gf, mu0, xi0, h))
+            t, _ = self._continued(gf, mu0, xi0, h)
+        except ConvergenceError:
+            return limit
+        if not hs > 0.0:
+            return limit
+        size = (f"the start has |omega| = {chart.radius * abs(h) / hs:.3g} (|xi| = "
+                f"{chart.radius / hs:.3g})" if chart.radius < math.inf
+                else "the start is outside")
+        solved = abs(t * h)
+        take = (f"the first step solves inside the chart up to |h| = {solved:.3g}: take |h| < "
+                f"{solved:.3g}" if solved > 0.0 else f"take |h| < {hs:.3g}")
+        return f"{limit} (omega: the rotation part of h xi): {size}; {take}"
+
     def _prepare(self, g0, h, steps, xi0, mu0, every, newton, u=None, params=None, t0=0.0):
         """The checked arguments of a run and its start: (h, steps, every, options, g0 flat,
-        mu0, Newton start z0 from the guess kernel, StepInputs or None (closed))."""
-        h = _positive(h, "h")
+        mu0, Newton start z0 (_start), StepInputs or None (closed))."""
+        h = _step_size(h)
         steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
         opts = self._options(newton)
         inputs = step_inputs(self.open, steps, u, params, t0)
         if inputs is None:
             gf, mu0, xi0 = self._initial(g0, xi0, mu0)
-            z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
+            z0 = self._start(gf, mu0, xi0, h, opts)
         else:
             gf, mu0, xi0 = self._initial(g0, xi0, mu0, self._lv(inputs.t0, inputs.params))
             z0 = self._b.call("guess", xi0, gf, mu0, np.array(inputs.hv(h, 0)))[0]
@@ -331,16 +460,15 @@ class Integrator(SectionsMixin, RecordsMixin):
         the error): (h, steps, every, options, threads, g0s flat, mu0s, Newton starts z0s,
         per-run StepInputs or None (closed))."""
         if self.backend != "c":
-            raise ModelError(f"{what} needs the C backend", field="backend")
-        h = _positive(h, "h")
+            raise ArgumentError(f"{what} needs the C backend", field="backend")
+        h = _step_size(h)
         steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
         opts = self._options(newton)
         init = xi0 if xi0 is not None else mu0
         B = len(init) if hasattr(init, "__len__") else None
         inputs = batch_inputs(self.open, B or 0, steps, u, params, t0) if B else None
         if inputs is None:
-            hv = np.array([h])
-            starts = [(gf, m, self._b.call("guess", x, gf, m, hv)[0])
+            starts = [(gf, m, self._start(gf, m, x, h, opts))
                       for gf, m, x in self._batch_starts(g0, xi0, mu0)]
         else:
             lvs = [self._lv(i.t0, i.params) for i in inputs]
@@ -362,7 +490,7 @@ class Integrator(SectionsMixin, RecordsMixin):
         g0 : array_like, shape (n, n)
             Initial group element, on the group to 1e-10 (n = ``integ.n``).
         h : float
-            Step size, > 0, in the model's time unit.
+            Step size, != 0, in the model's time unit (h < 0 runs backwards).
         steps : int
             Number of steps, >= 0.
         xi0 : array_like, shape (d,), optional
@@ -394,15 +522,19 @@ class Integrator(SectionsMixin, RecordsMixin):
 
         Raises
         ------
-        ModelError
+        ArgumentError
             A bad argument (shape, value, g0 off the group, both or neither of xi0/mu0).
         ConvergenceError, DomainError
             A step failed; ``.partial`` is the Trajectory so far (partial=True).
         """
         h, steps, every, opts, gf, mu0, z0, inputs = self._prepare(
             g0, h, steps, xi0, mu0, every, newton, u, params, t0)
+        _fits(steps // every + 1, self.n * self.n + self.d, "simulate")
         if inputs is None:
             done, g_rec, p_rec, st = self._b.simulate(gf, mu0, h, z0, steps, every, opts)
+            z1 = self._restart(st, gf, mu0, h, z0, opts)
+            if z1 is not None:
+                done, g_rec, p_rec, st = self._b.simulate(gf, mu0, h, z1, steps, every, opts)
         else:
             done, g_rec, p_rec, st = self._b.simulate(gf, mu0, h, z0, steps, every, opts,
                                                       inputs)
@@ -460,6 +592,11 @@ class Integrator(SectionsMixin, RecordsMixin):
         while first or k < steps:
             todo = min(chunk, steps - k)
             done, g_rec, p_rec, st = self._b.advance(run, h, todo, every, opts)
+            z1 = (self._restart(st, gf, mu0, h, z0, opts) if first and inputs is None
+                  else None)
+            if z1 is not None:
+                run = self._b.start(gf, mu0, z1)
+                done, g_rec, p_rec, st = self._b.advance(run, h, todo, every, opts)
             if first:
                 g_rec = np.concatenate([gf.reshape(1, -1), g_rec])
                 p_rec = np.concatenate([mu0.reshape(1, -1), p_rec])
@@ -479,13 +616,20 @@ class Integrator(SectionsMixin, RecordsMixin):
         try:
             B = len(init)
         except TypeError:
-            raise ModelError("expected a (B, d) array of initial states",
-                             field="xi0" if xi0 is not None else "mu0") from None
-        G0 = np.asarray(g0, dtype=np.float64)
-        G0 = np.broadcast_to(G0, (B, self.n, self.n)) if G0.ndim == 2 else G0
+            raise ArgumentError("expected a (B, d) array of initial states",
+                                field="xi0" if xi0 is not None else "mu0") from None
+        try:
+            G0 = np.asarray(g0)
+        except (TypeError, ValueError):
+            raise ArgumentError("expected an (n, n) or (B, n, n) array", field="g0") from None
+        if np.iscomplexobj(G0):
+            raise ArgumentError("expected real numbers, got complex entries", field="g0")
+        G0 = G0.astype(np.float64)
+        if G0.shape == (self.n, self.n):
+            G0 = np.broadcast_to(G0, (B, self.n, self.n))
         if G0.shape != (B, self.n, self.n):
-            raise ModelError(f"expected g0 of shape ({self.n}, {self.n}) or ({B}, {self.n}, "
-                             f"{self.n}), got {G0.shape}", field="g0")
+            raise ArgumentError(f"expected g0 of shape ({self.n}, {self.n}) or ({B}, {self.n}, "
+                                f"{self.n}), got {G0.shape}", field="g0")
         return [self._initial(G0[b], None if xi0 is None else xi0[b],
                               None if mu0 is None else mu0[b], () if lvs is None else lvs[b])
                 for b in range(B)]
@@ -539,6 +683,7 @@ class Integrator(SectionsMixin, RecordsMixin):
         """
         h, steps, every, opts, threads, gs, ms, z0s, inputs = self._prepare_batch(
             g0, h, steps, xi0, mu0, every, threads, newton, "simulate_batch", u, params, t0)
+        _fits(len(gs) * (steps // every + 1), self.n * self.n + self.d, "simulate_batch")
         with progress_bar(len(gs), "simulate_batch", "member", progress) as bar:
             done, g_rec, p_rec, sts = self._b.simulate_batch(gs, ms, h, z0s, steps, every,
                                                              opts, threads, inputs, bar)

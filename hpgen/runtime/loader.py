@@ -2,11 +2,11 @@
 
 meta.json (format hpgen.abi.META_FORMAT; any other is refused: recompile the module) holds:
 format, hpgen_version, module, model, options {tableau, tau, rkmk}, hash, backend ("c" |
-"python", the default), n, d, nz, reduced, section, legendre_quadratic, record [[name,
-offset, shape], ...] (hpgen.abi.record_width), step_uses_g, record_uses_g, record_uses_xi,
-unknowns [[label, start, stop], ...], kernels {name: {"inputs": [[name, size], ...],
-"outputs": ..., "instructions": int}} (hpgen.abi.KERNELS) and c_work {name: {sz_arg, sz_res,
-sz_iw, sz_w}}.
+"python", the default), group (e.g. "SO3", "[SO3, R3]"), n, d, nz, reduced, section,
+legendre_quadratic, record [[name, offset, shape], ...] (hpgen.abi.record_width), step_uses_g,
+record_uses_g, record_uses_xi, unknowns [[label, start, stop], ...], kernels {name: {"inputs":
+[[name, size], ...], "outputs": ..., "instructions": int}} (hpgen.abi.KERNELS) and c_work
+{name: {sz_arg, sz_res, sz_iw, sz_w}}.
 """
 from __future__ import annotations
 
@@ -49,7 +49,7 @@ def read_meta(module_dir) -> dict:
     for key in ("n", "d", "nz"):
         if not isinstance(meta.get(key), int) or meta[key] < 1:
             raise bad(key, "expected a positive integer")
-    for key in ("module", "hash", "backend"):
+    for key in ("module", "hash", "backend", "group"):
         if not isinstance(meta.get(key), str):
             raise bad(key, "expected a string")
     if not re.fullmatch(r"[0-9a-f]{16,128}", meta["hash"]):

@@ -86,9 +86,16 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
     code, g1, p1, zs, it, r, jacs = step_lists(kern, run.g, run.p, hv, zs,
                                                full if first else opts, run.memory, first,
                                                with_g)
-    st["iterations"], st["residual"] = it, r
     st["total_iterations"] += it
     st["jacobians"] += jacs
+    if code != OK and opts.predictor and run.have_prev >= 1:
+        # the extrapolated start failed (Newton diverged, or reached a root outside the
+        # chart): retry from the plain warm start z_k before reporting anything
+        code, g1, p1, zs, it, r, jacs = step_lists(kern, run.g, run.p, hv, run.z, opts,
+                                                   run.memory, False, with_g)
+        st["total_iterations"] += it
+        st["jacobians"] += jacs
+    st["iterations"], st["residual"] = it, r
     if code != OK:
         st.update(code=code, step=run.k)
         return code

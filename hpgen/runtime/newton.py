@@ -15,10 +15,12 @@ z <- z - J^{-1} F, inf-norms, theta = ||dz_k|| / ||dz_{k-1}||.
   module has that kernel (else ``residual`` then ``jacobian``), the others ``residual`` only.
 Non-finite F, J or z, or an exactly singular J, give code NONFINITE. A first step whose start
 has margin(z, h) <= 0 is DOMAIN at once (h too large for the chart). After convergence
-margin(z, h) > 0 else DOMAIN; a failed Newton whose last iterate lies outside tau's domain
-(finite margin <= 0) is reported as DOMAIN too. Steps after the first start from the previous
-solution z_k, or with options.predictor from the extrapolation of the last solutions:
-2 z_k - z_{k-1} after one step, 3 (z_k - z_{k-1}) + z_{k-2} after two or more.
+margin(z, h) > 0 else DOMAIN; a failed Newton is NO_CONVERGENCE or NONFINITE wherever its
+iterates went (a divergence is not a domain violation). Steps after the first start from the
+previous solution z_k, or with options.predictor from the extrapolation of the last
+solutions: 2 z_k - z_{k-1} after one step, 3 (z_k - z_{k-1}) + z_{k-2} after two or more; a
+predicted start that fails (Newton diverged, or converged outside the chart) is retried from
+z_k before the failure is reported (hpgen.runtime.loop).
 
 The loop runs on lists of Python floats with the generated module's raw kernels
 (``kernels.py`` RAW: lists in, lists out): no numpy array is made per iteration. The linear
@@ -298,12 +300,13 @@ def step_lists(kern: Kernels, g, p, hv, z, opts: NewtonOptions, memory: NewtonMe
     if check_start and margin(z, hv)[0][0] <= 0.0:
         return DOMAIN, None, None, z, 0, _NAN, 0
     code, z, it, r, jacs = solve(kern, z, g, p, hv, opts, memory)
-    m = margin(z, hv)[0][0]
+    # a Newton failure is reported as such (wherever its last iterate went): DOMAIN is a
+    # converged solution outside tau's domain only
     if code != OK:
         memory.lu = None
-        # a failure at an iterate outside tau's domain is reported as a domain error
-        return (DOMAIN if m <= 0.0 else code), None, None, z, it, r, jacs
-    if not m > 0.0:
+        return code, None, None, z, it, r, jacs
+    if not margin(z, hv)[0][0] > 0.0:
+        memory.lu = None
         return DOMAIN, None, None, z, it, r, jacs
     if not with_g:
         p1 = kern.update_p(z, g, p, hv)[0]

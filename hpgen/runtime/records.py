@@ -19,7 +19,7 @@ import numpy as np
 from .. import abi
 from ..errors import RecordError
 from . import loop
-from .args import _error, _int
+from .args import _error, _fits, _int
 from .newton import NewtonOptions
 from .progress import bar as progress_bar
 from .trajectory import npz_path, run_metadata, write_npz
@@ -88,10 +88,11 @@ def _not_finite(row, layout) -> list:
             if not np.isfinite(row[off:off + int(np.prod(shape))]).all()]
 
 
-def make_records(integ, rows, st, h, every, first=0, t_start=0.0) -> Records:
+def make_records(integ, rows, st, h, every, first=0, t_start=0.0, start=None) -> Records:
     """Records of flat rows, the first of them record number ``first`` (t = t_start + j every
     h for record j, computed so: a chunk's t is bitwise the whole run's); error set
-    (partial) when st failed."""
+    (partial) when st failed (start: the run's (g0 flat, mu0), for what the chart needs
+    when the first start is outside it)."""
     layout = integ.meta["record"]
     err = None
     if st["code"] == abi.RECORD:
@@ -101,7 +102,11 @@ def make_records(integ, rows, st, h, every, first=0, t_start=0.0) -> Records:
                           "the record expressions are defined", step=int(st["step"]),
                           time=float(st["step"]) * h, names=bad)
     elif st["code"] != abi.OK:
-        err = _error(st["code"], st["step"], st["step"] * h, st["residual"], st["iterations"])
+        hint = ""
+        if st["code"] == abi.DOMAIN and st["iterations"] == 0 and start is not None:
+            hint = integ._domain_hint(*start, None, h)
+        err = _error(st["code"], st["step"], st["step"] * h, st["residual"], st["iterations"],
+                     hint)
     t = (first + np.arange(len(rows))) * every * h
     rec = Records(t=t_start + t if t_start else t,
                   arrays=split_rows(rows, layout, integ.n), h=h, every=every,
@@ -136,10 +141,15 @@ def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts, ru
     while first or k < steps:
         todo = min(chunk, steps - k)
         done, rows, st = backend.advance_record(run, h, todo, every, opts)
+        z1 = (integ._restart(st, gf, mu0, h, z0, opts)
+              if first and inputs is None and z0 is not None else None)
+        if z1 is not None:
+            run = backend.start(gf, mu0, z1)
+            done, rows, st = backend.advance_record(run, h, todo, every, opts)
         if first:
             rows = np.concatenate([row0.reshape(1, -1), rows])
         rec = make_records(integ, rows, st, h, every, k // every + (0 if first else 1),
-                           t_start)
+                           t_start, (gf, mu0) if first and inputs is None else None)
         if rec.error is not None:
             raise rec.error
         yield rec
@@ -209,6 +219,8 @@ class RecordsMixin:
             A step failed, or a recorded value is not finite (``RecordError`` names the
             entries); ``.partial`` holds the records up to the failure.
         """
+        _fits(_int(steps, "steps", 0) // _int(every, "every", 1) + 1, self._b.record_width or 1,
+              "record")
         chunks = list(self.stream_record(g0, h, steps, xi0, mu0, every, max(steps, 1),
                                          newton=newton, u=u, params=params, t0=t0))
         return chunks[0]
@@ -222,6 +234,7 @@ class RecordsMixin:
         self._closed_only("record_batch")
         h, steps, every, opts, threads, gs, ms, z0s, _ = self._prepare_batch(
             g0, h, steps, xi0, mu0, every, threads, newton, "record_batch")
+        _fits(len(gs) * (steps // every + 1), self._b.record_width or 1, "record_batch")
         with progress_bar(len(gs), "record_batch", "member", progress) as bar:
             rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps, every, opts,
                                                      threads, bar)

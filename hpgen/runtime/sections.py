@@ -10,7 +10,7 @@ import numpy as np
 
 from ..errors import ModelError
 from .. import abi
-from .args import _error, _int, _positive
+from .args import _error, _int, _step_size
 from .inputs import step_inputs
 from .newton import NewtonOptions
 from .trajectory import SectionCrossings
@@ -98,7 +98,7 @@ class SectionsMixin:
         """(h, steps, crossing cap or None, chunk, options), checked; the module must have a
         section."""
         self._need_section()
-        h = _positive(h, "h")
+        h = _step_size(h)
         steps = _int(steps, "steps", 0)
         cap_total = None if max_crossings is None else _int(max_crossings, "max_crossings", 1)
         return (h, steps, cap_total, _int(chunk, "chunk", 1),
@@ -113,7 +113,7 @@ class SectionsMixin:
         """One run of sections from a checked start; the error (if any) is set, not raised.
         inputs: an open module's StepInputs."""
         if inputs is None:
-            z0 = self._b.call("guess", xi0, gf, mu0, np.array([h]))[0]
+            z0 = self._start(gf, mu0, xi0, h, opts)
             run = self._b.start(gf, mu0, z0)
         else:
             z0 = self._b.call("guess", xi0, gf, mu0, np.array(inputs.hv(h, 0)))[0]
@@ -125,11 +125,20 @@ class SectionsMixin:
             if cap < 1:
                 break
             done, ks, ts, gs, ps, st = self._b.advance_sections(run, h, steps - k, cap, opts)
+            z1 = (self._restart(st, gf, mu0, h, z0, opts) if k == 0 and inputs is None
+                  else None)
+            if z1 is not None:
+                run = self._b.start(gf, mu0, z1)
+                done, ks, ts, gs, ps, st = self._b.advance_sections(run, h, steps - k, cap,
+                                                                    opts)
             parts.append((ks, ts, gs, ps))
             k, found, iters = k + done, found + len(ts), iters + int(st["total_iterations"])
             if st["code"] != abi.OK:
+                hint = ""
+                if st["code"] == abi.DOMAIN and st["iterations"] == 0:
+                    hint = self._domain_hint(gf, mu0, xi0, h)
                 err = _error(st["code"], st["step"], st["step"] * h, st["residual"],
-                             st["iterations"])
+                             st["iterations"], hint)
                 break
         n = self.n
         cat = lambda i, shape: (np.concatenate([q[i] for q in parts]) if parts  # noqa: E731

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import hpgen
-from hpgen.errors import ModelError
+from hpgen.errors import ArgumentError, ModelError
 from hpgen.runtime import NewtonOptions
 
 from test_derive_forces import FREE_BODY, HEAVY_TOP, TAU_S, VEHICLE
@@ -101,7 +101,7 @@ def test_stream_and_step_match_simulate(modules):
 def test_bad_arguments_fail_before_any_step(modules, kw, parts):
     with pytest.raises(ValueError) as e:
         modules["top"].simulate(np.eye(3), 0.05, 10, xi0=[0.2, 1.0, 3.0], **kw)
-    assert isinstance(e.value, ModelError) and "\n" not in str(e.value)
+    assert isinstance(e.value, ArgumentError) and "\n" not in str(e.value)
     for part in parts:
         assert part in str(e.value)
 
@@ -113,7 +113,7 @@ def test_bad_arguments_fail_before_any_step(modules, kw, parts):
     ([np.nan], ["u", "non-finite"]),
 ])
 def test_bad_inputs_u(modules, u, parts):
-    with pytest.raises(ModelError) as e:
+    with pytest.raises(ArgumentError) as e:
         modules["vehicle"].simulate(np.eye(4), 0.05, 10, mu0=[0.3, 1.0, 0.2, 1.0, 0.0, 0.5],
                                     u=u)
     for part in parts:
@@ -124,9 +124,9 @@ def test_closed_modules_refuse_u_and_params(tmp_path):
     path = tmp_path / "closed.yaml"
     path.write_text(FREE_BODY.split("forces:")[0])
     integ = hpgen.compile(path, backend="python", cache_dir=tmp_path / "cache")
-    with pytest.raises(ModelError, match="no control inputs"):
+    with pytest.raises(ArgumentError, match="no control inputs"):
         integ.simulate(np.eye(3), 0.05, 3, xi0=[0.1, 0.2, 0.3], u=[1.0])
-    with pytest.raises(ModelError, match="no runtime parameters"):
+    with pytest.raises(ArgumentError, match="no runtime parameters"):
         integ.simulate(np.eye(3), 0.05, 3, xi0=[0.1, 0.2, 0.3], params={"I": 1.0})
     a = integ.simulate(np.eye(3), 0.05, 3, xi0=[0.1, 0.2, 0.3], t0=2.0)
     b = integ.simulate(np.eye(3), 0.05, 3, xi0=[0.1, 0.2, 0.3])
@@ -165,7 +165,7 @@ def test_parameter_sweep_in_one_batch(modules):
         assert np.array_equal(runs[b].mu, one.mu) and np.array_equal(runs[b].g, one.g)
         assert np.array_equal(runs[b].t, one.t)
     assert np.abs(runs[0].mu[-1] - runs[63].mu[-1]).max() > 1e-2
-    with pytest.raises(ModelError, match="params"):
+    with pytest.raises(ArgumentError, match="params"):
         top.simulate_batch(np.eye(3), 0.05, 10, xi0=W0, params={"Mg": Mg[:5]})
 
 

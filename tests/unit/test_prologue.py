@@ -23,7 +23,7 @@ import numpy as np
 import pytest
 
 from conftest import FREE_BODY, HEAVY_TOP, SE3_BODY
-from hpgen.errors import ConvergenceError, ModelError
+from hpgen.errors import ArgumentError, ConvergenceError, ModelError
 from hpgen.runtime import backends, newton
 from hpgen.runtime.integrator import COND_MAX, Integrator
 
@@ -82,9 +82,9 @@ def reference_velocity(integ, g, mu, tol=newton.DEFAULT_TOL, maxit=newton.DEFAUL
     if code != newton.OK:
         raise ConvergenceError("inverting the Legendre transform (velocity from momentum): "
                                + {newton.NO_CONVERGENCE: "Newton did not converge",
-                                  newton.NONFINITE: "a non-finite value (or a singular "
-                                  "Jacobian) appeared"}[code], step=0, time=0.0, residual=r,
-                               iterations=it)
+                                  newton.NONFINITE: "Newton diverged: a non-finite value "
+                                  "(or a singular Jacobian) appeared"}[code],
+                               step=0, time=0.0, residual=r, iterations=it)
     return xi
 
 
@@ -93,7 +93,7 @@ def outcome(fn, *args, **kw):
     iterations): equal outcomes are bitwise equal."""
     try:
         return "ok", np.asarray(fn(*args, **kw)).tobytes()
-    except (ModelError, ConvergenceError) as exc:
+    except (ModelError, ArgumentError, ConvergenceError) as exc:
         r = getattr(exc, "residual", None)
         return (type(exc).__name__, str(exc), getattr(exc, "field", None),
                 None if r is None else np.float64(r).tobytes(), getattr(exc, "iterations", None))
@@ -130,7 +130,7 @@ def test_velocity_is_bitwise_the_reference_newton(compiled, backend):
             for kw in ({"maxit": 1}, {"tol": 1e-3}):
                 assert outcome(integ.velocity, g, mu, newton=newton.NewtonOptions(**kw)) == \
                     outcome(reference_velocity, integ, g, mu, **kw)
-            with pytest.raises(ModelError, match="newton.maxit"):
+            with pytest.raises(ArgumentError, match="newton.maxit"):
                 integ.velocity(g, mu, newton=newton.NewtonOptions(maxit=0))
 
 

@@ -13,7 +13,7 @@ import pytest
 import hpgen
 from hpgen.abi import META_FORMAT
 from hpgen.runtime import newton
-from hpgen.errors import BuildError, ConvergenceError, DomainError, ModelError
+from hpgen.errors import ArgumentError, BuildError, ConvergenceError, DomainError, ModelError
 from hpgen.runtime import build_library, load
 
 from _toy_step import emitted, integrator, module_dir, write_module
@@ -143,10 +143,13 @@ def test_domain_error_mid_run_with_partial():
     ({"newton": newton.NewtonOptions(tol=float("nan"))}, "newton.tol"),
     ({"newton": {"tol": 1e-3}}, "newton")])
 def test_simulate_validates_inputs(kw, field):
+    """API arguments are refused as ArgumentError (a ValueError, not a ModelError: model
+    files keep ModelError), one line naming the argument."""
     args = {"g0": G0, "h": 0.1, "steps": 5, "xi0": XI0, **kw}
-    with pytest.raises(ModelError) as info:
+    with pytest.raises(ArgumentError) as info:
         integrator("python").simulate(**args)
-    assert info.value.field == field
+    assert info.value.field == field and isinstance(info.value, ValueError)
+    assert not isinstance(info.value, ModelError) and "\n" not in str(info.value)
 
 
 def test_singular_legendre_is_a_model_error():
