@@ -90,6 +90,9 @@ SIGNATURES = {k.name: (k.inputs, k.outputs) for k in KERNELS}
 #: runtime parameters, flat, in the model's order), and these kernels, which evaluate the
 #: Lagrangian but take no h, take hv as one more, last input (t = t_k there).
 OPEN_EXTRA = ("legendre", "hessian", "energy", "observe", "velocity_step", "record")
+#: Open models: these kernels have more outputs (appended): step_partials's partials in the
+#: step vector, FH = dF/dH (nz x H) and YH = dY/dH (2d x H) (hpgen.derive.linearize)
+OPEN_OUTPUTS = {"step_partials": ("nzH", "sH")}
 
 
 def step_vector_size(m: int, P: int, is_open: bool) -> int:
@@ -100,14 +103,15 @@ def step_vector_size(m: int, P: int, is_open: bool) -> int:
 def signature(name: str, is_open: bool = False) -> tuple:
     """(input size symbols, output size symbols) of kernel ``name`` in a closed or open module."""
     ins, outs = SIGNATURES[name]
-    return (ins + ("H",) if is_open and name in OPEN_EXTRA else ins), outs
+    return ((ins + ("H",) if is_open and name in OPEN_EXTRA else ins),
+            outs + OPEN_OUTPUTS.get(name, ()) if is_open else outs)
 
 
 def sizes(n: int, d: int, nz: int, w: int = 1, H: int = 1) -> dict:
     """The value of every size symbol for a module of dimensions n, d, nz, record width w and
     step vector size H."""
     return {"nz": nz, "nn": n * n, "d": d, "dd": d * d, "nznz": nz * nz, "1": 1, "w": w,
-            "H": H, "nzs": 2 * d * nz, "ss": 4 * d * d}
+            "H": H, "nzs": 2 * d * nz, "ss": 4 * d * d, "nzH": nz * H, "sH": 2 * d * H}
 
 
 # ---- the record row ----------------------------------------------------------------------

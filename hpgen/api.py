@@ -357,8 +357,8 @@ def emit_files(d: Derivation, text: str, opts: CompileOptions, key: str) -> dict
 
 
 def casadi_step(integ):
-    """The step of a loaded Integrator as a casadi.Function (g, p, h, z) -> (F, g1, p1)
-    (hpgen.derive.export): its module's model.yaml and options derived again
+    """The step of a loaded Integrator as a casadi.Function (g, p, h, z) -> (F, g1, p1), an
+    open module's (g, p, u, params, h, z, t) -> (F, g1, p1) (hpgen.derive.export): its module's model.yaml and options derived again
     (``derive_module``), checked against its residual kernel. Imports casadi: never called
     on the runtime path."""
     if getattr(integ, "module_dir", None) is None:

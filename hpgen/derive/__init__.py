@@ -130,8 +130,8 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
                [("xi1", velocity_step(g, p, xi, lag))]),
         kernel("record", [("g", gvec), ("p", p), ("xi", xi)], [("row", row)]),
         kernel("step_partials", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
-               [(nm, _flat(e)) for nm, e in zip(("Fs", "Yz", "Ys"), step_partials(
-                   group, g, p, z, eqs.residual, eqs.g1, eqs.p1))]),
+               [(nm, _flat(e)) for nm, e in zip(("Fs", "Yz", "Ys", "FH", "YH"), step_partials(
+                   group, g, p, z, eqs.residual, eqs.g1, eqs.p1, hv if is_open else None))]),
     )
     assert tuple(k.name for k in kernels) == KERNEL_NAMES
     return DiscreteStep(

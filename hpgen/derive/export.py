@@ -8,6 +8,14 @@ F(z; g, p, h) = 0 defines the step) and (g1, p1) = (g_{k+1}, p_{k+1}) its explic
 SX expressions: K steps go into ``casadi.Opti`` as the constraints F(z_k; g_k, p_k, h) = 0,
 g_{k+1} = g1(z_k, ...), p_{k+1} = p1(z_k, ...) (the Function may be called on MX).
 
+An open module (forces, inputs, runtime parameters or t; hpgen.abi's step vector
+H = [h, t_k, u, params]) gives
+
+        step(g[n x n], p[d], u[m], params[P], h, z[nz], t) -> (F[nz], g1[n x n], p1[d])
+
+u the inputs held over the step, params the runtime parameters (flat, the model's order),
+t the step's start time t_k (last: unused unless the model depends on t).
+
 Compile-time stack (casadi): reached only through Integrator.casadi_step -> hpgen.api, never
 on the runtime path. The DiscreteStep is hpgen.api.derive_module's, from the module's
 model.yaml and meta.json options (derive is deterministic); it is checked against the
@@ -34,14 +42,26 @@ def casadi_step(step, residual_kernel=None, where="the module"):
     upd = step.kernel("update").function
     G, P, H, Z = ca.SX.sym("g", n, n), ca.SX.sym("p", d), ca.SX.sym("h"), ca.SX.sym("z", nz)
     gv = ca.reshape(G, n * n, 1)
-    g1, p1 = upd(Z, gv, P, H)
-    f = ca.Function("hpgen_step", [G, P, H, Z], [res(Z, gv, P, H), ca.reshape(g1, n, n), p1],
-                    ["g", "p", "h", "z"], ["F", "g1", "p1"])
+    spec = step.open_spec
+    if spec is None:
+        ins, names, hv = [G, P, H, Z], ["g", "p", "h", "z"], H
+    else:
+        U, Q, T = ca.SX.sym("u", len(spec.inputs)), ca.SX.sym("params", spec.H - 2 - len(
+            spec.inputs)), ca.SX.sym("t")
+        ins, names, hv = [G, P, U, Q, H, Z, T], ["g", "p", "u", "params", "h", "z", "t"], \
+            ca.vertcat(H, T, U, Q)
+    g1, p1 = upd(Z, gv, P, hv)
+    f = ca.Function("hpgen_step", ins, [res(Z, gv, P, hv), ca.reshape(g1, n, n), p1],
+                    names, ["F", "g1", "p1"])
     if residual_kernel is not None:
         rng = np.random.default_rng(0)
         z, g, p = rng.standard_normal(nz) * 0.1, np.eye(n), rng.standard_normal(d)
-        ours = np.array(f(g, p, 0.01, z)[0]).ravel()
-        theirs = np.asarray(residual_kernel(z, g.ravel(order="F"), p, np.array([0.01]))[0])
+        sample = np.concatenate([[0.01], rng.standard_normal(0 if spec is None else spec.H - 1)])
+        args = [0.01] if spec is None else [sample[2:2 + len(spec.inputs)],
+                                            sample[2 + len(spec.inputs):], 0.01]
+        t = [] if spec is None else [sample[1]]
+        ours = np.array(f(g, p, *args, z, *t)[0]).ravel()
+        theirs = np.asarray(residual_kernel(z, g.ravel(order="F"), p, sample)[0])
         if not np.abs(ours - theirs).max() <= MATCH_RTOL * (1.0 + np.abs(theirs).max()):
             raise ModelError("the re-derived residual differs from the module's kernel; "
                              "regenerate the module with this hpgen", file=where)

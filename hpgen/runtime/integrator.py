@@ -273,20 +273,31 @@ class Integrator(SectionsMixin, RecordsMixin):
             raise _error(code, 0, 0.0, r, it, hint)
         return g1.reshape(self.n, self.n, order="F"), p1
 
-    def linearize(self, traj, *, newton: NewtonOptions | None = None):
+    def linearize(self, traj, *, u=None, params=None, t0=None, wrt=None,
+                  newton: NewtonOptions | None = None):
         """A (K, 2d, 2d): A[k] = d(eta_{k+1}, dp_{k+1}) / d(eta_k, dp_k) along ``traj`` (this
         module's ``simulate(..., every=1)``), perturbations g -> g tau(eta), p -> p + dp; by
         the implicit function theorem at each converged step (hpgen.runtime.linearize).
-        newton: the Newton settings recovering each step's solution (as simulate's)."""
-        self._closed_only("linearize")     # B = d/du and wrt="params": issue 12, to do
-        from .linearize import linearize
-        return linearize(self, traj, self._options(newton))
+        newton: the Newton settings recovering each step's solution (as simulate's).
+
+        An open module (forces, inputs, runtime parameters or t) takes simulate's u, params
+        and t0 (default: the trajectory's first time) and returns (A, B), B (K, 2d, m) =
+        d(eta_{k+1}, dp_{k+1}) / d u_k, or with wrt="params" P (K, 2d, n_runtime_params).
+        A closed module takes none of u, params, t0, wrt."""
+        from .linearize import linearize, linearize_open
+        if self.open is None:
+            for name, v in (("u", u), ("params", params), ("t0", t0), ("wrt", wrt)):
+                if v is not None:
+                    raise ModelError("this model has no forces, inputs, runtime parameters "
+                                     f"or t: linearize takes no {name}", field=name)
+            return linearize(self, traj, self._options(newton))
+        return linearize_open(self, traj, self._options(newton, full=True), u, params, t0, wrt)
 
     def casadi_step(self):
-        """casadi.Function step(g, p, h, z) -> (F, g1, p1): this module's residual and explicit
-        update as CasADi expressions, for optimal control (compile-time stack: needs casadi;
+        """casadi.Function step(g, p, h, z) -> (F, g1, p1) (an open module's:
+        step(g, p, u, params, h, z, t)): this module's residual and explicit update as CasADi
+        expressions, for optimal control (compile-time stack: needs casadi;
         hpgen.api.casadi_step, hpgen.derive.export)."""
-        self._closed_only("casadi_step")   # (u, params) inputs: issue 12, to do
         from .. import api     # the compile side: it alone imports casadi (lazily)
         return api.casadi_step(self)
 

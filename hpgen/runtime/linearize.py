@@ -23,6 +23,20 @@ compared with the next record (``RECORD_RTOL``): a trajectory of another module,
 model is refused. The C backend runs the whole loop in ``hpgen_linearize`` (kernels.c); the
 Python backend runs it here on the module's kernels.py. The two agree to round-off.
 
+Open modules (forces, inputs, runtime parameters or t; the step vector
+H = [h, t_k, u_k, params], hpgen.runtime.inputs):
+
+    Integrator.linearize(traj, u=U) -> (A (K, 2d, 2d), B (K, 2d, m)),
+        B[k] = d(eta_{k+1}, dp_{k+1}) / d u_k
+    Integrator.linearize(traj, u=U, wrt="params") -> P (K, 2d, n_runtime_params),
+        P[k] = d(eta_{k+1}, dp_{k+1}) / d params (the parameters held fixed over step k only)
+
+from the open kernel's partials in the step vector (FH = dF/dH, YH = dY/dH):
+B = YH_u - Yz J^{-1} FH_u, P = YH_par - Yz J^{-1} FH_par. u, params and t0 are simulate's
+(u required for a model with inputs; t0 defaults to the trajectory's first time). Both
+backends run this loop in Python over the module's kernels (the C backend's kernels
+compiled): step k by full Newton from step k-1's solution.
+
 Runtime path only: numpy and hpgen.runtime.
 """
 from __future__ import annotations
@@ -56,6 +70,16 @@ def partials_at(integ, z, gf, p, hv):
     Fs, Yz, Ys = integ.kernel("step_partials", z, gf, p, hv)
     return (J.reshape(nz, nz, order="F"), Fs.reshape(nz, s, order="F"),
             Yz.reshape(s, nz, order="F"), Ys.reshape(s, s, order="F"))
+
+
+def open_partials_at(integ, z, gf, p, hv):
+    """(J, Fs, Yz, Ys, FH (nz, H), YH (2d, H)) of an open module at z (hv its step vector)."""
+    nz, s, H = integ.nz, 2 * integ.d, len(hv)
+    J = integ.kernel("jacobian", z, gf, p, hv)[0]
+    Fs, Yz, Ys, FH, YH = integ.kernel("step_partials", z, gf, p, hv)
+    return (J.reshape(nz, nz, order="F"), Fs.reshape(nz, s, order="F"),
+            Yz.reshape(s, nz, order="F"), Ys.reshape(s, s, order="F"),
+            FH.reshape(nz, H, order="F"), YH.reshape(s, H, order="F"))
 
 
 def _check_traj(integ, traj):
@@ -111,11 +135,57 @@ def linearize(integ, traj, opts):
     if err is not None:
         code, it, r = err
         raise _error(code, done, done * h, r, it)
+    _check_dev(integ, gf, p, h, dev)
+    return A
+
+
+def _check_dev(integ, gf, p, h, dev):
+    """Refuse records that are not this module's steps (dev[k]: step k's deviation)."""
     scale = 1.0 + max(np.abs(gf).max(), np.abs(p).max())
     bad = np.flatnonzero(~(dev <= RECORD_RTOL * scale))
     if bad.size:
         k = int(bad[0])
         raise ModelError(f"record {k + 1} is not this module's step from record {k} at "
                          f"h = {h!r} (deviation {dev[k]:.1e}); expected a trajectory "
-                         f"simulated by {integ.meta['module']!r}", field="traj")
-    return A
+                         f"simulated by {integ.meta['module']!r} with these inputs",
+                         field="traj")
+
+
+#: linearize's ``wrt`` choices of an open module: the control inputs (with A) or the runtime
+#: parameters
+WRT = (None, "u", "params")
+
+
+def linearize_open(integ, traj, opts, u=None, params=None, t0=None, wrt=None):
+    """Open module: (A, B) (wrt None or "u") or P (wrt "params") along ``traj``; see the
+    module docstring. Raises ModelError for a bad trajectory, u, params, t0 or wrt,
+    ConvergenceError if a step's Newton fails."""
+    from .inputs import step_inputs
+    if wrt not in WRT:
+        raise ModelError(f"expected wrt=None, 'u' or 'params', got {wrt!r}", field="wrt")
+    gf, p, h = _check_traj(integ, traj)
+    K, s, m = len(gf) - 1, 2 * integ.d, len(integ.open["inputs"])
+    if t0 is None:
+        t0 = float(np.asarray(traj.t, dtype=np.float64)[0]) if len(traj.t) else 0.0
+    inputs = step_inputs(integ.open, K, u, params, t0)
+    H = 2 + m + len(inputs.params)
+    cols = slice(2, 2 + m) if wrt != "params" else slice(2 + m, H)
+    if wrt == "params" and H == 2 + m:
+        raise ModelError("this model has no runtime parameters", field="wrt")
+    hv = np.array(inputs.hv(h, 0))
+    z = integ.kernel("guess", integ._velocity(gf[0], p[0], lv=integ._lv(t0, inputs.params)),
+                     gf[0], p[0], hv)[0]
+    A, B = np.zeros((K, s, s)), np.zeros((K, s, cols.stop - cols.start))
+    dev = np.zeros(K)
+    for k in range(K):
+        hv = np.array(inputs.hv(h, k))
+        code, g1, p1, z, it, r = integ._b.step(gf[k], p[k], hv, z, opts)
+        if code != abi.OK:
+            raise _error(code, k, k * h, r, it)
+        dev[k] = max(np.abs(g1 - gf[k + 1]).max(), np.abs(p1 - p[k + 1]).max())
+        J, Fs, Yz, Ys, FH, YH = open_partials_at(integ, z, gf[k], p[k], hv)
+        X = np.hstack([Fs, FH[:, cols]])
+        D = implicit_derivative(J, X, Yz, np.hstack([Ys, YH[:, cols]]))
+        A[k], B[k] = D[:, :s], D[:, s:]
+    _check_dev(integ, gf, p, h, dev)
+    return B if wrt == "params" else (A, B)

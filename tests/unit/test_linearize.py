@@ -13,7 +13,7 @@
   model: |A|^2 |Omega| ulp times the Newton/solve amplification).
 - Bad input: another module's trajectory, wrong shapes, every != 1, records that are not
   this module's steps: one-line ModelError (field traj).
-- casadi_step reproduces ``step``. (linearize on the runtime path alone:
+- casadi_step reproduces ``step``; a closed module takes no u, params, wrt. (linearize on the runtime path alone:
   tests/unit/test_runtime.py::test_generated_package_runs_without_compile_time_stack.)
 """
 from __future__ import annotations
@@ -161,21 +161,9 @@ def test_casadi_step_reproduces_step(compile_model):
     assert np.abs(np.array(p1).ravel() - traj.mu[3]).max() < 1e-12
 
 
-FORCED = """\
-name: forced_top
-group: SO3
-parameters: {I: [1.0, 5.0, 6.0], Mg: 1.0, c: 0.1, a: 0.4}
-runtime_parameters: [Mg]
-lagrangian: 0.5*(I[0]*xi[0]**2 + I[1]*xi[1]**2 + I[2]*xi[2]**2) - Mg*R[2, 2]
-forces: ["-c*xi[0] + a*cos(2*t)", "-c*xi[1]", "-c*xi[2] + a*R[2, 0]*sin(t)"]
-"""
-
-
-def test_open_models_are_refused_in_one_line(compile_model):
-    """B = d/du_k, wrt="params" and the (u, params) casadi_step are not built yet: an open
-    module (forces, inputs, runtime parameters or t) is refused, not linearized wrongly."""
-    integ = compile_model(FORCED, backend="python")
-    for call in (lambda: integ.linearize(None), integ.casadi_step):
+def test_closed_linearize_takes_no_inputs(compile_model):
+    _, integ, traj = _setup("heavy_top", "python", compile_model)
+    for kw in ({"u": [1.0]}, {"params": {"Mg": 1.0}}, {"wrt": "params"}):
         with pytest.raises(ModelError) as e:
-            call()
-        assert "\n" not in str(e.value) and "forces, inputs, runtime parameters" in str(e.value)
+            integ.linearize(traj, **kw)
+        assert "\n" not in str(e.value) and "takes no" in str(e.value)
