@@ -177,3 +177,30 @@ def test_open_casadi_step_reproduces_step(compile_model, name):
     assert np.abs(np.array(F)).max() < 1e-13
     assert np.abs(np.array(g1) - traj.g[k + 1]).max() < 1e-12
     assert np.abs(np.array(p1).ravel() - traj.mu[k + 1]).max() < 1e-12
+
+
+def test_open_linearize_matches_casadi_ad(compile_model):
+    """B and P against CasADi's AD of casadi_step's residual and update (ambient g1),
+    composed by the implicit function theorem here, to 1e-12 (round-off times cond(J))."""
+    import casadi as ca
+    model, integ, traj, U = _setup("spacecraft", "c", compile_model)
+    A, B = integ.linearize(traj, u=U)
+    P = integ.linearize(traj, u=U, wrt="params")
+    f = integ.casadi_step()
+    Z, Uu, Q = ca.SX.sym("z", integ.nz), ca.SX.sym("u", 3), ca.SX.sym("q", 1)
+    for k in (0, STEPS - 1):
+        F, g1, p1 = f(traj.g[k], traj.mu[k], Uu, Q, H, Z, traj.t[k])
+        Y = ca.vertcat(ca.reshape(g1, -1, 1), p1)
+        jac = ca.Function("j", [Z, Uu, Q], [F, ca.jacobian(F, Z), ca.jacobian(F, Uu),
+                                            ca.jacobian(F, Q), ca.jacobian(Y, Z),
+                                            ca.jacobian(Y, Uu), ca.jacobian(Y, Q), g1])
+        z = np.zeros(integ.nz)
+        for _ in range(12):
+            Fz, Jz = (np.array(a) for a in jac(z, U[k], integ.open["defaults"])[:2])
+            z = z - np.linalg.solve(Jz, Fz.ravel())
+        _, J, Fu, Fq, Yz, Yu, Yq, g1v = (np.array(a) for a in
+                                         jac(z, U[k], integ.open["defaults"]))
+        for got, Fx, Yx in ((B[k], Fu, Yu), (P[k], Fq, Yq)):
+            dY = Yx - Yz @ np.linalg.solve(J, Fx)
+            ref = chart_jacobian(model.group, g1v, dY[:9], dY[9:])
+            assert np.abs(ref - got).max() <= 1e-12 * np.abs(got).max(), k
