@@ -125,7 +125,7 @@ class CBackend(_Backend):
             fn.restype = ctypes.c_int
             self._fns[k] = fn
         P, LL, D = ctypes.c_void_p, ctypes.c_longlong, ctypes.c_double
-        closed_only = ("hpgen_observe", "hpgen_linearize")
+        closed_only = ("hpgen_observe",)
         for name, args, res in (
                 ("hpgen_step", [P, P, P if self.open else D, P, P, P, P, P], ctypes.c_int),
                 ("hpgen_run_size", [], LL),
@@ -139,7 +139,8 @@ class CBackend(_Backend):
                 ("hpgen_advance_record", [P, D, LL, LL, P, P, P, P], LL),
                 ("hpgen_advance_record_batch", [P, LL, D, LL, LL, P, LL, P, P, P], LL),
                 ("hpgen_run_set_inputs", [P, D, P, LL, P], None),
-                ("hpgen_linearize", [LL, P, P, D, P, P, P, P, P], LL)):
+                ("hpgen_linearize", [LL, P, P, P, LL, LL, P, P, P, P, P, P] if self.open
+                 else [LL, P, P, D, P, P, P, P, P], LL)):
             if (self.open and name in closed_only) or (
                     not self.open and name == "hpgen_run_set_inputs"):
                 continue
@@ -425,3 +426,20 @@ class CBackend(_Backend):
         err = None if st.code == newton.OK else (st.code, st.iterations, st.residual)
         # C's column-major 2d x 2d blocks are row-major transposes
         return A.transpose(0, 2, 1).copy(), dev, err, done
+
+    def linearize_open(self, gf, p, hv, cols, z0, opts):
+        """An open module's hpgen_linearize: hv (K, H) the step vectors, cols the step
+        vector's columns of B (a slice): (A (K, 2d, 2d), B (K, 2d, nc), dev (K,), None or
+        (code, iterations, residual), steps done)."""
+        K, s, nc = len(gf) - 1, 2 * self.d, cols.stop - cols.start
+        gf, p = np.array(gf, dtype=_F64, order="C"), np.array(p, dtype=_F64, order="C")
+        hv = np.array(hv, dtype=_F64, order="C")
+        z = np.array(z0, dtype=np.float64)
+        A, B, dev = np.zeros((K, s, s)), np.zeros((K, nc, s)), np.zeros(K)
+        st = _Status()
+        done = int(self._lib.hpgen_linearize(K, _addr(gf), _addr(p), _addr(hv), cols.start,
+                                             nc, _addr(z), ctypes.byref(_Options.of(opts)),
+                                             _addr(A), _addr(B), _addr(dev),
+                                             ctypes.byref(st)))
+        err = None if st.code == newton.OK else (st.code, st.iterations, st.residual)
+        return A.transpose(0, 2, 1).copy(), B.transpose(0, 2, 1).copy(), dev, err, done

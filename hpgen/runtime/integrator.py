@@ -291,7 +291,7 @@ class Integrator(SectionsMixin, RecordsMixin):
                     raise ModelError("this model has no forces, inputs, runtime parameters "
                                      f"or t: linearize takes no {name}", field=name)
             return linearize(self, traj, self._options(newton))
-        return linearize_open(self, traj, self._options(newton, full=True), u, params, t0, wrt)
+        return linearize_open(self, traj, self._options(newton), u, params, t0, wrt)
 
     def casadi_step(self):
         """casadi.Function step(g, p, h, z) -> (F, g1, p1) (an open module's:

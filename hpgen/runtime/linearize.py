@@ -33,9 +33,10 @@ H = [h, t_k, u_k, params], hpgen.runtime.inputs):
 
 from the open kernel's partials in the step vector (FH = dF/dH, YH = dY/dH):
 B = YH_u - Yz J^{-1} FH_u, P = YH_par - Yz J^{-1} FH_par. u, params and t0 are simulate's
-(u required for a model with inputs; t0 defaults to the trajectory's first time). Both
-backends run this loop in Python over the module's kernels (the C backend's kernels
-compiled): step k by full Newton from step k-1's solution.
+(u required for a model with inputs; t0 defaults to the trajectory's first time). The C
+backend runs the loop in the open module's ``hpgen_linearize`` (the step vectors of all
+steps passed as rows), the Python backend here (step k by full Newton from step k-1's
+solution).
 
 Runtime path only: numpy and hpgen.runtime.
 """
@@ -172,20 +173,34 @@ def linearize_open(integ, traj, opts, u=None, params=None, t0=None, wrt=None):
     cols = slice(2, 2 + m) if wrt != "params" else slice(2 + m, H)
     if wrt == "params" and H == 2 + m:
         raise ModelError("this model has no runtime parameters", field="wrt")
-    hv = np.array(inputs.hv(h, 0))
+    hv = np.array([inputs.hv(h, k) for k in range(K)], dtype=np.float64).reshape(K, H)
     z = integ.kernel("guess", integ._velocity(gf[0], p[0], lv=integ._lv(t0, inputs.params)),
-                     gf[0], p[0], hv)[0]
+                     gf[0], p[0], hv[0])[0]
+    loop = getattr(integ._b, "linearize_open", None)
+    if loop is not None:
+        A, B, dev, err, done = loop(gf, p, hv, cols, z, opts)
+    else:
+        A, B, dev, err, done = _python_open_loop(integ, gf, p, hv, cols, z, opts)
+    if err is not None:
+        code, it, r = err
+        raise _error(code, done, done * h, r, it)
+    _check_dev(integ, gf, p, h, dev)
+    return B if wrt == "params" else (A, B)
+
+
+def _python_open_loop(integ, gf, p, hv, cols, z, opts):
+    """The Python backend's twin of an open module's hpgen_linearize: (A, B, dev, err,
+    steps done)."""
+    K, s = len(gf) - 1, 2 * integ.d
     A, B = np.zeros((K, s, s)), np.zeros((K, s, cols.stop - cols.start))
     dev = np.zeros(K)
     for k in range(K):
-        hv = np.array(inputs.hv(h, k))
-        code, g1, p1, z, it, r = integ._b.step(gf[k], p[k], hv, z, opts)
+        code, g1, p1, z, it, r = integ._b.step(gf[k], p[k], hv[k], z, opts)
         if code != abi.OK:
-            raise _error(code, k, k * h, r, it)
+            return A, B, dev, (code, it, r), k
         dev[k] = max(np.abs(g1 - gf[k + 1]).max(), np.abs(p1 - p[k + 1]).max())
-        J, Fs, Yz, Ys, FH, YH = open_partials_at(integ, z, gf[k], p[k], hv)
-        X = np.hstack([Fs, FH[:, cols]])
-        D = implicit_derivative(J, X, Yz, np.hstack([Ys, YH[:, cols]]))
+        J, Fs, Yz, Ys, FH, YH = open_partials_at(integ, z, gf[k], p[k], hv[k])
+        D = implicit_derivative(J, np.hstack([Fs, FH[:, cols]]), Yz,
+                                np.hstack([Ys, YH[:, cols]]))
         A[k], B[k] = D[:, :s], D[:, s:]
-    _check_dev(integ, gf, p, h, dev)
-    return B if wrt == "params" else (A, B)
+    return A, B, dev, None, K
