@@ -68,7 +68,7 @@ def partials_at(integ, z, gf, p, hv):
     ``jacobian`` and ``step_partials`` kernels at z (flat column-major g, hv = [h])."""
     nz, s = integ.nz, 2 * integ.d
     J = integ.kernel("jacobian", z, gf, p, hv)[0]
-    Fs, Yz, Ys = integ.kernel("step_partials", z, gf, p, hv)
+    Fs, Yz, Ys = integ.kernel("step_partials", z, gf, p, hv)[:3]   # open: (FH, YH) too
     return (J.reshape(nz, nz, order="F"), Fs.reshape(nz, s, order="F"),
             Yz.reshape(s, nz, order="F"), Ys.reshape(s, s, order="F"))
 

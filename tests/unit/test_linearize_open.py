@@ -4,8 +4,10 @@
   B[k] = d(eta_{k+1}, dp_{k+1}) / d u_k, and P = linearize(traj, u=U, wrt="params") =
   d(eta_{k+1}, dp_{k+1}) / d params, against central differences of ``step`` (state on the
   module's chart; u_k and params entries, eps = 1e-5) to 1e-7 relative, on SO3 (a spacecraft
-  with body torques u and a runtime damping c) and SE3 (a vehicle with a thrust input),
-  C and Python backends. Difference error as in test_linearize: truncation eps^2 |d^3 step|
+  with body torques u and a runtime damping c), SE3 (a vehicle with a thrust input) and
+  SO3 x SO3 (a coupled pair, an internal torque u and damping c), C and Python backends;
+  B and P against CasADi's AD of casadi_step composed by the implicit function theorem to
+  1e-12. Difference error as in test_linearize: truncation eps^2 |d^3 step|
   ~ 1e-10, round-off (Newton tolerance 1e-14 + ulp) / eps ~ 1e-9.
 - C and Python agree to round-off (1e-13 relative).
 - With zero forces (u = 0, c = 0) A is symplectic: A^T Omega(p_{k+1}) A = Omega(p_k) to 1e-12
@@ -34,7 +36,19 @@ inputs: [u0, u1, u2]
 lagrangian: 0.5*(I[0]*xi[0]**2 + I[1]*xi[1]**2 + I[2]*xi[2]**2)
 forces: ["u0 - c*xi[0]", "u1 - c*xi[1]*R[2, 2]", "u2 - c*xi[2]"]
 """
-CASES = {"spacecraft": SPACECRAFT, "vehicle": VEHICLE}
+PAIR = """\
+name: coupled_pair
+group: [SO3, SO3]
+parameters: {I0: [1.0, 2.0, 3.0], I1: [0.5, 0.7, 0.9], k: 2.0, c: 0.1}
+runtime_parameters: [c]
+inputs: [u]
+lagrangian: >-
+  0.5*(I0[0]*xi_0[0]**2 + I0[1]*xi_0[1]**2 + I0[2]*xi_0[2]**2)
+  + 0.5*(I1[0]*xi_1[0]**2 + I1[1]*xi_1[1]**2 + I1[2]*xi_1[2]**2)
+  + k*(R_0[2,0]*R_1[2,0] + R_0[2,1]*R_1[2,1] + R_0[2,2]*R_1[2,2])
+forces: ["u - c*xi_0[0]", "0", "0", "-u", "0", "-c*xi_1[2]"]
+"""
+CASES = {"spacecraft": SPACECRAFT, "vehicle": VEHICLE, "pair": PAIR}
 STEPS, H = 5, 0.05
 _SETUP = {}
 
@@ -91,7 +105,7 @@ def test_open_linearize_matches_central_differences(compile_model, name, backend
     d, m = model.group.d, len(model.inputs)
     A, B = integ.linearize(traj, u=U)
     assert A.shape == (STEPS, 2 * d, 2 * d) and B.shape == (STEPS, 2 * d, m)
-    P = integ.linearize(traj, u=U, wrt="params") if name == "spacecraft" else None
+    P = integ.linearize(traj, u=U, wrt="params") if integ.open["defaults"] else None
     for k in (0, STEPS - 1):
         assert _rel(A[k], _fd(integ, model, traj, U, k, "state")) < 1e-7, (name, k)
         assert _rel(B[k], _fd(integ, model, traj, U, k, "u")) < 1e-7, (name, k)
