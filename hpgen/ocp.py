@@ -39,7 +39,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import HpgenError, ModelError
+from .errors import ArgumentError, HpgenError
 
 
 @dataclass(frozen=True)
@@ -85,26 +85,26 @@ def _chart_coordinates(ca, tau_f, g0, gT, d, iterations=50):
         if np.abs(step).max() <= 1e-15 * (1 + np.abs(eta).max()):
             break
     if not np.abs(np.array(fun(eta)[0])).max() <= 1e-12:
-        raise ModelError("gT is not reachable from g0 in the module's chart (tau(eta) = "
+        raise ArgumentError("gT is not reachable from g0 in the module's chart (tau(eta) = "
                          "g0^{-1} gT has no solution near 0)", field="gT")
     return eta
 
 
 def _check(integ, g0, gT, T, steps):
     if integ.open is None or not integ.open["inputs"]:
-        raise ModelError("expected a model with control inputs (inputs: entering through "
+        raise ArgumentError("expected a model with control inputs (inputs: entering through "
                          "forces:)", field="integ")
     g0 = np.asarray(g0, dtype=np.float64)
     gT = np.asarray(gT, dtype=np.float64)
     for name, g in (("g0", g0), ("gT", gT)):
         if g.shape != (integ.n, integ.n) or not np.isfinite(g).all():
-            raise ModelError(f"expected a finite {integ.n} x {integ.n} matrix, got shape "
+            raise ArgumentError(f"expected a finite {integ.n} x {integ.n} matrix, got shape "
                              f"{g.shape}", field=name)
     if isinstance(steps, bool) or not isinstance(steps, (int, np.integer)) or steps < 2:
-        raise ModelError(f"expected an integer number of steps >= 2, got {steps!r}",
+        raise ArgumentError(f"expected an integer number of steps >= 2, got {steps!r}",
                          field="steps")
     if not (isinstance(T, (int, float)) and np.isfinite(T) and T > 0):
-        raise ModelError(f"expected a positive finite time T, got {T!r}", field="T")
+        raise ArgumentError(f"expected a positive finite time T, got {T!r}", field="T")
     return g0, gT
 
 
@@ -114,7 +114,7 @@ def rest_to_rest(integ, g0, gT, T, steps, *, params=None, t0=0.0, tol=1e-12,
     ``integ`` (a compiled open module with inputs); see the module docstring.
 
     params: runtime parameter overrides (as simulate's); t0: start time; tol: IPOPT's tol
-    and constr_viol_tol; max_iter, print_level: IPOPT's. Returns a Plan. Raises ModelError
+    and constr_viol_tol; max_iter, print_level: IPOPT's. Returns a Plan. Raises ArgumentError
     for bad arguments, HpgenError when IPOPT does not solve the problem."""
     import casadi as ca
     from .runtime.inputs import check_params

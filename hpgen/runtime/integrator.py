@@ -288,8 +288,9 @@ class Integrator(SectionsMixin, RecordsMixin):
         if self.open is None:
             for name, v in (("u", u), ("params", params), ("t0", t0), ("wrt", wrt)):
                 if v is not None:
-                    raise ModelError("this model has no forces, inputs, runtime parameters "
-                                     f"or t: linearize takes no {name}", field=name)
+                    raise ArgumentError("this model has no forces, inputs, runtime "
+                                        f"parameters or t: linearize takes no {name}",
+                                        field=name)
             return linearize(self, traj, self._options(newton))
         return linearize_open(self, traj, self._options(newton), u, params, t0, wrt)
 

@@ -45,7 +45,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import abi
-from ..errors import ModelError
+from ..errors import ArgumentError
 from .args import _error
 
 #: the step recomputed from record k must reproduce record k+1 to this relative accuracy
@@ -87,21 +87,21 @@ def _check_traj(integ, traj):
     """(g records flat (K+1, n*n), p records (K+1, d), h) of ``traj``, checked."""
     n, d = integ.n, integ.d
     if not all(hasattr(traj, a) for a in ("g", "mu", "h", "every")):
-        raise ModelError(f"expected a Trajectory from simulate, got {type(traj).__name__}",
+        raise ArgumentError(f"expected a Trajectory from simulate, got {type(traj).__name__}",
                          field="traj")
     other = getattr(traj, "integrator", None)
     if other is not None and getattr(other, "meta", {}).get("hash") != integ.meta["hash"]:
-        raise ModelError(f"the trajectory comes from module {other.meta.get('module')!r}, "
+        raise ArgumentError(f"the trajectory comes from module {other.meta.get('module')!r}, "
                          f"not {integ.meta['module']!r}", field="traj")
     if traj.every != 1:
-        raise ModelError(f"expected a trajectory recorded at every step (every=1), got "
+        raise ArgumentError(f"expected a trajectory recorded at every step (every=1), got "
                          f"every={traj.every}", field="traj")
     g, mu = np.asarray(traj.g, dtype=np.float64), np.asarray(traj.mu, dtype=np.float64)
     if g.ndim != 3 or g.shape[1:] != (n, n) or mu.shape != (len(g), d) or len(g) < 2:
-        raise ModelError(f"expected g of shape (K+1, {n}, {n}) and mu of shape (K+1, {d}) "
+        raise ArgumentError(f"expected g of shape (K+1, {n}, {n}) and mu of shape (K+1, {d}) "
                          f"with K >= 1, got {g.shape} and {mu.shape}", field="traj")
     if not (np.isfinite(g).all() and np.isfinite(mu).all()):
-        raise ModelError("the trajectory has non-finite entries", field="traj")
+        raise ArgumentError("the trajectory has non-finite entries", field="traj")
     gf = np.ascontiguousarray(g.transpose(0, 2, 1).reshape(len(g), n * n))
     return gf, np.array(mu, order="C"), float(traj.h)
 
@@ -122,7 +122,7 @@ def _python_loop(integ, gf, p, hv, z, opts):
 def linearize(integ, traj, opts):
     """A (K, 2d, 2d) along ``traj`` (K + 1 records of ``integ.simulate(..., every=1)``); see
     the module docstring. opts: resolved NewtonOptions (Integrator._options). Raises
-    ModelError (field traj) for a trajectory that is not this module's, ConvergenceError if a
+    ArgumentError (field traj) for a trajectory that is not this module's, ConvergenceError if a
     step's Newton fails."""
     gf, p, h = _check_traj(integ, traj)
     hv = np.array([h])
@@ -146,7 +146,7 @@ def _check_dev(integ, gf, p, h, dev):
     bad = np.flatnonzero(~(dev <= RECORD_RTOL * scale))
     if bad.size:
         k = int(bad[0])
-        raise ModelError(f"record {k + 1} is not this module's step from record {k} at "
+        raise ArgumentError(f"record {k + 1} is not this module's step from record {k} at "
                          f"h = {h!r} (deviation {dev[k]:.1e}); expected a trajectory "
                          f"simulated by {integ.meta['module']!r} with these inputs",
                          field="traj")
@@ -159,11 +159,11 @@ WRT = (None, "u", "params")
 
 def linearize_open(integ, traj, opts, u=None, params=None, t0=None, wrt=None):
     """Open module: (A, B) (wrt None or "u") or P (wrt "params") along ``traj``; see the
-    module docstring. Raises ModelError for a bad trajectory, u, params, t0 or wrt,
+    module docstring. Raises ArgumentError for a bad trajectory, u, params, t0 or wrt,
     ConvergenceError if a step's Newton fails."""
     from .inputs import step_inputs
     if wrt not in WRT:
-        raise ModelError(f"expected wrt=None, 'u' or 'params', got {wrt!r}", field="wrt")
+        raise ArgumentError(f"expected wrt=None, 'u' or 'params', got {wrt!r}", field="wrt")
     gf, p, h = _check_traj(integ, traj)
     K, s, m = len(gf) - 1, 2 * integ.d, len(integ.open["inputs"])
     if t0 is None:
@@ -172,7 +172,7 @@ def linearize_open(integ, traj, opts, u=None, params=None, t0=None, wrt=None):
     H = 2 + m + len(inputs.params)
     cols = slice(2, 2 + m) if wrt != "params" else slice(2 + m, H)
     if wrt == "params" and H == 2 + m:
-        raise ModelError("this model has no runtime parameters", field="wrt")
+        raise ArgumentError("this model has no runtime parameters", field="wrt")
     hv = np.array([inputs.hv(h, k) for k in range(K)], dtype=np.float64).reshape(K, H)
     z = integ.kernel("guess", integ._velocity(gf[0], p[0], lv=integ._lv(t0, inputs.params)),
                      gf[0], p[0], hv[0])[0]

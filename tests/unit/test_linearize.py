@@ -12,7 +12,7 @@
   canonical form ``hpgen check`` uses, relative defect <= 1e-12 (hpgen check's round-off
   model: |A|^2 |Omega| ulp times the Newton/solve amplification).
 - Bad input: another module's trajectory, wrong shapes, every != 1, records that are not
-  this module's steps: one-line ModelError (field traj).
+  this module's steps: one-line ArgumentError (field traj).
 - casadi_step reproduces ``step``; a closed module takes no u, params, wrt. (linearize on the runtime path alone:
   tests/unit/test_runtime.py::test_generated_package_runs_without_compile_time_stack.)
 """
@@ -27,7 +27,7 @@ from hpgen.analysis.rkmk import chart_jacobian
 from hpgen.analysis.symplectic import StepSensitivity, ad_matrices, omega_matrix, \
     symplectic_defect
 from hpgen.derive import derive
-from hpgen.errors import ModelError
+from hpgen.errors import ArgumentError
 from hpgen.model import load_model
 from hpgen.runtime.trajectory import Trajectory
 from hpgen.tableaus import get_tableau
@@ -127,7 +127,7 @@ def test_bad_trajectories(compile_model):
     _, other, other_traj = _setup("underwater_vehicle", "c", compile_model)
 
     def msg(bad):
-        with pytest.raises(ModelError) as e:
+        with pytest.raises(ArgumentError) as e:
             integ.linearize(bad)
         text = str(e.value)
         assert "\n" not in text and e.value.field == "traj"
@@ -164,6 +164,6 @@ def test_casadi_step_reproduces_step(compile_model):
 def test_closed_linearize_takes_no_inputs(compile_model):
     _, integ, traj = _setup("heavy_top", "python", compile_model)
     for kw in ({"u": [1.0]}, {"params": {"Mg": 1.0}}, {"wrt": "params"}):
-        with pytest.raises(ModelError) as e:
+        with pytest.raises(ArgumentError) as e:
             integ.linearize(traj, **kw)
         assert "\n" not in str(e.value) and "takes no" in str(e.value)

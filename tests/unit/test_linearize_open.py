@@ -12,7 +12,7 @@
 - C and Python agree to round-off (1e-13 relative).
 - With zero forces (u = 0, c = 0) A is symplectic: A^T Omega(p_{k+1}) A = Omega(p_k) to 1e-12
   (hpgen check's form, hpgen.analysis.symplectic).
-- Bad input: u missing, wrong shapes, wrt, another run's inputs: one-line ModelError.
+- Bad input: u missing, wrong shapes, wrt, another run's inputs: one-line ArgumentError.
 """
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ import pytest
 
 from hpgen.analysis.rkmk import chart_jacobian
 from hpgen.analysis.symplectic import ad_matrices, omega_matrix, symplectic_defect
-from hpgen.errors import ModelError
+from hpgen.errors import ArgumentError
 from hpgen.model import load_model_text
 
 from test_derive_forces import VEHICLE
@@ -145,7 +145,7 @@ def test_open_bad_input(compile_model):
     _, integ, traj, U = _setup("spacecraft", "python", compile_model)
 
     def msg(field, **kw):
-        with pytest.raises(ModelError) as e:
+        with pytest.raises(ArgumentError) as e:
             integ.linearize(traj, **kw)
         assert "\n" not in str(e.value) and e.value.field == field, str(e.value)
         return str(e.value)
@@ -158,10 +158,10 @@ def test_open_bad_input(compile_model):
     assert "not this module's step" in msg("traj", u=U + 0.1)      # other inputs than the run's
     assert "not this module's step" in msg("traj", u=U, params={"c": 0.2})
     _, vehicle, _, _ = _setup("vehicle", "python", compile_model)
-    with pytest.raises(ModelError) as e:
+    with pytest.raises(ArgumentError) as e:
         vehicle.linearize(traj, u=U[:, :1])
     assert "damped_spacecraft" in str(e.value) and e.value.field == "traj"
-    with pytest.raises(ModelError) as e:
+    with pytest.raises(ArgumentError) as e:
         vehicle.linearize(_setup("vehicle", "python", compile_model)[2], u=[0.1],
                           wrt="params")
     assert "no runtime parameters" in str(e.value)

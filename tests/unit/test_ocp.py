@@ -11,7 +11,7 @@ examples/spacecraft_rest_to_rest.py).
 - Three-axis slew: the planned inputs re-simulated by ``simulate`` (full Newton, tolerance
   1e-14) reproduce the planned states to 1e-9 (the plan satisfies the step to IPOPT's
   1e-12, amplified by at most the 40 steps' growth), torques on all three axes.
-- Bad input: a model without inputs, a wrong g0, steps: one-line ModelError.
+- Bad input: a model without inputs, a wrong g0, steps: one-line ArgumentError.
 """
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 
 from conftest import EXAMPLES
-from hpgen.errors import ModelError
+from hpgen.errors import ArgumentError
 
 _spec = importlib.util.spec_from_file_location("spacecraft_rest_to_rest",
                                                EXAMPLES / "spacecraft_rest_to_rest.py")
@@ -77,6 +77,6 @@ def test_rest_to_rest_bad_input(integ, compile_model):
     cases = ((closed, np.eye(3), 2, "integ"), (integ, np.eye(2), 10, "g0"),
              (integ, np.eye(3), 1, "steps"))
     for model, g0, steps, field in cases:
-        with pytest.raises(ModelError) as e:
+        with pytest.raises(ArgumentError) as e:
             rest_to_rest(model, g0, np.eye(3), 1.0, steps)
         assert e.value.field == field and "\n" not in str(e.value)
