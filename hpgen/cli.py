@@ -127,7 +127,7 @@ def _scheme_line(module_dir, args) -> str:
 def cmd_run(args) -> int:
     from .api import build_module
     from .runtime import load
-    from .runtime.recorder import record_to_npz
+    from .runtime.chunked_output import record_to_npz
 
     model = _load_model(args.model)
     if model.scene is None:

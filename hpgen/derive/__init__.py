@@ -23,7 +23,7 @@ from ..schemes import RKMK
 from .action import step_equations
 from .lagrangian import lagrangian_function, open_functions, to_casadi
 from .linearize import step_partials
-from .records import record_row, velocity_step
+from .record_kernel import record_row, velocity_step
 from ..abi import OPEN_EXTRA
 from .step import KERNEL_NAMES, DiscreteStep, Kernel, OpenSpec
 

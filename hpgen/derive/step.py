@@ -5,7 +5,7 @@ The kernels, their order and the sizes of their positional inputs and outputs ar
 generated-module contract, hpgen.abi.KERNELS (inputs and outputs dense column vectors of
 doubles, matrices flattened column-major, h a 1-vector); ``Kernel.inputs/outputs`` name the
 arguments (e.g. ("z", "g", "p", "h")). The record row's layout is described in
-hpgen.derive.records and checked by hpgen.abi.record_width.
+hpgen.derive.record_kernel and checked by hpgen.abi.record_width.
 """
 from __future__ import annotations
 
@@ -74,7 +74,7 @@ class DiscreteStep:
     kernels: tuple               # tuple[Kernel, ...], in KERNEL_NAMES order
     section: str | None = None   # the scene's Poincare section text (None: kernel section = 1)
     legendre_quadratic: bool = False   # d2l/dxi2 free of xi: observe's xi is exact
-    record_layout: tuple = ()    # ((name, offset, shape), ...): see hpgen.derive.records
+    record_layout: tuple = ()    # ((name, offset, shape), ...): see hpgen.derive.record_kernel
     step_uses_g: bool = True     # residual or update_p depend on g
     record_uses_g: bool = True   # the record row depends on g
     record_uses_xi: bool = True  # the record row depends on xi (velocity_step needed)

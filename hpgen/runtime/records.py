@@ -124,7 +124,7 @@ def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts, ru
     the initial state); raises the chunk's error (with .partial) on a failure. ``run``: the
     run to advance (default a new one at gf, mu0, z0); one restored from a snapshot
     (``backend.restore``) after k > 0 steps continues at step k without record 0, bitwise as
-    the uninterrupted run (hpgen.runtime.recorder's resume). inputs: an open module's
+    the uninterrupted run (hpgen.runtime.chunked_output's resume). inputs: an open module's
     StepInputs; t_start: the time of step 0."""
     if run is None:
         run = backend.start(gf, mu0, z0) if inputs is None else \

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 from conftest import EXAMPLES
-from hpgen.runtime.recorder import load_partial, partial_dir
+from hpgen.runtime.chunked_output import load_partial, partial_dir
 
 STEPS, CHUNK = 2_000_000, 5000
 SCHEME = ("--tableau", "stormer-verlet", "--tau", "cay", "--rkmk", "truncated")

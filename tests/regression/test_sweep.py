@@ -293,7 +293,7 @@ def test_result_type(body):
 def test_run_progress_bar_keeps_the_file(body, tmp_path, capsys):
     """record_to_npz (hpgen run) with its bar on gives the same file as without."""
     pytest.importorskip("tqdm")
-    from hpgen.runtime.recorder import record_to_npz
+    from hpgen.runtime.chunked_output import record_to_npz
     kw = dict(g0=np.eye(3), h=H, steps=50, xi0=W0[0], every=5, chunk=20)
     a, _ = record_to_npz(body, tmp_path / "a.npz", progress=False, **kw)
     assert capsys.readouterr().err == ""

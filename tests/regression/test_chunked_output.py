@@ -1,4 +1,4 @@
-"""Chunked runs to disk (hpgen.runtime.recorder, ``hpgen run --chunk``): the file equals the
+"""Chunked runs to disk (hpgen.runtime.chunked_output, ``hpgen run --chunk``): the file equals the
 one the whole run saves from memory, with partial runs saved before the failure."""
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ from conftest import EXAMPLES
 from hpgen import compile as hpgen_compile
 from hpgen.errors import ConvergenceError
 from hpgen.model import load_model
-from hpgen.runtime.recorder import record_to_npz
+from hpgen.runtime.chunked_output import record_to_npz
 
 NAMES = ("g", "mu", "xi", "energy", "momentum", "defect")
 

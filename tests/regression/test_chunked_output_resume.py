@@ -1,4 +1,4 @@
-"""record_to_npz interrupted after some chunks and resumed (hpgen.runtime.recorder), in
+"""record_to_npz interrupted after some chunks and resumed (hpgen.runtime.chunked_output), in
 process, for the backends' run snapshots: C (the hpgen_run bytes), Python with the printed
 linear solver (J^{-1} kept as a tuple) and with the numpy solver (nz > 12: an array). The
 resumed file's arrays equal the uninterrupted run's bitwise, Newton counts included."""
@@ -10,7 +10,7 @@ import pytest
 from conftest import EXAMPLES
 from hpgen import compile as hpgen_compile
 from hpgen.model import load_model
-from hpgen.runtime.recorder import load_partial, partial_dir, record_to_npz
+from hpgen.runtime.chunked_output import load_partial, partial_dir, record_to_npz
 
 CASES = [("heavy_top", "gauss2", "exp", "c", 240), ("heavy_top", "gauss2", "exp", "python", 120),
          ("underwater_vehicle", "gauss2", "cay", "python", 40)]
