@@ -125,18 +125,6 @@ def locked(cache_dir: Path, key: str):
             fcntl.flock(fh, fcntl.LOCK_UN)
 
 
-def write_file(path: Path, data: bytes | str) -> None:
-    """Write one file atomically (a temp file beside it, renamed into place)."""
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.tmp-", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data.encode() if isinstance(data, str) else data)
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-
-
 def write_tree(dest: Path, files: dict[str, bytes | str], manifest: bool = True,
                unlisted: dict[str, bytes] | None = None) -> Path:
     """Write files into ``dest`` atomically: a temp dir beside it, renamed into place.

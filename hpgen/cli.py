@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import shlex
 import signal
+import os
 import sys
 import time
 from pathlib import Path
@@ -365,6 +366,11 @@ def main(argv=None) -> int:
         return 1
     except KeyboardInterrupt as e:
         return _interrupted(e)
+    except BrokenPipeError:
+        # the reader of stdout went away (hpgen list | head): stop quietly, as cat does
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 141
 
 
 if __name__ == "__main__":

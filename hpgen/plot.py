@@ -26,15 +26,14 @@ from __future__ import annotations
 
 import csv
 import math
-import os
 import struct
-import tempfile
 import zipfile
 from pathlib import Path
 from types import SimpleNamespace
 
 import numpy as np
 
+from .files import atomic_output
 from .errors import HpgenError, ModelError
 
 MAX_POINTS = 4000
@@ -163,20 +162,12 @@ def _pyplot():
 
 
 def _save(fig, path: Path) -> Path:
-    """savefig into a temp file next to ``path``, then os.replace (atomic); the file gets
-    the permissions of a plain open() (mkstemp's are 0600)."""
+    """savefig to ``path`` atomically (hpgen.files.atomic_output)."""
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".png", dir=path.parent)
-    os.close(fd)
     try:
-        fig.savefig(tmp, dpi=110)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
-        os.replace(tmp, path)
+        with atomic_output(path) as fh:
+            fig.savefig(fh, dpi=110, format="png")
     finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
         import matplotlib.pyplot as plt
         plt.close(fig)
     return path

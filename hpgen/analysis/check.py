@@ -55,13 +55,12 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import tempfile
 import time
 from pathlib import Path
 
 import numpy as np
 
+from ..files import write_file
 from .. import __version__
 from ..errors import ModelError
 from .rkmk import RKMK4, ContinuousEquations
@@ -357,16 +356,7 @@ def write_json(report: dict, path) -> Path:
     """Write the report as JSON atomically (temp file + os.replace)."""
     path = Path(path)
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp",
-                                   dir=path.parent if str(path.parent) else ".")
+        write_file(path, json.dumps(report, indent=2) + "\n")
     except OSError as e:
         raise ModelError(f"cannot write the JSON report ({e.strerror})", file=str(path)) from None
-    try:
-        with os.fdopen(fd, "w") as fh:
-            json.dump(report, fh, indent=2)
-            fh.write("\n")
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
     return path

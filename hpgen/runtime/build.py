@@ -31,6 +31,7 @@ import sys
 import tempfile
 from pathlib import Path
 
+from ..files import write_file
 from .. import cache
 from ..errors import BuildError
 
@@ -189,7 +190,7 @@ def _compile(source: Path, target: Path, digest: str, argv, extra) -> Path:
             record = {"sha256": hashlib.sha256(Path(tmp).read_bytes()).hexdigest(),
                       "source_sha256": digest, "compiler": list(argv),
                       "cflags": list(DEFAULT_CFLAGS) + list(extra) + list(LIBS)}
-            cache.write_file(_record_path(target), json.dumps(record, indent=1) + "\n")
+            write_file(_record_path(target), json.dumps(record, indent=1) + "\n")
             os.replace(tmp, target)
         finally:
             if os.path.exists(tmp):

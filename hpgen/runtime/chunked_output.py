@@ -34,14 +34,13 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
 import shutil
-import tempfile
 import zipfile
 from pathlib import Path
 
 import numpy as np
 
+from ..files import atomic_output, write_file
 from ..errors import ConvergenceError, ModelError
 from .args import _int
 from .progress import bar as progress_bar
@@ -307,10 +306,8 @@ class _Folder:
     def assemble(self, path: Path, prog: _Progress, meta: dict):
         """Stream the chunk files 0 .. prog.chunks - 1 into the .npz ``path`` (atomically)."""
         files = [self.parts / _chunk_name(i) for i in range(prog.chunks)]
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=self.parts)
-        try:
-            with os.fdopen(fd, "wb") as fh, zipfile.ZipFile(fh, "w", zipfile.ZIP_STORED,
-                                                            allowZip64=True) as zf:
+        with atomic_output(path, directory=self.parts) as fh:
+            with zipfile.ZipFile(fh, "w", zipfile.ZIP_STORED, allowZip64=True) as zf:
                 with np.load(files[0]) as first:
                     names = [k for k in first.files if not k.startswith(_STATE)]
                     heads = {k: (first[k].dtype, first[k].shape[1:]) for k in names}
@@ -337,10 +334,6 @@ class _Folder:
                 for name, value in meta.items():
                     with zf.open(name + ".npy", "w", force_zip64=True) as f:
                         np.lib.format.write_array(f, np.asanyarray(value), allow_pickle=False)
-            os.replace(tmp, path)
-        finally:
-            if os.path.exists(tmp):
-                os.unlink(tmp)
 
 
 def _chunk_name(i: int) -> str:
@@ -348,14 +341,7 @@ def _chunk_name(i: int) -> str:
 
 
 def _write_text(path: Path, text: str):
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w") as fh:
-            fh.write(text)
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
+    write_file(path, text)
 
 
 def _npz_names(file: Path) -> list:

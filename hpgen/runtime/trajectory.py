@@ -8,13 +8,13 @@ the records up to the last step completed before a failure.
 """
 from __future__ import annotations
 
-import os
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+
+from ..files import atomic_output
 
 
 @dataclass(frozen=True, eq=False)
@@ -114,15 +114,8 @@ def run_metadata(integrator, h, every, partial, newton_iterations, error) -> dic
 def write_npz(path: Path, data: dict) -> None:
     """np.savez to a temp file in path's directory, then os.replace (atomic). Arrays may be
     memory maps: np.savez streams them in buffers."""
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp",
-                               dir=path.parent if str(path.parent) else ".")
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            np.savez(fh, **data)
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
+    with atomic_output(path) as fh:
+        np.savez(fh, **data)
 
 
 @dataclass(frozen=True, eq=False)
