@@ -226,17 +226,19 @@ class RecordsMixin:
         return chunks[0]
 
     def record_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
-                     newton: NewtonOptions | None = None, progress=None) -> list:
+                     newton: NewtonOptions | None = None, u=None, params=None, t0=0.0,
+                     progress=None) -> list:
         """``record`` for an ensemble (starts as in ``simulate_batch``), in C over ``threads``
         threads (default: the CPU count); each run's rows are bitwise those of ``record`` on
         its own. Returns B Records; a failed run's Records is partial with ``.error`` set
-        (nothing is raised). progress: as for ``simulate_batch``."""
-        self._closed_only("record_batch")
-        h, steps, every, opts, threads, gs, ms, z0s, _ = self._prepare_batch(
-            g0, h, steps, xi0, mu0, every, threads, newton, "record_batch")
+        (nothing is raised). u, params, t0 and progress: as for ``simulate_batch`` (a params
+        value with a leading axis of length B is a sweep: run b takes entry b)."""
+        h, steps, every, opts, threads, gs, ms, z0s, inputs = self._prepare_batch(
+            g0, h, steps, xi0, mu0, every, threads, newton, "record_batch", u, params, t0)
         _fits(len(gs) * (steps // every + 1), self._b.record_width or 1, "record_batch")
         with progress_bar(len(gs), "record_batch", "member", progress) as bar:
             rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps, every, opts,
-                                                     threads, bar)
-        return [make_records(self, rows[b, :n_rows[b]], sts[b], h, every, 0)
+                                                     threads, bar, inputs)
+        t_start = float(t0)
+        return [make_records(self, rows[b, :n_rows[b]], sts[b], h, every, 0, t_start)
                 for b in range(len(gs))]

@@ -10,8 +10,8 @@ import numpy as np
 
 from ..errors import ModelError
 from .. import abi
-from .args import _error, _int, _step_size
-from .inputs import step_inputs
+from .args import _error, _int, _positive, _step_size
+from .inputs import batch_inputs, step_inputs
 from .newton import NewtonOptions
 from .trajectory import SectionCrossings
 
@@ -73,26 +73,32 @@ class SectionsMixin:
 
     def sections_batch(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
                        threads=None, chunk=100_000, *,
-                       newton: NewtonOptions | None = None) -> list:
+                       newton: NewtonOptions | None = None, u=None, params=None,
+                       t0=0.0) -> list:
         """``sections`` for B initial states (g0 (n, n) shared or (B, n, n); xi0 or mu0
         (B, d)), the runs spread over ``threads`` threads (default: the CPU count); each
         result is bitwise that of ``sections`` on its own. A failed run's SectionCrossings
-        is partial with ``.error`` set (nothing is raised)."""
+        is partial with ``.error`` set (nothing is raised). u, params, t0: as for
+        ``simulate_batch`` (a params value with a leading axis of length B is a sweep)."""
         from concurrent.futures import ThreadPoolExecutor
-        self._closed_only("sections_batch")
         h, steps, cap_total, chunk, opts = self._section_args(h, steps, max_crossings, chunk,
                                                              newton)
-        starts = self._batch_starts(g0, xi0, mu0)
+        init = xi0 if xi0 is not None else mu0
+        B = len(init) if hasattr(init, "__len__") else 0
+        inputs = batch_inputs(self.open, B, steps, u, params, t0) if B else None
+        lvs = None if inputs is None else [self._lv(i.t0, i.params) for i in inputs]
+        starts = self._batch_starts(g0, xi0, mu0, lvs)
         threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
 
-        def one(start):
-            gf, m0, x0 = start
-            return self._sections_run(gf, m0, x0, h, steps, cap_total, chunk, opts)
+        def one(b):
+            gf, m0, x0 = starts[b]
+            return self._sections_run(gf, m0, x0, h, steps, cap_total, chunk, opts,
+                                      None if inputs is None else inputs[b])
 
         if threads == 1 or self.backend != "c":
-            return [one(st) for st in starts]
+            return [one(b) for b in range(len(starts))]
         with ThreadPoolExecutor(min(threads, len(starts))) as pool:
-            return list(pool.map(one, starts))
+            return list(pool.map(one, range(len(starts))))
 
     def _section_args(self, h, steps, max_crossings, chunk, newton):
         """(h, steps, crossing cap or None, chunk, options), checked; the module must have a
