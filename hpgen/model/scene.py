@@ -33,6 +33,10 @@ from .types import RecordExpr, Scene, SectionSpec
 SCENE_KEYS = ("h", "steps", "duration", "initial", "record", "every", "section")
 INITIAL_KEYS = ("g", "xi", "mu")
 RECORDABLE = ("g", "mu", "xi", "energy", "momentum", "defect")
+#: record names of a forced model only (the loader refuses them without forces, and refuses
+#: them as expression labels with forces): the power <f, xi> at the record and the work done
+#: by the forces since the start
+FORCED_RECORDABLE = ("power", "work")
 ON_GROUP_TOL = 1e-10
 MAX_STEPS = 2**31 - 1
 LABEL = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}")
@@ -267,7 +271,7 @@ def _record(doc, rec, group, parameters):
             _record_label(doc, rpath + (i, label), label, seen)
             exprs.append(_record_expr(doc, rpath + (i, label), label, text, group, parameters))
             r = label
-        elif not isinstance(r, str) or r not in RECORDABLE:
+        elif not isinstance(r, str) or r not in RECORDABLE + FORCED_RECORDABLE:
             raise doc.error(rpath + (i,), f"expected one of {', '.join(RECORDABLE)} or a mapping "
                                           f"{{label: expression}}, got {_describe(doc, r)}")
         elif r in seen:
