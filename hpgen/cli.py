@@ -164,9 +164,11 @@ def cmd_run(args) -> int:
     print(f"{model.name}: {ran} steps of h = {h:g} in {wall:.3f} s "
           f"({wall / max(ran, 1) * 1e6:.2f} us/step, {args.backend}){resumed}; "
           f"{summary['samples']} samples -> {path}")
-    if summary["energy_max_change"] is not None:
+    if model.forced:                     # energy and momentum change: not conservation errors
+        print(_forced_line(summary))
+    elif summary["energy_max_change"] is not None:
         print(f"  energy error max |E - E0| = {float(summary['energy_max_change']):.3e}")
-    if summary["momentum_max_change"] is not None:
+    if summary["momentum_max_change"] is not None and not model.forced:
         print(_momentum_line(model, summary["momentum_max_change"], directions,
                              summary["conserved_max_change"]))
     _plot_run(path, args, integ)
@@ -193,6 +195,16 @@ def cmd_plot(args) -> int:
     for f in plot_file(args.file, out_dir=args.out_dir):
         print(f)
     return 0
+
+
+def _forced_line(summary) -> str:
+    """A forced model's energy figure: the energy-work balance E - W (docs/numerics.md sec.
+    13) when the scene records energy and work; else what to record for it."""
+    if summary.get("balance_max_change") is not None:
+        return ("  energy-work balance max |(E - W) - E0| = "
+                f"{float(summary['balance_max_change']):.3e} (forces: E alone is not conserved)")
+    return ("  forces: energy is not conserved; record energy and work for the energy-work "
+            "balance E - W")
 
 
 def _momentum_line(model, change, directions, conserved_change) -> str:

@@ -105,3 +105,23 @@ def test_work_is_not_a_label_of_a_forced_model(tmp_path):
     path.write_text(HEAVY_TOP + SCENE.replace("[energy, work, power]", '[{work: "xi[0]"}]'))
     with pytest.raises(ModelError, match="the label 'work' is a built-in record name"):
         hpgen.compile(path, cache_dir=tmp_path / "cache")
+
+
+def test_hpgen_run_prints_the_energy_work_balance(tops, tmp_path):
+    """hpgen run on a forced scene that records energy and work: the balance line (its value
+    the records' max |(E - W) - E_0|), no 'energy error' line."""
+    import re
+    import subprocess
+    import sys
+    path = tmp_path / "top.yaml"
+    path.write_text(HEAVY_TOP + SCENE)
+    run = subprocess.run([sys.executable, "-m", "hpgen", "run", str(path), "--out",
+                          str(tmp_path / "o.npz"), "--cache-dir", str(tmp_path / "cache"),
+                          "--tableau", "gauss2", "--tau", "cay", "--rkmk", "exact",
+                          "--no-plot"], capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stderr
+    assert "energy error" not in run.stdout
+    m = re.search(r"energy-work balance max \|\(E - W\) - E0\| = (\S+)", run.stdout)
+    out = np.load(tmp_path / "o.npz")
+    bal = out["energy"] - out["work"]
+    assert m and float(m.group(1)) == pytest.approx(np.abs(bal - bal[0]).max(), rel=1e-3)
