@@ -139,7 +139,7 @@ def cmd_run(args) -> int:
     integ = load(module_dir, backend=args.backend)
     print(_scheme_line(module_dir, args))
     out = Path(args.out or f"{model.name}.npz")
-    if getattr(sc, "section", None) is not None:
+    if sc.section is not None or sc.section_every_t is not None:
         return _run_sections(integ, model, sc, h, steps, out, args)
     directions = None
     if "momentum" in integ.record_names:
@@ -304,7 +304,7 @@ def _run_sections(integ, model, sc, h, steps, out, args) -> int:
     try:
         with _sigterm_raises():
             cr = integ.sections(g0=sc.g0, h=h, steps=steps, xi0=sc.xi0, mu0=sc.mu0,
-                                chunk=args.chunk)
+                                chunk=args.chunk, every_t=sc.section_every_t)
     except ConvergenceError as e:
         cr = e.partial
         if cr is None:
@@ -316,7 +316,9 @@ def _run_sections(integ, model, sc, h, steps, out, args) -> int:
     save(cr, None)
     print(f"{model.name}: {steps} steps of h = {h:g} in {wall:.3f} s "
           f"({wall / max(steps, 1) * 1e6:.2f} us/step, {args.backend}); "
-          f"{len(cr)} crossings of the section {sc.section.text!r} -> {path}")
+          + (f"{len(cr)} crossings of the section {sc.section.text!r}" if sc.section else
+             f"{len(cr)} samples of the section every_t = {sc.section_every_t:g}")
+          + f" -> {path}")
     _plot_run(path, args)
     return 0
 
