@@ -56,6 +56,7 @@
 #define casadi_f13 CASADI_PREFIX(f13)
 #define casadi_f14 CASADI_PREFIX(f14)
 #define casadi_f15 CASADI_PREFIX(f15)
+#define casadi_f16 CASADI_PREFIX(f16)
 #define casadi_f2 CASADI_PREFIX(f2)
 #define casadi_f3 CASADI_PREFIX(f3)
 #define casadi_f4 CASADI_PREFIX(f4)
@@ -72,6 +73,7 @@
 #define casadi_s2 CASADI_PREFIX(s2)
 #define casadi_s3 CASADI_PREFIX(s3)
 #define casadi_s4 CASADI_PREFIX(s4)
+#define casadi_s5 CASADI_PREFIX(s5)
 #define casadi_sq CASADI_PREFIX(sq)
 
 /* Symbol visibility in DLLs */
@@ -132,6 +134,7 @@ static const casadi_int casadi_s1[3] = {4, 1, 1};
 static const casadi_int casadi_s2[3] = {1, 1, 1};
 static const casadi_int casadi_s3[3] = {9, 1, 1};
 static const casadi_int casadi_s4[3] = {7, 1, 1};
+static const casadi_int casadi_s5[3] = {6, 1, 1};
 
 /* residual:(z[3],g[4],p,h[3])->(F[3]) */
 static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
@@ -2220,6 +2223,227 @@ CASADI_SYMBOL_EXPORT int record_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
   return 0;
 }
 
+/* step_partials:(z[3],g[4],p,h[3])->(Fs[6],Yz[6],Ys[4]) */
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19;
+  a00=5.0000000000000000e-01;
+  a01=arg[3]? arg[3][0] : 0;
+  a02=(a00*a01);
+  a03=1.;
+  a04=arg[0]? arg[0][0] : 0;
+  a05=(a01*a04);
+  a06=casadi_sq(a05);
+  a07=4.;
+  a06=(a06/a07);
+  a08=(a03-a06);
+  a06=(a03+a06);
+  a08=(a08/a06);
+  a09=arg[1]? arg[1][0] : 0;
+  a08=(a08*a09);
+  a05=(a05/a06);
+  a06=arg[1]? arg[1][2] : 0;
+  a05=(a05*a06);
+  a08=(a08+a05);
+  a08=(a02*a08);
+  a08=(a08/a01);
+  a08=(-a08);
+  if (res[0]!=0) res[0][0]=a08;
+  a08=arg[0]? arg[0][1] : 0;
+  a05=(a01*a08);
+  a10=casadi_sq(a05);
+  a10=(a10/a07);
+  a11=(a03-a10);
+  a10=(a03+a10);
+  a11=(a11/a10);
+  a11=(a11*a09);
+  a05=(a05/a10);
+  a05=(a05*a06);
+  a11=(a11+a05);
+  a02=(a02*a11);
+  a02=(a02/a01);
+  a02=(-a02);
+  if (res[0]!=0) res[0][1]=a02;
+  a02=0.;
+  if (res[0]!=0) res[0][2]=a02;
+  if (res[0]!=0) res[0][3]=a02;
+  if (res[0]!=0) res[0][4]=a02;
+  if (res[0]!=0) res[0][5]=a03;
+  a11=3.0000000000000004e+00;
+  a05=(a11*a04);
+  a10=4.6410161513775439e-01;
+  a10=(a10*a08);
+  a05=(a05+a10);
+  a05=(a00*a05);
+  a10=-6.4641016151377553e+00;
+  a10=(a10*a04);
+  a11=(a11*a08);
+  a10=(a10+a11);
+  a00=(a00*a10);
+  a05=(a05+a00);
+  a05=(a01*a05);
+  a00=casadi_sq(a05);
+  a00=(a00/a07);
+  a07=(a03-a00);
+  a03=(a03+a00);
+  a07=(a07/a03);
+  a00=(a06*a07);
+  a10=(a05/a03);
+  a11=(a09*a10);
+  a00=(a00-a11);
+  a11=-1.7320508075688774e+00;
+  a11=(a11*a01);
+  a08=(a11/a03);
+  a04=(a10/a03);
+  a12=2.5000000000000000e-01;
+  a05=(2.*a05);
+  a11=(a05*a11);
+  a11=(a12*a11);
+  a13=(a04*a11);
+  a08=(a08-a13);
+  a13=(a06*a08);
+  a14=(a11/a03);
+  a15=(a07/a03);
+  a16=(a15*a11);
+  a14=(a14+a16);
+  a16=(a09*a14);
+  a13=(a13-a16);
+  a13=(a00*a13);
+  a16=arg[1]? arg[1][3] : 0;
+  a17=(a16*a07);
+  a18=arg[1]? arg[1][1] : 0;
+  a19=(a18*a10);
+  a17=(a17-a19);
+  a08=(a16*a08);
+  a14=(a18*a14);
+  a08=(a08-a14);
+  a08=(a17*a08);
+  a13=(a13+a08);
+  if (res[1]!=0) res[1][0]=a13;
+  a13=arg[0]? arg[0][2] : 0;
+  a11=(a13*a11);
+  if (res[1]!=0) res[1][1]=a11;
+  a11=1.7320508075688774e+00;
+  a11=(a11*a01);
+  a01=(a11/a03);
+  a05=(a05*a11);
+  a12=(a12*a05);
+  a04=(a04*a12);
+  a01=(a01-a04);
+  a04=(a06*a01);
+  a05=(a12/a03);
+  a15=(a15*a12);
+  a05=(a05+a15);
+  a15=(a09*a05);
+  a04=(a04-a15);
+  a04=(a00*a04);
+  a01=(a16*a01);
+  a05=(a18*a05);
+  a01=(a01-a05);
+  a01=(a17*a01);
+  a04=(a04+a01);
+  if (res[1]!=0) res[1][2]=a04;
+  a13=(a13*a12);
+  if (res[1]!=0) res[1][3]=a13;
+  if (res[1]!=0) res[1][4]=a02;
+  if (res[1]!=0) res[1][5]=a03;
+  a06=(a07*a06);
+  a09=(a10*a09);
+  a06=(a06-a09);
+  a00=(a00*a06);
+  a07=(a07*a16);
+  a10=(a10*a18);
+  a07=(a07-a10);
+  a17=(a17*a07);
+  a00=(a00+a17);
+  if (res[2]!=0) res[2][0]=a00;
+  if (res[2]!=0) res[2][1]=a02;
+  if (res[2]!=0) res[2][2]=a02;
+  if (res[2]!=0) res[2][3]=a02;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int step_partials(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f16(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int step_partials_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void step_partials_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void step_partials_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void step_partials_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int step_partials_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int step_partials_n_out(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_real step_partials_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* step_partials_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* step_partials_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "Fs";
+    case 1: return "Yz";
+    case 2: return "Ys";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* step_partials_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s2;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* step_partials_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s5;
+    case 1: return casadi_s5;
+    case 2: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int step_partials_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 3;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int step_partials_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 3*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
 
 
 /* ======================= end of CasADi-generated code =================================== */
@@ -2325,6 +2549,7 @@ static int hpgen_k_observe(const double* in0, const double* in1, const double* i
 static int hpgen_k_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
 static int hpgen_k_velocity_step(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
 static int hpgen_k_record(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2);
 
 /* residual(z[3], g[4], p[1], h[3]) -> (F[3]) */
 #define HPGEN_RESIDUAL_SZ_ARG 4
@@ -2756,6 +2981,35 @@ static int hpgen_k_record(const double* in0, const double* in1, const double* in
 
 HPGEN_EXPORT int hpgen_kernel_record(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
     return hpgen_k_record(in0, in1, in2, in3, out0);
+}
+
+/* step_partials(z[3], g[4], p[1], h[3]) -> (Fs[6], Yz[6], Ys[4]) */
+#define HPGEN_STEP_PARTIALS_SZ_ARG 4
+#define HPGEN_STEP_PARTIALS_SZ_RES 3
+#define HPGEN_STEP_PARTIALS_SZ_IW 0
+#define HPGEN_STEP_PARTIALS_SZ_W 20
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_step_partials exports it */
+static int hpgen_k_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2) {
+    const casadi_real* arg[HPGEN_STEP_PARTIALS_SZ_ARG + 1];
+    casadi_real* res[HPGEN_STEP_PARTIALS_SZ_RES + 1];
+    casadi_int iw[HPGEN_STEP_PARTIALS_SZ_IW + 1];
+    casadi_real w[HPGEN_STEP_PARTIALS_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    res[1] = out1;
+    res[2] = out2;
+    flag = step_partials(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2) {
+    return hpgen_k_step_partials(in0, in1, in2, in3, out0, out1, out2);
 }
 
 /* ---- dense linear algebra and Newton ---- */
@@ -3345,3 +3599,4 @@ HPGEN_EXPORT long long hpgen_advance_batch(hpgen_run* runs, long long B, double 
     }
     return failed;
 }
+

@@ -1751,6 +1751,219 @@ def record(g, p, xi, h):
     return [_fromiter(_r[0], _F64, 7)]
 
 
+def _raw_step_partials(z, g, p, h):
+    """step_partials on lists of Python floats -> [Fs[6], Yz[6], Ys[4]] as lists (see RAW)"""
+    try:
+        w0, w1, w2 = z
+        w3, w6, w4, w5 = g
+        w7, _, _ = h
+        r0 = [0.0] * 6
+        r1 = [0.0] * 6
+        r2 = [0.0] * 4
+        w8 = 0.5 * w7
+        w9 = w7 * w0
+        w10 = (w9 * w9) * 0.25
+        w11 = 1.0 + w10
+        r0[0] = -((w8 * ((((1.0 - w10) / w11) * w3) + ((w9 / w11) * w4))) / w7)
+        w9 = w7 * w1
+        w10 = (w9 * w9) * 0.25
+        w11 = 1.0 + w10
+        r0[1] = -((w8 * ((((1.0 - w10) / w11) * w3) + ((w9 / w11) * w4))) / w7)
+        r0[2] = 0.0
+        r0[3] = 0.0
+        r0[4] = 0.0
+        r0[5] = 1.0
+        w0 = w7 * ((0.5 * ((3.0000000000000004 * w0) + (0.4641016151377544 * w1))) + (0.5 * (((-6.464101615137755) * w0) + (3.0000000000000004 * w1))))
+        w1 = (w0 * w0) * 0.25
+        w8 = 1.0 + w1
+        w1 = (1.0 - w1) / w8
+        w9 = w0 / w8
+        w10 = (w4 * w1) - (w3 * w9)
+        w11 = (-1.7320508075688774) * w7
+        w12 = w9 / w8
+        w0 = 2.0 * w0
+        w13 = 0.25 * (w0 * w11)
+        w11 = (w11 / w8) - (w12 * w13)
+        w14 = w1 / w8
+        w15 = (w13 / w8) + (w14 * w13)
+        w1 = (w5 * w1) - (w6 * w9)
+        r1[0] = (w10 * ((w4 * w11) - (w3 * w15))) + (w1 * ((w5 * w11) - (w6 * w15)))
+        r1[1] = w2 * w13
+        w7 = 1.7320508075688774 * w7
+        w0 = 0.25 * (w0 * w7)
+        w7 = (w7 / w8) - (w12 * w0)
+        w9 = (w0 / w8) + (w14 * w0)
+        r1[2] = (w10 * ((w4 * w7) - (w3 * w9))) + (w1 * ((w5 * w7) - (w6 * w9)))
+        r1[3] = w2 * w0
+        r1[4] = 0.0
+        r1[5] = w8
+        r2[0] = (w10 * w10) + (w1 * w1)
+        r2[1] = 0.0
+        r2[2] = 0.0
+        r2[3] = 0.0
+    except (ArithmeticError, ValueError):
+        # a zero divisor or a math domain/range error: recompute with C semantics
+        r0 = [0.0] * 6
+        r1 = [0.0] * 6
+        r2 = [0.0] * 4
+        w0 = 0.5
+        w1 = h[0]
+        w2 = w0 * w1
+        w3 = 1.0
+        w4 = z[0]
+        w5 = w1 * w4
+        w6 = w5 * w5
+        w7 = 4.0
+        w6 = w6 / w7 if w7 else _div(w6, w7)
+        w8 = w3 - w6
+        w6 = w3 + w6
+        w8 = w8 / w6 if w6 else _div(w8, w6)
+        w9 = g[0]
+        w8 = w8 * w9
+        w5 = w5 / w6 if w6 else _div(w5, w6)
+        w6 = g[2]
+        w5 = w5 * w6
+        w8 = w8 + w5
+        w8 = w2 * w8
+        w8 = w8 / w1 if w1 else _div(w8, w1)
+        w8 = -w8
+        r0[0] = w8
+        w8 = z[1]
+        w5 = w1 * w8
+        w10 = w5 * w5
+        w10 = w10 / w7 if w7 else _div(w10, w7)
+        w11 = w3 - w10
+        w10 = w3 + w10
+        w11 = w11 / w10 if w10 else _div(w11, w10)
+        w11 = w11 * w9
+        w5 = w5 / w10 if w10 else _div(w5, w10)
+        w5 = w5 * w6
+        w11 = w11 + w5
+        w2 = w2 * w11
+        w2 = w2 / w1 if w1 else _div(w2, w1)
+        w2 = -w2
+        r0[1] = w2
+        w2 = 0.0
+        r0[2] = w2
+        r0[3] = w2
+        r0[4] = w2
+        r0[5] = w3
+        w11 = 3.0000000000000004
+        w5 = w11 * w4
+        w10 = 0.4641016151377544
+        w10 = w10 * w8
+        w5 = w5 + w10
+        w5 = w0 * w5
+        w10 = -6.464101615137755
+        w10 = w10 * w4
+        w11 = w11 * w8
+        w10 = w10 + w11
+        w0 = w0 * w10
+        w5 = w5 + w0
+        w5 = w1 * w5
+        w0 = w5 * w5
+        w0 = w0 / w7 if w7 else _div(w0, w7)
+        w7 = w3 - w0
+        w3 = w3 + w0
+        w7 = w7 / w3 if w3 else _div(w7, w3)
+        w0 = w6 * w7
+        w10 = w5 / w3 if w3 else _div(w5, w3)
+        w11 = w9 * w10
+        w0 = w0 - w11
+        w11 = -1.7320508075688774
+        w11 = w11 * w1
+        w8 = w11 / w3 if w3 else _div(w11, w3)
+        w4 = w10 / w3 if w3 else _div(w10, w3)
+        w12 = 0.25
+        w5 = 2.0 * w5
+        w11 = w5 * w11
+        w11 = w12 * w11
+        w13 = w4 * w11
+        w8 = w8 - w13
+        w13 = w6 * w8
+        w14 = w11 / w3 if w3 else _div(w11, w3)
+        w15 = w7 / w3 if w3 else _div(w7, w3)
+        w16 = w15 * w11
+        w14 = w14 + w16
+        w16 = w9 * w14
+        w13 = w13 - w16
+        w13 = w0 * w13
+        w16 = g[3]
+        w17 = w16 * w7
+        w18 = g[1]
+        w19 = w18 * w10
+        w17 = w17 - w19
+        w8 = w16 * w8
+        w14 = w18 * w14
+        w8 = w8 - w14
+        w8 = w17 * w8
+        w13 = w13 + w8
+        r1[0] = w13
+        w13 = z[2]
+        w11 = w13 * w11
+        r1[1] = w11
+        w11 = 1.7320508075688774
+        w11 = w11 * w1
+        w1 = w11 / w3 if w3 else _div(w11, w3)
+        w5 = w5 * w11
+        w12 = w12 * w5
+        w4 = w4 * w12
+        w1 = w1 - w4
+        w4 = w6 * w1
+        w5 = w12 / w3 if w3 else _div(w12, w3)
+        w15 = w15 * w12
+        w5 = w5 + w15
+        w15 = w9 * w5
+        w4 = w4 - w15
+        w4 = w0 * w4
+        w1 = w16 * w1
+        w5 = w18 * w5
+        w1 = w1 - w5
+        w1 = w17 * w1
+        w4 = w4 + w1
+        r1[2] = w4
+        w13 = w13 * w12
+        r1[3] = w13
+        r1[4] = w2
+        r1[5] = w3
+        w6 = w7 * w6
+        w9 = w10 * w9
+        w6 = w6 - w9
+        w0 = w0 * w6
+        w7 = w7 * w16
+        w10 = w10 * w18
+        w7 = w7 - w10
+        w17 = w17 * w7
+        w0 = w0 + w17
+        r2[0] = w0
+        r2[1] = w2
+        r2[2] = w2
+        r2[3] = w2
+    return [r0, r1, r2]
+
+
+def step_partials(z, g, p, h):
+    """step_partials(z[3], g[4], p[1], h[3]) -> [Fs[6], Yz[6], Ys[4]]"""
+    if _type(z) is _NDARRAY and z.dtype is _F64 and z.shape == (3,):
+        z = z.tolist()
+    else:
+        z = _vec(z, 3, "step_partials: z")
+    if _type(g) is _NDARRAY and g.dtype is _F64 and g.shape == (4,):
+        g = g.tolist()
+    else:
+        g = _vec(g, 4, "step_partials: g")
+    if _type(p) is _NDARRAY and p.dtype is _F64 and p.shape == (1,):
+        p = p.tolist()
+    else:
+        p = _vec(p, 1, "step_partials: p")
+    if _type(h) is _NDARRAY and h.dtype is _F64 and h.shape == (3,):
+        h = h.tolist()
+    else:
+        h = _vec(h, 3, "step_partials: h")
+    _r = _raw_step_partials(z, g, p, h)
+    return [_fromiter(_r[0], _F64, 6), _fromiter(_r[1], _F64, 6), _fromiter(_r[2], _F64, 4)]
+
+
 KERNELS = {
     "residual": residual,
     "jacobian": jacobian,
@@ -1769,6 +1982,7 @@ KERNELS = {
     "update_p": update_p,
     "velocity_step": velocity_step,
     "record": record,
+    "step_partials": step_partials,
 }
 
 RAW = {
@@ -1789,6 +2003,7 @@ RAW = {
     "update_p": _raw_update_p,
     "velocity_step": _raw_velocity_step,
     "record": _raw_record,
+    "step_partials": _raw_step_partials,
 }
 
 
