@@ -13,10 +13,12 @@
  * Status codes (hpgen.abi.STATUS):
  *   HPGEN_OK = 0: ok
  *   HPGEN_NO_CONVERGENCE = 1: Newton did not converge
- *   HPGEN_NONFINITE = 2: a non-finite value (or a singular Jacobian) appeared
- *   HPGEN_DOMAIN = 3: the chart map tau left its domain (margin(z, h) <= 0)
+ *   HPGEN_NONFINITE = 2: Newton diverged: a non-finite value (or a singular Jacobian) appeared
+ *   HPGEN_DOMAIN = 3: the converged solution left the chart map tau's domain (margin(z, h) <= 0)
  *   HPGEN_RECORD = 4: a record row is not finite (or its velocity xi did not converge)
  *   HPGEN_INVALID = -1: invalid argument
+ * HPGEN_DOMAIN is a start or a converged solution outside tau's domain; a Newton failure is
+ * NO_CONVERGENCE or NONFINITE wherever its iterates went.
  */
 /* Standard headers first: the CasADi part below is compiled under hidden visibility. */
 #include <math.h>
@@ -3271,14 +3273,11 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
         return HPGEN_DOMAIN;
     }
     code = hpgen_newton(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm);
-    if (code != HPGEN_OK) {
-        *lu_valid = 0;
-        /* a failure at an iterate outside tau's domain is reported as a domain error */
-        if (!hpgen_k_margin(z, hv, m) && m[0] <= 0.0) return HPGEN_DOMAIN;
-        return code;
-    }
+    /* a Newton failure is reported as such (wherever its last iterate went): DOMAIN is a
+       converged solution outside tau's domain only */
+    if (code != HPGEN_OK) { *lu_valid = 0; return code; }
     if (hpgen_k_margin(z, hv, m)) return HPGEN_NONFINITE;
-    if (!(m[0] > 0.0)) return HPGEN_DOMAIN;
+    if (!(m[0] > 0.0)) { *lu_valid = 0; return HPGEN_DOMAIN; }
     if (!with_g) {
         if (hpgen_k_update_p(z, g, p, hv, p1) || !hpgen_all_finite(p1, HPGEN_D))
             return HPGEN_NONFINITE;
@@ -3357,7 +3356,7 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
                           const hpgen_options* full, hpgen_status* st, int with_g) {
     double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], res;
     long long it;
-    int i, code;
+    int i, code, predicted = o->predictor && r->have_prev >= 1;
     /* the step vector of step k: [h, t0 + k h, u_k, params] */
     if (r->u_rows < 1 || (r->u_rows > 1 && r->k >= r->u_rows)) {
         st->code = HPGEN_INVALID; st->step = r->k; return HPGEN_INVALID;
@@ -3377,8 +3376,16 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     /* the first step starts from the crude guess kernel: full Newton */
     code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? full : o, r->lu, r->piv,
                            &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0, with_g);
-    st->iterations = it;
     st->total_iterations += it;
+    if (code != HPGEN_OK && predicted) {
+        /* the extrapolated start failed (Newton diverged, or reached a root outside the
+           chart): retry from the plain warm start z_k before reporting anything */
+        memcpy(zs, r->z, sizeof zs);
+        code = hpgen_step_core(r->g, r->p, hv, zs, o, r->lu, r->piv, &r->lu_valid, g1, p1,
+                               &it, &st->jacobians, &res, 0, with_g);
+        st->total_iterations += it;
+    }
+    st->iterations = it;
     st->residual = res;
     if (code != HPGEN_OK) { st->code = code; st->step = r->k; return code; }
     memcpy(r->zprev2, r->zprev, sizeof r->z);
