@@ -2225,10 +2225,13 @@ CASADI_SYMBOL_EXPORT int record_work_bytes(casadi_int *sz_arg, casadi_int* sz_re
   return 0;
 }
 
-/* step_partials:(z[3],g[4],p,h[3])->(Fs[6],Yz[6],Ys[4]) */
+/* step_partials:(z[3],g[4],p,h[3])->(Fs[6],Yz[6],Ys[4],FH[9],YH[6]) */
 static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
   casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
-  casadi_real a12, a13, a14, a15, a16, a17, a18, a19;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53;
   a00=5.0000000000000000e-01;
   a01=arg[3]? arg[3][0] : 0;
   a02=(a00*a01);
@@ -2242,126 +2245,403 @@ static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw
   a06=(a03+a06);
   a08=(a08/a06);
   a09=arg[1]? arg[1][0] : 0;
-  a08=(a08*a09);
-  a05=(a05/a06);
-  a06=arg[1]? arg[1][2] : 0;
-  a05=(a05*a06);
-  a08=(a08+a05);
-  a08=(a02*a08);
-  a08=(a08/a01);
-  a08=(-a08);
-  if (res[0]!=0) res[0][0]=a08;
-  a08=arg[0]? arg[0][1] : 0;
-  a05=(a01*a08);
-  a10=casadi_sq(a05);
-  a10=(a10/a07);
-  a11=(a03-a10);
-  a10=(a03+a10);
-  a11=(a11/a10);
-  a11=(a11*a09);
-  a05=(a05/a10);
-  a05=(a05*a06);
-  a11=(a11+a05);
-  a02=(a02*a11);
-  a02=(a02/a01);
-  a02=(-a02);
-  if (res[0]!=0) res[0][1]=a02;
-  a02=0.;
-  if (res[0]!=0) res[0][2]=a02;
-  if (res[0]!=0) res[0][3]=a02;
-  if (res[0]!=0) res[0][4]=a02;
+  a10=(a08*a09);
+  a11=(a05/a06);
+  a12=arg[1]? arg[1][2] : 0;
+  a13=(a11*a12);
+  a10=(a10+a13);
+  a10=(a02*a10);
+  a10=(a10/a01);
+  a10=(-a10);
+  if (res[0]!=0) res[0][0]=a10;
+  a10=arg[0]? arg[0][1] : 0;
+  a13=(a01*a10);
+  a14=casadi_sq(a13);
+  a14=(a14/a07);
+  a15=(a03-a14);
+  a14=(a03+a14);
+  a15=(a15/a14);
+  a16=(a15*a09);
+  a17=(a13/a14);
+  a18=(a17*a12);
+  a16=(a16+a18);
+  a16=(a02*a16);
+  a16=(a16/a01);
+  a16=(-a16);
+  if (res[0]!=0) res[0][1]=a16;
+  a16=0.;
+  if (res[0]!=0) res[0][2]=a16;
+  if (res[0]!=0) res[0][3]=a16;
+  if (res[0]!=0) res[0][4]=a16;
   if (res[0]!=0) res[0][5]=a03;
-  a11=3.0000000000000004e+00;
-  a05=(a11*a04);
-  a10=4.6410161513775439e-01;
-  a10=(a10*a08);
-  a05=(a05+a10);
-  a05=(a00*a05);
-  a10=-6.4641016151377553e+00;
-  a10=(a10*a04);
-  a11=(a11*a08);
-  a10=(a10+a11);
-  a00=(a00*a10);
-  a05=(a05+a00);
-  a05=(a01*a05);
-  a00=casadi_sq(a05);
-  a00=(a00/a07);
-  a07=(a03-a00);
-  a03=(a03+a00);
+  a18=3.0000000000000004e+00;
+  a19=(a18*a04);
+  a20=4.6410161513775439e-01;
+  a20=(a20*a10);
+  a19=(a19+a20);
+  a20=(a00*a19);
+  a21=-6.4641016151377553e+00;
+  a21=(a21*a04);
+  a18=(a18*a10);
+  a21=(a21+a18);
+  a18=(a00*a21);
+  a20=(a20+a18);
+  a18=(a01*a20);
+  a22=casadi_sq(a18);
+  a22=(a22/a07);
+  a07=(a03-a22);
+  a03=(a03+a22);
   a07=(a07/a03);
-  a00=(a06*a07);
-  a10=(a05/a03);
-  a11=(a09*a10);
-  a00=(a00-a11);
-  a11=-1.7320508075688774e+00;
-  a11=(a11*a01);
-  a08=(a11/a03);
-  a04=(a10/a03);
-  a12=2.5000000000000000e-01;
-  a05=(2.*a05);
-  a11=(a05*a11);
-  a11=(a12*a11);
-  a13=(a04*a11);
-  a08=(a08-a13);
-  a13=(a06*a08);
-  a14=(a11/a03);
-  a15=(a07/a03);
-  a16=(a15*a11);
-  a14=(a14+a16);
-  a16=(a09*a14);
-  a13=(a13-a16);
-  a13=(a00*a13);
-  a16=arg[1]? arg[1][3] : 0;
-  a17=(a16*a07);
-  a18=arg[1]? arg[1][1] : 0;
-  a19=(a18*a10);
-  a17=(a17-a19);
-  a08=(a16*a08);
-  a14=(a18*a14);
-  a08=(a08-a14);
-  a08=(a17*a08);
-  a13=(a13+a08);
-  if (res[1]!=0) res[1][0]=a13;
-  a13=arg[0]? arg[0][2] : 0;
-  a11=(a13*a11);
-  if (res[1]!=0) res[1][1]=a11;
-  a11=1.7320508075688774e+00;
-  a11=(a11*a01);
-  a01=(a11/a03);
-  a05=(a05*a11);
-  a12=(a12*a05);
-  a04=(a04*a12);
-  a01=(a01-a04);
-  a04=(a06*a01);
-  a05=(a12/a03);
-  a15=(a15*a12);
-  a05=(a05+a15);
-  a15=(a09*a05);
-  a04=(a04-a15);
-  a04=(a00*a04);
-  a01=(a16*a01);
-  a05=(a18*a05);
-  a01=(a01-a05);
-  a01=(a17*a01);
-  a04=(a04+a01);
-  if (res[1]!=0) res[1][2]=a04;
-  a13=(a13*a12);
-  if (res[1]!=0) res[1][3]=a13;
-  if (res[1]!=0) res[1][4]=a02;
+  a22=(a12*a07);
+  a23=(a18/a03);
+  a24=(a09*a23);
+  a22=(a22-a24);
+  a24=-1.7320508075688774e+00;
+  a24=(a24*a01);
+  a25=(a24/a03);
+  a26=(a23/a03);
+  a27=2.5000000000000000e-01;
+  a18=(2.*a18);
+  a24=(a18*a24);
+  a24=(a27*a24);
+  a28=(a26*a24);
+  a25=(a25-a28);
+  a28=(a12*a25);
+  a29=(a24/a03);
+  a30=(a07/a03);
+  a31=(a30*a24);
+  a29=(a29+a31);
+  a31=(a09*a29);
+  a28=(a28-a31);
+  a28=(a22*a28);
+  a31=arg[1]? arg[1][3] : 0;
+  a32=(a31*a07);
+  a33=arg[1]? arg[1][1] : 0;
+  a34=(a33*a23);
+  a32=(a32-a34);
+  a25=(a31*a25);
+  a29=(a33*a29);
+  a25=(a25-a29);
+  a25=(a32*a25);
+  a28=(a28+a25);
+  if (res[1]!=0) res[1][0]=a28;
+  a28=arg[0]? arg[0][2] : 0;
+  a24=(a28*a24);
+  if (res[1]!=0) res[1][1]=a24;
+  a24=1.7320508075688774e+00;
+  a24=(a24*a01);
+  a25=(a24/a03);
+  a24=(a18*a24);
+  a24=(a27*a24);
+  a29=(a26*a24);
+  a25=(a25-a29);
+  a29=(a12*a25);
+  a34=(a24/a03);
+  a35=(a30*a24);
+  a34=(a34+a35);
+  a35=(a09*a34);
+  a29=(a29-a35);
+  a29=(a22*a29);
+  a25=(a31*a25);
+  a34=(a33*a34);
+  a25=(a25-a34);
+  a25=(a32*a25);
+  a29=(a29+a25);
+  if (res[1]!=0) res[1][2]=a29;
+  a24=(a28*a24);
+  if (res[1]!=0) res[1][3]=a24;
+  if (res[1]!=0) res[1][4]=a16;
   if (res[1]!=0) res[1][5]=a03;
-  a06=(a07*a06);
-  a09=(a10*a09);
-  a06=(a06-a09);
-  a00=(a00*a06);
-  a07=(a07*a16);
-  a10=(a10*a18);
-  a07=(a07-a10);
-  a17=(a17*a07);
-  a00=(a00+a17);
-  if (res[2]!=0) res[2][0]=a00;
-  if (res[2]!=0) res[2][1]=a02;
-  if (res[2]!=0) res[2][2]=a02;
-  if (res[2]!=0) res[2][3]=a02;
+  a24=(a07*a12);
+  a29=(a23*a09);
+  a24=(a24-a29);
+  a24=(a22*a24);
+  a07=(a07*a31);
+  a23=(a23*a33);
+  a07=(a07-a23);
+  a07=(a32*a07);
+  a24=(a24+a07);
+  if (res[2]!=0) res[2][0]=a24;
+  if (res[2]!=0) res[2][1]=a16;
+  if (res[2]!=0) res[2][2]=a16;
+  if (res[2]!=0) res[2][3]=a16;
+  a24=1.5000000000000002e+00;
+  a19=(a19/a06);
+  a07=(2.*a19);
+  a23=(a27*a01);
+  a07=(a07*a23);
+  a29=(a01*a28);
+  a29=(a00*a29);
+  a25=(a06*a29);
+  a07=(a07-a25);
+  a07=(a07/a02);
+  a25=(a07/a06);
+  a34=(a24*a25);
+  a35=-3.2320508075688776e+00;
+  a21=(a21/a14);
+  a36=(2.*a21);
+  a36=(a36*a23);
+  a37=(a14*a29);
+  a36=(a36-a37);
+  a36=(a36/a02);
+  a37=(a36/a14);
+  a38=(a35*a37);
+  a34=(a34+a38);
+  a05=(2.*a05);
+  a38=5.3867513459481287e-01;
+  a39=2.3205080756887719e-01;
+  a40=(a39*a25);
+  a41=(a24*a37);
+  a40=(a40+a41);
+  a41=(a01*a40);
+  a42=(a38*a41);
+  a42=(a29+a42);
+  a43=(a01*a34);
+  a44=(a27*a43);
+  a42=(a42+a44);
+  a44=(a19*a42);
+  a44=(a27*a44);
+  a45=(a05*a44);
+  a45=(a34-a45);
+  a46=(a05*a04);
+  a46=(a27*a46);
+  a47=(a45*a46);
+  a48=(a19/a06);
+  a48=(a48*a46);
+  a49=(-a48);
+  a49=(2.*a49);
+  a49=(a23*a49);
+  a50=(a00*a19);
+  a49=(a49+a50);
+  a50=(a29*a46);
+  a51=(a00*a28);
+  a52=(a06*a51);
+  a50=(a50+a52);
+  a49=(a49-a50);
+  a49=(a49/a02);
+  a07=(a07/a02);
+  a07=(a00*a07);
+  a49=(a49-a07);
+  a49=(a49/a06);
+  a25=(a25/a06);
+  a25=(a25*a46);
+  a49=(a49-a25);
+  a25=(a24*a49);
+  a07=(a21/a14);
+  a13=(2.*a13);
+  a50=(a13*a10);
+  a50=(a27*a50);
+  a07=(a07*a50);
+  a52=(-a07);
+  a52=(2.*a52);
+  a23=(a23*a52);
+  a52=(a00*a21);
+  a23=(a23+a52);
+  a52=(a29*a50);
+  a53=(a14*a51);
+  a52=(a52+a53);
+  a23=(a23-a52);
+  a23=(a23/a02);
+  a36=(a36/a02);
+  a36=(a00*a36);
+  a23=(a23-a36);
+  a23=(a23/a14);
+  a37=(a37/a14);
+  a37=(a37*a50);
+  a23=(a23-a37);
+  a35=(a35*a23);
+  a25=(a25+a35);
+  a35=(2.*a04);
+  a44=(a44*a35);
+  a39=(a39*a49);
+  a24=(a24*a23);
+  a39=(a39+a24);
+  a24=(a01*a39);
+  a24=(a40+a24);
+  a38=(a38*a24);
+  a38=(a51+a38);
+  a23=(a01*a25);
+  a34=(a34+a23);
+  a23=(a27*a34);
+  a38=(a38+a23);
+  a38=(a19*a38);
+  a42=(a42*a48);
+  a38=(a38-a42);
+  a38=(a27*a38);
+  a05=(a05*a38);
+  a44=(a44+a05);
+  a25=(a25-a44);
+  a25=(a06*a25);
+  a47=(a47+a25);
+  a25=-5.0000000000000000e-01;
+  a19=(a25*a19);
+  a44=arg[3]? arg[3][2] : 0;
+  a05=6.6666666666666663e-01;
+  a38=arg[3]? arg[3][1] : 0;
+  a42=2.1132486540518713e-01;
+  a42=(a42*a01);
+  a42=(a38+a42);
+  a42=(a05*a42);
+  a23=cos(a42);
+  a49=(a44*a23);
+  a19=(a19+a49);
+  a49=(a00*a19);
+  a48=(a25*a48);
+  a35=1.4088324360345808e-01;
+  a42=sin(a42);
+  a35=(a35*a42);
+  a35=(a44*a35);
+  a48=(a48+a35);
+  a48=(a02*a48);
+  a49=(a49-a48);
+  a49=(a47+a49);
+  a48=(a12*a08);
+  a35=(a09*a11);
+  a48=(a48-a35);
+  a35=(a00*a48);
+  a37=(a46/a06);
+  a08=(a08/a06);
+  a08=(a08*a46);
+  a37=(a37+a08);
+  a37=(a12*a37);
+  a04=(a04/a06);
+  a11=(a11/a06);
+  a11=(a11*a46);
+  a04=(a04-a11);
+  a04=(a09*a04);
+  a37=(a37+a04);
+  a37=(a02*a37);
+  a35=(a35-a37);
+  a49=(a49+a35);
+  a49=(a49/a01);
+  a06=(a06*a45);
+  a19=(a19*a02);
+  a06=(a06+a19);
+  a48=(a48*a02);
+  a06=(a06+a48);
+  a06=(a06/a01);
+  a06=(a06/a01);
+  a49=(a49-a06);
+  if (res[3]!=0) res[3][0]=a49;
+  a49=(a25*a21);
+  a06=7.8867513459481287e-01;
+  a06=(a06*a01);
+  a38=(a38+a06);
+  a38=(a05*a38);
+  a06=cos(a38);
+  a48=(a44*a06);
+  a49=(a49+a48);
+  a48=(a00*a49);
+  a25=(a25*a07);
+  a19=5.2578342306320858e-01;
+  a38=sin(a38);
+  a19=(a19*a38);
+  a19=(a44*a19);
+  a25=(a25+a19);
+  a25=(a02*a25);
+  a48=(a48-a25);
+  a25=(a12*a15);
+  a19=(a09*a17);
+  a25=(a25-a19);
+  a00=(a00*a25);
+  a19=(a50/a14);
+  a15=(a15/a14);
+  a15=(a15*a50);
+  a19=(a19+a15);
+  a19=(a12*a19);
+  a15=(a10/a14);
+  a17=(a17/a14);
+  a17=(a17*a50);
+  a15=(a15-a17);
+  a15=(a09*a15);
+  a19=(a19+a15);
+  a19=(a02*a19);
+  a00=(a00-a19);
+  a48=(a48+a00);
+  a41=(a27*a41);
+  a29=(a29+a41);
+  a41=-3.8675134594812879e-02;
+  a43=(a41*a43);
+  a29=(a29+a43);
+  a43=(a21*a29);
+  a43=(a27*a43);
+  a00=(a13*a43);
+  a40=(a40-a00);
+  a50=(a40*a50);
+  a10=(2.*a10);
+  a43=(a43*a10);
+  a24=(a27*a24);
+  a51=(a51+a24);
+  a41=(a41*a34);
+  a51=(a51+a41);
+  a21=(a21*a51);
+  a29=(a29*a07);
+  a21=(a21-a29);
+  a21=(a27*a21);
+  a13=(a13*a21);
+  a43=(a43+a13);
+  a39=(a39-a43);
+  a39=(a14*a39);
+  a50=(a50+a39);
+  a48=(a48+a50);
+  a48=(a48/a01);
+  a49=(a49*a02);
+  a25=(a25*a02);
+  a49=(a49+a25);
+  a14=(a14*a40);
+  a49=(a49+a14);
+  a49=(a49/a01);
+  a49=(a49/a01);
+  a48=(a48-a49);
+  if (res[3]!=0) res[3][1]=a48;
+  a18=(a18*a20);
+  a27=(a27*a18);
+  a28=(a28*a27);
+  a50=(a28+a50);
+  a50=(a50+a47);
+  a50=(-a50);
+  if (res[3]!=0) res[3][2]=a50;
+  a42=(a05*a42);
+  a42=(a44*a42);
+  a42=(a02*a42);
+  a42=(a42/a01);
+  a42=(-a42);
+  if (res[3]!=0) res[3][3]=a42;
+  a05=(a05*a38);
+  a44=(a44*a05);
+  a44=(a02*a44);
+  a44=(a44/a01);
+  a44=(-a44);
+  if (res[3]!=0) res[3][4]=a44;
+  if (res[3]!=0) res[3][5]=a16;
+  a23=(a02*a23);
+  a23=(a23/a01);
+  if (res[3]!=0) res[3][6]=a23;
+  a02=(a02*a06);
+  a02=(a02/a01);
+  if (res[3]!=0) res[3][7]=a02;
+  if (res[3]!=0) res[3][8]=a16;
+  a20=(a20/a03);
+  a26=(a26*a27);
+  a20=(a20-a26);
+  a12=(a12*a20);
+  a03=(a27/a03);
+  a30=(a30*a27);
+  a03=(a03+a30);
+  a09=(a09*a03);
+  a12=(a12-a09);
+  a22=(a22*a12);
+  a31=(a31*a20);
+  a33=(a33*a03);
+  a31=(a31-a33);
+  a32=(a32*a31);
+  a22=(a22+a32);
+  if (res[4]!=0) res[4][0]=a22;
+  if (res[4]!=0) res[4][1]=a28;
+  if (res[4]!=0) res[4][2]=a16;
+  if (res[4]!=0) res[4][3]=a16;
+  if (res[4]!=0) res[4][4]=a16;
+  if (res[4]!=0) res[4][5]=a16;
   return 0;
 }
 
@@ -2384,7 +2664,7 @@ CASADI_SYMBOL_EXPORT void step_partials_decref(void) {
 
 CASADI_SYMBOL_EXPORT casadi_int step_partials_n_in(void) { return 4;}
 
-CASADI_SYMBOL_EXPORT casadi_int step_partials_n_out(void) { return 3;}
+CASADI_SYMBOL_EXPORT casadi_int step_partials_n_out(void) { return 5;}
 
 CASADI_SYMBOL_EXPORT casadi_real step_partials_default_in(casadi_int i) {
   switch (i) {
@@ -2407,6 +2687,8 @@ CASADI_SYMBOL_EXPORT const char* step_partials_name_out(casadi_int i) {
     case 0: return "Fs";
     case 1: return "Yz";
     case 2: return "Ys";
+    case 3: return "FH";
+    case 4: return "YH";
     default: return 0;
   }
 }
@@ -2426,13 +2708,15 @@ CASADI_SYMBOL_EXPORT const casadi_int* step_partials_sparsity_out(casadi_int i) 
     case 0: return casadi_s5;
     case 1: return casadi_s5;
     case 2: return casadi_s1;
+    case 3: return casadi_s3;
+    case 4: return casadi_s5;
     default: return 0;
   }
 }
 
 CASADI_SYMBOL_EXPORT int step_partials_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 4;
-  if (sz_res) *sz_res = 3;
+  if (sz_res) *sz_res = 5;
   if (sz_iw) *sz_iw = 0;
   if (sz_w) *sz_w = 0;
   return 0;
@@ -2440,7 +2724,7 @@ CASADI_SYMBOL_EXPORT int step_partials_work(casadi_int *sz_arg, casadi_int* sz_r
 
 CASADI_SYMBOL_EXPORT int step_partials_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
   if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
-  if (sz_res) *sz_res = 3*sizeof(casadi_real*);
+  if (sz_res) *sz_res = 5*sizeof(casadi_real*);
   if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
   if (sz_w) *sz_w = 0*sizeof(casadi_real);
   return 0;
@@ -2551,7 +2835,7 @@ static int hpgen_k_observe(const double* in0, const double* in1, const double* i
 static int hpgen_k_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
 static int hpgen_k_velocity_step(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
 static int hpgen_k_record(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
-static int hpgen_k_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2);
+static int hpgen_k_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2, double* out3, double* out4);
 
 /* residual(z[3], g[4], p[1], h[3]) -> (F[3]) */
 #define HPGEN_RESIDUAL_SZ_ARG 4
@@ -2985,14 +3269,14 @@ HPGEN_EXPORT int hpgen_kernel_record(const double* in0, const double* in1, const
     return hpgen_k_record(in0, in1, in2, in3, out0);
 }
 
-/* step_partials(z[3], g[4], p[1], h[3]) -> (Fs[6], Yz[6], Ys[4]) */
+/* step_partials(z[3], g[4], p[1], h[3]) -> (Fs[6], Yz[6], Ys[4], FH[9], YH[6]) */
 #define HPGEN_STEP_PARTIALS_SZ_ARG 4
-#define HPGEN_STEP_PARTIALS_SZ_RES 3
+#define HPGEN_STEP_PARTIALS_SZ_RES 5
 #define HPGEN_STEP_PARTIALS_SZ_IW 0
-#define HPGEN_STEP_PARTIALS_SZ_W 20
+#define HPGEN_STEP_PARTIALS_SZ_W 54
 /* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
    interposed, so calls to it are never inlined); hpgen_kernel_step_partials exports it */
-static int hpgen_k_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2) {
+static int hpgen_k_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2, double* out3, double* out4) {
     const casadi_real* arg[HPGEN_STEP_PARTIALS_SZ_ARG + 1];
     casadi_real* res[HPGEN_STEP_PARTIALS_SZ_RES + 1];
     casadi_int iw[HPGEN_STEP_PARTIALS_SZ_IW + 1];
@@ -3005,13 +3289,15 @@ static int hpgen_k_step_partials(const double* in0, const double* in1, const dou
     res[0] = out0;
     res[1] = out1;
     res[2] = out2;
+    res[3] = out3;
+    res[4] = out4;
     flag = step_partials(arg, res, iw, w, 0);
     (void)i;
     return flag;
 }
 
-HPGEN_EXPORT int hpgen_kernel_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2) {
-    return hpgen_k_step_partials(in0, in1, in2, in3, out0, out1, out2);
+HPGEN_EXPORT int hpgen_kernel_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2, double* out3, double* out4) {
+    return hpgen_k_step_partials(in0, in1, in2, in3, out0, out1, out2, out3, out4);
 }
 
 /* ---- dense linear algebra and Newton ---- */
@@ -3607,3 +3893,88 @@ HPGEN_EXPORT long long hpgen_advance_batch(hpgen_run* runs, long long B, double 
     return failed;
 }
 
+/* ---- linearization along recorded steps (issue 12; hpgen.runtime.linearize) ---- */
+
+/* For k = 0..K-1: Newton on step k from the record (g_k, p_k) = (g_rec + k NN,
+   p_rec + k D): step 0 by full Newton from z (in/out: z_0 in, the last solution out), step
+   k > 0 from the predictor of hpgen_run_step (o->predictor) with o's Newton, whose simplified
+   iterations use J^{-1} of the previous step's converged z; dev[k] = max |update(z_k) -
+   record k+1| (the caller checks that the records are this module's steps). At the
+   converged z_k: J = jacobian(z_k) inverted once (and kept as the next step's Newton
+   matrix), (Fs, Yz, Ys) = step_partials(z_k), A_k = Ys - Yz J^{-1} Fs, 2D x 2D column-major
+   at A + k 4 D^2. Open module: step k's step vector is hv_rec + k H, and with the
+   step vector's partials (FH, YH) also B_k = YH_c - Yz J^{-1} FH_c over the step vector's
+   columns c = c0 .. c0 + nc - 1 (the inputs or the runtime parameters), 2D x nc
+   column-major at B + k 2 D nc. Returns the steps done (K, or the failing step with
+   st->code set). */
+HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const double* p_rec,
+                                       const double* hv_rec, long long c0, long long nc,
+                                       double* z, const hpgen_options* o, double* A,
+                                       double* B, double* dev, hpgen_status* st) {
+    enum { S = 2 * HPGEN_D };
+    double g1[HPGEN_NN], p1[HPGEN_D], J[HPGEN_NZ * HPGEN_NZ], Fs[HPGEN_NZ * S],
+        Yz[S * HPGEN_NZ], Ys[S * S], FH[HPGEN_NZ * HPGEN_H], YH[S * HPGEN_H],
+        zlast[HPGEN_NZ], zprev[HPGEN_NZ], zprev2[HPGEN_NZ], res;
+    int piv[HPGEN_NZ];
+    long long k, it, valid = 0;
+    int i, j, l, code;
+    hpgen_options full;
+    hpgen_status_init(st);
+    if (K < 0 || c0 < 2 || nc < 0 || c0 + nc > HPGEN_H || !hpgen_options_ok(o)) {
+        st->code = HPGEN_INVALID; return 0;
+    }
+    full = *o;
+    full.simplified = 0;
+    for (k = 0; k < K; ++k) {
+        const double* g = g_rec + k * HPGEN_NN;
+        const double* p = p_rec + k * HPGEN_D;
+        const double* hv = hv_rec + k * HPGEN_H;
+        double* Bk = B + k * S * nc;
+        double* Ak = A + k * S * S;
+        double m = 0.0;
+        /* the start: the extrapolation of hpgen_run_step through z_{k-1}, z_{k-2}, z_{k-3} */
+        memcpy(zlast, z, sizeof zlast);
+        if (o->predictor && k >= 3)
+            for (i = 0; i < HPGEN_NZ; ++i) z[i] = 3.0 * (z[i] - zprev[i]) + zprev2[i];
+        else if (o->predictor && k == 2)
+            for (i = 0; i < HPGEN_NZ; ++i) z[i] = 2.0 * z[i] - zprev[i];
+        code = hpgen_step_core(g, p, hv, z, k == 0 ? &full : o, J, piv, &valid, g1, p1, &it,
+                               &st->jacobians, &res, k == 0, 1);
+        st->iterations = it; st->total_iterations += it; st->residual = res;
+        if (code != HPGEN_OK) { st->code = code; st->step = k; return k; }
+        for (i = 0; i < HPGEN_NN; ++i) m = fmax(m, fabs(g1[i] - g[HPGEN_NN + i]));
+        for (i = 0; i < HPGEN_D; ++i) m = fmax(m, fabs(p1[i] - p[HPGEN_D + i]));
+        dev[k] = m;
+        ++st->jacobians;
+        valid = 0;
+        if (hpgen_kernel_jacobian(z, g, p, hv, J)
+            || hpgen_k_step_partials(z, g, p, hv, Fs, Yz, Ys, FH, YH)
+            || hpgen_lu_factor_solve(J, piv, Fs, 1)) {
+            st->code = HPGEN_NONFINITE; st->step = k; return k;
+        }
+        valid = o->simplified ? 1 : 0;    /* J holds J^{-1} at z_k: the next Newton matrix */
+        /* Fs's first column is solved, the others by J^{-1} */
+        for (j = 1; j < S; ++j) hpgen_lu_apply(J, piv, Fs + j * HPGEN_NZ);
+        for (j = 0; j < S; ++j)
+            for (i = 0; i < S; ++i) {
+                double a = Ys[i + j * S];
+                for (l = 0; l < HPGEN_NZ; ++l) a -= Yz[i + l * S] * Fs[l + j * HPGEN_NZ];
+                Ak[i + j * S] = a;
+            }
+        if (!hpgen_all_finite(Ak, S * S)) { st->code = HPGEN_NONFINITE; st->step = k; return k; }
+        for (j = 0; j < nc; ++j) {
+            double* f = FH + (c0 + j) * HPGEN_NZ;
+            hpgen_lu_apply(J, piv, f);
+            for (i = 0; i < S; ++i) {
+                double a = YH[i + (c0 + j) * S];
+                for (l = 0; l < HPGEN_NZ; ++l) a -= Yz[i + l * S] * f[l];
+                Bk[i + j * S] = a;
+            }
+        }
+        if (!hpgen_all_finite(Bk, S * nc)) { st->code = HPGEN_NONFINITE; st->step = k; return k; }
+        memcpy(zprev2, zprev, sizeof zprev);
+        memcpy(zprev, zlast, sizeof zprev);
+    }
+    st->step = K;
+    return K;
+}
