@@ -140,7 +140,7 @@ def cmd_run(args) -> int:
     integ = load(module_dir, backend=args.backend)
     print(_scheme_line(module_dir, args))
     out = Path(args.out or f"{model.name}.npz")
-    if getattr(sc, "section", None) is not None:
+    if sc.section is not None or sc.section_every_t is not None:
         return _run_sections(integ, model, sc, h, steps, out, args)
     directions = None
     if "momentum" in integ.record_names:
@@ -165,9 +165,11 @@ def cmd_run(args) -> int:
     print(f"{model.name}: {ran} steps of h = {h:g} in {wall:.3f} s "
           f"({wall / max(ran, 1) * 1e6:.2f} us/step, {args.backend}){resumed}; "
           f"{summary['samples']} samples -> {path}")
-    if summary["energy_max_change"] is not None:
+    if model.forced:                     # energy and momentum change: not conservation errors
+        print(_forced_line(summary))
+    elif summary["energy_max_change"] is not None:
         print(f"  energy error max |E - E0| = {float(summary['energy_max_change']):.3e}")
-    if summary["momentum_max_change"] is not None:
+    if summary["momentum_max_change"] is not None and not model.forced:
         print(_momentum_line(model, summary["momentum_max_change"], directions,
                              summary["conserved_max_change"]))
     _plot_run(path, args, integ)
@@ -194,6 +196,16 @@ def cmd_plot(args) -> int:
     for f in plot_file(args.file, out_dir=args.out_dir):
         print(f)
     return 0
+
+
+def _forced_line(summary) -> str:
+    """A forced model's energy figure: the energy-work balance E - W (docs/numerics.md sec.
+    13) when the scene records energy and work; else what to record for it."""
+    if summary.get("balance_max_change") is not None:
+        return ("  energy-work balance max |(E - W) - E0| = "
+                f"{float(summary['balance_max_change']):.3e} (forces: E alone is not conserved)")
+    return ("  forces: energy is not conserved; record energy and work for the energy-work "
+            "balance E - W")
 
 
 def _momentum_line(model, change, directions, conserved_change) -> str:
@@ -293,7 +305,7 @@ def _run_sections(integ, model, sc, h, steps, out, args) -> int:
     try:
         with _sigterm_raises():
             cr = integ.sections(g0=sc.g0, h=h, steps=steps, xi0=sc.xi0, mu0=sc.mu0,
-                                chunk=args.chunk)
+                                chunk=args.chunk, every_t=sc.section_every_t)
     except ConvergenceError as e:
         cr = e.partial
         if cr is None:
@@ -305,7 +317,9 @@ def _run_sections(integ, model, sc, h, steps, out, args) -> int:
     save(cr, None)
     print(f"{model.name}: {steps} steps of h = {h:g} in {wall:.3f} s "
           f"({wall / max(steps, 1) * 1e6:.2f} us/step, {args.backend}); "
-          f"{len(cr)} crossings of the section {sc.section.text!r} -> {path}")
+          + (f"{len(cr)} crossings of the section {sc.section.text!r}" if sc.section else
+             f"{len(cr)} samples of the section every_t = {sc.section_every_t:g}")
+          + f" -> {path}")
     _plot_run(path, args)
     return 0
 

@@ -34,6 +34,14 @@ Figures (the keys of the JSON report):
   relative, jacobian_norm, cond_J, kernel_mismatch}], form}: the defect
   max |Phi'^T Omega(p_1) Phi' - Omega(p_0)| of the one-step map's Jacobian in the
   left-trivialized chart (hpgen.analysis.symplectic), at ``n_states`` states along the run.
+- a forced model (``forces``; issue 16; u = 0, the file's runtime parameters, t0 = 0):
+  ``energy`` is the energy-work balance (E - W) - E_0 (``balance`` true), W the forces'
+  work by the node rule of hpgen.runtime.work; ``momentum.max_change`` for a left-invariant
+  l is the forced momentum balance max |m_k - m_0 - int_0^t Ad*_{g^-1} f dt| (``balance``
+  true; the discrete identity with the stage sum is exact, the node quadrature makes it
+  the scheme's order: informative, not a pass criterion); ``symplectic`` has no states
+  (None: a forced flow is not symplectic). A model that is open without forces (t,
+  runtime parameters) is checked as a closed one, the step vector at the state's time.
 - ``checks``: {symplectic, group, momentum (None unless l is left-invariant)} booleans;
   ``passed``: all of them that apply. Also model, file, group, scheme, integrator, h,
   steps, duration, hpgen_version, seconds.
@@ -102,13 +110,18 @@ class _Hpgen:
         self.order = tab.order if self.rkmk == "exact" else min(tab.order, 2)
         self.info = {"tableau": tab.name, "tau": self.tau, "rkmk": self.rkmk,
                      "backend": backend, "module": self.integ.meta.get("module")}
+        op = self.integ.open          # an open model: u = 0, the file's params, t0 = 0
+        self.u = None if op is None or not op["inputs"] else np.zeros(len(op["inputs"]))
+        self.defaults = [] if op is None else [float(v) for v in op["defaults"]]
 
     def simulate(self, g0, mu0, h, steps, every=1):
-        tr = self.integ.simulate(g0=g0, mu0=mu0, h=h, steps=steps, every=every)
+        tr = self.integ.simulate(g0=g0, mu0=mu0, h=h, steps=steps, every=every, u=self.u)
         return tr.g, tr.mu
 
-    def map_jacobian(self, g, p, h):
-        out = self.map.map_jacobian(g, p, h)
+    def map_jacobian(self, g, p, h, t=0.0):
+        hv = None if self.integ.open is None else \
+            [h, t, *([] if self.u is None else self.u), *self.defaults]
+        out = self.map.map_jacobian(g, p, h, hv=hv)
         self.extra = {k: self.map.last[k] for k in ("cond_J", "kernel_mismatch")}
         return out
 
@@ -124,7 +137,7 @@ class _Rkmk:
         g, mu = self.rk.simulate(g0, mu0, h, steps)
         return g[::every], mu[::every]
 
-    def map_jacobian(self, g, p, h):
+    def map_jacobian(self, g, p, h, t=0.0):
         return self.rk.map_jacobian(g, p, h)
 
 
@@ -206,10 +219,10 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     if sc is None:
         raise ModelError("hpgen check needs the model's scene (initial state)", file=str(path),
                          field="scene")
-    if model.open_system:
-        raise ModelError("hpgen check does not check models with forces, inputs, runtime "
-                         "parameters or t yet (the energy-work balance is not implemented); "
-                         "check the model without them", file=str(path), field="forces")
+    if model.open_system and scheme != "hpgen":
+        raise ModelError("the rkmk-rk4 scheme of hpgen check runs closed models only (no "
+                         "forces, inputs, runtime parameters or t)", file=str(path),
+                         field="option scheme")
     h = _positive(sc.h if h is None else h, "h")
     steps = sc.steps if steps is None else steps
     if isinstance(steps, bool) or not isinstance(steps, int) or steps < 1:
@@ -239,34 +252,49 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     hs, observed = [h, h / 2, h / 4], _slopes(errs)
     refined = _refine(errs, expected, error_at, h, n_o)
 
-    # the run at h: energy, momentum map, group defect
+    # the run at h: energy (a forced model: E - W), momentum map (forced: its balance with
+    # the spatial impulse), group defect
     g, mu = sch.simulate(g0, mu0, h, steps)
     t = np.arange(len(g)) * h
-    E, xi = [], None
-    for gk, mk in zip(g, mu):
-        xi = eq.velocity(gk, mk, xi)
-        E.append(eq.energy(gk, xi))
-    dE = np.array(E) - E[0]
-    slope = float(np.polyfit(t, dE, 1)[0]) if len(t) > 1 else 0.0
+    E, xi, f = [], None, []
+    for gk, mk, tk in zip(g, mu, t):
+        xi = eq.velocity(gk, mk, xi, t=tk) if model.open_system else eq.velocity(gk, mk, xi)
+        E.append(eq.energy(gk, xi, t=tk) if model.open_system else eq.energy(gk, xi))
+        if model.forced:
+            f.append(eq.applied(gk, xi, t=tk))
     m = np.array([eq.momentum(gk, mk) for gk, mk in zip(g, mu)])
-    dm = np.abs(m - m[0]).max(axis=0)
+    dE, dm = np.array(E) - E[0], m - m[0]
+    if model.forced:
+        from ..runtime.work import WorkSum
+        xis = [eq.velocity(gk, mk, t=tk) for gk, mk, tk in zip(g, mu, t)]
+        power = np.einsum("ki,ki->k", np.array(f), np.array(xis))
+        dE = dE - WorkSum(h).add(power)                 # (E - W) - E_0
+        spatial = np.array([eq.momentum(gk, fk) for gk, fk in zip(g, f)])
+        if model.left_invariant:   # else l's own g-dependence moves m too: no balance
+            dm = dm - np.stack([WorkSum(h).add(spatial[:, i]) for i in range(len(m[0]))],
+                               axis=1)
+    slope = float(np.polyfit(t, dE, 1)[0]) if len(t) > 1 else 0.0
+    dm = np.abs(dm).max(axis=0)
     gdef = max(eq.defect(gk) for gk in g)
 
-    # symplecticity defect at a few states of the run
-    idx = sorted(set(np.linspace(0, len(g) - 1, max(1, n_states)).round().astype(int)))
-    ad = ad_matrices(model.group)
+    # symplecticity defect at a few states of the run (a forced flow is not symplectic)
     states = []
-    for i in idx:
-        rec = defect_along(sch.map_jacobian, ad, [(g[i], mu[i])], h)[0]
-        rec.update(t=float(t[i]), **sch.extra)
-        states.append(rec)
-    sym_abs = max(s["absolute"] for s in states)
-    sym_rel = max(s["relative"] for s in states)
-    tol = SYMPLECTIC_RTOL * max(1.0, max(s["cond_J"] for s in states) / 100.0)
+    if not model.forced:
+        idx = sorted(set(np.linspace(0, len(g) - 1, max(1, n_states)).round().astype(int)))
+        ad = ad_matrices(model.group)
+        for i in idx:
+            rec = defect_along(lambda G, P, H: sch.map_jacobian(G, P, H, t=float(t[i])), ad,
+                               [(g[i], mu[i])], h)[0]
+            rec.update(t=float(t[i]), **sch.extra)
+            states.append(rec)
+    sym_abs = max((s["absolute"] for s in states), default=None)
+    sym_rel = max((s["relative"] for s in states), default=None)
+    tol = SYMPLECTIC_RTOL * max(1.0, max((s["cond_J"] for s in states), default=0) / 100.0)
 
-    checks = {"symplectic": bool(sym_rel <= tol), "group": bool(gdef <= GROUP_TOL),
+    checks = {"symplectic": None if model.forced else bool(sym_rel <= tol),
+              "group": bool(gdef <= GROUP_TOL),
               "momentum": (bool(dm.max() <= MOMENTUM_RTOL * max(1.0, np.abs(m[0]).max()))
-                           if model.left_invariant else None)}
+                           if model.left_invariant and not model.forced else None)}
     return {
         "hpgen_version": __version__, "model": model.name, "file": str(path),
         "group": model.group.name, "scheme": scheme, "integrator": sch.info,
@@ -276,9 +304,10 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
                   "reference": f"DOP853 rtol=atol={REFERENCE_RTOL:g}", **refined},
         "energy": {"initial": float(E[0]), "max_error": float(np.abs(dE).max()),
                    "relative_max_error": float(np.abs(dE).max() / max(abs(E[0]), 1e-300)),
-                   "drift_slope": slope},
+                   "drift_slope": slope, "balance": bool(model.forced)},
         "momentum": {"initial": m[0].tolist(), "max_change": dm.tolist(),
-                     "left_invariant": bool(model.left_invariant)},
+                     "left_invariant": bool(model.left_invariant),
+                     "balance": bool(model.forced and model.left_invariant)},
         "group_defect": {"max": float(gdef)},
         "symplectic": {"defect": sym_abs, "relative": sym_rel, "tolerance": tol,
                        "states": states, "form": FORM},
@@ -329,14 +358,22 @@ def format_report(r: dict) -> str:
          + f" at h = {o['h'][0]:g}, /2, /4" + (" (near the reference floor)" if o["floor"]
                                                else "")),
         ("asymptotic regime", _regime(o), _regime_note(o)),
-        ("energy max |E - E0|", f"{e['max_error']:.3e}",
-         f"relative {e['relative_max_error']:.2e}"),
+        (("energy-work max |E - W - E0|" if e.get("balance") else "energy max |E - E0|"),
+         f"{e['max_error']:.3e}", f"relative {e['relative_max_error']:.2e}"
+         + ("; W: the forces' work (node rule, docs/numerics.md sec. 13)"
+            if e.get("balance") else "")),
         ("energy drift slope", f"{e['drift_slope']:.3e}", "per unit time (linear fit)"),
-        ("spatial momentum change", fmt(f"{v:.1e}" for v in mo["max_change"]),
-         f"{_verdict(c['momentum'])} (max per component"
-         + ("" if mo["left_invariant"] else "; l depends on g") + ")"),
+        (("momentum - impulse" if mo.get("balance") else "spatial momentum change"),
+         fmt(f"{v:.1e}" for v in mo["max_change"]),
+         ("max |m_k - m_0 - int Ad*_{g^-1} f dt| per component (forced: to the scheme's "
+          "order, informative)" if mo.get("balance") else
+          f"{_verdict(c['momentum'])} (max per component"
+          + ("" if mo["left_invariant"] else "; l depends on g") + ")"
+          + ("; forced" if r["energy"].get("balance") else ""))),
         ("group defect max", f"{r['group_defect']['max']:.2e}",
          f"{_verdict(c['group'])} (<= {GROUP_TOL:g})"),
+        ("symplecticity defect", "n/a", "forced: the flow is not symplectic (zero forces "
+         "give the defect)") if s["defect"] is None else
         ("symplecticity defect", f"{s['defect']:.2e}",
          f"{_verdict(c['symplectic'])}: relative {s['relative']:.2e} "
          f"{'<=' if c['symplectic'] else '>'} {s['tolerance']:.1e} "

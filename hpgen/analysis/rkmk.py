@@ -55,7 +55,7 @@ class ContinuousEquations:
     Ad*_{g^-1} p), defect(g) (distance of g from the group), velocity(g, mu). For an open
     model (model.open_system) legendre, energy, velocity, rhs and reference take the time t
     (keyword, default 0); ``u`` (m) and ``params`` (P, default Model.runtime_defaults) are
-    fixed here. flow_jacobian and RKMK4 are for closed models.
+    fixed here; applied(g, xi, t) is the force f. flow_jacobian and RKMK4 are for closed models.
     """
 
     def __init__(self, model, u=None, params=None):
@@ -93,6 +93,7 @@ class ContinuousEquations:
         self._newton = F("newton", [g, xi, mu] + targs, [leg - mu, hess])
         self._rhs = F("rhs", [g, xi, mu] + targs, [gdot, mudot])
         self._energy = F("energy", [g, xi] + targs, [ca.dot(leg, xi) - L])
+        self._applied = F("applied", [g, xi] + targs, [applied])
         p = ca.SX.sym("p", d)
         self._momentum = F("momentum", [g, p], [grp.momentum_map(g, p)])
         self._defect = F("defect", [g], [grp.group_defect(g)])
@@ -116,6 +117,10 @@ class ContinuousEquations:
 
     def momentum(self, g, p):
         return _np(self._momentum(g, p)).ravel()
+
+    def applied(self, g, xi, t=0.0):
+        """The applied force f(g, xi, t) in g* (body frame; zeros for a closed model)."""
+        return _np(self._applied(g, xi, *self._t(t))).ravel()
 
     def defect(self, g) -> float:
         return float(self._defect(g))

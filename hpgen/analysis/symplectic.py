@@ -82,8 +82,9 @@ class StepSensitivity:
         n, d, nz = step.n, step.d, step.nz
         res = step.kernel("residual").function
         upd = step.kernel("update").function
+        H_size = 1 if getattr(step, "open_spec", None) is None else step.open_spec.H
         z, G, D, P, H = (ca.SX.sym("z", nz), ca.SX.sym("g", n, n), ca.SX.sym("delta", d),
-                         ca.SX.sym("p", d), ca.SX.sym("h", 1))
+                         ca.SX.sym("p", d), ca.SX.sym("h", H_size))
         gv = ca.reshape(ca.mtimes(G, ca.SX.eye(n) + group.hat(D)), n * n, 1)
         F = res(z, gv, P, H)
         g1, p1 = upd(z, gv, P, H)
@@ -100,15 +101,18 @@ class StepSensitivity:
         return out
 
 
-def converged_step(integ, g, p, h, z=None, newton=None):
+def converged_step(integ, g, p, h, z=None, newton=None, hv=None):
     """Newton on the compiled module's residual/jacobian kernels (as Integrator.step does),
-    returning (z, g1 (n, n), p1). z: start (default the ``guess`` kernel)."""
+    returning (z, g1 (n, n), p1). z: start (default the ``guess`` kernel). hv: an open
+    module's step vector [h, t, u, params] (hpgen.abi; default [h], a closed module)."""
     n = integ.n
     gf = np.asarray(g, dtype=float).ravel(order="F")
     p = np.asarray(p, dtype=float)
-    hv = np.array([float(h)])
+    hv = np.array([float(h)] if hv is None else hv, dtype=float)
     if z is None:
-        z = integ.kernel("guess", integ.velocity(g, p), gf, p, hv)[0]
+        vel = (integ.velocity(g, p) if integ.open is None else
+               integ.velocity(g, p, t=hv[1], params=list(hv[2 + len(integ.open["inputs"]):])))
+        z = integ.kernel("guess", vel, gf, p, hv)[0]
     opts = integ._options(newton, full=True)    # full Newton unless newton.simplified
     code, g1, p1, z, it, r, _ = _newton.step_core(integ.kernel, integ.nz, gf, p, hv, z, opts,
                                                   _newton.NewtonMemory())
@@ -127,18 +131,19 @@ class GeneratedMap:
         self.sens = StepSensitivity(step, group)
         self.last = {}
 
-    def map_jacobian(self, g, p, h, z=None):
+    def map_jacobian(self, g, p, h, z=None, hv=None):
         """(Phi' (2d, 2d), g1, p1) from the generated kernels (``Integrator.linearize``'s
         partials); diagnostics of the last call in ``self.last``: cond_J (2-norm condition of
         dF/dz), kernel_mismatch (max |generated dF/dz - CasADi dF/dz| / max(1, max|dF/dz|)),
         update_mismatch (generated update vs CasADi), ad_mismatch (max |Phi' - Phi' by CasADi
-        AD in ambient coordinates| / max(1, max|Phi'|))."""
-        z, g1, p1 = converged_step(self.integ, g, p, h, z)
+        AD in ambient coordinates| / max(1, max|Phi'|)). hv: an open module's step vector
+        (default [h])."""
+        hv = np.array([float(h)] if hv is None else hv, dtype=float)
+        z, g1, p1 = converged_step(self.integ, g, p, h, z, hv=hv)
         gf = np.asarray(g, dtype=float).ravel(order="F")
-        J, Fs, Yz, Ys = partials_at(self.integ, z, gf, np.asarray(p, float),
-                                    np.array([float(h)]))
+        J, Fs, Yz, Ys = partials_at(self.integ, z, gf, np.asarray(p, float), hv)
         Phi = implicit_derivative(J, Fs, Yz, Ys)
-        dF_ds, dU_dz, dU_ds, J_ca, g1c, p1c = self.sens.partials(z, g, p, h)
+        dF_ds, dU_dz, dU_ds, J_ca, g1c, p1c = self.sens.partials(z, g, p, hv)
         dU = implicit_derivative(J_ca, dF_ds, dU_dz, dU_ds)
         nn = self.group.n ** 2
         Phi_ad = chart_jacobian(self.group, g1c, dU[:nn], dU[nn:])

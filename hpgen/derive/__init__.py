@@ -99,7 +99,10 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     at0 = lambda e: ca.substitute(e, xi, ca.SX.zeros(d))  # noqa: E731
     xi_obs = at0(velocity_step(g, p, xi, lag))
     quadratic = not ca.depends_on(hess, xi)
-    row, layout = record_row(model, group, g, p, xi, lag)
+    power = None
+    if is_open and model.forced:     # the forces' power at a record (t = t_k, u of hv)
+        power = lambda G, X: ca.dot(force(G, X, t), X)  # noqa: E731
+    row, layout = record_row(model, group, g, p, xi, lag, power)
     # what the loop may skip: g_{k+1} is not computed when neither the step nor the row use g
     step_uses_g = bool(ca.depends_on(eqs.residual, gf) or ca.depends_on(eqs.p1, gf))
     theta = ca.SX.sym("theta", 1)

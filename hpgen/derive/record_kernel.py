@@ -9,6 +9,10 @@ The row is the concatenation, in the scene's order, of the requested items (widt
     momentum d    the spatial momentum Ad*_{g^{-1}} mu
     defect   1    distance of g from the group
     <label>  1    a user expression in g, xi, mu (hpgen.model.types.RecordExpr)
+    power    1    <f(g, xi, t, u), xi>: the forces' power (forced models; t, u, params from
+                  the record kernel's step vector: u of the step that ends at the record)
+    work     1    the same node power: the runtime replaces this column by the work
+                  accumulated from the power at every step (hpgen.runtime.work)
 
 Without a scene the row is (g, mu). The layout ((name, offset, shape), ...) travels with the
 DiscreteStep to meta.json ("record"), where the runtime reads it to slice the rows.
@@ -32,10 +36,10 @@ def _expressions(model) -> dict:
     return {e.label: e for e in getattr(scene, "expressions", ())} if scene is not None else {}
 
 
-def record_row(model, group, g, p, xi, lag):
+def record_row(model, group, g, p, xi, lag, power=None):
     """(row SX column, layout) for ``model``'s scene at (g (n x n SX), p, xi); lag(g, xi) the
-    Lagrangian. layout: ((name, offset, shape), ...) with shape () for scalars, (d,) for
-    vectors and (n, n) for g."""
+    Lagrangian; power(g, xi) the forces' power <f, xi> (forced models). layout: ((name,
+    offset, shape), ...) with shape () for scalars, (d,) for vectors and (n, n) for g."""
     n, d = group.n, group.d
     lval = lag(g, xi)
     mu = ca.gradient(lval, xi)
@@ -54,6 +58,8 @@ def record_row(model, group, g, p, xi, lag):
             item, shape = group.momentum_map(g, p), (d,)
         elif name == "defect":
             item, shape = group.group_defect(g), ()
+        elif name in ("power", "work") and name not in exprs:
+            item, shape = power(g, xi), ()
         else:
             spec = exprs[name]
             mapping = {s: xi[k] for k, s in enumerate(spec.xi_symbols)}

@@ -66,7 +66,7 @@ def run_chunk(integ, m: Members, start: int, steps: int, every: int, record,
 def _batch(integ, m, idx, h, steps, every, rows, threads):
     run = integ.record_batch if rows else integ.simulate_batch
     return run(m.g0[idx], h, steps, every=every, threads=threads, progress=False,
-               **{m.kind: m.init[idx]})
+               **m.take(idx))
 
 
 def _alone(integ, m, i, h, steps, every, rows, start):

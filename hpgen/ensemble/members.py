@@ -9,7 +9,7 @@ numpy and the standard library only.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -22,30 +22,34 @@ NO_RUNTIME_PARAMETERS = "params sweeps need runtime_parameters in the model"
 
 @dataclass(frozen=True, eq=False)
 class Members:
-    """Checked member inputs: g0 (B, n, n), init (B, d) (``kind`` "xi0" or "mu0"), h (B,)."""
+    """Checked member inputs: g0 (B, n, n), init (B, d) (``kind`` "xi0" or "mu0"), h (B,),
+    params {runtime parameter name: (B, *shape) values, member i's in row i} ({} without)."""
     g0: np.ndarray
     init: np.ndarray
     kind: str
     h: np.ndarray
+    params: dict = field(default_factory=dict)
 
     def __len__(self) -> int:
         return len(self.init)
 
     def slice(self, lo: int, hi: int) -> "Members":
-        return Members(self.g0[lo:hi], self.init[lo:hi], self.kind, self.h[lo:hi])
+        return Members(self.g0[lo:hi], self.init[lo:hi], self.kind, self.h[lo:hi],
+                       {k: v[lo:hi] for k, v in self.params.items()})
+
+    def take(self, idx) -> dict:
+        """The runs' keyword arguments of members ``idx``: the initial states and, with
+        runtime parameters, params with a leading member axis (simulate_batch's sweep)."""
+        kw = {self.kind: self.init[idx]}
+        if self.params:
+            kw["params"] = {k: v[idx] for k, v in self.params.items()}
+        return kw
 
 
 def members(integ, g0, xi0, mu0, h, params=None) -> Members:
     """Members from the sweep arguments (shapes, finiteness and h > 0 checked here; the
     group defect and the Legendre transform are checked per member when it starts).
     ModelError naming the argument."""
-    if params is not None:
-        # runtime parameters arrive with issue 16; until a model declares them, a params
-        # sweep has nothing to vary
-        if not integ.meta.get("runtime_parameters"):
-            raise ModelError(NO_RUNTIME_PARAMETERS, field="params")
-        raise ModelError("params sweeps are not supported by this hpgen runtime yet",
-                         field="params")
     if (xi0 is None) == (mu0 is None):
         raise ModelError("give exactly one of xi0 (velocities) and mu0 (momenta), each (B, d)",
                          field="xi0" if xi0 is not None else "mu0")
@@ -69,7 +73,32 @@ def members(integ, g0, xi0, mu0, h, params=None) -> Members:
     else:
         raise ModelError(f"expected a number or {B} numbers (one per member), got shape "
                          f"{H.shape}", field="h")
-    return Members(np.ascontiguousarray(G), init, kind, H)
+    return Members(np.ascontiguousarray(G), init, kind, H, _params(integ, params, B))
+
+
+def _params(integ, params, B) -> dict:
+    """{name: (B, *shape) float64} of a params sweep, each value one entry per member (names
+    and values are checked again by the runs: hpgen.runtime.inputs)."""
+    if params is None:
+        return {}
+    spec = dict((name, tuple(shape)) for name, shape in
+                ((integ.open or {}).get("runtime_parameters") or ()))
+    if not spec:
+        raise ModelError(NO_RUNTIME_PARAMETERS, field="params")
+    if not isinstance(params, dict):
+        raise ModelError("expected a mapping {runtime parameter name: one value per member}",
+                         field="params")
+    out = {}
+    for name, v in params.items():
+        if name not in spec:
+            raise ModelError(f"unknown runtime parameter {name!r}; expected one of "
+                             f"{', '.join(spec)}", field="params")
+        a = _finite(v, f"params.{name}")
+        if a.shape != (B,) + spec[name]:
+            raise ModelError(f"expected shape {(B,) + spec[name]} (one value per member), "
+                             f"got {a.shape}", field=f"params.{name}")
+        out[name] = a
+    return out
 
 
 def _finite(x, field) -> np.ndarray:

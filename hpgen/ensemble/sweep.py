@@ -50,8 +50,8 @@ def sweep(integ, g0=None, xi0=None, mu0=None, h=None, steps=None, record=None, e
     (B, n, n), default the identity; xi0 or mu0: (B, d), exactly one; h: a step shared by all
     members or one per member (B,); steps, every: as for simulate (K = steps // every + 1
     samples). record: None keeps g and mu; a list of names keeps those entries of the
-    module's record row (``integ.record_names``). params: runtime parameters per member
-    (needs a model with runtime_parameters). chunk_size: members per chunk (default: all in
+    module's record row (``integ.record_names``). params: {runtime parameter name: values
+    (B, *shape), member i's in row i} (a model with runtime_parameters; no recompile). chunk_size: members per chunk (default: all in
     one chunk locally, about 4 chunks per worker thread on Dask, smaller when a checkpoint or
     progress bar wants progress). client: a dask.distributed Client, or None for the local
     threads (``threads``, default the CPU count). progress: tqdm bar of members done on
@@ -130,10 +130,10 @@ def _on_dask(client, payload, m, todo, steps, every, record, store, done, pbar):
 def _fingerprint(payload, m, steps, every, record, bounds) -> str:
     h = hashlib.sha256()
     h.update(payload.digest.encode())
-    for a in (m.g0, m.init, m.h):
+    for a in (m.g0, m.init, m.h, *m.params.values()):
         h.update(np.ascontiguousarray(a, dtype=np.float64).tobytes())
     h.update(json.dumps([m.kind, steps, every, None if record is None else list(record),
-                         bounds]).encode())
+                         bounds, list(m.params)]).encode())
     return h.hexdigest()
 
 

@@ -186,6 +186,23 @@ def _name_list(doc: Doc, key: str, raw, what: str) -> list:
     return list(raw)
 
 
+def _refuse_unforced_work(doc: Doc, scene, forces) -> None:
+    """``power`` / ``work`` in the scene's record list need a force that is not identically
+    zero (hpgen.model.scene.FORCED_RECORDABLE); with one, they are not expression labels."""
+    from .scene import FORCED_RECORDABLE
+    forced = any(f.is_zero is not True for f in forces)
+    labels = {e.label for e in scene.expressions}
+    for i, name in enumerate(scene.record):
+        if name not in FORCED_RECORDABLE:
+            continue
+        if forced and name in labels:
+            raise doc.error(("scene", "record", i, name), f"the label {name!r} is a built-in "
+                            "record name of a forced model; choose another label")
+        if not forced and name not in labels:
+            raise doc.error(("scene", "record", i), f"{name!r} is the {name} of the forces, "
+                            "and this model has none (add forces: to the model)")
+
+
 def _runtime_parameters(doc: Doc, raw, stored, exact) -> tuple:
     """((name, shape), ...), the flat symbols, their defaults, and ``exact`` with each runtime
     parameter replaced by its symbol(s) (a sympy scalar or an object array of the shape)."""
@@ -303,6 +320,7 @@ def build_model(doc: Doc, text: str) -> Model:
         from .scene import parse_scene
         scene = parse_scene(doc, data["scene"], group, lag_params)
         _refuse_runtime_in_scene(doc, scene, rsyms)
+        _refuse_unforced_work(doc, scene, forces)
     return Model(name=name, path=doc.file, source=text, group_spec=data["group"], group=group,
                  parameters=stored, lagrangian_text=data["lagrangian"], lagrangian=lag,
                  xi_symbols=xi_syms, g_symbols=g_syms, integrator=integrator, scene=scene,

@@ -33,6 +33,10 @@ from .types import RecordExpr, Scene, SectionSpec
 SCENE_KEYS = ("h", "steps", "duration", "initial", "record", "every", "section")
 INITIAL_KEYS = ("g", "xi", "mu")
 RECORDABLE = ("g", "mu", "xi", "energy", "momentum", "defect")
+#: record names of a forced model only (the loader refuses them without forces, and refuses
+#: them as expression labels with forces): the power <f, xi> at the record and the work done
+#: by the forces since the start
+FORCED_RECORDABLE = ("power", "work")
 ON_GROUP_TOL = 1e-10
 MAX_STEPS = 2**31 - 1
 LABEL = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}")
@@ -267,7 +271,7 @@ def _record(doc, rec, group, parameters):
             _record_label(doc, rpath + (i, label), label, seen)
             exprs.append(_record_expr(doc, rpath + (i, label), label, text, group, parameters))
             r = label
-        elif not isinstance(r, str) or r not in RECORDABLE:
+        elif not isinstance(r, str) or r not in RECORDABLE + FORCED_RECORDABLE:
             raise doc.error(rpath + (i,), f"expected one of {', '.join(RECORDABLE)} or a mapping "
                                           f"{{label: expression}}, got {_describe(doc, r)}")
         elif r in seen:
@@ -303,9 +307,30 @@ def parse_scene(doc, raw, group, parameters=None) -> Scene:
     every = 1
     if raw.get("every") is not None:
         every = _int(doc, ("scene", "every"), raw["every"], 1, "an integer >= 1")
-    section = None
-    if raw.get("section") is not None:
+    section, every_t = None, None
+    if isinstance(raw.get("section"), dict):
+        every_t = _every_t(doc, raw["section"], h)
+    elif raw.get("section") is not None:
         section = _section(doc, raw["section"], group, parameters or {})
     return Scene(h=h, steps=steps, g0=tuple(tuple(float(x) for x in row) for row in G),
                  xi0=vec if has_xi else None, mu0=vec if has_mu else None,
-                 record=record, every=every, section=section, expressions=expressions)
+                 record=record, every=every, section=section, expressions=expressions,
+                 section_every_t=every_t)
+
+
+def _every_t(doc, raw, h) -> float:
+    """``section: {every_t: T}``, a section in t (stroboscopic): T > 0, a whole number of
+    steps of the scene's h (within 1e-9 relative, as for ``duration``)."""
+    path = ("scene", "section")
+    raw = doc.mapping(path, raw, ("every_t",))
+    if raw.get("every_t") is None:
+        raise doc.error(path, "expected {every_t: T} (a section in t, every T > 0) or an "
+                              "expression s(g, mu)")
+    T = doc.number(path + ("every_t",), raw["every_t"], "a period T > 0")
+    ratio = T / h
+    if not math.isfinite(ratio) or T <= 0 or round(ratio) < 1 or \
+            abs(ratio - round(ratio)) > 1e-9 * ratio:
+        raise doc.error(path + ("every_t",), f"every_t / h = {ratio:.12g} is not a whole "
+                                              "number >= 1 of steps (within 1e-9 relative); "
+                                              "adjust every_t or h")
+    return float(T)

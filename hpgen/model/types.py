@@ -68,6 +68,8 @@ class Scene:
     every: int = 1
     section: SectionSpec | None = None
     expressions: tuple = ()        # tuple of RecordExpr, in file order
+    #: a section in t (``section: {every_t: T}``): the stroboscopic samples every T, or None
+    section_every_t: float | None = None
 
 
 @dataclass(frozen=True)

@@ -383,16 +383,19 @@ class CBackend(_Backend):
             raise ValueError("hpgen_advance_record rejected its arguments")
         return int(done), rows[:n_rec.value], st.as_dict()
 
-    def record_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads, bar=None):
+    def record_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads, bar=None,
+                     inputs=None):
         """B independent runs keeping record rows (hpgen_advance_record_batch), each thread
         a contiguous slice in one C call. Returns (rows (B, K, W) with row 0 the start,
         rows written per run (B,) including row 0, statuses); codes of row 0 that failed
-        are reported in the status with step 0 (the run is not stepped)."""
+        are reported in the status with step 0 (the run is not stepped). inputs: per-run
+        StepInputs of an open module."""
         B, W = len(g0s), self.record_width
         K = steps // every + 1
-        runs, base = self._batch_runs(g0s, p0s, z0s)
+        runs, base = self._batch_runs(g0s, p0s, z0s, inputs)
         rows = np.zeros((B, K, W))
-        first = [self.record(g0s[b], p0s[b]) for b in range(B)]
+        first = [self.record(g0s[b], p0s[b]) if inputs is None else
+                 self.record(g0s[b], p0s[b], inputs[b]) for b in range(B)]
         for b, (_, row) in enumerate(first):
             rows[b, 0] = row
         n_rec = np.zeros(B, dtype=np.int64)

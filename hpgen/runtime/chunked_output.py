@@ -69,7 +69,9 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     energy is recorded), momentum_max_change (per component, if momentum is recorded),
     removed (the folders an older hpgen's killed run of this output left, now removed),
     conserved_max_change (max_k |V (m_k - m_0)| per row of ``directions`` V (q, d), the
-    conserved directions of hpgen.analysis.symmetry, if given and momentum is recorded).
+    conserved directions of hpgen.analysis.symmetry, if given and momentum is recorded),
+    balance_max_change (max |(E - W) - (E_0 - W_0)|, a forced model's energy-work balance,
+    if energy and work are recorded).
 
     resume: continue the interrupted run in ``partial_dir(out)`` (a fresh run if there is
     none); without it such a folder is refused (ModelError naming it and how to resume).
@@ -129,7 +131,8 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     summary = {"samples": prog.samples, "steps": prog.k, "resumed_at": resumed_at,
                "energy_max_change": prog.change.get("energy"),
                "momentum_max_change": prog.change.get("momentum"),
-               "conserved_max_change": prog.change.get("conserved"), "removed": removed}
+               "conserved_max_change": prog.change.get("conserved"),
+               "balance_max_change": prog.change.get("balance"), "removed": removed}
     if error is not None:
         error.saved = (path, prog.samples)
         raise error
@@ -156,7 +159,7 @@ class _Progress:
     the first samples of energy / momentum and the max change so far of energy, momentum
     and its projections on ``directions`` ("conserved"); ``state`` the snapshot to continue
     from (a resumed run)."""
-    CHANGES = ("energy", "momentum", "conserved")
+    CHANGES = ("energy", "momentum", "conserved", "balance")
 
     def __init__(self, directions=None):
         self.chunks = self.k = self.samples = self.iterations = 0
@@ -178,6 +181,11 @@ class _Progress:
                 if name == "momentum" and self.directions is not None:
                     proj = (a - new.first[name]) @ self.directions.T
                     new._fold("conserved", np.abs(proj).max(axis=0))
+        if "energy" in rec.arrays and "work" in rec.arrays and len(rec.t):
+            # a forced model's conserved balance E - W (hpgen.runtime.work)
+            bal = np.asarray(rec.arrays["energy"]) - np.asarray(rec.arrays["work"])
+            new.first.setdefault("balance", bal[0].copy())
+            new._fold("balance", np.abs(bal - new.first["balance"]).max(axis=0))
         return new
 
     def _fold(self, name, change):

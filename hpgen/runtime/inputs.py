@@ -35,8 +35,10 @@ class StepInputs:
 
     def at_record(self, h: float, k: int) -> list:
         """The step vector a record row after global step k is evaluated with: the time
-        t0 + k h and the parameters (the record kernels take no u: zeros)."""
-        return [h, self.t0 + k * h, *([0.0] * len(self.rows[0])), *self.params]
+        t0 + k h, the input of the step that ends there (step k - 1; step 0's at k = 0, the
+        C loop's run step vector) and the parameters."""
+        row = self.rows[0] if self.constant else self.rows[max(k - 1, 0)]
+        return [h, self.t0 + k * h, *row, *self.params]
 
 
 def check_t0(t0) -> float:

@@ -81,13 +81,6 @@ class Integrator(SectionsMixin, RecordsMixin):
         flat = params if isinstance(params, list) else check_params(self.open, params)
         return (np.array([0.0, float(t)] + [0.0] * len(self.open["inputs"]) + flat),)
 
-    def _closed_only(self, what: str) -> None:
-        """Refuse a method that does not run open modules yet (issue 16, work in progress)."""
-        if self.open is not None:
-            raise ModelError(f"{what} does not run models with forces, inputs, runtime "
-                             "parameters or t yet; use simulate, stream or step",
-                             field="backend")
-
     # ---- kernels ------------------------------------------------------------------------
     def legendre(self, g, xi, *, t=0.0, params=None) -> np.ndarray:
         """mu = dl/dxi (g, xi) (at time t, with the runtime parameters ``params``, for an

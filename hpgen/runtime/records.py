@@ -17,12 +17,13 @@ from typing import Any
 import numpy as np
 
 from .. import abi
-from ..errors import RecordError
+from ..errors import ModelError, RecordError
 from . import loop
 from .args import _error, _fits, _int
 from .newton import NewtonOptions
 from .progress import bar as progress_bar
 from .trajectory import npz_path, run_metadata, write_npz
+from .work import R as WORK_START, WorkSum, fill_work, work_offset
 
 
 @dataclass(frozen=True, eq=False)
@@ -125,12 +126,18 @@ def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts, ru
     run to advance (default a new one at gf, mu0, z0); one restored from a snapshot
     (``backend.restore``) after k > 0 steps continues at step k without record 0, bitwise as
     the uninterrupted run (hpgen.runtime.chunked_output's resume). inputs: an open module's
-    StepInputs; t_start: the time of step 0."""
+    StepInputs; t_start: the time of step 0. A ``work`` record (hpgen.runtime.work) has the
+    row evaluated at every step, the work accumulated, and every ``every``-th row kept."""
     if run is None:
         run = backend.start(gf, mu0, z0) if inputs is None else \
             backend.start(gf, mu0, z0, inputs)
     k = backend.steps_done(run)
     first = k == 0
+    col = work_offset(integ.meta)
+    acc = None if col is None else WorkSum(h)
+    if acc is not None and not first:
+        raise ModelError("a run that records work cannot be resumed (the work is accumulated "
+                         "from its start); run it again", field="record")
     if first:
         code, row0 = backend.record(gf, mu0) if inputs is None else \
             backend.record(gf, mu0, inputs)
@@ -138,16 +145,20 @@ def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts, ru
             rec = make_records(integ, row0.reshape(1, -1), {**loop.new_status(), "code": code},
                                h, every, 0, t_start)
             raise rec.error
+        row0 = np.array(row0, dtype=np.float64).reshape(1, -1)
     while first or k < steps:
-        todo = min(chunk, steps - k)
-        done, rows, st = backend.advance_record(run, h, todo, every, opts)
+        # (work: the first chunk holds the first R + 1 nodes, which its start rule needs)
+        todo = min(chunk if acc is None or not first else max(chunk, WORK_START), steps - k)
+        done, rows, st = backend.advance_record(run, h, todo, 1 if acc else every, opts)
         z1 = (integ._restart(st, gf, mu0, h, z0, opts)
               if first and inputs is None and z0 is not None else None)
-        if z1 is not None:
+        if z1 is not None:                   # (closed modules only: no work record)
             run = backend.start(gf, mu0, z1)
             done, rows, st = backend.advance_record(run, h, todo, every, opts)
-        if first:
-            rows = np.concatenate([row0.reshape(1, -1), rows])
+        if acc is not None:
+            rows = _keep_every(rows, col, acc, k, every, row0 if first else None)
+        elif first:
+            rows = np.concatenate([row0, rows])
         rec = make_records(integ, rows, st, h, every, k // every + (0 if first else 1),
                            t_start, (gf, mu0) if first and inputs is None else None)
         if rec.error is not None:
@@ -155,6 +166,17 @@ def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts, ru
         yield rec
         k += done
         first = False
+
+
+def _keep_every(rows, col, acc, k, every, row0=None):
+    """Rows after steps k + 1, k + 2, ... (one per step; preceded by record 0's row ``row0``
+    when given): the work column filled, then the rows of the steps that are multiples of
+    ``every``."""
+    rows = np.array(rows, dtype=np.float64).reshape(len(rows), -1)
+    if row0 is not None:
+        rows, k = np.concatenate([row0, rows]), k - 1
+    fill_work(rows, col, acc)
+    return rows[(k + 1 + np.arange(len(rows))) % every == 0]
 
 
 class RecordsMixin:
@@ -226,17 +248,26 @@ class RecordsMixin:
         return chunks[0]
 
     def record_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
-                     newton: NewtonOptions | None = None, progress=None) -> list:
+                     newton: NewtonOptions | None = None, u=None, params=None, t0=0.0,
+                     progress=None) -> list:
         """``record`` for an ensemble (starts as in ``simulate_batch``), in C over ``threads``
         threads (default: the CPU count); each run's rows are bitwise those of ``record`` on
         its own. Returns B Records; a failed run's Records is partial with ``.error`` set
-        (nothing is raised). progress: as for ``simulate_batch``."""
-        self._closed_only("record_batch")
-        h, steps, every, opts, threads, gs, ms, z0s, _ = self._prepare_batch(
-            g0, h, steps, xi0, mu0, every, threads, newton, "record_batch")
-        _fits(len(gs) * (steps // every + 1), self._b.record_width or 1, "record_batch")
+        (nothing is raised). u, params, t0 and progress: as for ``simulate_batch`` (a params
+        value with a leading axis of length B is a sweep: run b takes entry b)."""
+        h, steps, every, opts, threads, gs, ms, z0s, inputs = self._prepare_batch(
+            g0, h, steps, xi0, mu0, every, threads, newton, "record_batch", u, params, t0)
+        col = work_offset(self.meta)
+        _fits(len(gs) * (steps // (every if col is None else 1) + 1),
+              self._b.record_width or 1, "record_batch")
         with progress_bar(len(gs), "record_batch", "member", progress) as bar:
-            rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps, every, opts,
-                                                     threads, bar)
-        return [make_records(self, rows[b, :n_rows[b]], sts[b], h, every, 0)
-                for b in range(len(gs))]
+            rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps,
+                                                     every if col is None else 1, opts,
+                                                     threads, bar, inputs)
+        out = []
+        for b in range(len(gs)):
+            mine = rows[b, :n_rows[b]]
+            if col is not None and len(mine):     # the work from the every-step rows
+                mine = _keep_every(mine[1:], col, WorkSum(h), 0, every, mine[:1])
+            out.append(make_records(self, mine, sts[b], h, every, 0, float(t0)))
+        return out

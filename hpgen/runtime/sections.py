@@ -1,6 +1,8 @@
 """Poincare sections of the scene's ``section`` s(g, mu) = 0, found inside the C step loop
 (hpgen_advance_sections; the Python backend mirrors it): the Integrator methods ``sections``
-and ``sections_batch`` (see hpgen.runtime.trajectory.SectionCrossings for the conventions).
+and ``sections_batch`` (see hpgen.runtime.trajectory.SectionCrossings for the conventions);
+and the section in t, ``section: {every_t: T}`` (``sections(..., every_t=T)``): the
+stroboscopic samples at t0 + j T, node states of ``stream`` every T / h steps.
 """
 from __future__ import annotations
 
@@ -8,10 +10,22 @@ import os
 
 import numpy as np
 
-from ..errors import ModelError
+from ..errors import ConvergenceError, ModelError
 from .. import abi
-from .args import _error, _int, _step_size
-from .inputs import step_inputs
+from .args import _error, _int, _positive, _step_size
+from .inputs import batch_inputs, step_inputs
+
+
+def strobe_steps(every_t, h) -> int:
+    """N = every_t / h, the steps between two samples of a section in t; ModelError unless
+    every_t > 0 is a whole number (>= 1) of steps within 1e-9 relative."""
+    T = _positive(every_t, "every_t")
+    ratio = T / h
+    N = round(ratio)
+    if N < 1 or abs(ratio - N) > 1e-9 * ratio:
+        raise ModelError(f"every_t / h = {ratio:.12g} is not a whole number of steps (within "
+                         "1e-9 relative); choose h = every_t / N", field="every_t")
+    return int(N)
 from .newton import NewtonOptions
 from .trajectory import SectionCrossings
 
@@ -22,11 +36,12 @@ class SectionsMixin:
 
     def sections(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None, chunk=100_000,
                  *, newton: NewtonOptions | None = None, u=None, params=None,
-                 t0=0.0) -> SectionCrossings:
+                 t0=0.0, every_t=None) -> SectionCrossings:
         """Run up to ``steps`` steps and keep only the upward crossings of ``scene.section``.
 
         s(g, mu) = 0 is tested inside the step loop (docs/numerics.md sec. 12); the states are
-        bitwise those of ``simulate``. The module's model must have a ``section``.
+        bitwise those of ``simulate``. The module's model must have a ``section``, unless
+        ``every_t`` is given.
 
         Parameters
         ----------
@@ -47,6 +62,11 @@ class SectionsMixin:
             values); no recompilation.
         t0 : float, optional
             Start time (default 0): record k is at t0 + k every h.
+        every_t : float or None, optional
+            A section in t (the scene's ``section: {every_t: T}``): the stroboscopic section
+            at t0 + j T, j = 0, 1, ..., T a whole number N of steps of h (within 1e-9
+            relative): the node states after every N steps, exactly (no interpolation);
+            ``step`` = j N. No compiled section is needed; max_crossings caps the samples.
 
         Returns
         -------
@@ -61,6 +81,9 @@ class SectionsMixin:
         ConvergenceError, DomainError
             A step failed; ``.partial`` holds the crossings found before it.
         """
+        if every_t is not None:
+            return self._stroboscopic(g0, h, steps, xi0, mu0, max_crossings, chunk, newton,
+                                      u, params, t0, every_t)
         h, steps, cap_total, chunk, opts = self._section_args(h, steps, max_crossings, chunk,
                                                              newton)
         inputs = step_inputs(self.open, steps, u, params, t0)
@@ -73,26 +96,63 @@ class SectionsMixin:
 
     def sections_batch(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
                        threads=None, chunk=100_000, *,
-                       newton: NewtonOptions | None = None) -> list:
+                       newton: NewtonOptions | None = None, u=None, params=None,
+                       t0=0.0) -> list:
         """``sections`` for B initial states (g0 (n, n) shared or (B, n, n); xi0 or mu0
         (B, d)), the runs spread over ``threads`` threads (default: the CPU count); each
         result is bitwise that of ``sections`` on its own. A failed run's SectionCrossings
-        is partial with ``.error`` set (nothing is raised)."""
+        is partial with ``.error`` set (nothing is raised). u, params, t0: as for
+        ``simulate_batch`` (a params value with a leading axis of length B is a sweep)."""
         from concurrent.futures import ThreadPoolExecutor
-        self._closed_only("sections_batch")
         h, steps, cap_total, chunk, opts = self._section_args(h, steps, max_crossings, chunk,
                                                              newton)
-        starts = self._batch_starts(g0, xi0, mu0)
+        init = xi0 if xi0 is not None else mu0
+        B = len(init) if hasattr(init, "__len__") else 0
+        inputs = batch_inputs(self.open, B, steps, u, params, t0) if B else None
+        lvs = None if inputs is None else [self._lv(i.t0, i.params) for i in inputs]
+        starts = self._batch_starts(g0, xi0, mu0, lvs)
         threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
 
-        def one(start):
-            gf, m0, x0 = start
-            return self._sections_run(gf, m0, x0, h, steps, cap_total, chunk, opts)
+        def one(b):
+            gf, m0, x0 = starts[b]
+            return self._sections_run(gf, m0, x0, h, steps, cap_total, chunk, opts,
+                                      None if inputs is None else inputs[b])
 
         if threads == 1 or self.backend != "c":
-            return [one(st) for st in starts]
+            return [one(b) for b in range(len(starts))]
         with ThreadPoolExecutor(min(threads, len(starts))) as pool:
-            return list(pool.map(one, starts))
+            return list(pool.map(one, range(len(starts))))
+
+    def _stroboscopic(self, g0, h, steps, xi0, mu0, max_crossings, chunk, newton, u, params,
+                      t0, every_t) -> SectionCrossings:
+        """sections(..., every_t=T): the states at t0 + j T from ``stream`` every N steps."""
+        h = _positive(h, "h")
+        N = strobe_steps(every_t, h)
+        steps = _int(steps, "steps", 0)
+        if max_crossings is not None:
+            steps = min(steps, (_int(max_crossings, "max_crossings", 1) - 1) * N)
+        parts, err = [], None
+        try:
+            parts.extend(self.stream(g0, h, steps, xi0, mu0, every=N, chunk=_int(chunk, "chunk",
+                                                                                1),
+                                     newton=newton, u=u, params=params, t0=t0))
+        except ConvergenceError as e:
+            err = e
+            if e.partial is not None and len(e.partial.t):
+                parts.append(e.partial)
+        cat = lambda name, shape: (np.concatenate([getattr(p, name) for p in parts])  # noqa
+                                   if parts else np.zeros(shape))
+        t = cat("t", (0,))
+        k = np.rint((t - float(t0)) / h).astype(np.int64) if len(t) else np.zeros(0, np.int64)
+        out = SectionCrossings(t=t, g=cat("g", (0, self.n, self.n)),
+                               mu=cat("mu", (0, self.d)), step=k, h=h,
+                               steps=steps if err is None else int(err.step),
+                               partial=err is not None, error=err,
+                               newton_iterations=sum(p.newton_iterations for p in parts))
+        if err is not None:
+            err.partial = out
+            raise err
+        return out
 
     def _section_args(self, h, steps, max_crossings, chunk, newton):
         """(h, steps, crossing cap or None, chunk, options), checked; the module must have a

@@ -301,3 +301,41 @@ def test_run_progress_bar_keeps_the_file(body, tmp_path, capsys):
     assert "run:" in capsys.readouterr().err
     with np.load(a) as za, np.load(b) as zb:
         assert za.files == zb.files and all(np.array_equal(za[k], zb[k]) for k in za.files)
+
+
+DAMPED = """\
+name: damped_body
+group: SO3
+parameters: {I: [1.0, 2.0, 3.0], c: 0.1}
+runtime_parameters: [c]
+lagrangian: 0.5*(I[0]*xi[0]**2 + I[1]*xi[1]**2 + I[2]*xi[2]**2)
+forces: ["-c*xi[0]", "-c*xi[1]", "-c*xi[2]"]
+scene:
+  h: 0.1
+  steps: 40
+  initial: {g: identity, xi: [0.2, 1.0, 3.0]}
+  record: [mu, energy]
+"""
+
+
+def test_params_sweep_bitwise_one_at_a_time(compile_model, tmp_path):
+    """params={"c": C}: member i runs with c = C[i] (one compile), chunked or not, bitwise the
+    one-at-a-time record / simulate; a value per member is required."""
+    path = tmp_path / "damped_body.yaml"
+    path.write_text(DAMPED)
+    integ = compile_model(path)
+    C = np.linspace(0.0, 0.5, 6)
+    res = hpgen.sweep(integ, xi0=W0, h=H, steps=40, every=5, chunk_size=4, threads=2,
+                      params={"c": C}, record=["mu", "energy"], progress=False)
+    states = hpgen.sweep(integ, xi0=W0, h=H, steps=40, every=5, params={"c": C},
+                         progress=False)
+    for i in range(6):
+        one = integ.record(np.eye(3), H, 40, xi0=W0[i], every=5, params={"c": C[i]})
+        assert _equal(res["mu"][i], one["mu"]) and _equal(res["energy"][i], one["energy"])
+        sim = integ.simulate(np.eye(3), H, 40, xi0=W0[i], every=5, params={"c": C[i]})
+        assert _equal(states["mu"][i], sim.mu) and _equal(states["g"][i], sim.g)
+    assert res["energy"][5, -1] < 0.5 * res["energy"][0, -1]      # more damping, less energy
+    for bad, text in (({"c": C[:3]}, r"params.c: expected shape \(6,\)"),
+                      ({"k": C}, "unknown runtime parameter 'k'")):
+        with pytest.raises(ModelError, match=text):
+            hpgen.sweep(integ, xi0=W0, h=H, steps=4, params=bad, progress=False)

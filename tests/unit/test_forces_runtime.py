@@ -1,6 +1,6 @@
 """Open modules (forces, control inputs, runtime parameters, t; issue 16) through the public
 API: u, params and t0 in simulate / stream / step / simulate_batch on both backends, their
-checks, C against Python, and the refusals of what does not run them yet (record, sections)."""
+checks, C against Python, record / sections and their batches."""
 from __future__ import annotations
 
 import numpy as np
@@ -202,15 +202,30 @@ def test_sections_of_an_open_module(modules):
     assert np.allclose(cs.t, 0.3 + (ks + theta) * 0.05, rtol=0, atol=1e-12)
 
 
-def test_what_does_not_run_open_modules_yet(modules):
-    top = modules["top_c"]
-    with pytest.raises(ModelError, match="does not run models with forces"):
-        top.record_batch(np.eye(3), 0.05, 3, xi0=[[0.2, 1.0, 3.0]])
+def test_record_and_sections_batch_of_an_open_module(modules):
+    """record_batch / sections_batch over a params sweep with t0: each run bitwise the
+    one-at-a-time record / sections (rows, times, crossings)."""
+    Mg = np.array([0.8, 1.3, 1.7])
+    W0 = np.tile([0.2, 1.0, 3.0], (3, 1))
+    recs = modules["scene_c"].record_batch(np.eye(3), 0.05, 60, xi0=W0, every=10,
+                                           params={"Mg": Mg}, t0=0.3, threads=2)
+    secs = modules["section_c"].sections_batch(np.eye(3), 0.05, 400, xi0=W0,
+                                               params={"Mg": Mg}, t0=0.3, threads=2)
+    for b in range(3):
+        kw = dict(xi0=W0[b], params={"Mg": Mg[b]}, t0=0.3)
+        one = modules["scene_c"].record(np.eye(3), 0.05, 60, every=10, **kw)
+        assert recs[b].names == one.names and np.array_equal(recs[b].t, one.t)
+        assert all(np.array_equal(recs[b][k], one[k]) for k in one.names)
+        cs = modules["section_c"].sections(np.eye(3), 0.05, 400, **kw)
+        assert len(cs.t) >= 3 and np.array_equal(secs[b].t, cs.t)
+        assert np.array_equal(secs[b].mu, cs.mu) and np.array_equal(secs[b].g, cs.g)
+    assert np.abs(recs[0]["mu"][-1] - recs[2]["mu"][-1]).max() > 1e-3
 
 
 def test_cli_on_an_open_model(modules, tmp_path):
-    """hpgen run records an open model's scene (default params, t0 = 0); hpgen check and
-    hpgen bench refuse it with one line and exit status 2 (not implemented yet)."""
+    """hpgen run records an open model's scene (default params, t0 = 0); hpgen bench refuses
+    it with one line and exit status 2 (not implemented yet); hpgen check reports the
+    energy-work balance (tests/property/test_check_forced.py)."""
     import subprocess
     import sys
     path = modules["root"] / "scene.yaml"
@@ -223,7 +238,7 @@ def test_cli_on_an_open_model(modules, tmp_path):
     out = np.load(tmp_path / "o.npz")
     sim = modules["scene_c"].simulate(np.eye(3), 0.05, 60, xi0=[0.2, 1.0, 3.0], every=10)
     assert np.array_equal(out["mu"], sim.mu)
-    for cmd in (["check"], ["bench", "--T", "0.5", "--peers", "DOP853"]):
+    for cmd in (["bench", "--T", "0.5", "--peers", "DOP853"],):
         res = subprocess.run([sys.executable, "-m", "hpgen", cmd[0], str(path), *cmd[1:],
                               "--cache-dir", env_cache], capture_output=True, text=True,
                              timeout=600)

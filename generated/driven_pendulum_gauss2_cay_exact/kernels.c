@@ -1,0 +1,3980 @@
+/*
+ * hpgen generated module driven_pendulum_gauss2_cay_exact -- do not edit, regenerate with hpgen
+ * model: driven_pendulum
+ * options: tableau=gauss2, tau=cay, rkmk=exact
+ * hpgen version: 0.1.0
+ * content hash (normalized model + options): b76f001c568489b54c25240c2e6bce8e6b4f732e81abe16fca3e42f6b849b2ff
+ *
+ * C backend: CasADi's generated kernels (symbols hidden) + dense LU, Newton, hpgen_step, the
+ * runs (hpgen_run_*, hpgen_advance*, hpgen_record, hpgen_observe) (exported); the contract
+ * with hpgen.runtime is hpgen.abi. Conventions: all arrays are double, matrices column-major
+ * (g[i + j*n]), h is a scalar at the API and a 1-vector for the kernels. No static mutable
+ * state: every function is thread-safe; work arrays live on the stack, sized at codegen time.
+ * Status codes (hpgen.abi.STATUS):
+ *   HPGEN_OK = 0: ok
+ *   HPGEN_NO_CONVERGENCE = 1: Newton did not converge
+ *   HPGEN_NONFINITE = 2: Newton diverged: a non-finite value (or a singular Jacobian) appeared
+ *   HPGEN_DOMAIN = 3: the converged solution left the chart map tau's domain (margin(z, h) <= 0)
+ *   HPGEN_RECORD = 4: a record row is not finite (or its velocity xi did not converge)
+ *   HPGEN_INVALID = -1: invalid argument
+ * HPGEN_DOMAIN is a start or a converged solution outside tau's domain; a Newton failure is
+ * NO_CONVERGENCE or NONFINITE wherever its iterates went.
+ */
+/* Standard headers first: the CasADi part below is compiled under hidden visibility. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#if defined(__GNUC__)
+#pragma GCC visibility push(hidden)
+#endif
+/* ======================= CasADi-generated code (casadi.CodeGenerator) ================== */
+/* How to prefix internal symbols */
+#ifdef CASADI_CODEGEN_PREFIX
+  #define CASADI_NAMESPACE_CONCAT(NS, ID) _CASADI_NAMESPACE_CONCAT(NS, ID)
+  #define _CASADI_NAMESPACE_CONCAT(NS, ID) NS ## ID
+  #define CASADI_PREFIX(ID) CASADI_NAMESPACE_CONCAT(CODEGEN_PREFIX, ID)
+#else
+  #define CASADI_PREFIX(ID) hpgen_driven_pendulum_gauss2_cay_exact__ ## ID
+#endif
+
+#include <math.h>
+
+#ifndef casadi_real
+#define casadi_real double
+#endif
+
+#ifndef casadi_int
+#define casadi_int long long int
+#endif
+
+/* Add prefix to internal symbols */
+#define casadi_f0 CASADI_PREFIX(f0)
+#define casadi_f1 CASADI_PREFIX(f1)
+#define casadi_f10 CASADI_PREFIX(f10)
+#define casadi_f11 CASADI_PREFIX(f11)
+#define casadi_f12 CASADI_PREFIX(f12)
+#define casadi_f13 CASADI_PREFIX(f13)
+#define casadi_f14 CASADI_PREFIX(f14)
+#define casadi_f15 CASADI_PREFIX(f15)
+#define casadi_f16 CASADI_PREFIX(f16)
+#define casadi_f2 CASADI_PREFIX(f2)
+#define casadi_f3 CASADI_PREFIX(f3)
+#define casadi_f4 CASADI_PREFIX(f4)
+#define casadi_f5 CASADI_PREFIX(f5)
+#define casadi_f6 CASADI_PREFIX(f6)
+#define casadi_f7 CASADI_PREFIX(f7)
+#define casadi_f8 CASADI_PREFIX(f8)
+#define casadi_f9 CASADI_PREFIX(f9)
+#define casadi_fabs CASADI_PREFIX(fabs)
+#define casadi_fmax CASADI_PREFIX(fmax)
+#define casadi_fmin CASADI_PREFIX(fmin)
+#define casadi_s0 CASADI_PREFIX(s0)
+#define casadi_s1 CASADI_PREFIX(s1)
+#define casadi_s2 CASADI_PREFIX(s2)
+#define casadi_s3 CASADI_PREFIX(s3)
+#define casadi_s4 CASADI_PREFIX(s4)
+#define casadi_s5 CASADI_PREFIX(s5)
+#define casadi_sq CASADI_PREFIX(sq)
+
+/* Symbol visibility in DLLs */
+#ifndef CASADI_SYMBOL_EXPORT
+  #if defined(_WIN32) || defined(__WIN32__) || defined(__CYGWIN__)
+    #if defined(STATIC_LINKED)
+      #define CASADI_SYMBOL_EXPORT
+    #else
+      #define CASADI_SYMBOL_EXPORT __declspec(dllexport)
+    #endif
+  #elif defined(__GNUC__) && defined(GCC_HASCLASSVISIBILITY)
+    #define CASADI_SYMBOL_EXPORT __attribute__ ((visibility ("default")))
+  #else
+    #define CASADI_SYMBOL_EXPORT
+  #endif
+#endif
+
+casadi_real casadi_sq(casadi_real x) { return x*x;}
+
+casadi_real casadi_fabs(casadi_real x) {
+/* Pre-c99 compatibility */
+#if __STDC_VERSION__ < 199901L
+  return x>0 ? x : -x;
+#else
+  return fabs(x);
+#endif
+}
+
+casadi_real casadi_fmax(casadi_real x, casadi_real y) {
+/* Pre-c99 compatibility */
+#if __STDC_VERSION__ < 199901L
+  return x>y ? x : y;
+#else
+  return (x > y || y != y) ? x : y;
+#endif
+}
+
+casadi_real casadi_fmin(casadi_real x, casadi_real y) {
+/* Pre-c99 compatibility */
+#if __STDC_VERSION__ < 199901L
+  return x<y ? x : y;
+#else
+  return (x < y || y != y) ? x : y;
+#endif
+}
+
+/* Configuration this file was compiled with */
+CASADI_SYMBOL_EXPORT void hpgen_driven_pendulum_gauss2_cay_exact__casadi_version(int* major, int* minor, int* patch) {
+  *major = 3;
+  *minor = 8;
+  *patch = 2;
+}
+CASADI_SYMBOL_EXPORT int hpgen_driven_pendulum_gauss2_cay_exact__casadi_int_size(void) { return (int) sizeof(casadi_int); }
+CASADI_SYMBOL_EXPORT int hpgen_driven_pendulum_gauss2_cay_exact__casadi_real_size(void) { return (int) sizeof(casadi_real); }
+
+static const casadi_int casadi_s0[3] = {3, 1, 1};
+static const casadi_int casadi_s1[3] = {4, 1, 1};
+static const casadi_int casadi_s2[3] = {1, 1, 1};
+static const casadi_int casadi_s3[3] = {9, 1, 1};
+static const casadi_int casadi_s4[3] = {7, 1, 1};
+static const casadi_int casadi_s5[3] = {6, 1, 1};
+
+/* residual:(z[3],g[4],p,h[3])->(F[3]) */
+static int casadi_f0(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27;
+  a00=1.;
+  a01=arg[3]? arg[3][0] : 0;
+  a02=arg[0]? arg[0][0] : 0;
+  a03=(a01*a02);
+  a04=casadi_sq(a03);
+  a05=4.;
+  a04=(a04/a05);
+  a06=(a00+a04);
+  a07=1.5000000000000002e+00;
+  a08=3.0000000000000004e+00;
+  a09=(a08*a02);
+  a10=4.6410161513775439e-01;
+  a11=arg[0]? arg[0][1] : 0;
+  a10=(a10*a11);
+  a09=(a09+a10);
+  a10=(a09/a06);
+  a12=(2.*a10);
+  a13=2.5000000000000000e-01;
+  a14=(a13*a01);
+  a12=(a12*a14);
+  a15=5.0000000000000000e-01;
+  a16=arg[0]? arg[0][2] : 0;
+  a17=(a01*a16);
+  a17=(a15*a17);
+  a18=(a06*a17);
+  a12=(a12-a18);
+  a18=(a15*a01);
+  a12=(a12/a18);
+  a12=(a12/a06);
+  a19=(a07*a12);
+  a20=-3.2320508075688776e+00;
+  a21=-6.4641016151377553e+00;
+  a21=(a21*a02);
+  a08=(a08*a11);
+  a21=(a21+a08);
+  a11=(a01*a11);
+  a08=casadi_sq(a11);
+  a08=(a08/a05);
+  a02=(a00+a08);
+  a22=(a21/a02);
+  a23=(2.*a22);
+  a23=(a23*a14);
+  a14=(a02*a17);
+  a23=(a23-a14);
+  a23=(a23/a18);
+  a23=(a23/a02);
+  a20=(a20*a23);
+  a19=(a19+a20);
+  a20=(2.*a03);
+  a14=5.3867513459481287e-01;
+  a24=2.3205080756887719e-01;
+  a24=(a24*a12);
+  a07=(a07*a23);
+  a24=(a24+a07);
+  a07=(a01*a24);
+  a14=(a14*a07);
+  a14=(a17+a14);
+  a23=(a01*a19);
+  a12=(a13*a23);
+  a14=(a14+a12);
+  a14=(a10*a14);
+  a14=(a13*a14);
+  a20=(a20*a14);
+  a19=(a19-a20);
+  a19=(a06*a19);
+  a20=-5.0000000000000000e-01;
+  a10=(a20*a10);
+  a14=arg[3]? arg[3][2] : 0;
+  a12=6.6666666666666663e-01;
+  a25=arg[3]? arg[3][1] : 0;
+  a26=2.1132486540518713e-01;
+  a26=(a26*a01);
+  a26=(a25+a26);
+  a26=(a12*a26);
+  a26=cos(a26);
+  a26=(a14*a26);
+  a10=(a10+a26);
+  a10=(a10*a18);
+  a10=(a19+a10);
+  a26=arg[1]? arg[1][2] : 0;
+  a04=(a00-a04);
+  a04=(a04/a06);
+  a04=(a26*a04);
+  a27=arg[1]? arg[1][0] : 0;
+  a03=(a03/a06);
+  a03=(a27*a03);
+  a04=(a04-a03);
+  a04=(a04*a18);
+  a10=(a10+a04);
+  a10=(a10/a01);
+  if (res[0]!=0) res[0][0]=a10;
+  a20=(a20*a22);
+  a10=7.8867513459481287e-01;
+  a10=(a10*a01);
+  a25=(a25+a10);
+  a12=(a12*a25);
+  a12=cos(a12);
+  a14=(a14*a12);
+  a20=(a20+a14);
+  a20=(a20*a18);
+  a08=(a00-a08);
+  a08=(a08/a02);
+  a26=(a26*a08);
+  a08=(a11/a02);
+  a27=(a27*a08);
+  a26=(a26-a27);
+  a26=(a26*a18);
+  a20=(a20+a26);
+  a11=(2.*a11);
+  a07=(a13*a07);
+  a17=(a17+a07);
+  a07=-3.8675134594812879e-02;
+  a07=(a07*a23);
+  a17=(a17+a07);
+  a22=(a22*a17);
+  a13=(a13*a22);
+  a11=(a11*a13);
+  a24=(a24-a11);
+  a02=(a02*a24);
+  a20=(a20+a02);
+  a20=(a20/a01);
+  if (res[0]!=0) res[0][1]=a20;
+  a20=arg[2]? arg[2][0] : 0;
+  a09=(a15*a09);
+  a15=(a15*a21);
+  a09=(a09+a15);
+  a01=(a01*a09);
+  a01=casadi_sq(a01);
+  a01=(a01/a05);
+  a00=(a00+a01);
+  a00=(a00*a16);
+  a00=(a00+a02);
+  a00=(a00+a19);
+  a20=(a20-a00);
+  if (res[0]!=0) res[0][2]=a20;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int residual(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f0(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int residual_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void residual_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void residual_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void residual_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int residual_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int residual_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real residual_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* residual_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* residual_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "F";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* residual_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s2;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* residual_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int residual_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int residual_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* residual_jacobian:(z[3],g[4],p,h[3])->(F[3],J[9]) */
+static int casadi_f1(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45;
+  a00=1.;
+  a01=arg[3]? arg[3][0] : 0;
+  a02=arg[0]? arg[0][0] : 0;
+  a03=(a01*a02);
+  a04=casadi_sq(a03);
+  a05=4.;
+  a04=(a04/a05);
+  a06=(a00+a04);
+  a07=1.5000000000000002e+00;
+  a08=3.0000000000000004e+00;
+  a09=(a08*a02);
+  a10=4.6410161513775439e-01;
+  a11=arg[0]? arg[0][1] : 0;
+  a12=(a10*a11);
+  a09=(a09+a12);
+  a12=(a09/a06);
+  a13=(2.*a12);
+  a14=2.5000000000000000e-01;
+  a15=(a14*a01);
+  a13=(a13*a15);
+  a16=5.0000000000000000e-01;
+  a17=arg[0]? arg[0][2] : 0;
+  a18=(a01*a17);
+  a18=(a16*a18);
+  a19=(a06*a18);
+  a13=(a13-a19);
+  a19=(a16*a01);
+  a13=(a13/a19);
+  a13=(a13/a06);
+  a20=(a07*a13);
+  a21=-3.2320508075688776e+00;
+  a22=-6.4641016151377553e+00;
+  a02=(a22*a02);
+  a23=(a08*a11);
+  a02=(a02+a23);
+  a11=(a01*a11);
+  a23=casadi_sq(a11);
+  a23=(a23/a05);
+  a24=(a00+a23);
+  a25=(a02/a24);
+  a26=(2.*a25);
+  a26=(a26*a15);
+  a27=(a24*a18);
+  a26=(a26-a27);
+  a26=(a26/a19);
+  a26=(a26/a24);
+  a27=(a21*a26);
+  a20=(a20+a27);
+  a27=(2.*a03);
+  a28=5.3867513459481287e-01;
+  a29=2.3205080756887719e-01;
+  a30=(a29*a13);
+  a31=(a07*a26);
+  a30=(a30+a31);
+  a31=(a01*a30);
+  a32=(a28*a31);
+  a32=(a18+a32);
+  a33=(a01*a20);
+  a34=(a14*a33);
+  a32=(a32+a34);
+  a34=(a12*a32);
+  a34=(a14*a34);
+  a35=(a27*a34);
+  a20=(a20-a35);
+  a35=(a06*a20);
+  a36=-5.0000000000000000e-01;
+  a37=(a36*a12);
+  a38=arg[3]? arg[3][2] : 0;
+  a39=6.6666666666666663e-01;
+  a40=arg[3]? arg[3][1] : 0;
+  a41=2.1132486540518713e-01;
+  a41=(a41*a01);
+  a41=(a40+a41);
+  a41=(a39*a41);
+  a41=cos(a41);
+  a41=(a38*a41);
+  a37=(a37+a41);
+  a37=(a37*a19);
+  a37=(a35+a37);
+  a41=arg[1]? arg[1][2] : 0;
+  a04=(a00-a04);
+  a04=(a04/a06);
+  a42=(a41*a04);
+  a43=arg[1]? arg[1][0] : 0;
+  a03=(a03/a06);
+  a44=(a43*a03);
+  a42=(a42-a44);
+  a42=(a42*a19);
+  a37=(a37+a42);
+  a37=(a37/a01);
+  if (res[0]!=0) res[0][0]=a37;
+  a37=(a36*a25);
+  a42=7.8867513459481287e-01;
+  a42=(a42*a01);
+  a40=(a40+a42);
+  a39=(a39*a40);
+  a39=cos(a39);
+  a38=(a38*a39);
+  a37=(a37+a38);
+  a37=(a37*a19);
+  a23=(a00-a23);
+  a23=(a23/a24);
+  a38=(a41*a23);
+  a39=(a11/a24);
+  a40=(a43*a39);
+  a38=(a38-a40);
+  a38=(a38*a19);
+  a37=(a37+a38);
+  a11=(2.*a11);
+  a31=(a14*a31);
+  a31=(a18+a31);
+  a38=-3.8675134594812879e-02;
+  a33=(a38*a33);
+  a31=(a31+a33);
+  a33=(a25*a31);
+  a33=(a14*a33);
+  a40=(a11*a33);
+  a30=(a30-a40);
+  a40=(a24*a30);
+  a37=(a37+a40);
+  a37=(a37/a01);
+  if (res[0]!=0) res[0][1]=a37;
+  a37=arg[2]? arg[2][0] : 0;
+  a09=(a16*a09);
+  a16=(a16*a02);
+  a09=(a09+a16);
+  a09=(a01*a09);
+  a16=casadi_sq(a09);
+  a16=(a16/a05);
+  a00=(a00+a16);
+  a16=(a00*a17);
+  a16=(a16+a40);
+  a16=(a16+a35);
+  a37=(a37-a16);
+  if (res[0]!=0) res[0][2]=a37;
+  a37=(a27*a01);
+  a37=(a14*a37);
+  a20=(a20*a37);
+  a16=(a08/a06);
+  a35=(a12/a06);
+  a35=(a35*a37);
+  a16=(a16-a35);
+  a35=(2.*a16);
+  a35=(a15*a35);
+  a40=(a18*a37);
+  a35=(a35-a40);
+  a35=(a35/a19);
+  a35=(a35/a06);
+  a13=(a13/a06);
+  a13=(a13*a37);
+  a35=(a35-a13);
+  a13=(a07*a35);
+  a22=(a22/a24);
+  a40=(2.*a22);
+  a40=(a15*a40);
+  a40=(a40/a19);
+  a40=(a40/a24);
+  a05=(a21*a40);
+  a13=(a13+a05);
+  a05=(2.*a01);
+  a34=(a34*a05);
+  a02=(a32*a16);
+  a35=(a29*a35);
+  a40=(a07*a40);
+  a35=(a35+a40);
+  a40=(a01*a35);
+  a42=(a28*a40);
+  a44=(a01*a13);
+  a45=(a14*a44);
+  a42=(a42+a45);
+  a42=(a12*a42);
+  a02=(a02+a42);
+  a02=(a14*a02);
+  a02=(a27*a02);
+  a34=(a34+a02);
+  a13=(a13-a34);
+  a13=(a06*a13);
+  a20=(a20+a13);
+  a16=(a36*a16);
+  a16=(a19*a16);
+  a16=(a20+a16);
+  a13=(a37/a06);
+  a04=(a04/a06);
+  a04=(a04*a37);
+  a13=(a13+a04);
+  a13=(a41*a13);
+  a04=(a01/a06);
+  a03=(a03/a06);
+  a03=(a03*a37);
+  a04=(a04-a03);
+  a04=(a43*a04);
+  a13=(a13+a04);
+  a13=(a19*a13);
+  a16=(a16-a13);
+  a16=(a16/a01);
+  if (res[1]!=0) res[1][0]=a16;
+  a16=(a36*a22);
+  a16=(a19*a16);
+  a22=(a31*a22);
+  a40=(a14*a40);
+  a44=(a38*a44);
+  a40=(a40+a44);
+  a40=(a25*a40);
+  a22=(a22+a40);
+  a22=(a14*a22);
+  a22=(a11*a22);
+  a35=(a35-a22);
+  a35=(a24*a35);
+  a16=(a16+a35);
+  a16=(a16/a01);
+  if (res[1]!=0) res[1][1]=a16;
+  a09=(2.*a09);
+  a16=-1.7320508075688774e+00;
+  a22=(a16*a01);
+  a22=(a09*a22);
+  a22=(a14*a22);
+  a22=(a17*a22);
+  a22=(a22+a35);
+  a22=(a22+a20);
+  a22=(-a22);
+  if (res[1]!=0) res[1][2]=a22;
+  a10=(a10/a06);
+  a22=(2.*a10);
+  a22=(a15*a22);
+  a22=(a22/a19);
+  a22=(a22/a06);
+  a20=(a07*a22);
+  a08=(a08/a24);
+  a35=(a25/a24);
+  a40=(a11*a01);
+  a40=(a14*a40);
+  a35=(a35*a40);
+  a08=(a08-a35);
+  a35=(2.*a08);
+  a15=(a15*a35);
+  a18=(a18*a40);
+  a15=(a15-a18);
+  a15=(a15/a19);
+  a15=(a15/a24);
+  a26=(a26/a24);
+  a26=(a26*a40);
+  a15=(a15-a26);
+  a21=(a21*a15);
+  a20=(a20+a21);
+  a32=(a32*a10);
+  a29=(a29*a22);
+  a07=(a07*a15);
+  a29=(a29+a07);
+  a07=(a01*a29);
+  a28=(a28*a07);
+  a15=(a01*a20);
+  a22=(a14*a15);
+  a28=(a28+a22);
+  a28=(a12*a28);
+  a32=(a32+a28);
+  a32=(a14*a32);
+  a32=(a27*a32);
+  a20=(a20-a32);
+  a20=(a06*a20);
+  a10=(a36*a10);
+  a10=(a19*a10);
+  a10=(a20+a10);
+  a10=(a10/a01);
+  if (res[1]!=0) res[1][3]=a10;
+  a36=(a36*a08);
+  a36=(a19*a36);
+  a10=(a40/a24);
+  a23=(a23/a24);
+  a23=(a23*a40);
+  a10=(a10+a23);
+  a41=(a41*a10);
+  a10=(a01/a24);
+  a39=(a39/a24);
+  a39=(a39*a40);
+  a10=(a10-a39);
+  a43=(a43*a10);
+  a41=(a41+a43);
+  a41=(a19*a41);
+  a36=(a36-a41);
+  a30=(a30*a40);
+  a33=(a33*a05);
+  a31=(a31*a08);
+  a07=(a14*a07);
+  a38=(a38*a15);
+  a07=(a07+a38);
+  a07=(a25*a07);
+  a31=(a31+a07);
+  a31=(a14*a31);
+  a31=(a11*a31);
+  a33=(a33+a31);
+  a29=(a29-a33);
+  a29=(a24*a29);
+  a30=(a30+a29);
+  a36=(a36+a30);
+  a36=(a36/a01);
+  if (res[1]!=0) res[1][4]=a36;
+  a36=1.7320508075688774e+00;
+  a29=(a36*a01);
+  a09=(a09*a29);
+  a09=(a14*a09);
+  a17=(a17*a09);
+  a17=(a17+a30);
+  a17=(a17+a20);
+  a17=(-a17);
+  if (res[1]!=0) res[1][5]=a17;
+  a17=9.3301270189221941e-01;
+  a17=(a17*a01);
+  a17=(a19-a17);
+  a20=-4.3301270189221935e-01;
+  a20=(a20*a01);
+  a17=(a17-a20);
+  a12=(a12*a17);
+  a12=(a14*a12);
+  a27=(a27*a12);
+  a16=(a16+a27);
+  a06=(a06*a16);
+  a16=(a06/a01);
+  a16=(-a16);
+  if (res[1]!=0) res[1][6]=a16;
+  a16=4.3301270189221935e-01;
+  a16=(a16*a01);
+  a19=(a19-a16);
+  a16=6.6987298107780674e-02;
+  a16=(a16*a01);
+  a19=(a19-a16);
+  a25=(a25*a19);
+  a14=(a14*a25);
+  a11=(a11*a14);
+  a36=(a36+a11);
+  a24=(a24*a36);
+  a01=(a24/a01);
+  a01=(-a01);
+  if (res[1]!=0) res[1][7]=a01;
+  a00=(a00-a24);
+  a00=(a00-a06);
+  a00=(-a00);
+  if (res[1]!=0) res[1][8]=a00;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int residual_jacobian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f1(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int residual_jacobian_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void residual_jacobian_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void residual_jacobian_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void residual_jacobian_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int residual_jacobian_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int residual_jacobian_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real residual_jacobian_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* residual_jacobian_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* residual_jacobian_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "F";
+    case 1: return "J";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* residual_jacobian_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s2;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* residual_jacobian_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s3;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int residual_jacobian_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int residual_jacobian_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* update:(z[3],g[4],p,h[3])->(g1[4],p1) */
+static int casadi_f2(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8;
+  a0=arg[1]? arg[1][0] : 0;
+  a1=1.;
+  a2=arg[3]? arg[3][0] : 0;
+  a3=5.0000000000000000e-01;
+  a4=3.0000000000000004e+00;
+  a5=arg[0]? arg[0][0] : 0;
+  a6=(a4*a5);
+  a7=4.6410161513775439e-01;
+  a8=arg[0]? arg[0][1] : 0;
+  a7=(a7*a8);
+  a6=(a6+a7);
+  a6=(a3*a6);
+  a7=-6.4641016151377553e+00;
+  a7=(a7*a5);
+  a4=(a4*a8);
+  a7=(a7+a4);
+  a3=(a3*a7);
+  a6=(a6+a3);
+  a2=(a2*a6);
+  a6=casadi_sq(a2);
+  a3=4.;
+  a6=(a6/a3);
+  a3=(a1-a6);
+  a1=(a1+a6);
+  a3=(a3/a1);
+  a6=(a0*a3);
+  a7=arg[1]? arg[1][2] : 0;
+  a2=(a2/a1);
+  a4=(a7*a2);
+  a6=(a6+a4);
+  if (res[0]!=0) res[0][0]=a6;
+  a6=arg[1]? arg[1][1] : 0;
+  a4=(a6*a3);
+  a8=arg[1]? arg[1][3] : 0;
+  a5=(a8*a2);
+  a4=(a4+a5);
+  if (res[0]!=0) res[0][1]=a4;
+  a7=(a7*a3);
+  a0=(a0*a2);
+  a7=(a7-a0);
+  if (res[0]!=0) res[0][2]=a7;
+  a8=(a8*a3);
+  a6=(a6*a2);
+  a8=(a8-a6);
+  if (res[0]!=0) res[0][3]=a8;
+  a8=arg[0]? arg[0][2] : 0;
+  a1=(a1*a8);
+  if (res[1]!=0) res[1][0]=a1;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int update(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f2(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int update_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void update_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void update_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void update_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int update_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int update_n_out(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_real update_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* update_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* update_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "g1";
+    case 1: return "p1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* update_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s2;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* update_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int update_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 2;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int update_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 2*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* guess:(xi,g[4],p,h[3])->(z0[3]) */
+static int casadi_f3(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1;
+  a0=2.1132486540518713e-01;
+  a1=arg[0]? arg[0][0] : 0;
+  a0=(a0*a1);
+  if (res[0]!=0) res[0][0]=a0;
+  a0=7.8867513459481287e-01;
+  a0=(a0*a1);
+  if (res[0]!=0) res[0][1]=a0;
+  a0=arg[2]? arg[2][0] : 0;
+  if (res[0]!=0) res[0][2]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int guess(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f3(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int guess_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void guess_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void guess_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void guess_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int guess_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int guess_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real guess_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* guess_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "xi";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* guess_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "z0";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* guess_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s1;
+    case 2: return casadi_s2;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* guess_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int guess_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int guess_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* legendre:(g[4],xi,h[3])->(mu) */
+static int casadi_f4(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=arg[1]? arg[1][0] : 0;
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int legendre(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f4(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int legendre_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void legendre_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void legendre_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void legendre_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int legendre_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int legendre_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real legendre_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* legendre_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "xi";
+    case 2: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* legendre_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "mu";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* legendre_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* legendre_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int legendre_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int legendre_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* hessian:(g[4],xi,h[3])->(H) */
+static int casadi_f5(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=1.;
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int hessian(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f5(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int hessian_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void hessian_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void hessian_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void hessian_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int hessian_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int hessian_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real hessian_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* hessian_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "xi";
+    case 2: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* hessian_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "H";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* hessian_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* hessian_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int hessian_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int hessian_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* energy:(g[4],xi,h[3])->(E) */
+static int casadi_f6(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2;
+  a0=arg[1]? arg[1][0] : 0;
+  a0=casadi_sq(a0);
+  a1=5.0000000000000000e-01;
+  a1=(a1*a0);
+  a2=arg[0]? arg[0][0] : 0;
+  a1=(a1+a2);
+  a0=(a0-a1);
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int energy(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f6(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int energy_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void energy_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void energy_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void energy_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int energy_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int energy_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real energy_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* energy_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "xi";
+    case 2: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* energy_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "E";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* energy_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* energy_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int energy_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int energy_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* momentum:(g[4],p)->(m) */
+static int casadi_f7(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2;
+  a0=arg[0]? arg[0][3] : 0;
+  a1=arg[0]? arg[0][0] : 0;
+  a0=(a0*a1);
+  a1=arg[0]? arg[0][2] : 0;
+  a2=arg[0]? arg[0][1] : 0;
+  a1=(a1*a2);
+  a0=(a0-a1);
+  a1=arg[1]? arg[1][0] : 0;
+  a0=(a0*a1);
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int momentum(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f7(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int momentum_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void momentum_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void momentum_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void momentum_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int momentum_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int momentum_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real momentum_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* momentum_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* momentum_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "m";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* momentum_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* momentum_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int momentum_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int momentum_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* defect:(g[4])->(e) */
+static int casadi_f8(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7;
+  a0=arg[0]? arg[0][0] : 0;
+  a1=casadi_sq(a0);
+  a2=arg[0]? arg[0][1] : 0;
+  a3=casadi_sq(a2);
+  a1=(a1+a3);
+  a3=1.;
+  a1=(a1-a3);
+  a1=casadi_fabs(a1);
+  a4=arg[0]? arg[0][2] : 0;
+  a5=(a4*a0);
+  a6=arg[0]? arg[0][3] : 0;
+  a7=(a6*a2);
+  a5=(a5+a7);
+  a5=casadi_fabs(a5);
+  a1=casadi_fmax(a1,a5);
+  a5=(a0*a4);
+  a7=(a2*a6);
+  a5=(a5+a7);
+  a5=casadi_fabs(a5);
+  a1=casadi_fmax(a1,a5);
+  a5=casadi_sq(a4);
+  a7=casadi_sq(a6);
+  a5=(a5+a7);
+  a5=(a5-a3);
+  a5=casadi_fabs(a5);
+  a1=casadi_fmax(a1,a5);
+  a0=(a0*a6);
+  a4=(a4*a2);
+  a0=(a0-a4);
+  a0=(a0-a3);
+  a0=casadi_fabs(a0);
+  a1=casadi_fmax(a1,a0);
+  if (res[0]!=0) res[0][0]=a1;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int defect(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f8(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int defect_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void defect_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void defect_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void defect_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int defect_n_in(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_int defect_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real defect_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* defect_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* defect_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "e";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* defect_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* defect_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int defect_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int defect_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 1*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* margin:(z[3],h[3])->(m) */
+static int casadi_f9(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8;
+  a0=1.;
+  a1=4.;
+  a2=arg[1]? arg[1][0] : 0;
+  a3=arg[0]? arg[0][0] : 0;
+  a4=(a2*a3);
+  a4=casadi_sq(a4);
+  a4=(a1-a4);
+  a0=casadi_fmin(a0,a4);
+  a0=casadi_fmin(a0,a4);
+  a4=arg[0]? arg[0][1] : 0;
+  a5=(a2*a4);
+  a5=casadi_sq(a5);
+  a5=(a1-a5);
+  a0=casadi_fmin(a0,a5);
+  a0=casadi_fmin(a0,a5);
+  a5=5.0000000000000000e-01;
+  a6=3.0000000000000004e+00;
+  a7=(a6*a3);
+  a8=4.6410161513775439e-01;
+  a8=(a8*a4);
+  a7=(a7+a8);
+  a7=(a5*a7);
+  a8=-6.4641016151377553e+00;
+  a8=(a8*a3);
+  a6=(a6*a4);
+  a8=(a8+a6);
+  a5=(a5*a8);
+  a7=(a7+a5);
+  a2=(a2*a7);
+  a2=casadi_sq(a2);
+  a1=(a1-a2);
+  a0=casadi_fmin(a0,a1);
+  a0=casadi_fmin(a0,a1);
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int margin(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f9(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int margin_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void margin_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void margin_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void margin_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int margin_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int margin_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real margin_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* margin_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* margin_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "m";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* margin_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* margin_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int margin_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int margin_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* section:(g[4],p)->(s) */
+static int casadi_f10(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0;
+  a0=1.;
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int section(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f10(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int section_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void section_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void section_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void section_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int section_n_in(void) { return 2;}
+
+CASADI_SYMBOL_EXPORT casadi_int section_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real section_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* section_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* section_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "s";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* section_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* section_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int section_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int section_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 2*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* chart_point:(z[3],g[4],h[3],theta)->(g_theta[4]) */
+static int casadi_f11(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8, a9;
+  a0=arg[1]? arg[1][0] : 0;
+  a1=1.;
+  a2=arg[3]? arg[3][0] : 0;
+  a3=arg[2]? arg[2][0] : 0;
+  a4=5.0000000000000000e-01;
+  a5=3.0000000000000004e+00;
+  a6=arg[0]? arg[0][0] : 0;
+  a7=(a5*a6);
+  a8=4.6410161513775439e-01;
+  a9=arg[0]? arg[0][1] : 0;
+  a8=(a8*a9);
+  a7=(a7+a8);
+  a7=(a4*a7);
+  a8=-6.4641016151377553e+00;
+  a8=(a8*a6);
+  a5=(a5*a9);
+  a8=(a8+a5);
+  a4=(a4*a8);
+  a7=(a7+a4);
+  a3=(a3*a7);
+  a2=(a2*a3);
+  a3=casadi_sq(a2);
+  a7=4.;
+  a3=(a3/a7);
+  a7=(a1-a3);
+  a1=(a1+a3);
+  a7=(a7/a1);
+  a3=(a0*a7);
+  a4=arg[1]? arg[1][2] : 0;
+  a2=(a2/a1);
+  a1=(a4*a2);
+  a3=(a3+a1);
+  if (res[0]!=0) res[0][0]=a3;
+  a3=arg[1]? arg[1][1] : 0;
+  a1=(a3*a7);
+  a8=arg[1]? arg[1][3] : 0;
+  a5=(a8*a2);
+  a1=(a1+a5);
+  if (res[0]!=0) res[0][1]=a1;
+  a4=(a4*a7);
+  a0=(a0*a2);
+  a4=(a4-a0);
+  if (res[0]!=0) res[0][2]=a4;
+  a8=(a8*a7);
+  a3=(a3*a2);
+  a8=(a8-a3);
+  if (res[0]!=0) res[0][3]=a8;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int chart_point(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f11(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int chart_point_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void chart_point_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void chart_point_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void chart_point_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int chart_point_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int chart_point_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real chart_point_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* chart_point_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "h";
+    case 3: return "theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* chart_point_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "g_theta";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* chart_point_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s0;
+    case 3: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* chart_point_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int chart_point_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int chart_point_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* observe:(g[4],p,h[3])->(xi,E,m,e) */
+static int casadi_f12(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7, a8;
+  a0=arg[1]? arg[1][0] : 0;
+  if (res[0]!=0) res[0][0]=a0;
+  a1=casadi_sq(a0);
+  a2=5.0000000000000000e-01;
+  a2=(a2*a1);
+  a3=arg[0]? arg[0][0] : 0;
+  a2=(a2+a3);
+  a1=(a1-a2);
+  if (res[1]!=0) res[1][0]=a1;
+  a1=arg[0]? arg[0][3] : 0;
+  a2=(a1*a3);
+  a4=arg[0]? arg[0][2] : 0;
+  a5=arg[0]? arg[0][1] : 0;
+  a6=(a4*a5);
+  a2=(a2-a6);
+  a2=(a2*a0);
+  if (res[2]!=0) res[2][0]=a2;
+  a2=casadi_sq(a3);
+  a0=casadi_sq(a5);
+  a2=(a2+a0);
+  a0=1.;
+  a2=(a2-a0);
+  a2=casadi_fabs(a2);
+  a7=(a4*a3);
+  a8=(a1*a5);
+  a7=(a7+a8);
+  a7=casadi_fabs(a7);
+  a2=casadi_fmax(a2,a7);
+  a7=(a3*a4);
+  a5=(a5*a1);
+  a7=(a7+a5);
+  a7=casadi_fabs(a7);
+  a2=casadi_fmax(a2,a7);
+  a4=casadi_sq(a4);
+  a7=casadi_sq(a1);
+  a4=(a4+a7);
+  a4=(a4-a0);
+  a4=casadi_fabs(a4);
+  a2=casadi_fmax(a2,a4);
+  a3=(a3*a1);
+  a3=(a3-a6);
+  a3=(a3-a0);
+  a3=casadi_fabs(a3);
+  a2=casadi_fmax(a2,a3);
+  if (res[3]!=0) res[3][0]=a2;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int observe(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f12(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int observe_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void observe_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void observe_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void observe_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int observe_n_in(void) { return 3;}
+
+CASADI_SYMBOL_EXPORT casadi_int observe_n_out(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_real observe_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* observe_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    case 2: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* observe_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "xi";
+    case 1: return "E";
+    case 2: return "m";
+    case 3: return "e";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* observe_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    case 2: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* observe_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    case 1: return casadi_s2;
+    case 2: return casadi_s2;
+    case 3: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int observe_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3;
+  if (sz_res) *sz_res = 4;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int observe_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 3*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 4*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* update_p:(z[3],g[4],p,h[3])->(p1) */
+static int casadi_f13(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4, a5, a6, a7;
+  a0=1.;
+  a1=arg[3]? arg[3][0] : 0;
+  a2=5.0000000000000000e-01;
+  a3=3.0000000000000004e+00;
+  a4=arg[0]? arg[0][0] : 0;
+  a5=(a3*a4);
+  a6=4.6410161513775439e-01;
+  a7=arg[0]? arg[0][1] : 0;
+  a6=(a6*a7);
+  a5=(a5+a6);
+  a5=(a2*a5);
+  a6=-6.4641016151377553e+00;
+  a6=(a6*a4);
+  a3=(a3*a7);
+  a6=(a6+a3);
+  a2=(a2*a6);
+  a5=(a5+a2);
+  a1=(a1*a5);
+  a1=casadi_sq(a1);
+  a5=4.;
+  a1=(a1/a5);
+  a0=(a0+a1);
+  a1=arg[0]? arg[0][2] : 0;
+  a0=(a0*a1);
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int update_p(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f13(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int update_p_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void update_p_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void update_p_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void update_p_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int update_p_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int update_p_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real update_p_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* update_p_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* update_p_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "p1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* update_p_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s2;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* update_p_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int update_p_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int update_p_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* velocity_step:(g[4],p,xi,h[3])->(xi1) */
+static int casadi_f14(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1;
+  a0=arg[2]? arg[2][0] : 0;
+  a1=arg[1]? arg[1][0] : 0;
+  a1=(a0-a1);
+  a0=(a0-a1);
+  if (res[0]!=0) res[0][0]=a0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f14(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void velocity_step_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void velocity_step_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void velocity_step_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int velocity_step_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int velocity_step_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real velocity_step_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* velocity_step_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    case 2: return "xi";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* velocity_step_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "xi1";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* velocity_step_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    case 2: return casadi_s2;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* velocity_step_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s2;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int velocity_step_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* record:(g[4],p,xi,h[3])->(row[7]) */
+static int casadi_f15(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a0, a1, a2, a3, a4;
+  a0=arg[0]? arg[0][0] : 0;
+  if (res[0]!=0) res[0][0]=a0;
+  a1=arg[0]? arg[0][1] : 0;
+  if (res[0]!=0) res[0][1]=a1;
+  a1=arg[0]? arg[0][2] : 0;
+  if (res[0]!=0) res[0][2]=a1;
+  a1=arg[0]? arg[0][3] : 0;
+  if (res[0]!=0) res[0][3]=a1;
+  a1=arg[1]? arg[1][0] : 0;
+  if (res[0]!=0) res[0][4]=a1;
+  a1=arg[2]? arg[2][0] : 0;
+  a2=casadi_sq(a1);
+  a3=5.0000000000000000e-01;
+  a3=(a3*a2);
+  a3=(a3+a0);
+  a2=(a2-a3);
+  if (res[0]!=0) res[0][5]=a2;
+  a2=-5.0000000000000000e-01;
+  a2=(a2*a1);
+  a3=arg[3]? arg[3][2] : 0;
+  a0=6.6666666666666663e-01;
+  a4=arg[3]? arg[3][1] : 0;
+  a0=(a0*a4);
+  a0=cos(a0);
+  a3=(a3*a0);
+  a2=(a2+a3);
+  a2=(a2*a1);
+  if (res[0]!=0) res[0][6]=a2;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int record(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f15(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int record_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void record_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void record_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void record_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int record_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int record_n_out(void) { return 1;}
+
+CASADI_SYMBOL_EXPORT casadi_real record_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* record_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "g";
+    case 1: return "p";
+    case 2: return "xi";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* record_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "row";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* record_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s1;
+    case 1: return casadi_s2;
+    case 2: return casadi_s2;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* record_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s4;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int record_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 1;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int record_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 1*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+/* step_partials:(z[3],g[4],p,h[3])->(Fs[6],Yz[6],Ys[4],FH[9],YH[6]) */
+static int casadi_f16(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {
+  casadi_real a00, a01, a02, a03, a04, a05, a06, a07, a08, a09, a10, a11;
+  casadi_real a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+  casadi_real a24, a25, a26, a27, a28, a29, a30, a31, a32, a33, a34, a35;
+  casadi_real a36, a37, a38, a39, a40, a41, a42, a43, a44, a45, a46, a47;
+  casadi_real a48, a49, a50, a51, a52, a53;
+  a00=5.0000000000000000e-01;
+  a01=arg[3]? arg[3][0] : 0;
+  a02=(a00*a01);
+  a03=1.;
+  a04=arg[0]? arg[0][0] : 0;
+  a05=(a01*a04);
+  a06=casadi_sq(a05);
+  a07=4.;
+  a06=(a06/a07);
+  a08=(a03-a06);
+  a06=(a03+a06);
+  a08=(a08/a06);
+  a09=arg[1]? arg[1][0] : 0;
+  a10=(a08*a09);
+  a11=(a05/a06);
+  a12=arg[1]? arg[1][2] : 0;
+  a13=(a11*a12);
+  a10=(a10+a13);
+  a10=(a02*a10);
+  a10=(a10/a01);
+  a10=(-a10);
+  if (res[0]!=0) res[0][0]=a10;
+  a10=arg[0]? arg[0][1] : 0;
+  a13=(a01*a10);
+  a14=casadi_sq(a13);
+  a14=(a14/a07);
+  a15=(a03-a14);
+  a14=(a03+a14);
+  a15=(a15/a14);
+  a16=(a15*a09);
+  a17=(a13/a14);
+  a18=(a17*a12);
+  a16=(a16+a18);
+  a16=(a02*a16);
+  a16=(a16/a01);
+  a16=(-a16);
+  if (res[0]!=0) res[0][1]=a16;
+  a16=0.;
+  if (res[0]!=0) res[0][2]=a16;
+  if (res[0]!=0) res[0][3]=a16;
+  if (res[0]!=0) res[0][4]=a16;
+  if (res[0]!=0) res[0][5]=a03;
+  a18=3.0000000000000004e+00;
+  a19=(a18*a04);
+  a20=4.6410161513775439e-01;
+  a20=(a20*a10);
+  a19=(a19+a20);
+  a20=(a00*a19);
+  a21=-6.4641016151377553e+00;
+  a21=(a21*a04);
+  a18=(a18*a10);
+  a21=(a21+a18);
+  a18=(a00*a21);
+  a20=(a20+a18);
+  a18=(a01*a20);
+  a22=casadi_sq(a18);
+  a22=(a22/a07);
+  a07=(a03-a22);
+  a03=(a03+a22);
+  a07=(a07/a03);
+  a22=(a12*a07);
+  a23=(a18/a03);
+  a24=(a09*a23);
+  a22=(a22-a24);
+  a24=-1.7320508075688774e+00;
+  a24=(a24*a01);
+  a25=(a24/a03);
+  a26=(a23/a03);
+  a27=2.5000000000000000e-01;
+  a18=(2.*a18);
+  a24=(a18*a24);
+  a24=(a27*a24);
+  a28=(a26*a24);
+  a25=(a25-a28);
+  a28=(a12*a25);
+  a29=(a24/a03);
+  a30=(a07/a03);
+  a31=(a30*a24);
+  a29=(a29+a31);
+  a31=(a09*a29);
+  a28=(a28-a31);
+  a28=(a22*a28);
+  a31=arg[1]? arg[1][3] : 0;
+  a32=(a31*a07);
+  a33=arg[1]? arg[1][1] : 0;
+  a34=(a33*a23);
+  a32=(a32-a34);
+  a25=(a31*a25);
+  a29=(a33*a29);
+  a25=(a25-a29);
+  a25=(a32*a25);
+  a28=(a28+a25);
+  if (res[1]!=0) res[1][0]=a28;
+  a28=arg[0]? arg[0][2] : 0;
+  a24=(a28*a24);
+  if (res[1]!=0) res[1][1]=a24;
+  a24=1.7320508075688774e+00;
+  a24=(a24*a01);
+  a25=(a24/a03);
+  a24=(a18*a24);
+  a24=(a27*a24);
+  a29=(a26*a24);
+  a25=(a25-a29);
+  a29=(a12*a25);
+  a34=(a24/a03);
+  a35=(a30*a24);
+  a34=(a34+a35);
+  a35=(a09*a34);
+  a29=(a29-a35);
+  a29=(a22*a29);
+  a25=(a31*a25);
+  a34=(a33*a34);
+  a25=(a25-a34);
+  a25=(a32*a25);
+  a29=(a29+a25);
+  if (res[1]!=0) res[1][2]=a29;
+  a24=(a28*a24);
+  if (res[1]!=0) res[1][3]=a24;
+  if (res[1]!=0) res[1][4]=a16;
+  if (res[1]!=0) res[1][5]=a03;
+  a24=(a07*a12);
+  a29=(a23*a09);
+  a24=(a24-a29);
+  a24=(a22*a24);
+  a07=(a07*a31);
+  a23=(a23*a33);
+  a07=(a07-a23);
+  a07=(a32*a07);
+  a24=(a24+a07);
+  if (res[2]!=0) res[2][0]=a24;
+  if (res[2]!=0) res[2][1]=a16;
+  if (res[2]!=0) res[2][2]=a16;
+  if (res[2]!=0) res[2][3]=a16;
+  a24=1.5000000000000002e+00;
+  a19=(a19/a06);
+  a07=(2.*a19);
+  a23=(a27*a01);
+  a07=(a07*a23);
+  a29=(a01*a28);
+  a29=(a00*a29);
+  a25=(a06*a29);
+  a07=(a07-a25);
+  a07=(a07/a02);
+  a25=(a07/a06);
+  a34=(a24*a25);
+  a35=-3.2320508075688776e+00;
+  a21=(a21/a14);
+  a36=(2.*a21);
+  a36=(a36*a23);
+  a37=(a14*a29);
+  a36=(a36-a37);
+  a36=(a36/a02);
+  a37=(a36/a14);
+  a38=(a35*a37);
+  a34=(a34+a38);
+  a05=(2.*a05);
+  a38=5.3867513459481287e-01;
+  a39=2.3205080756887719e-01;
+  a40=(a39*a25);
+  a41=(a24*a37);
+  a40=(a40+a41);
+  a41=(a01*a40);
+  a42=(a38*a41);
+  a42=(a29+a42);
+  a43=(a01*a34);
+  a44=(a27*a43);
+  a42=(a42+a44);
+  a44=(a19*a42);
+  a44=(a27*a44);
+  a45=(a05*a44);
+  a45=(a34-a45);
+  a46=(a05*a04);
+  a46=(a27*a46);
+  a47=(a45*a46);
+  a48=(a19/a06);
+  a48=(a48*a46);
+  a49=(-a48);
+  a49=(2.*a49);
+  a49=(a23*a49);
+  a50=(a00*a19);
+  a49=(a49+a50);
+  a50=(a29*a46);
+  a51=(a00*a28);
+  a52=(a06*a51);
+  a50=(a50+a52);
+  a49=(a49-a50);
+  a49=(a49/a02);
+  a07=(a07/a02);
+  a07=(a00*a07);
+  a49=(a49-a07);
+  a49=(a49/a06);
+  a25=(a25/a06);
+  a25=(a25*a46);
+  a49=(a49-a25);
+  a25=(a24*a49);
+  a07=(a21/a14);
+  a13=(2.*a13);
+  a50=(a13*a10);
+  a50=(a27*a50);
+  a07=(a07*a50);
+  a52=(-a07);
+  a52=(2.*a52);
+  a23=(a23*a52);
+  a52=(a00*a21);
+  a23=(a23+a52);
+  a52=(a29*a50);
+  a53=(a14*a51);
+  a52=(a52+a53);
+  a23=(a23-a52);
+  a23=(a23/a02);
+  a36=(a36/a02);
+  a36=(a00*a36);
+  a23=(a23-a36);
+  a23=(a23/a14);
+  a37=(a37/a14);
+  a37=(a37*a50);
+  a23=(a23-a37);
+  a35=(a35*a23);
+  a25=(a25+a35);
+  a35=(2.*a04);
+  a44=(a44*a35);
+  a39=(a39*a49);
+  a24=(a24*a23);
+  a39=(a39+a24);
+  a24=(a01*a39);
+  a24=(a40+a24);
+  a38=(a38*a24);
+  a38=(a51+a38);
+  a23=(a01*a25);
+  a34=(a34+a23);
+  a23=(a27*a34);
+  a38=(a38+a23);
+  a38=(a19*a38);
+  a42=(a42*a48);
+  a38=(a38-a42);
+  a38=(a27*a38);
+  a05=(a05*a38);
+  a44=(a44+a05);
+  a25=(a25-a44);
+  a25=(a06*a25);
+  a47=(a47+a25);
+  a25=-5.0000000000000000e-01;
+  a19=(a25*a19);
+  a44=arg[3]? arg[3][2] : 0;
+  a05=6.6666666666666663e-01;
+  a38=arg[3]? arg[3][1] : 0;
+  a42=2.1132486540518713e-01;
+  a42=(a42*a01);
+  a42=(a38+a42);
+  a42=(a05*a42);
+  a23=cos(a42);
+  a49=(a44*a23);
+  a19=(a19+a49);
+  a49=(a00*a19);
+  a48=(a25*a48);
+  a35=1.4088324360345808e-01;
+  a42=sin(a42);
+  a35=(a35*a42);
+  a35=(a44*a35);
+  a48=(a48+a35);
+  a48=(a02*a48);
+  a49=(a49-a48);
+  a49=(a47+a49);
+  a48=(a12*a08);
+  a35=(a09*a11);
+  a48=(a48-a35);
+  a35=(a00*a48);
+  a37=(a46/a06);
+  a08=(a08/a06);
+  a08=(a08*a46);
+  a37=(a37+a08);
+  a37=(a12*a37);
+  a04=(a04/a06);
+  a11=(a11/a06);
+  a11=(a11*a46);
+  a04=(a04-a11);
+  a04=(a09*a04);
+  a37=(a37+a04);
+  a37=(a02*a37);
+  a35=(a35-a37);
+  a49=(a49+a35);
+  a49=(a49/a01);
+  a06=(a06*a45);
+  a19=(a19*a02);
+  a06=(a06+a19);
+  a48=(a48*a02);
+  a06=(a06+a48);
+  a06=(a06/a01);
+  a06=(a06/a01);
+  a49=(a49-a06);
+  if (res[3]!=0) res[3][0]=a49;
+  a49=(a25*a21);
+  a06=7.8867513459481287e-01;
+  a06=(a06*a01);
+  a38=(a38+a06);
+  a38=(a05*a38);
+  a06=cos(a38);
+  a48=(a44*a06);
+  a49=(a49+a48);
+  a48=(a00*a49);
+  a25=(a25*a07);
+  a19=5.2578342306320858e-01;
+  a38=sin(a38);
+  a19=(a19*a38);
+  a19=(a44*a19);
+  a25=(a25+a19);
+  a25=(a02*a25);
+  a48=(a48-a25);
+  a25=(a12*a15);
+  a19=(a09*a17);
+  a25=(a25-a19);
+  a00=(a00*a25);
+  a19=(a50/a14);
+  a15=(a15/a14);
+  a15=(a15*a50);
+  a19=(a19+a15);
+  a19=(a12*a19);
+  a15=(a10/a14);
+  a17=(a17/a14);
+  a17=(a17*a50);
+  a15=(a15-a17);
+  a15=(a09*a15);
+  a19=(a19+a15);
+  a19=(a02*a19);
+  a00=(a00-a19);
+  a48=(a48+a00);
+  a41=(a27*a41);
+  a29=(a29+a41);
+  a41=-3.8675134594812879e-02;
+  a43=(a41*a43);
+  a29=(a29+a43);
+  a43=(a21*a29);
+  a43=(a27*a43);
+  a00=(a13*a43);
+  a40=(a40-a00);
+  a50=(a40*a50);
+  a10=(2.*a10);
+  a43=(a43*a10);
+  a24=(a27*a24);
+  a51=(a51+a24);
+  a41=(a41*a34);
+  a51=(a51+a41);
+  a21=(a21*a51);
+  a29=(a29*a07);
+  a21=(a21-a29);
+  a21=(a27*a21);
+  a13=(a13*a21);
+  a43=(a43+a13);
+  a39=(a39-a43);
+  a39=(a14*a39);
+  a50=(a50+a39);
+  a48=(a48+a50);
+  a48=(a48/a01);
+  a49=(a49*a02);
+  a25=(a25*a02);
+  a49=(a49+a25);
+  a14=(a14*a40);
+  a49=(a49+a14);
+  a49=(a49/a01);
+  a49=(a49/a01);
+  a48=(a48-a49);
+  if (res[3]!=0) res[3][1]=a48;
+  a18=(a18*a20);
+  a27=(a27*a18);
+  a28=(a28*a27);
+  a50=(a28+a50);
+  a50=(a50+a47);
+  a50=(-a50);
+  if (res[3]!=0) res[3][2]=a50;
+  a42=(a05*a42);
+  a42=(a44*a42);
+  a42=(a02*a42);
+  a42=(a42/a01);
+  a42=(-a42);
+  if (res[3]!=0) res[3][3]=a42;
+  a05=(a05*a38);
+  a44=(a44*a05);
+  a44=(a02*a44);
+  a44=(a44/a01);
+  a44=(-a44);
+  if (res[3]!=0) res[3][4]=a44;
+  if (res[3]!=0) res[3][5]=a16;
+  a23=(a02*a23);
+  a23=(a23/a01);
+  if (res[3]!=0) res[3][6]=a23;
+  a02=(a02*a06);
+  a02=(a02/a01);
+  if (res[3]!=0) res[3][7]=a02;
+  if (res[3]!=0) res[3][8]=a16;
+  a20=(a20/a03);
+  a26=(a26*a27);
+  a20=(a20-a26);
+  a12=(a12*a20);
+  a03=(a27/a03);
+  a30=(a30*a27);
+  a03=(a03+a30);
+  a09=(a09*a03);
+  a12=(a12-a09);
+  a22=(a22*a12);
+  a31=(a31*a20);
+  a33=(a33*a03);
+  a31=(a31-a33);
+  a32=(a32*a31);
+  a22=(a22+a32);
+  if (res[4]!=0) res[4][0]=a22;
+  if (res[4]!=0) res[4][1]=a28;
+  if (res[4]!=0) res[4][2]=a16;
+  if (res[4]!=0) res[4][3]=a16;
+  if (res[4]!=0) res[4][4]=a16;
+  if (res[4]!=0) res[4][5]=a16;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int step_partials(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem){
+  return casadi_f16(arg, res, iw, w, mem);
+}
+
+CASADI_SYMBOL_EXPORT int step_partials_checkout(void) {
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT void step_partials_release(int mem) {
+}
+
+CASADI_SYMBOL_EXPORT void step_partials_incref(void) {
+}
+
+CASADI_SYMBOL_EXPORT void step_partials_decref(void) {
+}
+
+CASADI_SYMBOL_EXPORT casadi_int step_partials_n_in(void) { return 4;}
+
+CASADI_SYMBOL_EXPORT casadi_int step_partials_n_out(void) { return 5;}
+
+CASADI_SYMBOL_EXPORT casadi_real step_partials_default_in(casadi_int i) {
+  switch (i) {
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* step_partials_name_in(casadi_int i) {
+  switch (i) {
+    case 0: return "z";
+    case 1: return "g";
+    case 2: return "p";
+    case 3: return "h";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const char* step_partials_name_out(casadi_int i) {
+  switch (i) {
+    case 0: return "Fs";
+    case 1: return "Yz";
+    case 2: return "Ys";
+    case 3: return "FH";
+    case 4: return "YH";
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* step_partials_sparsity_in(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s0;
+    case 1: return casadi_s1;
+    case 2: return casadi_s2;
+    case 3: return casadi_s0;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT const casadi_int* step_partials_sparsity_out(casadi_int i) {
+  switch (i) {
+    case 0: return casadi_s5;
+    case 1: return casadi_s5;
+    case 2: return casadi_s1;
+    case 3: return casadi_s3;
+    case 4: return casadi_s5;
+    default: return 0;
+  }
+}
+
+CASADI_SYMBOL_EXPORT int step_partials_work(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4;
+  if (sz_res) *sz_res = 5;
+  if (sz_iw) *sz_iw = 0;
+  if (sz_w) *sz_w = 0;
+  return 0;
+}
+
+CASADI_SYMBOL_EXPORT int step_partials_work_bytes(casadi_int *sz_arg, casadi_int* sz_res, casadi_int *sz_iw, casadi_int *sz_w) {
+  if (sz_arg) *sz_arg = 4*sizeof(const casadi_real*);
+  if (sz_res) *sz_res = 5*sizeof(casadi_real*);
+  if (sz_iw) *sz_iw = 0*sizeof(casadi_int);
+  if (sz_w) *sz_w = 0*sizeof(casadi_real);
+  return 0;
+}
+
+
+
+/* ======================= end of CasADi-generated code =================================== */
+#if defined(__GNUC__)
+#pragma GCC visibility pop
+#define HPGEN_EXPORT __attribute__((visibility("default")))
+#else
+#define HPGEN_EXPORT
+#endif
+
+#define HPGEN_ABI 3
+#define HPGEN_N 2
+#define HPGEN_NN (HPGEN_N * HPGEN_N)
+#define HPGEN_D 1
+#define HPGEN_NZ 3
+/* an open model (forces, control inputs, runtime parameters or t): every h input of the
+   kernels is the step vector hv = [h, t_k, u (M), params (P)] (hpgen.abi), which the run
+   holds and fills before each step: t_k = t0 + k h, u_k the run's input row k (or its only
+   row), params set once (hpgen_run_set_inputs) */
+#define HPGEN_M 0
+#define HPGEN_P 1
+#define HPGEN_H (2 + HPGEN_M + HPGEN_P)
+#define HPGEN_OK 0
+#define HPGEN_NO_CONVERGENCE 1
+#define HPGEN_NONFINITE 2
+#define HPGEN_DOMAIN 3
+#define HPGEN_RECORD 4
+/* the scene's record row (kernel record): its width and what it needs */
+#define HPGEN_W 7
+#define HPGEN_RECORD_USES_XI 1
+#define HPGEN_LEGENDRE_QUADRATIC 1
+/* neither the step (residual, p_{k+1}) nor the record row use g: hpgen_advance_record does
+   not reconstruct the group at all */
+#define HPGEN_SKIP_G 0
+#define HPGEN_INVALID (-1)
+/* Newton stalls at round-off: stop when |dz| stopped decreasing while below this * (1+|z|) */
+#define HPGEN_ROUNDOFF_FLOOR 1e-11
+/* simplified Newton: a contraction rate |dz_k| / |dz_{k-1}| above this refreshes the Jacobian
+   (or, with a Jacobian fresh from this step, switches the step to full Newton) */
+#define HPGEN_THETA_MAX 0.05
+/* simplified Newton stops when its error estimate is below this * tol * (1 + |z|) */
+#define HPGEN_SIMPLIFIED_TOL 0.01
+
+typedef struct hpgen_status {
+    long long code;              /* HPGEN_OK, ... */
+    long long step;              /* failing step index, or steps done on success */
+    long long iterations;        /* Newton iterations of the last step attempted */
+    long long total_iterations;  /* Newton iterations over all steps */
+    double residual;             /* inf-norm of the last residual evaluated */
+    long long jacobians;         /* Jacobian evaluations (and LU factorizations), all steps */
+} hpgen_status;
+
+/* Runtime Newton settings (no recompilation needed to change them). */
+typedef struct hpgen_options {
+    double tol;                  /* converged when |dz| <= tol (1 + |z|), inf-norms */
+    long long maxit;             /* Newton iterations per step, >= 1 */
+    long long simplified;        /* 1: keep the Jacobian's LU across iterations and steps */
+    long long predictor;         /* 1: start step k+1 from the extrapolated last solutions (else z_k) */
+} hpgen_options;
+
+/* A run in progress: the state, the Newton start and the Newton memory. Advancing a run by
+   n1 steps and then by n2 steps gives bitwise the same result as by n1 + n2 steps. */
+typedef struct hpgen_run {
+    double g[HPGEN_NN], p[HPGEN_D];  /* (g_k, p_k) */
+    double z[HPGEN_NZ];              /* solution of the last step (or the initial guess) */
+    double zprev[HPGEN_NZ];          /* solutions of the two steps before (predictor) */
+    double zprev2[HPGEN_NZ];
+    double lu[HPGEN_NZ * HPGEN_NZ];  /* J^{-1} of the last Jacobian (simplified Newton) */
+    int piv[HPGEN_NZ];
+    long long k;                     /* steps done */
+    long long have_prev;             /* how many of zprev, zprev2 are valid (0, 1, 2) */
+    long long lu_valid;              /* lu holds J^{-1} */
+    double s;                        /* section(g_k, p_k), when s_valid */
+    long long s_valid;
+    long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
+    double hv[HPGEN_H];              /* the step vector of the current step */
+    double t0;                       /* the time of step 0 */
+    const double* U;                 /* the input rows (M doubles each; the caller keeps them) */
+    long long u_rows;                /* 1: one row for every step; else row k for step k */
+} hpgen_run;
+
+HPGEN_EXPORT const char* hpgen_hash(void) { return "b76f001c568489b54c25240c2e6bce8e6b4f732e81abe16fca3e42f6b849b2ff"; }
+
+/* out[0..3] = ABI version, n, d, nz */
+HPGEN_EXPORT void hpgen_dims(long long* out) {
+    out[0] = HPGEN_ABI; out[1] = HPGEN_N; out[2] = HPGEN_D; out[3] = HPGEN_NZ;
+}
+
+/* ---- kernel wrappers: dense column-major arguments, CasADi work arrays on the stack ---- */
+static int hpgen_k_residual(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_residual_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1);
+static int hpgen_k_update(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1);
+static int hpgen_k_guess(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_legendre(const double* in0, const double* in1, const double* in2, double* out0);
+static int hpgen_k_hessian(const double* in0, const double* in1, const double* in2, double* out0);
+static int hpgen_k_energy(const double* in0, const double* in1, const double* in2, double* out0);
+static int hpgen_k_momentum(const double* in0, const double* in1, double* out0);
+static int hpgen_k_defect(const double* in0, double* out0);
+static int hpgen_k_margin(const double* in0, const double* in1, double* out0);
+static int hpgen_k_section(const double* in0, const double* in1, double* out0);
+static int hpgen_k_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_observe(const double* in0, const double* in1, const double* in2, double* out0, double* out1, double* out2, double* out3);
+static int hpgen_k_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_velocity_step(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_record(const double* in0, const double* in1, const double* in2, const double* in3, double* out0);
+static int hpgen_k_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2, double* out3, double* out4);
+
+/* residual(z[3], g[4], p[1], h[3]) -> (F[3]) */
+#define HPGEN_RESIDUAL_SZ_ARG 4
+#define HPGEN_RESIDUAL_SZ_RES 1
+#define HPGEN_RESIDUAL_SZ_IW 0
+#define HPGEN_RESIDUAL_SZ_W 28
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_residual exports it */
+static int hpgen_k_residual(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_RESIDUAL_SZ_ARG + 1];
+    casadi_real* res[HPGEN_RESIDUAL_SZ_RES + 1];
+    casadi_int iw[HPGEN_RESIDUAL_SZ_IW + 1];
+    casadi_real w[HPGEN_RESIDUAL_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = residual(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_residual(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_residual(in0, in1, in2, in3, out0);
+}
+
+/* jacobian(z[3], g[4], p[1], h[3]) -> (J[9]) */
+/* = output 1 of residual_jacobian (the same CasADi algorithm; its other outputs are
+   computed into scratch and dropped) */
+HPGEN_EXPORT int hpgen_kernel_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    double scratch[HPGEN_NZ];
+    return hpgen_k_residual_jacobian(in0, in1, in2, in3, scratch, out0);
+}
+
+/* residual_jacobian(z[3], g[4], p[1], h[3]) -> (F[3], J[9]) */
+#define HPGEN_RESIDUAL_JACOBIAN_SZ_ARG 4
+#define HPGEN_RESIDUAL_JACOBIAN_SZ_RES 2
+#define HPGEN_RESIDUAL_JACOBIAN_SZ_IW 0
+#define HPGEN_RESIDUAL_JACOBIAN_SZ_W 46
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_residual_jacobian exports it */
+static int hpgen_k_residual_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1) {
+    const casadi_real* arg[HPGEN_RESIDUAL_JACOBIAN_SZ_ARG + 1];
+    casadi_real* res[HPGEN_RESIDUAL_JACOBIAN_SZ_RES + 1];
+    casadi_int iw[HPGEN_RESIDUAL_JACOBIAN_SZ_IW + 1];
+    casadi_real w[HPGEN_RESIDUAL_JACOBIAN_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    res[1] = out1;
+    flag = residual_jacobian(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_residual_jacobian(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1) {
+    return hpgen_k_residual_jacobian(in0, in1, in2, in3, out0, out1);
+}
+
+/* update(z[3], g[4], p[1], h[3]) -> (g1[4], p1[1]) */
+#define HPGEN_UPDATE_SZ_ARG 4
+#define HPGEN_UPDATE_SZ_RES 2
+#define HPGEN_UPDATE_SZ_IW 0
+#define HPGEN_UPDATE_SZ_W 9
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_update exports it */
+static int hpgen_k_update(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1) {
+    const casadi_real* arg[HPGEN_UPDATE_SZ_ARG + 1];
+    casadi_real* res[HPGEN_UPDATE_SZ_RES + 1];
+    casadi_int iw[HPGEN_UPDATE_SZ_IW + 1];
+    casadi_real w[HPGEN_UPDATE_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    res[1] = out1;
+    flag = update(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_update(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1) {
+    return hpgen_k_update(in0, in1, in2, in3, out0, out1);
+}
+
+/* guess(xi[1], g[4], p[1], h[3]) -> (z0[3]) */
+#define HPGEN_GUESS_SZ_ARG 4
+#define HPGEN_GUESS_SZ_RES 1
+#define HPGEN_GUESS_SZ_IW 0
+#define HPGEN_GUESS_SZ_W 2
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_guess exports it */
+static int hpgen_k_guess(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_GUESS_SZ_ARG + 1];
+    casadi_real* res[HPGEN_GUESS_SZ_RES + 1];
+    casadi_int iw[HPGEN_GUESS_SZ_IW + 1];
+    casadi_real w[HPGEN_GUESS_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = guess(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_guess(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_guess(in0, in1, in2, in3, out0);
+}
+
+/* legendre(g[4], xi[1], h[3]) -> (mu[1]) */
+#define HPGEN_LEGENDRE_SZ_ARG 3
+#define HPGEN_LEGENDRE_SZ_RES 1
+#define HPGEN_LEGENDRE_SZ_IW 0
+#define HPGEN_LEGENDRE_SZ_W 1
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_legendre exports it */
+static int hpgen_k_legendre(const double* in0, const double* in1, const double* in2, double* out0) {
+    const casadi_real* arg[HPGEN_LEGENDRE_SZ_ARG + 1];
+    casadi_real* res[HPGEN_LEGENDRE_SZ_RES + 1];
+    casadi_int iw[HPGEN_LEGENDRE_SZ_IW + 1];
+    casadi_real w[HPGEN_LEGENDRE_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    res[0] = out0;
+    flag = legendre(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_legendre(const double* in0, const double* in1, const double* in2, double* out0) {
+    return hpgen_k_legendre(in0, in1, in2, out0);
+}
+
+/* hessian(g[4], xi[1], h[3]) -> (H[1]) */
+#define HPGEN_HESSIAN_SZ_ARG 3
+#define HPGEN_HESSIAN_SZ_RES 1
+#define HPGEN_HESSIAN_SZ_IW 0
+#define HPGEN_HESSIAN_SZ_W 1
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_hessian exports it */
+static int hpgen_k_hessian(const double* in0, const double* in1, const double* in2, double* out0) {
+    const casadi_real* arg[HPGEN_HESSIAN_SZ_ARG + 1];
+    casadi_real* res[HPGEN_HESSIAN_SZ_RES + 1];
+    casadi_int iw[HPGEN_HESSIAN_SZ_IW + 1];
+    casadi_real w[HPGEN_HESSIAN_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    res[0] = out0;
+    flag = hessian(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_hessian(const double* in0, const double* in1, const double* in2, double* out0) {
+    return hpgen_k_hessian(in0, in1, in2, out0);
+}
+
+/* energy(g[4], xi[1], h[3]) -> (E[1]) */
+#define HPGEN_ENERGY_SZ_ARG 3
+#define HPGEN_ENERGY_SZ_RES 1
+#define HPGEN_ENERGY_SZ_IW 0
+#define HPGEN_ENERGY_SZ_W 3
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_energy exports it */
+static int hpgen_k_energy(const double* in0, const double* in1, const double* in2, double* out0) {
+    const casadi_real* arg[HPGEN_ENERGY_SZ_ARG + 1];
+    casadi_real* res[HPGEN_ENERGY_SZ_RES + 1];
+    casadi_int iw[HPGEN_ENERGY_SZ_IW + 1];
+    casadi_real w[HPGEN_ENERGY_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    res[0] = out0;
+    flag = energy(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_energy(const double* in0, const double* in1, const double* in2, double* out0) {
+    return hpgen_k_energy(in0, in1, in2, out0);
+}
+
+/* momentum(g[4], p[1]) -> (m[1]) */
+#define HPGEN_MOMENTUM_SZ_ARG 2
+#define HPGEN_MOMENTUM_SZ_RES 1
+#define HPGEN_MOMENTUM_SZ_IW 0
+#define HPGEN_MOMENTUM_SZ_W 3
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_momentum exports it */
+static int hpgen_k_momentum(const double* in0, const double* in1, double* out0) {
+    const casadi_real* arg[HPGEN_MOMENTUM_SZ_ARG + 1];
+    casadi_real* res[HPGEN_MOMENTUM_SZ_RES + 1];
+    casadi_int iw[HPGEN_MOMENTUM_SZ_IW + 1];
+    casadi_real w[HPGEN_MOMENTUM_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    res[0] = out0;
+    flag = momentum(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_momentum(const double* in0, const double* in1, double* out0) {
+    return hpgen_k_momentum(in0, in1, out0);
+}
+
+/* defect(g[4]) -> (e[1]) */
+#define HPGEN_DEFECT_SZ_ARG 1
+#define HPGEN_DEFECT_SZ_RES 1
+#define HPGEN_DEFECT_SZ_IW 0
+#define HPGEN_DEFECT_SZ_W 8
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_defect exports it */
+static int hpgen_k_defect(const double* in0, double* out0) {
+    const casadi_real* arg[HPGEN_DEFECT_SZ_ARG + 1];
+    casadi_real* res[HPGEN_DEFECT_SZ_RES + 1];
+    casadi_int iw[HPGEN_DEFECT_SZ_IW + 1];
+    casadi_real w[HPGEN_DEFECT_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    res[0] = out0;
+    flag = defect(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_defect(const double* in0, double* out0) {
+    return hpgen_k_defect(in0, out0);
+}
+
+/* margin(z[3], h[3]) -> (m[1]) */
+#define HPGEN_MARGIN_SZ_ARG 2
+#define HPGEN_MARGIN_SZ_RES 1
+#define HPGEN_MARGIN_SZ_IW 0
+#define HPGEN_MARGIN_SZ_W 9
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_margin exports it */
+static int hpgen_k_margin(const double* in0, const double* in1, double* out0) {
+    const casadi_real* arg[HPGEN_MARGIN_SZ_ARG + 1];
+    casadi_real* res[HPGEN_MARGIN_SZ_RES + 1];
+    casadi_int iw[HPGEN_MARGIN_SZ_IW + 1];
+    casadi_real w[HPGEN_MARGIN_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    res[0] = out0;
+    flag = margin(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_margin(const double* in0, const double* in1, double* out0) {
+    return hpgen_k_margin(in0, in1, out0);
+}
+
+/* section(g[4], p[1]) -> (s[1]) */
+#define HPGEN_SECTION_SZ_ARG 2
+#define HPGEN_SECTION_SZ_RES 1
+#define HPGEN_SECTION_SZ_IW 0
+#define HPGEN_SECTION_SZ_W 1
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_section exports it */
+static int hpgen_k_section(const double* in0, const double* in1, double* out0) {
+    const casadi_real* arg[HPGEN_SECTION_SZ_ARG + 1];
+    casadi_real* res[HPGEN_SECTION_SZ_RES + 1];
+    casadi_int iw[HPGEN_SECTION_SZ_IW + 1];
+    casadi_real w[HPGEN_SECTION_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    res[0] = out0;
+    flag = section(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_section(const double* in0, const double* in1, double* out0) {
+    return hpgen_k_section(in0, in1, out0);
+}
+
+/* chart_point(z[3], g[4], h[3], theta[1]) -> (g_theta[4]) */
+#define HPGEN_CHART_POINT_SZ_ARG 4
+#define HPGEN_CHART_POINT_SZ_RES 1
+#define HPGEN_CHART_POINT_SZ_IW 0
+#define HPGEN_CHART_POINT_SZ_W 10
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_chart_point exports it */
+static int hpgen_k_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_CHART_POINT_SZ_ARG + 1];
+    casadi_real* res[HPGEN_CHART_POINT_SZ_RES + 1];
+    casadi_int iw[HPGEN_CHART_POINT_SZ_IW + 1];
+    casadi_real w[HPGEN_CHART_POINT_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = chart_point(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_chart_point(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_chart_point(in0, in1, in2, in3, out0);
+}
+
+/* observe(g[4], p[1], h[3]) -> (xi[1], E[1], m[1], e[1]) */
+#define HPGEN_OBSERVE_SZ_ARG 3
+#define HPGEN_OBSERVE_SZ_RES 4
+#define HPGEN_OBSERVE_SZ_IW 0
+#define HPGEN_OBSERVE_SZ_W 9
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_observe exports it */
+static int hpgen_k_observe(const double* in0, const double* in1, const double* in2, double* out0, double* out1, double* out2, double* out3) {
+    const casadi_real* arg[HPGEN_OBSERVE_SZ_ARG + 1];
+    casadi_real* res[HPGEN_OBSERVE_SZ_RES + 1];
+    casadi_int iw[HPGEN_OBSERVE_SZ_IW + 1];
+    casadi_real w[HPGEN_OBSERVE_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    res[0] = out0;
+    res[1] = out1;
+    res[2] = out2;
+    res[3] = out3;
+    flag = observe(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_observe(const double* in0, const double* in1, const double* in2, double* out0, double* out1, double* out2, double* out3) {
+    return hpgen_k_observe(in0, in1, in2, out0, out1, out2, out3);
+}
+
+/* update_p(z[3], g[4], p[1], h[3]) -> (p1[1]) */
+#define HPGEN_UPDATE_P_SZ_ARG 4
+#define HPGEN_UPDATE_P_SZ_RES 1
+#define HPGEN_UPDATE_P_SZ_IW 0
+#define HPGEN_UPDATE_P_SZ_W 8
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_update_p exports it */
+static int hpgen_k_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_UPDATE_P_SZ_ARG + 1];
+    casadi_real* res[HPGEN_UPDATE_P_SZ_RES + 1];
+    casadi_int iw[HPGEN_UPDATE_P_SZ_IW + 1];
+    casadi_real w[HPGEN_UPDATE_P_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = update_p(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_update_p(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_update_p(in0, in1, in2, in3, out0);
+}
+
+/* velocity_step(g[4], p[1], xi[1], h[3]) -> (xi1[1]) */
+#define HPGEN_VELOCITY_STEP_SZ_ARG 4
+#define HPGEN_VELOCITY_STEP_SZ_RES 1
+#define HPGEN_VELOCITY_STEP_SZ_IW 0
+#define HPGEN_VELOCITY_STEP_SZ_W 2
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_velocity_step exports it */
+static int hpgen_k_velocity_step(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_VELOCITY_STEP_SZ_ARG + 1];
+    casadi_real* res[HPGEN_VELOCITY_STEP_SZ_RES + 1];
+    casadi_int iw[HPGEN_VELOCITY_STEP_SZ_IW + 1];
+    casadi_real w[HPGEN_VELOCITY_STEP_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = velocity_step(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_velocity_step(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_velocity_step(in0, in1, in2, in3, out0);
+}
+
+/* record(g[4], p[1], xi[1], h[3]) -> (row[7]) */
+#define HPGEN_RECORD_SZ_ARG 4
+#define HPGEN_RECORD_SZ_RES 1
+#define HPGEN_RECORD_SZ_IW 0
+#define HPGEN_RECORD_SZ_W 5
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_record exports it */
+static int hpgen_k_record(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    const casadi_real* arg[HPGEN_RECORD_SZ_ARG + 1];
+    casadi_real* res[HPGEN_RECORD_SZ_RES + 1];
+    casadi_int iw[HPGEN_RECORD_SZ_IW + 1];
+    casadi_real w[HPGEN_RECORD_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    flag = record(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_record(const double* in0, const double* in1, const double* in2, const double* in3, double* out0) {
+    return hpgen_k_record(in0, in1, in2, in3, out0);
+}
+
+/* step_partials(z[3], g[4], p[1], h[3]) -> (Fs[6], Yz[6], Ys[4], FH[9], YH[6]) */
+#define HPGEN_STEP_PARTIALS_SZ_ARG 4
+#define HPGEN_STEP_PARTIALS_SZ_RES 5
+#define HPGEN_STEP_PARTIALS_SZ_IW 0
+#define HPGEN_STEP_PARTIALS_SZ_W 54
+/* the step calls this static body (inlinable: an exported symbol in a -fPIC library can be
+   interposed, so calls to it are never inlined); hpgen_kernel_step_partials exports it */
+static int hpgen_k_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2, double* out3, double* out4) {
+    const casadi_real* arg[HPGEN_STEP_PARTIALS_SZ_ARG + 1];
+    casadi_real* res[HPGEN_STEP_PARTIALS_SZ_RES + 1];
+    casadi_int iw[HPGEN_STEP_PARTIALS_SZ_IW + 1];
+    casadi_real w[HPGEN_STEP_PARTIALS_SZ_W + 1];
+    int flag, i = 0;
+    arg[0] = in0;
+    arg[1] = in1;
+    arg[2] = in2;
+    arg[3] = in3;
+    res[0] = out0;
+    res[1] = out1;
+    res[2] = out2;
+    res[3] = out3;
+    res[4] = out4;
+    flag = step_partials(arg, res, iw, w, 0);
+    (void)i;
+    return flag;
+}
+
+HPGEN_EXPORT int hpgen_kernel_step_partials(const double* in0, const double* in1, const double* in2, const double* in3, double* out0, double* out1, double* out2, double* out3, double* out4) {
+    return hpgen_k_step_partials(in0, in1, in2, in3, out0, out1, out2, out3, out4);
+}
+
+/* ---- dense linear algebra and Newton ---- */
+
+/* max |x_i|; NaN if any x_i is NaN */
+static double hpgen_norm_inf(const double* x, int n) {
+    double m = 0.0;
+    int i;
+    for (i = 0; i < n; ++i) {
+        double a = fabs(x[i]);
+        if (a != a) return a;
+        if (a > m) m = a;
+    }
+    return m;
+}
+
+/* every x_i finite: the sum of the entries is finite iff every entry is (unless it
+   overflows), one test instead of one branch per entry on the common path */
+static int hpgen_all_finite(const double* x, int n) {
+    double s = 0.0;
+    int i;
+    for (i = 0; i < n; ++i) s += x[i];
+    if (s - s == 0.0) return 1;
+    for (i = 0; i < n; ++i) if (!isfinite(x[i])) return 0;
+    return 1;
+}
+
+/* The Newton matrix is kept as J^{-1} (explicit, column-major in A; piv is workspace): a
+   simplified-Newton iteration then costs one matrix-vector product, NZ^2 independent
+   multiply-adds, instead of two triangular solves whose divisions and recurrences form a
+   long dependency chain. Newton's fixed point depends on F only; the accuracy of J^{-1}
+   only sets the contraction rate. */
+
+/* b <- A b, A = J^{-1} from hpgen_lu_factor_solve */
+static void hpgen_lu_apply(const double* A, const int* piv, double* b) {
+    double x[HPGEN_NZ];
+    int i, j;
+    (void)piv;
+    for (i = 0; i < HPGEN_NZ; ++i) x[i] = A[i] * b[0];
+    for (j = 1; j < HPGEN_NZ; ++j)
+        for (i = 0; i < HPGEN_NZ; ++i) x[i] += A[i + j * HPGEN_NZ] * b[j];
+    for (i = 0; i < HPGEN_NZ; ++i) b[i] = x[i];
+}
+
+#if HPGEN_NZ <= 3
+/* NZ <= 3: J^{-1} by cofactors (adjugate / det); Cramer's rule is accurate to a few ulps
+   times cond(J) here. A <- J^{-1} and b <- J^{-1} b (the adjugate applied to b alongside
+   the division). Returns 1 if det J is zero or not finite (then so is some entry of J:
+   every entry enters det). */
+static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
+#if HPGEN_NZ == 1
+    double r;
+    if (!(A[0] != 0.0) || !isfinite(A[0])) return 1;
+    r = 1.0 / A[0];
+    A[0] = r;
+    b[0] *= r;
+#elif HPGEN_NZ == 2
+    const double a = A[0], c = A[1], bb = A[2], d = A[3], det = a * d - bb * c;
+    const double x0 = d * b[0] - bb * b[1], x1 = a * b[1] - c * b[0];
+    double r;
+    if (!(det != 0.0) || !isfinite(det)) return 1;
+    r = 1.0 / det;
+    A[0] = d * r; A[2] = -bb * r; A[1] = -c * r; A[3] = a * r;
+    b[0] = x0 * r; b[1] = x1 * r;
+#else
+    /* J[i][j] = A[i + 3 j]; (J^{-1})_ij = C_ji / det, C the cofactors */
+    const double j00 = A[0], j10 = A[1], j20 = A[2], j01 = A[3], j11 = A[4], j21 = A[5],
+                 j02 = A[6], j12 = A[7], j22 = A[8];
+    const double c00 = j11 * j22 - j12 * j21, c01 = j12 * j20 - j10 * j22,
+                 c02 = j10 * j21 - j11 * j20, c10 = j02 * j21 - j01 * j22,
+                 c11 = j00 * j22 - j02 * j20, c12 = j01 * j20 - j00 * j21,
+                 c20 = j01 * j12 - j02 * j11, c21 = j02 * j10 - j00 * j12,
+                 c22 = j00 * j11 - j01 * j10;
+    const double det = j00 * c00 + j01 * c01 + j02 * c02;
+    const double x0 = c00 * b[0] + c10 * b[1] + c20 * b[2],
+                 x1 = c01 * b[0] + c11 * b[1] + c21 * b[2],
+                 x2 = c02 * b[0] + c12 * b[1] + c22 * b[2];
+    double r;
+    if (!(det != 0.0) || !isfinite(det)) return 1;
+    r = 1.0 / det;
+    b[0] = x0 * r; b[1] = x1 * r; b[2] = x2 * r;
+    A[0] = c00 * r; A[1] = c01 * r; A[2] = c02 * r;
+    A[3] = c10 * r; A[4] = c11 * r; A[5] = c12 * r;
+    A[6] = c20 * r; A[7] = c21 * r; A[8] = c22 * r;
+#endif
+    (void)piv; (void)keep;
+    return 0;
+}
+#else
+/* LU with partial pivoting in place (pivot: first row of largest |a_ik|, as LAPACK), row
+   interchanges in piv; U's diagonal is stored inverted (1 / u_kk). A is NZ x NZ
+   column-major. Returns 1 if a pivot is exactly zero. */
+static int hpgen_lu_factor(double* A, int* piv) {
+    const int n = HPGEN_NZ;
+    int i, j, k;
+    for (k = 0; k < n; ++k) {
+        int pk = k;
+        double amax = fabs(A[k + k * n]), r;
+        for (i = k + 1; i < n; ++i) {
+            double a = fabs(A[i + k * n]);
+            if (a > amax) { amax = a; pk = i; }
+        }
+        piv[k] = pk;
+        if (amax == 0.0) return 1;
+        if (pk != k) {
+            for (j = 0; j < n; ++j) {
+                double t = A[k + j * n]; A[k + j * n] = A[pk + j * n]; A[pk + j * n] = t;
+            }
+        }
+        r = 1.0 / A[k + k * n];
+        A[k + k * n] = r;
+        for (i = k + 1; i < n; ++i) A[i + k * n] *= r;
+        for (j = k + 1; j < n; ++j) {
+            double a = A[k + j * n];
+            if (a != 0.0) for (i = k + 1; i < n; ++i) A[i + j * n] -= A[i + k * n] * a;
+        }
+    }
+    return 0;
+}
+
+/* b <- J^{-1} b with the factors of hpgen_lu_factor: all row interchanges first (the
+   factorization swapped whole rows, L included), then L y = P b and U x = y. */
+static void hpgen_lu_solve(const double* LU, const int* piv, double* b) {
+    const int n = HPGEN_NZ;
+    int i, j, k;
+    for (k = 0; k < n; ++k)
+        if (piv[k] != k) { double t = b[k]; b[k] = b[piv[k]]; b[piv[k]] = t; }
+    for (k = 0; k < n; ++k)
+        for (i = k + 1; i < n; ++i) b[i] -= LU[i + k * n] * b[k];
+    for (k = n - 1; k >= 0; --k) {
+        double s = b[k];
+        for (j = k + 1; j < n; ++j) s -= LU[k + j * n] * b[j];
+        b[k] = s * LU[k + k * n];
+    }
+}
+
+/* X <- J^{-1} from the factors: the solve above for all unit vectors at once, ordered so
+   that the columns' recurrences run side by side. X is NZ x NZ column-major. */
+static void hpgen_lu_inverse(const double* LU, const int* piv, double* X) {
+    const int n = HPGEN_NZ;
+    int i, j, k;
+    for (i = 0; i < n * n; ++i) X[i] = 0.0;
+    for (j = 0; j < n; ++j) X[j + j * n] = 1.0;
+    for (k = 0; k < n; ++k)
+        if (piv[k] != k)
+            for (j = 0; j < n; ++j) {
+                double t = X[k + j * n]; X[k + j * n] = X[piv[k] + j * n]; X[piv[k] + j * n] = t;
+            }
+    for (k = 0; k < n; ++k)
+        for (j = 0; j < n; ++j) {
+            const double xk = X[k + j * n];
+            if (xk != 0.0) for (i = k + 1; i < n; ++i) X[i + j * n] -= LU[i + k * n] * xk;
+        }
+    for (k = n - 1; k >= 0; --k)
+        for (j = 0; j < n; ++j) {
+            const double xk = X[k + j * n] * LU[k + k * n];
+            X[k + j * n] = xk;
+            for (i = 0; i < k; ++i) X[i + j * n] -= LU[i + k * n] * xk;
+        }
+}
+
+/* b <- J^{-1} b by the LU of J (A holds J on entry); with keep, A <- J^{-1} (for simplified
+   Newton), else A is left as the LU factors. Returns 1 if J has a non-finite entry or is
+   singular. */
+static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
+    double LU[HPGEN_NZ * HPGEN_NZ];
+    if (!hpgen_all_finite(A, HPGEN_NZ * HPGEN_NZ)) return 1;
+    memcpy(LU, A, sizeof LU);
+    if (hpgen_lu_factor(LU, piv)) return 1;
+    hpgen_lu_solve(LU, piv, b);
+    if (keep) {
+        hpgen_lu_inverse(LU, piv, A);
+        return !hpgen_all_finite(A, HPGEN_NZ * HPGEN_NZ);
+    }
+    return 0;
+}
+#endif
+
+/* Newton on residual(z, g, p, h) = 0 from z (in/out): z <- z - J^{-1} F.
+   Full Newton evaluates J at every iterate. Simplified Newton (o->simplified) keeps the last J^{-1}
+   in (lu, *lu_valid), across steps too, and refreshes it when the contraction
+   rate theta = |dz_k| / |dz_{k-1}| exceeds HPGEN_THETA_MAX; if J was already evaluated in
+   this step the rest of the step is full Newton (the fallback).
+   Converged when |dz| <= tol (1 + |z|), or when |dz| stopped decreasing while
+   |dz| <= 1e-11 (1 + |z|) (round-off floor); inf-norms. Returns a status code. */
+static int hpgen_newton(const double* g, const double* p, const double* hv, double* z,
+                        const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
+                        long long* iters, long long* jacs, double* rnorm) {
+    double F[HPGEN_NZ];
+    double dprev = HUGE_VAL;
+    int full = !o->simplified, fresh = 0;
+    long long it;
+    int i;
+    *iters = 0;
+    *rnorm = NAN;
+    for (it = 1; it <= o->maxit; ++it) {
+        double dn, zn;
+        *iters = it;
+        if (full || !*lu_valid) {
+            /* F and a fresh J in one evaluation (their common subexpressions once) */
+            *lu_valid = 0;
+            ++*jacs;
+            if (hpgen_k_residual_jacobian(z, g, p, hv, F, lu)) return HPGEN_NONFINITE;
+            *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
+            if (!isfinite(*rnorm) || hpgen_lu_factor_solve(lu, piv, F, o->simplified))
+                return HPGEN_NONFINITE;
+            *lu_valid = o->simplified ? 1 : 0;   /* lu holds J^{-1} only when it is kept */
+            fresh = 1;
+        } else {
+            if (hpgen_k_residual(z, g, p, hv, F)) return HPGEN_NONFINITE;
+            *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
+            if (!isfinite(*rnorm)) return HPGEN_NONFINITE;
+            hpgen_lu_apply(lu, piv, F);
+        }
+        for (i = 0; i < HPGEN_NZ; ++i) z[i] -= F[i];
+        dn = hpgen_norm_inf(F, HPGEN_NZ);
+        zn = hpgen_norm_inf(z, HPGEN_NZ);
+        if (!isfinite(dn) || !isfinite(zn)) return HPGEN_NONFINITE;
+        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)) return HPGEN_OK;
+        if (full) {
+            /* quadratic convergence: the error left after dn <= tol is about C tol^2 */
+            if (dn <= o->tol * (1.0 + zn)) return HPGEN_OK;
+        } else {
+            /* linear convergence: the error left is about theta/(1 - theta) dn; ask it to be
+               <= HPGEN_SIMPLIFIED_TOL tol, the round-off level full Newton reaches */
+            double th = dn / dprev;
+            if (dn <= HPGEN_SIMPLIFIED_TOL * o->tol * (1.0 + zn)) return HPGEN_OK;
+            if (it > 1 && th < 1.0 && th / (1.0 - th) * dn <= HPGEN_SIMPLIFIED_TOL * o->tol * (1.0 + zn))
+                return HPGEN_OK;
+        }
+        if (!full && it > 1 && dn > HPGEN_THETA_MAX * dprev) {
+            if (fresh) full = 1;           /* a fresh J contracts poorly: full Newton */
+            else *lu_valid = 0;            /* a stale J: refresh it at the next iterate */
+        }
+        dprev = dn;
+    }
+    return HPGEN_NO_CONVERGENCE;
+}
+
+/* One step of a run: margin(z, h) > 0 at the start (check_start), Newton from z (in/out),
+   margin(z, h) > 0 at the solution, then update -> (g1, p1); with_g = 0: update_p -> p1
+   only (g1 untouched). */
+/* small kernels: inline them and the Newton loop into one body (GCC/Clang), so the compiler
+   schedules the kernels' arithmetic together with the solve */
+#if defined(__GNUC__)
+__attribute__((flatten))
+#endif
+static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
+                           const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
+                           double* g1, double* p1, long long* iters, long long* jacs,
+                           double* rnorm, int check_start, int with_g) {
+    double m[1];
+    int code;
+    /* a start outside tau's domain means h is too large for the chart: do not let Newton
+       wander to a spurious root from there. Only needed for a start that is not built from
+       the previous steps' solutions (whose margins, same h, were checked). */
+    if (check_start && !hpgen_k_margin(z, hv, m) && m[0] <= 0.0) {
+        *iters = 0; *rnorm = NAN;
+        return HPGEN_DOMAIN;
+    }
+    code = hpgen_newton(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm);
+    /* a Newton failure is reported as such (wherever its last iterate went): DOMAIN is a
+       converged solution outside tau's domain only */
+    if (code != HPGEN_OK) { *lu_valid = 0; return code; }
+    if (hpgen_k_margin(z, hv, m)) return HPGEN_NONFINITE;
+    if (!(m[0] > 0.0)) { *lu_valid = 0; return HPGEN_DOMAIN; }
+    if (!with_g) {
+        if (hpgen_k_update_p(z, g, p, hv, p1) || !hpgen_all_finite(p1, HPGEN_D))
+            return HPGEN_NONFINITE;
+        return HPGEN_OK;
+    }
+    if (hpgen_k_update(z, g, p, hv, g1, p1)) return HPGEN_NONFINITE;
+    if (!hpgen_all_finite(g1, HPGEN_NN) || !hpgen_all_finite(p1, HPGEN_D))
+        return HPGEN_NONFINITE;
+    return HPGEN_OK;
+}
+
+static void hpgen_status_init(hpgen_status* st) {
+    st->code = HPGEN_OK; st->step = 0; st->iterations = 0; st->total_iterations = 0;
+    st->residual = 0.0; st->jacobians = 0;
+}
+
+static int hpgen_options_ok(const hpgen_options* o) {
+    return o->maxit >= 1 && o->tol > 0.0 && isfinite(o->tol);
+}
+
+/* One step from (g, p) with step size h; z: Newton start in, solution out (no memory from
+   earlier steps; callers normally ask for full Newton here: a cold start). Returns the code. */
+/* (open model: hv is the step vector [h, t, u, params] of the step) */
+HPGEN_EXPORT int hpgen_step(const double* g, const double* p, const double* hv, double* z,
+                            const hpgen_options* o, double* g1, double* p1, hpgen_status* st) {
+    double lu[HPGEN_NZ * HPGEN_NZ];
+    int piv[HPGEN_NZ];
+    long long it, valid = 0;
+    double r;
+    int code;
+    hpgen_status_init(st);
+    if (!hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return HPGEN_INVALID; }
+    code = hpgen_step_core(g, p, hv, z, o, lu, piv, &valid, g1, p1, &it, &st->jacobians, &r, 1,
+                           1);
+    st->code = code; st->iterations = it; st->total_iterations = it; st->residual = r;
+    return code;
+}
+
+/* sizeof(hpgen_run), for callers that allocate runs as byte buffers */
+HPGEN_EXPORT long long hpgen_run_size(void) { return (long long)sizeof(hpgen_run); }
+
+/* Start a run at (g0, p0) with Newton start z0 for the first step. */
+HPGEN_EXPORT void hpgen_run_init(hpgen_run* r, const double* g0, const double* p0,
+                                 const double* z0) {
+    memset(r, 0, sizeof *r);
+    memcpy(r->g, g0, sizeof r->g);
+    memcpy(r->p, p0, sizeof r->p);
+    memcpy(r->z, z0, sizeof r->z);
+}
+
+/* An open run's inputs: start time t0, input rows U (u_rows of M doubles: 1 = the same row
+   for every step, else row k for step k; the caller keeps U alive while the run steps) and
+   the P runtime parameters. A run must have them before its first step. */
+HPGEN_EXPORT void hpgen_run_set_inputs(hpgen_run* r, double t0, const double* U,
+                                       long long u_rows, const double* params) {
+    int i;
+    r->t0 = t0;
+    r->U = U;
+    r->u_rows = u_rows;
+    for (i = 0; i < HPGEN_P; ++i) r->hv[2 + HPGEN_M + i] = params[i];
+}
+
+/* The run's state (g_k, p_k), last solution z and steps done k. */
+HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, double* z) {
+    memcpy(g, r->g, sizeof r->g);
+    memcpy(p, r->p, sizeof r->p);
+    memcpy(z, r->z, sizeof r->z);
+    return r->k;
+}
+
+/* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
+   success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for the steps
+   after the first, full (o with full Newton) for the first. Updates the counters of st;
+   returns the status code. */
+static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
+                          const hpgen_options* full, hpgen_status* st, int with_g) {
+    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], res;
+    long long it;
+    int i, code, predicted = o->predictor && r->have_prev >= 1;
+    /* the step vector of step k: [h, t0 + k h, u_k, params] */
+    if (r->u_rows < 1 || (r->u_rows > 1 && r->k >= r->u_rows)) {
+        st->code = HPGEN_INVALID; st->step = r->k; return HPGEN_INVALID;
+    }
+    r->hv[0] = hv[0];
+    r->hv[1] = r->t0 + (double)r->k * hv[0];
+    for (i = 0; i < HPGEN_M; ++i) r->hv[2 + i] = r->U[(r->u_rows == 1 ? 0 : r->k) * HPGEN_M + i];
+    hv = r->hv;
+    /* start: the polynomial through the last solutions, extrapolated one step (quadratic
+       3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before) */
+    if (o->predictor && r->have_prev >= 2)
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 3.0 * (r->z[i] - r->zprev[i]) + r->zprev2[i];
+    else if (o->predictor && r->have_prev == 1)
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 2.0 * r->z[i] - r->zprev[i];
+    else
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
+    /* the first step starts from the crude guess kernel: full Newton */
+    code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? full : o, r->lu, r->piv,
+                           &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0, with_g);
+    st->total_iterations += it;
+    if (code != HPGEN_OK && predicted) {
+        /* the extrapolated start failed (Newton diverged, or reached a root outside the
+           chart): retry from the plain warm start z_k before reporting anything */
+        memcpy(zs, r->z, sizeof zs);
+        code = hpgen_step_core(r->g, r->p, hv, zs, o, r->lu, r->piv, &r->lu_valid, g1, p1,
+                               &it, &st->jacobians, &res, 0, with_g);
+        st->total_iterations += it;
+    }
+    st->iterations = it;
+    st->residual = res;
+    if (code != HPGEN_OK) { st->code = code; st->step = r->k; return code; }
+    memcpy(r->zprev2, r->zprev, sizeof r->z);
+    memcpy(r->zprev, r->z, sizeof r->z);
+    memcpy(r->z, zs, sizeof r->z);
+    if (r->have_prev < 2) r->have_prev += 1;
+    if (with_g) memcpy(r->g, g1, sizeof g1);
+    memcpy(r->p, p1, sizeof p1);
+    r->k += 1;
+    return HPGEN_OK;
+}
+
+/* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
+   solution, or from the extrapolation of the last three). The state after global step k is
+   recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
+   sizes them for the records falling in this call). Stops at the first failed step (the run
+   keeps the last good state). Returns the steps done in this call. */
+HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, long long every,
+                                     const hpgen_options* o, double* g_rec, double* p_rec,
+                                     hpgen_status* st) {
+    double hv[1];
+    long long n, rec = 0;
+    hpgen_options full;
+    hpgen_status_init(st);
+    if (steps < 0 || every < 1 || !hpgen_options_ok(o) || r->g_stale) {
+        st->code = HPGEN_INVALID; return 0;
+    }
+    hv[0] = h;
+    full = *o;
+    full.simplified = 0;
+    for (n = 0; n < steps; ++n) {
+        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
+        if (r->k % every == 0) {
+            memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof r->g);
+            memcpy(p_rec + rec * HPGEN_D, r->p, sizeof r->p);
+            ++rec;
+        }
+    }
+    st->step = r->k;
+    return steps;
+}
+
+/* Advance a run by up to `steps` steps of size h, recording the upward crossings of the
+   scene's Poincare section s(g, p) = 0 (kernel section): when s_k < 0 <= s_{k+1}, with
+   theta = s_k / (s_k - s_{k+1}) in (0, 1], record j holds
+     k_rec[j] = k,  t_rec[j] = (k + theta) h,
+     p_rec[j * D] = (1 - theta) p_k + theta p_{k+1}      (linear in the step: O(h^2)),
+     g_rec[j * NN] = g_k tau(theta h xi_{k+1})            (kernel chart_point: on the group).
+   s of the run's current state is kept in the run, so calls chain (a crossing between two
+   calls is found). Stops after `cap` records (the crossing step included), at a failed step,
+   or after `steps` steps; *n_rec: the records written. Returns the steps done in this call. */
+HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long steps,
+                                              const hpgen_options* o, long long cap,
+                                              double* t_rec, double* g_rec, double* p_rec,
+                                              long long* k_rec, long long* n_rec,
+                                              hpgen_status* st) {
+    double hv[1], g0[HPGEN_NN], p0[HPGEN_D], s1[1], th[1];
+    long long n;
+    int i;
+    hpgen_options full;
+    hpgen_status_init(st);
+    *n_rec = 0;
+    if (steps < 0 || cap < 1 || !hpgen_options_ok(o) || r->g_stale) {
+        st->code = HPGEN_INVALID; return 0;
+    }
+    hv[0] = h;
+    full = *o;
+    full.simplified = 0;
+    if (!r->s_valid) {
+        if (hpgen_k_section(r->g, r->p, s1)) { st->code = HPGEN_NONFINITE; return 0; }
+        r->s = s1[0];
+        r->s_valid = 1;
+    }
+    for (n = 0; n < steps && *n_rec < cap; ++n) {
+        const double s0 = r->s;
+        const long long k = r->k;
+        memcpy(g0, r->g, sizeof g0);
+        memcpy(p0, r->p, sizeof p0);
+        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
+        if (hpgen_k_section(r->g, r->p, s1) || !isfinite(s1[0])) {
+            st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
+        }
+        r->s = s1[0];
+        if (s0 < 0.0 && s1[0] >= 0.0) {
+            const long long j = *n_rec;
+            const double theta = s0 / (s0 - s1[0]);
+            th[0] = theta;
+            k_rec[j] = k;
+            t_rec[j] = ((double)k + theta) * h;
+            for (i = 0; i < HPGEN_D; ++i)
+                p_rec[j * HPGEN_D + i] = (1.0 - theta) * p0[i] + theta * r->p[i];
+            if (hpgen_k_chart_point(r->z, g0, r->hv, th, g_rec + j * HPGEN_NN)) {
+                st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
+            }
+            *n_rec = j + 1;
+        }
+    }
+    st->step = r->k;
+    return n;
+}
+
+/* xi with legendre(g, xi) = p: Newton (kernel velocity_step) from xi = 0; one step when l is
+   quadratic in xi (then exact), else until |dxi| <= 1e-14 (1 + |xi|) or the round-off floor,
+   at most 50 iterations (the runtime's Integrator.velocity uses the same test). */
+#if HPGEN_RECORD_USES_XI
+static int hpgen_velocity(const double* g, const double* p, double* xi, const double* hv) {
+    double x1[HPGEN_D], dprev = HUGE_VAL;
+    int i, it;
+    for (i = 0; i < HPGEN_D; ++i) xi[i] = 0.0;
+    for (it = 1; it <= 50; ++it) {
+        double dn = 0.0, xn;
+        if (hpgen_k_velocity_step(g, p, xi, hv, x1) || !hpgen_all_finite(x1, HPGEN_D))
+            return HPGEN_RECORD;
+        for (i = 0; i < HPGEN_D; ++i) {
+            const double dx = fabs(x1[i] - xi[i]);
+            if (dx > dn) dn = dx;
+            xi[i] = x1[i];
+        }
+        if (HPGEN_LEGENDRE_QUADRATIC) return HPGEN_OK;
+        xn = hpgen_norm_inf(xi, HPGEN_D);
+        if (dn <= 1e-14 * (1.0 + xn)) return HPGEN_OK;
+        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + xn)) return HPGEN_OK;
+        dprev = dn;
+    }
+    return HPGEN_RECORD;
+}
+#endif
+
+/* The scene's record row at (g, p) (kernel record; xi by hpgen_velocity when the row uses
+   it): HPGEN_OK, or HPGEN_RECORD when the row is not finite or xi did not converge (then the
+   row is all NaN). */
+static int hpgen_record_row(const double* g, const double* p, double* row, const double* hv) {
+    double xi[HPGEN_D];
+#if HPGEN_RECORD_USES_XI
+    if (hpgen_velocity(g, p, xi, hv) != HPGEN_OK) {
+        int i;
+        for (i = 0; i < HPGEN_W; ++i) row[i] = NAN;
+        return HPGEN_RECORD;
+    }
+#else
+    memset(xi, 0, sizeof xi);
+#endif
+    if (hpgen_k_record(g, p, xi, hv, row) || !hpgen_all_finite(row, HPGEN_W)) return HPGEN_RECORD;
+    return HPGEN_OK;
+}
+
+/* The record row at (g, p) (the start of a run: record 0). Returns the status code. */
+/* (open model: hv is the step vector at the record's time, [h, t, u, params]) */
+HPGEN_EXPORT int hpgen_record(const double* g, const double* p, double* row, const double* hv) {
+    return hpgen_record_row(g, p, row, hv);
+}
+
+/* Advance a run like hpgen_advance, keeping only the scene's record row (W doubles) of the
+   state after global step k when k % every == 0, in rows[j * W], j = 0, 1, ... With
+   HPGEN_SKIP_G (neither the step nor the row use g) g_{k+1} is never formed: the run's g
+   stays g_0 and the run is marked g_stale (hpgen_advance and hpgen_advance_sections then
+   refuse it). The states (p_k, z) are bitwise those of hpgen_advance. A row that is not
+   finite stops the run after its step with code HPGEN_RECORD (the row is written, *n_rec
+   counts it). *n_rec: rows written. Returns the steps done in this call. */
+HPGEN_EXPORT long long hpgen_advance_record(hpgen_run* r, double h, long long steps,
+                                            long long every, const hpgen_options* o,
+                                            double* rows, long long* n_rec, hpgen_status* st) {
+    double hv[1];
+    long long n;
+    hpgen_options full;
+    hpgen_status_init(st);
+    *n_rec = 0;
+    if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    hv[0] = h;
+    full = *o;
+    full.simplified = 0;
+    if (HPGEN_SKIP_G) r->g_stale = 1;
+    for (n = 0; n < steps; ++n) {
+        if (hpgen_run_step(r, hv, o, &full, st, !HPGEN_SKIP_G) != HPGEN_OK) return n;
+        if (r->k % every == 0) {
+            double* row = rows + *n_rec * HPGEN_W;
+            *n_rec += 1;
+            r->hv[1] = r->t0 + (double)r->k * h;      /* the record's time */
+            if (hpgen_record_row(r->g, r->p, row, r->hv) != HPGEN_OK) {
+                st->code = HPGEN_RECORD; st->step = r->k; return n + 1;
+            }
+        }
+    }
+    st->step = r->k;
+    return steps;
+}
+
+/* Advance B independent runs like B calls of hpgen_advance_record: rows of run b start at
+   rows + b * per_run * W, its row count in n_rec[b], its status in st[b]. Returns the number
+   of failed runs. Callers split a batch across threads. */
+HPGEN_EXPORT long long hpgen_advance_record_batch(hpgen_run* runs, long long B, double h,
+                                                  long long steps, long long every,
+                                                  const hpgen_options* o, long long per_run,
+                                                  double* rows, long long* n_rec,
+                                                  hpgen_status* st) {
+    long long b, failed = 0;
+    for (b = 0; b < B; ++b) {
+        hpgen_advance_record(runs + b, h, steps, every, o, rows + b * per_run * HPGEN_W,
+                             n_rec + b, st + b);
+        if (st[b].code != HPGEN_OK) ++failed;
+    }
+    return failed;
+}
+
+
+/* Advance B independent runs (runs[0..B-1]) by `steps` steps each, one after the other,
+   exactly as B calls of hpgen_advance: records of run b start at g_rec + b * per_run * NN
+   (p_rec + b * per_run * D), statuses in st[b]. Callers split a batch across threads. */
+HPGEN_EXPORT long long hpgen_advance_batch(hpgen_run* runs, long long B, double h,
+                                           long long steps, long long every,
+                                           const hpgen_options* o, long long per_run,
+                                           double* g_rec, double* p_rec, hpgen_status* st) {
+    long long b, failed = 0;
+    for (b = 0; b < B; ++b) {
+        hpgen_advance(runs + b, h, steps, every, o, g_rec + b * per_run * HPGEN_NN,
+                      p_rec + b * per_run * HPGEN_D, st + b);
+        if (st[b].code != HPGEN_OK) ++failed;
+    }
+    return failed;
+}
+
+/* ---- linearization along recorded steps (issue 12; hpgen.runtime.linearize) ---- */
+
+/* For k = 0..K-1: Newton on step k from the record (g_k, p_k) = (g_rec + k NN,
+   p_rec + k D): step 0 by full Newton from z (in/out: z_0 in, the last solution out), step
+   k > 0 from the predictor of hpgen_run_step (o->predictor) with o's Newton, whose simplified
+   iterations use J^{-1} of the previous step's converged z; dev[k] = max |update(z_k) -
+   record k+1| (the caller checks that the records are this module's steps). At the
+   converged z_k: J = jacobian(z_k) inverted once (and kept as the next step's Newton
+   matrix), (Fs, Yz, Ys) = step_partials(z_k), A_k = Ys - Yz J^{-1} Fs, 2D x 2D column-major
+   at A + k 4 D^2. Open module: step k's step vector is hv_rec + k H, and with the
+   step vector's partials (FH, YH) also B_k = YH_c - Yz J^{-1} FH_c over the step vector's
+   columns c = c0 .. c0 + nc - 1 (the inputs or the runtime parameters), 2D x nc
+   column-major at B + k 2 D nc. Returns the steps done (K, or the failing step with
+   st->code set). */
+HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const double* p_rec,
+                                       const double* hv_rec, long long c0, long long nc,
+                                       double* z, const hpgen_options* o, double* A,
+                                       double* B, double* dev, hpgen_status* st) {
+    enum { S = 2 * HPGEN_D };
+    double g1[HPGEN_NN], p1[HPGEN_D], J[HPGEN_NZ * HPGEN_NZ], Fs[HPGEN_NZ * S],
+        Yz[S * HPGEN_NZ], Ys[S * S], FH[HPGEN_NZ * HPGEN_H], YH[S * HPGEN_H],
+        zlast[HPGEN_NZ], zprev[HPGEN_NZ], zprev2[HPGEN_NZ], res;
+    int piv[HPGEN_NZ];
+    long long k, it, valid = 0;
+    int i, j, l, code;
+    hpgen_options full;
+    hpgen_status_init(st);
+    if (K < 0 || c0 < 2 || nc < 0 || c0 + nc > HPGEN_H || !hpgen_options_ok(o)) {
+        st->code = HPGEN_INVALID; return 0;
+    }
+    full = *o;
+    full.simplified = 0;
+    for (k = 0; k < K; ++k) {
+        const double* g = g_rec + k * HPGEN_NN;
+        const double* p = p_rec + k * HPGEN_D;
+        const double* hv = hv_rec + k * HPGEN_H;
+        double* Bk = B + k * S * nc;
+        double* Ak = A + k * S * S;
+        double m = 0.0;
+        /* the start: the extrapolation of hpgen_run_step through z_{k-1}, z_{k-2}, z_{k-3} */
+        memcpy(zlast, z, sizeof zlast);
+        if (o->predictor && k >= 3)
+            for (i = 0; i < HPGEN_NZ; ++i) z[i] = 3.0 * (z[i] - zprev[i]) + zprev2[i];
+        else if (o->predictor && k == 2)
+            for (i = 0; i < HPGEN_NZ; ++i) z[i] = 2.0 * z[i] - zprev[i];
+        code = hpgen_step_core(g, p, hv, z, k == 0 ? &full : o, J, piv, &valid, g1, p1, &it,
+                               &st->jacobians, &res, k == 0, 1);
+        st->iterations = it; st->total_iterations += it; st->residual = res;
+        if (code != HPGEN_OK) { st->code = code; st->step = k; return k; }
+        for (i = 0; i < HPGEN_NN; ++i) m = fmax(m, fabs(g1[i] - g[HPGEN_NN + i]));
+        for (i = 0; i < HPGEN_D; ++i) m = fmax(m, fabs(p1[i] - p[HPGEN_D + i]));
+        dev[k] = m;
+        ++st->jacobians;
+        valid = 0;
+        if (hpgen_kernel_jacobian(z, g, p, hv, J)
+            || hpgen_k_step_partials(z, g, p, hv, Fs, Yz, Ys, FH, YH)
+            || hpgen_lu_factor_solve(J, piv, Fs, 1)) {
+            st->code = HPGEN_NONFINITE; st->step = k; return k;
+        }
+        valid = o->simplified ? 1 : 0;    /* J holds J^{-1} at z_k: the next Newton matrix */
+        /* Fs's first column is solved, the others by J^{-1} */
+        for (j = 1; j < S; ++j) hpgen_lu_apply(J, piv, Fs + j * HPGEN_NZ);
+        for (j = 0; j < S; ++j)
+            for (i = 0; i < S; ++i) {
+                double a = Ys[i + j * S];
+                for (l = 0; l < HPGEN_NZ; ++l) a -= Yz[i + l * S] * Fs[l + j * HPGEN_NZ];
+                Ak[i + j * S] = a;
+            }
+        if (!hpgen_all_finite(Ak, S * S)) { st->code = HPGEN_NONFINITE; st->step = k; return k; }
+        for (j = 0; j < nc; ++j) {
+            double* f = FH + (c0 + j) * HPGEN_NZ;
+            hpgen_lu_apply(J, piv, f);
+            for (i = 0; i < S; ++i) {
+                double a = YH[i + (c0 + j) * S];
+                for (l = 0; l < HPGEN_NZ; ++l) a -= Yz[i + l * S] * f[l];
+                Bk[i + j * S] = a;
+            }
+        }
+        if (!hpgen_all_finite(Bk, S * nc)) { st->code = HPGEN_NONFINITE; st->step = k; return k; }
+        memcpy(zprev2, zprev, sizeof zprev);
+        memcpy(zprev, zlast, sizeof zprev);
+    }
+    st->step = K;
+    return K;
+}
