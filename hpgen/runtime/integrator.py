@@ -558,7 +558,7 @@ class Integrator(SectionsMixin, RecordsMixin):
         Parameters
         ----------
         g0, h, steps, xi0, mu0
-            As for ``simulate``: g0 (n, n) on the group, h > 0 in the model's time unit,
+            As for ``simulate``: g0 (n, n) on the group, h != 0 in the model's time unit,
             steps >= 0, exactly one of xi0 / mu0 (d,).
         every : int, optional
             Record interval in steps, >= 1 (default 1).
@@ -566,14 +566,8 @@ class Integrator(SectionsMixin, RecordsMixin):
             Steps per chunk (one C call each), >= 1 (default 100,000).
         newton : NewtonOptions or None, optional
             Newton settings, as for ``simulate``.
-        u : array_like, shape (m,) or (steps, m), optional
-            Control inputs of a model with ``inputs:`` (required there): one row held for
-            every step, or row k held over step k.
-        params : dict, optional
-            Overrides of the model's ``runtime_parameters`` (defaults: the model file's
-            values); no recompilation.
-        t0 : float, optional
-            Start time (default 0): record k is at t0 + k every h.
+        u, params, t0
+            As for ``simulate`` (an open module's inputs, runtime parameters, start time).
 
         Yields
         ------
@@ -651,7 +645,7 @@ class Integrator(SectionsMixin, RecordsMixin):
         g0 : array_like, shape (n, n) or (B, n, n)
             Initial group element, shared or one per run.
         h : float
-            Step size, > 0, in the model's time unit.
+            Step size, != 0 (negative: backwards in time), in the model's time unit.
         steps : int
             Number of steps of every run, >= 0.
         xi0, mu0 : array_like, shape (B, d), optional
@@ -664,16 +658,11 @@ class Integrator(SectionsMixin, RecordsMixin):
             A bar of the runs done on stderr; None (default): when stderr is a terminal.
         newton : NewtonOptions or None, optional
             Newton settings, as for ``simulate``.
-        u : array_like, shape (m,) or (steps, m), optional
-            Control inputs of a model with ``inputs:`` (required there): one row held for
-            every step, or row k held over step k.
+        u, t0
+            As for ``simulate`` (shared by the runs).
         params : dict, optional
-            Overrides of the model's ``runtime_parameters`` (defaults: the model file's
-            values); no recompilation.
-            In ``simulate_batch`` a value may carry a leading axis of length B:
-            run b takes entry b (a parameter sweep).
-        t0 : float, optional
-            Start time (default 0): record k is at t0 + k every h.
+            As for ``simulate``; a value may carry a leading axis of length B: run b takes
+            entry b (a parameter sweep, no recompilation).
 
         Returns
         -------

@@ -211,20 +211,14 @@ class RecordsMixin:
         Parameters
         ----------
         g0, h, steps, xi0, mu0
-            As for ``simulate``: g0 (n, n) on the group, h > 0 in the model's time unit,
+            As for ``simulate``: g0 (n, n) on the group, h != 0 in the model's time unit,
             steps >= 0, exactly one of xi0 / mu0 (d,).
         every : int, optional
             Record interval in steps, >= 1 (default 1); record 0 is the initial state.
         newton : NewtonOptions or None, optional
             Newton settings, as for ``simulate``.
-        u : array_like, shape (m,) or (steps, m), optional
-            Control inputs of a model with ``inputs:`` (required there): one row held for
-            every step, or row k held over step k.
-        params : dict, optional
-            Overrides of the model's ``runtime_parameters`` (defaults: the model file's
-            values); no recompilation.
-        t0 : float, optional
-            Start time (default 0): record k is at t0 + k every h.
+        u, params, t0
+            As for ``simulate`` (an open module's inputs, runtime parameters, start time).
 
         Returns
         -------

@@ -46,7 +46,7 @@ class SectionsMixin:
         Parameters
         ----------
         g0, h, steps, xi0, mu0
-            As for ``simulate``: g0 (n, n) on the group, h > 0 in the model's time unit,
+            As for ``simulate``: g0 (n, n) on the group, h != 0 in the model's time unit,
             steps >= 0, exactly one of xi0 / mu0 (d,).
         max_crossings : int or None, optional
             Stop the run at the step of this crossing; None (default): run all steps.
@@ -54,14 +54,8 @@ class SectionsMixin:
             Newton settings, as for ``simulate``.
         chunk : int, optional
             Steps per C call, >= 1 (default 100,000); bounds the memory of a run.
-        u : array_like, shape (m,) or (steps, m), optional
-            Control inputs of a model with ``inputs:`` (required there): one row held for
-            every step, or row k held over step k.
-        params : dict, optional
-            Overrides of the model's ``runtime_parameters`` (defaults: the model file's
-            values); no recompilation.
-        t0 : float, optional
-            Start time (default 0): record k is at t0 + k every h.
+        u, params, t0
+            As for ``simulate`` (an open module's inputs, runtime parameters, start time).
         every_t : float or None, optional
             A section in t (the scene's ``section: {every_t: T}``): the stroboscopic section
             at t0 + j T, j = 0, 1, ..., T a whole number N of steps of h (within 1e-9
