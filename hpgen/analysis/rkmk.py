@@ -150,7 +150,7 @@ class ContinuousEquations:
         """(g(t), mu(t)) at ``times`` (measured from t0, the time of (g0, mu0)) from DOP853
         with rtol = atol = ``rtol`` on the state (g row-major, mu); returns arrays (K, n, n)
         and (K, d)."""
-        n, d = self.n, self.d
+        n = self.n
         state = {"xi": self.velocity(g0, mu0, t=t0)}
 
         def f(t, y):

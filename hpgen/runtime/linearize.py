@@ -165,7 +165,7 @@ def linearize_open(integ, traj, opts, u=None, params=None, t0=None, wrt=None):
     if wrt not in WRT:
         raise ArgumentError(f"expected wrt=None, 'u' or 'params', got {wrt!r}", field="wrt")
     gf, p, h = _check_traj(integ, traj)
-    K, s, m = len(gf) - 1, 2 * integ.d, len(integ.open["inputs"])
+    K, m = len(gf) - 1, len(integ.open["inputs"])
     if t0 is None:
         t0 = float(np.asarray(traj.t, dtype=np.float64)[0]) if len(traj.t) else 0.0
     inputs = step_inputs(integ.open, K, u, params, t0)
