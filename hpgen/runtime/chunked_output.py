@@ -46,6 +46,7 @@ from .args import _int
 from .progress import bar as progress_bar
 from .records import stream_records
 from .trajectory import npz_path, run_metadata, write_npz
+from .work import work_offset
 
 #: the layout of ``<out>.partial/`` (bump when it changes: an older folder is not resumed)
 PARTIAL_FORMAT = 1
@@ -93,6 +94,10 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     with _Folder(parts, path) as folder:
         prog = (folder.resume if resume else folder.fresh)(ident, resume_hint)
         prog.directions = None if directions is None else np.asarray(directions, np.float64)
+        if prog.state is not None and work_offset(integ.meta) is not None:
+            raise ModelError(f"cannot resume {parts}: a run that records work cannot be "
+                             "resumed (the work is accumulated from its start); delete the "
+                             "folder and run it again", file=str(parts))
         run = None if prog.state is None else integ._b.restore(prog.state, inputs)
         if run is not None and integ._b.steps_done(run) != prog.k:
             raise ModelError(f"cannot resume {parts}: its state is not at step {prog.k}; "
