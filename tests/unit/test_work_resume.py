@@ -8,7 +8,7 @@ import pytest
 
 from conftest import EXAMPLES
 from hpgen.errors import ModelError
-from hpgen.runtime import chunked_output
+from hpgen.runtime.partial_run import PartialFolder
 from hpgen.runtime.chunked_output import partial_dir, record_to_npz
 
 
@@ -18,7 +18,7 @@ def test_a_work_run_interrupted_after_two_chunks_is_refused_on_resume(compile_mo
     assert "work" in integ.record_names
     out = tmp_path / "run.npz"
     kw = dict(g0=[[1.0, 0.0], [0.0, 1.0]], h=0.1, steps=400, xi0=[0.0], chunk=100)
-    commit, calls = chunked_output._Folder.commit, []
+    commit, calls = PartialFolder.commit, []
 
     def interrupted_commit(self, prog, rec, snapshot):
         commit(self, prog, rec, snapshot)
@@ -26,10 +26,10 @@ def test_a_work_run_interrupted_after_two_chunks_is_refused_on_resume(compile_mo
         if len(calls) == 2:
             raise KeyboardInterrupt
 
-    monkeypatch.setattr(chunked_output._Folder, "commit", interrupted_commit)
+    monkeypatch.setattr(PartialFolder, "commit", interrupted_commit)
     with pytest.raises(KeyboardInterrupt):
         record_to_npz(integ, out, **kw)
-    monkeypatch.setattr(chunked_output._Folder, "commit", commit)
+    monkeypatch.setattr(PartialFolder, "commit", commit)
     parts = partial_dir(out)
     chunks = sorted(p.name for p in parts.glob("chunk_*.npz"))
     assert len(chunks) == 2
