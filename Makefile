@@ -3,7 +3,7 @@
 PYTHON ?= python3
 PIP_INSTALL = $(PYTHON) -m pip install --quiet -c constraints.txt
 
-.PHONY: install demo test test-fast wheel-test generate clean
+.PHONY: install demo test test-fast test-lowest wheel-test generate clean
 
 install:
 	$(PIP_INSTALL) -e '.[test,scale]'
@@ -20,6 +20,15 @@ test: install
 
 test-fast: install
 	$(PYTHON) -m pytest -q -ra -m "not slow"
+
+# the fast tests against the lowest versions pyproject.toml admits (constraints-lowest.txt),
+# in a fresh venv (LOWEST_VENV); tests/unit only (the golden generated files of tests/regression
+# are CasADi 3.8's output)
+LOWEST_VENV ?= .venv-lowest
+test-lowest:
+	$(PYTHON) -m venv $(LOWEST_VENV)
+	$(LOWEST_VENV)/bin/python -m pip install --quiet -c constraints-lowest.txt -e '.[test]'
+	$(LOWEST_VENV)/bin/python -m pytest -q -ra -m "not slow" -p no:cacheprovider tests/unit
 
 # build the wheel, install it in a fresh virtual environment (pinned versions) and compile
 # and run a shipped example there, outside the checkout (the templates must be in the wheel)

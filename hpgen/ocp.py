@@ -154,7 +154,12 @@ def rest_to_rest(integ, g0, gT, T, steps, *, params=None, t0=0.0, tol=1e-12,
     try:
         sol = opti.solve()
     except RuntimeError as exc:
-        stats = opti.stats()
+        try:
+            stats = opti.stats()
+        except RuntimeError:      # the solver never started (e.g. its plugin did not load)
+            raise HpgenError("CasADi could not start IPOPT: "
+                             f"{str(exc).splitlines()[-1]}; install casadi >= 3.6.1, whose "
+                             "wheels carry IPOPT and its libraries") from None
         raise HpgenError(f"IPOPT did not solve the transfer ({stats.get('return_status')},"
                                f" {stats.get('iter_count')} iterations): "
                                f"{str(exc).splitlines()[-1]}") from None

@@ -80,3 +80,18 @@ def test_rest_to_rest_bad_input(integ, compile_model):
         with pytest.raises(ArgumentError) as e:
             rest_to_rest(model, g0, np.eye(3), 1.0, steps)
         assert e.value.field == field and "\n" not in str(e.value)
+
+
+def test_rest_to_rest_says_when_ipopt_cannot_start(integ, monkeypatch):
+    """CasADi 3.6.0's wheels load IPOPT only beside a system libgfortran: a solver that does
+    not start is a one-line HpgenError that says so, not CasADi's RuntimeError from stats."""
+    import casadi as ca
+
+    from hpgen.errors import HpgenError
+    from hpgen.ocp import rest_to_rest
+    solver = ca.Opti.solver
+    monkeypatch.setattr(ca.Opti, "solver",
+                        lambda self, name, *a: solver(self, "no_such_nlp_plugin", *a))
+    with pytest.raises(HpgenError, match="CasADi could not start IPOPT") as e:
+        rest_to_rest(integ, np.eye(3), np.eye(3), 1.0, 10)
+    assert "\n" not in str(e.value) and not isinstance(e.value, ArgumentError)
