@@ -138,18 +138,19 @@ def _step_instructions(step) -> int:
 
 
 def _python_linear(step) -> dict:
-    """kernels.py's Newton linear algebra and fused simplified iterate (pyiterate): printed
-    for nz <= pylinear.UNROLL_MAX (the iterate not for a residual with a side effect)."""
+    """kernels.py's Newton linear algebra and fused iterates (pyiterate): printed for
+    nz <= pylinear.UNROLL_MAX (the iterates not for kernels with a side effect)."""
     nz = step.nz
     if nz > pylinear.UNROLL_MAX:
         return {"linear_source": "", "unit_rows": "", "linear_functions": [],
-                "unroll_max": pylinear.UNROLL_MAX, "iterate_source": "",
-                "iterate_function": pyiterate.FUNCTION}
+                "unroll_max": pylinear.UNROLL_MAX, "iterate_source": "", "full_source": "",
+                "iterate_function": pyiterate.FUNCTION, "full_function": pyiterate.FULL}
     return {"linear_source": pylinear.linear_solver_source(nz).rstrip("\n"),
             "unit_rows": repr(pylinear.unit_rows(nz)),
             "linear_functions": list(pylinear.FUNCTIONS), "unroll_max": pylinear.UNROLL_MAX,
             "iterate_source": pyiterate.iterate_source(step.kernel("residual"), nz),
-            "iterate_function": pyiterate.FUNCTION}
+            "full_source": pyiterate.full_source(step.kernel("residual_jacobian"), nz),
+            "iterate_function": pyiterate.FUNCTION, "full_function": pyiterate.FULL}
 
 
 def c_abi_context() -> dict:

@@ -33,7 +33,8 @@ the same doubles as the C backend; above UNROLL_MAX numpy/LAPACK does the linear
 which agrees with C to round-off. The iterates with a kept J^{-1} run, when the module has
 it, in its printed ITERATE (hpgen.codegen.pyiterate: the residual's body, J^{-1} F, z - dz and
 this loop's tests fused into one function, the same operations), which hands back at a
-refresh of J or to the way below at a math error or a non-finite value.
+refresh of J or to the way below at a math error or a non-finite value; full Newton's
+iterates likewise in ITERATE_FULL.
 """
 from __future__ import annotations
 
@@ -166,24 +167,25 @@ class Kernels:
     simplified iterates with a kept J^{-1}, residual and linear algebra fused: solve's
     arithmetic, printed by hpgen.codegen.pyiterate; it needs the printed linear solver)."""
     __slots__ = ("residual", "jacobian", "residual_jacobian", "update", "margin", "linear",
-                 "nz", "update_p", "iterate")
+                 "nz", "update_p", "iterate", "iterate_full")
 
     def __init__(self, nz, residual, jacobian, residual_jacobian=None, update=None,
-                 margin=None, linear=None, update_p=None, iterate=None):
+                 margin=None, linear=None, update_p=None, iterate=None, iterate_full=None):
         self.nz = nz
         self.residual, self.jacobian = residual, jacobian
         self.residual_jacobian = residual_jacobian
         self.update, self.margin, self.update_p = update, margin, update_p
         self.linear = linear_solver(nz, linear)
         self.iterate = iterate if linear is not None else None
+        self.iterate_full = iterate_full if linear is not None else None
 
     @classmethod
-    def from_raw(cls, nz, raw: dict, linear=None, iterate=None) -> "Kernels":
-        """linear: the module's LINEAR (printed solver functions) or None; iterate: its
-        ITERATE or None."""
+    def from_raw(cls, nz, raw: dict, linear=None, iterate=None, iterate_full=None) -> "Kernels":
+        """linear: the module's LINEAR (printed solver functions) or None; iterate,
+        iterate_full: its ITERATE and ITERATE_FULL or None."""
         return cls(nz, raw["residual"], raw["jacobian"], raw.get("residual_jacobian"),
                    raw.get("update"), raw.get("margin"), linear, raw.get("update_p"),
-                   iterate)
+                   iterate, iterate_full)
 
 
 def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory):
@@ -199,6 +201,12 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
     stol = SIMPLIFIED_TOL * tol
     dprev, jacs, F = _INF, 0, None
     full, fresh = not opts.simplified, False
+    if full and kern.iterate_full is not None:
+        # full Newton's iterates in one call (same arithmetic as below; J is not kept)
+        out = kern.iterate_full(z, g, p, hv, 1, maxit, dprev, tol)
+        if out is not None:
+            memory.lu = None
+            return out[0], out[1], out[2], out[4], out[2]
     it = 0
     while it < maxit:
         it += 1

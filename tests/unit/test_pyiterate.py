@@ -1,9 +1,9 @@
-"""kernels.py ITERATE (hpgen.codegen.pyiterate): the simplified-Newton iterates with the
-residual, J^{-1} F, z - dz and the tests fused into one printed function give bitwise the
-numbers of the unfused path (the residual kernel, LINEAR's _lin_update and the tests of
+"""kernels.py ITERATE and ITERATE_FULL (hpgen.codegen.pyiterate): the Newton iterates with
+the kernel, the linear algebra, z - dz and the tests fused into one printed function give
+bitwise the numbers of the unfused path (the kernels, LINEAR's functions and the tests of
 hpgen.runtime.newton.solve), hand back at a refresh of J and on NO_CONVERGENCE like it, and
 decline (None) where the unfused path leaves its fast arithmetic. Whole runs with and
-without it are bitwise equal (and equal to the C backend: test_newton_python.py).
+without them are bitwise equal (and equal to the C backend: test_newton_python.py).
 """
 from __future__ import annotations
 
@@ -103,12 +103,12 @@ def test_heavy_top_gauss2_iterate_and_runs(compile_model, tau):
     assert kern.iterate is not None
     g0, xi0 = rotvec([0.3, 0.2, 0.0]), [0.2, 1.0, 3.0]
     runs = []
-    for it in (kern.iterate, None):
-        kern.iterate = it
-        for simplified in (None, True):
+    for it, full in ((kern.iterate, kern.iterate_full), (None, None)):
+        kern.iterate, kern.iterate_full = it, full
+        for simplified in (None, True, False):
             runs.append(integ.simulate(g0=g0, xi0=xi0, h=0.05, steps=150,
                                        newton=newton.NewtonOptions(simplified=simplified)))
-    for a, b in zip(runs[:2], runs[2:]):
+    for a, b in zip(runs[:3], runs[3:]):
         assert bits(a.g).tolist() == bits(b.g).tolist()
         assert bits(a.mu).tolist() == bits(b.mu).tolist()
         assert (a.newton_iterations, a.jacobians) == (b.newton_iterations, b.jacobians)
@@ -132,24 +132,28 @@ def test_iterate_source_is_deterministic_and_refuses_other_kernels():
 
 def test_solve_with_and_without_iterate_agree_on_every_path():
     """newton.solve from a kept J^{-1}: converging, refreshing J, capped by maxit, and with
-    ITERATE declining (z blows up: the general path then reports NONFINITE as before)."""
+    ITERATE declining (z blows up: the general path then reports NONFINITE as before); full
+    Newton (ITERATE_FULL) converging and capped."""
     mod = load(module_dir())
     g = rotvec([0.3, 0.2, 0.0]).ravel(order="F").tolist()
     p, h, z0 = [0.6, 1.0, -0.3], [0.1], [0.3, 0.5, -0.1]
     F, J = mod.RAW["residual_jacobian"](z0, g, p, h)
     _, X = mod.LINEAR[0](J, F, True)
-    fused = newton.Kernels.from_raw(mod.NZ, mod.RAW, mod.LINEAR, mod.ITERATE)
+    fused = newton.Kernels.from_raw(mod.NZ, mod.RAW, mod.LINEAR, mod.ITERATE,
+                                    mod.ITERATE_FULL)
     plain = newton.Kernels.from_raw(mod.NZ, mod.RAW, mod.LINEAR)
-    assert fused.iterate is not None and plain.iterate is None
+    assert None not in (fused.iterate, fused.iterate_full)
+    assert plain.iterate is None and plain.iterate_full is None
     codes = set()
-    for Xk in (X, tuple(0.7 * a for a in X), tuple(1e300 * a for a in X)):
+    for Xk, simplified in ((X, True), (tuple(0.7 * a for a in X), True),
+                           (tuple(1e300 * a for a in X), True), (None, False)):
         for maxit in (2, 50):
             out = []
             for kern in (fused, plain):
                 mem = newton.NewtonMemory()
                 mem.lu = Xk
                 res = newton.solve(kern, [0.35, 0.45, -0.05], g, p, h,
-                                   newton.NewtonOptions(1e-14, maxit, True), mem)
+                                   newton.NewtonOptions(1e-14, maxit, simplified), mem)
                 out.append((res, mem.lu))
             (a, lu_a), (b, lu_b) = out
             assert a[0] == b[0] and a[2] == b[2] and a[4] == b[4]
@@ -158,3 +162,45 @@ def test_solve_with_and_without_iterate_agree_on_every_path():
             assert (lu_a is None) == (lu_b is None)
             codes.add(a[0])
     assert codes == {OK, NO_CONVERGENCE, newton.NONFINITE}
+
+
+def unfused_full(mod, z, g, p, h, maxit, tol):
+    """Full Newton the way solve takes it without ITERATE_FULL: (code, z, it, |F|) or None
+    where solve would leave the fast way (non-finite F, singular J, non-finite z)."""
+    dprev = math.inf
+    for it in range(1, maxit + 1):
+        F, J = mod.RAW["residual_jacobian"](z, g, p, h)
+        if not newton.all_finite(F):
+            return None
+        res = mod.LINEAR[0](J, F, False)
+        if res is None:
+            return None
+        new = mod.LINEAR[3](res[0], z)
+        if new is None:
+            return None
+        z, dn, zn = new
+        if (it > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + zn)) or \
+                dn <= tol * (1.0 + zn):
+            return OK, z, it, newton.norm_inf(F)
+        dprev = dn
+    return NO_CONVERGENCE, z, maxit, newton.norm_inf(F)
+
+
+def test_toy_iterate_full_equals_unfused_path():
+    mod = load(module_dir())
+    assert mod.ITERATE_FULL.__name__ == pyiterate.FULL
+    g = rotvec([0.3, 0.2, 0.0]).ravel(order="F").tolist()
+    rng = np.random.default_rng(4)
+    codes = set()
+    for k in range(20):
+        z = (rng.normal(size=3) * 10.0 ** rng.uniform(-3, 3)).tolist()
+        for maxit in (1, 2, 50):
+            want = unfused_full(mod, z, g, [0.6, 1.0, -0.3], [0.1], maxit, 1e-14)
+            got = mod.ITERATE_FULL(z, g, [0.6, 1.0, -0.3], [0.1], 1, maxit, math.inf, 1e-14)
+            assert (got is None) == (want is None)
+            if want is not None:
+                assert (got[0], got[2]) == (want[0], want[2])
+                assert bits(got[1]).tolist() == bits(want[1]).tolist()
+                assert bits([got[4]]).tolist() == bits([want[3]]).tolist()
+            codes.add(None if want is None else want[0])
+    assert {OK, NO_CONVERGENCE} <= codes
