@@ -69,9 +69,10 @@ def _same(got, want):
 
 
 def _cases(mod, nz, g, p, h, z0, rng):
-    """ITERATE against the unfused iterates near a root z0: J^{-1} at z0 (converges), a scaled one (linear
-    rate 0.3 > THETA_MAX: REFRESH), a maxit cap (NO_CONVERGENCE), a later start (it, dprev
-    carried in), and J^{-1} blowing z up (None: the caller goes the general way)."""
+    """ITERATE against the unfused iterates near a root z0: J^{-1} at z0 (converges), a
+    scaled one (linear rate 0.3 > THETA_MAX: REFRESH), a maxit cap (NO_CONVERGENCE), a later
+    start (it, dprev carried in), and J^{-1} blowing z up (None: the caller goes the general
+    way)."""
     F, J = mod.RAW["residual_jacobian"](z0, g, p, h)
     _, X = mod.LINEAR[0](J, F, True)
     codes = set()
