@@ -182,6 +182,9 @@ ROUNDOFF_FLOOR = 1e-11
 THETA_MAX = 0.05
 #: simplified Newton stops when its error estimate is <= SIMPLIFIED_TOL tol (1 + |z|)
 SIMPLIFIED_TOL = 0.01
+#: kernels.py ITERATE (the Python backend's fused simplified iterates, hpgen.codegen.pyiterate)
+#: returns this, not a status code, when the rate exceeds THETA_MAX: the caller refreshes J
+REFRESH = -2
 #: the velocity xi of a record row (Newton on dl/dxi = p from xi = 0, compiled into the
 #: record loop): the tolerance and iteration cap of Integrator.velocity's defaults
 VELOCITY_TOL = DEFAULT_TOL

@@ -30,7 +30,7 @@ from .. import __version__, abi
 from ..schemes import BACKENDS, OPTION_KEYS
 from .contract import HASH_RE, MODULE_RE, CodegenError, check_step
 from .csource import c_kernel_context, casadi_c_code, work_sizes
-from . import pylinear
+from . import pyiterate, pylinear
 from .pysource import py_kernel_context
 
 META_FORMAT = abi.META_FORMAT
@@ -137,14 +137,20 @@ def _step_instructions(step) -> int:
     return sum(step.kernel(k).function.n_instructions() for k in STEP_KERNELS)
 
 
-def _python_linear(nz: int) -> dict:
-    """kernels.py's Newton linear algebra: printed for nz <= pylinear.UNROLL_MAX."""
+def _python_linear(step) -> dict:
+    """kernels.py's Newton linear algebra and fused iterates (pyiterate): printed for
+    nz <= pylinear.UNROLL_MAX (the iterates not for kernels with a side effect)."""
+    nz = step.nz
     if nz > pylinear.UNROLL_MAX:
         return {"linear_source": "", "unit_rows": "", "linear_functions": [],
-                "unroll_max": pylinear.UNROLL_MAX}
+                "unroll_max": pylinear.UNROLL_MAX, "iterate_source": "", "full_source": "",
+                "iterate_function": pyiterate.FUNCTION, "full_function": pyiterate.FULL}
     return {"linear_source": pylinear.linear_solver_source(nz).rstrip("\n"),
             "unit_rows": repr(pylinear.unit_rows(nz)),
-            "linear_functions": list(pylinear.FUNCTIONS), "unroll_max": pylinear.UNROLL_MAX}
+            "linear_functions": list(pylinear.FUNCTIONS), "unroll_max": pylinear.UNROLL_MAX,
+            "iterate_source": pyiterate.iterate_source(step.kernel("residual"), nz),
+            "full_source": pyiterate.full_source(step.kernel("residual_jacobian"), nz),
+            "iterate_function": pyiterate.FUNCTION, "full_function": pyiterate.FULL}
 
 
 def c_abi_context() -> dict:
@@ -173,7 +179,7 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
                              step_uses_g=bool(step.step_uses_g),
                              record_uses_g=bool(step.record_uses_g), **c_abi_context()),
         "kernels.py.j2": dict(common, nz=step.nz, module=info["module"],
-                              **_python_linear(step.nz),
+                              **_python_linear(step),
                               safe_unary=[list(p) for p in SAFE_UNARY],
                               kernels=[py_kernel_context(k) for k in step.kernels]),
         "__init__.py.j2": dict(common, module=info["module"], hash=info["hash"],

@@ -146,31 +146,47 @@ def _lu_factor_solve(n: int) -> list[str]:
     return L
 
 
+def unpack_inverse(n: int, f: str = "f") -> str:
+    """The statement unpacking a kept J^{-1} (column-major, in ``f``) into a<i>_<j>."""
+    return f"{', '.join(_all(n))}, = {f}"
+
+
+def matvec_lines(n: int, c: str = "c") -> list[str]:
+    """b = A c (unindented), A = J^{-1} in a<i>_<j> (unpack_inverse), c in c0, c1, ...:
+    b_i = A_i0 c_0, then b_i += A_ij c_j for j = 1, 2, ... (hpgen_lu_apply)."""
+    return [f"b{i} = " + " + ".join(f"{_a(i, j)} * {c}{j}" for j in range(n))
+            for i in range(n)]
+
+
 def _matvec(n: int) -> list[str]:
-    """x = A b, A = J^{-1} column-major in f, b in F: x_i = A_i0 b_0, then x_i += A_ij b_j for
-    j = 1, 2, ... (hpgen_lu_apply)."""
-    return [f"    {', '.join(_all(n))}, = f", f"    {_names('c', n)}, = F"] + [
-        f"    b{i} = " + " + ".join(f"{_a(i, j)} * c{j}" for j in range(n)) for i in range(n)]
+    """x = A b, A = J^{-1} column-major in f, b in F (see matvec_lines)."""
+    return [f"    {unpack_inverse(n)}", f"    {_names('c', n)}, = F"] + [
+        "    " + line for line in matvec_lines(n)]
+
+
+def finish_lines(n: int) -> list[str]:
+    """(unindented) z - dz (z in z0.., dz in b0..) into z0.., and the inf-norms dn of dz and
+    zn of the new z; ``return None`` if some entry is not finite (or a sum of entries
+    overflows): the caller then takes the general path."""
+    return [f"z{i} = z{i} - b{i}" for i in range(n)] + [
+        f"s = {' + '.join(f'b{i}' for i in range(n))}",
+        f"t = {' + '.join(f'z{i}' for i in range(n))}",
+        "if not (s - s == 0.0 and t - t == 0.0):", "    return None"
+    ] + max_abs("b", "dn", n) + max_abs("z", "zn", n)
 
 
 def _finish(n: int) -> list[str]:
-    """z - dz (dz in b0..) and the inf-norms of dz and of the new z; None if some entry is
-    not finite (or a sum of entries overflows): the caller then takes the general path."""
-    return [f"    {_names('z', n)}, = z"] + [f"    z{i} = z{i} - b{i}" for i in range(n)] + [
-        f"    s = {' + '.join(f'b{i}' for i in range(n))}",
-        f"    t = {' + '.join(f'z{i}' for i in range(n))}",
-        "    if not (s - s == 0.0 and t - t == 0.0):", "        return None"
-    ] + _max_abs("b", "dn", n) + _max_abs("z", "zn", n) + [
+    """z - dz and the norms (finish_lines) from z in ``z``: ([z - dz], dn, zn) or None."""
+    return [f"    {_names('z', n)}, = z"] + ["    " + line for line in finish_lines(n)] + [
         f"    return [{_names('z', n)}], dn, zn"]
 
 
-def _max_abs(v, m, n):
+def max_abs(v, m, n):
     """m = max |v_i| over finite v_i, as hpgen_norm_inf (from 0.0 up; a -0.0 entry gives
-    t = -0.0, which is not > m)."""
-    L = [f"    {m} = 0.0"]
+    t = -0.0, which is not > m); unindented."""
+    L = [f"{m} = 0.0"]
     for i in range(n):
-        L += [f"    t = {v}{i} if {v}{i} >= 0.0 else -{v}{i}", f"    if t > {m}:",
-              f"        {m} = t"]
+        L += [f"t = {v}{i} if {v}{i} >= 0.0 else -{v}{i}", f"if t > {m}:", f"    {m} = t"]
     return L
 
 

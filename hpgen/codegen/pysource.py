@@ -168,8 +168,13 @@ def exact_reciprocal(c) -> float | None:
     return r if abs(r) >= 2.2250738585072014e-308 and math.isfinite(r) else None
 
 
-def fast_lines(kernel) -> tuple[list[str], bool]:
-    """The fast body and whether it contains an operation that may raise."""
+def fast_lines(kernel, bound: bool = False) -> tuple[list[str], bool]:
+    """The fast body and whether it contains an operation that may raise.
+
+    bound: the body of a loop (hpgen.codegen.pyiterate) instead of a function: the inputs
+    are locals bound before it, element j of input ``x`` named ``x<j>`` (no unpacking,
+    never reused as work variables, see bound_inputs), and output ``y``'s element j is
+    left in the local ``y<j>`` instead of a list."""
     f = kernel.function
     ins, outs = _io_positions(f)
     vals: list[_Value] = []
@@ -245,19 +250,25 @@ def fast_lines(kernel) -> tuple[list[str], bool]:
     # statements (values defined, left side, right side), references written @value@;
     # outputs are stored where CasADi writes them (their values need not stay alive)
     stmts: list[tuple[list[int], str, str]] = []
-    for a in range(f.n_in()):
+    name: dict[int, str] = {}
+    if bound:
+        for (arg, pos), i in inputs.items():
+            name[i] = f"{kernel.inputs[arg]}{pos}"
+    for a in range(f.n_in() if not bound else 0):
         used = {pos: i for (arg, pos), i in inputs.items() if arg == a and vals[i].uses}
         if used:
             targets = [f"@{used[p]}@" if p in used else "_" for p in range(f.numel_in(a))]
             stmts.append((list(used.values()),
                           ", ".join(targets) + ("," if len(targets) == 1 else ""),
                           kernel.inputs[a]))
-    for r in range(f.n_out()):
+    for r in range(f.n_out() if not bound else 0):
         stmts.append(([], f"r{r}", f"[0.0] * {f.numel_out(r)}"))
     for item in order:
         if item[0] == "op":
             if not vals[item[1]].inline:
                 stmts.append(([item[1]], f"@{item[1]}@", expr(vals[item[1]])))
+        elif bound:
+            stmts.append(([], f"{kernel.outputs[item[1]]}{item[2]}", text(item[3], wrap=False)))
         else:
             stmts.append(([], f"r{item[1]}[{item[2]}]", text(item[3], wrap=False)))
 
@@ -266,13 +277,12 @@ def fast_lines(kernel) -> tuple[list[str], bool]:
             for m in _REF.finditer(rhs)}
     free: list[int] = []
     count = 0
-    name: dict[int, str] = {}
     lines = []
     for s, (defs, lhs, rhs) in enumerate(stmts):
         used = {int(m.group(1)) for m in _REF.finditer(rhs)}
         rhs = _REF.sub(lambda m: name[int(m.group(1))], rhs)
         for i in sorted(used):
-            if last[i] == s:
+            if last[i] == s and (not bound or vals[i].kind == "op"):
                 heapq.heappush(free, int(name[i][1:]))
         for i in defs:
             if i not in last:

@@ -84,7 +84,9 @@ class PythonBackend(_Backend):
             raw = {k: (lambda f: lambda *a: [o.tolist() for o in f(*a)])(f)
                    for k, f in self._kernels.items()}
         self._raw = {k: raw[k] for k in self._sig}
-        self._newton = newton.Kernels.from_raw(self.nz, self._raw, getattr(mod, "LINEAR", None))
+        self._newton = newton.Kernels.from_raw(self.nz, self._raw, getattr(mod, "LINEAR", None),
+                                               getattr(mod, "ITERATE", None),
+                                               getattr(mod, "ITERATE_FULL", None))
 
     def call(self, name, *args):
         return self._kernels[name](*args)

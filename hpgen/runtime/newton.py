@@ -30,7 +30,11 @@ for simplified Newton, forms J^{-1}, which the other iterates apply as a matrix-
 product. For nz <= UNROLL_MAX these are printed once per nz as straight-line Python, so that
 with the same kernels (the backends' kernels are bitwise equal) the Python backend computes
 the same doubles as the C backend; above UNROLL_MAX numpy/LAPACK does the linear algebra,
-which agrees with C to round-off.
+which agrees with C to round-off. The iterates with a kept J^{-1} run, when the module has
+it, in its printed ITERATE (hpgen.codegen.pyiterate: the residual's body, J^{-1} F, z - dz and
+this loop's tests fused into one function, the same operations), which hands back at a
+refresh of J or to the way below at a math error or a non-finite value; full Newton's
+iterates likewise in ITERATE_FULL.
 """
 from __future__ import annotations
 
@@ -42,7 +46,7 @@ import numpy as np
 # status codes and Newton constants: the generated-module contract (kernels.c.j2 prints the
 # same values); RECORD and UNROLL_MAX re-exported for the run loops and tests
 from ..abi import (DEFAULT_MAXIT, DEFAULT_TOL, DOMAIN, NO_CONVERGENCE,  # noqa: F401
-                   NONFINITE, OK, RECORD, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, THETA_MAX,
+                   NONFINITE, OK, RECORD, REFRESH, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, THETA_MAX,
                    UNROLL_MAX)
 
 _INF, _NAN = math.inf, math.nan
@@ -159,23 +163,29 @@ class Kernels:
     """The kernels the Newton loop calls, on lists of Python floats (``kernels.py`` RAW):
     name(*args) -> list of output lists. residual_jacobian may be None (then residual and
     jacobian are called in turn); update and margin are needed by step_lists only. Holds the
-    linear solver for nz (linear_solver)."""
+    linear solver for nz (linear_solver) and, optionally, the module's ITERATE (the
+    simplified iterates with a kept J^{-1}, residual and linear algebra fused: solve's
+    arithmetic, printed by hpgen.codegen.pyiterate; it needs the printed linear solver)."""
     __slots__ = ("residual", "jacobian", "residual_jacobian", "update", "margin", "linear",
-                 "nz", "update_p")
+                 "nz", "update_p", "iterate", "iterate_full")
 
     def __init__(self, nz, residual, jacobian, residual_jacobian=None, update=None,
-                 margin=None, linear=None, update_p=None):
+                 margin=None, linear=None, update_p=None, iterate=None, iterate_full=None):
         self.nz = nz
         self.residual, self.jacobian = residual, jacobian
         self.residual_jacobian = residual_jacobian
         self.update, self.margin, self.update_p = update, margin, update_p
         self.linear = linear_solver(nz, linear)
+        self.iterate = iterate if linear is not None else None
+        self.iterate_full = iterate_full if linear is not None else None
 
     @classmethod
-    def from_raw(cls, nz, raw: dict, linear=None) -> "Kernels":
-        """linear: the module's LINEAR (printed solver functions) or None."""
+    def from_raw(cls, nz, raw: dict, linear=None, iterate=None, iterate_full=None) -> "Kernels":
+        """linear: the module's LINEAR (printed solver functions) or None; iterate,
+        iterate_full: its ITERATE and ITERATE_FULL or None."""
         return cls(nz, raw["residual"], raw["jacobian"], raw.get("residual_jacobian"),
-                   raw.get("update"), raw.get("margin"), linear, raw.get("update_p"))
+                   raw.get("update"), raw.get("margin"), linear, raw.get("update_p"),
+                   iterate, iterate_full)
 
 
 def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory):
@@ -185,13 +195,39 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
     Returns (code, z (list), iterations, last residual inf-norm, Jacobian evaluations).
     """
     residual, jacobian, both = kern.residual, kern.jacobian, kern.residual_jacobian
-    lin = kern.linear
+    lin, iterate = kern.linear, kern.iterate
     factor_solve, apply, update, finish = lin.factor_solve, lin.apply, lin.update, lin.finish
-    tol, keep = opts.tol, opts.simplified
+    tol, keep, maxit = opts.tol, opts.simplified, opts.maxit
     stol = SIMPLIFIED_TOL * tol
     dprev, jacs, F = _INF, 0, None
     full, fresh = not opts.simplified, False
-    for it in range(1, opts.maxit + 1):
+    if full and kern.iterate_full is not None:
+        # full Newton's iterates in one call (same arithmetic as below; J is not kept)
+        out = kern.iterate_full(z, g, p, hv, 1, maxit, dprev, tol)
+        if out is not None:
+            memory.lu = None
+            return out[0], out[1], out[2], out[4], out[2]
+    it = 0
+    while it < maxit:
+        it += 1
+        if iterate is not None and not full and memory.lu is not None:
+            # the iterates with the kept J^{-1} in one call (same arithmetic as below)
+            out = iterate(memory.lu, z, g, p, hv, it, maxit, dprev, stol)
+            if out is not None:
+                code, z, it, dn, rnorm = out
+                if code != REFRESH:
+                    return code, z, it, rnorm, jacs
+                if fresh:
+                    full = True
+                else:
+                    memory.lu = None
+                if it >= maxit:
+                    return NO_CONVERGENCE, z, maxit, rnorm, jacs
+                dprev = dn
+                continue
+            # a math error or a non-finite value on the way: from this iterate on, the way
+            # below (the same values up to there; it then handles the event as C does)
+            iterate = None
         if full or memory.lu is None:
             # F and a fresh J (one evaluation when the module has residual_jacobian)
             memory.lu = None
@@ -248,7 +284,7 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
             else:
                 memory.lu = None     # a stale J: refresh it at the next iterate
         dprev = dn
-    return NO_CONVERGENCE, z, opts.maxit, (_NAN if F is None else norm_inf(F)), jacs
+    return NO_CONVERGENCE, z, maxit, (_NAN if F is None else norm_inf(F)), jacs
 
 
 def newton(fun, z, tol=DEFAULT_TOL, maxit=DEFAULT_MAXIT):
