@@ -8331,3 +8331,377 @@ def _lin_finish(dz, z):
     return [z0, z1, z2, z3, z4, z5], dn, zn
 
 LINEAR = (_lin_factor_solve, _lin_apply, _lin_update, _lin_finish)
+
+
+# ---- Newton's iterates with the kernels and the linear algebra fused: simplified with a kept
+# J^{-1} (ITERATE) and full Newton (ITERATE_FULL); the operations of hpgen.runtime.newton.solve
+# (hpgen.codegen.pyiterate) ----
+
+
+def _newton_iterate(f, z, g, p, h, it, maxit, dprev, stol):
+    """simplified-Newton iterates from z with J^{-1} = f (hpgen.codegen.pyiterate)"""
+    a0_0, a1_0, a2_0, a3_0, a4_0, a5_0, a0_1, a1_1, a2_1, a3_1, a4_1, a5_1, a0_2, a1_2, a2_2, a3_2, a4_2, a5_2, a0_3, a1_3, a2_3, a3_3, a4_3, a5_3, a0_4, a1_4, a2_4, a3_4, a4_4, a5_4, a0_5, a1_5, a2_5, a3_5, a4_5, a5_5, = f
+    z0, z1, z2, z3, z4, z5, = z
+    g0, g1, g2, _, _, _, g6, g7, g8, _, _, _, g12, g13, g14, _, _, _, _, _, _, g21, g22, g23, _, _, _, g27, g28, g29, _, _, _, g33, g34, g35, = g
+    p0, p1, p2, p3, p4, p5, = p
+    h0, = h
+    try:
+        while True:
+            w0 = h0 * z0
+            w1 = 0.9 * z0
+            w2 = h0 * z1
+            w3 = (w2 * w0) * 0.25
+            w4 = h0 * z2
+            w5 = w4 * 0.5
+            w6 = w2 * 0.5
+            w7 = (w4 * w0) * 0.25
+            w8 = 0.2 * z2
+            w9 = (2.0 * (((((1.3 + (0.05 * g8)) + (0.1 * g2)) - g14) + ((-0.1) * g29)) + ((-0.3) * g35))) * h0
+            w10 = 0.05 * w9
+            w11 = (2.0 * (((((0.05 * g7) + (0.1 * g1)) - g13) + ((-0.1) * g28)) + ((-0.3) * g34))) * h0
+            w12 = 0.05 * w11
+            w13 = (2.0 * (((((0.05 * g6) + (0.1 * g0)) - g12) + ((-0.1) * g27)) + ((-0.3) * g33))) * h0
+            w14 = 0.05 * w13
+            w15 = w9 + (0.5 * h0)
+            F0 = (p0 - ((((1.0 + ((w0 * w0) * 0.25)) * w1) + ((w3 - w5) * z1)) + ((w6 + w7) * w8))) - ((((((g14 * w10) + (g7 * w11)) + (g13 * w12)) + (g6 * w13)) + (g12 * w14)) + (g8 * w15))
+            w16 = (w4 * w2) * 0.25
+            w0 = w0 * 0.5
+            w17 = ((-0.05) * h0) - (0.1 * w9)
+            w18 = 0.1 * w11
+            w19 = 0.1 * w13
+            F1 = (p1 - ((((w5 + w3) * w1) + ((1.0 + ((w2 * w2) * 0.25)) * z1)) + ((w16 - w0) * w8))) + ((((((g1 * w11) - (g14 * w17)) + (g13 * w18)) + (g0 * w13)) + (g12 * w19)) + (g2 * w15))
+            F2 = (p2 - ((((w7 - w6) * w1) + ((w0 + w16) * z1)) + ((1.0 + ((w4 * w4) * 0.25)) * w8))) + ((((((g8 * w17) + (g2 * w10)) - (g7 * w18)) + (g1 * w12)) - (g6 * w19)) + (g0 * w14))
+            w0 = h0 * z3
+            w1 = 0.6 * z3
+            w2 = h0 * z4
+            w3 = (w2 * w0) * 0.25
+            w4 = h0 * z5
+            w5 = w4 * 0.5
+            w6 = 0.5 * z4
+            w7 = w2 * 0.5
+            w8 = (w4 * w0) * 0.25
+            w10 = 0.15 * z5
+            w12 = ((-0.03) * h0) - ((-0.1) * w9)
+            w14 = (-0.3) * w11
+            w11 = (-0.1) * w11
+            w15 = (-0.3) * w13
+            w13 = (-0.1) * w13
+            w9 = (0.30000000000000004 * h0) - ((-0.3) * w9)
+            F3 = (p3 - ((((1.0 + ((w0 * w0) * 0.25)) * w1) + ((w3 - w5) * w6)) + ((w7 + w8) * w10))) + ((((((g35 * w12) + (g28 * w14)) - (g34 * w11)) + (g27 * w15)) - (g33 * w13)) - (g29 * w9))
+            w16 = (w4 * w2) * 0.25
+            w0 = w0 * 0.5
+            F4 = (p4 - ((((w5 + w3) * w1) + ((1.0 + ((w2 * w2) * 0.25)) * w6)) + ((w16 - w0) * w10))) + ((g23 * w9) - ((g22 * w14) + (g21 * w15)))
+            F5 = (p5 - ((((w8 - w7) * w1) + ((w0 + w16) * w6)) + ((1.0 + ((w4 * w4) * 0.25)) * w10))) + (((g22 * w11) - (g23 * w12)) + (g21 * w13))
+            b0 = a0_0 * F0 + a0_1 * F1 + a0_2 * F2 + a0_3 * F3 + a0_4 * F4 + a0_5 * F5
+            b1 = a1_0 * F0 + a1_1 * F1 + a1_2 * F2 + a1_3 * F3 + a1_4 * F4 + a1_5 * F5
+            b2 = a2_0 * F0 + a2_1 * F1 + a2_2 * F2 + a2_3 * F3 + a2_4 * F4 + a2_5 * F5
+            b3 = a3_0 * F0 + a3_1 * F1 + a3_2 * F2 + a3_3 * F3 + a3_4 * F4 + a3_5 * F5
+            b4 = a4_0 * F0 + a4_1 * F1 + a4_2 * F2 + a4_3 * F3 + a4_4 * F4 + a4_5 * F5
+            b5 = a5_0 * F0 + a5_1 * F1 + a5_2 * F2 + a5_3 * F3 + a5_4 * F4 + a5_5 * F5
+            z0 = z0 - b0
+            z1 = z1 - b1
+            z2 = z2 - b2
+            z3 = z3 - b3
+            z4 = z4 - b4
+            z5 = z5 - b5
+            s = b0 + b1 + b2 + b3 + b4 + b5
+            t = z0 + z1 + z2 + z3 + z4 + z5
+            if not (s - s == 0.0 and t - t == 0.0):
+                return None
+            dn = 0.0
+            t = b0 if b0 >= 0.0 else -b0
+            if t > dn:
+                dn = t
+            t = b1 if b1 >= 0.0 else -b1
+            if t > dn:
+                dn = t
+            t = b2 if b2 >= 0.0 else -b2
+            if t > dn:
+                dn = t
+            t = b3 if b3 >= 0.0 else -b3
+            if t > dn:
+                dn = t
+            t = b4 if b4 >= 0.0 else -b4
+            if t > dn:
+                dn = t
+            t = b5 if b5 >= 0.0 else -b5
+            if t > dn:
+                dn = t
+            zn = 0.0
+            t = z0 if z0 >= 0.0 else -z0
+            if t > zn:
+                zn = t
+            t = z1 if z1 >= 0.0 else -z1
+            if t > zn:
+                zn = t
+            t = z2 if z2 >= 0.0 else -z2
+            if t > zn:
+                zn = t
+            t = z3 if z3 >= 0.0 else -z3
+            if t > zn:
+                zn = t
+            t = z4 if z4 >= 0.0 else -z4
+            if t > zn:
+                zn = t
+            t = z5 if z5 >= 0.0 else -z5
+            if t > zn:
+                zn = t
+            if it > 1 and dn >= dprev and dn <= 1e-11 * (1.0 + zn):
+                code = 0
+                break
+            th = dn / dprev
+            if dn <= stol * (1.0 + zn) or (it > 1 and th < 1.0 and th / (1.0 - th) * dn <= stol * (1.0 + zn)):
+                code = 0
+                break
+            if it > 1 and dn > 0.05 * dprev:
+                code = -2
+                break
+            if it >= maxit:
+                code = 1
+                break
+            dprev = dn
+            it += 1
+    except (ArithmeticError, ValueError):
+        return None
+    rn = 0.0
+    t = F0 if F0 >= 0.0 else -F0
+    if t > rn:
+        rn = t
+    t = F1 if F1 >= 0.0 else -F1
+    if t > rn:
+        rn = t
+    t = F2 if F2 >= 0.0 else -F2
+    if t > rn:
+        rn = t
+    t = F3 if F3 >= 0.0 else -F3
+    if t > rn:
+        rn = t
+    t = F4 if F4 >= 0.0 else -F4
+    if t > rn:
+        rn = t
+    t = F5 if F5 >= 0.0 else -F5
+    if t > rn:
+        rn = t
+    return code, [z0, z1, z2, z3, z4, z5], it, dn, rn
+
+
+ITERATE = _newton_iterate
+
+
+def _newton_full(z, g, p, h, it, maxit, dprev, tol):
+    """full-Newton iterates from z (hpgen.codegen.pyiterate)"""
+    z0, z1, z2, z3, z4, z5, = z
+    g0, g1, g2, _, _, _, g6, g7, g8, _, _, _, g12, g13, g14, _, _, _, _, _, _, g21, g22, g23, _, _, _, g27, g28, g29, _, _, _, g33, g34, g35, = g
+    p0, p1, p2, p3, p4, p5, = p
+    h0, = h
+    try:
+        while True:
+            w0 = h0 * z0
+            w1 = 1.0 + ((w0 * w0) * 0.25)
+            w2 = 0.9 * z0
+            w3 = h0 * z1
+            w4 = (w3 * w0) * 0.25
+            w5 = h0 * z2
+            w6 = w5 * 0.5
+            w7 = w4 - w6
+            w8 = w3 * 0.5
+            w9 = (w5 * w0) * 0.25
+            w10 = w8 + w9
+            w11 = 0.2 * z2
+            w12 = (2.0 * (((((1.3 + (0.05 * g8)) + (0.1 * g2)) - g14) + ((-0.1) * g29)) + ((-0.3) * g35))) * h0
+            w13 = 0.05 * w12
+            w14 = (2.0 * (((((0.05 * g7) + (0.1 * g1)) - g13) + ((-0.1) * g28)) + ((-0.3) * g34))) * h0
+            w15 = 0.05 * w14
+            w16 = (2.0 * (((((0.05 * g6) + (0.1 * g0)) - g12) + ((-0.1) * g27)) + ((-0.3) * g33))) * h0
+            w17 = 0.05 * w16
+            w18 = 0.5 * h0
+            w19 = w12 + w18
+            F0 = (p0 - (((w1 * w2) + (w7 * z1)) + (w10 * w11))) - ((((((g14 * w13) + (g7 * w14)) + (g13 * w15)) + (g6 * w16)) + (g12 * w17)) + (g8 * w19))
+            w4 = w6 + w4
+            w6 = 1.0 + ((w3 * w3) * 0.25)
+            w20 = (w5 * w3) * 0.25
+            w21 = w0 * 0.5
+            w22 = w20 - w21
+            w23 = ((-0.05) * h0) - (0.1 * w12)
+            w24 = 0.1 * w14
+            w25 = 0.1 * w16
+            F1 = (p1 - (((w4 * w2) + (w6 * z1)) + (w22 * w11))) + ((((((g1 * w14) - (g14 * w23)) + (g13 * w24)) + (g0 * w16)) + (g12 * w25)) + (g2 * w19))
+            w8 = w9 - w8
+            w9 = w21 + w20
+            w19 = 1.0 + ((w5 * w5) * 0.25)
+            F2 = (p2 - (((w8 * w2) + (w9 * z1)) + (w19 * w11))) + ((((((g8 * w23) + (g2 * w13)) - (g7 * w24)) + (g1 * w15)) - (g6 * w25)) + (g0 * w17))
+            w13 = h0 * z3
+            w15 = 1.0 + ((w13 * w13) * 0.25)
+            w17 = 0.6 * z3
+            w20 = h0 * z4
+            w21 = (w20 * w13) * 0.25
+            w23 = h0 * z5
+            w24 = w23 * 0.5
+            w25 = w21 - w24
+            w26 = 0.5 * z4
+            w27 = w20 * 0.5
+            w28 = (w23 * w13) * 0.25
+            w29 = w27 + w28
+            w30 = 0.15 * z5
+            w31 = ((-0.03) * h0) - ((-0.1) * w12)
+            w32 = (-0.3) * w14
+            w14 = (-0.1) * w14
+            w33 = (-0.3) * w16
+            w16 = (-0.1) * w16
+            w12 = (0.30000000000000004 * h0) - ((-0.3) * w12)
+            F3 = (p3 - (((w15 * w17) + (w25 * w26)) + (w29 * w30))) + ((((((g35 * w31) + (g28 * w32)) - (g34 * w14)) + (g27 * w33)) - (g33 * w16)) - (g29 * w12))
+            w21 = w24 + w21
+            w24 = 1.0 + ((w20 * w20) * 0.25)
+            w34 = (w23 * w20) * 0.25
+            w35 = w13 * 0.5
+            w36 = w34 - w35
+            F4 = (p4 - (((w21 * w17) + (w24 * w26)) + (w36 * w30))) + ((g23 * w12) - ((g22 * w32) + (g21 * w33)))
+            w12 = w28 - w27
+            w27 = w35 + w34
+            w28 = 1.0 + ((w23 * w23) * 0.25)
+            F5 = (p5 - (((w12 * w17) + (w27 * w26)) + (w28 * w30))) + (((g22 * w14) - (g23 * w31)) + (g21 * w16))
+            w14 = 0.25 * (w3 * h0)
+            w16 = z1 * w14
+            w31 = 0.25 * (w5 * h0)
+            w32 = w11 * w31
+            J0 = -((((w2 * (0.25 * ((2.0 * w0) * h0))) + (0.9 * w1)) + w16) + w32)
+            w1 = w11 * w18
+            J1 = -(((w2 * w14) + (0.9 * w4)) - w1)
+            w4 = z1 * w18
+            J2 = -(((w2 * w31) + (0.9 * w8)) + w4)
+            J3 = 0.0
+            J4 = 0.0
+            J5 = 0.0
+            w0 = 0.25 * (w0 * h0)
+            J6 = -(((z1 * w0) + w7) + w1)
+            w1 = w2 * w0
+            J7 = -((w1 + ((z1 * (0.25 * ((2.0 * w3) * h0))) + w6)) + w32)
+            w2 = w2 * w18
+            J8 = -(((z1 * w31) + w9) - w2)
+            J9 = 0.0
+            J10 = 0.0
+            J11 = 0.0
+            J12 = -(((w11 * w0) + (0.2 * w10)) - w4)
+            J13 = -(w2 + ((w11 * w14) + (0.2 * w22)))
+            J14 = -((w1 + w16) + ((w11 * (0.25 * ((2.0 * w5) * h0))) + (0.2 * w19)))
+            J15 = 0.0
+            J16 = 0.0
+            J17 = 0.0
+            J18 = 0.0
+            J19 = 0.0
+            J20 = 0.0
+            w0 = 0.25 * (w20 * h0)
+            w1 = w26 * w0
+            w2 = 0.25 * (w23 * h0)
+            w3 = w30 * w2
+            J21 = -((((w17 * (0.25 * ((2.0 * w13) * h0))) + (0.6 * w15)) + w1) + w3)
+            w4 = w30 * w18
+            J22 = -(((w17 * w0) + (0.6 * w21)) - w4)
+            w5 = w26 * w18
+            J23 = -(((w17 * w2) + (0.6 * w12)) + w5)
+            J24 = 0.0
+            J25 = 0.0
+            J26 = 0.0
+            w6 = 0.25 * (w13 * h0)
+            J27 = -(((w26 * w6) + (0.5 * w25)) + w4)
+            w4 = w17 * w6
+            J28 = -((w4 + ((w26 * (0.25 * ((2.0 * w20) * h0))) + (0.5 * w24))) + w3)
+            w3 = w17 * w18
+            J29 = -(((w26 * w2) + (0.5 * w27)) - w3)
+            J30 = 0.0
+            J31 = 0.0
+            J32 = 0.0
+            J33 = -(((w30 * w6) + (0.15 * w29)) - w5)
+            J34 = -(w3 + ((w30 * w0) + (0.15 * w36)))
+            J35 = -((w4 + w1) + ((w30 * (0.25 * ((2.0 * w23) * h0))) + (0.15 * w28)))
+            s = F0 + F1 + F2 + F3 + F4 + F5
+            if not s - s == 0.0:
+                return None
+            res = _lin_factor_solve([J0, J1, J2, J3, J4, J5, J6, J7, J8, J9, J10, J11, J12, J13, J14, J15, J16, J17, J18, J19, J20, J21, J22, J23, J24, J25, J26, J27, J28, J29, J30, J31, J32, J33, J34, J35], [F0, F1, F2, F3, F4, F5], False)
+            if res is None:
+                return None
+            b0, b1, b2, b3, b4, b5, = res[0]
+            z0 = z0 - b0
+            z1 = z1 - b1
+            z2 = z2 - b2
+            z3 = z3 - b3
+            z4 = z4 - b4
+            z5 = z5 - b5
+            s = b0 + b1 + b2 + b3 + b4 + b5
+            t = z0 + z1 + z2 + z3 + z4 + z5
+            if not (s - s == 0.0 and t - t == 0.0):
+                return None
+            dn = 0.0
+            t = b0 if b0 >= 0.0 else -b0
+            if t > dn:
+                dn = t
+            t = b1 if b1 >= 0.0 else -b1
+            if t > dn:
+                dn = t
+            t = b2 if b2 >= 0.0 else -b2
+            if t > dn:
+                dn = t
+            t = b3 if b3 >= 0.0 else -b3
+            if t > dn:
+                dn = t
+            t = b4 if b4 >= 0.0 else -b4
+            if t > dn:
+                dn = t
+            t = b5 if b5 >= 0.0 else -b5
+            if t > dn:
+                dn = t
+            zn = 0.0
+            t = z0 if z0 >= 0.0 else -z0
+            if t > zn:
+                zn = t
+            t = z1 if z1 >= 0.0 else -z1
+            if t > zn:
+                zn = t
+            t = z2 if z2 >= 0.0 else -z2
+            if t > zn:
+                zn = t
+            t = z3 if z3 >= 0.0 else -z3
+            if t > zn:
+                zn = t
+            t = z4 if z4 >= 0.0 else -z4
+            if t > zn:
+                zn = t
+            t = z5 if z5 >= 0.0 else -z5
+            if t > zn:
+                zn = t
+            if it > 1 and dn >= dprev and dn <= 1e-11 * (1.0 + zn):
+                code = 0
+                break
+            if dn <= tol * (1.0 + zn):
+                code = 0
+                break
+            if it >= maxit:
+                code = 1
+                break
+            dprev = dn
+            it += 1
+    except (ArithmeticError, ValueError):
+        return None
+    rn = 0.0
+    t = F0 if F0 >= 0.0 else -F0
+    if t > rn:
+        rn = t
+    t = F1 if F1 >= 0.0 else -F1
+    if t > rn:
+        rn = t
+    t = F2 if F2 >= 0.0 else -F2
+    if t > rn:
+        rn = t
+    t = F3 if F3 >= 0.0 else -F3
+    if t > rn:
+        rn = t
+    t = F4 if F4 >= 0.0 else -F4
+    if t > rn:
+        rn = t
+    t = F5 if F5 >= 0.0 else -F5
+    if t > rn:
+        rn = t
+    return code, [z0, z1, z2, z3, z4, z5], it, dn, rn
+
+
+ITERATE_FULL = _newton_full

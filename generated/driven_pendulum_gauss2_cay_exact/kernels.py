@@ -2464,3 +2464,249 @@ def _lin_finish(dz, z):
     return [z0, z1, z2], dn, zn
 
 LINEAR = (_lin_factor_solve, _lin_apply, _lin_update, _lin_finish)
+
+
+# ---- Newton's iterates with the kernels and the linear algebra fused: simplified with a kept
+# J^{-1} (ITERATE) and full Newton (ITERATE_FULL); the operations of hpgen.runtime.newton.solve
+# (hpgen.codegen.pyiterate) ----
+
+
+def _newton_iterate(f, z, g, p, h, it, maxit, dprev, stol):
+    """simplified-Newton iterates from z with J^{-1} = f (hpgen.codegen.pyiterate)"""
+    a0_0, a1_0, a2_0, a0_1, a1_1, a2_1, a0_2, a1_2, a2_2, = f
+    z0, z1, z2, = z
+    g0, _, g2, _, = g
+    p0, = p
+    h0, h1, h2, = h
+    try:
+        while True:
+            w0 = h0 * z0
+            w1 = (w0 * w0) * 0.25
+            w2 = 1.0 + w1
+            w3 = (3.0000000000000004 * z0) + (0.4641016151377544 * z1)
+            w4 = w3 / w2
+            w5 = 0.25 * h0
+            w6 = 0.5 * (h0 * z2)
+            w7 = 0.5 * h0
+            w8 = ((((2.0 * w4) * w5) - (w2 * w6)) / w7) / w2
+            w9 = ((-6.464101615137755) * z0) + (3.0000000000000004 * z1)
+            w10 = h0 * z1
+            w11 = (w10 * w10) * 0.25
+            w12 = 1.0 + w11
+            w13 = w9 / w12
+            w5 = ((((2.0 * w13) * w5) - (w12 * w6)) / w7) / w12
+            w14 = (1.5000000000000002 * w8) + ((-3.2320508075688776) * w5)
+            w5 = (0.2320508075688772 * w8) + (1.5000000000000002 * w5)
+            w8 = h0 * w5
+            w15 = h0 * w14
+            w14 = w2 * (w14 - ((2.0 * w0) * (0.25 * (w4 * ((w6 + (0.5386751345948129 * w8)) + (0.25 * w15))))))
+            F0 = ((w14 + ((((-0.5) * w4) + (h2 * (_f_cos((0.6666666666666666 * (h1 + (0.21132486540518713 * h0))))))) * w7)) + (((g2 * ((1.0 - w1) / w2)) - (g0 * (w0 / w2))) * w7)) / h0
+            w0 = w12 * (w5 - ((2.0 * w10) * (0.25 * (w13 * ((w6 + (0.25 * w8)) + ((-0.03867513459481288) * w15))))))
+            F1 = ((((((-0.5) * w13) + (h2 * (_f_cos((0.6666666666666666 * (h1 + (0.7886751345948129 * h0))))))) * w7) + (((g2 * ((1.0 - w11) / w12)) - (g0 * (w10 / w12))) * w7)) + w0) / h0
+            w1 = h0 * ((0.5 * w3) + (0.5 * w9))
+            F2 = p0 - ((((1.0 + ((w1 * w1) * 0.25)) * z2) + w0) + w14)
+            b0 = a0_0 * F0 + a0_1 * F1 + a0_2 * F2
+            b1 = a1_0 * F0 + a1_1 * F1 + a1_2 * F2
+            b2 = a2_0 * F0 + a2_1 * F1 + a2_2 * F2
+            z0 = z0 - b0
+            z1 = z1 - b1
+            z2 = z2 - b2
+            s = b0 + b1 + b2
+            t = z0 + z1 + z2
+            if not (s - s == 0.0 and t - t == 0.0):
+                return None
+            dn = 0.0
+            t = b0 if b0 >= 0.0 else -b0
+            if t > dn:
+                dn = t
+            t = b1 if b1 >= 0.0 else -b1
+            if t > dn:
+                dn = t
+            t = b2 if b2 >= 0.0 else -b2
+            if t > dn:
+                dn = t
+            zn = 0.0
+            t = z0 if z0 >= 0.0 else -z0
+            if t > zn:
+                zn = t
+            t = z1 if z1 >= 0.0 else -z1
+            if t > zn:
+                zn = t
+            t = z2 if z2 >= 0.0 else -z2
+            if t > zn:
+                zn = t
+            if it > 1 and dn >= dprev and dn <= 1e-11 * (1.0 + zn):
+                code = 0
+                break
+            th = dn / dprev
+            if dn <= stol * (1.0 + zn) or (it > 1 and th < 1.0 and th / (1.0 - th) * dn <= stol * (1.0 + zn)):
+                code = 0
+                break
+            if it > 1 and dn > 0.05 * dprev:
+                code = -2
+                break
+            if it >= maxit:
+                code = 1
+                break
+            dprev = dn
+            it += 1
+    except (ArithmeticError, ValueError):
+        return None
+    rn = 0.0
+    t = F0 if F0 >= 0.0 else -F0
+    if t > rn:
+        rn = t
+    t = F1 if F1 >= 0.0 else -F1
+    if t > rn:
+        rn = t
+    t = F2 if F2 >= 0.0 else -F2
+    if t > rn:
+        rn = t
+    return code, [z0, z1, z2], it, dn, rn
+
+
+ITERATE = _newton_iterate
+
+
+def _newton_full(z, g, p, h, it, maxit, dprev, tol):
+    """full-Newton iterates from z (hpgen.codegen.pyiterate)"""
+    z0, z1, z2, = z
+    g0, _, g2, _, = g
+    p0, = p
+    h0, h1, h2, = h
+    try:
+        while True:
+            w0 = h0 * z0
+            w1 = (w0 * w0) * 0.25
+            w2 = 1.0 + w1
+            w3 = (3.0000000000000004 * z0) + (0.4641016151377544 * z1)
+            w4 = w3 / w2
+            w5 = 0.25 * h0
+            w6 = 0.5 * (h0 * z2)
+            w7 = 0.5 * h0
+            w8 = ((((2.0 * w4) * w5) - (w2 * w6)) / w7) / w2
+            w9 = ((-6.464101615137755) * z0) + (3.0000000000000004 * z1)
+            w10 = h0 * z1
+            w11 = (w10 * w10) * 0.25
+            w12 = 1.0 + w11
+            w13 = w9 / w12
+            w14 = ((((2.0 * w13) * w5) - (w12 * w6)) / w7) / w12
+            w15 = (1.5000000000000002 * w8) + ((-3.2320508075688776) * w14)
+            w16 = 2.0 * w0
+            w17 = (0.2320508075688772 * w8) + (1.5000000000000002 * w14)
+            w18 = h0 * w17
+            w19 = h0 * w15
+            w20 = (w6 + (0.5386751345948129 * w18)) + (0.25 * w19)
+            w21 = 0.25 * (w4 * w20)
+            w15 = w15 - (w16 * w21)
+            w22 = w2 * w15
+            w1 = (1.0 - w1) / w2
+            w0 = w0 / w2
+            F0 = ((w22 + ((((-0.5) * w4) + (h2 * (_f_cos((0.6666666666666666 * (h1 + (0.21132486540518713 * h0))))))) * w7)) + (((g2 * w1) - (g0 * w0)) * w7)) / h0
+            w11 = (1.0 - w11) / w12
+            w23 = w10 / w12
+            w10 = 2.0 * w10
+            w18 = (w6 + (0.25 * w18)) + ((-0.03867513459481288) * w19)
+            w19 = 0.25 * (w13 * w18)
+            w17 = w17 - (w10 * w19)
+            w24 = w12 * w17
+            F1 = ((((((-0.5) * w13) + (h2 * (_f_cos((0.6666666666666666 * (h1 + (0.7886751345948129 * h0))))))) * w7) + (((g2 * w11) - (g0 * w23)) * w7)) + w24) / h0
+            w3 = h0 * ((0.5 * w3) + (0.5 * w9))
+            w9 = 1.0 + ((w3 * w3) * 0.25)
+            F2 = p0 - (((w9 * z2) + w24) + w22)
+            w22 = 0.25 * (w16 * h0)
+            w24 = (3.0000000000000004 / w2) - ((w4 / w2) * w22)
+            w8 = ((((w5 * (2.0 * w24)) - (w6 * w22)) / w7) / w2) - ((w8 / w2) * w22)
+            w25 = (-6.464101615137755) / w12
+            w26 = ((w5 * (2.0 * w25)) / w7) / w12
+            w27 = (1.5000000000000002 * w8) + ((-3.2320508075688776) * w26)
+            w28 = 2.0 * h0
+            w8 = (0.2320508075688772 * w8) + (1.5000000000000002 * w26)
+            w26 = h0 * w8
+            w29 = h0 * w27
+            w15 = (w15 * w22) + (w2 * (w27 - ((w21 * w28) + (w16 * (0.25 * ((w20 * w24) + (w4 * ((0.5386751345948129 * w26) + (0.25 * w29)))))))))
+            J0 = ((w15 + (w7 * ((-0.5) * w24))) - (w7 * ((g2 * ((w22 / w2) + ((w1 / w2) * w22))) + (g0 * ((h0 / w2) - ((w0 / w2) * w22)))))) / h0
+            w0 = w12 * (w8 - (w10 * (0.25 * ((w18 * w25) + (w13 * ((0.25 * w26) + ((-0.03867513459481288) * w29)))))))
+            J1 = ((w7 * ((-0.5) * w25)) + w0) / h0
+            w1 = 2.0 * w3
+            J2 = -(((z2 * (0.25 * (w1 * ((-1.7320508075688774) * h0)))) + w0) + w15)
+            w0 = 0.4641016151377544 / w2
+            w3 = ((w5 * (2.0 * w0)) / w7) / w2
+            w8 = 0.25 * (w10 * h0)
+            w15 = (3.0000000000000004 / w12) - ((w13 / w12) * w8)
+            w5 = ((((w5 * (2.0 * w15)) - (w6 * w8)) / w7) / w12) - ((w14 / w12) * w8)
+            w6 = (1.5000000000000002 * w3) + ((-3.2320508075688776) * w5)
+            w3 = (0.2320508075688772 * w3) + (1.5000000000000002 * w5)
+            w5 = h0 * w3
+            w14 = h0 * w6
+            w6 = w2 * (w6 - (w16 * (0.25 * ((w20 * w0) + (w4 * ((0.5386751345948129 * w5) + (0.25 * w14)))))))
+            J3 = (w6 + (w7 * ((-0.5) * w0))) / h0
+            w0 = (w17 * w8) + (w12 * (w3 - ((w19 * w28) + (w10 * (0.25 * ((w18 * w15) + (w13 * ((0.25 * w5) + ((-0.03867513459481288) * w14)))))))))
+            J4 = (((w7 * ((-0.5) * w15)) - (w7 * ((g2 * ((w8 / w12) + ((w11 / w12) * w8))) + (g0 * ((h0 / w12) - ((w23 / w12) * w8)))))) + w0) / h0
+            J5 = -(((z2 * (0.25 * (w1 * (1.7320508075688774 * h0)))) + w0) + w6)
+            w0 = w2 * ((-1.7320508075688774) + (w16 * (0.25 * (w4 * ((w7 - (0.9330127018922194 * h0)) - ((-0.43301270189221935) * h0))))))
+            J6 = -(w0 / h0)
+            w1 = w12 * (1.7320508075688774 + (w10 * (0.25 * (w13 * ((w7 - (0.43301270189221935 * h0)) - (0.06698729810778067 * h0))))))
+            J7 = -(w1 / h0)
+            J8 = -((w9 - w1) - w0)
+            s = F0 + F1 + F2
+            if not s - s == 0.0:
+                return None
+            res = _lin_factor_solve([J0, J1, J2, J3, J4, J5, J6, J7, J8], [F0, F1, F2], False)
+            if res is None:
+                return None
+            b0, b1, b2, = res[0]
+            z0 = z0 - b0
+            z1 = z1 - b1
+            z2 = z2 - b2
+            s = b0 + b1 + b2
+            t = z0 + z1 + z2
+            if not (s - s == 0.0 and t - t == 0.0):
+                return None
+            dn = 0.0
+            t = b0 if b0 >= 0.0 else -b0
+            if t > dn:
+                dn = t
+            t = b1 if b1 >= 0.0 else -b1
+            if t > dn:
+                dn = t
+            t = b2 if b2 >= 0.0 else -b2
+            if t > dn:
+                dn = t
+            zn = 0.0
+            t = z0 if z0 >= 0.0 else -z0
+            if t > zn:
+                zn = t
+            t = z1 if z1 >= 0.0 else -z1
+            if t > zn:
+                zn = t
+            t = z2 if z2 >= 0.0 else -z2
+            if t > zn:
+                zn = t
+            if it > 1 and dn >= dprev and dn <= 1e-11 * (1.0 + zn):
+                code = 0
+                break
+            if dn <= tol * (1.0 + zn):
+                code = 0
+                break
+            if it >= maxit:
+                code = 1
+                break
+            dprev = dn
+            it += 1
+    except (ArithmeticError, ValueError):
+        return None
+    rn = 0.0
+    t = F0 if F0 >= 0.0 else -F0
+    if t > rn:
+        rn = t
+    t = F1 if F1 >= 0.0 else -F1
+    if t > rn:
+        rn = t
+    t = F2 if F2 >= 0.0 else -F2
+    if t > rn:
+        rn = t
+    return code, [z0, z1, z2], it, dn, rn
+
+
+ITERATE_FULL = _newton_full

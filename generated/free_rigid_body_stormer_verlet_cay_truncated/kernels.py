@@ -2316,3 +2316,205 @@ def _lin_finish(dz, z):
     return [z0, z1, z2], dn, zn
 
 LINEAR = (_lin_factor_solve, _lin_apply, _lin_update, _lin_finish)
+
+
+# ---- Newton's iterates with the kernels and the linear algebra fused: simplified with a kept
+# J^{-1} (ITERATE) and full Newton (ITERATE_FULL); the operations of hpgen.runtime.newton.solve
+# (hpgen.codegen.pyiterate) ----
+
+
+def _newton_iterate(f, z, g, p, h, it, maxit, dprev, stol):
+    """simplified-Newton iterates from z with J^{-1} = f (hpgen.codegen.pyiterate)"""
+    a0_0, a1_0, a2_0, a0_1, a1_1, a2_1, a0_2, a1_2, a2_2, = f
+    z0, z1, z2, = z
+    p0, p1, p2, = p
+    h0, = h
+    try:
+        while True:
+            w0 = h0 * z1
+            w1 = w0 * 0.5
+            w2 = h0 * z2
+            w3 = h0 * z0
+            w4 = (w2 * w3) * 0.25
+            w5 = 0.6666666666666666 * z2
+            w6 = (w0 * w3) * 0.25
+            w7 = w2 * 0.5
+            w8 = 2.0 * z0
+            F0 = p0 - ((((w1 + w4) * w5) + ((w6 - w7) * z1)) + ((1.0 + ((w3 * w3) * 0.25)) * w8))
+            w9 = (w2 * w0) * 0.25
+            w3 = w3 * 0.5
+            F1 = p1 - ((((w9 - w3) * w5) + ((1.0 + ((w0 * w0) * 0.25)) * z1)) + ((w7 + w6) * w8))
+            F2 = p2 - ((((1.0 + ((w2 * w2) * 0.25)) * w5) + ((w3 + w9) * z1)) + ((w4 - w1) * w8))
+            b0 = a0_0 * F0 + a0_1 * F1 + a0_2 * F2
+            b1 = a1_0 * F0 + a1_1 * F1 + a1_2 * F2
+            b2 = a2_0 * F0 + a2_1 * F1 + a2_2 * F2
+            z0 = z0 - b0
+            z1 = z1 - b1
+            z2 = z2 - b2
+            s = b0 + b1 + b2
+            t = z0 + z1 + z2
+            if not (s - s == 0.0 and t - t == 0.0):
+                return None
+            dn = 0.0
+            t = b0 if b0 >= 0.0 else -b0
+            if t > dn:
+                dn = t
+            t = b1 if b1 >= 0.0 else -b1
+            if t > dn:
+                dn = t
+            t = b2 if b2 >= 0.0 else -b2
+            if t > dn:
+                dn = t
+            zn = 0.0
+            t = z0 if z0 >= 0.0 else -z0
+            if t > zn:
+                zn = t
+            t = z1 if z1 >= 0.0 else -z1
+            if t > zn:
+                zn = t
+            t = z2 if z2 >= 0.0 else -z2
+            if t > zn:
+                zn = t
+            if it > 1 and dn >= dprev and dn <= 1e-11 * (1.0 + zn):
+                code = 0
+                break
+            th = dn / dprev
+            if dn <= stol * (1.0 + zn) or (it > 1 and th < 1.0 and th / (1.0 - th) * dn <= stol * (1.0 + zn)):
+                code = 0
+                break
+            if it > 1 and dn > 0.05 * dprev:
+                code = -2
+                break
+            if it >= maxit:
+                code = 1
+                break
+            dprev = dn
+            it += 1
+    except (ArithmeticError, ValueError):
+        return None
+    rn = 0.0
+    t = F0 if F0 >= 0.0 else -F0
+    if t > rn:
+        rn = t
+    t = F1 if F1 >= 0.0 else -F1
+    if t > rn:
+        rn = t
+    t = F2 if F2 >= 0.0 else -F2
+    if t > rn:
+        rn = t
+    return code, [z0, z1, z2], it, dn, rn
+
+
+ITERATE = _newton_iterate
+
+
+def _newton_full(z, g, p, h, it, maxit, dprev, tol):
+    """full-Newton iterates from z (hpgen.codegen.pyiterate)"""
+    z0, z1, z2, = z
+    p0, p1, p2, = p
+    h0, = h
+    try:
+        while True:
+            w0 = h0 * z1
+            w1 = w0 * 0.5
+            w2 = h0 * z2
+            w3 = h0 * z0
+            w4 = (w2 * w3) * 0.25
+            w5 = w1 + w4
+            w6 = 0.6666666666666666 * z2
+            w7 = (w0 * w3) * 0.25
+            w8 = w2 * 0.5
+            w9 = w7 - w8
+            w10 = 1.0 + ((w3 * w3) * 0.25)
+            w11 = 2.0 * z0
+            F0 = p0 - (((w5 * w6) + (w9 * z1)) + (w10 * w11))
+            w12 = (w2 * w0) * 0.25
+            w13 = w3 * 0.5
+            w14 = w12 - w13
+            w15 = 1.0 + ((w0 * w0) * 0.25)
+            w7 = w8 + w7
+            F1 = p1 - (((w14 * w6) + (w15 * z1)) + (w7 * w11))
+            w8 = 1.0 + ((w2 * w2) * 0.25)
+            w12 = w13 + w12
+            w1 = w4 - w1
+            F2 = p2 - (((w8 * w6) + (w12 * z1)) + (w1 * w11))
+            w4 = 0.25 * (w2 * h0)
+            w13 = w6 * w4
+            w16 = 0.25 * (w0 * h0)
+            w17 = z1 * w16
+            J0 = -((w13 + w17) + ((w11 * (0.25 * ((2.0 * w3) * h0))) + (2.0 * w10)))
+            w10 = 0.5 * h0
+            w18 = w6 * w10
+            J1 = -(((w11 * w16) + (2.0 * w7)) - w18)
+            w7 = z1 * w10
+            J2 = -(w7 + ((w11 * w4) + (2.0 * w1)))
+            w1 = 0.25 * (w3 * h0)
+            J3 = -(w18 + ((z1 * w1) + w9))
+            w3 = w11 * w1
+            J4 = -((w13 + ((z1 * (0.25 * ((2.0 * w0) * h0))) + w15)) + w3)
+            w0 = w11 * w10
+            J5 = -(((z1 * w4) + w12) - w0)
+            J6 = -(((w6 * w1) + (0.6666666666666666 * w5)) - w7)
+            J7 = -(((w6 * w16) + (0.6666666666666666 * w14)) + w0)
+            J8 = -((((w6 * (0.25 * ((2.0 * w2) * h0))) + (0.6666666666666666 * w8)) + w17) + w3)
+            s = F0 + F1 + F2
+            if not s - s == 0.0:
+                return None
+            res = _lin_factor_solve([J0, J1, J2, J3, J4, J5, J6, J7, J8], [F0, F1, F2], False)
+            if res is None:
+                return None
+            b0, b1, b2, = res[0]
+            z0 = z0 - b0
+            z1 = z1 - b1
+            z2 = z2 - b2
+            s = b0 + b1 + b2
+            t = z0 + z1 + z2
+            if not (s - s == 0.0 and t - t == 0.0):
+                return None
+            dn = 0.0
+            t = b0 if b0 >= 0.0 else -b0
+            if t > dn:
+                dn = t
+            t = b1 if b1 >= 0.0 else -b1
+            if t > dn:
+                dn = t
+            t = b2 if b2 >= 0.0 else -b2
+            if t > dn:
+                dn = t
+            zn = 0.0
+            t = z0 if z0 >= 0.0 else -z0
+            if t > zn:
+                zn = t
+            t = z1 if z1 >= 0.0 else -z1
+            if t > zn:
+                zn = t
+            t = z2 if z2 >= 0.0 else -z2
+            if t > zn:
+                zn = t
+            if it > 1 and dn >= dprev and dn <= 1e-11 * (1.0 + zn):
+                code = 0
+                break
+            if dn <= tol * (1.0 + zn):
+                code = 0
+                break
+            if it >= maxit:
+                code = 1
+                break
+            dprev = dn
+            it += 1
+    except (ArithmeticError, ValueError):
+        return None
+    rn = 0.0
+    t = F0 if F0 >= 0.0 else -F0
+    if t > rn:
+        rn = t
+    t = F1 if F1 >= 0.0 else -F1
+    if t > rn:
+        rn = t
+    t = F2 if F2 >= 0.0 else -F2
+    if t > rn:
+        rn = t
+    return code, [z0, z1, z2], it, dn, rn
+
+
+ITERATE_FULL = _newton_full

@@ -44737,3 +44737,10 @@ RAW = {
 # ---- Newton's linear algebra for NZ (hpgen.codegen.pylinear: straight-line Python, the C
 # template's operations in the same order), used by hpgen.runtime.newton ----
 LINEAR = None   # NZ > 12: the runtime does this linear algebra with numpy/LAPACK
+
+
+# ---- Newton's iterates with the kernels and the linear algebra fused: simplified with a kept
+# J^{-1} (ITERATE) and full Newton (ITERATE_FULL); the operations of hpgen.runtime.newton.solve
+# (hpgen.codegen.pyiterate) ----
+ITERATE = None
+ITERATE_FULL = None
