@@ -1,0 +1,125 @@
+"""Lane-wise ensemble kernels (hpgen.codegen.lanes, templates/lanes.c.j2): simulate_batch
+with lanes is bitwise simulate_batch without them (states, statuses, counters), on 1 and 2
+threads, with a body count that is not a multiple of the lane count (the remainder runs the
+scalar code); a body that fails mid-run stops with the error of a scalar run while the other
+lanes of its group continue; the emitted lane code compiles without warnings; modules where
+lanes do not pay get none."""
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from hpgen.codegen import lanes
+from hpgen.runtime import NewtonOptions
+
+ROOT = Path(__file__).resolve().parents[2]
+FREE_BODY = ROOT / "examples" / "free_rigid_body.yaml"
+
+
+@pytest.fixture(scope="module")
+def body(compile_model):
+    return compile_model(FREE_BODY)
+
+
+def _momenta(B, seed=0):
+    mus = np.random.default_rng(seed).normal(size=(B, 3))
+    return mus / np.linalg.norm(mus, axis=1)[:, None]
+
+
+def _assert_same(a, b):
+    assert len(a) == len(b)
+    for x, y in zip(a, b):
+        assert np.array_equal(x.g, y.g) and np.array_equal(x.mu, y.mu)
+        assert np.array_equal(x.t, y.t)
+        assert str(x.error) == str(y.error)
+        assert (x.newton_iterations, x.jacobians) == (y.newton_iterations, y.jacobians)
+
+
+def test_free_body_has_lanes(body):
+    assert body._b.lanes == lanes.LANES
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+@pytest.mark.parametrize("every", [1, 7])
+def test_lanes_bitwise_equal_scalar(body, threads, every):
+    B = 3 * lanes.LANES + 5                      # not a multiple of L: 5 bodies run scalar
+    mus = _momenta(B) * np.linspace(0.5, 3.0, B)[:, None]
+    on = body.simulate_batch(np.eye(3), 0.1, 120, mu0=mus, every=every, threads=threads)
+    off = body.simulate_batch(np.eye(3), 0.1, 120, mu0=mus, every=every, threads=threads,
+                              lanes=False)
+    _assert_same(on, off)
+    assert all(t.error is None for t in on)
+    # and each body as simulate runs it on its own
+    for b in (0, lanes.LANES + 1, B - 1):
+        one = body.simulate(np.eye(3), 0.1, 120, mu0=mus[b], every=every)
+        assert np.array_equal(one.g, on[b].g) and np.array_equal(one.mu, on[b].mu)
+
+
+def test_one_lane_fails_the_others_continue(body):
+    """Body 2 (a fast spin) needs more than maxit = 5 Newton iterations at step 2: its lane
+    redoes the step in scalar code, which reports NO_CONVERGENCE; the other lanes of its
+    group run to the end, and everything equals the scalar ensemble."""
+    B = lanes.LANES + 3
+    mus = _momenta(B, seed=1)
+    mus[2] *= 30.0
+    opts = NewtonOptions(maxit=5)
+    for threads in (1, 2):
+        on = body.simulate_batch(np.eye(3), 0.1, 200, mu0=mus, newton=opts, threads=threads)
+        off = body.simulate_batch(np.eye(3), 0.1, 200, mu0=mus, newton=opts,
+                                  threads=threads, lanes=False)
+        _assert_same(on, off)
+        assert on[2].error is not None and "did not converge" in str(on[2].error)
+        assert len(on[2].mu) == 3                  # steps 0 and 1 done, step 2 failed
+        assert all(t.error is None and len(t.mu) == 201 for i, t in enumerate(on) if i != 2)
+
+
+def test_simplified_newton_runs_scalar(body):
+    """The lane Newton is full Newton: with simplified Newton the batch runs scalar code,
+    with the same results."""
+    mus = _momenta(lanes.LANES)
+    opts = NewtonOptions(simplified=True)
+    _assert_same(body.simulate_batch(np.eye(3), 0.1, 50, mu0=mus, newton=opts),
+                 body.simulate_batch(np.eye(3), 0.1, 50, mu0=mus, newton=opts, lanes=False))
+
+
+def _lane_region(source: str) -> tuple[int, int]:
+    lines = source.splitlines()
+    start = next(i for i, s in enumerate(lines) if "lane-wise ensembles" in s) + 1
+    end = next(i for i, s in enumerate(lines) if "hpgen_lanes(void)" in s) + 1
+    return start, end
+
+
+@pytest.mark.skipif(shutil.which("cc") is None, reason="no C compiler")
+def test_lane_code_compiles_without_warnings(body, tmp_path):
+    """-Wall -Wextra -Werror on the lane section: no diagnostic points into it (the rest of
+    kernels.c is checked by its own tests)."""
+    source = (Path(body._b.library).parent / "kernels.c").read_text()
+    start, end = _lane_region(source)
+    src = tmp_path / "kernels.c"
+    src.write_text(source)
+    out = subprocess.run(["cc", "-std=c99", "-O3", "-Wall", "-Wextra", "-Werror", "-fPIC",
+                          "-c", str(src), "-o", str(tmp_path / "k.o")],
+                         capture_output=True, text=True)
+    lines = [int(m.group(1)) for m in
+             re.finditer(r"kernels\.c:(\d+):\d+: (?:warning|error)", out.stderr)]
+    assert not [n for n in lines if start <= n <= end], out.stderr
+
+
+def test_no_lanes_where_they_do_not_pay():
+    """Open models and steps with more than LANES_MAX_NZ unknowns get no lane code."""
+    assert lanes.lanes_context(SimpleNamespace(open_spec=None, nz=9), 100) is None
+    assert lanes.lanes_context(SimpleNamespace(open_spec=object(), nz=3), 100) is None
+    assert lanes.lanes_context(SimpleNamespace(open_spec=None, nz=3),
+                               lanes.LANES_MAX_INSTRUCTIONS + 1) is None
+
+
+def test_lane_literals_read_back():
+    for v in (0.1, 2.0, -1e-300, 6.6666666666666663e-01, 1e22):
+        assert float(lanes.c_double(v)) == v
+    assert lanes.c_double(2.0) == "2.0" and lanes.c_double(1e22) == "1e+22"
