@@ -1,9 +1,9 @@
-"""Lane-wise ensemble kernels (hpgen.codegen.lanes, templates/lanes.c.j2): simulate_batch
-with lanes is bitwise simulate_batch without them (states, statuses, counters), on 1 and 2
-threads, with a body count that is not a multiple of the lane count (the remainder runs the
-scalar code); a body that fails mid-run stops with the error of a scalar run while the other
-lanes of its group continue; the emitted lane code compiles without warnings; modules where
-lanes do not pay get none."""
+"""Lane-wise ensemble kernels (hpgen.codegen.lanes, the lanes section of
+templates/kernels.c.j2): simulate_batch with lanes is bitwise simulate_batch without them
+(states, statuses, counters), on 1 and 2 threads, with a body count that is not a multiple
+of the lane count (the remainder runs the scalar code); a body that fails mid-run stops with
+the error of a scalar run while the other lanes of its group continue; the emitted lane code
+compiles without warnings; modules where lanes do not pay get none."""
 from __future__ import annotations
 
 import re
