@@ -79,6 +79,23 @@ def test_one_lane_fails_the_others_continue(body):
         assert all(t.error is None and len(t.mu) == 201 for i, t in enumerate(on) if i != 2)
 
 
+def test_backend_outputs_and_statuses_equal(body):
+    """The C backend's whole answer (steps done, records, every status field: code, step,
+    iterations, total iterations, residual, Jacobians), also with a progress bar (thread
+    slices of about 20 a thread, aligned to L)."""
+    B = 2 * lanes.LANES + 3
+    mus = _momenta(B, seed=2) * 2.0
+    opts = body._options(None)
+    gs = [np.eye(3).ravel(order="F")] * B
+    z0s = [body._start(g, m, np.zeros(3), 0.1, opts) for g, m in zip(gs, mus)]
+    for threads, bar in ((1, None), (2, None), (2, SimpleNamespace(update=lambda n: None))):
+        on, off = (body._b.simulate_batch(gs, list(mus), 0.1, z0s, 40, 3, opts, threads,
+                                          None, bar, lanes=use) for use in (True, False))
+        assert np.array_equal(on[0], off[0])
+        assert np.array_equal(on[1], off[1]) and np.array_equal(on[2], off[2])
+        assert on[3] == off[3]
+
+
 def test_simplified_newton_runs_scalar(body):
     """The lane Newton is full Newton: with simplified Newton the batch runs scalar code,
     with the same results."""
