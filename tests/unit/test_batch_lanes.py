@@ -2,8 +2,9 @@
 templates/kernels.c.j2): simulate_batch with lanes is bitwise simulate_batch without them
 (states, statuses, counters), on 1 and 2 threads, with a body count that is not a multiple
 of the lane count (the remainder runs the scalar code); a body that fails mid-run stops with
-the error of a scalar run while the other lanes of its group continue; the emitted lane code
-compiles without warnings; modules where lanes do not pay get none."""
+the error of a scalar run while the other lanes of its group continue; the lane printer
+gives CasADi's C bits on every op; the emitted lane code compiles without warnings; modules
+where lanes do not pay get none."""
 from __future__ import annotations
 
 import re
@@ -140,3 +141,60 @@ def test_lane_literals_read_back():
     for v in (0.1, 2.0, -1e-300, 6.6666666666666663e-01, 1e22):
         assert float(lanes.c_double(v)) == v
     assert lanes.c_double(2.0) == "2.0" and lanes.c_double(1e22) == "1e+22"
+
+
+@pytest.mark.skipif(shutil.which("cc") is None, reason="no C compiler")
+def test_lane_printer_bitwise_casadi_c_on_every_op(tmp_path):
+    """Every scalar op the printers know (test_codegen's all-ops function): the lane kernel,
+    compiled as the lanes section is (-O3, no-trapping-math pragma), gives on each lane the
+    bits of CasADi's own C code for the same function, compiled in the same file."""
+    import ctypes
+
+    import casadi as ca
+
+    from hpgen.derive.step import Kernel
+    from tests.unit.test_codegen import _all_ops_function
+
+    f = _all_ops_function()
+    L, n = lanes.LANES, f.numel_out(0)
+    lane = lanes.lane_kernel_source(Kernel("allops", f, ("x",), ("y",)))
+    assert lane is not None
+    cg = ca.CodeGenerator("allops_ref", {"with_header": False, "casadi_real": "double",
+                                         "casadi_int": "long long int"})
+    cg.add(f)
+    src = tmp_path / "allops.c"
+    src.write_text(
+        "#include <math.h>\n#include <string.h>\n" + cg.dump() + "\n"
+        "#pragma GCC optimize(\"no-trapping-math\")\n" + lane + f"""
+void run(const double* xs, double* lane_out, double* ref_out) {{
+    double in[2 * {L}];
+    long long iw[{max(1, f.sz_iw())}];
+    double w[{f.sz_w() + 1}];
+    int l;
+    for (l = 0; l < {L}; ++l) {{
+        const double* arg[1];
+        double* res[1];
+        in[l] = xs[2 * l]; in[{L} + l] = xs[2 * l + 1];
+        arg[0] = xs + 2 * l; res[0] = ref_out + {n} * l;
+        allops(arg, res, iw, w, 0);
+    }}
+    hpgen_lane_allops(in, lane_out);
+}}
+""")
+    lib = tmp_path / "allops.so"
+    subprocess.run(["cc", "-std=c99", "-O3", "-fPIC", "-shared", str(src), "-o", str(lib),
+                    "-lm"], check=True, capture_output=True)
+    run = ctypes.CDLL(str(lib)).run
+    points = [(0.5, 0.25), (-0.5, 2.0), (0.0, 0.0), (-0.0, -3.0), (2.0, -0.0), (1.0, 1.0),
+              (-1.0, 0.5), (np.inf, 1.0), (-np.inf, 2.0), (np.nan, 1.0), (3.7, -2.2),
+              (1e300, 1e-300)]
+    points += [(0.3, 0.7)] * (-len(points) % L)
+    for i in range(0, len(points), L):
+        xs = np.array(points[i:i + L], dtype=np.float64).ravel()
+        got, ref = np.zeros(n * L), np.zeros(n * L)
+        run(xs.ctypes.data_as(ctypes.c_void_p), got.ctypes.data_as(ctypes.c_void_p),
+            ref.ctypes.data_as(ctypes.c_void_p))
+        got = got.reshape(n, L).T                  # SoA -> (lane, entry)
+        ref = ref.reshape(L, n)
+        same = (got.view(np.int64) == ref.view(np.int64)) | (np.isnan(got) & np.isnan(ref))
+        assert same.all(), (points[i:i + L], np.argwhere(~same))
