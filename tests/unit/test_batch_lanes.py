@@ -62,6 +62,23 @@ def test_lanes_bitwise_equal_scalar(body, threads, every):
         assert np.array_equal(one.g, on[b].g) and np.array_equal(one.mu, on[b].mu)
 
 
+def test_heavy_top_stormer_verlet_g_in_the_step(compile_model):
+    """A step whose residual and update read g (the heavy top's potential), 3 unknowns: lanes
+    emitted, bitwise the scalar ensemble on 1 and 2 threads."""
+    from scipy.spatial.transform import Rotation
+    top = compile_model(ROOT / "examples" / "heavy_top.yaml", tableau="stormer-verlet",
+                        tau="cay", rkmk="truncated")
+    assert top._b.lanes == lanes.LANES
+    B = 2 * lanes.LANES + 5
+    xis = np.array([0.2, 1.0, 3.0]) + 0.3 * np.random.default_rng(3).normal(size=(B, 3))
+    g0 = Rotation.from_rotvec([0.3, 0.2, 0.0]).as_matrix()
+    for threads in (1, 2):
+        on = top.simulate_batch(g0, 0.05, 150, xi0=xis, threads=threads)
+        _assert_same(on, top.simulate_batch(g0, 0.05, 150, xi0=xis, threads=threads,
+                                            lanes=False))
+        assert all(t.error is None for t in on)
+
+
 def test_one_lane_fails_the_others_continue(body):
     """Body 2 (a fast spin) needs more than maxit = 5 Newton iterations at step 2: its lane
     redoes the step in scalar code, which reports NO_CONVERGENCE; the other lanes of its
