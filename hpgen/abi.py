@@ -24,7 +24,8 @@ import re
 from dataclasses import dataclass
 
 #: version of the exported C API of kernels.c (hpgen_dims()[0]); checked when it is loaded
-ABI_VERSION = 3
+#: (4: hpgen_advance_batch_lanes and hpgen_lanes, the lane-wise ensembles, where emitted)
+ABI_VERSION = 4
 #: version of meta.json's layout; the loader refuses any other (recompile the module)
 #: (3: "group", the group's name, e.g. "SO3" or "[SO3, R3]")
 META_FORMAT = 3

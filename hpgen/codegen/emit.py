@@ -31,6 +31,7 @@ from ..schemes import BACKENDS, OPTION_KEYS
 from .contract import HASH_RE, MODULE_RE, CodegenError, check_step
 from .csource import c_kernel_context, casadi_c_code, work_sizes
 from . import pyiterate, pylinear
+from .lanes import lanes_context
 from .pysource import py_kernel_context
 
 META_FORMAT = abi.META_FORMAT
@@ -165,12 +166,14 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
     check_step(step)
     info = _check_info(info)
     head = header_lines(info)
+    instructions = _step_instructions(step)
     common = {"header_lines": head, "n": step.n, "d": step.d}
     return {
         "kernels.c.j2": dict(common, nz=step.nz, hash=info["hash"],
                              casadi_code=casadi_c_code(step, info["module"]),
                              kernels=[c_kernel_context(k) for k in step.kernels],
-                             flatten=_step_instructions(step) <= FLATTEN_MAX_INSTRUCTIONS,
+                             flatten=instructions <= FLATTEN_MAX_INSTRUCTIONS,
+                             lanes=lanes_context(step, instructions),
                              record_width=step.record_width,
                              open=None if step.open_spec is None else {
                                  "m": step.open_spec.m, "P": step.open_spec.P},

@@ -71,7 +71,7 @@ class BatchMixin:
 
     def simulate_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
                        newton: NewtonOptions | None = None, u=None, params=None,
-                       t0=0.0, progress=None) -> list:
+                       t0=0.0, progress=None, lanes: bool = True) -> list:
         """An ensemble of B runs, in C over ``threads`` threads (C backend only).
 
         Each run's states are bitwise those of ``simulate`` on its own.
@@ -92,6 +92,10 @@ class BatchMixin:
             Worker threads, >= 1; None (default): the CPU count.
         progress : bool or None, optional
             A bar of the runs done on stderr; None (default): when stderr is a terminal.
+        lanes : bool, optional
+            True (default): step groups of L bodies together with the module's lane-wise
+            kernels when it has them (small closed steps, full Newton; hpgen.codegen.lanes),
+            the same states bit for bit; False: one body at a time (A/B measurement).
         newton : NewtonOptions or None, optional
             Newton settings, as for ``simulate``.
         u, t0
@@ -116,7 +120,8 @@ class BatchMixin:
         _fits(len(gs) * (steps // every + 1), self.n * self.n + self.d, "simulate_batch")
         with progress_bar(len(gs), "simulate_batch", "member", progress) as bar:
             done, g_rec, p_rec, sts = self._b.simulate_batch(gs, ms, h, z0s, steps, every,
-                                                             opts, threads, inputs, bar)
+                                                             opts, threads, inputs, bar,
+                                                             lanes=bool(lanes))
         t0 = check_t0(t0)
         return [self._trajectory(int(done[b]), g_rec[b], p_rec[b], sts[b], h, every,
                                  None if inputs is None else inputs[b], t0)

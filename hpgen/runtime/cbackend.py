@@ -70,15 +70,16 @@ class _Options(ctypes.Structure):
         return cls(float(o.tol), int(o.maxit), int(bool(o.simplified)), int(bool(o.predictor)))
 
 
-def _over_threads(B: int, threads: int, work, bar=None) -> None:
+def _over_threads(B: int, threads: int, work, bar=None, align: int = 1) -> None:
     """work(lo, hi) on contiguous slices of range(B), one slice per thread (at most B
     threads; the C calls inside release the GIL through ctypes). With a progress ``bar``
     (hpgen.runtime.progress) the slices are about 20 per thread, the bar advancing by each
-    slice's members as it completes (runs are independent: the states do not change)."""
+    slice's members as it completes (runs are independent: the states do not change).
+    Inner slice bounds are multiples of ``align`` (lane groups stay whole)."""
     from concurrent.futures import ThreadPoolExecutor
     threads = max(1, min(int(threads), B))
     parts = threads if bar is None else min(B, 20 * threads)
-    bounds = [B * i // parts for i in range(parts + 1)]
+    bounds = [min(B, (B * i // parts + align // 2) // align * align) for i in range(parts)] + [B]
     slices = [(lo, hi) for lo, hi in zip(bounds, bounds[1:]) if hi > lo]
 
     def run(s):
@@ -146,6 +147,13 @@ class CBackend(_Backend):
                 continue
             fn = getattr(lib, name)
             fn.argtypes, fn.restype = args, res
+        #: bodies per call of the lane-wise ensemble kernel (hpgen_advance_batch_lanes;
+        #: hpgen.codegen.lanes), 0 when the module has none
+        self.lanes = 0
+        if hasattr(lib, "hpgen_advance_batch_lanes"):
+            lib.hpgen_advance_batch_lanes.argtypes = [P, LL, D, LL, LL, P, LL, P, P, P]
+            lib.hpgen_advance_batch_lanes.restype = LL
+            self.lanes = int(lib.hpgen_lanes())
         self.run_size = int(lib.hpgen_run_size())
         self._lib = lib
         self._tls = threading.local()    # per thread: {key: _Staging} (see _staging)
@@ -336,10 +344,13 @@ class CBackend(_Backend):
         return runs, base
 
     def simulate_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads, inputs=None,
-                       bar=None):
+                       bar=None, lanes=True):
         """B independent runs; each thread advances a contiguous slice of them with one C
         call (ctypes releases the GIL). Returns (done (B,), g_rec (B, K, nn), p_rec (B, K, d),
-        statuses); K = steps // every + 1 including step 0; rows after a failure are 0."""
+        statuses); K = steps // every + 1 including step 0; rows after a failure are 0.
+        With ``lanes`` and a module that has lane code (``self.lanes`` > 0), the C call is
+        hpgen_advance_batch_lanes (L bodies a call, bitwise the same results), else
+        hpgen_advance_batch."""
         nn, d, B = self.n * self.n, self.d, len(g0s)
         K = steps // every + 1
         runs, base = self._batch_runs(g0s, p0s, z0s, inputs)
@@ -348,13 +359,16 @@ class CBackend(_Backend):
         p_rec[:, 0] = np.asarray(p0s, dtype=np.float64).reshape(B, d)
         sts, o = (_Status * B)(), _Options.of(opts)
 
-        def work(lo, hi):
-            self._lib.hpgen_advance_batch(
-                base + lo * self.run_size, hi - lo, float(h), steps, every,
-                ctypes.byref(o), K, g_rec[lo:, 1:].ctypes.data, p_rec[lo:, 1:].ctypes.data,
-                ctypes.byref(sts, lo * ctypes.sizeof(_Status)))
+        use_lanes = bool(lanes and self.lanes)
+        advance = (self._lib.hpgen_advance_batch_lanes if use_lanes
+                   else self._lib.hpgen_advance_batch)
 
-        _over_threads(B, threads, work, bar)
+        def work(lo, hi):
+            advance(base + lo * self.run_size, hi - lo, float(h), steps, every,
+                    ctypes.byref(o), K, g_rec[lo:, 1:].ctypes.data, p_rec[lo:, 1:].ctypes.data,
+                    ctypes.byref(sts, lo * ctypes.sizeof(_Status)))
+
+        _over_threads(B, threads, work, bar, self.lanes if use_lanes else 1)
         done = np.array([s.step for s in sts])
         return done, g_rec, p_rec, [s.as_dict() for s in sts]
 

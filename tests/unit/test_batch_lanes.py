@@ -1,0 +1,217 @@
+"""Lane-wise ensemble kernels (hpgen.codegen.lanes, the lanes section of
+templates/kernels.c.j2): simulate_batch with lanes is bitwise simulate_batch without them
+(states, statuses, counters), on 1 and 2 threads, with a body count that is not a multiple
+of the lane count (the remainder runs the scalar code); a body that fails mid-run stops with
+the error of a scalar run while the other lanes of its group continue; the lane printer
+gives CasADi's C bits on every op; the emitted lane code compiles without warnings; modules
+where lanes do not pay get none."""
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from hpgen.codegen import lanes
+from hpgen.runtime import NewtonOptions
+
+ROOT = Path(__file__).resolve().parents[2]
+FREE_BODY = ROOT / "examples" / "free_rigid_body.yaml"
+
+
+@pytest.fixture(scope="module")
+def body(compile_model):
+    return compile_model(FREE_BODY)
+
+
+def _momenta(B, seed=0):
+    mus = np.random.default_rng(seed).normal(size=(B, 3))
+    return mus / np.linalg.norm(mus, axis=1)[:, None]
+
+
+def _assert_same(a, b):
+    assert len(a) == len(b)
+    for x, y in zip(a, b):
+        assert np.array_equal(x.g, y.g) and np.array_equal(x.mu, y.mu)
+        assert np.array_equal(x.t, y.t)
+        assert str(x.error) == str(y.error)
+        assert (x.newton_iterations, x.jacobians) == (y.newton_iterations, y.jacobians)
+
+
+def test_free_body_has_lanes(body):
+    assert body._b.lanes == lanes.LANES
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+@pytest.mark.parametrize("every", [1, 7])
+def test_lanes_bitwise_equal_scalar(body, threads, every):
+    B = 3 * lanes.LANES + 5                      # not a multiple of L: 5 bodies run scalar
+    mus = _momenta(B) * np.linspace(0.5, 3.0, B)[:, None]
+    on = body.simulate_batch(np.eye(3), 0.1, 120, mu0=mus, every=every, threads=threads)
+    off = body.simulate_batch(np.eye(3), 0.1, 120, mu0=mus, every=every, threads=threads,
+                              lanes=False)
+    _assert_same(on, off)
+    assert all(t.error is None for t in on)
+    # and each body as simulate runs it on its own
+    for b in (0, lanes.LANES + 1, B - 1):
+        one = body.simulate(np.eye(3), 0.1, 120, mu0=mus[b], every=every)
+        assert np.array_equal(one.g, on[b].g) and np.array_equal(one.mu, on[b].mu)
+
+
+def test_heavy_top_stormer_verlet_g_in_the_step(compile_model):
+    """A step whose residual and update read g (the heavy top's potential), 3 unknowns: lanes
+    emitted, bitwise the scalar ensemble on 1 and 2 threads."""
+    from scipy.spatial.transform import Rotation
+    top = compile_model(ROOT / "examples" / "heavy_top.yaml", tableau="stormer-verlet",
+                        tau="cay", rkmk="truncated")
+    assert top._b.lanes == lanes.LANES
+    B = 2 * lanes.LANES + 5
+    xis = np.array([0.2, 1.0, 3.0]) + 0.3 * np.random.default_rng(3).normal(size=(B, 3))
+    g0 = Rotation.from_rotvec([0.3, 0.2, 0.0]).as_matrix()
+    for threads in (1, 2):
+        on = top.simulate_batch(g0, 0.05, 150, xi0=xis, threads=threads)
+        _assert_same(on, top.simulate_batch(g0, 0.05, 150, xi0=xis, threads=threads,
+                                            lanes=False))
+        assert all(t.error is None for t in on)
+
+
+def test_one_lane_fails_the_others_continue(body):
+    """Body 2 (a fast spin) needs more than maxit = 5 Newton iterations at step 2: its lane
+    redoes the step in scalar code, which reports NO_CONVERGENCE; the other lanes of its
+    group run to the end, and everything equals the scalar ensemble."""
+    B = lanes.LANES + 3
+    mus = _momenta(B, seed=1)
+    mus[2] *= 30.0
+    opts = NewtonOptions(maxit=5)
+    for threads in (1, 2):
+        on = body.simulate_batch(np.eye(3), 0.1, 200, mu0=mus, newton=opts, threads=threads)
+        off = body.simulate_batch(np.eye(3), 0.1, 200, mu0=mus, newton=opts,
+                                  threads=threads, lanes=False)
+        _assert_same(on, off)
+        assert on[2].error is not None and "did not converge" in str(on[2].error)
+        assert len(on[2].mu) == 3                  # steps 0 and 1 done, step 2 failed
+        assert all(t.error is None and len(t.mu) == 201 for i, t in enumerate(on) if i != 2)
+
+
+def test_backend_outputs_and_statuses_equal(body):
+    """The C backend's whole answer (steps done, records, every status field: code, step,
+    iterations, total iterations, residual, Jacobians), also with a progress bar (thread
+    slices of about 20 a thread, aligned to L)."""
+    B = 2 * lanes.LANES + 3
+    mus = _momenta(B, seed=2) * 2.0
+    opts = body._options(None)
+    gs = [np.eye(3).ravel(order="F")] * B
+    z0s = [body._start(g, m, np.zeros(3), 0.1, opts) for g, m in zip(gs, mus)]
+    for threads, bar in ((1, None), (2, None), (2, SimpleNamespace(update=lambda n: None))):
+        on, off = (body._b.simulate_batch(gs, list(mus), 0.1, z0s, 40, 3, opts, threads,
+                                          None, bar, lanes=use) for use in (True, False))
+        assert np.array_equal(on[0], off[0])
+        assert np.array_equal(on[1], off[1]) and np.array_equal(on[2], off[2])
+        assert on[3] == off[3]
+
+
+def test_simplified_newton_runs_scalar(body):
+    """The lane Newton is full Newton: with simplified Newton the batch runs scalar code,
+    with the same results."""
+    mus = _momenta(lanes.LANES)
+    opts = NewtonOptions(simplified=True)
+    _assert_same(body.simulate_batch(np.eye(3), 0.1, 50, mu0=mus, newton=opts),
+                 body.simulate_batch(np.eye(3), 0.1, 50, mu0=mus, newton=opts, lanes=False))
+
+
+def _lane_region(source: str) -> tuple[int, int]:
+    lines = source.splitlines()
+    start = next(i for i, s in enumerate(lines) if "lane-wise ensembles" in s) + 1
+    end = next(i for i, s in enumerate(lines) if "hpgen_lanes(void)" in s) + 1
+    return start, end
+
+
+@pytest.mark.skipif(shutil.which("cc") is None, reason="no C compiler")
+def test_lane_code_compiles_without_warnings(body, tmp_path):
+    """-Wall -Wextra -Werror on the lane section: no diagnostic points into it (the rest of
+    kernels.c is checked by its own tests)."""
+    source = (Path(body._b.library).parent / "kernels.c").read_text()
+    start, end = _lane_region(source)
+    src = tmp_path / "kernels.c"
+    src.write_text(source)
+    out = subprocess.run(["cc", "-std=c99", "-O3", "-Wall", "-Wextra", "-Werror", "-fPIC",
+                          "-c", str(src), "-o", str(tmp_path / "k.o")],
+                         capture_output=True, text=True)
+    lines = [int(m.group(1)) for m in
+             re.finditer(r"kernels\.c:(\d+):\d+: (?:warning|error)", out.stderr)]
+    assert not [n for n in lines if start <= n <= end], out.stderr
+
+
+def test_no_lanes_where_they_do_not_pay():
+    """Open models and steps with more than LANES_MAX_NZ unknowns get no lane code."""
+    assert lanes.lanes_context(SimpleNamespace(open_spec=None, nz=9), 100) is None
+    assert lanes.lanes_context(SimpleNamespace(open_spec=object(), nz=3), 100) is None
+    assert lanes.lanes_context(SimpleNamespace(open_spec=None, nz=3),
+                               lanes.LANES_MAX_INSTRUCTIONS + 1) is None
+
+
+def test_lane_literals_read_back():
+    for v in (0.1, 2.0, -1e-300, 6.6666666666666663e-01, 1e22):
+        assert float(lanes.c_double(v)) == v
+    assert lanes.c_double(2.0) == "2.0" and lanes.c_double(1e22) == "1e+22"
+
+
+@pytest.mark.skipif(shutil.which("cc") is None, reason="no C compiler")
+def test_lane_printer_bitwise_casadi_c_on_every_op(tmp_path):
+    """Every scalar op the printers know (test_codegen's all-ops function): the lane kernel,
+    compiled as the lanes section is (-O3, no-trapping-math pragma), gives on each lane the
+    bits of CasADi's own C code for the same function, compiled in the same file."""
+    import ctypes
+
+    import casadi as ca
+
+    from hpgen.derive.step import Kernel
+    from tests.unit.test_codegen import _all_ops_function
+
+    f = _all_ops_function()
+    L, n = lanes.LANES, f.numel_out(0)
+    lane = lanes.lane_kernel_source(Kernel("allops", f, ("x",), ("y",)))
+    assert lane is not None
+    cg = ca.CodeGenerator("allops_ref", {"with_header": False, "casadi_real": "double",
+                                         "casadi_int": "long long int"})
+    cg.add(f)
+    src = tmp_path / "allops.c"
+    src.write_text(
+        "#include <math.h>\n#include <string.h>\n" + cg.dump() + "\n"
+        "#pragma GCC optimize(\"no-trapping-math\")\n" + lane + f"""
+void run(const double* xs, double* lane_out, double* ref_out) {{
+    double in[2 * {L}];
+    long long iw[{max(1, f.sz_iw())}];
+    double w[{f.sz_w() + 1}];
+    int l;
+    for (l = 0; l < {L}; ++l) {{
+        const double* arg[1];
+        double* res[1];
+        in[l] = xs[2 * l]; in[{L} + l] = xs[2 * l + 1];
+        arg[0] = xs + 2 * l; res[0] = ref_out + {n} * l;
+        allops(arg, res, iw, w, 0);
+    }}
+    hpgen_lane_allops(in, lane_out);
+}}
+""")
+    lib = tmp_path / "allops.so"
+    subprocess.run(["cc", "-std=c99", "-O3", "-fPIC", "-shared", str(src), "-o", str(lib),
+                    "-lm"], check=True, capture_output=True)
+    run = ctypes.CDLL(str(lib)).run
+    points = [(0.5, 0.25), (-0.5, 2.0), (0.0, 0.0), (-0.0, -3.0), (2.0, -0.0), (1.0, 1.0),
+              (-1.0, 0.5), (np.inf, 1.0), (-np.inf, 2.0), (np.nan, 1.0), (3.7, -2.2),
+              (1e300, 1e-300)]
+    points += [(0.3, 0.7)] * (-len(points) % L)
+    for i in range(0, len(points), L):
+        xs = np.array(points[i:i + L], dtype=np.float64).ravel()
+        got, ref = np.zeros(n * L), np.zeros(n * L)
+        run(xs.ctypes.data_as(ctypes.c_void_p), got.ctypes.data_as(ctypes.c_void_p),
+            ref.ctypes.data_as(ctypes.c_void_p))
+        got = got.reshape(n, L).T                  # SoA -> (lane, entry)
+        ref = ref.reshape(L, n)
+        same = (got.view(np.int64) == ref.view(np.int64)) | (np.isnan(got) & np.isnan(ref))
+        assert same.all(), (points[i:i + L], np.argwhere(~same))
