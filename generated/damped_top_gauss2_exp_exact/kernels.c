@@ -15876,7 +15876,7 @@ CASADI_SYMBOL_EXPORT int step_partials_work_bytes(casadi_int *sz_arg, casadi_int
 #define HPGEN_EXPORT
 #endif
 
-#define HPGEN_ABI 3
+#define HPGEN_ABI 4
 #define HPGEN_N 3
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 #define HPGEN_D 3

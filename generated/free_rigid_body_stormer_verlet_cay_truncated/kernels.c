@@ -3232,7 +3232,7 @@ CASADI_SYMBOL_EXPORT int step_partials_work_bytes(casadi_int *sz_arg, casadi_int
 #define HPGEN_EXPORT
 #endif
 
-#define HPGEN_ABI 3
+#define HPGEN_ABI 4
 #define HPGEN_N 3
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 #define HPGEN_D 3
@@ -4425,3 +4425,676 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
     st->step = K;
     return K;
 }
+
+/* ---- lane-wise ensembles (hpgen.codegen.lanes) ----
+   HPGEN_L bodies per call in structure-of-arrays form (entry i of lane l at x[i * L + l]):
+   the step's kernels printed lane-wise, full Newton with per-lane convergence masks (a lane
+   that converged stops updating; the loop runs while a lane is active), the adjugate solve,
+   the norms and the tests as fixed-count lane loops. Every lane performs the operations of
+   hpgen_run_step in the same order: its states are bitwise those of hpgen_advance. A lane
+   whose step does not converge cleanly (Newton failure, singular J, margin <= 0, a
+   non-finite update: any case where hpgen_run_step would retry or report) redoes that step
+   with the scalar hpgen_run_step from its state before the step, which then retries or
+   reports exactly as a scalar run; a lane that fails there stops (its status set) and the
+   other lanes continue. */
+#define HPGEN_L 8
+#include <float.h>
+/* the lane code assumes no floating-point traps (gcc then if-converts and vectorises its
+   lane loops; IEEE results are unchanged: no reassociation, no contraction at -std=c99) */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize("no-trapping-math")
+#endif
+
+/* residual_jacobian(z, g, p, h) -> (F, J), 8 lanes: x[i * 8 + lane] */
+static void hpgen_lane_residual_jacobian(const double* restrict in0, const double* restrict in1, const double* restrict in2, const double* restrict in3, double* restrict out0, double* restrict out1) {
+    int l;
+    (void)in0; (void)in1; (void)in2; (void)in3;
+    for (l = 0; l < 8; ++l) {
+        double a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11;
+        double a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+        a0 = in2[0 + l];
+        a1 = in3[0 + l];
+        a2 = in0[8 + l];
+        a3 = (a1*a2);
+        a4 = 2.0;
+        a5 = (a3/a4);
+        a6 = in0[16 + l];
+        a7 = (a1*a6);
+        a8 = in0[0 + l];
+        a9 = (a1*a8);
+        a10 = (a7*a9);
+        a11 = 4.0;
+        a10 = (a10/a11);
+        a10 = (a5+a10);
+        a12 = 0.6666666666666666;
+        a6 = (a12*a6);
+        a13 = (a10*a6);
+        a14 = (a3*a9);
+        a14 = (a14/a11);
+        a15 = (a7/a4);
+        a14 = (a14-a15);
+        a16 = (a14*a2);
+        a13 = (a13+a16);
+        a16 = 1.0;
+        a17 = (a9*a9);
+        a17 = (a17/a11);
+        a17 = (a16+a17);
+        a8 = (2.*a8);
+        a18 = (a17*a8);
+        a13 = (a13+a18);
+        a0 = (a0-a13);
+        out0[0 + l] = a0;
+        a0 = in2[8 + l];
+        a13 = (a7*a3);
+        a13 = (a13/a11);
+        a4 = (a9/a4);
+        a13 = (a13-a4);
+        a18 = (a13*a6);
+        a19 = (a3*a3);
+        a19 = (a19/a11);
+        a19 = (a16+a19);
+        a20 = (a19*a2);
+        a18 = (a18+a20);
+        a20 = (a9*a3);
+        a20 = (a20/a11);
+        a15 = (a15+a20);
+        a20 = (a15*a8);
+        a18 = (a18+a20);
+        a0 = (a0-a18);
+        out0[8 + l] = a0;
+        a0 = in2[16 + l];
+        a18 = (a7*a7);
+        a18 = (a18/a11);
+        a16 = (a16+a18);
+        a18 = (a16*a6);
+        a20 = (a3*a7);
+        a20 = (a20/a11);
+        a4 = (a4+a20);
+        a20 = (a4*a2);
+        a18 = (a18+a20);
+        a20 = (a9*a7);
+        a20 = (a20/a11);
+        a20 = (a20-a5);
+        a5 = (a20*a8);
+        a18 = (a18+a5);
+        a0 = (a0-a18);
+        out0[16 + l] = a0;
+        a0 = 0.25;
+        a18 = (a7*a1);
+        a18 = (a0*a18);
+        a5 = (a6*a18);
+        a11 = (a3*a1);
+        a11 = (a0*a11);
+        a21 = (a2*a11);
+        a22 = (a5+a21);
+        a23 = (2.*a9);
+        a23 = (a23*a1);
+        a23 = (a0*a23);
+        a23 = (a8*a23);
+        a17 = (2.*a17);
+        a23 = (a23+a17);
+        a22 = (a22+a23);
+        a22 = (-a22);
+        out1[0 + l] = a22;
+        a22 = (a8*a11);
+        a15 = (2.*a15);
+        a22 = (a22+a15);
+        a15 = 0.5;
+        a15 = (a15*a1);
+        a23 = (a6*a15);
+        a22 = (a22-a23);
+        a22 = (-a22);
+        out1[8 + l] = a22;
+        a22 = (a2*a15);
+        a17 = (a8*a18);
+        a20 = (2.*a20);
+        a17 = (a17+a20);
+        a17 = (a22+a17);
+        a17 = (-a17);
+        out1[16 + l] = a17;
+        a9 = (a9*a1);
+        a9 = (a0*a9);
+        a17 = (a2*a9);
+        a17 = (a17+a14);
+        a23 = (a23+a17);
+        a23 = (-a23);
+        out1[24 + l] = a23;
+        a3 = (2.*a3);
+        a3 = (a3*a1);
+        a3 = (a0*a3);
+        a3 = (a2*a3);
+        a3 = (a3+a19);
+        a5 = (a5+a3);
+        a3 = (a8*a9);
+        a5 = (a5+a3);
+        a5 = (-a5);
+        out1[32 + l] = a5;
+        a2 = (a2*a18);
+        a2 = (a2+a4);
+        a8 = (a8*a15);
+        a2 = (a2-a8);
+        a2 = (-a2);
+        out1[40 + l] = a2;
+        a9 = (a6*a9);
+        a10 = (a12*a10);
+        a9 = (a9+a10);
+        a9 = (a9-a22);
+        a9 = (-a9);
+        out1[48 + l] = a9;
+        a11 = (a6*a11);
+        a13 = (a12*a13);
+        a11 = (a11+a13);
+        a11 = (a11+a8);
+        a11 = (-a11);
+        out1[56 + l] = a11;
+        a7 = (2.*a7);
+        a7 = (a7*a1);
+        a0 = (a0*a7);
+        a6 = (a6*a0);
+        a12 = (a12*a16);
+        a6 = (a6+a12);
+        a6 = (a6+a21);
+        a6 = (a6+a3);
+        a6 = (-a6);
+        out1[64 + l] = a6;
+        (void)a0, (void)a1, (void)a2, (void)a3, (void)a4, (void)a5, (void)a6, (void)a7, (void)a8, (void)a9, (void)a10, (void)a11, (void)a12, (void)a13, (void)a14, (void)a15, (void)a16, (void)a17, (void)a18, (void)a19, (void)a20, (void)a21, (void)a22, (void)a23;
+    }
+}
+
+/* margin(z, h) -> (m), 8 lanes: x[i * 8 + lane] */
+static void hpgen_lane_margin(const double* restrict in0, const double* restrict in1, double* restrict out0) {
+    int l;
+    (void)in0; (void)in1;
+    for (l = 0; l < 8; ++l) {
+        double a0, a1, a2, a3, a4;
+        a0 = 1.0;
+        a1 = 4.0;
+        a2 = in1[0 + l];
+        a3 = in0[0 + l];
+        a3 = (a2*a3);
+        a3 = (a3*a3);
+        a4 = in0[8 + l];
+        a4 = (a2*a4);
+        a4 = (a4*a4);
+        a3 = (a3+a4);
+        a4 = in0[16 + l];
+        a2 = (a2*a4);
+        a2 = (a2*a2);
+        a3 = (a3+a2);
+        a1 = (a1-a3);
+        a0 = ((a0<a1 || a1!=a1) ? a0 : a1);
+        a0 = ((a0<a1 || a1!=a1) ? a0 : a1);
+        a0 = ((a0<a1 || a1!=a1) ? a0 : a1);
+        a0 = ((a0<a1 || a1!=a1) ? a0 : a1);
+        out0[0 + l] = a0;
+        (void)a0, (void)a1, (void)a2, (void)a3, (void)a4;
+    }
+}
+
+/* update(z, g, p, h) -> (g1, p1), 8 lanes: x[i * 8 + lane] */
+static void hpgen_lane_update(const double* restrict in0, const double* restrict in1, const double* restrict in2, const double* restrict in3, double* restrict out0, double* restrict out1) {
+    int l;
+    (void)in0; (void)in1; (void)in2; (void)in3;
+    for (l = 0; l < 8; ++l) {
+        double a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11;
+        double a12, a13, a14, a15, a16, a17, a18, a19, a20, a21, a22, a23;
+        double a24, a25, a26, a27, a28, a29, a30;
+        a0 = in1[0 + l];
+        a1 = 1.0;
+        a2 = 4.0;
+        a3 = in3[0 + l];
+        a4 = in0[0 + l];
+        a5 = (a3*a4);
+        a6 = (a5*a5);
+        a7 = in0[8 + l];
+        a8 = (a3*a7);
+        a9 = (a8*a8);
+        a10 = (a6+a9);
+        a11 = in0[16 + l];
+        a3 = (a3*a11);
+        a12 = (a3*a3);
+        a10 = (a10+a12);
+        a10 = (a2+a10);
+        a10 = (a2/a10);
+        a13 = (a12+a9);
+        a14 = 2.0;
+        a13 = (a13/a14);
+        a13 = (a10*a13);
+        a13 = (a1-a13);
+        a15 = (a0*a13);
+        a16 = in1[24 + l];
+        a17 = (a5*a8);
+        a18 = (a17/a14);
+        a18 = (a3+a18);
+        a18 = (a10*a18);
+        a19 = (a16*a18);
+        a15 = (a15+a19);
+        a19 = in1[48 + l];
+        a20 = (a5*a3);
+        a21 = (a20/a14);
+        a21 = (a21-a8);
+        a21 = (a10*a21);
+        a22 = (a19*a21);
+        a15 = (a15+a22);
+        out0[0 + l] = a15;
+        a15 = in1[8 + l];
+        a22 = (a15*a13);
+        a23 = in1[32 + l];
+        a24 = (a23*a18);
+        a22 = (a22+a24);
+        a24 = in1[56 + l];
+        a25 = (a24*a21);
+        a22 = (a22+a25);
+        out0[8 + l] = a22;
+        a22 = in1[16 + l];
+        a13 = (a22*a13);
+        a25 = in1[40 + l];
+        a18 = (a25*a18);
+        a13 = (a13+a18);
+        a18 = in1[64 + l];
+        a21 = (a18*a21);
+        a13 = (a13+a21);
+        out0[16 + l] = a13;
+        a13 = (a8*a5);
+        a21 = (a13/a14);
+        a21 = (a21-a3);
+        a21 = (a10*a21);
+        a26 = (a0*a21);
+        a27 = (a12+a6);
+        a27 = (a27/a14);
+        a27 = (a10*a27);
+        a27 = (a1-a27);
+        a28 = (a16*a27);
+        a26 = (a26+a28);
+        a28 = (a8*a3);
+        a29 = (a28/a14);
+        a29 = (a5+a29);
+        a29 = (a10*a29);
+        a30 = (a19*a29);
+        a26 = (a26+a30);
+        out0[24 + l] = a26;
+        a26 = (a15*a21);
+        a30 = (a23*a27);
+        a26 = (a26+a30);
+        a30 = (a24*a29);
+        a26 = (a26+a30);
+        out0[32 + l] = a26;
+        a21 = (a22*a21);
+        a27 = (a25*a27);
+        a21 = (a21+a27);
+        a29 = (a18*a29);
+        a21 = (a21+a29);
+        out0[40 + l] = a21;
+        a21 = (a3*a5);
+        a29 = (a21/a14);
+        a29 = (a8+a29);
+        a29 = (a10*a29);
+        a0 = (a0*a29);
+        a27 = (a3*a8);
+        a26 = (a27/a14);
+        a26 = (a26-a5);
+        a26 = (a10*a26);
+        a16 = (a16*a26);
+        a0 = (a0+a16);
+        a16 = (a9+a6);
+        a16 = (a16/a14);
+        a10 = (a10*a16);
+        a10 = (a1-a10);
+        a19 = (a19*a10);
+        a0 = (a0+a19);
+        out0[48 + l] = a0;
+        a15 = (a15*a29);
+        a23 = (a23*a26);
+        a15 = (a15+a23);
+        a24 = (a24*a10);
+        a15 = (a15+a24);
+        out0[56 + l] = a15;
+        a22 = (a22*a29);
+        a25 = (a25*a26);
+        a22 = (a22+a25);
+        a18 = (a18*a10);
+        a22 = (a22+a18);
+        out0[64 + l] = a22;
+        a21 = (a21/a2);
+        a8 = (a8/a14);
+        a21 = (a21-a8);
+        a22 = 0.6666666666666666;
+        a22 = (a22*a11);
+        a21 = (a21*a22);
+        a3 = (a3/a14);
+        a13 = (a13/a2);
+        a13 = (a3+a13);
+        a13 = (a13*a7);
+        a21 = (a21+a13);
+        a6 = (a6/a2);
+        a6 = (a1+a6);
+        a4 = (2.*a4);
+        a6 = (a6*a4);
+        a21 = (a21+a6);
+        out1[0 + l] = a21;
+        a5 = (a5/a14);
+        a27 = (a27/a2);
+        a27 = (a5+a27);
+        a27 = (a27*a22);
+        a9 = (a9/a2);
+        a9 = (a1+a9);
+        a9 = (a9*a7);
+        a27 = (a27+a9);
+        a17 = (a17/a2);
+        a17 = (a17-a3);
+        a17 = (a17*a4);
+        a27 = (a27+a17);
+        out1[8 + l] = a27;
+        a12 = (a12/a2);
+        a1 = (a1+a12);
+        a1 = (a1*a22);
+        a28 = (a28/a2);
+        a28 = (a28-a5);
+        a28 = (a28*a7);
+        a1 = (a1+a28);
+        a20 = (a20/a2);
+        a8 = (a8+a20);
+        a8 = (a8*a4);
+        a1 = (a1+a8);
+        out1[16 + l] = a1;
+        (void)a0, (void)a1, (void)a2, (void)a3, (void)a4, (void)a5, (void)a6, (void)a7, (void)a8, (void)a9, (void)a10, (void)a11, (void)a12, (void)a13, (void)a14, (void)a15, (void)a16, (void)a17, (void)a18, (void)a19, (void)a20, (void)a21, (void)a22, (void)a23, (void)a24, (void)a25, (void)a26, (void)a27, (void)a28, (void)a29, (void)a30;
+    }
+}
+
+/* Full Newton (hpgen_newton with o->simplified = 0) on L lanes from z (in/out): ok[l] = 1
+   where lane l converged (z its solution, iters[l] its iterations, rnorm[l] its last
+   residual norm), 0 where hpgen_newton would return a failure (z then undefined). One lane
+   loop per iteration after the kernel: the solve by the cofactors of hpgen_lu_factor_solve
+   (the same operations), z - dz, the inf-norms and the tests, the entries unrolled at
+   codegen, flags as doubles 0/1 and blends for the masks (no branch on a lane), so that
+   gcc vectorises it. Finiteness: the sum of x - x over the entries is 0 iff every entry is
+   finite (x - x is NaN for inf and NaN). A lane stays inactive once stopped: its iterations
+   are the sum of its active flags. */
+static void hpgen_lane_newton(const double* g, const double* p, const double* hv, double* zio,
+                              const hpgen_options* o, long long* okio, long long* itio,
+                              double* rnio) {
+    /* z, rnorm: blended from one buffer into the other, swapped at every iteration (a
+       blend into the value's own place, x = c ? y : x, would become a conditional store) */
+    double F[HPGEN_NZ * HPGEN_L], J[HPGEN_NZ * HPGEN_NZ * HPGEN_L], dprev[HPGEN_L],
+        zbuf[2][HPGEN_NZ * HPGEN_L], rbuf[2][HPGEN_L], active[HPGEN_L], ok[HPGEN_L],
+        iters[HPGEN_L];
+    const double tol = o->tol;
+    double *z = zbuf[0], *zw = zbuf[1], *rnorm = rbuf[0], *rw = rbuf[1], *t;
+    long long it;
+    int l;
+    memcpy(z, zio, sizeof zbuf[0]);
+    for (l = 0; l < HPGEN_L; ++l) {
+        active[l] = 1.0; ok[l] = 0.0; iters[l] = 0.0; rnorm[l] = 0.0; dprev[l] = HUGE_VAL;
+    }
+    for (it = 1; it <= o->maxit; ++it) {
+        const double later = it > 1 ? 1.0 : 0.0;
+        double any = 0.0;
+        hpgen_lane_residual_jacobian(z, g, p, hv, F, J);
+        for (l = 0; l < HPGEN_L; ++l) {
+            const double a = active[l];
+            double rn = 0.0, dn = 0.0, zn = 0.0, fin = 0.0, det, r, good, conv, rs;
+            const double f0 = F[0 * HPGEN_L + l], zo0 = z[0 * HPGEN_L + l];
+            double x0, d0, zt0;
+            const double f1 = F[1 * HPGEN_L + l], zo1 = z[1 * HPGEN_L + l];
+            double x1, d1, zt1;
+            const double f2 = F[2 * HPGEN_L + l], zo2 = z[2 * HPGEN_L + l];
+            double x2, d2, zt2;
+            rn = fabs(f0) > rn ? fabs(f0) : rn;
+            fin += f0 - f0;
+            rn = fabs(f1) > rn ? fabs(f1) : rn;
+            fin += f1 - f1;
+            rn = fabs(f2) > rn ? fabs(f2) : rn;
+            fin += f2 - f2;
+#if HPGEN_NZ == 1
+            det = J[l];
+            x0 = f0;
+#elif HPGEN_NZ == 2
+            {
+                const double ja = J[l], jc = J[HPGEN_L + l], jb = J[2 * HPGEN_L + l],
+                             jd = J[3 * HPGEN_L + l];
+                det = ja * jd - jb * jc;
+                x0 = jd * f0 - jb * f1;
+                x1 = ja * f1 - jc * f0;
+            }
+#else
+            {
+                const double j00 = J[l], j10 = J[HPGEN_L + l], j20 = J[2 * HPGEN_L + l],
+                             j01 = J[3 * HPGEN_L + l], j11 = J[4 * HPGEN_L + l],
+                             j21 = J[5 * HPGEN_L + l], j02 = J[6 * HPGEN_L + l],
+                             j12 = J[7 * HPGEN_L + l], j22 = J[8 * HPGEN_L + l];
+                const double c00 = j11 * j22 - j12 * j21, c01 = j12 * j20 - j10 * j22,
+                             c02 = j10 * j21 - j11 * j20, c10 = j02 * j21 - j01 * j22,
+                             c11 = j00 * j22 - j02 * j20, c12 = j01 * j20 - j00 * j21,
+                             c20 = j01 * j12 - j02 * j11, c21 = j02 * j10 - j00 * j12,
+                             c22 = j00 * j11 - j01 * j10;
+                det = j00 * c00 + j01 * c01 + j02 * c02;
+                x0 = c00 * f0 + c10 * f1 + c20 * f2;
+                x1 = c01 * f0 + c11 * f1 + c21 * f2;
+                x2 = c02 * f0 + c12 * f1 + c22 * f2;
+            }
+#endif
+            r = 1.0 / det;
+            fin += det - det;
+            d0 = x0 * r;
+            zt0 = zo0 - d0;
+            dn = fabs(d0) > dn ? fabs(d0) : dn;
+            fin += (d0 - d0) + (zt0 - zt0);
+            d1 = x1 * r;
+            zt1 = zo1 - d1;
+            dn = fabs(d1) > dn ? fabs(d1) : dn;
+            fin += (d1 - d1) + (zt1 - zt1);
+            d2 = x2 * r;
+            zt2 = zo2 - d2;
+            dn = fabs(d2) > dn ? fabs(d2) : dn;
+            fin += (d2 - d2) + (zt2 - zt2);
+            zn = fabs(zt0) > zn ? fabs(zt0) : zn;
+            zn = fabs(zt1) > zn ? fabs(zt1) : zn;
+            zn = fabs(zt2) > zn ? fabs(zt2) : zn;
+            good = (fin == 0.0 && det != 0.0) ? a : 0.0;
+            conv = ((dn <= tol * (1.0 + zn))
+                    | ((later * dn >= dprev[l]) & (dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn))))
+                   ? good : 0.0;
+            zw[0 * HPGEN_L + l] = a != 0.0 ? zt0 : zo0;
+            zw[1 * HPGEN_L + l] = a != 0.0 ? zt1 : zo1;
+            zw[2 * HPGEN_L + l] = a != 0.0 ? zt2 : zo2;
+            /* rnorm of the lane's last active iteration (rn finite there), by arithmetic: a
+               blend with a load as one arm would make the load conditional */
+            rs = rn <= DBL_MAX ? rn : 0.0;
+            rw[l] = rs * a + rnorm[l] * (1.0 - a);
+            iters[l] += a;
+            ok[l] += conv;
+            active[l] = good - conv;
+            dprev[l] = dn;
+            any += active[l];
+        }
+        t = z; z = zw; zw = t;
+        t = rnorm; rnorm = rw; rw = t;
+        if (any == 0.0) break;
+    }
+    memcpy(zio, z, sizeof zbuf[0]);
+    for (l = 0; l < HPGEN_L; ++l) {
+        okio[l] = ok[l] != 0.0;
+        itio[l] = (long long)iters[l];
+        rnio[l] = rnorm[l];
+    }
+}
+
+/* lane l <-> run r: the state hpgen_run_step reads and writes */
+static void hpgen_lane_gather(const hpgen_run* r, int l, double* g, double* p, double* z,
+                              double* zp, double* zp2, long long* hp, long long* k) {
+    int i;
+    for (i = 0; i < HPGEN_NN; ++i) g[i * HPGEN_L + l] = r->g[i];
+    for (i = 0; i < HPGEN_D; ++i) p[i * HPGEN_L + l] = r->p[i];
+    for (i = 0; i < HPGEN_NZ; ++i) {
+        z[i * HPGEN_L + l] = r->z[i];
+        zp[i * HPGEN_L + l] = r->zprev[i];
+        zp2[i * HPGEN_L + l] = r->zprev2[i];
+    }
+    hp[l] = r->have_prev;
+    k[l] = r->k;
+}
+
+static void hpgen_lane_scatter(hpgen_run* r, int l, const double* g, const double* p,
+                               const double* z, const double* zp, const double* zp2,
+                               const long long* hp, const long long* k) {
+    int i;
+    for (i = 0; i < HPGEN_NN; ++i) r->g[i] = g[i * HPGEN_L + l];
+    for (i = 0; i < HPGEN_D; ++i) r->p[i] = p[i * HPGEN_L + l];
+    for (i = 0; i < HPGEN_NZ; ++i) {
+        r->z[i] = z[i * HPGEN_L + l];
+        r->zprev[i] = zp[i * HPGEN_L + l];
+        r->zprev2[i] = zp2[i * HPGEN_L + l];
+    }
+    r->have_prev = hp[l];
+    r->k = k[l];
+}
+
+/* L runs (runs[0..L-1], the same k, full Newton, g not stale) advanced like L calls of
+   hpgen_advance (records of lane l at g_rec + l per_run NN, p_rec + l per_run D). */
+static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long long every,
+                                const hpgen_options* o, long long per_run, double* g_rec,
+                                double* p_rec, hpgen_status* st) {
+    double g[HPGEN_NN * HPGEN_L], p[HPGEN_D * HPGEN_L], z[HPGEN_NZ * HPGEN_L],
+        zp[HPGEN_NZ * HPGEN_L], zp2[HPGEN_NZ * HPGEN_L], zs[HPGEN_NZ * HPGEN_L],
+        g1[HPGEN_NN * HPGEN_L], p1[HPGEN_D * HPGEN_L], hv[HPGEN_L], m[HPGEN_L],
+        res[HPGEN_L], hv1[1];
+    long long hp[HPGEN_L], k[HPGEN_L], rec[HPGEN_L], it[HPGEN_L], ok[HPGEN_L],
+        alive[HPGEN_L], n, nalive = HPGEN_L;
+    int i, l;
+    hpgen_options full = *o;
+    full.simplified = 0;
+    hv1[0] = h;
+    for (l = 0; l < HPGEN_L; ++l) {
+        hpgen_status_init(st + l);
+        hpgen_lane_gather(runs + l, l, g, p, z, zp, zp2, hp, k);
+        hv[l] = h;
+        alive[l] = 1;
+        rec[l] = 0;
+    }
+    for (n = 0; n < steps && nalive > 0; ++n) {
+        long long first = 1;
+        for (l = 0; l < HPGEN_L; ++l) first &= !alive[l] | (k[l] == 0);
+        if (first) {
+            /* a run's first step (the crude start: a margin check, then full Newton) is
+               scalar code's */
+            for (l = 0; l < HPGEN_L; ++l) ok[l] = 0;
+        } else {
+            /* the start: the predictor of hpgen_run_step, per lane */
+            double q2[HPGEN_L], q1[HPGEN_L];
+            long long all = 1;
+            for (l = 0; l < HPGEN_L; ++l) {
+                q2[l] = o->predictor && hp[l] >= 2;
+                q1[l] = o->predictor && hp[l] == 1;
+            }
+            for (i = 0; i < HPGEN_NZ; ++i)
+                for (l = 0; l < HPGEN_L; ++l) {
+                    const int j = i * HPGEN_L + l;
+                    const double a2 = 3.0 * (z[j] - zp[j]) + zp2[j], a1 = 2.0 * z[j] - zp[j],
+                                 a0 = z[j];
+                    zs[j] = q2[l] != 0.0 ? a2 : (q1[l] != 0.0 ? a1 : a0);
+                }
+            hpgen_lane_newton(g, p, hv, zs, o, ok, it, res);
+            hpgen_lane_margin(zs, hv, m);
+            hpgen_lane_update(zs, g, p, hv, g1, p1);
+            /* the lanes that stepped: margin > 0, g1 and p1 finite (the sums of
+               hpgen_all_finite's common path; a lane whose sum is not finite redoes the
+               step in scalar code, which tells an overflowing sum from a non-finite entry) */
+            for (l = 0; l < HPGEN_L; ++l) {
+                double sg = 0.0, sp = 0.0;
+                for (i = 0; i < HPGEN_NN; ++i) sg += g1[i * HPGEN_L + l];
+                for (i = 0; i < HPGEN_D; ++i) sp += p1[i * HPGEN_L + l];
+                ok[l] = ok[l] & alive[l] & (m[l] > 0.0) & (k[l] != 0) & (sg - sg == 0.0)
+                        & (sp - sp == 0.0);
+                all &= ok[l];
+            }
+            /* commit them: whole arrays when every lane stepped (the common case), else
+               lane by lane */
+            if (all) {
+                memcpy(zp2, zp, sizeof zp);
+                memcpy(zp, z, sizeof z);
+                memcpy(z, zs, sizeof z);
+                memcpy(g, g1, sizeof g);
+                memcpy(p, p1, sizeof p);
+            } else {
+                for (l = 0; l < HPGEN_L; ++l) {
+                    if (!ok[l]) continue;
+                    for (i = 0; i < HPGEN_NZ; ++i) {
+                        const int j = i * HPGEN_L + l;
+                        zp2[j] = zp[j]; zp[j] = z[j]; z[j] = zs[j];
+                    }
+                    for (i = 0; i < HPGEN_NN; ++i) g[i * HPGEN_L + l] = g1[i * HPGEN_L + l];
+                    for (i = 0; i < HPGEN_D; ++i) p[i * HPGEN_L + l] = p1[i * HPGEN_L + l];
+                }
+            }
+            for (l = 0; l < HPGEN_L; ++l) {
+                const long long c = ok[l];
+                hp[l] += c & (hp[l] < 2);
+                k[l] += c;
+                st[l].total_iterations += c ? it[l] : 0;
+                st[l].jacobians += c ? it[l] : 0;
+                st[l].iterations = c ? it[l] : st[l].iterations;
+                st[l].residual = c ? res[l] : st[l].residual;
+            }
+        }
+        /* the others: this step by hpgen_run_step from the lane's state */
+        for (l = 0; l < HPGEN_L; ++l) {
+            if (!alive[l] || ok[l]) continue;
+            hpgen_lane_scatter(runs + l, l, g, p, z, zp, zp2, hp, k);
+            if (hpgen_run_step(runs + l, hv1, o, &full, st + l, 1) != HPGEN_OK) {
+                alive[l] = 0;
+                --nalive;
+                continue;
+            }
+            hpgen_lane_gather(runs + l, l, g, p, z, zp, zp2, hp, k);
+        }
+        for (l = 0; l < HPGEN_L; ++l) {
+            if (!alive[l] || k[l] % every != 0) continue;
+            for (i = 0; i < HPGEN_NN; ++i)
+                g_rec[(l * per_run + rec[l]) * HPGEN_NN + i] = g[i * HPGEN_L + l];
+            for (i = 0; i < HPGEN_D; ++i)
+                p_rec[(l * per_run + rec[l]) * HPGEN_D + i] = p[i * HPGEN_L + l];
+            ++rec[l];
+        }
+    }
+    for (l = 0; l < HPGEN_L; ++l) {
+        if (!alive[l]) continue;
+        hpgen_lane_scatter(runs + l, l, g, p, z, zp, zp2, hp, k);
+        st[l].step = k[l];
+    }
+}
+
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
+#endif
+
+/* hpgen_advance_batch with lanes: groups of L consecutive runs at the same step, with full
+   Newton (o->simplified = 0), advance together (hpgen_advance_lanes); the other runs (the
+   remainder of B / L, simplified Newton, invalid arguments) by hpgen_advance, one after the
+   other. The same records, statuses and return value as hpgen_advance_batch. */
+HPGEN_EXPORT long long hpgen_advance_batch_lanes(hpgen_run* runs, long long B, double h,
+                                                 long long steps, long long every,
+                                                 const hpgen_options* o, long long per_run,
+                                                 double* g_rec, double* p_rec,
+                                                 hpgen_status* st) {
+    long long b = 0, failed = 0, j;
+    if (steps >= 0 && every >= 1 && hpgen_options_ok(o) && !o->simplified) {
+        for (; b + HPGEN_L <= B; b += HPGEN_L) {
+            int same = 1, l;
+            for (l = 0; l < HPGEN_L; ++l)
+                same &= runs[b + l].k == runs[b].k && !runs[b + l].g_stale;
+            if (!same) break;
+            hpgen_advance_lanes(runs + b, h, steps, every, o, per_run,
+                                g_rec + b * per_run * HPGEN_NN, p_rec + b * per_run * HPGEN_D,
+                                st + b);
+        }
+    }
+    for (j = b; j < B; ++j)
+        hpgen_advance(runs + j, h, steps, every, o, g_rec + j * per_run * HPGEN_NN,
+                      p_rec + j * per_run * HPGEN_D, st + j);
+    for (j = 0; j < B; ++j) failed += st[j].code != HPGEN_OK;
+    return failed;
+}
+
+/* bodies per call of the lane-wise kernels */
+HPGEN_EXPORT long long hpgen_lanes(void) { return HPGEN_L; }
