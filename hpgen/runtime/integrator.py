@@ -48,9 +48,8 @@ class Integrator(BatchMixin, FirstStepMixin, SectionsMixin, RecordsMixin):
         self._cond_last = None     # (bytes of the last Hessian checked, its cond) (_cond)
         #: an open module's step vector (meta.json "open", hpgen.abi), None when closed
         self.open = meta.get("open")
-        #: simulate's fast path (closed modules on the C backend; hpgen.runtime.prologue)
-        self._prologue = (Prologue(self, DEFECT_MAX) if self.open is None and
-                          self.backend == "c" else None)
+        #: simulate's fast path (the C backend; hpgen.runtime.prologue)
+        self._prologue = Prologue(self, DEFECT_MAX) if self.backend == "c" else None
 
     def __repr__(self):
         return f"<hpgen Integrator {self.meta['module']} backend={self.backend}>"
@@ -410,8 +409,9 @@ class Integrator(BatchMixin, FirstStepMixin, SectionsMixin, RecordsMixin):
         ConvergenceError, DomainError
             A step failed; ``.partial`` is the Trajectory so far (partial=True).
         """
-        if self._prologue is not None and u is None and params is None:
-            traj = self._prologue.simulate(g0, h, steps, xi0, mu0, every, newton, t0)
+        if self._prologue is not None:
+            traj = self._prologue.simulate(g0, h, steps, xi0, mu0, every, newton, t0, u,
+                                           params)
             if traj is not None:
                 return traj
         return self._simulate(g0, h, steps, xi0, mu0, every, newton, u, params, t0)

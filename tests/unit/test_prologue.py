@@ -28,6 +28,7 @@ from hpgen.runtime import backends, newton
 from hpgen.runtime.integrator import COND_MAX, Integrator
 
 from _toy_step import integrator as toy_integrator
+from test_linearize_open import SPACECRAFT     # inputs, a runtime parameter, forces
 
 #: l not quadratic in xi and d2l/dxi2 depending on g: several Newton iterates, a new Hessian
 #: at each (the cond kept for the last Hessian must not carry over)
@@ -308,25 +309,35 @@ def test_kernel_calls_from_threads(cb):
     g, hv = np.eye(3).ravel(), np.array([0.05])
     zs = [rng.normal(size=3) for _ in range(200)]
     want = [[o.tobytes() for o in cb.call("update", z, g, z, hv)] for z in zs]
-    got, errors = {}, []
+    got = {}
 
     def work(i):
+        for _ in range(20):
+            for j, z in enumerate(zs):
+                r = [o.tobytes() for o in cb.call("update", z, g, z, hv)]
+                if r != want[j]:
+                    got[i] = j
+                    return
+
+    assert not in_threads(work, 4) and not got
+
+
+def in_threads(work, count) -> list:
+    """Run work(0), ..., work(count - 1) in as many threads; the exceptions they raised."""
+    errors = []
+
+    def guarded(i):
         try:
-            for _ in range(20):
-                for j, z in enumerate(zs):
-                    r = [o.tobytes() for o in cb.call("update", z, g, z, hv)]
-                    if r != want[j]:
-                        got[i] = j
-                        return
-        except Exception as exc:   # pragma: no cover
+            work(i)
+        except Exception as exc:   # noqa: BLE001 - returned to the caller
             errors.append(exc)
 
-    threads = [threading.Thread(target=work, args=(i,)) for i in range(4)]
+    threads = [threading.Thread(target=guarded, args=(i,)) for i in range(count)]
     for t in threads:
         t.start()
     for t in threads:
         t.join()
-    assert not errors and not got
+    return errors
 
 
 # ---- CBackend.simulate against the generic driver -----------------------------------------
@@ -370,8 +381,9 @@ def _traj_bits(tr) -> tuple:
     """Everything a Trajectory holds, as bytes / values (equal: bitwise the same run)."""
     arrays = tuple((a.tobytes(), a.shape, a.dtype.str, a.flags.c_contiguous, a.flags.writeable)
                    for a in (tr.t, tr.g, tr.mu))
+    inputs = None if tr.inputs is None else (tr.inputs.t0, tr.inputs.rows, tr.inputs.params)
     return arrays + (np.float64(tr.h).tobytes(), tr.every, tr.partial, tr.error,
-                     tr.newton_iterations, tr.jacobians, tr.integrator, tr.inputs, tr._obs)
+                     tr.newton_iterations, tr.jacobians, tr.integrator, inputs, tr._obs)
 
 
 def _run_outcome(fn, *args, **kw):
@@ -483,22 +495,14 @@ def test_fast_simulate_from_threads(compile_model):
         return _traj_bits(integ.simulate(g0, 0.05, 20, every=4, **kw))[:-9]
 
     want = [run(*s) for s in starts]
-    got, errors = {}, []
+    got = {}
 
     def work(j):
-        try:
-            for _ in range(5):
-                for k in range(j, len(starts), 2):
-                    got.setdefault(k, set()).add(run(*starts[k]))
-        except Exception as exc:     # noqa: BLE001 - reported below
-            errors.append(exc)
+        for _ in range(5):
+            for k in range(j, len(starts), 2):
+                got.setdefault(k, set()).add(run(*starts[k]))
 
-    threads = [threading.Thread(target=work, args=(j,)) for j in range(2)]
-    for t in threads:
-        t.start()
-    for t in threads:
-        t.join()
-    assert not errors
+    assert not in_threads(work, 2)
     assert all(got[k] == {want[k]} for k in range(len(starts)))
 
 
@@ -520,3 +524,42 @@ def test_plans_are_keyed_by_type_and_identity(compile_model):
     for k in range(40):                    # the dict stays bounded
         pro.plan(0.01 * (k + 1), 3, 1, None)
     assert len(pro.plans) <= 32
+
+
+def test_fast_simulate_of_an_open_module_is_the_generic_path(compile_model):
+    """Inputs held or per step, runtime parameters, t0, xi0 / mu0 starts, a failing run and
+    bad u / params: the fast path takes the valid calls and gives the generic path's
+    Trajectory (its StepInputs included) or error."""
+    integ = compile_model(SPACECRAFT, tableau="gauss2", tau="cay", rkmk="exact", backend="c")
+    rng = np.random.default_rng(8)
+    for steps in (0, 1, 9):
+        g0 = random_g(rng, 3)
+        xi0 = 0.5 * rng.normal(size=3)
+        mu0 = integ.legendre(g0, xi0, params={"c": 0.3})
+        per_step = (0.1 * rng.normal(size=(steps, 3)),) if steps else ()
+        for u in (np.full(3, 0.2), [0.1, 0.0, -0.1]) + per_step:
+            for params in (None, {"c": 0.3}):
+                for t0 in (0.0, 2.5):
+                    for start in ({"xi0": xi0}, {"mu0": mu0}):
+                        kw = dict(every=2, u=u, params=params, t0=t0, **start)
+                        fast = integ._prologue.simulate(g0, 0.05, steps, start.get("xi0"),
+                                                        start.get("mu0"), 2, None, t0, u,
+                                                        params)
+                        assert fast is not None
+                        want = _run_outcome(_generic, integ, g0, 0.05, steps, **kw)
+                        assert _run_outcome(integ.simulate, g0, 0.05, steps, **kw) == want
+                        assert ("ok", _traj_bits(fast)) == want
+                        assert (fast.inputs.t0, fast.inputs.rows, fast.inputs.params) == (
+                            t0, [list(r) for r in np.atleast_2d(u)], [0.1 if params is None
+                                                                     else 0.3])
+    g0, xi0 = np.eye(3), [0.2, 1.0, 3.0]
+    for kw in (dict(h=0.05, steps=4, u=[0.0] * 3), dict(h=50.0, steps=4, u=[0.0] * 3),
+               dict(h=0.3, steps=30, u=[5.0, 5.0, 5.0], newton=newton.NewtonOptions(maxit=3)),
+               dict(h=0.05, steps=4), dict(h=0.05, steps=4, u=[1.0, 2.0]),
+               dict(h=0.05, steps=4, u=np.zeros((2, 3))), dict(h=0.05, steps=4, u=[np.nan] * 3),
+               dict(h=0.05, steps=4, u=[0.0] * 3, params={"k": 1.0}),
+               dict(h=0.05, steps=4, u=[0.0] * 3, params=[1.0]),
+               dict(h=0.05, steps=4, u=[0.0] * 3, params={"c": np.inf}),
+               dict(h=0.05, steps=4, u=[0.0] * 3, t0=np.nan)):
+        assert _run_outcome(integ.simulate, g0, xi0=xi0, **kw) == _run_outcome(
+            _generic, integ, g0, xi0=xi0, **kw), kw
