@@ -63,7 +63,7 @@ class Plan:
         self.newton, self.opts = newton, integ._options(newton)
         self.copts = _Options.of(self.opts)
         self.copts_addr = ctypes.addressof(self.copts)
-        self.K = steps // every + 1
+        self.K = self.steps // self.every + 1
         _fits(self.K, integ.n * integ.n + integ.d, "simulate")
         # the times of the records for t0 = 0, in an immutable buffer: views of it handed to
         # Trajectories can never be made writeable
@@ -121,7 +121,7 @@ class _Thread:
 
 
 class Prologue:
-    """simulate's fast path for one Integrator (closed module, C backend)."""
+    """simulate's fast path for one Integrator of the C backend."""
 
     def __init__(self, integ, defect_max):
         b = integ._b
@@ -147,7 +147,7 @@ class Prologue:
         self.run_init.restype = None
         self.plans = {}
         self.last = _NO_PLAN
-        self.velocity_last = None        # (bytes of g flat and mu0, xi0)
+        self.velocity_last = None        # (bytes of g flat, mu0 and lv; xi0)
         self._tls = threading.local()
 
     def _thread(self) -> _Thread:
