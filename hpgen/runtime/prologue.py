@@ -136,7 +136,7 @@ class Prologue:
         # the start's kernels and hpgen_run_init through a PyDLL handle of the same library:
         # calls of well under a microsecond that keep the GIL (a CDLL call releases and takes
         # it back, 0.2-0.4 us each on a loaded machine); hpgen_advance releases it
-        py = ctypes.PyDLL(str(b.library))
+        py = ctypes.PyDLL(str(b.library), handle=b._lib._handle)     # (no second dlopen)
         self.fns = {}
         for k in ("defect", "legendre", "guess", "margin"):
             fn = getattr(py, f"hpgen_kernel_{k}")
