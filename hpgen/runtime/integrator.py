@@ -26,6 +26,7 @@ from .args import _array, _error, _fits, _int, _positive, _step_size
 from .initial import GroupElements
 from .inputs import check_params, check_t0, step_inputs
 from .newton import NewtonOptions
+from .prologue import Prologue
 from .batch import BatchMixin
 from .first_step import FirstStepMixin
 from .records import RecordsMixin
@@ -47,6 +48,8 @@ class Integrator(BatchMixin, FirstStepMixin, SectionsMixin, RecordsMixin):
         self._cond_last = None     # (bytes of the last Hessian checked, its cond) (_cond)
         #: an open module's step vector (meta.json "open", hpgen.abi), None when closed
         self.open = meta.get("open")
+        #: simulate's fast path (the C backend; hpgen.runtime.prologue)
+        self._prologue = Prologue(self, DEFECT_MAX) if self.backend == "c" else None
 
     def __repr__(self):
         return f"<hpgen Integrator {self.meta['module']} backend={self.backend}>"
@@ -406,6 +409,15 @@ class Integrator(BatchMixin, FirstStepMixin, SectionsMixin, RecordsMixin):
         ConvergenceError, DomainError
             A step failed; ``.partial`` is the Trajectory so far (partial=True).
         """
+        if self._prologue is not None:
+            traj = self._prologue.simulate(g0, h, steps, xi0, mu0, every, newton, t0, u,
+                                           params)
+            if traj is not None:
+                return traj
+        return self._simulate(g0, h, steps, xi0, mu0, every, newton, u, params, t0)
+
+    def _simulate(self, g0, h, steps, xi0, mu0, every, newton, u, params, t0):
+        """simulate's generic path (every module, backend and argument)."""
         h, steps, every, opts, gf, mu0, z0, inputs = self._prepare(
             g0, h, steps, xi0, mu0, every, newton, u, params, t0)
         _fits(steps // every + 1, self.n * self.n + self.d, "simulate")

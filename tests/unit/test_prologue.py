@@ -28,6 +28,7 @@ from hpgen.runtime import backends, newton
 from hpgen.runtime.integrator import COND_MAX, Integrator
 
 from _toy_step import integrator as toy_integrator
+from test_linearize_open import SPACECRAFT     # inputs, a runtime parameter, forces
 
 #: l not quadratic in xi and d2l/dxi2 depending on g: several Newton iterates, a new Hessian
 #: at each (the cond kept for the last Hessian must not carry over)
@@ -308,25 +309,35 @@ def test_kernel_calls_from_threads(cb):
     g, hv = np.eye(3).ravel(), np.array([0.05])
     zs = [rng.normal(size=3) for _ in range(200)]
     want = [[o.tobytes() for o in cb.call("update", z, g, z, hv)] for z in zs]
-    got, errors = {}, []
+    got = {}
 
     def work(i):
+        for _ in range(20):
+            for j, z in enumerate(zs):
+                r = [o.tobytes() for o in cb.call("update", z, g, z, hv)]
+                if r != want[j]:
+                    got[i] = j
+                    return
+
+    assert not in_threads(work, 4) and not got
+
+
+def in_threads(work, count) -> list:
+    """Run work(0), ..., work(count - 1) in as many threads; the exceptions they raised."""
+    errors = []
+
+    def guarded(i):
         try:
-            for _ in range(20):
-                for j, z in enumerate(zs):
-                    r = [o.tobytes() for o in cb.call("update", z, g, z, hv)]
-                    if r != want[j]:
-                        got[i] = j
-                        return
-        except Exception as exc:   # pragma: no cover
+            work(i)
+        except Exception as exc:   # noqa: BLE001 - returned to the caller
             errors.append(exc)
 
-    threads = [threading.Thread(target=work, args=(i,)) for i in range(4)]
+    threads = [threading.Thread(target=guarded, args=(i,)) for i in range(count)]
     for t in threads:
         t.start()
     for t in threads:
         t.join()
-    assert not errors and not got
+    return errors
 
 
 # ---- CBackend.simulate against the generic driver -----------------------------------------
@@ -363,3 +374,192 @@ def test_simulate_batch_setup_matches_single_runs():
         one = it.simulate(np.eye(3), 0.1, 6, mu0=mu, every=2)
         assert tr.g.tobytes() == one.g.tobytes() and tr.mu.tobytes() == one.mu.tobytes()
         assert tr.t.tobytes() == one.t.tobytes()
+
+
+# ---- simulate's fast path (hpgen.runtime.prologue) against the generic path ---------------
+def _traj_bits(tr) -> tuple:
+    """Everything a Trajectory holds, as bytes / values (equal: bitwise the same run)."""
+    arrays = tuple((a.tobytes(), a.shape, a.dtype.str, a.flags.c_contiguous, a.flags.writeable)
+                   for a in (tr.t, tr.g, tr.mu))
+    inputs = None if tr.inputs is None else (tr.inputs.t0, tr.inputs.rows, tr.inputs.params)
+    return arrays + (np.float64(tr.h).tobytes(), tr.every, tr.partial, tr.error,
+                     tr.newton_iterations, tr.jacobians, tr.integrator, inputs, tr._obs)
+
+
+def _run_outcome(fn, *args, **kw):
+    """('ok', _traj_bits) or the exception's type, message, step, iterations, residual bits
+    and its partial Trajectory's bits."""
+    try:
+        return "ok", _traj_bits(fn(*args, **kw))
+    except Exception as exc:            # noqa: BLE001 - every exception is compared
+        partial = getattr(exc, "partial", None)
+        r = getattr(exc, "residual", None)
+        return (type(exc).__name__, str(exc), getattr(exc, "step", None),
+                getattr(exc, "iterations", None),
+                None if r is None else np.float64(r).tobytes(),
+                None if partial is None else _traj_bits(partial)[:-9])
+
+
+def _generic(integ, g0, h, steps, xi0=None, mu0=None, every=1, *, newton=None, u=None,
+             params=None, t0=0.0):
+    return integ._simulate(g0, h, steps, xi0, mu0, every, newton, u, params, t0)
+
+
+def test_fast_simulate_is_the_generic_path(compiled):
+    """Random starts (xi0 and mu0), several h, steps, every, Newton settings and t0: the fast
+    path takes every call and gives bitwise the generic path's Trajectory."""
+    integ = compiled["c"]
+    rng = np.random.default_rng(11)
+    settings = [None, newton.NewtonOptions(simplified=False),
+                newton.NewtonOptions(tol=1e-10, predictor=False)]
+    for trial in range(6):
+        g0 = random_g(rng, integ.n)
+        xi0 = 0.5 * rng.normal(size=integ.d)
+        mu0 = integ.legendre(g0, xi0) + 0.01 * rng.normal(size=integ.d)
+        for steps, every in ((0, 1), (1, 1), (7, 3), (12, 12)):
+            h = [0.05, -0.1, 0.02][trial % 3]
+            nw = settings[trial % 3]
+            for start in ({"xi0": xi0}, {"mu0": mu0}, {"mu0": list(mu0)}):
+                for t0 in (0.0, 1.25):
+                    kw = dict(every=every, newton=nw, t0=t0, **start)
+                    fast = integ._prologue.simulate(g0, h, steps, start.get("xi0"),
+                                                    start.get("mu0"), every, nw, t0)
+                    assert fast is not None          # the common case takes the fast path
+                    want = _run_outcome(_generic, integ, g0, h, steps, **kw)
+                    assert _run_outcome(integ.simulate, g0, h, steps, **kw) == want
+                    assert ("ok", _traj_bits(fast)) == want
+
+
+def test_fast_simulate_failures_and_arguments_as_the_generic_path(compile_model):
+    """A step failing after the first (partial trajectory), a first step that needs
+    continuation or fails, and bad arguments: the same outcome as the generic path."""
+    integ = compile_model(HEAVY_TOP, tableau="gauss2", tau="cay", rkmk="exact", backend="c")
+    g0, xi0 = rotation(np.array([0.3, 0.2, 0.0])), [0.2, 1.0, 3.0]
+    late = newton.NewtonOptions(maxit=4)
+    out = _run_outcome(integ.simulate, g0, 0.3, 50, xi0=xi0, newton=late)
+    assert out[0] == "ConvergenceError" and out[2] == 1           # step 1: after the start
+    assert out == _run_outcome(_generic, integ, g0, 0.3, 50, xi0=xi0, newton=late)
+    nan_g = np.where(np.eye(3) > 0, np.nan, g0)
+    cases = [dict(h=h, steps=5, xi0=xi0) for h in (1.5, 3.0, 10.0, 50.0)] + [
+        dict(h=0.1, steps=5, xi0=xi0, newton=newton.NewtonOptions(maxit=1)),
+        dict(h=0.0, steps=3, xi0=xi0), dict(h=True, steps=3, xi0=xi0),
+        dict(h=0.1, steps=-1, xi0=xi0), dict(h=0.1, steps=3.0, xi0=xi0),
+        dict(h=0.1, steps=3, xi0=xi0, every=0), dict(h=0.1, steps=3),
+        dict(h=0.1, steps=3, xi0=xi0, mu0=xi0), dict(h=0.1, steps=3, xi0=[1.0, 2.0]),
+        dict(h=0.1, steps=3, xi0=[1.0, np.nan, 2.0]), dict(h=0.1, steps=3, xi0=[1e308] * 3),
+        dict(h=0.1, steps=3, mu0=[1.0, np.inf, 0.0]), dict(h=0.1, steps=3, xi0=[1j, 0, 0]),
+        dict(h=0.1, steps=3, xi0=xi0, newton="x"), dict(h=0.1, steps=3, xi0=xi0, t0=np.nan),
+        dict(h=0.1, steps=3, xi0=xi0, newton=newton.NewtonOptions(tol=-1.0)),
+        dict(h=0.1, steps=3, xi0=xi0, u=[1.0]), dict(h=0.1, steps=3, xi0=xi0, params={"a": 1}),
+        dict(h=0.1, steps=2**62, xi0=xi0), dict(h=0.1, steps=3, xi0=xi0, t0=True),
+        dict(h=np.float64(0.1), steps=np.int64(3), xi0=(0.2, 1, 3), t0=2),
+        dict(h=1, steps=3, xi0=xi0), dict(h=0.1, steps=3, mu0=[0.0, 0.0, 0.0])]
+    for kw in cases:
+        for g in (g0, 2 * g0, g0[:2], nan_g, g0.tolist(), g0.astype(np.float32)):
+            assert _run_outcome(integ.simulate, g, **kw) == _run_outcome(_generic, integ, g,
+                                                                         **kw), (kw, g)
+
+
+def test_fast_simulate_results_own_their_memory(compile_model):
+    """The records come out of per-thread scratch rows: results of earlier calls are not
+    changed by later ones (grown rows, runs longer than ROWS_MAX included), are read-only,
+    and the shared record times cannot be made writeable."""
+    from hpgen.runtime.prologue import ROWS_MAX
+    integ = compile_model(FREE_BODY, tableau="stormer-verlet", tau="cay", rkmk="truncated",
+                          backend="c")
+    rng = np.random.default_rng(3)
+    kept = []
+    for steps in (0, 3, 100, ROWS_MAX - 1, ROWS_MAX, ROWS_MAX + 5, 10, 2 * ROWS_MAX):
+        g0, mu0 = random_g(rng, 3), rng.normal(size=3)
+        tr = integ.simulate(g0, 0.05, steps, mu0=mu0)
+        assert _traj_bits(tr) == _traj_bits(_generic(integ, g0, 0.05, steps, mu0=mu0))
+        kept.append((tr, _traj_bits(tr)))
+    for tr, bits in kept:
+        assert _traj_bits(tr) == bits
+        for a in (tr.t, tr.g, tr.mu):
+            with pytest.raises(ValueError):
+                a[0] = 0.0
+        if len(tr) <= ROWS_MAX:             # times shared between calls: immutable
+            with pytest.raises(ValueError):
+                tr.t.flags.writeable = True
+
+
+def test_fast_simulate_from_threads(compile_model):
+    """Concurrent simulate calls (per-thread staging, shared plans) give the serial results."""
+    integ = compile_model(HEAVY_TOP, tableau="gauss2", tau="cay", rkmk="exact", backend="c")
+    rng = np.random.default_rng(5)
+    starts = [(random_g(rng, 3), rng.normal(size=3), k % 2) for k in range(40)]
+
+    def run(g0, v, mu):
+        kw = {"mu0": v} if mu else {"xi0": v}
+        return _traj_bits(integ.simulate(g0, 0.05, 20, every=4, **kw))[:-9]
+
+    want = [run(*s) for s in starts]
+    got = {}
+
+    def work(j):
+        for _ in range(5):
+            for k in range(j, len(starts), 2):
+                got.setdefault(k, set()).add(run(*starts[k]))
+
+    assert not in_threads(work, 2)
+    assert all(got[k] == {want[k]} for k in range(len(starts)))
+
+
+def test_plans_are_keyed_by_type_and_identity(compile_model):
+    """A plan is found again only for equal h, steps, every of the accepted types and the
+    same newton object: h=1 (int) or True never reuses h=1.0's plan (the generic path checks
+    them), and an equal but new NewtonOptions gets its own plan."""
+    integ = compile_model(FREE_BODY, tableau="stormer-verlet", tau="cay", rkmk="truncated",
+                          backend="c")
+    pro = integ._prologue
+    a = pro.plan(1.0, 3, 1, None)
+    assert pro.plan(1.0, 3, 1, None) is a and pro.plan(np.float64(1.0), np.int64(3), 1, None) is a
+    assert pro.plan(1, 3, 1, None) is None and pro.plan(True, 3, 1, None) is None
+    assert pro.plan(1.0, True, 1, None) is None and pro.plan(0.0, 3, 1, None) is None
+    o1, o2 = newton.NewtonOptions(maxit=7), newton.NewtonOptions(maxit=7)
+    p1 = pro.plan(1.0, 3, 1, o1)
+    assert pro.plan(1.0, 3, 1, o1) is p1 and pro.plan(1.0, 3, 1, o2) is not p1
+    assert pro.plan(1.0, 3, 1, o2).opts == p1.opts
+    for k in range(40):                    # the dict stays bounded
+        pro.plan(0.01 * (k + 1), 3, 1, None)
+    assert len(pro.plans) <= 32
+
+
+def test_fast_simulate_of_an_open_module_is_the_generic_path(compile_model):
+    """Inputs held or per step, runtime parameters, t0, xi0 / mu0 starts, a failing run and
+    bad u / params: the fast path takes the valid calls and gives the generic path's
+    Trajectory (its StepInputs included) or error."""
+    integ = compile_model(SPACECRAFT, tableau="gauss2", tau="cay", rkmk="exact", backend="c")
+    rng = np.random.default_rng(8)
+    for steps in (0, 1, 9):
+        g0 = random_g(rng, 3)
+        xi0 = 0.5 * rng.normal(size=3)
+        mu0 = integ.legendre(g0, xi0, params={"c": 0.3})
+        per_step = (0.1 * rng.normal(size=(steps, 3)),) if steps else ()
+        for u in (np.full(3, 0.2), [0.1, 0.0, -0.1]) + per_step:
+            for params in (None, {"c": 0.3}):
+                for t0 in (0.0, 2.5):
+                    for start in ({"xi0": xi0}, {"mu0": mu0}):
+                        kw = dict(every=2, u=u, params=params, t0=t0, **start)
+                        fast = integ._prologue.simulate(g0, 0.05, steps, start.get("xi0"),
+                                                        start.get("mu0"), 2, None, t0, u,
+                                                        params)
+                        assert fast is not None
+                        want = _run_outcome(_generic, integ, g0, 0.05, steps, **kw)
+                        assert _run_outcome(integ.simulate, g0, 0.05, steps, **kw) == want
+                        assert ("ok", _traj_bits(fast)) == want
+                        assert (fast.inputs.t0, fast.inputs.rows, fast.inputs.params) == (
+                            t0, [list(r) for r in np.atleast_2d(u)], [0.1 if params is None
+                                                                     else 0.3])
+    g0, xi0 = np.eye(3), [0.2, 1.0, 3.0]
+    for kw in (dict(h=0.05, steps=4, u=[0.0] * 3), dict(h=50.0, steps=4, u=[0.0] * 3),
+               dict(h=0.3, steps=30, u=[5.0, 5.0, 5.0], newton=newton.NewtonOptions(maxit=3)),
+               dict(h=0.05, steps=4), dict(h=0.05, steps=4, u=[1.0, 2.0]),
+               dict(h=0.05, steps=4, u=np.zeros((2, 3))), dict(h=0.05, steps=4, u=[np.nan] * 3),
+               dict(h=0.05, steps=4, u=[0.0] * 3, params={"k": 1.0}),
+               dict(h=0.05, steps=4, u=[0.0] * 3, params=[1.0]),
+               dict(h=0.05, steps=4, u=[0.0] * 3, params={"c": np.inf}),
+               dict(h=0.05, steps=4, u=[0.0] * 3, t0=np.nan)):
+        assert _run_outcome(integ.simulate, g0, xi0=xi0, **kw) == _run_outcome(
+            _generic, integ, g0, xi0=xi0, **kw), kw
