@@ -88,6 +88,10 @@ def check_u(open_meta, u, steps: int) -> list:
         raise ArgumentError(f"u is required: the model has {m} control input(s) ({names}); pass "
                          f"an array of shape ({m},) or (steps, {m})", field="u")
     a = np.asarray(u, dtype=object)
+    if a.ndim > 1 and steps == 0:
+        raise ArgumentError(f"u with one row per step needs steps >= 1 (a run of 0 steps still "
+                            f"records its start, which takes a constant u of shape ({m},))",
+                            field="u")
     shape = (m,) if a.ndim <= 1 else (steps, m)
     what = f"the inputs ({names}: ({m},) constant or ({steps}, {m}) one row per step)"
     a = _array(u, shape, "u", what)

@@ -120,6 +120,18 @@ def test_bad_inputs_u(modules, u, parts):
         assert part in str(e.value)
 
 
+@pytest.mark.parametrize("backend", ["python", "c"])
+def test_per_step_u_with_zero_steps(modules, backend):
+    """steps = 0 records the start, whose input a per-step u (0, m) does not hold: one line
+    (was an IndexError); a constant u works."""
+    vehicle = modules["vehicle" if backend == "python" else "vehicle_c"]
+    mu0 = [0.3, 1.0, 0.2, 1.0, 0.0, 0.5]
+    with pytest.raises(ArgumentError, match="steps >= 1") as e:
+        vehicle.simulate(np.eye(4), 0.05, 0, mu0=mu0, u=np.zeros((0, 1)))
+    assert e.value.field == "u" and "\n" not in str(e.value)
+    assert len(vehicle.simulate(np.eye(4), 0.05, 0, mu0=mu0, u=[0.5]).t) == 1
+
+
 def test_closed_modules_refuse_u_and_params(tmp_path):
     path = tmp_path / "closed.yaml"
     path.write_text(FREE_BODY.split("forces:")[0])
