@@ -223,8 +223,7 @@ def _common_velocity_step(group, lag, tau, tableau, Xi, N, Th, xi1, eq_eps, g, p
     at_X = lambda e: ca.substitute(e, ca.vertcat(*Xi, *Th, xi1),  # noqa: E731
                                    ca.vertcat(*[X] * s, *[ci * X for ci in c], X))
     M = ca.gradient(lag(g, X, t), X)
-    D_hX = group.dtau_inv(tau, h * X).T
-    residual, mu1, kick = p - ca.mtimes(D_hX, M), M, ca.SX.zeros(d)
+    residual, mu1, kick = p - group.dtau_inv_T_times(tau, h * X, M), M, ca.SX.zeros(d)
     for i in range(s):
         bf = at_X(ca.substitute(eq_eps[i], N[i], ca.SX.zeros(d)))        # b_i f_i(G^i, X)
         if c[i] == 1.0:
@@ -235,9 +234,9 @@ def _common_velocity_step(group, lag, tau, tableau, Xi, N, Th, xi1, eq_eps, g, p
         if c[i] == 0.0:
             residual -= hN
         else:
-            residual -= ca.mtimes(D_i - c[i] * D_hX, hN)
+            residual -= ca.mtimes(D_i - c[i] * group.dtau_inv(tau, h * X).T, hN)
             mu1 = mu1 - c[i] * hN
-    p1 = ca.mtimes(group.dtau_inv(tau, -h * X).T, mu1) + kick
+    p1 = group.dtau_inv_T_times(tau, -h * X, mu1) + kick
     g1 = ca.mtimes(g, group.tau(tau, h * X))
     taus = [ci * h * X for ci in c] + [h * X]
     return _finish(group, tau, X, (("Xi", 0, d),), residual, g1, p1, xi_hat, xi_hat, taus, h)

@@ -103,6 +103,11 @@ class LieGroup:
         """d x d matrix of y -> dtau_x(y), the inverse of dtau_inv(kind, x)."""
         raise NotImplementedError
 
+    def dtau_inv_T_times(self, kind: str, x, m):
+        """d-vector (dtau^{-1}_x)^T m, the map the Stormer-Verlet family's step applies to a
+        momentum: dtau_inv(kind, x).T m; a chart with a cheaper closed form overrides it."""
+        return ca.mtimes(self.dtau_inv(kind, x).T, m)
+
     def tau_margin(self, kind: str, x):
         """Scalar SX, > 0 while x is inside the domain where tau is a valid chart, else <= 0."""
         raise NotImplementedError

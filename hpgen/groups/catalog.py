@@ -45,7 +45,9 @@ def _max_abs(M):
 
 class TabulatedCharts(LieGroup):
     """tau, dtau_inv, dtau and tau_margin from the ``GroupCharts`` of the group's family in
-    ``hpgen.groups.maps.GROUP_CHARTS``; the charts it supports from ``hpgen.schemes.TAU``."""
+    ``hpgen.groups.maps.GROUP_CHARTS`` (and dtau_inv_T_times from
+    ``maps.DTAU_INV_T_TIMES`` where a closed form is tabulated); the charts it supports from
+    ``hpgen.schemes.TAU``."""
     family: str
 
     @property
@@ -64,6 +66,13 @@ class TabulatedCharts(LieGroup):
 
     def dtau(self, kind, x):
         return self._charts(kind).dtau(self, kind, x)
+
+    def dtau_inv_T_times(self, kind, x, m):
+        closed = maps.DTAU_INV_T_TIMES.get((self.family, kind))
+        if closed is None:
+            return super().dtau_inv_T_times(kind, x, m)
+        self.require_chart(kind)
+        return closed(x, m)
 
     def tau_margin(self, kind, x):
         return self._charts(kind).margin(self, kind, x)

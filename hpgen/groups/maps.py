@@ -192,6 +192,12 @@ def _so3_dcay_inv(w, W):
     return _I3 - W / 2 + ca.mtimes(w, w.T) / 4
 
 
+def so3_dcay_inv_T_times(w, m):
+    """(dcay^{-1}_w)^T m = (I - w^/2 + w w^T/4)^T m = m + (w x m)/2 + (w.m) w/4: 15
+    multiplications instead of forming the matrix (the hand-written Stormer-Verlet's form)."""
+    return m + ca.cross(w, m) / 2 + (ca.dot(w, m) / 4) * w
+
+
 def _so3_dcay(W, s):
     return (4 / (4 + s)) * (_I3 + W / 2)
 
@@ -400,6 +406,9 @@ class GroupCharts:
     dtau: Callable
     margin: Callable
 
+
+#: (family, chart) -> f(x, m) = (dtau^{-1}_x)^T m in closed form (LieGroup.dtau_inv_T_times)
+DTAU_INV_T_TIMES = {("SO3", "cay"): so3_dcay_inv_T_times}
 
 GROUP_CHARTS = {
     "R<n>": GroupCharts(rn_tau, rn_dtau_inv, rn_dtau, rn_margin),

@@ -20,7 +20,7 @@ import scipy.linalg as sla
 
 from hpgen.errors import ModelError
 from _mp_series import mp_series_function
-from hpgen.groups import group_from_spec, series
+from hpgen.groups import group_from_spec, maps, series
 
 GROUPS = ("R2", "SO2", "SO3", "SE2", "SE3", ("SO3", "R3"))
 CASES = [(g, k) for g in GROUPS for k in group_from_spec(list(g) if isinstance(g, tuple) else g)
@@ -124,6 +124,28 @@ def test_tau_on_group_inverse_and_exp(spec, kind):
         if kind == "exp":
             ref = sla.expm(_ev(F["hat"], x)[0])
             assert np.max(np.abs(T - ref)) < 1e-14, (x, np.max(np.abs(T - ref)))
+
+
+@pytest.mark.parametrize("spec,kind", CASES)
+def test_dtau_inv_T_times_is_the_transposed_matrix_times_m(spec, kind):
+    """dtau_inv_T_times (what the Stormer-Verlet family's step applies to momenta) against
+    dtau_inv(x).T m: exactly the product where no closed form is tabulated, else to a few
+    ulps of |m| (1 + |x|)^2 (the closed form m + (x x m)/2 + (x.m) x/4 of SO3's Cayley chart
+    sums the same terms in another order)."""
+    G = _group(spec)
+    x, m = ca.SX.sym("x", G.d), ca.SX.sym("m", G.d)
+    f = ca.Function("f", [x, m], [G.dtau_inv_T_times(kind, x, m),
+                                  ca.mtimes(G.dtau_inv(kind, x).T, m)])
+    closed = (G.family if hasattr(G, "family") else None, kind) in maps.DTAU_INV_T_TIMES
+    rng = np.random.default_rng(3)
+    for x0 in _points(spec, kind):
+        m0 = rng.standard_normal(G.d) * 10.0
+        a, b = _ev(f, x0, m0)
+        if closed:
+            scale = np.max(np.abs(m0)) * (1.0 + np.max(np.abs(x0))) ** 2
+            assert np.max(np.abs(a - b)) <= 8 * np.finfo(float).eps * scale, (x0, a - b)
+        else:
+            assert np.array_equal(a, b), (spec, kind, x0)
 
 
 @pytest.mark.parametrize("spec,kind", CASES)
