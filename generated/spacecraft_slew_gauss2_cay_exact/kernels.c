@@ -11928,13 +11928,12 @@ static double hpgen_norm_inf(const double* x, int n) {
     return m;
 }
 
-/* every x_i finite: the sum of the entries is finite iff every entry is (unless it
-   overflows), one test instead of one branch per entry on the common path */
+/* every x_i finite: one test per entry. The tests are independent and their branches
+   predictable, so they cost a few instructions each; a running sum of the entries (one test)
+   was slower: its n dependent additions delay the step (docs/performance.md, "Against
+   hand-written C") */
 static int hpgen_all_finite(const double* x, int n) {
-    double s = 0.0;
     int i;
-    for (i = 0; i < n; ++i) s += x[i];
-    if (s - s == 0.0) return 1;
     for (i = 0; i < n; ++i) if (!isfinite(x[i])) return 0;
     return 1;
 }
@@ -11958,24 +11957,25 @@ static void hpgen_lu_apply(const double* A, const int* piv, double* b) {
 
 #if HPGEN_NZ <= 3
 /* NZ <= 3: J^{-1} by cofactors (adjugate / det); Cramer's rule is accurate to a few ulps
-   times cond(J) here. A <- J^{-1} and b <- J^{-1} b (the adjugate applied to b alongside
-   the division). Returns 1 if det J is zero or not finite (then so is some entry of J:
-   every entry enters det). */
+   times cond(J) here. b <- J^{-1} b (the adjugate applied to b alongside the division) and,
+   with keep, A <- J^{-1} (else A is left as it was: full Newton does not need J^{-1}).
+   Returns 1 if det J is zero or not finite (then so is some entry of J: every entry enters
+   det). */
 static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
 #if HPGEN_NZ == 1
     double r;
     if (!(A[0] != 0.0) || !isfinite(A[0])) return 1;
     r = 1.0 / A[0];
-    A[0] = r;
     b[0] *= r;
+    if (keep) A[0] = r;
 #elif HPGEN_NZ == 2
     const double a = A[0], c = A[1], bb = A[2], d = A[3], det = a * d - bb * c;
     const double x0 = d * b[0] - bb * b[1], x1 = a * b[1] - c * b[0];
     double r;
     if (!(det != 0.0) || !isfinite(det)) return 1;
     r = 1.0 / det;
-    A[0] = d * r; A[2] = -bb * r; A[1] = -c * r; A[3] = a * r;
     b[0] = x0 * r; b[1] = x1 * r;
+    if (keep) { A[0] = d * r; A[2] = -bb * r; A[1] = -c * r; A[3] = a * r; }
 #else
     /* J[i][j] = A[i + 3 j]; (J^{-1})_ij = C_ji / det, C the cofactors */
     const double j00 = A[0], j10 = A[1], j20 = A[2], j01 = A[3], j11 = A[4], j21 = A[5],
@@ -11993,11 +11993,13 @@ static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
     if (!(det != 0.0) || !isfinite(det)) return 1;
     r = 1.0 / det;
     b[0] = x0 * r; b[1] = x1 * r; b[2] = x2 * r;
-    A[0] = c00 * r; A[1] = c01 * r; A[2] = c02 * r;
-    A[3] = c10 * r; A[4] = c11 * r; A[5] = c12 * r;
-    A[6] = c20 * r; A[7] = c21 * r; A[8] = c22 * r;
+    if (keep) {
+        A[0] = c00 * r; A[1] = c01 * r; A[2] = c02 * r;
+        A[3] = c10 * r; A[4] = c11 * r; A[5] = c12 * r;
+        A[6] = c20 * r; A[7] = c21 * r; A[8] = c22 * r;
+    }
 #endif
-    (void)piv; (void)keep;
+    (void)piv;
     return 0;
 }
 #else
@@ -12151,6 +12153,45 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
     return HPGEN_NO_CONVERGENCE;
 }
 
+/* Full Newton (o->simplified = 0): hpgen_newton's iteration, convergence tests and results
+   ((z, status, *iters, *rnorm, *jacs += iterations) bitwise), in a loop of its own without
+   the simplified-Newton bookkeeping: J in a local array (never kept), the counters in locals,
+   and F's norm taken once, at the end. A non-finite F is caught after the solve, where it
+   makes dz non-finite (dz = J^{-1} F: every F_i enters some dz_j with a nonzero factor of
+   J^{-1}, or as inf * 0 = NaN): then F is tested and, if it is the culprit, z is left at the
+   iterate F was evaluated at, as in hpgen_newton. */
+static int hpgen_newton_full(const double* g, const double* p, const double* hv, double* z,
+                             const hpgen_options* o, long long* iters, long long* jacs,
+                             double* rnorm) {
+    double F[HPGEN_NZ], Fz[HPGEN_NZ], J[HPGEN_NZ * HPGEN_NZ], dprev = HUGE_VAL;
+    const double tol = o->tol;
+    const long long maxit = o->maxit;
+    long long it;
+    int i, piv[HPGEN_NZ], evaluated = 0, code = HPGEN_NO_CONVERGENCE;
+    for (it = 1; it <= maxit; ++it) {
+        double dn, zn;
+        if (hpgen_k_residual_jacobian(z, g, p, hv, F, J)) { code = HPGEN_NONFINITE; break; }
+        memcpy(Fz, F, sizeof F);                  /* F(z), for *rnorm */
+        evaluated = 1;
+        if (hpgen_lu_factor_solve(J, piv, F, 0)) { code = HPGEN_NONFINITE; break; }
+        dn = hpgen_norm_inf(F, HPGEN_NZ);
+        if (!isfinite(dn) && !hpgen_all_finite(Fz, HPGEN_NZ)) { code = HPGEN_NONFINITE; break; }
+        for (i = 0; i < HPGEN_NZ; ++i) z[i] -= F[i];
+        zn = hpgen_norm_inf(z, HPGEN_NZ);
+        if (!isfinite(dn) || !isfinite(zn)) { code = HPGEN_NONFINITE; break; }
+        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)) {
+            code = HPGEN_OK; break;
+        }
+        if (dn <= tol * (1.0 + zn)) { code = HPGEN_OK; break; }
+        dprev = dn;
+    }
+    if (it > maxit) it = maxit;
+    *iters = it;
+    *jacs += it;
+    *rnorm = evaluated ? hpgen_norm_inf(Fz, HPGEN_NZ) : NAN;
+    return code;
+}
+
 /* One step of a run: margin(z, h) > 0 at the start (check_start), Newton from z (in/out),
    margin(z, h) > 0 at the solution, then update -> (g1, p1); with_g = 0: update_p -> p1
    only (g1 untouched). */
@@ -12167,7 +12208,12 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
         *iters = 0; *rnorm = NAN;
         return HPGEN_DOMAIN;
     }
-    code = hpgen_newton(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm);
+    if (o->simplified) {
+        code = hpgen_newton(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm);
+    } else {
+        *lu_valid = 0;                     /* full Newton keeps no J^{-1} */
+        code = hpgen_newton_full(g, p, hv, z, o, iters, jacs, rnorm);
+    }
     /* a Newton failure is reported as such (wherever its last iterate went): DOMAIN is a
        converged solution outside tau's domain only */
     if (code != HPGEN_OK) { *lu_valid = 0; return code; }
