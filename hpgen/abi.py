@@ -179,8 +179,12 @@ DEFAULT_MAXIT = 50
 #: round-off floor: stop when |dz| stopped decreasing while |dz| <= ROUNDOFF_FLOOR (1 + |z|)
 ROUNDOFF_FLOOR = 1e-11
 #: simplified Newton: a contraction rate |dz_k| / |dz_{k-1}| above this refreshes J (or,
-#: with a J fresh from this step, switches the step to full Newton)
-THETA_MAX = 0.05
+#: with a J fresh from this step, switches the step to full Newton). A refresh (J and its
+#: inverse) costs 15-25 simplified iterations (residual + J^{-1} F) on the shipped Gauss
+#: schemes: 0.2 trades iterations for refreshes (heavy top gauss3 h = 0.1: 6.6 -> 9.4
+#: it/step, 0.50 -> 0.19 J/step, 16 % less time; docs/performance.md). At most
+#: log(1e-15) / log(0.2) = 22 iterations from an O(1) start error, within DEFAULT_MAXIT.
+THETA_MAX = 0.2
 #: simplified Newton stops when its error estimate is <= SIMPLIFIED_TOL tol (1 + |z|)
 SIMPLIFIED_TOL = 0.01
 #: kernels.py ITERATE (the Python backend's fused simplified iterates, hpgen.codegen.pyiterate)
