@@ -25,7 +25,8 @@ from dataclasses import dataclass
 
 #: version of the exported C API of kernels.c (hpgen_dims()[0]); checked when it is loaded
 #: (4: hpgen_advance_batch_lanes and hpgen_lanes, the lane-wise ensembles, where emitted)
-ABI_VERSION = 4
+#: (5: hpgen_run holds the predictor offsets dz0..dz2 instead of zprev, zprev2)
+ABI_VERSION = 5
 #: version of meta.json's layout; the loader refuses any other (recompile the module)
 #: (3: "group", the group's name, e.g. "SO3" or "[SO3, R3]")
 META_FORMAT = 3
