@@ -16,13 +16,14 @@ from .newton import (_INF, _NAN, Kernels, NewtonMemory, NewtonOptions, _floats, 
 
 class Run:
     """A run in progress (the C backend's ``hpgen_run``): state (g_k, p_k) flat, the last
-    solution z, the two before (zprev, zprev2: predictor; have_prev of them valid), the Newton
-    memory and the steps done k; vectors are lists of Python floats."""
+    solution z, the predictor's offsets dz = [dz_{k-1}, dz_{k-2}, dz_{k-3}] (newest first,
+    have_prev = len(dz) <= 3 of them; see _run_step), the Newton memory and the steps done k;
+    vectors are lists of Python floats."""
 
     def __init__(self, g0, p0, z0, inputs=None):
         self.g, self.p, self.z = _floats(g0), _floats(p0), _floats(z0)
         self.inputs = inputs     # an open module's StepInputs (hpgen.runtime.inputs) or None
-        self.zprev = self.zprev2 = None
+        self.dz = []
         self.have_prev = 0
         self.memory = NewtonMemory()
         self.k = 0
@@ -33,13 +34,12 @@ class Run:
         """Every field as float64 / int64 arrays (a checkpoint: from_arrays of them continues
         bitwise as this run would). The kept J^{-1} is a tuple of floats (printed solver) or
         an (nz, nz) array (numpy solver); its dimension tells which."""
-        lu, opt = self.memory.lu, (self.zprev, self.zprev2, self.s)
-        flags = [self.k, self.have_prev, int(self.g_stale), -1 if lu is None else np.ndim(lu)]
-        flags += [int(v is not None) for v in opt]
+        lu = self.memory.lu
+        flags = [self.k, self.have_prev, int(self.g_stale), -1 if lu is None else np.ndim(lu),
+                 int(self.s is not None)]
         return {"g": np.array(self.g, dtype=np.float64), "p": np.array(self.p, dtype=np.float64),
                 "z": np.array(self.z, dtype=np.float64),
-                "zprev": np.array(self.zprev or [], dtype=np.float64),
-                "zprev2": np.array(self.zprev2 or [], dtype=np.float64),
+                "dz": np.array(self.dz, dtype=np.float64).reshape(len(self.dz), len(self.z)),
                 "s": np.array([self.s or 0.0], dtype=np.float64),
                 "lu": np.array([] if lu is None else lu, dtype=np.float64),
                 "flags": np.array(flags, dtype=np.int64)}
@@ -47,11 +47,9 @@ class Run:
     @classmethod
     def from_arrays(cls, a: dict) -> "Run":
         """The run to_arrays saved (Python floats again: bitwise the same values)."""
-        k, have_prev, g_stale, lu_dim, has_zprev, has_zprev2, has_s = (
-            int(v) for v in a["flags"])
+        k, have_prev, g_stale, lu_dim, has_s = (int(v) for v in a["flags"])
         run = cls(a["g"].tolist(), a["p"].tolist(), a["z"].tolist())
-        run.zprev = a["zprev"].tolist() if has_zprev else None
-        run.zprev2 = a["zprev2"].tolist() if has_zprev2 else None
+        run.dz = a["dz"].tolist()
         run.s = float(a["s"][0]) if has_s else None
         run.k, run.have_prev, run.g_stale = k, have_prev, bool(g_stale)
         lu = a["lu"]
@@ -66,21 +64,37 @@ def new_status() -> dict:
     return {name: (0.0 if kind == "d" else 0) for name, kind in STATUS_FIELDS}
 
 
+def predictor_base(kern: Kernels, g, p, hv, open_module: bool) -> list:
+    """G(g, p) = guess(velocity_step(g, p, 0), g, p, hv) like ``hpgen_predictor_base`` in C:
+    the guess kernel at one Newton step of the Legendre transform from xi = 0 (an open
+    module's velocity_step also takes hv)."""
+    extra = (hv,) if open_module else ()
+    xi = kern.velocity_step(g, p, [0.0] * len(p), *extra)[0]
+    return kern.guess(xi, g, p, hv)[0]
+
+
 def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOptions, st,
               with_g=True):
     """One step of ``run`` like ``hpgen_run_step`` in C: predictor, step, run moved on success
     (with_g False: p only, g kept); st's counters updated (iterations, residual,
-    total_iterations, jacobians; code and step on failure). Returns the status code."""
-    # start: the polynomial through the last solutions, extrapolated one step (quadratic
-    # 3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before)
-    if opts.predictor and run.have_prev >= 2:
-        zs = [3.0 * (a - b) + c for a, b, c in zip(run.z, run.zprev, run.zprev2)]
-    elif opts.predictor and run.have_prev == 1:
-        zs = [2.0 * a - b for a, b in zip(run.z, run.zprev)]
-    else:
-        zs = run.z
+    total_iterations, jacobians; code and step on failure). Returns the status code.
+
+    Predictor (kernels.c.j2, hpgen_run_step): z_j = G_j + dz_j with G_j = predictor_base at
+    step j's start; the start is G_k plus the polynomial through the last offsets dz
+    extrapolated one step (quadratic 3 (dz_{k-1} - dz_{k-2}) + dz_{k-3} once three exist,
+    then linear, constant before)."""
     if run.inputs is not None:           # an open module: hv = [h, t_k, u_k, params]
         hv = run.inputs.hv(hv[0], run.k)
+    G = predictor_base(kern, run.g, run.p, hv, run.inputs is not None)
+    dz = run.dz
+    if opts.predictor and len(dz) >= 3:
+        zs = [a + (3.0 * (b - c) + d) for a, b, c, d in zip(G, dz[0], dz[1], dz[2])]
+    elif opts.predictor and len(dz) == 2:
+        zs = [a + (2.0 * b - c) for a, b, c in zip(G, dz[0], dz[1])]
+    elif opts.predictor and len(dz) == 1:
+        zs = [a + b for a, b in zip(G, dz[0])]
+    else:
+        zs = run.z
     first = run.k == 0
     # the first step starts from the crude guess kernel: full Newton
     code, g1, p1, zs, it, r, jacs = step_lists(kern, run.g, run.p, hv, zs,
@@ -99,9 +113,9 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
     if code != OK:
         st.update(code=code, step=run.k)
         return code
-    run.zprev2, run.zprev, run.z = run.zprev, run.z, zs
-    if run.have_prev < 2:
-        run.have_prev += 1
+    run.dz = [[a - b for a, b in zip(zs, G)]] + dz[:2]
+    run.have_prev = len(run.dz)
+    run.z = zs
     run.g, run.p = g1, p1
     run.k += 1
     return OK

@@ -17,8 +17,8 @@ Non-finite F, J or z, or an exactly singular J, give code NONFINITE. A first ste
 has margin(z, h) <= 0 is DOMAIN at once (h too large for the chart). After convergence
 margin(z, h) > 0 else DOMAIN; a failed Newton is NO_CONVERGENCE or NONFINITE wherever its
 iterates went (a divergence is not a domain violation). Steps after the first start from the
-previous solution z_k, or with options.predictor from the extrapolation of the last
-solutions: 2 z_k - z_{k-1} after one step, 3 (z_k - z_{k-1}) + z_{k-2} after two or more; a
+previous solution z_k, or with options.predictor from the predictor of hpgen.runtime.loop
+(the guess kernel at the state plus the extrapolated offsets of the last solutions from it); a
 predicted start that fails (Newton diverged, or converged outside the chart) is retried from
 z_k before the failure is reported (hpgen.runtime.loop).
 
@@ -162,19 +162,22 @@ def linear_solver(n: int, printed=None) -> LinearSolver:
 class Kernels:
     """The kernels the Newton loop calls, on lists of Python floats (``kernels.py`` RAW):
     name(*args) -> list of output lists. residual_jacobian may be None (then residual and
-    jacobian are called in turn); update and margin are needed by step_lists only. Holds the
-    linear solver for nz (linear_solver) and, optionally, the module's ITERATE (the
-    simplified iterates with a kept J^{-1}, residual and linear algebra fused: solve's
-    arithmetic, printed by hpgen.codegen.pyiterate; it needs the printed linear solver)."""
+    jacobian are called in turn); update and margin are needed by step_lists only, guess and
+    velocity_step by the run loop's predictor (hpgen.runtime.loop). Holds the linear solver
+    for nz (linear_solver) and, optionally, the module's ITERATE (the simplified iterates
+    with a kept J^{-1}, residual and linear algebra fused: solve's arithmetic, printed by
+    hpgen.codegen.pyiterate; it needs the printed linear solver)."""
     __slots__ = ("residual", "jacobian", "residual_jacobian", "update", "margin", "linear",
-                 "nz", "update_p", "iterate", "iterate_full")
+                 "nz", "update_p", "iterate", "iterate_full", "guess", "velocity_step")
 
     def __init__(self, nz, residual, jacobian, residual_jacobian=None, update=None,
-                 margin=None, linear=None, update_p=None, iterate=None, iterate_full=None):
+                 margin=None, linear=None, update_p=None, iterate=None, iterate_full=None,
+                 guess=None, velocity_step=None):
         self.nz = nz
         self.residual, self.jacobian = residual, jacobian
         self.residual_jacobian = residual_jacobian
         self.update, self.margin, self.update_p = update, margin, update_p
+        self.guess, self.velocity_step = guess, velocity_step
         self.linear = linear_solver(nz, linear)
         self.iterate = iterate if linear is not None else None
         self.iterate_full = iterate_full if linear is not None else None
@@ -185,7 +188,7 @@ class Kernels:
         iterate_full: its ITERATE and ITERATE_FULL or None."""
         return cls(nz, raw["residual"], raw["jacobian"], raw.get("residual_jacobian"),
                    raw.get("update"), raw.get("margin"), linear, raw.get("update_p"),
-                   iterate, iterate_full)
+                   iterate, iterate_full, raw.get("guess"), raw.get("velocity_step"))
 
 
 def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory):
