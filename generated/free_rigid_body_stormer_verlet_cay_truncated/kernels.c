@@ -3232,7 +3232,7 @@ CASADI_SYMBOL_EXPORT int step_partials_work_bytes(casadi_int *sz_arg, casadi_int
 #define HPGEN_EXPORT
 #endif
 
-#define HPGEN_ABI 4
+#define HPGEN_ABI 5
 #define HPGEN_N 3
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 #define HPGEN_D 3
@@ -3254,7 +3254,7 @@ CASADI_SYMBOL_EXPORT int step_partials_work_bytes(casadi_int *sz_arg, casadi_int
 #define HPGEN_ROUNDOFF_FLOOR 1e-11
 /* simplified Newton: a contraction rate |dz_k| / |dz_{k-1}| above this refreshes the Jacobian
    (or, with a Jacobian fresh from this step, switches the step to full Newton) */
-#define HPGEN_THETA_MAX 0.05
+#define HPGEN_THETA_MAX 0.2
 /* simplified Newton stops when its error estimate is below this * tol * (1 + |z|) */
 #define HPGEN_SIMPLIFIED_TOL 0.01
 
@@ -3272,7 +3272,7 @@ typedef struct hpgen_options {
     double tol;                  /* converged when |dz| <= tol (1 + |z|), inf-norms */
     long long maxit;             /* Newton iterations per step, >= 1 */
     long long simplified;        /* 1: keep the Jacobian's LU across iterations and steps */
-    long long predictor;         /* 1: start step k+1 from the extrapolated last solutions (else z_k) */
+    long long predictor;         /* 1: start step k+1 from the predictor of hpgen_run_step (else z_k) */
 } hpgen_options;
 
 /* A run in progress: the state, the Newton start and the Newton memory. Advancing a run by
@@ -3280,12 +3280,13 @@ typedef struct hpgen_options {
 typedef struct hpgen_run {
     double g[HPGEN_NN], p[HPGEN_D];  /* (g_k, p_k) */
     double z[HPGEN_NZ];              /* solution of the last step (or the initial guess) */
-    double zprev[HPGEN_NZ];          /* solutions of the two steps before (predictor) */
-    double zprev2[HPGEN_NZ];
+    double dz0[HPGEN_NZ];            /* predictor: z_j - G_j of the last three steps j = k-1, */
+    double dz1[HPGEN_NZ];            /* k-2, k-3 (G_j the guess at step j's start, see */
+    double dz2[HPGEN_NZ];            /* hpgen_run_step) */
     double lu[HPGEN_NZ * HPGEN_NZ];  /* J^{-1} of the last Jacobian (simplified Newton) */
     int piv[HPGEN_NZ];
     long long k;                     /* steps done */
-    long long have_prev;             /* how many of zprev, zprev2 are valid (0, 1, 2) */
+    long long have_prev;             /* how many of dz0, dz1, dz2 are valid (0..3) */
     long long lu_valid;              /* lu holds J^{-1} */
     double s;                        /* section(g_k, p_k), when s_valid */
     long long s_valid;
@@ -4141,21 +4142,37 @@ HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, d
     return r->k;
 }
 
+/* G(g, p) = guess(velocity_step(g, p, 0), g, p, h): the guess kernel at one Newton step of
+   the Legendre transform from xi = 0 (the velocity itself when l is quadratic in xi), a smooth
+   function of the state that carries the leading order of the solution. */
+static void hpgen_predictor_base(const double* g, const double* p, const double* hv, double* G) {
+    double x0[HPGEN_D], xi[HPGEN_D];
+    memset(x0, 0, sizeof x0);
+    hpgen_k_velocity_step(g, p, x0, xi);
+    hpgen_k_guess(xi, g, p, hv, G);
+}
+
 /* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
    success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for the steps
    after the first, full (o with full Newton) for the first. Updates the counters of st;
-   returns the status code. */
+   returns the status code.
+   Predictor: z_k = G_k + dz_k with G_k = hpgen_predictor_base(g_k, p_k) (exact in p, O(1))
+   and dz_k = z_k - G_k small (O(h)) and smooth in k; the start is G_k plus the polynomial
+   through the last dz extrapolated one step (quadratic 3 (dz_{k-1} - dz_{k-2}) + dz_{k-3}
+   once three exist, linear, then constant before). Extrapolating z itself (the predictor
+   before) left errors 5-7x larger on the heavy top (docs/performance.md). */
 static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
                           const hpgen_options* full, hpgen_status* st, int with_g) {
-    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], res;
+    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], G[HPGEN_NZ], res;
     long long it;
     int i, code, predicted = o->predictor && r->have_prev >= 1;
-    /* start: the polynomial through the last solutions, extrapolated one step (quadratic
-       3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before) */
-    if (o->predictor && r->have_prev >= 2)
-        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 3.0 * (r->z[i] - r->zprev[i]) + r->zprev2[i];
+    hpgen_predictor_base(r->g, r->p, hv, G);    /* (kept up to date with or without o->predictor) */
+    if (o->predictor && r->have_prev >= 3)
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = G[i] + (3.0 * (r->dz0[i] - r->dz1[i]) + r->dz2[i]);
+    else if (o->predictor && r->have_prev == 2)
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = G[i] + (2.0 * r->dz0[i] - r->dz1[i]);
     else if (o->predictor && r->have_prev == 1)
-        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 2.0 * r->z[i] - r->zprev[i];
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = G[i] + r->dz0[i];
     else
         for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
     /* the first step starts from the crude guess kernel: full Newton */
@@ -4173,10 +4190,11 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     st->iterations = it;
     st->residual = res;
     if (code != HPGEN_OK) { st->code = code; st->step = r->k; return code; }
-    memcpy(r->zprev2, r->zprev, sizeof r->z);
-    memcpy(r->zprev, r->z, sizeof r->z);
+    memcpy(r->dz2, r->dz1, sizeof r->z);
+    memcpy(r->dz1, r->dz0, sizeof r->z);
+    for (i = 0; i < HPGEN_NZ; ++i) r->dz0[i] = zs[i] - G[i];
+    if (r->have_prev < 3) r->have_prev += 1;
     memcpy(r->z, zs, sizeof r->z);
-    if (r->have_prev < 2) r->have_prev += 1;
     if (with_g) memcpy(r->g, g1, sizeof g1);
     memcpy(r->p, p1, sizeof p1);
     r->k += 1;
@@ -4184,7 +4202,7 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
 }
 
 /* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
-   solution, or from the extrapolation of the last three). The state after global step k is
+   solution, or from the predictor of hpgen_run_step). The state after global step k is
    recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
    sizes them for the records falling in this call). Stops at the first failed step (the run
    keeps the last good state). Returns the steps done in this call. */
@@ -4410,7 +4428,7 @@ HPGEN_EXPORT long long hpgen_advance_batch(hpgen_run* runs, long long B, double 
 
 /* For k = 0..K-1: Newton on step k from the record (g_k, p_k) = (g_rec + k NN,
    p_rec + k D): step 0 by full Newton from z (in/out: z_0 in, the last solution out), step
-   k > 0 from the predictor of hpgen_run_step (o->predictor) with o's Newton, whose simplified
+   k > 0 from the extrapolation of z_{k-1}, z_{k-2}, z_{k-3} (o->predictor) with o's Newton, whose simplified
    iterations use J^{-1} of the previous step's converged z; dev[k] = max |update(z_k) -
    record k+1| (the caller checks that the records are this module's steps). At the
    converged z_k: J = jacobian(z_k) inverted once (and kept as the next step's Newton
@@ -4436,7 +4454,8 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
         const double* p = p_rec + k * HPGEN_D;
         double* Ak = A + k * S * S;
         double m = 0.0;
-        /* the start: the extrapolation of hpgen_run_step through z_{k-1}, z_{k-2}, z_{k-3} */
+        /* the start: the extrapolation through z_{k-1}, z_{k-2}, z_{k-3} (quadratic, as
+           hpgen_run_step's predictor before it extrapolated z - G instead) */
         memcpy(zlast, z, sizeof zlast);
         if (o->predictor && k >= 3)
             for (i = 0; i < HPGEN_NZ; ++i) z[i] = 3.0 * (z[i] - zprev[i]) + zprev2[i];
@@ -4968,29 +4987,32 @@ static void hpgen_lane_newton(const double* g, const double* p, const double* hv
 
 /* lane l <-> run r: the state hpgen_run_step reads and writes */
 static void hpgen_lane_gather(const hpgen_run* r, int l, double* g, double* p, double* z,
-                              double* zp, double* zp2, long long* hp, long long* k) {
+                              double* d0, double* d1, double* d2, long long* hp,
+                              long long* k) {
     int i;
     for (i = 0; i < HPGEN_NN; ++i) g[i * HPGEN_L + l] = r->g[i];
     for (i = 0; i < HPGEN_D; ++i) p[i * HPGEN_L + l] = r->p[i];
     for (i = 0; i < HPGEN_NZ; ++i) {
         z[i * HPGEN_L + l] = r->z[i];
-        zp[i * HPGEN_L + l] = r->zprev[i];
-        zp2[i * HPGEN_L + l] = r->zprev2[i];
+        d0[i * HPGEN_L + l] = r->dz0[i];
+        d1[i * HPGEN_L + l] = r->dz1[i];
+        d2[i * HPGEN_L + l] = r->dz2[i];
     }
     hp[l] = r->have_prev;
     k[l] = r->k;
 }
 
 static void hpgen_lane_scatter(hpgen_run* r, int l, const double* g, const double* p,
-                               const double* z, const double* zp, const double* zp2,
-                               const long long* hp, const long long* k) {
+                               const double* z, const double* d0, const double* d1,
+                               const double* d2, const long long* hp, const long long* k) {
     int i;
     for (i = 0; i < HPGEN_NN; ++i) r->g[i] = g[i * HPGEN_L + l];
     for (i = 0; i < HPGEN_D; ++i) r->p[i] = p[i * HPGEN_L + l];
     for (i = 0; i < HPGEN_NZ; ++i) {
         r->z[i] = z[i * HPGEN_L + l];
-        r->zprev[i] = zp[i * HPGEN_L + l];
-        r->zprev2[i] = zp2[i * HPGEN_L + l];
+        r->dz0[i] = d0[i * HPGEN_L + l];
+        r->dz1[i] = d1[i * HPGEN_L + l];
+        r->dz2[i] = d2[i * HPGEN_L + l];
     }
     r->have_prev = hp[l];
     r->k = k[l];
@@ -5002,7 +5024,8 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
                                 const hpgen_options* o, long long per_run, double* g_rec,
                                 double* p_rec, hpgen_status* st) {
     double g[HPGEN_NN * HPGEN_L], p[HPGEN_D * HPGEN_L], z[HPGEN_NZ * HPGEN_L],
-        zp[HPGEN_NZ * HPGEN_L], zp2[HPGEN_NZ * HPGEN_L], zs[HPGEN_NZ * HPGEN_L],
+        d0[HPGEN_NZ * HPGEN_L], d1[HPGEN_NZ * HPGEN_L], d2[HPGEN_NZ * HPGEN_L],
+        G[HPGEN_NZ * HPGEN_L], zs[HPGEN_NZ * HPGEN_L],
         g1[HPGEN_NN * HPGEN_L], p1[HPGEN_D * HPGEN_L], hv[HPGEN_L], m[HPGEN_L],
         res[HPGEN_L], hv1[1];
     long long hp[HPGEN_L], k[HPGEN_L], rec[HPGEN_L], it[HPGEN_L], ok[HPGEN_L],
@@ -5013,7 +5036,7 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
     hv1[0] = h;
     for (l = 0; l < HPGEN_L; ++l) {
         hpgen_status_init(st + l);
-        hpgen_lane_gather(runs + l, l, g, p, z, zp, zp2, hp, k);
+        hpgen_lane_gather(runs + l, l, g, p, z, d0, d1, d2, hp, k);
         hv[l] = h;
         alive[l] = 1;
         rec[l] = 0;
@@ -5026,19 +5049,27 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
                scalar code's */
             for (l = 0; l < HPGEN_L; ++l) ok[l] = 0;
         } else {
-            /* the start: the predictor of hpgen_run_step, per lane */
-            double q2[HPGEN_L], q1[HPGEN_L];
+            /* the start: the predictor of hpgen_run_step, per lane (G by the scalar
+               kernels, lane by lane: bitwise hpgen_run_step's) */
+            double q3[HPGEN_L], q2[HPGEN_L], q1[HPGEN_L];
             long long all = 1;
             for (l = 0; l < HPGEN_L; ++l) {
-                q2[l] = o->predictor && hp[l] >= 2;
+                double gl[HPGEN_NN], pl[HPGEN_D], Gl[HPGEN_NZ];
+                for (i = 0; i < HPGEN_NN; ++i) gl[i] = g[i * HPGEN_L + l];
+                for (i = 0; i < HPGEN_D; ++i) pl[i] = p[i * HPGEN_L + l];
+                hpgen_predictor_base(gl, pl, hv1, Gl);
+                for (i = 0; i < HPGEN_NZ; ++i) G[i * HPGEN_L + l] = Gl[i];
+                q3[l] = o->predictor && hp[l] >= 3;
+                q2[l] = o->predictor && hp[l] == 2;
                 q1[l] = o->predictor && hp[l] == 1;
             }
             for (i = 0; i < HPGEN_NZ; ++i)
                 for (l = 0; l < HPGEN_L; ++l) {
                     const int j = i * HPGEN_L + l;
-                    const double a2 = 3.0 * (z[j] - zp[j]) + zp2[j], a1 = 2.0 * z[j] - zp[j],
+                    const double a3 = G[j] + (3.0 * (d0[j] - d1[j]) + d2[j]),
+                                 a2 = G[j] + (2.0 * d0[j] - d1[j]), a1 = G[j] + d0[j],
                                  a0 = z[j];
-                    zs[j] = q2[l] != 0.0 ? a2 : (q1[l] != 0.0 ? a1 : a0);
+                    zs[j] = q3[l] != 0.0 ? a3 : (q2[l] != 0.0 ? a2 : (q1[l] != 0.0 ? a1 : a0));
                 }
             hpgen_lane_newton(g, p, hv, zs, o, ok, it, res);
             hpgen_lane_margin(zs, hv, m);
@@ -5057,8 +5088,9 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
             /* commit them: whole arrays when every lane stepped (the common case), else
                lane by lane */
             if (all) {
-                memcpy(zp2, zp, sizeof zp);
-                memcpy(zp, z, sizeof z);
+                memcpy(d2, d1, sizeof d1);
+                memcpy(d1, d0, sizeof d0);
+                for (i = 0; i < HPGEN_NZ * HPGEN_L; ++i) d0[i] = zs[i] - G[i];
                 memcpy(z, zs, sizeof z);
                 memcpy(g, g1, sizeof g);
                 memcpy(p, p1, sizeof p);
@@ -5067,7 +5099,7 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
                     if (!ok[l]) continue;
                     for (i = 0; i < HPGEN_NZ; ++i) {
                         const int j = i * HPGEN_L + l;
-                        zp2[j] = zp[j]; zp[j] = z[j]; z[j] = zs[j];
+                        d2[j] = d1[j]; d1[j] = d0[j]; d0[j] = zs[j] - G[j]; z[j] = zs[j];
                     }
                     for (i = 0; i < HPGEN_NN; ++i) g[i * HPGEN_L + l] = g1[i * HPGEN_L + l];
                     for (i = 0; i < HPGEN_D; ++i) p[i * HPGEN_L + l] = p1[i * HPGEN_L + l];
@@ -5075,7 +5107,7 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
             }
             for (l = 0; l < HPGEN_L; ++l) {
                 const long long c = ok[l];
-                hp[l] += c & (hp[l] < 2);
+                hp[l] += c & (hp[l] < 3);
                 k[l] += c;
                 st[l].total_iterations += c ? it[l] : 0;
                 st[l].jacobians += c ? it[l] : 0;
@@ -5086,13 +5118,13 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
         /* the others: this step by hpgen_run_step from the lane's state */
         for (l = 0; l < HPGEN_L; ++l) {
             if (!alive[l] || ok[l]) continue;
-            hpgen_lane_scatter(runs + l, l, g, p, z, zp, zp2, hp, k);
+            hpgen_lane_scatter(runs + l, l, g, p, z, d0, d1, d2, hp, k);
             if (hpgen_run_step(runs + l, hv1, o, &full, st + l, 1) != HPGEN_OK) {
                 alive[l] = 0;
                 --nalive;
                 continue;
             }
-            hpgen_lane_gather(runs + l, l, g, p, z, zp, zp2, hp, k);
+            hpgen_lane_gather(runs + l, l, g, p, z, d0, d1, d2, hp, k);
         }
         for (l = 0; l < HPGEN_L; ++l) {
             if (!alive[l] || k[l] % every != 0) continue;
@@ -5105,7 +5137,7 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
     }
     for (l = 0; l < HPGEN_L; ++l) {
         if (!alive[l]) continue;
-        hpgen_lane_scatter(runs + l, l, g, p, z, zp, zp2, hp, k);
+        hpgen_lane_scatter(runs + l, l, g, p, z, d0, d1, d2, hp, k);
         st[l].step = k[l];
     }
 }

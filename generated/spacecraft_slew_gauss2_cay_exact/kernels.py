@@ -19694,7 +19694,7 @@ def _newton_iterate(f, z, g, p, h, it, maxit, dprev, stol):
             if dn <= stol * (1.0 + zn) or (it > 1 and th < 1.0 and th / (1.0 - th) * dn <= stol * (1.0 + zn)):
                 code = 0
                 break
-            if it > 1 and dn > 0.05 * dprev:
+            if it > 1 and dn > 0.2 * dprev:
                 code = -2
                 break
             if it >= maxit:

@@ -28126,7 +28126,7 @@ CASADI_SYMBOL_EXPORT int step_partials_work_bytes(casadi_int *sz_arg, casadi_int
 #define HPGEN_EXPORT
 #endif
 
-#define HPGEN_ABI 4
+#define HPGEN_ABI 5
 #define HPGEN_N 4
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 #define HPGEN_D 6
@@ -28155,7 +28155,7 @@ CASADI_SYMBOL_EXPORT int step_partials_work_bytes(casadi_int *sz_arg, casadi_int
 #define HPGEN_ROUNDOFF_FLOOR 1e-11
 /* simplified Newton: a contraction rate |dz_k| / |dz_{k-1}| above this refreshes the Jacobian
    (or, with a Jacobian fresh from this step, switches the step to full Newton) */
-#define HPGEN_THETA_MAX 0.05
+#define HPGEN_THETA_MAX 0.2
 /* simplified Newton stops when its error estimate is below this * tol * (1 + |z|) */
 #define HPGEN_SIMPLIFIED_TOL 0.01
 
@@ -28173,7 +28173,7 @@ typedef struct hpgen_options {
     double tol;                  /* converged when |dz| <= tol (1 + |z|), inf-norms */
     long long maxit;             /* Newton iterations per step, >= 1 */
     long long simplified;        /* 1: keep the Jacobian's LU across iterations and steps */
-    long long predictor;         /* 1: start step k+1 from the extrapolated last solutions (else z_k) */
+    long long predictor;         /* 1: start step k+1 from the predictor of hpgen_run_step (else z_k) */
 } hpgen_options;
 
 /* A run in progress: the state, the Newton start and the Newton memory. Advancing a run by
@@ -28181,12 +28181,13 @@ typedef struct hpgen_options {
 typedef struct hpgen_run {
     double g[HPGEN_NN], p[HPGEN_D];  /* (g_k, p_k) */
     double z[HPGEN_NZ];              /* solution of the last step (or the initial guess) */
-    double zprev[HPGEN_NZ];          /* solutions of the two steps before (predictor) */
-    double zprev2[HPGEN_NZ];
+    double dz0[HPGEN_NZ];            /* predictor: z_j - G_j of the last three steps j = k-1, */
+    double dz1[HPGEN_NZ];            /* k-2, k-3 (G_j the guess at step j's start, see */
+    double dz2[HPGEN_NZ];            /* hpgen_run_step) */
     double lu[HPGEN_NZ * HPGEN_NZ];  /* J^{-1} of the last Jacobian (simplified Newton) */
     int piv[HPGEN_NZ];
     long long k;                     /* steps done */
-    long long have_prev;             /* how many of zprev, zprev2 are valid (0, 1, 2) */
+    long long have_prev;             /* how many of dz0, dz1, dz2 are valid (0..3) */
     long long lu_valid;              /* lu holds J^{-1} */
     double s;                        /* section(g_k, p_k), when s_valid */
     long long s_valid;
@@ -29061,13 +29062,28 @@ HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, d
     return r->k;
 }
 
+/* G(g, p) = guess(velocity_step(g, p, 0), g, p, h): the guess kernel at one Newton step of
+   the Legendre transform from xi = 0 (the velocity itself when l is quadratic in xi), a smooth
+   function of the state that carries the leading order of the solution. */
+static void hpgen_predictor_base(const double* g, const double* p, const double* hv, double* G) {
+    double x0[HPGEN_D], xi[HPGEN_D];
+    memset(x0, 0, sizeof x0);
+    hpgen_k_velocity_step(g, p, x0, hv, xi);
+    hpgen_k_guess(xi, g, p, hv, G);
+}
+
 /* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
    success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for the steps
    after the first, full (o with full Newton) for the first. Updates the counters of st;
-   returns the status code. */
+   returns the status code.
+   Predictor: z_k = G_k + dz_k with G_k = hpgen_predictor_base(g_k, p_k) (exact in p, O(1))
+   and dz_k = z_k - G_k small (O(h)) and smooth in k; the start is G_k plus the polynomial
+   through the last dz extrapolated one step (quadratic 3 (dz_{k-1} - dz_{k-2}) + dz_{k-3}
+   once three exist, linear, then constant before). Extrapolating z itself (the predictor
+   before) left errors 5-7x larger on the heavy top (docs/performance.md). */
 static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
                           const hpgen_options* full, hpgen_status* st, int with_g) {
-    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], res;
+    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], G[HPGEN_NZ], res;
     long long it;
     int i, code, predicted = o->predictor && r->have_prev >= 1;
     /* the step vector of step k: [h, t0 + k h, u_k, params] */
@@ -29078,12 +29094,13 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     r->hv[1] = r->t0 + (double)r->k * hv[0];
     for (i = 0; i < HPGEN_M; ++i) r->hv[2 + i] = r->U[(r->u_rows == 1 ? 0 : r->k) * HPGEN_M + i];
     hv = r->hv;
-    /* start: the polynomial through the last solutions, extrapolated one step (quadratic
-       3 z_k - 3 z_{k-1} + z_{k-2} once three exist, linear 2 z_k - z_{k-1} before) */
-    if (o->predictor && r->have_prev >= 2)
-        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 3.0 * (r->z[i] - r->zprev[i]) + r->zprev2[i];
+    hpgen_predictor_base(r->g, r->p, hv, G);    /* (kept up to date with or without o->predictor) */
+    if (o->predictor && r->have_prev >= 3)
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = G[i] + (3.0 * (r->dz0[i] - r->dz1[i]) + r->dz2[i]);
+    else if (o->predictor && r->have_prev == 2)
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = G[i] + (2.0 * r->dz0[i] - r->dz1[i]);
     else if (o->predictor && r->have_prev == 1)
-        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = 2.0 * r->z[i] - r->zprev[i];
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = G[i] + r->dz0[i];
     else
         for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
     /* the first step starts from the crude guess kernel: full Newton */
@@ -29101,10 +29118,11 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     st->iterations = it;
     st->residual = res;
     if (code != HPGEN_OK) { st->code = code; st->step = r->k; return code; }
-    memcpy(r->zprev2, r->zprev, sizeof r->z);
-    memcpy(r->zprev, r->z, sizeof r->z);
+    memcpy(r->dz2, r->dz1, sizeof r->z);
+    memcpy(r->dz1, r->dz0, sizeof r->z);
+    for (i = 0; i < HPGEN_NZ; ++i) r->dz0[i] = zs[i] - G[i];
+    if (r->have_prev < 3) r->have_prev += 1;
     memcpy(r->z, zs, sizeof r->z);
-    if (r->have_prev < 2) r->have_prev += 1;
     if (with_g) memcpy(r->g, g1, sizeof g1);
     memcpy(r->p, p1, sizeof p1);
     r->k += 1;
@@ -29112,7 +29130,7 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
 }
 
 /* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
-   solution, or from the extrapolation of the last three). The state after global step k is
+   solution, or from the predictor of hpgen_run_step). The state after global step k is
    recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
    sizes them for the records falling in this call). Stops at the first failed step (the run
    keeps the last good state). Returns the steps done in this call. */
@@ -29324,7 +29342,7 @@ HPGEN_EXPORT long long hpgen_advance_batch(hpgen_run* runs, long long B, double 
 
 /* For k = 0..K-1: Newton on step k from the record (g_k, p_k) = (g_rec + k NN,
    p_rec + k D): step 0 by full Newton from z (in/out: z_0 in, the last solution out), step
-   k > 0 from the predictor of hpgen_run_step (o->predictor) with o's Newton, whose simplified
+   k > 0 from the extrapolation of z_{k-1}, z_{k-2}, z_{k-3} (o->predictor) with o's Newton, whose simplified
    iterations use J^{-1} of the previous step's converged z; dev[k] = max |update(z_k) -
    record k+1| (the caller checks that the records are this module's steps). At the
    converged z_k: J = jacobian(z_k) inverted once (and kept as the next step's Newton
@@ -29359,7 +29377,8 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
         double* Bk = B + k * S * nc;
         double* Ak = A + k * S * S;
         double m = 0.0;
-        /* the start: the extrapolation of hpgen_run_step through z_{k-1}, z_{k-2}, z_{k-3} */
+        /* the start: the extrapolation through z_{k-1}, z_{k-2}, z_{k-3} (quadratic, as
+           hpgen_run_step's predictor before it extrapolated z - G instead) */
         memcpy(zlast, z, sizeof zlast);
         if (o->predictor && k >= 3)
             for (i = 0; i < HPGEN_NZ; ++i) z[i] = 3.0 * (z[i] - zprev[i]) + zprev2[i];
