@@ -17109,7 +17109,7 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
     enum { S = 2 * HPGEN_D };
     double g1[HPGEN_NN], p1[HPGEN_D], J[HPGEN_NZ * HPGEN_NZ], Fs[HPGEN_NZ * S],
         Yz[S * HPGEN_NZ], Ys[S * S], FH[HPGEN_NZ * HPGEN_H], YH[S * HPGEN_H],
-        zlast[HPGEN_NZ], zprev[HPGEN_NZ], zprev2[HPGEN_NZ], res;
+        zlast[HPGEN_NZ], zprev[HPGEN_NZ] = {0.0}, zprev2[HPGEN_NZ] = {0.0}, res;
     int piv[HPGEN_NZ];
     long long k, it, valid = 0;
     int i, j, l, code;

@@ -24216,7 +24216,8 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
                                        double* A, double* dev, hpgen_status* st) {
     enum { S = 2 * HPGEN_D };
     double hv[1], g1[HPGEN_NN], p1[HPGEN_D], J[HPGEN_NZ * HPGEN_NZ], Fs[HPGEN_NZ * S],
-        Yz[S * HPGEN_NZ], Ys[S * S], zlast[HPGEN_NZ], zprev[HPGEN_NZ], zprev2[HPGEN_NZ], res;
+        Yz[S * HPGEN_NZ], Ys[S * S], zlast[HPGEN_NZ], zprev[HPGEN_NZ] = {0.0},
+        zprev2[HPGEN_NZ] = {0.0}, res;
     int piv[HPGEN_NZ];
     long long k, it, valid = 0;
     int i, j, l, code;
