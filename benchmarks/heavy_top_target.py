@@ -97,42 +97,53 @@ def measure(pb, y_ref, methods, rounds, seed=0):
     return {i: (errs[i], times[i]) for i in times}
 
 
-def table(methods, res, target=TARGET):
-    """Markdown lines: per-method figures, then the ratios at ``target`` (min and median)."""
+def times_at(methods, res, stat, target=TARGET):
+    """{family: time at error ``target`` or None}: the log-log interpolation on each family's
+    Pareto front of its points' ``stat`` (min, median) of the round times."""
+    import numpy as np
     from hpgen.bench.measure import Point
     from hpgen.bench.report import time_at_error
+    fams = {}
+    for i, (fam, _, _, _) in enumerate(methods):
+        if not fam.startswith("prologue"):
+            fams.setdefault(fam, []).append(i)
+    at = {}
+    for fam, idx in fams.items():
+        pts = []
+        for i in idx:
+            p = Point(fam, fam, "x", "p", methods[i][1], error=res[i][0],
+                      wall_s=stat(res[i][1]))
+            p.y_end = np.zeros(1)
+            pts.append(p)
+        at[fam] = time_at_error(pts, target)
+    return at
+
+
+def best_at(methods, res, stat, target=TARGET):
+    """(best hpgen family or None, its time, DOP853's, RK4-C's) at error ``target``."""
+    at = times_at(methods, res, stat, target)
+    cand = {f: t for f, t in at.items() if f.startswith("hpgen") and t is not None}
+    best = min(cand, key=cand.get) if cand else None
+    return best, (cand[best] if best else None), at.get("DOP853"), at.get("RK4-C")
+
+
+def table(methods, res, target=TARGET):
+    """Markdown lines: per-method figures, then the ratios at ``target`` (min and median)."""
     lines = ["| method | h / rtol | error at T | min ms | median ms | Newton |",
              "|---|---|---|---|---|---|"]
     for i, (fam, par, _, info) in enumerate(methods):
         e, ts = res[i]
         lines.append(f"| {fam} | {par:.4g} | {e:.2e} | {min(ts) * 1e3:.4f} | "
                      f"{statistics.median(ts) * 1e3:.4f} | {info} |")
-    fams = {}
-    for i, (fam, par, _, _) in enumerate(methods):
-        if not fam.startswith("prologue"):
-            fams.setdefault(fam, []).append(i)
-    at = {}
-    for stat_name, stat in (("min", min), ("median", statistics.median)):
-        for fam, idx in fams.items():
-            pts = []
-            for i in idx:
-                p = Point(fam, fam, "x", "p", methods[i][1], error=res[i][0],
-                          wall_s=stat(res[i][1]))
-                p.y_end = __import__("numpy").zeros(1)
-                pts.append(p)
-            at[fam, stat_name] = time_at_error(pts, target)
-    hp = [f for f in fams if f.startswith("hpgen")]
     lines += ["", f"Time at error {target:g} (log-log on each Pareto front), ms, and ratios "
               "(same statistic on both sides):", "",
               "| statistic | hpgen best | DOP853 | RK4-C | DOP853 / hpgen | hpgen / RK4-C |",
               "|---|---|---|---|---|---|"]
-    for stat_name in ("min", "median"):
-        cand = {f: at[f, stat_name] for f in hp if at[f, stat_name] is not None}
-        if not cand:
+    for stat_name, stat in (("min", min), ("median", statistics.median)):
+        best, t, d, r = best_at(methods, res, stat, target)
+        if best is None:
             lines.append(f"| {stat_name} | no hpgen scheme reaches {target:g} |||||")
             continue
-        best = min(cand, key=cand.get)
-        t, d, r = cand[best], at.get(("DOP853", stat_name)), at.get(("RK4-C", stat_name))
         lines.append(f"| {stat_name} | {best} {t * 1e3:.4f} | "
                      f"{'-' if d is None else f'{d * 1e3:.4f}'} | "
                      f"{'-' if r is None else f'{r * 1e3:.4f}'} | "
