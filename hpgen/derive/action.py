@@ -72,14 +72,13 @@ def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
     eps = [sym(f"eps{i + 1}", d) for i in range(s)]
     I_n = ca.SX.eye(group.n)
 
-    def dti(x):
-        return group.dtau_inv(tau, x)
+    def dti(x, v):
+        return group.chart_product(tau, "dtau_inv", x, v)
 
     # chart[i] = tau^{-1}(g_k^{-1} G^i) to first order in the variations (= h Theta^i at 0)
-    chart = [h * Th[i] + ca.mtimes(dti(h * Th[i]), -eta0) + ca.mtimes(dti(-h * Th[i]), eps[i])
-             for i in range(s)]
+    chart = [h * Th[i] + dti(h * Th[i], -eta0) + dti(-h * Th[i], eps[i]) for i in range(s)]
     # the exact constraint depends on G^j through Theta^j, so it is built on the varied chart
-    R = [ca.mtimes(dti(-chart[j]), Xi[j]) if exact else Xi[j] for j in range(s)]
+    R = [dti(-chart[j], Xi[j]) if exact else Xi[j] for j in range(s)]
     # s_k, eq. hpsumfuture, with the multipliers' constraint terms multiplied through by h
     action = ca.SX(0)
     for i in range(s):
@@ -90,7 +89,7 @@ def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
         if force is not None:      # virtual work, linear in eps_i: F_i from unvaried stages
             action += h * b[i] * ca.dot(force(Gi0, Xi[i], ti), eps[i])
         action += ca.dot(h * N[i], chart[i] - h * sum((A[i][j] * R[j] for j in range(s)), ca.SX.zeros(d)))
-    chart1 = h * xi1 + ca.mtimes(dti(h * xi1), -eta0) + ca.mtimes(dti(-h * xi1), eta1)
+    chart1 = h * xi1 + dti(h * xi1, -eta0) + dti(-h * xi1, eta1)
     action += ca.dot(mu1, chart1 - h * sum((b[j] * R[j] for j in range(s)), ca.SX.zeros(d)))
 
     zero = [eta0, eta1] + eps
@@ -135,7 +134,11 @@ def step_equations(group, lag, tableau, tau: str, rkmk: str, reduced: bool,
                                g1, p1, xi_hat, h)
 
     if _invertible(A):
-        return _exact_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_g0,
+        # dl/dxi(G^j, Xi^j): eq_xi[j] at N = 0, mu_{k+1} = 0, taken from l directly (the
+        # action's h b_j l differentiated and divided by h b_j is the same map)
+        dl = [ca.gradient(lag(ca.mtimes(g, group.tau(tau, h * Th[j])), Xi[j], t + c[j] * h),
+                          Xi[j]) for j in range(s)]
+        return _exact_step(group, tau, tableau, Xi, N, mu1, Th, xi1, dl, eq_eps, eq_g0,
                            g1, p1, xi_hat, p, h)
 
     # Singular A (explicit first stage: Stormer-Verlet, Lobatto IIIA): the stage multipliers
@@ -254,7 +257,7 @@ def _invertible(A) -> bool:
     return bool(abs(np.linalg.det(M)) > 1e-12 * max(1.0, np.abs(M).max()) ** len(M))
 
 
-def _exact_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_g0, g1, p1,
+def _exact_step(group, tau, tableau, Xi, N, mu1, Th, xi1, dl, eq_eps, eq_g0, g1, p1,
                 xi_hat, p, h):
     """Exact RKMK constraint with an invertible A (Gauss, Radau IIA, backward Euler):
     unknowns (Theta^1..s, mu_{k+1}), (s + 1) d instead of (3 s + 2) d.
@@ -267,20 +270,23 @@ def _exact_step(group, tau, tableau, Xi, N, mu1, Th, xi1, eq_xi, eq_eps, eq_g0, 
                              (h sum_i a_ij N^i + b_j mu_{k+1})
                          -> h N = A^{-T} (b_j Lambda^j),  Lambda^j = dtau_{-h Theta^j}^T
                              (dl/dxi(G^j, Xi^j) - (dtau^{-1}_{-h Theta^j})^T mu_{k+1})
+                             = dtau_{-h Theta^j}^T dl/dxi(G^j, Xi^j) - mu_{k+1}
+    (dtau^T (dtau^{-1})^T = I: the mu_{k+1} term is not formed through the two products),
     leaving the eps_i (s d) and eta_0 (d) conditions. h N is formed without dividing by h.
+    dtau and dtau^{-1} are applied through group.chart_product (closed forms where tabulated).
+    dl: the s d-vectors dl/dxi(G^j, Xi^j) in Theta^j and the symbols Xi^j (forces do not
+    enter the Xi^j conditions: their virtual work is linear in eps and taken at eps = 0).
     """
     import numpy as np
     s, d, A, b = tableau.stages, group.d, tableau.A, tableau.b
     zero = ca.SX.zeros(d)
     Ainv = np.linalg.inv(np.array(A, dtype=float))
     K = [sum((float(Ainv[j][i]) * Th[i] for i in range(s)), zero) for j in range(s)]
-    Xi_of = [ca.mtimes(group.dtau(tau, -h * Th[j]), K[j]) for j in range(s)]
+    Xi_of = [group.chart_product(tau, "dtau", -h * Th[j], K[j]) for j in range(s)]
     xi1_of = sum((b[j] * K[j] for j in range(s)), zero)
     explicit = lambda e: ca.substitute(e, ca.vertcat(*Xi, xi1), ca.vertcat(*Xi_of, xi1_of))  # noqa: E731
-    lam = []
-    for j in range(s):
-        rest = ca.substitute(explicit(eq_xi[j]), ca.vertcat(*N), ca.SX.zeros(s * d))
-        lam.append(b[j] * ca.mtimes(group.dtau(tau, -h * Th[j]).T, rest))
+    lam = [b[j] * (group.chart_product(tau, "dtau", -h * Th[j], explicit(dl[j]),
+                                       transposed=True) - mu1) for j in range(s)]
     hN = [sum((float(Ainv[j][i]) * lam[j] for j in range(s)), zero) for i in range(s)]
     final = lambda e: ca.substitute(explicit(e), ca.vertcat(*N), ca.vertcat(*hN) / h)  # noqa: E731
     z = ca.vertcat(*Th, mu1)

@@ -103,10 +103,17 @@ class LieGroup:
         """d x d matrix of y -> dtau_x(y), the inverse of dtau_inv(kind, x)."""
         raise NotImplementedError
 
+    def chart_product(self, kind: str, which: str, x, m, transposed: bool = False):
+        """d-vector M m (M^T m if ``transposed``) with M = dtau_inv(kind, x) (``which`` =
+        "dtau_inv") or dtau(kind, x) ("dtau"): what the derivation applies to velocities and
+        momenta; a chart with a cheaper closed form overrides it."""
+        M = self.dtau_inv(kind, x) if which == "dtau_inv" else self.dtau(kind, x)
+        return ca.mtimes(M.T if transposed else M, m)
+
     def dtau_inv_T_times(self, kind: str, x, m):
         """d-vector (dtau^{-1}_x)^T m, the map the Stormer-Verlet family's step applies to a
-        momentum: dtau_inv(kind, x).T m; a chart with a cheaper closed form overrides it."""
-        return ca.mtimes(self.dtau_inv(kind, x).T, m)
+        momentum: dtau_inv(kind, x).T m."""
+        return self.chart_product(kind, "dtau_inv", x, m, transposed=True)
 
     def tau_margin(self, kind: str, x):
         """Scalar SX, > 0 while x is inside the domain where tau is a valid chart, else <= 0."""

@@ -45,8 +45,8 @@ def _max_abs(M):
 
 class TabulatedCharts(LieGroup):
     """tau, dtau_inv, dtau and tau_margin from the ``GroupCharts`` of the group's family in
-    ``hpgen.groups.maps.GROUP_CHARTS`` (and dtau_inv_T_times from
-    ``maps.DTAU_INV_T_TIMES`` where a closed form is tabulated); the charts it supports from
+    ``hpgen.groups.maps.GROUP_CHARTS`` (and chart_product from ``maps.CHART_PRODUCTS``
+    where closed forms are tabulated); the charts it supports from
     ``hpgen.schemes.TAU``."""
     family: str
 
@@ -67,12 +67,12 @@ class TabulatedCharts(LieGroup):
     def dtau(self, kind, x):
         return self._charts(kind).dtau(self, kind, x)
 
-    def dtau_inv_T_times(self, kind, x, m):
-        closed = maps.DTAU_INV_T_TIMES.get((self.family, kind))
+    def chart_product(self, kind, which, x, m, transposed=False):
+        closed = maps.CHART_PRODUCTS.get((self.family, kind))
         if closed is None:
-            return super().dtau_inv_T_times(kind, x, m)
+            return super().chart_product(kind, which, x, m, transposed)
         self.require_chart(kind)
-        return closed(x, m)
+        return closed[(which, transposed)](x, m)
 
     def tau_margin(self, kind, x):
         return self._charts(kind).margin(self, kind, x)

@@ -198,6 +198,21 @@ def so3_dcay_inv_T_times(w, m):
     return m + ca.cross(w, m) / 2 + (ca.dot(w, m) / 4) * w
 
 
+def so3_dcay_inv_times(w, m):
+    """dcay^{-1}_w m = (I - w^/2 + w w^T/4) m = m - (w x m)/2 + (w.m) w/4."""
+    return m - ca.cross(w, m) / 2 + (ca.dot(w, m) / 4) * w
+
+
+def so3_dcay_times(w, m):
+    """dcay_w m = (4/(4 + |w|^2)) (I + w^/2) m = (4/(4 + |w|^2)) (m + (w x m)/2)."""
+    return (4 / (4 + ca.dot(w, w))) * (m + ca.cross(w, m) / 2)
+
+
+def so3_dcay_T_times(w, m):
+    """(dcay_w)^T m = (4/(4 + |w|^2)) (I - w^/2) m = (4/(4 + |w|^2)) (m - (w x m)/2)."""
+    return (4 / (4 + ca.dot(w, w))) * (m - ca.cross(w, m) / 2)
+
+
 def _so3_dcay(W, s):
     return (4 / (4 + s)) * (_I3 + W / 2)
 
@@ -407,8 +422,13 @@ class GroupCharts:
     margin: Callable
 
 
-#: (family, chart) -> f(x, m) = (dtau^{-1}_x)^T m in closed form (LieGroup.dtau_inv_T_times)
-DTAU_INV_T_TIMES = {("SO3", "cay"): so3_dcay_inv_T_times}
+#: (family, chart) -> {(map, transposed): f(x, m)}: the products dtau^{-1}_x m, (dtau^{-1}_x)^T m,
+#: dtau_x m and (dtau_x)^T m in closed form (LieGroup.chart_product), where tabulated: the
+#: same linear maps as the matrices of GROUP_CHARTS, without forming them
+CHART_PRODUCTS = {("SO3", "cay"): {("dtau_inv", False): so3_dcay_inv_times,
+                                   ("dtau_inv", True): so3_dcay_inv_T_times,
+                                   ("dtau", False): so3_dcay_times,
+                                   ("dtau", True): so3_dcay_T_times}}
 
 GROUP_CHARTS = {
     "R<n>": GroupCharts(rn_tau, rn_dtau_inv, rn_dtau, rn_margin),

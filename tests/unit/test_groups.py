@@ -126,26 +126,57 @@ def test_tau_on_group_inverse_and_exp(spec, kind):
             assert np.max(np.abs(T - ref)) < 1e-14, (x, np.max(np.abs(T - ref)))
 
 
-@pytest.mark.parametrize("spec,kind", CASES)
-def test_dtau_inv_T_times_is_the_transposed_matrix_times_m(spec, kind):
-    """dtau_inv_T_times (what the Stormer-Verlet family's step applies to momenta) against
-    dtau_inv(x).T m: exactly the product where no closed form is tabulated, else to a few
-    ulps of |m| (1 + |x|)^2 (the closed form m + (x x m)/2 + (x.m) x/4 of SO3's Cayley chart
-    sums the same terms in another order)."""
+PRODUCTS = [("dtau_inv", False), ("dtau_inv", True), ("dtau", False), ("dtau", True)]
+
+
+def _product_gap(spec, kind, which, transposed, closed):
+    """Over the test points and seeded m: (max |f(x, m) - M m|, its bound 8 eps |m| (1 + |x|)^2,
+    whether f(x, m) == M m bitwise), f the closed form ``closed(x, m)``, M = dtau_inv(x) or
+    dtau(x) (``which``), transposed or not."""
     G = _group(spec)
     x, m = ca.SX.sym("x", G.d), ca.SX.sym("m", G.d)
-    f = ca.Function("f", [x, m], [G.dtau_inv_T_times(kind, x, m),
-                                  ca.mtimes(G.dtau_inv(kind, x).T, m)])
-    closed = (G.family if hasattr(G, "family") else None, kind) in maps.DTAU_INV_T_TIMES
+    M = G.dtau_inv(kind, x) if which == "dtau_inv" else G.dtau(kind, x)
+    f = ca.Function("f", [x, m], [closed(x, m), ca.mtimes(M.T if transposed else M, m)])
     rng = np.random.default_rng(3)
+    worst, exact = (0.0, 1.0), True
     for x0 in _points(spec, kind):
         m0 = rng.standard_normal(G.d) * 10.0
         a, b = _ev(f, x0, m0)
+        exact = exact and np.array_equal(a, b)
+        gap = np.max(np.abs(a - b))
+        bound = 8 * np.finfo(float).eps * np.max(np.abs(m0)) * (1.0 + np.max(np.abs(x0))) ** 2
+        worst = max(worst, (gap, bound), key=lambda t: t[0] / t[1])
+    return worst[0], worst[1], exact
+
+
+@pytest.mark.parametrize("spec,kind", CASES)
+def test_chart_products_are_the_matrices_times_m(spec, kind):
+    """chart_product (dtau^{-1}_x m, its transpose, dtau_x m, its transpose: what the
+    derivation applies to velocities and momenta) against the matrices of dtau_inv / dtau
+    times m: exactly the product where no closed form is tabulated, else to a few ulps of
+    |m| (1 + |x|)^2 (SO3's Cayley chart: m -+ (x x m)/2 + (x.m) x/4 and
+    (4/(4 + |x|^2)) (m +- (x x m)/2), the same terms summed in another order)."""
+    G = _group(spec)
+    closed = (getattr(G, "family", None), kind) in maps.CHART_PRODUCTS
+    for which, tr in PRODUCTS:
+        gap, bound, exact = _product_gap(
+            spec, kind, which, tr, lambda x, m: G.chart_product(kind, which, x, m, tr))
         if closed:
-            scale = np.max(np.abs(m0)) * (1.0 + np.max(np.abs(x0))) ** 2
-            assert np.max(np.abs(a - b)) <= 8 * np.finfo(float).eps * scale, (x0, a - b)
+            assert gap <= bound, (which, tr, gap, bound)
         else:
-            assert np.array_equal(a, b), (spec, kind, x0)
+            assert exact, (spec, kind, which, tr)
+    gap, bound, exact = _product_gap(spec, kind, "dtau_inv", True,
+                                     lambda x, m: G.dtau_inv_T_times(kind, x, m))
+    assert gap <= bound and (closed or exact)
+
+
+@pytest.mark.parametrize("which,transposed", PRODUCTS)
+def test_chart_product_check_catches_a_sign_error(which, transposed):
+    """The check above fails SO3's Cayley closed form with the sign of its cross-product term
+    flipped (f(-x, m): an O(|x| |m|) gap, far above the bound)."""
+    f = maps.CHART_PRODUCTS[("SO3", "cay")][(which, transposed)]
+    gap, bound, _ = _product_gap("SO3", "cay", which, transposed, lambda x, m: f(-x, m))
+    assert gap > 1e6 * bound
 
 
 @pytest.mark.parametrize("spec,kind", CASES)
