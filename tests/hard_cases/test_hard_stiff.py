@@ -19,14 +19,15 @@ B. The same spring with midpoint/cay/truncated (implicit): energy conserved to 1
 C. Stiff heavy top, Mg = 1e4, I = (1, 5, 6) (small oscillations about the hanging
    equilibrium: omega = sqrt(Mg / I_1) = 100), released from rest 0.5 rad off the
    hanging position, 2000 steps of midpoint/cay/truncated (implicit, nonlinear: Newton
-   every step). Observed and asserted: for omega h <= 3 every run finishes with a bounded
-   energy error (last tenth within 1.5x of the first); for omega h >= 5 Newton fails and
+   every step). Observed and asserted: for omega h <= 5 every run finishes with a bounded
+   energy error (last tenth within 1.5x of the first); for omega h >= 10 Newton fails and
    the failure is reported as ConvergenceError ("Newton did not converge", 50 iterations,
    step, time = step h, partial trajectory up to the failed step) -- not hidden -- or as a
-   DomainError for a converged root beyond Cayley's quarter turn. (At omega h = 5 a failed
-   predicted start is retried from the previous solution; the run then reaches step 639,
-   where Newton is still converging after 50 iterations, residual 5e-11; with maxit = 200
-   all 2000 steps run. Before the retry it stopped at step 8 with a false DomainError.)
+   DomainError for a converged root beyond Cayley's quarter turn. (omega h = 5 is the case
+   the starts decide: before the retry of a failed predicted start it stopped at step 8
+   with a false DomainError; with the retry it reached step 639, where Newton was still
+   converging after 50 iterations, residual 5e-11; since the start G_k + extrapolated
+   offsets z - G (issue 14) all 2000 steps run, 13.7 iterations a step.)
 Each part prints its table (omega h, outcome, energy error).
 """
 from __future__ import annotations
@@ -118,8 +119,8 @@ I_TOP, MG = np.array([1.0, 5.0, 6.0]), 1e4
 
 
 def test_stiff_heavy_top_newton_failure_reported(compile_model):
-    """Part C: bounded energy error for omega h <= 3, a reported Newton failure
-    (ConvergenceError with step, time, residual, iterations, partial) for omega h >= 5."""
+    """Part C: bounded energy error for omega h <= 5, a reported Newton failure
+    (ConvergenceError with step, time, residual, iterations, partial) for omega h >= 10."""
     integ = compile_model(STIFF_TOP, tableau="midpoint", tau="cay", rkmk="truncated")
     R0 = rotvec([math.pi - 0.5, 0.0, 0.0])
     steps = 2000
@@ -133,7 +134,7 @@ def test_stiff_heavy_top_newton_failure_reported(compile_model):
             tr = integ.simulate(g0=R0, xi0=np.zeros(3), h=h, steps=steps)
         except hpgen.ConvergenceError as err:
             print(f"  {h:6.3f} {wh:7.2f}  {check_reported_failure(err, h)}: {err}")
-            assert wh >= 5.0
+            assert wh >= 10.0
             # Newton diverges, or (since the Cayley chart's margin is a quarter turn per step)
             # the step is refused as a DomainError: both are reported failures
             assert ("Newton did not converge" in str(err)
@@ -149,5 +150,5 @@ def test_stiff_heavy_top_newton_failure_reported(compile_model):
         print(f"  {h:6.3f} {wh:7.2f}  finished: max |dE| / E_osc first tenth {first:.3e}, "
               f"last tenth {last:.3e}, Newton iterations per step "
               f"{tr.newton_iterations / steps:.1f}")
-        assert wh <= 3.0
+        assert wh <= 5.0
         assert last <= 1.5 * first and first < 0.5

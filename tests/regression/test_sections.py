@@ -75,7 +75,10 @@ def test_crossings_match_the_full_trajectory(case):
     for j, kk in enumerate(k):
         a, b = np.abs(cr.g[j] - tr.g[kk]).max(), np.abs(tr.g[kk + 1] - tr.g[kk]).max()
         assert a <= b * (1 + 1e-12)
-        assert np.abs(cr.g[j].T @ cr.g[j] - np.eye(3)).max() < 1e-14
+        # on the group as the nodes are (their defect is round-off accumulated over the
+        # run, about 1e-14 after 2000 steps), plus the few roundings of g_k tau(.)
+        node = max(np.abs(tr.g[i].T @ tr.g[i] - np.eye(3)).max() for i in (kk, kk + 1))
+        assert np.abs(cr.g[j].T @ cr.g[j] - np.eye(3)).max() <= node + 8 * np.finfo(float).eps
     # s at the recorded (g, mu) is zero up to linear interpolation's error, at most
     # h^2 max|s''| / 8 on the step: bounded here by the neighbouring second differences
     s_at = s_of(cr.g, cr.mu)
