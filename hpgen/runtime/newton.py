@@ -44,10 +44,9 @@ from dataclasses import dataclass
 import numpy as np
 
 # status codes and Newton constants: the generated-module contract (kernels.c.j2 prints the
-# same values); RECORD and UNROLL_MAX re-exported for the run loops and tests
-from ..abi import (DEFAULT_MAXIT, DEFAULT_TOL, DOMAIN, NO_CONVERGENCE,  # noqa: F401
-                   NONFINITE, OK, RECORD, REFRESH, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, THETA_MAX,
-                   UNROLL_MAX)
+# same values)
+from ..abi import (DEFAULT_MAXIT, DEFAULT_TOL, DOMAIN, NO_CONVERGENCE, NONFINITE, OK, REFRESH,
+                   ROUNDOFF_FLOOR, SIMPLIFIED_TOL, THETA_MAX)
 
 _INF, _NAN = math.inf, math.nan
 _isfinite = math.isfinite

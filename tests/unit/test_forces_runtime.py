@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import hpgen
-from hpgen.errors import ArgumentError, ModelError
+from hpgen.errors import ArgumentError
 from hpgen.runtime import NewtonOptions
 
 from test_derive_forces import FREE_BODY, HEAVY_TOP, TAU_S, VEHICLE

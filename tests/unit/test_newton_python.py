@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from conftest import HEAVY_TOP
+from hpgen.abi import UNROLL_MAX
 from hpgen.codegen import pylinear
 from hpgen.runtime import newton
 from reference import rotvec
@@ -168,7 +169,7 @@ def _matrices(n, rng):
     return [np.asarray(m, dtype=np.float64).ravel(order="F").tolist() for m in out]
 
 
-@pytest.mark.parametrize("n", range(1, newton.UNROLL_MAX + 1))
+@pytest.mark.parametrize("n", range(1, UNROLL_MAX + 1))
 def test_straight_line_solver_equals_c_loops_bitwise(n):
     rng = np.random.default_rng(n)
     lin = printed_solver(n)
@@ -223,7 +224,7 @@ def test_fused_update_declines_non_finite_values(n):
 
 
 def test_numpy_solver_above_unroll_max_agrees_to_round_off():
-    n = newton.UNROLL_MAX + 5
+    n = UNROLL_MAX + 5
     rng = np.random.default_rng(7)
     lin = newton.linear_solver(n)
     assert lin.update is None and lin.finish is None
@@ -245,7 +246,7 @@ def test_solver_source_is_deterministic():
         assert raw(n) == raw(n) == pylinear.linear_solver_source(n)
     with pytest.raises(ValueError):
         raw(pylinear.UNROLL_MAX + 1)
-    assert newton.UNROLL_MAX == pylinear.UNROLL_MAX
+    assert UNROLL_MAX == pylinear.UNROLL_MAX
 
 
 def test_generated_module_carries_its_solver():
@@ -403,7 +404,7 @@ def test_heavy_top_python_run_is_bitwise_the_c_run(compile_model, tableau, tau, 
     g0, xi0 = rotvec([0.3, 0.2, 0.0]), [0.2, 1.0, 3.0]
     integ = {b: compile_model(HEAVY_TOP, tableau=tableau, tau=tau, rkmk=rkmk, backend=b)
              for b in ("c", "python")}
-    assert integ["c"].nz <= newton.UNROLL_MAX
+    assert integ["c"].nz <= UNROLL_MAX
     for simplified in (None, False, True):
         c, py = (integ[b].simulate(g0=g0, xi0=xi0, h=0.05, steps=200,
                                    newton=newton.NewtonOptions(simplified=simplified))
@@ -425,7 +426,7 @@ def test_heavy_top_above_unroll_max_agrees_with_c(compile_model):
         integ = compile_model(HEAVY_TOP, tableau="stormer-verlet", tau="cay", rkmk="exact",
                               backend=b)
         runs[b] = integ.simulate(g0=g0, xi0=xi0, h=0.05, steps=200)
-    assert integ.nz > newton.UNROLL_MAX
+    assert integ.nz > UNROLL_MAX
     c, py = runs["c"], runs["python"]
     assert np.abs(c.g - py.g).max() < 1e-12
     assert np.abs(c.mu - py.mu).max() < 1e-12 * np.abs(c.mu).max()
