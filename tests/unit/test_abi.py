@@ -96,9 +96,11 @@ def test_template_has_no_contract_literals():
 def test_python_mirror_takes_the_same_constants():
     from hpgen.codegen import pylinear
     from hpgen.runtime import loop, newton
-    for name in ("OK", "NO_CONVERGENCE", "NONFINITE", "DOMAIN", "RECORD", "ROUNDOFF_FLOOR",
-                 "THETA_MAX", "SIMPLIFIED_TOL", "DEFAULT_TOL", "DEFAULT_MAXIT", "UNROLL_MAX"):
+    for name in ("OK", "NO_CONVERGENCE", "NONFINITE", "DOMAIN", "ROUNDOFF_FLOOR",
+                 "THETA_MAX", "SIMPLIFIED_TOL", "DEFAULT_TOL", "DEFAULT_MAXIT", "REFRESH"):
         assert getattr(newton, name) is getattr(abi, name), name
+    for name in ("OK", "NONFINITE", "RECORD", "ROUNDOFF_FLOOR"):     # the run loop's
+        assert getattr(loop, name) is getattr(abi, name), name
     assert pylinear.UNROLL_MAX is abi.UNROLL_MAX
     assert loop.VELOCITY_TOL is abi.VELOCITY_TOL and loop.VELOCITY_MAXIT is abi.VELOCITY_MAXIT
     assert list(loop.new_status()) == [f for f, _ in abi.STATUS_FIELDS]
