@@ -56,7 +56,7 @@ def c_steps(integ, g0, xi0, h, steps):
                 np.array([h]))[0]
     gf, mu0 = tr.g[0].ravel(order="F"), tr.mu[0]
     run = b.start(gf, mu0, z0)
-    from hpgen.runtime.cbackend import _Options, _Status
+    from hpgen.runtime.cstructs import _Options, _Status
     opts = _Options.of(integ._options(None))
     g_rec, p_rec, st = np.zeros((1, 9)), np.zeros((1, 3)), _Status()
 

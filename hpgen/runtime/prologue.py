@@ -39,7 +39,7 @@ import numpy as np
 from .. import abi
 from ..errors import HpgenError
 from .args import _fits, _int, _step_size
-from .cbackend import _Options, _Status, _addr
+from .cstructs import _Options, _Status, _addr
 from .inputs import step_inputs
 from .trajectory import Trajectory
 

@@ -75,7 +75,7 @@ def _c_struct(src: str, name: str) -> list:
 
 
 def test_c_structs_match_the_ctypes_side():
-    from hpgen.runtime.cbackend import _Options, _Status
+    from hpgen.runtime.cstructs import _Options, _Status
     src = _c_source()
     assert _c_struct(src, "hpgen_status") == list(abi.STATUS_FIELDS)
     assert _c_struct(src, "hpgen_options") == list(abi.OPTIONS_FIELDS)
