@@ -25,7 +25,8 @@ import pytest
 from conftest import FREE_BODY, HEAVY_TOP, SE3_BODY
 from hpgen.errors import ArgumentError, ConvergenceError, ModelError
 from hpgen.runtime import backends, newton
-from hpgen.runtime.integrator import COND_MAX, Integrator
+from hpgen.runtime.integrator import Integrator
+from hpgen.runtime.state_maps import COND_MAX
 
 from _toy_step import integrator as toy_integrator
 from test_linearize_open import SPACECRAFT     # inputs, a runtime parameter, forces
