@@ -326,7 +326,8 @@ def _run_sections(integ, model, sc, h, steps, out, args) -> int:
 
 def cmd_check(args) -> int:
     """``hpgen check``: print the table (hpgen.analysis.check); exit 3 if a check fails."""
-    from .analysis.check import format_report, run_check, write_json
+    from .analysis.check import run_check
+    from .analysis.check_report import format_report, write_json
     report = run_check(args.model, scheme=args.scheme, tableau=args.tableau, tau=args.tau,
                        rkmk=args.rkmk, h=args.h, steps=args.steps, backend=args.backend,
                        cache_dir=args.cache_dir, order_horizon=args.order_horizon,

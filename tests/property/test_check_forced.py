@@ -10,7 +10,8 @@ import sys
 import pytest
 
 from conftest import EXAMPLES
-from hpgen.analysis.check import format_report, run_check
+from hpgen.analysis.check import run_check
+from hpgen.analysis.check_report import format_report
 
 
 @pytest.mark.parametrize("name", ["damped_top", "underwater_vehicle_drag", "spacecraft_slew"])

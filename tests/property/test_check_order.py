@@ -15,7 +15,8 @@ import pytest
 
 from conftest import EXAMPLES
 from hpgen.analysis.check import (FLOOR, ORDER_TOL, REFINE_MAX_STEPS, _refine,
-                                  expected_order, format_report, run_check)
+                                  expected_order, run_check)
+from hpgen.analysis.check_report import format_report
 
 
 @pytest.mark.parametrize("left_invariant,order,rkmk,expected", [
