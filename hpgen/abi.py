@@ -26,7 +26,8 @@ from dataclasses import dataclass
 #: version of the exported C API of kernels.c (hpgen_dims()[0]); checked when it is loaded
 #: (4: hpgen_advance_batch_lanes and hpgen_lanes, the lane-wise ensembles, where emitted)
 #: (5: hpgen_run holds the predictor offsets dz0..dz2 instead of zprev, zprev2)
-ABI_VERSION = 5
+#: (6: hpgen_run holds PREDICTOR_HISTORY offsets dz[0..5], the predictor is quintic)
+ABI_VERSION = 6
 #: version of meta.json's layout; the loader refuses any other (recompile the module)
 #: (3: "group", the group's name, e.g. "SO3" or "[SO3, R3]")
 META_FORMAT = 3
@@ -188,6 +189,14 @@ ROUNDOFF_FLOOR = 1e-11
 THETA_MAX = 0.2
 #: simplified Newton stops when its error estimate is <= SIMPLIFIED_TOL tol (1 + |z|)
 SIMPLIFIED_TOL = 0.01
+#: ... the estimate being te/(1 - te) |dz| with te = max(theta, THETA_FLOOR): theta from the
+#: last two corrections underestimates a kept J's contraction while its slow modes are still
+#: hidden under the fast ones (a close start stops before they show). Measured asymptotic
+#: rates of a kept J^{-1} on the heavy top (gauss3, h = 0.08): 7e-3 one step old, 2.5e-2
+#: at 4 steps, 5.5e-2 at 12 (benchmarks/newton_replay.py). Without the floor the quintic
+#: predictor's Lagrange top left a coherent error that drifted e3.(R p) by 5e-12 over 8e4
+#: steps (3e-14 with it, as with the quadratic predictor; docs/performance.md).
+THETA_FLOOR = 0.05
 #: kernels.py ITERATE (the Python backend's fused simplified iterates, hpgen.codegen.pyiterate)
 #: returns this, not a status code, when the rate exceeds THETA_MAX: the caller refreshes J
 REFRESH = -2
@@ -199,10 +208,23 @@ VELOCITY_MAXIT = DEFAULT_MAXIT
 #: (bitwise the C template's; above it numpy/LAPACK, equal to C to round-off)
 UNROLL_MAX = 12
 
+#: the predictor keeps the offsets z_j - G_j of this many past steps; the start of a step is G_k
+#: plus the polynomial through the last m = min(steps done, PREDICTOR_HISTORY) offsets,
+#: extrapolated one step (degree m - 1: quintic once six exist). Heavy top gauss2 h = 0.05:
+#: 7.9 (ABI 5) -> 6.8 it/step, free body SV h = 0.1: 3.0 -> 2.0
+#: (docs/performance.md, "Newton's start and stop").
+PREDICTOR_HISTORY = 6
+#: PREDICTOR_COEFFICIENTS[m - 1][i]: the weight of the offset of step k - 1 - i in the
+#: extrapolation through m offsets, (-1)^i binomial(m, i + 1); summed in the order of i
+#: (t = c_0 dz_0, t += c_i dz_i), in C and in Python alike
+PREDICTOR_COEFFICIENTS = tuple(tuple(float((-1) ** i * math.comb(m, i + 1)) for i in range(m))
+                               for m in range(1, PREDICTOR_HISTORY + 1))
+
 #: the compile-time constants kernels.c.j2 receives (template variable -> value)
 TEMPLATE_CONSTANTS = {"abi_version": ABI_VERSION, "roundoff_floor": ROUNDOFF_FLOOR,
                       "theta_max": THETA_MAX, "simplified_tol": SIMPLIFIED_TOL,
-                      "velocity_tol": VELOCITY_TOL, "velocity_maxit": VELOCITY_MAXIT}
+                      "velocity_tol": VELOCITY_TOL, "velocity_maxit": VELOCITY_MAXIT,
+                      "predictor_history": PREDICTOR_HISTORY, "theta_floor": THETA_FLOOR}
 
 
 def c_literal(value) -> str:

@@ -13235,7 +13235,8 @@ def _newton_iterate(f, z, g, p, h, it, maxit, dprev, stol):
                 code = 0
                 break
             th = dn / dprev
-            if dn <= stol * (1.0 + zn) or (it > 1 and th < 1.0 and th / (1.0 - th) * dn <= stol * (1.0 + zn)):
+            te = th if th > 0.05 else 0.05
+            if dn <= stol * (1.0 + zn) or (it > 1 and te < 1.0 and te / (1.0 - te) * dn <= stol * (1.0 + zn)):
                 code = 0
                 break
             if it > 1 and dn > 0.2 * dprev:

@@ -9789,7 +9789,7 @@ CASADI_SYMBOL_EXPORT int step_partials_work_bytes(casadi_int *sz_arg, casadi_int
 #define HPGEN_EXPORT
 #endif
 
-#define HPGEN_ABI 5
+#define HPGEN_ABI 6
 #define HPGEN_N 3
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 #define HPGEN_D 3
@@ -9821,6 +9821,19 @@ CASADI_SYMBOL_EXPORT int step_partials_work_bytes(casadi_int *sz_arg, casadi_int
 #define HPGEN_THETA_MAX 0.2
 /* simplified Newton stops when its error estimate is below this * tol * (1 + |z|) */
 #define HPGEN_SIMPLIFIED_TOL 0.01
+/* ... its error estimate takes the contraction rate as at least this (hpgen.abi.THETA_FLOOR) */
+#define HPGEN_THETA_FLOOR 0.05
+/* the predictor keeps the offsets of this many past steps; row m - 1 of hpgen_pc weighs the
+   m newest in the extrapolation through m of them (hpgen.abi.PREDICTOR_COEFFICIENTS) */
+#define HPGEN_PH 6
+static const double hpgen_pc[HPGEN_PH][HPGEN_PH] = {
+    { 1.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
+    { 2.0, -1.0, 0.0, 0.0, 0.0, 0.0 },
+    { 3.0, -3.0, 1.0, 0.0, 0.0, 0.0 },
+    { 4.0, -6.0, 4.0, -1.0, 0.0, 0.0 },
+    { 5.0, -10.0, 10.0, -5.0, 1.0, 0.0 },
+    { 6.0, -15.0, 20.0, -15.0, 6.0, -1.0 }
+};
 
 typedef struct hpgen_status {
     long long code;              /* HPGEN_OK, ... */
@@ -9844,13 +9857,12 @@ typedef struct hpgen_options {
 typedef struct hpgen_run {
     double g[HPGEN_NN], p[HPGEN_D];  /* (g_k, p_k) */
     double z[HPGEN_NZ];              /* solution of the last step (or the initial guess) */
-    double dz0[HPGEN_NZ];            /* predictor: z_j - G_j of the last three steps j = k-1, */
-    double dz1[HPGEN_NZ];            /* k-2, k-3 (G_j the guess at step j's start, see */
-    double dz2[HPGEN_NZ];            /* hpgen_run_step) */
+    double dz[HPGEN_PH][HPGEN_NZ];   /* predictor: z_j - G_j of the last steps j = k-1, k-2, ...
+                                        (G_j the guess at step j's start, see hpgen_run_step) */
     double lu[HPGEN_NZ * HPGEN_NZ];  /* J^{-1} of the last Jacobian (simplified Newton) */
     int piv[HPGEN_NZ];
     long long k;                     /* steps done */
-    long long have_prev;             /* how many of dz0, dz1, dz2 are valid (0..3) */
+    long long have_prev;             /* how many of dz[0], dz[1], ... are valid (0..HPGEN_PH) */
     long long lu_valid;              /* lu holds J^{-1} */
     double s;                        /* section(g_k, p_k), when s_valid */
     long long s_valid;
@@ -10573,11 +10585,12 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
             /* quadratic convergence: the error left after dn <= tol is about C tol^2 */
             if (dn <= o->tol * (1.0 + zn)) return HPGEN_OK;
         } else {
-            /* linear convergence: the error left is about theta/(1 - theta) dn; ask it to be
-               <= HPGEN_SIMPLIFIED_TOL tol, the round-off level full Newton reaches */
-            double th = dn / dprev;
+            /* linear convergence: the error left is about te/(1 - te) dn, te the rate but at
+               least HPGEN_THETA_FLOOR; ask it to be <= HPGEN_SIMPLIFIED_TOL tol, the
+               round-off level full Newton reaches */
+            double th = dn / dprev, te = th > HPGEN_THETA_FLOOR ? th : HPGEN_THETA_FLOOR;
             if (dn <= HPGEN_SIMPLIFIED_TOL * o->tol * (1.0 + zn)) return HPGEN_OK;
-            if (it > 1 && th < 1.0 && th / (1.0 - th) * dn <= HPGEN_SIMPLIFIED_TOL * o->tol * (1.0 + zn))
+            if (it > 1 && te < 1.0 && te / (1.0 - te) * dn <= HPGEN_SIMPLIFIED_TOL * o->tol * (1.0 + zn))
                 return HPGEN_OK;
         }
         if (!full && it > 1 && dn > HPGEN_THETA_MAX * dprev) {
@@ -10735,15 +10748,40 @@ static void hpgen_predictor_base(const double* g, const double* p, const double*
     hpgen_k_guess(xi, g, p, hv, G);
 }
 
+/* The predicted entry G + sum_i hpgen_pc[m - 1][i] d[i stride] over the m newest offsets
+   d[0], d[stride], ... of one entry (1 <= m <= HPGEN_PH), summed in the order of i. */
+static inline double hpgen_predict(double G, const double* d, int stride, long long m) {
+    const double* c = hpgen_pc[m - 1];
+    double t = c[0] * d[0];
+    long long i;
+    for (i = 1; i < m; ++i) t += c[i] * d[i * stride];
+    return G + t;
+}
+
+/* The same for a run's whole start zs = G + sum_j hpgen_pc[m - 1][j] dz[j] (every entry the
+   operations of hpgen_predict, in the same order; loops over the entries innermost). */
+static inline void hpgen_predict_run(const double* G, double (*dz)[HPGEN_NZ], long long m,
+                                     double* zs) {
+    const double* c = hpgen_pc[m - 1];
+    double t[HPGEN_NZ];
+    long long j;
+    int i;
+    for (i = 0; i < HPGEN_NZ; ++i) t[i] = c[0] * dz[0][i];
+    for (j = 1; j < m; ++j)
+        for (i = 0; i < HPGEN_NZ; ++i) t[i] += c[j] * dz[j][i];
+    for (i = 0; i < HPGEN_NZ; ++i) zs[i] = G[i] + t[i];
+}
+
 /* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
    success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for the steps
    after the first, full (o with full Newton) for the first. Updates the counters of st;
    returns the status code.
    Predictor: z_k = G_k + dz_k with G_k = hpgen_predictor_base(g_k, p_k) (exact in p, O(1))
    and dz_k = z_k - G_k small (O(h)) and smooth in k; the start is G_k plus the polynomial
-   through the last dz extrapolated one step (quadratic 3 (dz_{k-1} - dz_{k-2}) + dz_{k-3}
-   once three exist, linear, then constant before). Extrapolating z itself (the predictor
-   before) left errors 5-7x larger on the heavy top (docs/performance.md). */
+   through the last m = min(have_prev, HPGEN_PH) offsets extrapolated one step
+   (hpgen_predict: quintic once six exist). Extrapolating z itself (an older predictor) left
+   errors 5-7x larger on the heavy top, the quadratic 0.5-1.3 more iterations per step
+   (docs/performance.md). */
 static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
                           const hpgen_options* full, hpgen_status* st, int with_g) {
     double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], G[HPGEN_NZ], res;
@@ -10758,12 +10796,10 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     for (i = 0; i < HPGEN_M; ++i) r->hv[2 + i] = r->U[(r->u_rows == 1 ? 0 : r->k) * HPGEN_M + i];
     hv = r->hv;
     hpgen_predictor_base(r->g, r->p, hv, G);    /* (kept up to date with or without o->predictor) */
-    if (o->predictor && r->have_prev >= 3)
-        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = G[i] + (3.0 * (r->dz0[i] - r->dz1[i]) + r->dz2[i]);
-    else if (o->predictor && r->have_prev == 2)
-        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = G[i] + (2.0 * r->dz0[i] - r->dz1[i]);
-    else if (o->predictor && r->have_prev == 1)
-        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = G[i] + r->dz0[i];
+    if (predicted && r->have_prev == HPGEN_PH)
+        hpgen_predict_run(G, r->dz, HPGEN_PH, zs);     /* the steady state: a constant m */
+    else if (predicted)
+        hpgen_predict_run(G, r->dz, r->have_prev, zs);
     else
         for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
     /* the first step starts from the crude guess kernel: full Newton */
@@ -10781,10 +10817,9 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     st->iterations = it;
     st->residual = res;
     if (code != HPGEN_OK) { st->code = code; st->step = r->k; return code; }
-    memcpy(r->dz2, r->dz1, sizeof r->z);
-    memcpy(r->dz1, r->dz0, sizeof r->z);
-    for (i = 0; i < HPGEN_NZ; ++i) r->dz0[i] = zs[i] - G[i];
-    if (r->have_prev < 3) r->have_prev += 1;
+    memmove(r->dz[1], r->dz[0], (HPGEN_PH - 1) * sizeof r->dz[0]);
+    for (i = 0; i < HPGEN_NZ; ++i) r->dz[0][i] = zs[i] - G[i];
+    if (r->have_prev < HPGEN_PH) r->have_prev += 1;
     memcpy(r->z, zs, sizeof r->z);
     if (with_g) memcpy(r->g, g1, sizeof g1);
     memcpy(r->p, p1, sizeof p1);

@@ -157,8 +157,11 @@ def _python_linear(step) -> dict:
 def c_abi_context() -> dict:
     """kernels.c.j2's share of hpgen.abi: the ABI version, the status codes (code, name,
     message) and the Newton constants, printed as C literals that read back bitwise."""
+    H = abi.PREDICTOR_HISTORY
     return dict({k: abi.c_literal(v) for k, v in abi.TEMPLATE_CONSTANTS.items()},
-                status=[list(s) for s in abi.STATUS], status_invalid=abi.INVALID)
+                status=[list(s) for s in abi.STATUS], status_invalid=abi.INVALID,
+                predictor_coefficients=[[abi.c_literal(c) for c in row] + ["0.0"] * (H - len(row))
+                                        for row in abi.PREDICTOR_COEFFICIENTS])
 
 
 def template_contexts(step, info: dict) -> dict[str, dict]:

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import casadi
 
-from ..abi import NO_CONVERGENCE, OK, REFRESH, ROUNDOFF_FLOOR, THETA_MAX
+from ..abi import NO_CONVERGENCE, OK, REFRESH, ROUNDOFF_FLOOR, THETA_FLOOR, THETA_MAX
 from . import pylinear
 from .contract import CodegenError, dense_positions
 from .pysource import fast_lines, float_literal
@@ -84,8 +84,9 @@ def iterate_source(residual, nz: int) -> str:
     simplified-Newton iterates it, it + 1, ... with J^{-1} = f (a kept matrix, column-major)
     from z, dprev the previous |dz| (inf before the first): F = residual(z, g, p, h),
     dz = f F, z = z - dz, dn = |dz|, then solve's tests in its order: code OK (converged,
-    round-off floor or the linear-rate estimate), abi.REFRESH (dn > THETA_MAX dprev: the
-    caller refreshes J, or with a J fresh from this step goes on with full Newton), or
+    round-off floor or the linear-rate estimate, its rate at least THETA_FLOOR),
+    abi.REFRESH (dn > THETA_MAX dprev: the caller refreshes J, or with a J fresh from this
+    step goes on with full Newton), or
     NO_CONVERGENCE once iterate ``maxit`` did neither; z (a list) and rn = |F| of the last
     iterate (F is finite when dz is: a non-finite F_j makes every entry of f F so).
     None: see the module docstring. The source is empty for a residual with a side effect
@@ -95,11 +96,13 @@ def iterate_source(residual, nz: int) -> str:
         return ""
     _check(residual, nz, ("F",))
     floor, theta = float_literal(ROUNDOFF_FLOOR), float_literal(THETA_MAX)
+    tfloor = float_literal(THETA_FLOOR)
     loop = pylinear.matvec_lines(nz, "F") + pylinear.finish_lines(nz) + [
         f"if it > 1 and dn >= dprev and dn <= {floor} * (1.0 + zn):", *_stop(OK),
         "th = dn / dprev",
-        "if dn <= stol * (1.0 + zn) or (it > 1 and th < 1.0 and "
-        "th / (1.0 - th) * dn <= stol * (1.0 + zn)):", *_stop(OK),
+        f"te = th if th > {tfloor} else {tfloor}",
+        "if dn <= stol * (1.0 + zn) or (it > 1 and te < 1.0 and "
+        "te / (1.0 - te) * dn <= stol * (1.0 + zn)):", *_stop(OK),
         f"if it > 1 and dn > {theta} * dprev:", *_stop(REFRESH),
         "if it >= maxit:", *_stop(NO_CONVERGENCE),
         "dprev = dn",

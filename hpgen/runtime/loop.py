@@ -8,16 +8,17 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..abi import (NONFINITE, OK, RECORD, ROUNDOFF_FLOOR, STATUS_FIELDS, VELOCITY_MAXIT,
-                   VELOCITY_TOL)
+from ..abi import (NONFINITE, OK, PREDICTOR_COEFFICIENTS, PREDICTOR_HISTORY, RECORD,
+                   ROUNDOFF_FLOOR, STATUS_FIELDS, VELOCITY_MAXIT, VELOCITY_TOL)
 from .newton import (_INF, _NAN, Kernels, NewtonMemory, NewtonOptions, _floats, _isfinite,
                      all_finite, norm_inf, step_lists)
 
 
 class Run:
     """A run in progress (the C backend's ``hpgen_run``): state (g_k, p_k) flat, the last
-    solution z, the predictor's offsets dz = [dz_{k-1}, dz_{k-2}, dz_{k-3}] (newest first,
-    have_prev = len(dz) <= 3 of them; see _run_step), the Newton memory and the steps done k;
+    solution z, the predictor's offsets dz = [dz_{k-1}, dz_{k-2}, ...] (newest first,
+    have_prev = len(dz) <= PREDICTOR_HISTORY of them; see _run_step), the Newton memory and
+    the steps done k;
     vectors are lists of Python floats."""
 
     def __init__(self, g0, p0, z0, inputs=None):
@@ -73,6 +74,48 @@ def predictor_base(kern: Kernels, g, p, hv, open_module: bool) -> list:
     return kern.guess(xi, g, p, hv)[0]
 
 
+def _predictors():
+    """predict's six cases, each one comprehension over the entries with the coefficients
+    bound to names (a loop over the offsets per entry, or indexing the coefficient tuples,
+    would cost microseconds per step on the Python backend)."""
+    assert len(PREDICTOR_COEFFICIENTS) == 6, "PREDICTOR_HISTORY changed: write its case here"
+    (a,), (b0, b1), (c0, c1, c2), (d0, d1, d2, d3), (e0, e1, e2, e3, e4), \
+        (f0, f1, f2, f3, f4, f5) = PREDICTOR_COEFFICIENTS
+
+    def m1(G, d):
+        return [g + a * x for g, x in zip(G, d[0])]
+
+    def m2(G, d):
+        return [g + (b0 * x + b1 * y) for g, x, y in zip(G, d[0], d[1])]
+
+    def m3(G, d):
+        return [g + ((c0 * x + c1 * y) + c2 * u) for g, x, y, u in zip(G, d[0], d[1], d[2])]
+
+    def m4(G, d):
+        return [g + (((d0 * x + d1 * y) + d2 * u) + d3 * v)
+                for g, x, y, u, v in zip(G, d[0], d[1], d[2], d[3])]
+
+    def m5(G, d):
+        return [g + ((((e0 * x + e1 * y) + e2 * u) + e3 * v) + e4 * w)
+                for g, x, y, u, v, w in zip(G, d[0], d[1], d[2], d[3], d[4])]
+
+    def m6(G, d):
+        return [g + (((((f0 * x + f1 * y) + f2 * u) + f3 * v) + f4 * w) + f5 * r)
+                for g, x, y, u, v, w, r in zip(G, d[0], d[1], d[2], d[3], d[4], d[5])]
+    return m1, m2, m3, m4, m5, m6
+
+
+_PREDICTORS = _predictors()
+
+
+def predict(G, dz) -> list:
+    """G + the polynomial through the m = len(dz) offsets dz (newest first, 1 <= m <=
+    PREDICTOR_HISTORY) extrapolated one step, entry by entry: t = c_0 dz_0, t += c_i dz_i
+    with c = PREDICTOR_COEFFICIENTS[m - 1], then G + t (kernels.c.j2's hpgen_predict, the
+    same operations)."""
+    return _PREDICTORS[len(dz) - 1](G, dz)
+
+
 def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOptions, st,
               with_g=True):
     """One step of ``run`` like ``hpgen_run_step`` in C: predictor, step, run moved on success
@@ -80,21 +123,13 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
     total_iterations, jacobians; code and step on failure). Returns the status code.
 
     Predictor (kernels.c.j2, hpgen_run_step): z_j = G_j + dz_j with G_j = predictor_base at
-    step j's start; the start is G_k plus the polynomial through the last offsets dz
-    extrapolated one step (quadratic 3 (dz_{k-1} - dz_{k-2}) + dz_{k-3} once three exist,
-    then linear, constant before)."""
+    step j's start; the start is G_k plus the polynomial through the last m offsets dz
+    extrapolated one step (predict)."""
     if run.inputs is not None:           # an open module: hv = [h, t_k, u_k, params]
         hv = run.inputs.hv(hv[0], run.k)
     G = predictor_base(kern, run.g, run.p, hv, run.inputs is not None)
     dz = run.dz
-    if opts.predictor and len(dz) >= 3:
-        zs = [a + (3.0 * (b - c) + d) for a, b, c, d in zip(G, dz[0], dz[1], dz[2])]
-    elif opts.predictor and len(dz) == 2:
-        zs = [a + (2.0 * b - c) for a, b, c in zip(G, dz[0], dz[1])]
-    elif opts.predictor and len(dz) == 1:
-        zs = [a + b for a, b in zip(G, dz[0])]
-    else:
-        zs = run.z
+    zs = predict(G, dz) if opts.predictor and dz else run.z
     first = run.k == 0
     # the first step starts from the crude guess kernel: full Newton
     code, g1, p1, zs, it, r, jacs = step_lists(kern, run.g, run.p, hv, zs,
@@ -113,7 +148,7 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
     if code != OK:
         st.update(code=code, step=run.k)
         return code
-    run.dz = [[a - b for a, b in zip(zs, G)]] + dz[:2]
+    run.dz = [[a - b for a, b in zip(zs, G)]] + dz[:PREDICTOR_HISTORY - 1]
     run.have_prev = len(run.dz)
     run.z = zs
     run.g, run.p = g1, p1

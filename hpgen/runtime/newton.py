@@ -7,8 +7,9 @@ z <- z - J^{-1} F, inf-norms, theta = ||dz_k|| / ||dz_{k-1}||.
   to 3e-11 in the free body's momentum map over 1e4 steps: not offered).
 - Simplified Newton keeps J^{-1} across iterations and steps, refreshes it when theta exceeds
   THETA_MAX (if J is already fresh from this step, the rest of the step is full Newton), and
-  converges when the linear-rate bound theta/(1 - theta) ||dz|| (or ||dz|| itself) is
-  <= SIMPLIFIED_TOL tol (1 + ||z||): the round-off level full Newton's stop leaves.
+  converges when the linear-rate bound te/(1 - te) ||dz|| (te = max(theta, THETA_FLOOR)),
+  or ||dz|| itself, is <= SIMPLIFIED_TOL tol (1 + ||z||): the round-off level full Newton's
+  stop leaves.
 - Both stop when ||dz|| stopped decreasing while ||dz|| <= ROUNDOFF_FLOOR (1 + ||z||) (round-off
   floor). The constants and status codes are hpgen.abi's, as are the C template's.
 - An iterate that needs J takes F and J from one ``residual_jacobian`` evaluation when the
@@ -46,7 +47,7 @@ import numpy as np
 # status codes and Newton constants: the generated-module contract (kernels.c.j2 prints the
 # same values)
 from ..abi import (DEFAULT_MAXIT, DEFAULT_TOL, DOMAIN, NO_CONVERGENCE, NONFINITE, OK, REFRESH,
-                   ROUNDOFF_FLOOR, SIMPLIFIED_TOL, THETA_MAX)
+                   ROUNDOFF_FLOOR, SIMPLIFIED_TOL, THETA_FLOOR, THETA_MAX)
 
 _INF, _NAN = math.inf, math.nan
 _isfinite = math.isfinite
@@ -276,9 +277,10 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
         else:
             # linear convergence: the error left is about theta/(1 - theta) dn
             th = dn / dprev
+            te = th if th > THETA_FLOOR else THETA_FLOOR
             if dn <= stol * (1.0 + zn):
                 return OK, z, it, norm_inf(F), jacs
-            if it > 1 and th < 1.0 and th / (1.0 - th) * dn <= stol * (1.0 + zn):
+            if it > 1 and te < 1.0 and te / (1.0 - te) * dn <= stol * (1.0 + zn):
                 return OK, z, it, norm_inf(F), jacs
         if not full and it > 1 and dn > THETA_MAX * dprev:
             if fresh:

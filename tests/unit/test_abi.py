@@ -43,8 +43,16 @@ def test_emitted_c_status_codes_and_abi_version():
 def test_emitted_c_newton_constants_read_back_bitwise():
     src = _c_source()
     defs = _defines(src)
-    for name in ("ROUNDOFF_FLOOR", "THETA_MAX", "SIMPLIFIED_TOL"):
+    for name in ("ROUNDOFF_FLOOR", "THETA_MAX", "SIMPLIFIED_TOL", "THETA_FLOOR"):
         assert _bits(float(defs[f"HPGEN_{name}"])) == _bits(getattr(abi, name)), name
+    # the predictor's history and its coefficient table (rows zero-padded to HPGEN_PH)
+    H = abi.PREDICTOR_HISTORY
+    assert int(defs["HPGEN_PH"]) == H
+    table = re.search(r"static const double hpgen_pc\[HPGEN_PH\]\[HPGEN_PH\] = \{(.*?)\};",
+                      src, re.S).group(1)
+    rows = [[float(x) for x in r.split(",")] for r in re.findall(r"\{([^{}]*)\}", table)]
+    want = [list(c) + [0.0] * (H - len(c)) for c in abi.PREDICTOR_COEFFICIENTS]
+    assert [[_bits(x) for x in r] for r in rows] == [[_bits(x) for x in r] for r in want]
     vel = src[src.index("static int hpgen_velocity("):]
     vel = vel[:vel.index("\n}\n")]
     assert int(re.search(r"it <= (\d+); \+\+it", vel).group(1)) == abi.VELOCITY_MAXIT
@@ -90,15 +98,19 @@ def test_template_has_no_contract_literals():
     for lit in ("1e-14", "1e-11", "0.05", "0.01", "<= 50"):
         assert lit not in code, lit
     assert not re.search(r"#define HPGEN_(ABI|OK|NO_CONVERGENCE|NONFINITE|DOMAIN|RECORD|"
-                         r"INVALID|ROUNDOFF_FLOOR|THETA_MAX|SIMPLIFIED_TOL) \(?[\-0-9]", text)
+                         r"INVALID|ROUNDOFF_FLOOR|THETA_MAX|SIMPLIFIED_TOL|THETA_FLOOR|PH) "
+                         r"\(?[\-0-9]", text)
 
 
 def test_python_mirror_takes_the_same_constants():
     from hpgen.codegen import pylinear
     from hpgen.runtime import loop, newton
     for name in ("OK", "NO_CONVERGENCE", "NONFINITE", "DOMAIN", "ROUNDOFF_FLOOR",
-                 "THETA_MAX", "SIMPLIFIED_TOL", "DEFAULT_TOL", "DEFAULT_MAXIT", "REFRESH"):
+                 "THETA_MAX", "SIMPLIFIED_TOL", "THETA_FLOOR", "DEFAULT_TOL", "DEFAULT_MAXIT",
+                 "REFRESH"):
         assert getattr(newton, name) is getattr(abi, name), name
+    assert loop.PREDICTOR_COEFFICIENTS is abi.PREDICTOR_COEFFICIENTS
+    assert loop.PREDICTOR_HISTORY is abi.PREDICTOR_HISTORY
     for name in ("OK", "NONFINITE", "RECORD", "ROUNDOFF_FLOOR"):     # the run loop's
         assert getattr(loop, name) is getattr(abi, name), name
     assert pylinear.UNROLL_MAX is abi.UNROLL_MAX

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from conftest import HEAVY_TOP
-from hpgen.abi import NO_CONVERGENCE, OK, REFRESH, ROUNDOFF_FLOOR, THETA_MAX
+from hpgen.abi import NO_CONVERGENCE, OK, REFRESH, ROUNDOFF_FLOOR, THETA_FLOOR, THETA_MAX
 from hpgen.codegen import pyiterate
 from hpgen.runtime import newton
 from reference import rotvec
@@ -49,9 +49,10 @@ def unfused(mod, X, z, g, p, h, it, maxit, dprev, stol):
         if it > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + zn):
             return OK, z, it, dn, newton.norm_inf(F)
         th = dn / dprev
+        te = th if th > THETA_FLOOR else THETA_FLOOR
         if dn <= stol * (1.0 + zn):
             return OK, z, it, dn, newton.norm_inf(F)
-        if it > 1 and th < 1.0 and th / (1.0 - th) * dn <= stol * (1.0 + zn):
+        if it > 1 and te < 1.0 and te / (1.0 - te) * dn <= stol * (1.0 + zn):
             return OK, z, it, dn, newton.norm_inf(F)
         if it > 1 and dn > THETA_MAX * dprev:
             return REFRESH, z, it, dn, newton.norm_inf(F)
