@@ -7539,28 +7539,20 @@ static void hpgen_predictor_base(const double* g, const double* p, const double*
     hpgen_k_guess(xi, g, p, hv, G);
 }
 
-/* The predicted entry G + sum_i hpgen_pc[m - 1][i] d[i stride] over the m newest offsets
-   d[0], d[stride], ... of one entry (1 <= m <= HPGEN_PH), summed in the order of i. */
-static inline double hpgen_predict(double G, const double* d, int stride, long long m) {
+/* The predictor's start zs = G + sum_j hpgen_pc[m - 1][j] d_j over the m newest offsets d_0,
+   d_1, ... (1 <= m <= HPGEN_PH), for the HPGEN_NZ entries at stride es (entry i of offset j
+   at d[j os + i es], of G and zs at [i es]): per entry t = c_0 d_0, t += c_j d_j in the order
+   of j, then G + t (hpgen.runtime.loop.predict: the same operations). */
+static inline void hpgen_predict(const double* G, const double* d, int es, int os, long long m,
+                                 double* zs) {
     const double* c = hpgen_pc[m - 1];
-    double t = c[0] * d[0];
-    long long i;
-    for (i = 1; i < m; ++i) t += c[i] * d[i * stride];
-    return G + t;
-}
-
-/* The same for a run's whole start zs = G + sum_j hpgen_pc[m - 1][j] dz[j] (every entry the
-   operations of hpgen_predict, in the same order; loops over the entries innermost). */
-static inline void hpgen_predict_run(const double* G, double (*dz)[HPGEN_NZ], long long m,
-                                     double* zs) {
-    const double* c = hpgen_pc[m - 1];
-    double t[HPGEN_NZ];
     long long j;
     int i;
-    for (i = 0; i < HPGEN_NZ; ++i) t[i] = c[0] * dz[0][i];
-    for (j = 1; j < m; ++j)
-        for (i = 0; i < HPGEN_NZ; ++i) t[i] += c[j] * dz[j][i];
-    for (i = 0; i < HPGEN_NZ; ++i) zs[i] = G[i] + t[i];
+    for (i = 0; i < HPGEN_NZ; ++i) {
+        double t = c[0] * d[i * es];
+        for (j = 1; j < m; ++j) t += c[j] * d[j * os + i * es];
+        zs[i * es] = G[i * es] + t;
+    }
 }
 
 /* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
@@ -7579,10 +7571,10 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     long long it;
     int i, code, predicted = o->predictor && r->have_prev >= 1;
     hpgen_predictor_base(r->g, r->p, hv, G);    /* (kept up to date with or without o->predictor) */
-    if (predicted && r->have_prev == HPGEN_PH)
-        hpgen_predict_run(G, r->dz, HPGEN_PH, zs);     /* the steady state: a constant m */
+    if (predicted && r->have_prev == HPGEN_PH)     /* the steady state: a constant m */
+        hpgen_predict(G, r->dz[0], 1, HPGEN_NZ, HPGEN_PH, zs);
     else if (predicted)
-        hpgen_predict_run(G, r->dz, r->have_prev, zs);
+        hpgen_predict(G, r->dz[0], 1, HPGEN_NZ, r->have_prev, zs);
     else
         for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
     /* the first step starts from the crude guess kernel: full Newton */
