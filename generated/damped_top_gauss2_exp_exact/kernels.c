@@ -15882,7 +15882,7 @@ static inline void hpgen_predict(const double* G, const double* d, int es, int o
    and dz_k = z_k - G_k small (O(h)) and smooth in k; the start is G_k plus the polynomial
    through the last m = min(have_prev, HPGEN_PH) offsets extrapolated one step
    (hpgen_predict: quintic once six exist). Extrapolating z itself (an older predictor) left
-   errors 5-7x larger on the heavy top, the quadratic 0.5-1.3 more iterations per step
+   errors 5-7x larger on the heavy top, the quadratic 0.5-2 more iterations per step
    (docs/performance.md). */
 static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
                           const hpgen_options* full, hpgen_status* st, int with_g) {
