@@ -7,8 +7,8 @@ from __future__ import annotations
 
 from .errors import (ArgumentError, BuildError, ConvergenceError, DomainError, HpgenError,
                      ModelError)
+from .version import __version__
 
-__version__ = "0.1.0"
 __all__ = ["compile", "build", "load", "sweep", "HpgenError", "ModelError", "ArgumentError",
            "BuildError", "ConvergenceError", "DomainError", "__version__"]
 

@@ -26,7 +26,8 @@ from pathlib import Path
 
 import jinja2
 
-from .. import __version__, abi
+from .. import abi
+from ..version import __version__
 from ..schemes import BACKENDS, OPTION_KEYS
 from .contract import HASH_RE, MODULE_RE, CodegenError, check_step
 from .csource import c_kernel_context, casadi_c_code, work_sizes
