@@ -35,7 +35,8 @@ test-lowest:
 wheel-test:
 	PYTHON=$(PYTHON) sh .ci/wheel-test
 
-# regenerate the committed sources of the shipped examples (default options of each model)
+# regenerate the golden modules committed in generated/ and compile the other shipped
+# examples into the build cache (default options of each model; hpgen.tools.generate_examples)
 generate: install
 	$(PYTHON) -m hpgen.tools.generate_examples
 

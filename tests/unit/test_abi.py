@@ -14,8 +14,8 @@ from conftest import ROOT
 from hpgen import abi
 
 GENERATED = ROOT / "generated"
-#: a shipped example whose committed module test_generated keeps current
-MODULE = GENERATED / "heavy_top_gauss2_exp_exact"
+#: a golden module (tests/regression/test_generated keeps it current)
+MODULE = GENERATED / "free_rigid_body_stormer_verlet_cay_truncated"
 
 
 def _c_source() -> str:
