@@ -1,9 +1,9 @@
-# hpgen developer tasks. CI (.ci/run) runs `make wheel-test`, then `make test`.
+# hpgen developer tasks. CI (.ci/run) runs `make wheel-test`, `make lint`, then `make test`.
 # Installs use the exact versions of constraints.txt; pyproject.toml holds compatible ranges.
 PYTHON ?= python3
 PIP_INSTALL = $(PYTHON) -m pip install --quiet -c constraints.txt
 
-.PHONY: install demo test test-fast test-lowest wheel-test generate clean
+.PHONY: install demo lint test test-fast test-lowest wheel-test generate clean
 
 install:
 	$(PIP_INSTALL) -e '.[test,scale]'
@@ -14,6 +14,12 @@ DEMO_OUT ?= out
 demo: install
 	mkdir -p $(DEMO_OUT)
 	$(PYTHON) -m hpgen run examples/heavy_top.yaml --out $(DEMO_OUT)/heavy_top.npz
+
+# ruff (rules and files: [tool.ruff] in pyproject.toml) and mypy ([tool.mypy]: hpgen/abi.py,
+# hpgen/schemes.py, hpgen/runtime); the same checks as .pre-commit-config.yaml
+lint: install
+	$(PYTHON) -m ruff check .
+	$(PYTHON) -m mypy
 
 test: install
 	$(PYTHON) -m pytest -q -ra

@@ -172,7 +172,7 @@ def advance(kern: Kernels, run: Run, h, steps, every, opts: NewtonOptions):
     reached, status dict with code, step, iterations, total_iterations, residual, jacobians).
     """
     hv, st, full = _loop_start(run, h, opts, "advance", with_g=True)
-    recs = []
+    recs: list[tuple] = []
     for n in range(steps):
         if _run_step(kern, run, hv, opts, full, st) != OK:
             return n, recs, st
@@ -229,7 +229,7 @@ def advance_record(kern: Kernels, row_of, run: Run, h, steps, every, opts: Newto
     Returns (steps done, rows (lists), status dict); a failed row stops the run after its
     step with code RECORD (the row is kept)."""
     hv, st, full = _loop_start(run, h, opts, "advance_record", with_g=False)
-    rows = []
+    rows: list = []
     if skip_g:
         run.g_stale = True
     for n in range(steps):
@@ -252,7 +252,7 @@ def advance_sections(kern: Kernels, section, chart_point, run: Run, h, steps, ca
     operations). section(g, p) -> [[s]], chart_point(z, g, hv, [theta]) -> [g_theta] (raw
     kernels). Returns (steps done, records [(k, t, g flat, p)], status dict)."""
     hv, st, full = _loop_start(run, h, opts, "advance_sections", with_g=True)
-    recs = []
+    recs: list[tuple] = []
     if run.s is None:
         run.s = section(run.g, run.p)[0][0]
     n = 0
