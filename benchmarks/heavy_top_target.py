@@ -1,4 +1,4 @@
-"""Issue 14 item 3, second target: heavy top, T = 10, error 1e-6, hpgen's best scheme against
+"""Heavy top, T = 10, error 1e-6: hpgen's best scheme against
 SciPy DOP853 and RK4 emitted as C, timed interleaved in one process.
 
     python benchmarks/heavy_top_target.py [--rounds 15] [--schemes gauss3/cay/exact,...]

@@ -1,4 +1,4 @@
-"""The horizon where structure pays (issue 14, item 2): per scene, the time T* beyond which
+"""The horizon where structure pays: per scene, the time T* beyond which
 the best hpgen scheme has a lower energy error AND a lower invariant error than RK4 in C and
 than DOP853, all run at the same wall time per unit of simulated time (fixed cost).
 

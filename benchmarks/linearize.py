@@ -1,4 +1,4 @@
-"""Cost of Integrator.linearize on the heavy top (issue 12).
+"""Cost of Integrator.linearize on the heavy top.
 
     python benchmarks/linearize.py [--steps 10000] [--repeat 5]
 

@@ -1,4 +1,4 @@
-"""The Newton start of a step (issue 14 item 3): the degree of the predictor's extrapolation,
+"""The Newton start of a step: the degree of the predictor's extrapolation,
 and the previous step's collocation polynomial as the start of the next.
 
     python benchmarks/predictor_order.py [--quick]

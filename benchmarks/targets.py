@@ -1,4 +1,4 @@
-"""The speed targets of issue 14 (item 3), all measured in one run, one process.
+"""The speed targets of docs/performance.md, all measured in one run, one process.
 
     python benchmarks/targets.py [--quick]
 

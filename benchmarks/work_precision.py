@@ -1,4 +1,4 @@
-"""Work-precision benchmarks of issue 4 (hpgen.bench), printed as Markdown tables.
+"""Work-precision benchmarks (hpgen.bench), printed as Markdown tables.
 
     python benchmarks/work_precision.py [--quick] [--out DIR] [--cache-dir DIR]
 
@@ -157,7 +157,7 @@ def main(argv=None):
     ap.add_argument("--cache-dir", help="hpgen build cache (default ~/.cache/hpgen)")
     a = ap.parse_args(argv)
     out = Path(a.out)
-    print("# hpgen work-precision benchmarks (issue 4)")
+    print("# hpgen work-precision benchmarks")
     work_precision(HEAVY_TOP, 10.0, out, a.cache_dir, a.quick)
     work_precision(FREE_BODY, None, out, a.cache_dir, a.quick)
     long_run(HEAVY_TOP, out, a.cache_dir, a.quick, component=2)

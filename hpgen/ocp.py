@@ -1,4 +1,4 @@
-"""Discrete optimal control on Lie groups with the HP step as constraints (issue 12).
+"""Discrete optimal control on Lie groups with the HP step as constraints.
 
     plan = hpgen.ocp.rest_to_rest(integ, g0, gT, T, steps)
 

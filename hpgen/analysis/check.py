@@ -34,7 +34,7 @@ Figures (the keys of the JSON report):
   relative, jacobian_norm, cond_J, kernel_mismatch}], form}: the defect
   max |Phi'^T Omega(p_1) Phi' - Omega(p_0)| of the one-step map's Jacobian in the
   left-trivialized chart (hpgen.analysis.symplectic), at ``n_states`` states along the run.
-- a forced model (``forces``; issue 16; u = 0, the file's runtime parameters, t0 = 0):
+- a forced model (``forces``; u = 0, the file's runtime parameters, t0 = 0):
   ``energy`` is the energy-work balance (E - W) - E_0 (``balance`` true), W the forces'
   work by the node rule of hpgen.runtime.work; ``momentum.max_change`` for a left-invariant
   l is the forced momentum balance max |m_k - m_0 - int_0^t Ad*_{g^-1} f dt| (``balance``

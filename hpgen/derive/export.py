@@ -1,4 +1,4 @@
-"""A compiled module's step as a CasADi function, for optimal control (issue 12).
+"""A compiled module's step as a CasADi function, for optimal control.
 
     casadi_step(module_dir, meta) -> casadi.Function
         step(g[n x n], p[d], h, z[nz]) -> (F[nz], g1[n x n], p1[d])

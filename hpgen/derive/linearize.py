@@ -1,4 +1,4 @@
-"""The partial derivatives of one step in the state (kernel ``step_partials``, issue 12).
+"""The partial derivatives of one step in the state (kernel ``step_partials``).
 
 The step solves F(z; g, p, h) = 0 for z and applies the explicit update U(z; g, p, h) =
 (g_{k+1}, p_{k+1}). State perturbations (math.md sec. 10) are right-trivialized:
@@ -24,8 +24,7 @@ parameters (columns 2+m..H); a closed module's kernel is unchanged. With the
 converged z and J = dF/dz (the ``jacobian`` kernel), the implicit function theorem gives the
 step's derivative A = Ys - Yz J^{-1} Fs (hpgen.runtime.linearize.implicit_derivative).
 J is not an output here: a second copy of the Jacobian's code (the largest kernel) would
-double gcc's time on kernels.c (measured: underwater vehicle 27 s -> 52 s, against 32 s
-without it) for ~8% of linearize's time.
+about double gcc's time on kernels.c, for a small part of linearize's time.
 """
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""benchmarks/horizon.py (issue 14, item 2): the --quick run's output structure (figures,
+"""benchmarks/horizon.py: the --quick run's output structure (figures,
 table, JSON), the T* rule on made-up curves, the streaming envelope, and the turntable's
 symmetric peers. Speed is never asserted on.
 """

@@ -1,7 +1,7 @@
 """A derivation change against a reference checkout: time per step of the same scheme generated
 by two hpgen trees, both loaded into this process and run by this tree's runtime, interleaved.
 
-    python benchmarks/derivation_ab.py --ref /work/main [--quick] [--scheme gauss2/cay/exact]
+    python benchmarks/archive/derivation_ab.py --ref /work/main [--quick] [--scheme gauss2/cay/exact]
                                        [--model examples/heavy_top.yaml]
 
 Heavy top (examples/heavy_top.yaml, h = 0.05; ``--model``: another closed SO3 model),
@@ -29,7 +29,7 @@ from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 MODEL = ROOT / "examples" / "heavy_top.yaml"
 
 #: run by each tree: generate the module into argv[2], print the kernels' operation counts

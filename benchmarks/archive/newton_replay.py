@@ -1,7 +1,7 @@
 """Why a heavy-top Gauss step takes the iterations it takes (issue 14 item 3, the 30x DOP853
 target): a run's steps replayed offline under other Newton starts and refresh policies.
 
-    python benchmarks/newton_replay.py [--scheme gauss3/cay/exact] [--h 0.08] [--T 10]
+    python benchmarks/archive/newton_replay.py [--scheme gauss3/cay/exact] [--h 0.08] [--T 10]
 
 A Python-backend run of the heavy top (examples/heavy_top.yaml, its scene's start) records
 each step's (g_k, p_k, h, Newton start, solution). The replay is simplified Newton as
@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 HEAVY_TOP = ROOT / "examples" / "heavy_top.yaml"
 REFRESH_COST = 20
 

@@ -1,7 +1,7 @@
 """Python backend: time per step with and without the fused Newton iterates (kernels.py
 ITERATE and ITERATE_FULL, hpgen.codegen.pyiterate), interleaved in one process.
 
-    python benchmarks/python_step.py [--quick]
+    python benchmarks/archive/python_step.py [--quick]
 
 Heavy top (examples/heavy_top.yaml, h = 0.05), default Newton mode. For each configuration
 one Python-backend module is loaded twice: as shipped ("fused") and with ITERATE and
@@ -18,7 +18,7 @@ import tempfile
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 MODEL = ROOT / "examples" / "heavy_top.yaml"
 #: (tableau, tau, rkmk, steps per timed run): short runs, many repeats (a shared machine's
 #: quiet moments decide the minimum)
