@@ -1,4 +1,4 @@
-"""Minimum-effort rest-to-rest slew of a rigid spacecraft on SO3 (issue 12; hpgen.ocp).
+"""Minimum-effort rest-to-rest slew of a rigid spacecraft on SO3 (hpgen.ocp).
 
     PYTHONPATH=. python examples/spacecraft_rest_to_rest.py [tableau]
 
