@@ -161,7 +161,8 @@ def main():
     for h, (g, hd) in sv.items():
         rows.append(("generated SV within 1.2x of hand C", f"h = {h}: {g:.0f} ns/step",
                      f"hand {hd:.0f} ns/step", f"{g / hd:.2f}x"))
-    ms = (lambda t: "no overlap" if t is None else f"{t * 1e3:.3f} ms")
+    def ms(t):
+        return "no overlap" if t is None else f"{t * 1e3:.3f} ms"
     for stat, (best, t_hp, t_dop, t_rk4) in heavy_top_T10(cache, a.quick).items():
         rows.append((f"heavy top T = 10 at 1e-6: >= 30x DOP853 ({stat})",
                      f"{best}: {ms(t_hp)}", f"DOP853 {ms(t_dop)}",
