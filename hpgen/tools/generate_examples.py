@@ -82,7 +82,8 @@ def main(argv=None) -> int:
     if not args.no_cache:
         for path in examples():
             if path not in golden_examples():
-                print(build(path, cache_dir=args.cache_dir).module_dir)
+                module = build(path, cache_dir=args.cache_dir)
+                print(f"{module.meta['module']} (build cache): {module.module_dir}")
     return 0
 
 
