@@ -1,9 +1,12 @@
 """Compile a generated module's kernels.c into a shared library (C backend), content-addressed.
 
+kernels.c includes hpgen's static C runtime (the plain C files in RUNTIME_DIR, found by
+``-I RUNTIME_DIR``): one translation unit per module (see RUNTIME_LINKING).
+
 The library is ``_kernels_<key[:16]>.so`` in the module directory, where ``key`` is the sha256
-of kernels.c's bytes, the compiler command (with the path it resolves to) and the flags
-(``build_key``): the same C built the same way is the same library, whichever derivation
-emitted it. Beside it, ``_kernels_<key[:16]>.so.json`` records the library's sha256 and its
+of kernels.c's bytes, the runtime's sources (``runtime_digest``), the compiler command (with
+the path it resolves to) and the flags (``build_key``): the same C built the same way is the
+same library, whichever derivation emitted it, and a changed runtime builds a new one. Beside it, ``_kernels_<key[:16]>.so.json`` records the library's sha256 and its
 source's. A library is returned (and so loaded) only when its bytes match that record; one
 that does not (truncated, bytes flipped, record missing) is rebuilt, never loaded.
 
@@ -37,6 +40,19 @@ from ..errors import BuildError
 
 #: default flags: portable and reproducible (no -march=native); pass extras via ``cflags``
 DEFAULT_CFLAGS = ("-std=c99", "-O3", "-fPIC", "-shared")
+#: the static C runtime every kernels.c includes (hpgen_runtime.h, hpgen_runtime.c and its
+#: parts), shipped in the package
+RUNTIME_DIR = Path(__file__).resolve().parent / "c"
+#: How the runtime is linked: included into each module's translation unit (kernels.c ends
+#: with #include "hpgen_runtime.c"), after the model's sizes (#define HPGEN_NZ ...) and its
+#: kernels, rather than compiled once per compiler and flags into an object linked into
+#: every module. Included, the sizes are compile-time constants (the LU, the norms and the
+#: predictor unroll, work arrays have fixed size) and the step's kernels inline into the
+#: Newton loop (HPGEN_FLATTEN); a shared object would call the kernels through the module's
+#: symbols and loop over runtime sizes. Measured (benchmarks/runtime_ab.py --no-inline,
+#: portable -O3): the kernels merely kept out of line make the Stormer-Verlet heavy-top step
+#: about 1.3x slower; included, the step times equal the template-rendered runtime's.
+RUNTIME_LINKING = "include"
 #: link inputs placed after the source file
 LIBS = ("-lm",)
 _TIMEOUT = 600
@@ -52,10 +68,29 @@ def compiler_command(cc=None) -> list[str]:
     return argv
 
 
+def runtime_sources() -> list[Path]:
+    """The runtime's C files (RUNTIME_DIR/*.c, *.h), sorted by name."""
+    return sorted(p for p in RUNTIME_DIR.iterdir() if p.suffix in (".c", ".h"))
+
+
+def runtime_digest() -> str:
+    """sha256 over the runtime's C files (names and bytes)."""
+    h = hashlib.sha256()
+    for p in runtime_sources():
+        h.update(p.name.encode() + b"\0" + p.read_bytes() + b"\0")
+    return h.hexdigest()
+
+
+def include_flags() -> list[str]:
+    """The compiler flags that let kernels.c find the runtime (``-I RUNTIME_DIR``)."""
+    return ["-I", str(RUNTIME_DIR)]
+
+
 def build_key(source: bytes, argv, cflags=()) -> str:
-    """sha256 of the C source, the compiler command (and the file it resolves to) and flags."""
-    return cache.cache_key(hashlib.sha256(source).hexdigest(), json.dumps(list(argv)),
-                           str(shutil.which(argv[0]) or argv[0]),
+    """sha256 of the C source, the runtime's sources, the compiler command (and the file it
+    resolves to) and flags."""
+    return cache.cache_key(hashlib.sha256(source).hexdigest(), runtime_digest(),
+                           json.dumps(list(argv)), str(shutil.which(argv[0]) or argv[0]),
                            json.dumps(list(DEFAULT_CFLAGS) + list(cflags) + list(LIBS)))
 
 
@@ -176,7 +211,8 @@ def _compile(source: Path, target: Path, digest: str, argv, extra) -> Path:
         except OSError as exc:
             raise cache.CacheUnwritable(target.parent, exc) from None
         os.close(fd)
-        cmd = argv + list(DEFAULT_CFLAGS) + list(extra) + ["-o", tmp, str(source)] + list(LIBS)
+        cmd = (argv + list(DEFAULT_CFLAGS) + list(extra) + include_flags()
+               + ["-o", tmp, str(source)] + list(LIBS))
         try:
             try:
                 proc = subprocess.run(cmd, capture_output=True, text=True, timeout=_TIMEOUT)
@@ -188,7 +224,8 @@ def _compile(source: Path, target: Path, digest: str, argv, extra) -> Path:
                 raise BuildError(f"C compilation failed (exit status {proc.returncode})",
                                  command=cmd, stderr=proc.stderr)
             record = {"sha256": hashlib.sha256(Path(tmp).read_bytes()).hexdigest(),
-                      "source_sha256": digest, "compiler": list(argv),
+                      "source_sha256": digest, "runtime_sha256": runtime_digest(),
+                      "compiler": list(argv),
                       "cflags": list(DEFAULT_CFLAGS) + list(extra) + list(LIBS)}
             write_file(_record_path(target), json.dumps(record, indent=1) + "\n")
             os.replace(tmp, target)

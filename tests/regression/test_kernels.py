@@ -74,10 +74,10 @@ def test_kernels_match_casadi(compile_model, example, opts):
 def test_generated_c_compiles_with_strict_warnings(tmp_path, module):
     """-Wall -Werror with the flags modules are built with (-O3: gcc's maybe-uninitialized
     analysis runs at -O2 and above, so -O1 would miss those warnings)."""
-    from hpgen.runtime.build import DEFAULT_CFLAGS
+    from hpgen.runtime.build import DEFAULT_CFLAGS, include_flags
     src = Path(__file__).resolve().parents[2] / "generated" / module / "kernels.c"
     flags = [f for f in DEFAULT_CFLAGS if f not in ("-shared", "-fPIC")]
-    proc = subprocess.run(["cc", *flags, "-Wall", "-Werror", "-fPIC", "-shared", "-o",
-                           str(tmp_path / "k.so"), str(src), "-lm"],
+    proc = subprocess.run(["cc", *flags, "-Wall", "-Werror", "-fPIC", "-shared",
+                           *include_flags(), "-o", str(tmp_path / "k.so"), str(src), "-lm"],
                           capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stderr[:2000]
