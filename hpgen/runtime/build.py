@@ -6,9 +6,10 @@ kernels.c includes hpgen's static C runtime (the plain C files in RUNTIME_DIR, f
 The library is ``_kernels_<key[:16]>.so`` in the module directory, where ``key`` is the sha256
 of kernels.c's bytes, the runtime's sources (``runtime_digest``), the compiler command (with
 the path it resolves to) and the flags (``build_key``): the same C built the same way is the
-same library, whichever derivation emitted it, and a changed runtime builds a new one. Beside it, ``_kernels_<key[:16]>.so.json`` records the library's sha256 and its
-source's. A library is returned (and so loaded) only when its bytes match that record; one
-that does not (truncated, bytes flipped, record missing) is rebuilt, never loaded.
+same library, whichever derivation emitted it, and a changed runtime builds a new one.
+Beside it, ``_kernels_<key[:16]>.so.json`` records the library's sha256 and its source's. A
+library is returned (and so loaded) only when its bytes match that record; one that does not
+(truncated, bytes flipped, record missing) is rebuilt, never loaded.
 
 ``store`` (the build cache's ``<cache>/lib``) holds the libraries of all cache entries: an
 intact one found there is linked (or copied) into the module directory instead of compiled,
@@ -47,11 +48,12 @@ RUNTIME_DIR = Path(__file__).resolve().parent / "c"
 #: with #include "hpgen_runtime.c"), after the model's sizes (#define HPGEN_NZ ...) and its
 #: kernels, rather than compiled once per compiler and flags into an object linked into
 #: every module. Included, the sizes are compile-time constants (the LU, the norms and the
-#: predictor unroll, work arrays have fixed size) and the step's kernels inline into the
-#: Newton loop (HPGEN_FLATTEN); a shared object would call the kernels through the module's
-#: symbols and loop over runtime sizes. Measured (benchmarks/runtime_ab.py --no-inline,
-#: portable -O3): the kernels merely kept out of line make the Stormer-Verlet heavy-top step
-#: about 1.3x slower; included, the step times equal the template-rendered runtime's.
+#: predictor unroll, work arrays have fixed sizes) and the step's small kernels inline into
+#: the Newton loop (HPGEN_FLATTEN); a shared object would call the kernels out of line and
+#: loop over runtime sizes. benchmarks/runtime_ab.py --split, portable -O3, medians of 30
+#: interleaved rounds: with only the kernels kept out of line (sizes still constant) the
+#: Stormer-Verlet heavy-top step takes 1.20x and the free body's lane ensemble 1.08x the
+#: included runtime's time (Gauss 2 / 3, whose kernels are too large to inline: 1.00).
 RUNTIME_LINKING = "include"
 #: link inputs placed after the source file
 LIBS = ("-lm",)

@@ -1,7 +1,7 @@
-"""ctypes mirrors of the generated C's structs (``hpgen_status``, ``hpgen_options``: their
-fields from hpgen.abi) and fixed-address argument buffers for calls into kernels.c, shared by
-the C backend's run loops (cbackend.py, cbatch.py) and simulate's fast path (prologue.py).
-Standard library and numpy only.
+"""ctypes mirrors of the C runtime's structs (``hpgen_status``, ``hpgen_options`` of
+hpgen/runtime/c/hpgen_runtime.h: their fields from hpgen.abi) and fixed-address argument
+buffers for calls into kernels.c, shared by the C backend's run loops (cbackend.py, cbatch.py)
+and simulate's fast path (prologue.py). Standard library and numpy only.
 """
 from __future__ import annotations
 

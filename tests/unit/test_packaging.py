@@ -1,6 +1,7 @@
 """Packaging: the wheel's package list covers every subpackage and ships templates/ (kept at
-the top of the repository) as hpgen/templates and the C runtime (hpgen/runtime/c); dependencies are ranges, pins live in
-constraints.txt. (.ci/wheel-test builds and installs the wheel itself.)"""
+the top of the repository) as hpgen/templates and the C runtime (hpgen/runtime/c);
+dependencies are ranges, pins live in constraints.txt. (.ci/wheel-test builds and installs the
+wheel itself.)"""
 from __future__ import annotations
 
 import importlib

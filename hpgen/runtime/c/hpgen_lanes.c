@@ -49,10 +49,10 @@ HPGEN_LANES_BEGIN
    residual norm), 0 where hpgen_newton would return a failure (z then undefined). One lane
    loop per iteration after the kernel: the solve by the cofactors of hpgen_lu_factor_solve
    (the same operations), z - dz, the inf-norms and the tests, the entries unrolled at
-   compile time (HPGEN_EACH_Z), flags as doubles 0/1 and blends for the masks (no branch on a lane), so that
-   gcc vectorises it. Finiteness: the sum of x - x over the entries is 0 iff every entry is
-   finite (x - x is NaN for inf and NaN). A lane stays inactive once stopped: its iterations
-   are the sum of its active flags. */
+   compile time (HPGEN_EACH_Z), flags as doubles 0/1 and blends for the masks (no branch on
+   a lane), so that gcc vectorises it. Finiteness: the sum of x - x over the entries is 0 iff
+   every entry is finite (x - x is NaN for inf and NaN). A lane stays inactive once stopped:
+   its iterations are the sum of its active flags. */
 static void hpgen_lane_newton(const double* g, const double* p, const double* hv, double* zio,
                               const hpgen_options* o, long long* okio, long long* itio,
                               double* rnio) {

@@ -4,8 +4,8 @@
    after hpgen_linalg.c. */
 
 /* Newton on residual(z, g, p, h) = 0 from z (in/out): z <- z - J^{-1} F.
-   Full Newton evaluates J at every iterate. Simplified Newton (o->simplified) keeps the last J^{-1}
-   in (lu, *lu_valid), across steps too, and refreshes it when the contraction
+   Full Newton evaluates J at every iterate. Simplified Newton (o->simplified) keeps the last
+   J^{-1} in (lu, *lu_valid), across steps too, and refreshes it when the contraction
    rate theta = |dz_k| / |dz_{k-1}| exceeds HPGEN_THETA_MAX; if J was already evaluated in
    this step the rest of the step is full Newton (the fallback).
    Converged when |dz| <= tol (1 + |z|), or when |dz| stopped decreasing while
@@ -53,7 +53,8 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
                round-off level full Newton reaches */
             double th = dn / dprev, te = th > HPGEN_THETA_FLOOR ? th : HPGEN_THETA_FLOOR;
             if (dn <= HPGEN_SIMPLIFIED_TOL * o->tol * (1.0 + zn)) return HPGEN_OK;
-            if (it > 1 && te < 1.0 && te / (1.0 - te) * dn <= HPGEN_SIMPLIFIED_TOL * o->tol * (1.0 + zn))
+            if (it > 1 && te < 1.0
+                && te / (1.0 - te) * dn <= HPGEN_SIMPLIFIED_TOL * o->tol * (1.0 + zn))
                 return HPGEN_OK;
         }
         if (!full && it > 1 && dn > HPGEN_THETA_MAX * dprev) {

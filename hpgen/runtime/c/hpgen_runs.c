@@ -96,7 +96,8 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     for (i = 0; i < HPGEN_M; ++i) r->hv[2 + i] = r->U[(r->u_rows == 1 ? 0 : r->k) * HPGEN_M + i];
     hv = r->hv;
 #endif
-    hpgen_predictor_base(r->g, r->p, hv, G);    /* (kept up to date with or without o->predictor) */
+    /* (G is kept up to date with or without o->predictor) */
+    hpgen_predictor_base(r->g, r->p, hv, G);
     if (predicted && r->have_prev == HPGEN_PH)     /* the steady state: a constant m */
         hpgen_predict(G, r->dz[0], 1, HPGEN_NZ, HPGEN_PH, zs);
     else if (predicted)
@@ -218,8 +219,9 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
 }
 
 /* xi with legendre(g, xi) = p: Newton (kernel velocity_step) from xi = 0; one step when l is
-   quadratic in xi (then exact), else until |dxi| <= HPGEN_VELOCITY_TOL (1 + |xi|) or the round-off floor,
-   at most HPGEN_VELOCITY_MAXIT iterations (the runtime's Integrator.velocity uses the same test). */
+   quadratic in xi (then exact), else until |dxi| <= HPGEN_VELOCITY_TOL (1 + |xi|) or the
+   round-off floor, at most HPGEN_VELOCITY_MAXIT iterations (the runtime's
+   Integrator.velocity uses the same test). */
 #if HPGEN_RECORD_USES_XI
 static int hpgen_velocity(const double* g, const double* p, double* xi HPGEN_OPEN_HV_PARAM) {
     double x1[HPGEN_D], dprev = HUGE_VAL;
@@ -227,7 +229,8 @@ static int hpgen_velocity(const double* g, const double* p, double* xi HPGEN_OPE
     for (i = 0; i < HPGEN_D; ++i) xi[i] = 0.0;
     for (it = 1; it <= HPGEN_VELOCITY_MAXIT; ++it) {
         double dn = 0.0, xn;
-        if (hpgen_k_velocity_step(g, p, xi, HPGEN_OPEN_HV(hv) x1) || !hpgen_all_finite(x1, HPGEN_D))
+        if (hpgen_k_velocity_step(g, p, xi, HPGEN_OPEN_HV(hv) x1)
+            || !hpgen_all_finite(x1, HPGEN_D))
             return HPGEN_RECORD;
         for (i = 0; i < HPGEN_D; ++i) {
             const double dx = fabs(x1[i] - xi[i]);
@@ -258,7 +261,8 @@ static int hpgen_record_row(const double* g, const double* p, double* row HPGEN_
 #else
     memset(xi, 0, sizeof xi);
 #endif
-    if (hpgen_k_record(g, p, xi, HPGEN_OPEN_HV(hv) row) || !hpgen_all_finite(row, HPGEN_W)) return HPGEN_RECORD;
+    if (hpgen_k_record(g, p, xi, HPGEN_OPEN_HV(hv) row) || !hpgen_all_finite(row, HPGEN_W))
+        return HPGEN_RECORD;
     return HPGEN_OK;
 }
 

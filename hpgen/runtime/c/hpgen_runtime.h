@@ -140,7 +140,7 @@ typedef struct hpgen_options {
     double tol;                  /* converged when |dz| <= tol (1 + |z|), inf-norms */
     long long maxit;             /* Newton iterations per step, >= 1 */
     long long simplified;        /* 1: keep the Jacobian's LU across iterations and steps */
-    long long predictor;         /* 1: start step k+1 from the predictor of hpgen_run_step (else z_k) */
+    long long predictor;         /* 1: start step k+1 from the predictor (else from z_k) */
 } hpgen_options;
 
 /* A run in progress: the state, the Newton start and the Newton memory. Advancing a run by
