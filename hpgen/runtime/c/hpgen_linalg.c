@@ -1,6 +1,13 @@
 /* hpgen's C runtime, part 1: dense linear algebra of the Newton matrix (HPGEN_NZ unknowns).
    Mirrored operation for operation in Python by hpgen.codegen.pylinear (printed per nz).
-   Included by hpgen_runtime.c; the model and the contract are hpgen_runtime.h's. */
+   Included by hpgen_runtime.c; the model and the contract are hpgen_runtime.h's.
+
+   What Newton, the runs and the linearization use of this file (its interface):
+     hpgen_lu_factor_solve(A, piv, b, keep)  b <- J^{-1} b with J in A; keep: A <- J^{-1}
+     hpgen_lu_apply(A, piv, b)               b <- J^{-1} b with the kept A
+     hpgen_norm_inf(x, n), hpgen_all_finite(x, n)
+   A factorization of another structure (a sparse one for many bodies) provides the same
+   two functions over its own storage. */
 
 /* max |x_i|; NaN if any x_i is NaN */
 static double hpgen_norm_inf(const double* x, int n) {
