@@ -78,9 +78,9 @@ static inline void hpgen_predict(const double* G, const double* d, int es, int o
    Predictor: z_k = G_k + dz_k with G_k = hpgen_predictor_base(g_k, p_k) (exact in p, O(1))
    and dz_k = z_k - G_k small (O(h)) and smooth in k; the start is G_k plus the polynomial
    through the last m = min(have_prev, HPGEN_PH) offsets extrapolated one step
-   (hpgen_predict: quintic once six exist). Extrapolating z itself (an older predictor) left
-   errors 5-7x larger on the heavy top, the quadratic 0.5-2 more iterations per step
-   (docs/performance.md). */
+   (hpgen_predict: quintic once six exist). The offsets from G_k, not z itself, are
+   extrapolated: they are small and smooth where z is not (docs/performance.md, "Newton's
+   start and stop"). */
 static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
                           const hpgen_options* full, hpgen_status* st, int with_g) {
     double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], G[HPGEN_NZ], res;
