@@ -11,8 +11,9 @@ What it holds:
 - the record row's layout conventions (``record_width``): meta.json "record" /
   DiscreteStep.record_layout.
 - STATUS: the status codes of a step or a run with their messages (C ``HPGEN_<NAME>``).
-- the Newton constants shared by the C template and its Python mirror
-  (hpgen.runtime.newton / loop), which must stay bitwise equal: both take them from here.
+- the Newton constants shared by the C runtime (hpgen/runtime/c) and its Python mirror
+  (hpgen.runtime.newton / loop), which must stay bitwise equal: Python takes them from here,
+  the C header writes them as literals (C_CONSTANTS) that the tests read back bitwise.
 - ABI_VERSION (``hpgen_dims()[0]`` of a compiled kernels.c) and META_FORMAT (meta.json
   "format"): bump ABI_VERSION when an exported C signature or struct changes, META_FORMAT when
   a meta.json key is added, removed or changes meaning.
@@ -205,7 +206,7 @@ REFRESH = -2
 VELOCITY_TOL = DEFAULT_TOL
 VELOCITY_MAXIT = DEFAULT_MAXIT
 #: largest nz whose Newton linear algebra kernels.py carries as straight-line Python
-#: (bitwise the C template's; above it numpy/LAPACK, equal to C to round-off)
+#: (bitwise the C runtime's; above it numpy/LAPACK, equal to C to round-off)
 UNROLL_MAX = 12
 
 #: the predictor keeps the offsets z_j - G_j of this many past steps; the start of a step is G_k
@@ -220,11 +221,12 @@ PREDICTOR_HISTORY = 6
 PREDICTOR_COEFFICIENTS = tuple(tuple(float((-1) ** i * math.comb(m, i + 1)) for i in range(m))
                                for m in range(1, PREDICTOR_HISTORY + 1))
 
-#: the compile-time constants kernels.c.j2 receives (template variable -> value)
-TEMPLATE_CONSTANTS = {"abi_version": ABI_VERSION, "roundoff_floor": ROUNDOFF_FLOOR,
-                      "theta_max": THETA_MAX, "simplified_tol": SIMPLIFIED_TOL,
-                      "velocity_tol": VELOCITY_TOL, "velocity_maxit": VELOCITY_MAXIT,
-                      "predictor_history": PREDICTOR_HISTORY, "theta_floor": THETA_FLOOR}
+#: the contract's values the C runtime defines (hpgen/runtime/c/hpgen_runtime.h: macro ->
+#: value, written there as c_literal(value); tests/unit/test_abi.py reads them back)
+C_CONSTANTS = {"HPGEN_ABI": ABI_VERSION, "HPGEN_ROUNDOFF_FLOOR": ROUNDOFF_FLOOR,
+               "HPGEN_THETA_MAX": THETA_MAX, "HPGEN_SIMPLIFIED_TOL": SIMPLIFIED_TOL,
+               "HPGEN_THETA_FLOOR": THETA_FLOOR, "HPGEN_VELOCITY_TOL": VELOCITY_TOL,
+               "HPGEN_VELOCITY_MAXIT": VELOCITY_MAXIT, "HPGEN_PH": PREDICTOR_HISTORY}
 
 
 def c_literal(value) -> str:

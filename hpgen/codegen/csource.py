@@ -1,5 +1,6 @@
 """The C backend's inputs: CasADi's own C code for every kernel, and the per-kernel facts the
-``kernels.c.j2`` template needs (work sizes, sparse gather/scatter positions).
+``kernels.c.j2`` template needs (work sizes, sparse gather/scatter positions); the Newton
+loop and the runs around them are the static C runtime (hpgen/runtime/c).
 
 CasADi-generated functions read/write only the structural nonzeros of each argument; the
 hpgen wrappers present dense column-major arrays (gathering/scattering when an argument is

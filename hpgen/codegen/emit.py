@@ -1,8 +1,9 @@
 """emit(): DiscreteStep + caller info -> the files of one generated module (pure, no file I/O).
 
 Generated files (relative paths):
-  kernels.c    CasADi's C for all kernels + templates/kernels.c.j2 (LU, Newton, step, runs);
-               status codes and Newton constants from hpgen.abi
+  kernels.c    the model's sizes and CasADi's C for all kernels (templates/kernels.c.j2),
+               compiled with the static C runtime it includes (hpgen/runtime/c: Newton, the
+               step, the runs; the contract hpgen.abi as C)
   kernels.py   the Python backend printed from the same SX algorithms (templates/kernels.py.j2)
   __init__.py  lazy wrapper: integrator(backend=None), step(g, p, h), simulate(**kw),
                record(**kw)
@@ -155,16 +156,6 @@ def _python_linear(step) -> dict:
             "iterate_function": pyiterate.FUNCTION, "full_function": pyiterate.FULL}
 
 
-def c_abi_context() -> dict:
-    """kernels.c.j2's share of hpgen.abi: the ABI version, the status codes (code, name,
-    message) and the Newton constants, printed as C literals that read back bitwise."""
-    H = abi.PREDICTOR_HISTORY
-    return dict({k: abi.c_literal(v) for k, v in abi.TEMPLATE_CONSTANTS.items()},
-                status=[list(s) for s in abi.STATUS], status_invalid=abi.INVALID,
-                predictor_coefficients=[[abi.c_literal(c) for c in row] + ["0.0"] * (H - len(row))
-                                        for row in abi.PREDICTOR_COEFFICIENTS])
-
-
 def template_contexts(step, info: dict) -> dict[str, dict]:
     """The context passed to each template, keyed by template file name."""
     check_step(step)
@@ -184,7 +175,7 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
                              record_uses_xi=bool(step.record_uses_xi),
                              legendre_quadratic=bool(step.legendre_quadratic),
                              step_uses_g=bool(step.step_uses_g),
-                             record_uses_g=bool(step.record_uses_g), **c_abi_context()),
+                             record_uses_g=bool(step.record_uses_g)),
         "kernels.py.j2": dict(common, nz=step.nz, module=info["module"],
                               **_python_linear(step),
                               safe_unary=[list(p) for p in SAFE_UNARY],

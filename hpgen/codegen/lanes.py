@@ -1,7 +1,7 @@
 """Lane-wise C kernels for ensembles: one CasADi SX function printed as a C function that
-evaluates it for L independent arguments at once (the lanes section at the end of
-templates/kernels.c.j2 runs the Newton loop of L bodies on them; hpgen.runtime's
-simulate_batch calls it).
+evaluates it for L independent arguments at once (the C runtime's
+hpgen/runtime/c/hpgen_lanes.c runs the Newton loop of L bodies on them;
+hpgen.runtime's simulate_batch calls it).
 
 Layout (structure of arrays): every argument, input or output, holds L lanes of a dense
 column-major vector, entry i of lane l at ``x[i * L + l]``. The printed function is one loop

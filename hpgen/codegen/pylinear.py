@@ -1,8 +1,8 @@
 """The Python backend's Newton linear algebra, printed as straight-line Python for one nz
 (templates/kernels.py.j2 emits it into kernels.py; hpgen.runtime.newton calls it).
 
-The C template (templates/kernels.c.j2: hpgen_lu_factor_solve, hpgen_lu_apply) keeps the
-Newton matrix as J^{-1} (explicit, column-major): an iterate with a fresh J solves J dz = F
+The C runtime (hpgen/runtime/c/hpgen_linalg.c: hpgen_lu_factor_solve, hpgen_lu_apply) keeps
+the Newton matrix as J^{-1} (explicit, column-major): an iterate with a fresh J solves J dz = F
 (nz <= 3: cofactors; else the LU with partial pivoting, the diagonal of U stored inverted)
 and, for simplified Newton, forms J^{-1} from the factors; the other iterates take
 dz = J^{-1} F, a matrix-vector product. The functions below print that for one n (entries as
@@ -16,7 +16,7 @@ from __future__ import annotations
 from functools import lru_cache
 
 from ..abi import UNROLL_MAX   # largest nz printed as straight-line Python (above: LAPACK)
-#: largest nz whose "LU" is the inverse by cofactors in the C template (HPGEN_NZ <= 3)
+#: largest nz whose "LU" is the inverse by cofactors in the C runtime (HPGEN_NZ <= 3)
 COFACTOR_MAX = 3
 
 

@@ -1,11 +1,15 @@
 """Compile a generated module's kernels.c into a shared library (C backend), content-addressed.
 
+kernels.c includes hpgen's static C runtime (the plain C files in RUNTIME_DIR, found by
+``-I RUNTIME_DIR``): one translation unit per module (see RUNTIME_LINKING).
+
 The library is ``_kernels_<key[:16]>.so`` in the module directory, where ``key`` is the sha256
-of kernels.c's bytes, the compiler command (with the path it resolves to) and the flags
-(``build_key``): the same C built the same way is the same library, whichever derivation
-emitted it. Beside it, ``_kernels_<key[:16]>.so.json`` records the library's sha256 and its
-source's. A library is returned (and so loaded) only when its bytes match that record; one
-that does not (truncated, bytes flipped, record missing) is rebuilt, never loaded.
+of kernels.c's bytes, the runtime's sources (``runtime_digest``), the compiler command (with
+the path it resolves to) and the flags (``build_key``): the same C built the same way is the
+same library, whichever derivation emitted it, and a changed runtime builds a new one.
+Beside it, ``_kernels_<key[:16]>.so.json`` records the library's sha256 and its source's. A
+library is returned (and so loaded) only when its bytes match that record; one that does not
+(truncated, bytes flipped, record missing) is rebuilt, never loaded.
 
 ``store`` (the build cache's ``<cache>/lib``) holds the libraries of all cache entries: an
 intact one found there is linked (or copied) into the module directory instead of compiled,
@@ -37,6 +41,20 @@ from ..errors import BuildError
 
 #: default flags: portable and reproducible (no -march=native); pass extras via ``cflags``
 DEFAULT_CFLAGS = ("-std=c99", "-O3", "-fPIC", "-shared")
+#: the static C runtime every kernels.c includes (hpgen_runtime.h, hpgen_runtime.c and its
+#: parts), shipped in the package
+RUNTIME_DIR = Path(__file__).resolve().parent / "c"
+#: How the runtime is linked: included into each module's translation unit (kernels.c ends
+#: with #include "hpgen_runtime.c"), after the model's sizes (#define HPGEN_NZ ...) and its
+#: kernels, rather than compiled once per compiler and flags into an object linked into
+#: every module. Included, the sizes are compile-time constants (the LU, the norms and the
+#: predictor unroll, work arrays have fixed sizes) and the step's small kernels inline into
+#: the Newton loop (HPGEN_FLATTEN); a shared object would call the kernels out of line and
+#: loop over runtime sizes. benchmarks/runtime_ab.py --split, portable -O3, medians of 30
+#: interleaved rounds: with only the kernels kept out of line (sizes still constant) the
+#: Stormer-Verlet heavy-top step takes 1.20x and the free body's lane ensemble 1.08x the
+#: included runtime's time (Gauss 2 / 3, whose kernels are too large to inline: 1.00).
+RUNTIME_LINKING = "include"
 #: link inputs placed after the source file
 LIBS = ("-lm",)
 _TIMEOUT = 600
@@ -52,10 +70,29 @@ def compiler_command(cc=None) -> list[str]:
     return argv
 
 
+def runtime_sources() -> list[Path]:
+    """The runtime's C files (RUNTIME_DIR/*.c, *.h), sorted by name."""
+    return sorted(p for p in RUNTIME_DIR.iterdir() if p.suffix in (".c", ".h"))
+
+
+def runtime_digest() -> str:
+    """sha256 over the runtime's C files (names and bytes)."""
+    h = hashlib.sha256()
+    for p in runtime_sources():
+        h.update(p.name.encode() + b"\0" + p.read_bytes() + b"\0")
+    return h.hexdigest()
+
+
+def include_flags() -> list[str]:
+    """The compiler flags that let kernels.c find the runtime (``-I RUNTIME_DIR``)."""
+    return ["-I", str(RUNTIME_DIR)]
+
+
 def build_key(source: bytes, argv, cflags=()) -> str:
-    """sha256 of the C source, the compiler command (and the file it resolves to) and flags."""
-    return cache.cache_key(hashlib.sha256(source).hexdigest(), json.dumps(list(argv)),
-                           str(shutil.which(argv[0]) or argv[0]),
+    """sha256 of the C source, the runtime's sources, the compiler command (and the file it
+    resolves to) and flags."""
+    return cache.cache_key(hashlib.sha256(source).hexdigest(), runtime_digest(),
+                           json.dumps(list(argv)), str(shutil.which(argv[0]) or argv[0]),
                            json.dumps(list(DEFAULT_CFLAGS) + list(cflags) + list(LIBS)))
 
 
@@ -176,7 +213,8 @@ def _compile(source: Path, target: Path, digest: str, argv, extra) -> Path:
         except OSError as exc:
             raise cache.CacheUnwritable(target.parent, exc) from None
         os.close(fd)
-        cmd = argv + list(DEFAULT_CFLAGS) + list(extra) + ["-o", tmp, str(source)] + list(LIBS)
+        cmd = (argv + list(DEFAULT_CFLAGS) + list(extra) + include_flags()
+               + ["-o", tmp, str(source)] + list(LIBS))
         try:
             try:
                 proc = subprocess.run(cmd, capture_output=True, text=True, timeout=_TIMEOUT)
@@ -188,7 +226,8 @@ def _compile(source: Path, target: Path, digest: str, argv, extra) -> Path:
                 raise BuildError(f"C compilation failed (exit status {proc.returncode})",
                                  command=cmd, stderr=proc.stderr)
             record = {"sha256": hashlib.sha256(Path(tmp).read_bytes()).hexdigest(),
-                      "source_sha256": digest, "compiler": list(argv),
+                      "source_sha256": digest, "runtime_sha256": runtime_digest(),
+                      "compiler": list(argv),
                       "cflags": list(DEFAULT_CFLAGS) + list(extra) + list(LIBS)}
             write_file(_record_path(target), json.dumps(record, indent=1) + "\n")
             os.replace(tmp, target)

@@ -1,7 +1,7 @@
-"""ctypes mirrors of the generated C's structs (``hpgen_status``, ``hpgen_options``: their
-fields from hpgen.abi) and fixed-address argument buffers for calls into kernels.c, shared by
-the C backend's run loops (cbackend.py, cbatch.py) and simulate's fast path (prologue.py).
-Standard library and numpy only.
+"""ctypes mirrors of the C runtime's structs (``hpgen_status``, ``hpgen_options`` of
+hpgen/runtime/c/hpgen_runtime.h: their fields from hpgen.abi) and fixed-address argument
+buffers for calls into kernels.c, shared by the C backend's run loops (cbackend.py, cbatch.py)
+and simulate's fast path (prologue.py). Standard library and numpy only.
 """
 from __future__ import annotations
 
@@ -16,7 +16,8 @@ from . import newton
 def _addr(a: np.ndarray) -> int:
     """Address of the data of a writable C-contiguous float64 array (through the buffer
     protocol when it is not empty: a quarter of the cost of ``a.ctypes.data``)."""
-    return ctypes.addressof(ctypes.c_char.from_buffer(a)) if a.size else a.ctypes.data
+    return (ctypes.addressof(ctypes.c_char.from_buffer(a))  # type: ignore[arg-type]
+            if a.size else a.ctypes.data)
 
 
 def _views(sizes):
@@ -43,7 +44,7 @@ class _Staging:
         self.ptrs = tuple(pin + pout)
 
 
-_CTYPES = {"q": ctypes.c_longlong, "d": ctypes.c_double}
+_CTYPES: dict[str, type[ctypes._SimpleCData]] = {"q": ctypes.c_longlong, "d": ctypes.c_double}
 
 
 class _Status(ctypes.Structure):
@@ -51,7 +52,7 @@ class _Status(ctypes.Structure):
     _fields_ = [(name, _CTYPES[kind]) for name, kind in abi.STATUS_FIELDS]
 
     def as_dict(self) -> dict:
-        return {f: getattr(self, f) for f, _ in self._fields_}
+        return {f[0]: getattr(self, f[0]) for f in self._fields_}
 
 
 class _Options(ctypes.Structure):

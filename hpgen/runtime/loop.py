@@ -1,8 +1,9 @@
-"""The run loop of kernels.c.j2 in Python (hpgen_run_step, hpgen_advance,
-hpgen_advance_record, hpgen_advance_sections, hpgen_velocity / hpgen_record_row): the same
-order of operations on lists of Python floats with the module's raw kernels, so that the
-Python backend's runs are those of the C backend (bitwise for nz <= UNROLL_MAX, see
-hpgen.runtime.newton). One step is newton.step_lists. numpy and the standard library only.
+"""The run loop of the C runtime's hpgen/runtime/c/hpgen_runs.c in Python (hpgen_run_step,
+hpgen_advance, hpgen_advance_record, hpgen_advance_sections, hpgen_velocity /
+hpgen_record_row): the same order of operations on lists of Python floats with the module's
+raw kernels, so that the Python backend's runs are those of the C backend (bitwise for
+nz <= UNROLL_MAX, see hpgen.runtime.newton). One step is newton.step_lists. numpy and the
+standard library only.
 """
 from __future__ import annotations
 
@@ -111,7 +112,7 @@ _PREDICTORS = _predictors()
 def predict(G, dz) -> list:
     """G + the polynomial through the m = len(dz) offsets dz (newest first, 1 <= m <=
     PREDICTOR_HISTORY) extrapolated one step, entry by entry: t = c_0 dz_0, t += c_i dz_i
-    with c = PREDICTOR_COEFFICIENTS[m - 1], then G + t (kernels.c.j2's hpgen_predict, the
+    with c = PREDICTOR_COEFFICIENTS[m - 1], then G + t (hpgen_runs.c's hpgen_predict, the
     same operations)."""
     return _PREDICTORS[len(dz) - 1](G, dz)
 
@@ -122,7 +123,7 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
     (with_g False: p only, g kept); st's counters updated (iterations, residual,
     total_iterations, jacobians; code and step on failure). Returns the status code.
 
-    Predictor (kernels.c.j2, hpgen_run_step): z_j = G_j + dz_j with G_j = predictor_base at
+    Predictor (hpgen_runs.c, hpgen_run_step): z_j = G_j + dz_j with G_j = predictor_base at
     step j's start; the start is G_k plus the polynomial through the last m offsets dz
     extrapolated one step (predict)."""
     if run.inputs is not None:           # an open module: hv = [h, t_k, u_k, params]

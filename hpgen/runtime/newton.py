@@ -1,5 +1,5 @@
-"""Newton iteration and one step in Python, identical in logic to kernels.c.j2 (the run
-loop over steps is hpgen.runtime.loop).
+"""Newton iteration and one step in Python, identical in logic to the C runtime's
+hpgen/runtime/c/hpgen_newton.c (the run loop over steps is hpgen.runtime.loop).
 
 z <- z - J^{-1} F, inf-norms, theta = ||dz_k|| / ||dz_{k-1}||.
 - Full Newton (J at every iterate) converges when ||dz|| <= tol (1 + ||z||), which leaves an
@@ -11,7 +11,7 @@ z <- z - J^{-1} F, inf-norms, theta = ||dz_k|| / ||dz_{k-1}||.
   or ||dz|| itself, is <= SIMPLIFIED_TOL tol (1 + ||z||): the round-off level full Newton's
   stop leaves.
 - Both stop when ||dz|| stopped decreasing while ||dz|| <= ROUNDOFF_FLOOR (1 + ||z||) (round-off
-  floor). The constants and status codes are hpgen.abi's, as are the C template's.
+  floor). The constants and status codes are hpgen.abi's, as are the C runtime's.
 - An iterate that needs J takes F and J from one ``residual_jacobian`` evaluation when the
   module has that kernel (else ``residual`` then ``jacobian``), the others ``residual`` only.
 Non-finite F, J or z, or an exactly singular J, give code NONFINITE. A first step whose start
@@ -25,7 +25,7 @@ z_k before the failure is reported (hpgen.runtime.loop).
 
 The loop runs on lists of Python floats with the generated module's raw kernels
 (``kernels.py`` RAW: lists in, lists out): no numpy array is made per iteration. The linear
-algebra is that of the C template operation for operation (``linear_solver``): an iterate with
+algebra is that of hpgen_linalg.c operation for operation (``linear_solver``): an iterate with
 a fresh J solves J dz = F (nz <= 3 by cofactors, else by the LU with partial pivoting) and,
 for simplified Newton, forms J^{-1}, which the other iterates apply as a matrix-vector
 product. For nz <= UNROLL_MAX these are printed once per nz as straight-line Python, so that
@@ -44,8 +44,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-# status codes and Newton constants: the generated-module contract (kernels.c.j2 prints the
-# same values)
+# status codes and Newton constants: the generated-module contract (hpgen_runtime.h defines
+# the same values)
 from ..abi import (DEFAULT_MAXIT, DEFAULT_TOL, DOMAIN, NO_CONVERGENCE, NONFINITE, OK, REFRESH,
                    ROUNDOFF_FLOOR, SIMPLIFIED_TOL, THETA_FLOOR, THETA_MAX)
 
@@ -100,9 +100,9 @@ def all_finite(x) -> bool:
     return s - s == 0.0 or all(map(_isfinite, x))
 
 
-# ---- linear algebra (templates/kernels.c.j2: hpgen_lu_factor_solve, hpgen_lu_apply) -------
+# ---- linear algebra (hpgen/runtime/c/hpgen_linalg.c: hpgen_lu_factor_solve, hpgen_lu_apply)
 #
-# The C template keeps the Newton matrix as J^{-1} (explicit, column-major): an iterate with a
+# The C runtime keeps the Newton matrix as J^{-1} (explicit, column-major): an iterate with a
 # fresh J solves J dz = F (nz <= 3: cofactors; else the LU with partial pivoting, the diagonal
 # of U stored inverted) and, for simplified Newton, forms J^{-1} from the factors; the other
 # iterates take dz = J^{-1} F, a matrix-vector product. The functions below are printed as
@@ -119,7 +119,7 @@ class LinearSolver:
 
 
 def _numpy_solver(n: int) -> LinearSolver:
-    """Above UNROLL_MAX: LAPACK through numpy (agrees with the C template to round-off)."""
+    """Above UNROLL_MAX: LAPACK through numpy (agrees with the C runtime to round-off)."""
     def factor_solve(J, F, keep):
         if not all_finite(J):
             return None
@@ -142,7 +142,7 @@ def _numpy_solver(n: int) -> LinearSolver:
 
 
 def linear_solver(n: int, printed=None) -> LinearSolver:
-    """The Newton linear algebra for n x n systems, as in the C template:
+    """The Newton linear algebra for n x n systems, as in the C runtime (hpgen_linalg.c):
     factor_solve(J flat column-major, F, keep) -> (J^{-1} F as a list, J^{-1} if keep else
     None), or None when J has a non-finite entry or is singular; apply(f, F) -> f F (f a
     kept J^{-1}); update(f, F, z) -> (z - f F, |f F|, |z - f F|) and finish(dz, z) -> (z - dz,
@@ -150,7 +150,7 @@ def linear_solver(n: int, printed=None) -> LinearSolver:
     entries overflows), where the caller takes the general path.
 
     printed: the generated module's LINEAR = (factor_solve, apply, update, finish), printed
-    by hpgen.codegen.pylinear for nz <= UNROLL_MAX (bitwise the C template's operations);
+    by hpgen.codegen.pylinear for nz <= UNROLL_MAX (bitwise the C runtime's operations);
     without it numpy/LAPACK (agrees with C to round-off), update and finish None."""
     if printed is None:
         return _numpy_solver(n)
@@ -193,7 +193,7 @@ class Kernels:
 
 def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory):
     """Newton (full or simplified, see the module docstring) from z (a list of floats) on
-    kern.residual(z, g, p, hv) = 0: the C template's hpgen_newton.
+    kern.residual(z, g, p, hv) = 0: the C runtime's hpgen_newton.
 
     Returns (code, z (list), iterations, last residual inf-norm, Jacobian evaluations).
     """
@@ -327,7 +327,7 @@ def newton(fun, z, tol=DEFAULT_TOL, maxit=DEFAULT_MAXIT):
 
 def step_lists(kern: Kernels, g, p, hv, z, opts: NewtonOptions, memory: NewtonMemory,
                check_start=True, with_g=True):
-    """One step on lists of floats (the C template's hpgen_step_core): margin at the start
+    """One step on lists of floats (the C runtime's hpgen_step_core): margin at the start
     (check_start), Newton from z, margin at the solution, update (with_g False: update_p,
     and g1 is g).
 

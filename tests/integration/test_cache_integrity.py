@@ -116,7 +116,9 @@ def out_module(tmp_path):
 @pytest.mark.parametrize("keep_library", [True, False])
 def test_hand_edited_kernels_c_is_refused(out_module, keep_library):
     source = out_module / "kernels.c"
-    source.write_text(source.read_text().replace("1e-14", "1e-13", 1))
+    text = source.read_text()
+    source.write_text(text.replace("#define HPGEN_W ", "#define HPGEN_W 1 + ", 1))
+    assert source.read_text() != text
     if not keep_library:
         for p in out_module.glob("_kernels_*"):
             p.unlink()

@@ -2,7 +2,7 @@
 
 - content hash: normalized model (no comments, formatting, h, steps, initial state) + options;
 - derivation key: content hash + generator digest;
-- C library: sha256 of kernels.c + compiler + flags.
+- C library: sha256 of kernels.c + the C runtime's sources + compiler + flags.
 Compiler runs are counted with a wrapper around the real compiler, derivations by wrapping
 hpgen.api.derive_module.
 """

@@ -73,11 +73,11 @@ def test_generated_c_compiles_with_strict_warnings(tmp_path, cache_dir, example)
     analysis runs at -O2 and above, so -O1 would miss those warnings). The example's module
     is generated into the session's build cache (backend python: sources only)."""
     import hpgen
-    from hpgen.runtime.build import DEFAULT_CFLAGS
+    from hpgen.runtime.build import DEFAULT_CFLAGS, include_flags
     module = hpgen.build(EXAMPLES / f"{example}.yaml", backend="python", cache_dir=cache_dir)
     src = module.module_dir / "kernels.c"
     flags = [f for f in DEFAULT_CFLAGS if f not in ("-shared", "-fPIC")]
-    proc = subprocess.run(["cc", *flags, "-Wall", "-Werror", "-fPIC", "-shared", "-o",
-                           str(tmp_path / "k.so"), str(src), "-lm"],
+    proc = subprocess.run(["cc", *flags, "-Wall", "-Werror", "-fPIC", "-shared",
+                           *include_flags(), "-o", str(tmp_path / "k.so"), str(src), "-lm"],
                           capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stderr[:2000]

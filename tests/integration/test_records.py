@@ -153,8 +153,10 @@ def test_a_row_without_xi_compiles_with_strict_warnings(compile_model, tmp_path)
     integ = compile_model(src, backend="c", **SV)
     assert not integ.meta["record_uses_xi"] and integ.meta["record_uses_g"]
     kernels_c = integ._b.library.parent / "kernels.c"
+    from hpgen.runtime.build import include_flags
     proc = subprocess.run(["cc", "-std=c99", "-O1", "-Wall", "-Werror", "-fPIC", "-shared",
-                           "-o", str(tmp_path / "k.so"), str(kernels_c), "-lm"],
+                           *include_flags(), "-o", str(tmp_path / "k.so"), str(kernels_c),
+                           "-lm"],
                           capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stderr[:2000]
     rec, tr, _ = _run(integ, src, 50, 5, "body")

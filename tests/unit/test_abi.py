@@ -1,5 +1,5 @@
-"""hpgen.abi is the one contract between generated code and the runtime: the emitted C of a
-shipped example, the template, the Python mirror of the Newton loop, the ctypes structs and
+"""hpgen.abi is the one contract between generated code and the runtime: the static C runtime
+(hpgen/runtime/c), the emitted C, the Python mirror of the Newton loop, the ctypes structs and
 the meta.json loader all agree with it."""
 from __future__ import annotations
 
@@ -16,10 +16,12 @@ from hpgen import abi
 GENERATED = ROOT / "generated"
 #: a golden module (tests/regression/test_generated keeps it current)
 MODULE = GENERATED / "free_rigid_body_stormer_verlet_cay_truncated"
+#: the static C runtime every kernels.c includes
+RUNTIME = ROOT / "hpgen" / "runtime" / "c"
 
 
-def _c_source() -> str:
-    return (MODULE / "kernels.c").read_text()
+def _header() -> str:
+    return (RUNTIME / "hpgen_runtime.h").read_text()
 
 
 def _defines(src: str) -> dict:
@@ -30,21 +32,23 @@ def _bits(x: float) -> bytes:
     return struct.pack("<d", x)
 
 
-def test_emitted_c_status_codes_and_abi_version():
-    defs = _defines(_c_source())
+def test_runtime_status_codes_and_abi_version():
+    defs = _defines(_header())
     assert int(defs["HPGEN_ABI"]) == abi.ABI_VERSION
     for code, name, message in abi.STATUS:
         assert int(defs[f"HPGEN_{name}"].strip("()")) == code, name
-        assert f"HPGEN_{name} = {code}: {message}" in _c_source(), name
+        assert f"HPGEN_{name} = {code}: {message}" in _header(), name
     codes = [code for code, _, _ in abi.STATUS]
     assert len(set(codes)) == len(codes) and set(abi.MESSAGES) == set(codes)
 
 
-def test_emitted_c_newton_constants_read_back_bitwise():
-    src = _c_source()
+def test_runtime_newton_constants_read_back_bitwise():
+    src = _header()
     defs = _defines(src)
-    for name in ("ROUNDOFF_FLOOR", "THETA_MAX", "SIMPLIFIED_TOL", "THETA_FLOOR"):
-        assert _bits(float(defs[f"HPGEN_{name}"])) == _bits(getattr(abi, name)), name
+    for macro, value in abi.C_CONSTANTS.items():
+        assert defs[macro] == abi.c_literal(value), macro
+        if isinstance(value, float):
+            assert _bits(float(defs[macro])) == _bits(value), macro
     # the predictor's history and its coefficient table (rows zero-padded to HPGEN_PH)
     H = abi.PREDICTOR_HISTORY
     assert int(defs["HPGEN_PH"]) == H
@@ -53,15 +57,18 @@ def test_emitted_c_newton_constants_read_back_bitwise():
     rows = [[float(x) for x in r.split(",")] for r in re.findall(r"\{([^{}]*)\}", table)]
     want = [list(c) + [0.0] * (H - len(c)) for c in abi.PREDICTOR_COEFFICIENTS]
     assert [[_bits(x) for x in r] for r in rows] == [[_bits(x) for x in r] for r in want]
-    vel = src[src.index("static int hpgen_velocity("):]
+    # the record velocity's Newton takes its tolerance and cap from those macros
+    runs = (RUNTIME / "hpgen_runs.c").read_text()
+    vel = runs[runs.index("static int hpgen_velocity("):]
     vel = vel[:vel.index("\n}\n")]
-    assert int(re.search(r"it <= (\d+); \+\+it", vel).group(1)) == abi.VELOCITY_MAXIT
-    tol = re.search(r"if \(dn <= ([0-9.e+-]+) \* \(1\.0 \+ xn\)\)", vel).group(1)
-    assert _bits(float(tol)) == _bits(abi.VELOCITY_TOL)
+    assert "it <= HPGEN_VELOCITY_MAXIT; ++it" in vel
+    assert "if (dn <= HPGEN_VELOCITY_TOL * (1.0 + xn))" in vel
 
 
 def test_emitted_c_kernel_table():
-    src, meta = _c_source(), json.loads((MODULE / "meta.json").read_text())
+    from _toy_step import emitted
+    step, gm = emitted()
+    src, meta = gm.file("kernels.c"), json.loads(gm.file("meta.json"))
     exported = re.findall(r"^HPGEN_EXPORT int hpgen_kernel_(\w+)\(([^)]*)\)", src, re.M)
     assert tuple(name for name, _ in exported) == abi.KERNEL_NAMES
     w = abi.record_width(meta["record"], meta["n"], meta["d"])
@@ -74,6 +81,10 @@ def test_emitted_c_kernel_table():
         assert outs == [size[s] for s in spec.outputs], spec.name
         args = dict(exported)[spec.name].split(",")
         assert len(args) == len(spec.inputs) + len(spec.outputs), spec.name
+    # the model's sizes, and the runtime included after the kernels
+    defs = _defines(src)
+    assert [int(defs[f"HPGEN_{k}"]) for k in ("N", "D", "NZ")] == [step.n, step.d, step.nz]
+    assert src.rstrip().endswith('#include "hpgen_runtime.c"')
 
 
 def _c_struct(src: str, name: str) -> list:
@@ -84,22 +95,25 @@ def _c_struct(src: str, name: str) -> list:
 
 def test_c_structs_match_the_ctypes_side():
     from hpgen.runtime.cstructs import _Options, _Status
-    src = _c_source()
+    src = _header()
     assert _c_struct(src, "hpgen_status") == list(abi.STATUS_FIELDS)
     assert _c_struct(src, "hpgen_options") == list(abi.OPTIONS_FIELDS)
     assert [f for f, _ in _Status._fields_] == [f for f, _ in abi.STATUS_FIELDS]
     assert [f for f, _ in _Options._fields_] == [f for f, _ in abi.OPTIONS_FIELDS]
 
 
-def test_template_has_no_contract_literals():
-    """The constants and codes reach kernels.c.j2 through its context only."""
-    text = (ROOT / "templates" / "kernels.c.j2").read_text()
-    code = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
-    for lit in ("1e-14", "1e-11", "0.05", "0.01", "<= 50"):
-        assert lit not in code, lit
-    assert not re.search(r"#define HPGEN_(ABI|OK|NO_CONVERGENCE|NONFINITE|DOMAIN|RECORD|"
-                         r"INVALID|ROUNDOFF_FLOOR|THETA_MAX|SIMPLIFIED_TOL|THETA_FLOOR|PH) "
-                         r"\(?[\-0-9]", text)
+def test_contract_literals_live_in_the_header_only():
+    """The constants and codes are written once in C, in hpgen_runtime.h; the template and
+    the runtime's other files use the macros."""
+    texts = {p.name: p.read_text() for p in RUNTIME.glob("*.c")}
+    texts["kernels.c.j2"] = (ROOT / "templates" / "kernels.c.j2").read_text()
+    for name, text in texts.items():
+        code = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+        for lit in ("1e-14", "1e-11", "0.05", "0.01", "<= 50"):
+            assert lit not in code, (name, lit)
+        assert not re.search(r"#define HPGEN_(ABI|OK|NO_CONVERGENCE|NONFINITE|DOMAIN|RECORD|"
+                             r"INVALID|ROUNDOFF_FLOOR|THETA_MAX|SIMPLIFIED_TOL|THETA_FLOOR|PH|"
+                             r"VELOCITY_TOL|VELOCITY_MAXIT) ", text), name
 
 
 def test_python_mirror_takes_the_same_constants():

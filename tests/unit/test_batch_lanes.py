@@ -1,5 +1,5 @@
-"""Lane-wise ensemble kernels (hpgen.codegen.lanes, the lanes section of
-templates/kernels.c.j2): simulate_batch with lanes is bitwise simulate_batch without them
+"""Lane-wise ensemble kernels (hpgen.codegen.lanes, run by the C runtime's
+hpgen/runtime/c/hpgen_lanes.c): simulate_batch with lanes is bitwise simulate_batch without them
 (states, statuses, counters), on 1 and 2 threads, with a body count that is not a multiple
 of the lane count (the remainder runs the scalar code); a body that fails mid-run stops with
 the error of a scalar run while the other lanes of its group continue; the lane printer
@@ -124,26 +124,33 @@ def test_simplified_newton_runs_scalar(body):
 
 
 def _lane_region(source: str) -> tuple[int, int]:
+    """The lines of kernels.c's lane kernels (from the #define HPGEN_L to the end of the
+    region)."""
     lines = source.splitlines()
-    start = next(i for i, s in enumerate(lines) if "lane-wise ensembles" in s) + 1
-    end = next(i for i, s in enumerate(lines) if "hpgen_lanes(void)" in s) + 1
+    start = next(i for i, s in enumerate(lines) if s.startswith("#define HPGEN_L ")) + 1
+    end = next(i for i, s in enumerate(lines) if s == "HPGEN_LANES_END") + 1
     return start, end
 
 
 @pytest.mark.skipif(shutil.which("cc") is None, reason="no C compiler")
 def test_lane_code_compiles_without_warnings(body, tmp_path):
-    """-Wall -Wextra -Werror on the lane section: no diagnostic points into it (the rest of
-    kernels.c is checked by its own tests)."""
+    """-Wall -Wextra -Werror: no diagnostic points into the lane kernels of kernels.c or into
+    the runtime (hpgen/runtime/c, hpgen_lanes.c included; CasADi's part of kernels.c is
+    checked by its own tests)."""
+    from hpgen.runtime.build import RUNTIME_DIR, include_flags
     source = (Path(body._b.library).parent / "kernels.c").read_text()
     start, end = _lane_region(source)
     src = tmp_path / "kernels.c"
     src.write_text(source)
     out = subprocess.run(["cc", "-std=c99", "-O3", "-Wall", "-Wextra", "-Werror", "-fPIC",
-                          "-c", str(src), "-o", str(tmp_path / "k.o")],
+                          *include_flags(), "-c", str(src), "-o", str(tmp_path / "k.o")],
                          capture_output=True, text=True)
     lines = [int(m.group(1)) for m in
              re.finditer(r"kernels\.c:(\d+):\d+: (?:warning|error)", out.stderr)]
     assert not [n for n in lines if start <= n <= end], out.stderr
+    runtime = re.findall(rf"{re.escape(str(RUNTIME_DIR))}/\S+: (?:warning|error)", out.stderr)
+    assert not runtime, out.stderr
+    assert "hpgen_lanes.c" not in out.stderr and "hpgen_runtime" not in out.stderr, out.stderr
 
 
 def test_no_lanes_where_they_do_not_pay():

@@ -16,6 +16,7 @@ from hpgen.codegen import (META_FORMAT, CodegenError, emit, environment, module_
                            template_dir)
 from hpgen.codegen.pysource import kernel_lines
 from hpgen.derive.step import DiscreteStep, Kernel
+from hpgen.runtime.build import include_flags
 
 from _toy_step import emitted, integrator, module_dir, toy_info, toy_step
 
@@ -112,8 +113,8 @@ def test_c_compiles_with_strict_warnings(tmp_path):
     cc = shutil.which("cc")
     assert cc is not None, "hpgen's C backend needs a C compiler named cc on PATH"
     (tmp_path / "kernels.c").write_text(emitted()[1].file("kernels.c"))
-    proc = subprocess.run([cc] + STRICT_FLAGS + ["-o", str(tmp_path / "k.so"),
-                                                 str(tmp_path / "kernels.c")],
+    proc = subprocess.run([cc] + STRICT_FLAGS + include_flags()
+                          + ["-o", str(tmp_path / "k.so"), str(tmp_path / "kernels.c")],
                           capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     assert proc.stderr == ""

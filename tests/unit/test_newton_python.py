@@ -1,7 +1,7 @@
-"""The Python backend's Newton (hpgen.runtime.newton) against the C template's logic.
+"""The Python backend's Newton (hpgen.runtime.newton) against the C runtime's logic.
 
 The straight-line linear algebra is checked bitwise against a loop-for-loop transcription of
-templates/kernels.c.j2 (hpgen_lu_factor_solve, hpgen_lu_inverse, hpgen_lu_apply); whole runs
+hpgen/runtime/c/hpgen_linalg.c (hpgen_lu_factor_solve, hpgen_lu_inverse, hpgen_lu_apply); whole runs
 of the Python backend are checked bitwise against the C backend for nz <= UNROLL_MAX: both
 backends' kernels are bitwise equal (tests/unit/test_codegen.py) and the C is compiled with
 -std=c99 (no contraction into fused multiply-adds), so the same operations in the same order

@@ -1,6 +1,7 @@
 """Packaging: the wheel's package list covers every subpackage and ships templates/ (kept at
-the top of the repository) as hpgen/templates; dependencies are ranges, pins live in
-constraints.txt. (.ci/wheel-test builds and installs the wheel itself.)"""
+the top of the repository) as hpgen/templates and the C runtime (hpgen/runtime/c);
+dependencies are ranges, pins live in constraints.txt. (.ci/wheel-test builds and installs the
+wheel itself.)"""
 from __future__ import annotations
 
 import importlib
@@ -30,6 +31,18 @@ def test_templates_ship_as_package_data():
     assert all(any(Path(p.name).match(pat) for pat in SETUPTOOLS["package-data"]["hpgen.bench"])
                for p in (ROOT / "hpgen" / "bench").glob("*.j2"))
     assert emit.template_dir() == ROOT / "templates"      # a checkout / editable install
+
+
+def test_the_c_runtime_ships_as_package_data():
+    """Every file of the static C runtime (hpgen/runtime/c) matches a package-data pattern
+    of hpgen.runtime, and the build finds them there."""
+    from hpgen.runtime import build
+    shipped = SETUPTOOLS["package-data"]["hpgen.runtime"]
+    files = sorted((ROOT / "hpgen" / "runtime" / "c").iterdir())
+    assert {p.suffix for p in files} == {".c", ".h"}
+    assert all(any(Path("c", p.name).match(pat) for pat in shipped) for p in files)
+    assert build.RUNTIME_DIR == ROOT / "hpgen" / "runtime" / "c"
+    assert build.runtime_sources() == files
 
 
 def test_dependencies_are_ranges_and_pins_are_constraints():

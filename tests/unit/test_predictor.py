@@ -1,7 +1,7 @@
-"""The run loop's predictor (kernels.c.j2 hpgen_run_step, hpgen.runtime.loop._run_step): the
-Newton start of step k is G_k + the polynomial extrapolation of the offsets dz_j = z_j - G_j
-of the last m = min(k, 6) solutions (quintic once six exist), G_j = guess(velocity_step(g_j,
-p_j, 0), g_j, p_j, h).
+"""The run loop's predictor (hpgen_run_step of hpgen/runtime/c/hpgen_runs.c,
+hpgen.runtime.loop._run_step): the Newton start of step k is G_k + the polynomial extrapolation
+of the offsets dz_j = z_j - G_j of the last m = min(k, 6) solutions (quintic once six exist),
+G_j = guess(velocity_step(g_j, p_j, 0), g_j, p_j, h).
 
 Checked on the Python backend (bitwise the C backend's runs: tests/unit/test_newton_python.py
 compares whole runs, iteration counts included): the start Newton receives is that formula,

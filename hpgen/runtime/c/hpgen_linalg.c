@@ -1,0 +1,185 @@
+/* hpgen's C runtime, part 1: dense linear algebra of the Newton matrix (HPGEN_NZ unknowns).
+   Mirrored operation for operation in Python by hpgen.codegen.pylinear (printed per nz).
+   Included by hpgen_runtime.c; the model and the contract are hpgen_runtime.h's.
+
+   What Newton, the runs and the linearization use of this file (its interface):
+     hpgen_lu_factor_solve(A, piv, b, keep)  b <- J^{-1} b with J in A; keep: A <- J^{-1}
+     hpgen_lu_apply(A, piv, b)               b <- J^{-1} b with the kept A
+     hpgen_norm_inf(x, n), hpgen_all_finite(x, n)
+   A factorization of another structure (a sparse one for many bodies) provides the same
+   two functions over its own storage. */
+
+/* max |x_i|; NaN if any x_i is NaN */
+static double hpgen_norm_inf(const double* x, int n) {
+    double m = 0.0;
+    int i;
+    for (i = 0; i < n; ++i) {
+        double a = fabs(x[i]);
+        if (a != a) return a;
+        if (a > m) m = a;
+    }
+    return m;
+}
+
+/* every x_i finite: one test per entry. The tests are independent and their branches
+   predictable, so they cost a few instructions each; a running sum of the entries (one test)
+   would put n dependent additions on the step's critical path */
+static int hpgen_all_finite(const double* x, int n) {
+    int i;
+    for (i = 0; i < n; ++i) if (!isfinite(x[i])) return 0;
+    return 1;
+}
+
+/* The Newton matrix is kept as J^{-1} (explicit, column-major in A; piv is workspace): a
+   simplified-Newton iteration then costs one matrix-vector product, NZ^2 independent
+   multiply-adds, instead of two triangular solves whose divisions and recurrences form a
+   long dependency chain. Newton's fixed point depends on F only; the accuracy of J^{-1}
+   only sets the contraction rate. */
+
+/* b <- A b, A = J^{-1} from hpgen_lu_factor_solve */
+static void hpgen_lu_apply(const double* A, const int* piv, double* b) {
+    double x[HPGEN_NZ];
+    int i, j;
+    (void)piv;
+    for (i = 0; i < HPGEN_NZ; ++i) x[i] = A[i] * b[0];
+    for (j = 1; j < HPGEN_NZ; ++j)
+        for (i = 0; i < HPGEN_NZ; ++i) x[i] += A[i + j * HPGEN_NZ] * b[j];
+    for (i = 0; i < HPGEN_NZ; ++i) b[i] = x[i];
+}
+
+#if HPGEN_NZ <= 3
+/* NZ <= 3: J^{-1} by cofactors (adjugate / det); Cramer's rule is accurate to a few ulps
+   times cond(J) here. b <- J^{-1} b (the adjugate applied to b alongside the division) and,
+   with keep, A <- J^{-1} (else A is left as it was: full Newton does not need J^{-1}).
+   Returns 1 if det J is zero or not finite (then so is some entry of J: every entry enters
+   det). */
+static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
+#if HPGEN_NZ == 1
+    double r;
+    if (!(A[0] != 0.0) || !isfinite(A[0])) return 1;
+    r = 1.0 / A[0];
+    b[0] *= r;
+    if (keep) A[0] = r;
+#elif HPGEN_NZ == 2
+    const double a = A[0], c = A[1], bb = A[2], d = A[3], det = a * d - bb * c;
+    const double x0 = d * b[0] - bb * b[1], x1 = a * b[1] - c * b[0];
+    double r;
+    if (!(det != 0.0) || !isfinite(det)) return 1;
+    r = 1.0 / det;
+    b[0] = x0 * r; b[1] = x1 * r;
+    if (keep) { A[0] = d * r; A[2] = -bb * r; A[1] = -c * r; A[3] = a * r; }
+#else
+    /* J[i][j] = A[i + 3 j]; (J^{-1})_ij = C_ji / det, C the cofactors */
+    const double j00 = A[0], j10 = A[1], j20 = A[2], j01 = A[3], j11 = A[4], j21 = A[5],
+                 j02 = A[6], j12 = A[7], j22 = A[8];
+    const double c00 = j11 * j22 - j12 * j21, c01 = j12 * j20 - j10 * j22,
+                 c02 = j10 * j21 - j11 * j20, c10 = j02 * j21 - j01 * j22,
+                 c11 = j00 * j22 - j02 * j20, c12 = j01 * j20 - j00 * j21,
+                 c20 = j01 * j12 - j02 * j11, c21 = j02 * j10 - j00 * j12,
+                 c22 = j00 * j11 - j01 * j10;
+    const double det = j00 * c00 + j01 * c01 + j02 * c02;
+    const double x0 = c00 * b[0] + c10 * b[1] + c20 * b[2],
+                 x1 = c01 * b[0] + c11 * b[1] + c21 * b[2],
+                 x2 = c02 * b[0] + c12 * b[1] + c22 * b[2];
+    double r;
+    if (!(det != 0.0) || !isfinite(det)) return 1;
+    r = 1.0 / det;
+    b[0] = x0 * r; b[1] = x1 * r; b[2] = x2 * r;
+    if (keep) {
+        A[0] = c00 * r; A[1] = c01 * r; A[2] = c02 * r;
+        A[3] = c10 * r; A[4] = c11 * r; A[5] = c12 * r;
+        A[6] = c20 * r; A[7] = c21 * r; A[8] = c22 * r;
+    }
+#endif
+    (void)piv;
+    return 0;
+}
+#else
+/* LU with partial pivoting in place (pivot: first row of largest |a_ik|, as LAPACK), row
+   interchanges in piv; U's diagonal is stored inverted (1 / u_kk). A is NZ x NZ
+   column-major. Returns 1 if a pivot is exactly zero. */
+static int hpgen_lu_factor(double* A, int* piv) {
+    const int n = HPGEN_NZ;
+    int i, j, k;
+    for (k = 0; k < n; ++k) {
+        int pk = k;
+        double amax = fabs(A[k + k * n]), r;
+        for (i = k + 1; i < n; ++i) {
+            double a = fabs(A[i + k * n]);
+            if (a > amax) { amax = a; pk = i; }
+        }
+        piv[k] = pk;
+        if (amax == 0.0) return 1;
+        if (pk != k) {
+            for (j = 0; j < n; ++j) {
+                double t = A[k + j * n]; A[k + j * n] = A[pk + j * n]; A[pk + j * n] = t;
+            }
+        }
+        r = 1.0 / A[k + k * n];
+        A[k + k * n] = r;
+        for (i = k + 1; i < n; ++i) A[i + k * n] *= r;
+        for (j = k + 1; j < n; ++j) {
+            double a = A[k + j * n];
+            if (a != 0.0) for (i = k + 1; i < n; ++i) A[i + j * n] -= A[i + k * n] * a;
+        }
+    }
+    return 0;
+}
+
+/* b <- J^{-1} b with the factors of hpgen_lu_factor: all row interchanges first (the
+   factorization swapped whole rows, L included), then L y = P b and U x = y. */
+static void hpgen_lu_solve(const double* LU, const int* piv, double* b) {
+    const int n = HPGEN_NZ;
+    int i, j, k;
+    for (k = 0; k < n; ++k)
+        if (piv[k] != k) { double t = b[k]; b[k] = b[piv[k]]; b[piv[k]] = t; }
+    for (k = 0; k < n; ++k)
+        for (i = k + 1; i < n; ++i) b[i] -= LU[i + k * n] * b[k];
+    for (k = n - 1; k >= 0; --k) {
+        double s = b[k];
+        for (j = k + 1; j < n; ++j) s -= LU[k + j * n] * b[j];
+        b[k] = s * LU[k + k * n];
+    }
+}
+
+/* X <- J^{-1} from the factors: the solve above for all unit vectors at once, ordered so
+   that the columns' recurrences run side by side. X is NZ x NZ column-major. */
+static void hpgen_lu_inverse(const double* LU, const int* piv, double* X) {
+    const int n = HPGEN_NZ;
+    int i, j, k;
+    for (i = 0; i < n * n; ++i) X[i] = 0.0;
+    for (j = 0; j < n; ++j) X[j + j * n] = 1.0;
+    for (k = 0; k < n; ++k)
+        if (piv[k] != k)
+            for (j = 0; j < n; ++j) {
+                double t = X[k + j * n]; X[k + j * n] = X[piv[k] + j * n]; X[piv[k] + j * n] = t;
+            }
+    for (k = 0; k < n; ++k)
+        for (j = 0; j < n; ++j) {
+            const double xk = X[k + j * n];
+            if (xk != 0.0) for (i = k + 1; i < n; ++i) X[i + j * n] -= LU[i + k * n] * xk;
+        }
+    for (k = n - 1; k >= 0; --k)
+        for (j = 0; j < n; ++j) {
+            const double xk = X[k + j * n] * LU[k + k * n];
+            X[k + j * n] = xk;
+            for (i = 0; i < k; ++i) X[i + j * n] -= LU[i + k * n] * xk;
+        }
+}
+
+/* b <- J^{-1} b by the LU of J (A holds J on entry); with keep, A <- J^{-1} (for simplified
+   Newton), else A is left as the LU factors. Returns 1 if J has a non-finite entry or is
+   singular. */
+static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
+    double LU[HPGEN_NZ * HPGEN_NZ];
+    if (!hpgen_all_finite(A, HPGEN_NZ * HPGEN_NZ)) return 1;
+    memcpy(LU, A, sizeof LU);
+    if (hpgen_lu_factor(LU, piv)) return 1;
+    hpgen_lu_solve(LU, piv, b);
+    if (keep) {
+        hpgen_lu_inverse(LU, piv, A);
+        return !hpgen_all_finite(A, HPGEN_NZ * HPGEN_NZ);
+    }
+    return 0;
+}
+#endif

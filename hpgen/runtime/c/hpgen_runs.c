@@ -1,0 +1,330 @@
+/* hpgen's C runtime, part 3: a run in progress (hpgen_run) and the runs over it: the
+   predictor, one run step, hpgen_advance (states), hpgen_advance_sections (Poincare
+   sections), hpgen_advance_record (record rows) and hpgen_observe. Mirrored in Python by
+   hpgen.runtime.loop (the same order of operations). Included by hpgen_runtime.c after
+   hpgen_newton.c. */
+
+/* the step vector the kernels of a run's last step took: the run's own (open), else {h} */
+#if HPGEN_OPEN
+#define HPGEN_RUN_HV(run, closed_hv) run->hv
+#else
+#define HPGEN_RUN_HV(run, closed_hv) closed_hv
+#endif
+
+/* sizeof(hpgen_run), for callers that allocate runs as byte buffers */
+HPGEN_EXPORT long long hpgen_run_size(void) { return (long long)sizeof(hpgen_run); }
+
+/* Start a run at (g0, p0) with Newton start z0 for the first step. */
+HPGEN_EXPORT void hpgen_run_init(hpgen_run* r, const double* g0, const double* p0,
+                                 const double* z0) {
+    memset(r, 0, sizeof *r);
+    memcpy(r->g, g0, sizeof r->g);
+    memcpy(r->p, p0, sizeof r->p);
+    memcpy(r->z, z0, sizeof r->z);
+}
+
+#if HPGEN_OPEN
+/* An open run's inputs: start time t0, input rows U (u_rows of M doubles: 1 = the same row
+   for every step, else row k for step k; the caller keeps U alive while the run steps) and
+   the P runtime parameters. A run must have them before its first step. */
+HPGEN_EXPORT void hpgen_run_set_inputs(hpgen_run* r, double t0, const double* U,
+                                       long long u_rows, const double* params) {
+    int i;
+    r->t0 = t0;
+    r->U = U;
+    r->u_rows = u_rows;
+    for (i = 0; i < HPGEN_P; ++i) r->hv[2 + HPGEN_M + i] = params[i];
+}
+#endif
+
+/* The run's state (g_k, p_k), last solution z and steps done k. */
+HPGEN_EXPORT long long hpgen_run_get(const hpgen_run* r, double* g, double* p, double* z) {
+    memcpy(g, r->g, sizeof r->g);
+    memcpy(p, r->p, sizeof r->p);
+    memcpy(z, r->z, sizeof r->z);
+    return r->k;
+}
+
+/* G(g, p) = guess(velocity_step(g, p, 0), g, p, h): the guess kernel at one Newton step of
+   the Legendre transform from xi = 0 (the velocity itself when l is quadratic in xi), a smooth
+   function of the state that carries the leading order of the solution. */
+static void hpgen_predictor_base(const double* g, const double* p, const double* hv, double* G) {
+    double x0[HPGEN_D], xi[HPGEN_D];
+    memset(x0, 0, sizeof x0);
+    hpgen_k_velocity_step(g, p, x0, HPGEN_OPEN_HV(hv) xi);
+    hpgen_k_guess(xi, g, p, hv, G);
+}
+
+/* The predictor's start zs = G + sum_j hpgen_pc[m - 1][j] d_j over the m newest offsets d_0,
+   d_1, ... (1 <= m <= HPGEN_PH), for the HPGEN_NZ entries at stride es (entry i of offset j
+   at d[j os + i es], of G and zs at [i es]): per entry t = c_0 d_0, t += c_j d_j in the order
+   of j, then G + t (hpgen.runtime.loop.predict: the same operations). */
+static inline void hpgen_predict(const double* G, const double* d, int es, int os, long long m,
+                                 double* zs) {
+    const double* c = hpgen_pc[m - 1];
+    long long j;
+    int i;
+    for (i = 0; i < HPGEN_NZ; ++i) {
+        double t = c[0] * d[i * es];
+        for (j = 1; j < m; ++j) t += c[j] * d[j * os + i * es];
+        zs[i * es] = G[i * es] + t;
+    }
+}
+
+/* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
+   success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for the steps
+   after the first, full (o with full Newton) for the first. Updates the counters of st;
+   returns the status code.
+   Predictor: z_k = G_k + dz_k with G_k = hpgen_predictor_base(g_k, p_k) (exact in p, O(1))
+   and dz_k = z_k - G_k small (O(h)) and smooth in k; the start is G_k plus the polynomial
+   through the last m = min(have_prev, HPGEN_PH) offsets extrapolated one step
+   (hpgen_predict: quintic once six exist). The offsets from G_k, not z itself, are
+   extrapolated: they are small and smooth where z is not (docs/performance.md, "Newton's
+   start and stop"). */
+static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
+                          const hpgen_options* full, hpgen_status* st, int with_g) {
+    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], G[HPGEN_NZ], res;
+    long long it;
+    int i, code, predicted = o->predictor && r->have_prev >= 1;
+#if HPGEN_OPEN
+    /* the step vector of step k: [h, t0 + k h, u_k, params] */
+    if (r->u_rows < 1 || (r->u_rows > 1 && r->k >= r->u_rows)) {
+        st->code = HPGEN_INVALID; st->step = r->k; return HPGEN_INVALID;
+    }
+    r->hv[0] = hv[0];
+    r->hv[1] = r->t0 + (double)r->k * hv[0];
+    for (i = 0; i < HPGEN_M; ++i) r->hv[2 + i] = r->U[(r->u_rows == 1 ? 0 : r->k) * HPGEN_M + i];
+    hv = r->hv;
+#endif
+    /* (G is kept up to date with or without o->predictor) */
+    hpgen_predictor_base(r->g, r->p, hv, G);
+    if (predicted && r->have_prev == HPGEN_PH)     /* the steady state: a constant m */
+        hpgen_predict(G, r->dz[0], 1, HPGEN_NZ, HPGEN_PH, zs);
+    else if (predicted)
+        hpgen_predict(G, r->dz[0], 1, HPGEN_NZ, r->have_prev, zs);
+    else
+        for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
+    /* the first step starts from the crude guess kernel: full Newton */
+    code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? full : o, r->lu, r->piv,
+                           &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0, with_g);
+    st->total_iterations += it;
+    if (code != HPGEN_OK && predicted) {
+        /* the extrapolated start failed (Newton diverged, or reached a root outside the
+           chart): retry from the plain warm start z_k before reporting anything */
+        memcpy(zs, r->z, sizeof zs);
+        code = hpgen_step_core(r->g, r->p, hv, zs, o, r->lu, r->piv, &r->lu_valid, g1, p1,
+                               &it, &st->jacobians, &res, 0, with_g);
+        st->total_iterations += it;
+    }
+    st->iterations = it;
+    st->residual = res;
+    if (code != HPGEN_OK) { st->code = code; st->step = r->k; return code; }
+    memmove(r->dz[1], r->dz[0], (HPGEN_PH - 1) * sizeof r->dz[0]);
+    for (i = 0; i < HPGEN_NZ; ++i) r->dz[0][i] = zs[i] - G[i];
+    if (r->have_prev < HPGEN_PH) r->have_prev += 1;
+    memcpy(r->z, zs, sizeof r->z);
+    if (with_g) memcpy(r->g, g1, sizeof g1);
+    memcpy(r->p, p1, sizeof p1);
+    r->k += 1;
+    return HPGEN_OK;
+}
+
+/* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
+   solution, or from the predictor of hpgen_run_step). The state after global step k is
+   recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
+   sizes them for the records falling in this call). Stops at the first failed step (the run
+   keeps the last good state). Returns the steps done in this call. */
+HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, long long every,
+                                     const hpgen_options* o, double* g_rec, double* p_rec,
+                                     hpgen_status* st) {
+    double hv[1];
+    long long n, rec = 0;
+    hpgen_options full;
+    hpgen_status_init(st);
+    if (steps < 0 || every < 1 || !hpgen_options_ok(o) || r->g_stale) {
+        st->code = HPGEN_INVALID; return 0;
+    }
+    hv[0] = h;
+    full = *o;
+    full.simplified = 0;
+    for (n = 0; n < steps; ++n) {
+        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
+        if (r->k % every == 0) {
+            memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof r->g);
+            memcpy(p_rec + rec * HPGEN_D, r->p, sizeof r->p);
+            ++rec;
+        }
+    }
+    st->step = r->k;
+    return steps;
+}
+
+/* Advance a run by up to `steps` steps of size h, recording the upward crossings of the
+   scene's Poincare section s(g, p) = 0 (kernel section): when s_k < 0 <= s_{k+1}, with
+   theta = s_k / (s_k - s_{k+1}) in (0, 1], record j holds
+     k_rec[j] = k,  t_rec[j] = (k + theta) h,
+     p_rec[j * D] = (1 - theta) p_k + theta p_{k+1}      (linear in the step: O(h^2)),
+     g_rec[j * NN] = g_k tau(theta h xi_{k+1})            (kernel chart_point: on the group).
+   s of the run's current state is kept in the run, so calls chain (a crossing between two
+   calls is found). Stops after `cap` records (the crossing step included), at a failed step,
+   or after `steps` steps; *n_rec: the records written. Returns the steps done in this call. */
+HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long steps,
+                                              const hpgen_options* o, long long cap,
+                                              double* t_rec, double* g_rec, double* p_rec,
+                                              long long* k_rec, long long* n_rec,
+                                              hpgen_status* st) {
+    double hv[1], g0[HPGEN_NN], p0[HPGEN_D], s1[1], th[1];
+    long long n;
+    int i;
+    hpgen_options full;
+    hpgen_status_init(st);
+    *n_rec = 0;
+    if (steps < 0 || cap < 1 || !hpgen_options_ok(o) || r->g_stale) {
+        st->code = HPGEN_INVALID; return 0;
+    }
+    hv[0] = h;
+    full = *o;
+    full.simplified = 0;
+    if (!r->s_valid) {
+        if (hpgen_k_section(r->g, r->p, s1)) { st->code = HPGEN_NONFINITE; return 0; }
+        r->s = s1[0];
+        r->s_valid = 1;
+    }
+    for (n = 0; n < steps && *n_rec < cap; ++n) {
+        const double s0 = r->s;
+        const long long k = r->k;
+        memcpy(g0, r->g, sizeof g0);
+        memcpy(p0, r->p, sizeof p0);
+        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
+        if (hpgen_k_section(r->g, r->p, s1) || !isfinite(s1[0])) {
+            st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
+        }
+        r->s = s1[0];
+        if (s0 < 0.0 && s1[0] >= 0.0) {
+            const long long j = *n_rec;
+            const double theta = s0 / (s0 - s1[0]);
+            th[0] = theta;
+            k_rec[j] = k;
+            t_rec[j] = ((double)k + theta) * h;
+            for (i = 0; i < HPGEN_D; ++i)
+                p_rec[j * HPGEN_D + i] = (1.0 - theta) * p0[i] + theta * r->p[i];
+            if (hpgen_k_chart_point(r->z, g0, HPGEN_RUN_HV(r, hv), th, g_rec + j * HPGEN_NN)) {
+                st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
+            }
+            *n_rec = j + 1;
+        }
+    }
+    st->step = r->k;
+    return n;
+}
+
+/* xi with legendre(g, xi) = p: Newton (kernel velocity_step) from xi = 0; one step when l is
+   quadratic in xi (then exact), else until |dxi| <= HPGEN_VELOCITY_TOL (1 + |xi|) or the
+   round-off floor, at most HPGEN_VELOCITY_MAXIT iterations (the runtime's
+   Integrator.velocity uses the same test). */
+#if HPGEN_RECORD_USES_XI
+static int hpgen_velocity(const double* g, const double* p, double* xi HPGEN_OPEN_HV_PARAM) {
+    double x1[HPGEN_D], dprev = HUGE_VAL;
+    int i, it;
+    for (i = 0; i < HPGEN_D; ++i) xi[i] = 0.0;
+    for (it = 1; it <= HPGEN_VELOCITY_MAXIT; ++it) {
+        double dn = 0.0, xn;
+        if (hpgen_k_velocity_step(g, p, xi, HPGEN_OPEN_HV(hv) x1)
+            || !hpgen_all_finite(x1, HPGEN_D))
+            return HPGEN_RECORD;
+        for (i = 0; i < HPGEN_D; ++i) {
+            const double dx = fabs(x1[i] - xi[i]);
+            if (dx > dn) dn = dx;
+            xi[i] = x1[i];
+        }
+        if (HPGEN_LEGENDRE_QUADRATIC) return HPGEN_OK;
+        xn = hpgen_norm_inf(xi, HPGEN_D);
+        if (dn <= HPGEN_VELOCITY_TOL * (1.0 + xn)) return HPGEN_OK;
+        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + xn)) return HPGEN_OK;
+        dprev = dn;
+    }
+    return HPGEN_RECORD;
+}
+#endif
+
+/* The scene's record row at (g, p) (kernel record; xi by hpgen_velocity when the row uses
+   it): HPGEN_OK, or HPGEN_RECORD when the row is not finite or xi did not converge (then the
+   row is all NaN). */
+static int hpgen_record_row(const double* g, const double* p, double* row HPGEN_OPEN_HV_PARAM) {
+    double xi[HPGEN_D];
+#if HPGEN_RECORD_USES_XI
+    if (hpgen_velocity(g, p, xi HPGEN_OPEN_HV_LAST(hv)) != HPGEN_OK) {
+        int i;
+        for (i = 0; i < HPGEN_W; ++i) row[i] = NAN;
+        return HPGEN_RECORD;
+    }
+#else
+    memset(xi, 0, sizeof xi);
+#endif
+    if (hpgen_k_record(g, p, xi, HPGEN_OPEN_HV(hv) row) || !hpgen_all_finite(row, HPGEN_W))
+        return HPGEN_RECORD;
+    return HPGEN_OK;
+}
+
+/* The record row at (g, p) (the start of a run: record 0). Returns the status code. */
+/* (an open model's takes hv, the step vector at the record's time, [h, t, u, params]) */
+HPGEN_EXPORT int hpgen_record(const double* g, const double* p, double* row HPGEN_OPEN_HV_PARAM) {
+    return hpgen_record_row(g, p, row HPGEN_OPEN_HV_LAST(hv));
+}
+
+/* Advance a run like hpgen_advance, keeping only the scene's record row (W doubles) of the
+   state after global step k when k % every == 0, in rows[j * W], j = 0, 1, ... With
+   HPGEN_SKIP_G (neither the step nor the row use g) g_{k+1} is never formed: the run's g
+   stays g_0 and the run is marked g_stale (hpgen_advance and hpgen_advance_sections then
+   refuse it). The states (p_k, z) are bitwise those of hpgen_advance. A row that is not
+   finite stops the run after its step with code HPGEN_RECORD (the row is written, *n_rec
+   counts it). *n_rec: rows written. Returns the steps done in this call. */
+HPGEN_EXPORT long long hpgen_advance_record(hpgen_run* r, double h, long long steps,
+                                            long long every, const hpgen_options* o,
+                                            double* rows, long long* n_rec, hpgen_status* st) {
+    double hv[1];
+    long long n;
+    hpgen_options full;
+    hpgen_status_init(st);
+    *n_rec = 0;
+    if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    hv[0] = h;
+    full = *o;
+    full.simplified = 0;
+    if (HPGEN_SKIP_G) r->g_stale = 1;
+    for (n = 0; n < steps; ++n) {
+        if (hpgen_run_step(r, hv, o, &full, st, !HPGEN_SKIP_G) != HPGEN_OK) return n;
+        if (r->k % every == 0) {
+            double* row = rows + *n_rec * HPGEN_W;
+            *n_rec += 1;
+#if HPGEN_OPEN
+            r->hv[1] = r->t0 + (double)r->k * h;      /* the record's time */
+#endif
+            if (hpgen_record_row(r->g, r->p, row HPGEN_OPEN_HV_LAST(r->hv)) != HPGEN_OK) {
+                st->code = HPGEN_RECORD; st->step = r->k; return n + 1;
+            }
+        }
+    }
+    st->step = r->k;
+    return steps;
+}
+
+#if !HPGEN_OPEN
+/* Observables of K records (g_rec[k * NN], p_rec[k * D], as hpgen_advance writes them):
+   kernel observe per record -> xi_out[k * D], E_out[k], m_out[k * D], e_out[k]. Returns the
+   first record whose outputs are not finite, or K. */
+HPGEN_EXPORT long long hpgen_observe(long long K, const double* g_rec, const double* p_rec,
+                                     double* xi_out, double* E_out, double* m_out,
+                                     double* e_out) {
+    long long k;
+    for (k = 0; k < K; ++k) {
+        double* xi = xi_out + k * HPGEN_D;
+        double* m = m_out + k * HPGEN_D;
+        if (hpgen_k_observe(g_rec + k * HPGEN_NN, p_rec + k * HPGEN_D, xi, E_out + k, m,
+                            e_out + k)
+            || !hpgen_all_finite(xi, HPGEN_D) || !isfinite(E_out[k])) return k;
+    }
+    return K;
+}
+#endif
+
