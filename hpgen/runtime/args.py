@@ -10,6 +10,7 @@ import numpy as np
 
 from .. import abi
 from ..errors import ArgumentError, ConvergenceError, DomainError
+from .newton import NewtonOptions
 
 #: the largest steps / every the C loops take (long long)
 STEPS_MAX = 2**63 - 1
@@ -79,6 +80,23 @@ def _step_size(x, field="h"):
         raise ArgumentError(f"expected a finite non-zero number (h < 0 runs backwards in "
                             f"time), got {x!r}", field=field)
     return float(x)
+
+
+def newton_options(newton, simplified_default: bool, full: bool = False) -> NewtonOptions:
+    """The checked Newton settings of a call, simplified resolved to a bool (None: full
+    Newton when ``full``, else ``simplified_default``). ArgumentError naming the field."""
+    if newton is None:
+        newton = NewtonOptions()
+    elif not isinstance(newton, NewtonOptions):
+        raise ArgumentError("expected hpgen.runtime.NewtonOptions(tol=, maxit=, "
+                            f"simplified=, predictor=) or None, got "
+                            f"{type(newton).__name__}", field="newton")
+    simplified = newton.simplified
+    if simplified is None:
+        simplified = False if full else simplified_default
+    return NewtonOptions(_positive(newton.tol, "newton.tol"),
+                         _int(newton.maxit, "newton.maxit", 1), bool(simplified),
+                         bool(newton.predictor))
 
 
 def _memory_bytes():

@@ -85,6 +85,15 @@ class CBackend(CBatchMixin, _Backend):
         self._lib = lib
         self._tls = threading.local()    # per thread: {key: _Staging} (see _staging)
 
+    @property
+    def lib(self) -> ctypes.CDLL:
+        """The loaded library (its C functions' argument types set)."""
+        return self._lib
+
+    def kernel_function(self, name):
+        """The ctypes function of kernel ``name`` (hpgen_kernel_<name>)."""
+        return self._fns[name]
+
     def _staging(self, key) -> _Staging:
         """This thread's staging buffers for kernel ``key``, or for _RUN (g, p, z in and
         out: hpgen_run_init / hpgen_run_get); per thread, so that concurrent calls (threads;
@@ -123,7 +132,7 @@ class CBackend(CBatchMixin, _Backend):
         run = ctypes.create_string_buffer(self.run_size)
         ctypes.memmove(run, raw.tobytes(), self.run_size)
         if self.open:
-            run.keep = self._set_inputs(run, inputs)
+            run.keep = self.set_inputs(run, inputs)  # type: ignore[attr-defined]
         return run
 
     def call(self, name, *args):
@@ -174,10 +183,12 @@ class CBackend(CBatchMixin, _Backend):
         run = ctypes.create_string_buffer(self.run_size)
         self._init_run(run, g0, p0, z0)
         if self.open:
-            run.keep = self._set_inputs(run, inputs)
+            run.keep = self.set_inputs(run, inputs)  # type: ignore[attr-defined]
         return run
 
-    def _set_inputs(self, run, inputs):
+    def set_inputs(self, run, inputs):
+        """Point the C run ``run`` (a buffer or its address) at an open module's StepInputs;
+        returns the arrays it points into (keep them alive while the run is used)."""
         if inputs is None:
             raise ValueError("an open module's run needs its inputs (t0, u, params)")
         U = np.ascontiguousarray(inputs.rows, dtype=np.float64)

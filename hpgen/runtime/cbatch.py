@@ -55,7 +55,7 @@ class CBatchMixin:
             g0, p0 = _flat(g0s[b], nn, "g0"), _flat(p0s[b], d, "p0")
             self._init_run(base + b * self.run_size, g0, p0, _flat(z0s[b], self.nz, "z0"))
             if self.open:
-                keep.append(self._set_inputs(base + b * self.run_size, inputs[b]))
+                keep.append(self.set_inputs(base + b * self.run_size, inputs[b]))
         runs.keep = keep
         return runs, base
 
