@@ -21,7 +21,7 @@ _START = "the Newton start lies outside the chart map tau's domain (margin(z, h)
 def _error(code, step, time, residual, iterations, hint=""):
     """The exception of a failed step's status code (abi.STATUS): DomainError for DOMAIN,
     else ConvergenceError, with the code's message; DOMAIN after 0 iterations is the first
-    step's start (``hint``: what the chart needs, Integrator._domain_hint)."""
+    step's start (``hint``: what the chart needs, FirstStep.domain_hint)."""
     cls = DomainError if code == abi.DOMAIN else ConvergenceError
     msg = abi.MESSAGES.get(code, f"step failed with status {code}")
     if code == abi.DOMAIN and int(iterations) == 0:

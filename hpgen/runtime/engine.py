@@ -13,8 +13,9 @@ engine owns everything else, the same for every output:
   restored from a snapshot), advances it span by span (a chunk of steps: streaming), and
   when a fresh run's first step fails from z0 it starts again from the first step solved by
   continuation in h (hpgen.runtime.first_step) and repeats that call;
-- ``threads``: the worker count of an ensemble (batch runs are a backend call of the output,
-  or the loop per member on threads).
+- ``threads`` / ``each``: an ensemble's worker count and its members' runs through the loop
+  on threads; an output with an ensemble call of its own (states and records on the C
+  backend: one C call per thread slice) makes that call instead.
 
 Interface for the modules built on the engine (linearize, chunked output, simulate's fast
 path, ensembles): the attributes ``backend``, ``meta``, ``n``, ``d``, ``nz``, ``open``,
@@ -227,6 +228,15 @@ class Engine:
     def threads(threads) -> int:
         """The checked worker count of an ensemble (None: the CPU count)."""
         return _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
+
+    def each(self, run_one, members: list, threads: int) -> list:
+        """[run_one(s) for s in members]: on ``threads`` threads on the C backend (its calls
+        release the GIL), one after the other on the Python backend."""
+        if threads == 1 or self.backend.name != "c":
+            return [run_one(s) for s in members]
+        from concurrent.futures import ThreadPoolExecutor
+        with ThreadPoolExecutor(min(threads, len(members))) as pool:
+            return list(pool.map(run_one, members))
 
     def require_c(self, what: str):
         """ArgumentError unless the module runs on the C backend (``what``: the method)."""

@@ -5,12 +5,12 @@ The guess kernel builds the start from the continuous velocity xi0 (an open modu
 step 0's step vector [h, t0, u_0, params]). Every later step starts from the predictor,
 which extrapolates the last solutions inside the run loop (hpgen_run_step in C, its mirror
 hpgen.runtime.loop: ``predictor_base`` and ``predict``); a run's first step is the one
-whose start is made here. When that start lies
-outside tau's domain although the discrete step exists inside it (the discrete |h xi| is
-smaller than the continuous one), the first step is solved by continuation in h; a run whose
-first step failed from its start is retried from there (``restart``). When no start is
-found, ``domain_hint`` names the chart's limit and the largest |h| whose first step solves.
-Continuation is for closed modules only (an open module's step vector carries t, u, params).
+whose start is made here. When that start lies outside tau's domain although the discrete
+step exists inside it (the discrete |h xi| is smaller than the continuous one), the first
+step is solved by continuation in h; a run whose first step failed from its start is retried
+from there (``restart``). When no start is found, ``domain_hint`` names the chart's limit
+and the largest |h| whose first step solves. Continuation is for closed modules only (an
+open module's step vector carries t, u, params).
 """
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-"""Integrator: the public API of a loaded module, the same for the C and Python backends.
+"""Integrator: the public API of a loaded module, the same for the C and Python backends; a
+thin front whose methods call the run engine (hpgen.runtime.engine) and its outputs.
 
 Conventions: g is an (n, n) group element (array-like), momenta p/mu and velocities xi are
 length-d vectors (body frame; a scalar for d = 1), h != 0 is the step in the model's time unit
@@ -6,19 +7,17 @@ length-d vectors (body frame; a scalar for d = 1), h != 0 is the step in the mod
 exact RKMK steps back exactly, step(g1, p1, -h) = (g, p) to round-off). Internally and
 across the C boundary matrices are flat column-major (``g.ravel(order="F")``).
 Newton settings: every stepping method takes ``newton=NewtonOptions(...)`` (None: the
-defaults, tol = 1e-14, maxit = 50 (hpgen.abi), a predictor extrapolating the last solutions,
-quadratic once three exist; see hpgen.runtime.newton). ``simplified`` (reuse the Jacobian's
-inverse across iterations and steps) left None means: for runs, True when the Jacobian kernel
-costs more than SIMPLIFIED_RATIO times the residual kernel (CasADi instruction counts in
-meta.json), where it is the faster choice (Gauss 2 exact: 7.5 residual evaluations and 0.14
-Jacobians per step instead of 2.8 of each); for ``step`` (a cold start), full Newton.
+defaults, tol = 1e-14, maxit = 50 (hpgen.abi), the predictor extrapolating the last
+solutions; see hpgen.runtime.newton). ``simplified`` (reuse the Jacobian's inverse across
+iterations and steps) left None means: for runs, True when the Jacobian kernel costs more
+than SIMPLIFIED_RATIO (hpgen.runtime.engine) times the residual kernel (CasADi instruction
+counts in meta.json); for ``step`` (a cold start), full Newton.
 """
 from __future__ import annotations
 
 import numpy as np
 
-from ..errors import ArgumentError
-from . import records, sections, states
+from . import linearize as _linearize, records, sections, states
 from .engine import Engine
 from .initial import GroupElements
 from .newton import NewtonOptions
@@ -152,16 +151,7 @@ class Integrator:
         and t0 (default: the trajectory's first time) and returns (A, B), B (K, 2d, m) =
         d(eta_{k+1}, dp_{k+1}) / d u_k, or with wrt="params" P (K, 2d, n_runtime_params).
         A closed module takes none of u, params, t0, wrt."""
-        from .linearize import linearize, linearize_open
-        if self.open is None:
-            for name, v in (("u", u), ("params", params), ("t0", t0), ("wrt", wrt)):
-                if v is not None:
-                    raise ArgumentError("this model has no forces, inputs, runtime "
-                                        f"parameters or t: linearize takes no {name}",
-                                        field=name)
-            return linearize(self.engine, traj, self.engine.options(newton))
-        return linearize_open(self.engine, traj, self.engine.options(newton), u, params, t0,
-                              wrt)
+        return _linearize.along(self.engine, traj, newton, u, params, t0, wrt)
 
     def casadi_step(self):
         """casadi.Function step(g, p, h, z) -> (F, g1, p1) (an open module's:

@@ -58,6 +58,20 @@ from .args import _error
 RECORD_RTOL = 1e-9
 
 
+def along(engine, traj, newton=None, u=None, params=None, t0=None, wrt=None):
+    """Integrator.linearize: ``linearize`` for a closed module (which takes none of u,
+    params, t0, wrt: ArgumentError naming the one given), ``linearize_open`` for an open
+    one; newton: the Newton settings (Engine.options resolves them)."""
+    if engine.open is None:
+        for name, v in (("u", u), ("params", params), ("t0", t0), ("wrt", wrt)):
+            if v is not None:
+                raise ArgumentError("this model has no forces, inputs, runtime "
+                                    f"parameters or t: linearize takes no {name}",
+                                    field=name)
+        return linearize(engine, traj, engine.options(newton))
+    return linearize_open(engine, traj, engine.options(newton), u, params, t0, wrt)
+
+
 def implicit_derivative(J, Fs, Yz, Ys):
     """Ys - Yz J^{-1} Fs: d Y / d s of the output Y(z(s), s) where F(z(s), s) = 0 (the implicit
     function theorem). J (nz, nz), Fs (nz, m), Yz (r, nz), Ys (r, m). The one implementation

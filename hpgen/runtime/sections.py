@@ -116,19 +116,11 @@ def sections_batch(engine: Engine, g0, h, steps, xi0=None, mu0=None, max_crossin
                    t0=0.0) -> list:
     """Integrator.sections_batch: the members' runs on ``threads`` threads (the C backend;
     one after the other on the Python backend); errors set, not raised."""
-    from concurrent.futures import ThreadPoolExecutor
     h, steps, cap_total, chunk, opts = _section_args(engine, h, steps, max_crossings, chunk,
                                                      newton)
     runs = engine.member_starts(g0, xi0, mu0, h, steps, 1, opts, u, params, t0)
-    threads = engine.threads(threads)
-
-    def one(s):
-        return Crossings(engine, s, cap_total, chunk).run()
-
-    if threads == 1 or engine.backend.name != "c":
-        return [one(s) for s in runs]
-    with ThreadPoolExecutor(min(threads, len(runs))) as pool:
-        return list(pool.map(one, runs))
+    return engine.each(lambda s: Crossings(engine, s, cap_total, chunk).run(), runs,
+                       engine.threads(threads))
 
 
 def stroboscopic(engine: Engine, g0, h, steps, xi0, mu0, max_crossings, chunk, newton, u,
