@@ -29,7 +29,7 @@ class Integrator:
     """A loaded generated module. Attributes: meta (dict from meta.json), backend ("c" or
     "python"), n, d, nz, module_dir (the directory it was loaded from, or None), engine (the
     run engine behind every run method, hpgen.runtime.engine: the declared interface of the
-    modules built on it)."""
+    modules built on it), fast_path (simulate's fast path on the C backend, else None)."""
 
     def __init__(self, meta: dict, backend, module_dir=None):
         self.meta, self.module_dir = meta, module_dir
@@ -39,7 +39,7 @@ class Integrator:
         self.open = meta.get("open")
         self.engine = Engine(backend, meta, owner=self)
         #: simulate's fast path (the C backend; hpgen.runtime.prologue)
-        self.fast = Prologue(self.engine) if self.backend == "c" else None
+        self.fast_path = Prologue(self.engine) if self.backend == "c" else None
 
     def __repr__(self):
         return f"<hpgen Integrator {self.meta['module']} backend={self.backend}>"
@@ -211,8 +211,8 @@ class Integrator:
         ConvergenceError, DomainError
             A step failed; ``.partial`` is the Trajectory so far (partial=True).
         """
-        if self.fast is not None:
-            traj = self.fast.simulate(g0, h, steps, xi0, mu0, every, newton, t0, u, params)
+        if self.fast_path is not None:
+            traj = self.fast_path.simulate(g0, h, steps, xi0, mu0, every, newton, t0, u, params)
             if traj is not None:
                 return traj
         return states.simulate(self.engine, g0, h, steps, xi0, mu0, every, newton, u, params,

@@ -424,7 +424,7 @@ def test_fast_simulate_is_the_generic_path(compiled):
             for start in ({"xi0": xi0}, {"mu0": mu0}, {"mu0": list(mu0)}):
                 for t0 in (0.0, 1.25):
                     kw = dict(every=every, newton=nw, t0=t0, **start)
-                    fast = integ.fast.simulate(g0, h, steps, start.get("xi0"),
+                    fast = integ.fast_path.simulate(g0, h, steps, start.get("xi0"),
                                                     start.get("mu0"), every, nw, t0)
                     assert fast is not None          # the common case takes the fast path
                     want = _run_outcome(_generic, integ, g0, h, steps, **kw)
@@ -514,7 +514,7 @@ def test_plans_are_keyed_by_type_and_identity(compile_model):
     them), and an equal but new NewtonOptions gets its own plan."""
     integ = compile_model(FREE_BODY, tableau="stormer-verlet", tau="cay", rkmk="truncated",
                           backend="c")
-    pro = integ.fast
+    pro = integ.fast_path
     a = pro.plan(1.0, 3, 1, None)
     assert pro.plan(1.0, 3, 1, None) is a and pro.plan(np.float64(1.0), np.int64(3), 1, None) is a
     assert pro.plan(1, 3, 1, None) is None and pro.plan(True, 3, 1, None) is None
@@ -544,7 +544,7 @@ def test_fast_simulate_of_an_open_module_is_the_generic_path(compile_model):
                 for t0 in (0.0, 2.5):
                     for start in ({"xi0": xi0}, {"mu0": mu0}):
                         kw = dict(every=2, u=u, params=params, t0=t0, **start)
-                        fast = integ.fast.simulate(g0, 0.05, steps, start.get("xi0"),
+                        fast = integ.fast_path.simulate(g0, 0.05, steps, start.get("xi0"),
                                                         start.get("mu0"), 2, None, t0, u,
                                                         params)
                         assert fast is not None
