@@ -24,6 +24,7 @@ from pathlib import Path
 
 import numpy as np
 
+from hpgen.runtime.engine import RunArgs
 from hpgen.runtime.states import simulate as generic_simulate
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -109,8 +110,8 @@ def main():
 
                     def old(k, kw=kw, n=n, steps=steps, every=every):
                         a = kw[k % n]
-                        generic_simulate(integ.engine, a["g0"], h, steps, a.get("xi0"),
-                                         a.get("mu0"), every, None, None, None, 0.0)
+                        generic_simulate(integ.engine, RunArgs(a["g0"], h, steps, a.get("xi0"),
+                                                               a.get("mu0"), every))
                     r = interleaved({"c": c_run, "old": old, "new": new}, calls, repeats)
                     peer = r["c"]
                     per_step = peer / STEPS
@@ -127,8 +128,8 @@ def main():
     g0, xi0 = np.eye(3), [0.1, -0.2, 0.3]
     for params in (None, {"kp": 2.0}):
         r = interleaved({
-            "old": lambda k, p=params: generic_simulate(integ.engine, g0, 0.05, 0, xi0, None, 1,
-                                                        None, None, p, 0.0),
+            "old": lambda k, p=params: generic_simulate(
+                integ.engine, RunArgs(g0, 0.05, 0, xi0, None, 1, None, None, p, 0.0)),
             "new": lambda k, p=params: integ.simulate(g0, 0.05, 0, xi0=xi0, params=p)},
             calls, repeats)
         print(f"spacecraft_slew (open), steps = 0, params={params}: old {r['old'] * 1e6:.1f} "

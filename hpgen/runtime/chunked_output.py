@@ -41,6 +41,7 @@ import numpy as np
 
 from ..errors import ConvergenceError, ModelError
 from .args import _int
+from .engine import RunArgs
 from .progress import bar as progress_bar
 from .partial_run import STATE, PartialFolder
 from .records import stream_records
@@ -83,7 +84,7 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     parts = partial_dir(path)
     chunk = _int(chunk, "chunk", 1)
     engine = integ.engine
-    s = engine.prepare(g0, h, steps, xi0, mu0, every, newton)
+    s = engine.prepare(RunArgs(g0, h, steps, xi0, mu0, every, newton))
     h, steps, every = s.h, s.steps, s.every
     ident = _identity(engine, s)
     removed = _remove_old_leftovers(path)

@@ -6,9 +6,11 @@ What a run keeps is an *output* (``Output``): it says how far each backend call 
 what came back into its result type (hpgen.runtime.states, .records, .sections). The
 engine owns everything else, the same for every output:
 
-- ``prepare`` / ``prepare_batch``: the checked arguments of a run (or of each member of an
-  ensemble) and its start, a frozen ``RunStart`` (h, steps, every, Newton options, g0 flat,
-  mu0, xi0, the first step's Newton start z0, an open module's StepInputs);
+- ``prepare`` / ``prepare_batch``: a run's arguments as given (``RunArgs``: start, step,
+  steps, record interval, Newton settings, an open module's inputs, parameters and start
+  time) checked, and the run's start (or each ensemble member's), a frozen ``RunStart``
+  (h, steps, every, Newton options, g0 flat, mu0, xi0, the first step's Newton start z0, an
+  open module's StepInputs);
 - ``parts``: the one loop. It starts a run (or continues a ``RunHandle``, e.g. one
   restored from a snapshot), advances it span by span (a chunk of steps: streaming), and
   when a fresh run's first step fails from z0 it starts again from the first step solved by
@@ -26,7 +28,7 @@ numpy and the standard library only.
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Iterator, Protocol
 
 import numpy as np
@@ -44,6 +46,27 @@ DEFECT_MAX = 1e-10
 #: simplified Newton is the runs' default when the Jacobian kernel costs more than this many
 #: residual kernels (CasADi instruction counts in meta.json)
 SIMPLIFIED_RATIO = 4.0
+
+
+@dataclass(frozen=True, eq=False)
+class RunArgs:
+    """The arguments of a run as the caller gave them (Integrator.simulate's, unchecked:
+    ``Engine.prepare`` checks them): g0, h, steps, one of xi0 / mu0, every, newton, and an
+    open module's u, params and t0."""
+    g0: Any
+    h: Any
+    steps: Any
+    xi0: Any = None
+    mu0: Any = None
+    every: Any = 1
+    newton: Any = None
+    u: Any = None
+    params: Any = None
+    t0: Any = 0.0
+
+    def but(self, **changes) -> RunArgs:
+        """A copy with ``changes``."""
+        return replace(self, **changes)
 
 
 @dataclass(frozen=True, eq=False)
@@ -171,33 +194,30 @@ class Engine:
         z0 = self.first_step.start(gf, mu0, xi0, h, opts, inputs)
         return RunStart(h, steps, every, opts, gf, mu0, xi0, z0, inputs)
 
-    def prepare(self, g0, h, steps, xi0, mu0, every, newton, u=None, params=None,
-                t0=0.0) -> RunStart:
+    def prepare(self, a: RunArgs) -> RunStart:
         """The checked arguments of a run and its start."""
-        h = _step_size(h)
-        steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
-        opts = self.options(newton)
-        return self.start(g0, xi0, mu0, h, steps, every, opts,
-                          step_inputs(self.open, steps, u, params, t0))
+        h = _step_size(a.h)
+        steps, every = _int(a.steps, "steps", 0), _int(a.every, "every", 1)
+        opts = self.options(a.newton)
+        return self.start(a.g0, a.xi0, a.mu0, h, steps, every, opts,
+                          step_inputs(self.open, steps, a.u, a.params, a.t0))
 
-    def prepare_batch(self, g0, h, steps, xi0, mu0, every, newton, u=None, params=None,
-                      t0=0.0) -> Ensemble:
+    def prepare_batch(self, a: RunArgs) -> Ensemble:
         """The Ensemble of g0 (n, n) shared or (B, n, n) and xi0 or mu0 (B, d); u and t0
         shared, a params value with a leading axis of length B a sweep
         (hpgen.runtime.inputs.batch_inputs)."""
-        h = _step_size(h)
-        steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
-        opts = self.options(newton)
-        return Ensemble(h, steps, every, opts, self.member_starts(
-            g0, xi0, mu0, h, steps, every, opts, u, params, t0))
+        h = _step_size(a.h)
+        steps, every = _int(a.steps, "steps", 0), _int(a.every, "every", 1)
+        opts = self.options(a.newton)
+        return Ensemble(h, steps, every, opts, self.member_starts(a, h, steps, every, opts))
 
-    def member_starts(self, g0, xi0, mu0, h, steps, every, opts, u=None, params=None,
-                      t0=0.0) -> list:
-        """prepare_batch after h, steps, every and the options are checked."""
+    def member_starts(self, a: RunArgs, h, steps, every, opts) -> list:
+        """prepare_batch's members, h, steps, every and the options checked already."""
+        xi0, mu0 = a.xi0, a.mu0
         init = xi0 if xi0 is not None else mu0
         B = len(init) if hasattr(init, "__len__") else None
-        inputs = batch_inputs(self.open, B or 0, steps, u, params, t0) if B else None
-        G0 = self._batch_g0(g0, xi0, mu0)
+        inputs = batch_inputs(self.open, B or 0, steps, a.u, a.params, a.t0) if B else None
+        G0 = self._batch_g0(a.g0, xi0, mu0)
         return [self.start(G0[b], None if xi0 is None else xi0[b],
                            None if mu0 is None else mu0[b], h, steps, every, opts,
                            None if inputs is None else inputs[b]) for b in range(len(G0))]

@@ -72,8 +72,8 @@ class FirstStep:
         opts = NewtonOptions(base.tol, base.maxit, False, False)
         for _ in range(20):          # a first h' whose step solves from its guess
             hv = np.array([t * h])
-            code, _, _, z, _, _ = self.backend.step(gf, mu0, hv, call("guess", xi0, gf, mu0, hv)[0],
-                                               opts)
+            code, _, _, z, _, _ = self.backend.step(gf, mu0, hv,
+                                                    call("guess", xi0, gf, mu0, hv)[0], opts)
             if code == abi.OK:
                 break
             t *= 0.5

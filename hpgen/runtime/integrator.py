@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import linearize as _linearize, records, sections, states
-from .engine import Engine
+from .engine import Engine, RunArgs
 from .initial import GroupElements
 from .newton import NewtonOptions
 from .prologue import Prologue
@@ -215,8 +215,8 @@ class Integrator:
             traj = self.fast_path.simulate(g0, h, steps, xi0, mu0, every, newton, t0, u, params)
             if traj is not None:
                 return traj
-        return states.simulate(self.engine, g0, h, steps, xi0, mu0, every, newton, u, params,
-                               t0)
+        return states.simulate(self.engine, RunArgs(g0, h, steps, xi0, mu0, every, newton, u,
+                                                    params, t0))
 
     def stream(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000, *,
                newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
@@ -251,8 +251,8 @@ class Integrator:
         ConvergenceError, DomainError
             A step failed; ``.partial`` holds the records of the failing chunk.
         """
-        return states.stream(self.engine, g0, h, steps, xi0, mu0, every, chunk, newton, u,
-                             params, t0)
+        return states.stream(self.engine, RunArgs(g0, h, steps, xi0, mu0, every, newton, u,
+                                                  params, t0), chunk)
 
     def simulate_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
                        newton: NewtonOptions | None = None, u=None, params=None,
@@ -300,8 +300,9 @@ class Integrator:
         ModelError
             A bad argument, or the Python backend.
         """
-        return states.simulate_batch(self.engine, g0, h, steps, xi0, mu0, every, threads,
-                                     newton, u, params, t0, progress, lanes)
+        return states.simulate_batch(self.engine, RunArgs(g0, h, steps, xi0, mu0, every,
+                                                          newton, u, params, t0),
+                                     threads, progress, lanes)
 
     def record(self, g0, h, steps, xi0=None, mu0=None, every=1, *,
                newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
@@ -338,8 +339,8 @@ class Integrator:
             A step failed, or a recorded value is not finite (``RecordError`` names the
             entries); ``.partial`` holds the records up to the failure.
         """
-        return records.record(self.engine, g0, h, steps, xi0, mu0, every, newton, u, params,
-                              t0)
+        return records.record(self.engine, RunArgs(g0, h, steps, xi0, mu0, every, newton, u,
+                                                   params, t0))
 
     def stream_record(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000, *,
                       newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
@@ -347,8 +348,8 @@ class Integrator:
         Records per chunk (the first starts with record 0; ``t`` is global). A failure raises
         ConvergenceError / DomainError / RecordError with ``.partial`` the failing chunk's
         records. u, params, t0: as in ``simulate``."""
-        return records.stream_record(self.engine, g0, h, steps, xi0, mu0, every, chunk, newton,
-                                     u, params, t0)
+        return records.stream_record(self.engine, RunArgs(g0, h, steps, xi0, mu0, every,
+                                                          newton, u, params, t0), chunk)
 
     def record_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
                      newton: NewtonOptions | None = None, u=None, params=None, t0=0.0,
@@ -358,8 +359,9 @@ class Integrator:
         its own. Returns B Records; a failed run's Records is partial with ``.error`` set
         (nothing is raised). u, params, t0 and progress: as for ``simulate_batch`` (a params
         value with a leading axis of length B is a sweep: run b takes entry b)."""
-        return records.record_batch(self.engine, g0, h, steps, xi0, mu0, every, threads,
-                                    newton, u, params, t0, progress)
+        return records.record_batch(self.engine, RunArgs(g0, h, steps, xi0, mu0, every,
+                                                         newton, u, params, t0),
+                                    threads, progress)
 
     def sections(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None, chunk=100_000,
                  *, newton: NewtonOptions | None = None, u=None, params=None,
@@ -402,8 +404,8 @@ class Integrator:
         ConvergenceError, DomainError
             A step failed; ``.partial`` holds the crossings found before it.
         """
-        return sections.sections(self.engine, g0, h, steps, xi0, mu0, max_crossings, chunk,
-                                 newton, u, params, t0, every_t)
+        return sections.sections(self.engine, RunArgs(g0, h, steps, xi0, mu0, 1, newton, u,
+                                                      params, t0), max_crossings, chunk, every_t)
 
     def sections_batch(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
                        threads=None, chunk=100_000, *,
@@ -414,5 +416,6 @@ class Integrator:
         result is bitwise that of ``sections`` on its own. A failed run's SectionCrossings
         is partial with ``.error`` set (nothing is raised). u, params, t0: as for
         ``simulate_batch`` (a params value with a leading axis of length B is a sweep)."""
-        return sections.sections_batch(self.engine, g0, h, steps, xi0, mu0, max_crossings,
-                                       threads, chunk, newton, u, params, t0)
+        return sections.sections_batch(self.engine, RunArgs(g0, h, steps, xi0, mu0, 1, newton,
+                                                            u, params, t0),
+                                       max_crossings, threads, chunk)

@@ -22,7 +22,7 @@ from .. import abi
 from ..errors import ModelError, RecordError
 from . import loop
 from .args import _error, _fits, _int
-from .engine import Engine, Part, RunHandle, RunStart
+from .engine import Engine, Part, RunArgs, RunHandle, RunStart
 from .progress import bar as progress_bar
 from .trajectory import npz_path, run_metadata, write_npz
 from .work import R as WORK_START, WorkSum, fill_work, work_offset
@@ -194,28 +194,24 @@ def record_names(meta) -> tuple:
     return tuple(name for name, _, _ in meta["record"])
 
 
-def stream_record(engine: Engine, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000,
-                  newton=None, u=None, params=None, t0=0.0):
+def stream_record(engine: Engine, a: RunArgs, chunk=100_000):
     """Integrator.stream_record."""
     chunk = _int(chunk, "chunk", 1)
-    s = engine.prepare(g0, h, steps, xi0, mu0, every, newton, u, params, t0)
-    yield from stream_records(engine, s, chunk, t_start=float(t0))
+    s = engine.prepare(a)
+    yield from stream_records(engine, s, chunk, t_start=float(a.t0))
 
 
-def record(engine: Engine, g0, h, steps, xi0=None, mu0=None, every=1, newton=None, u=None,
-           params=None, t0=0.0) -> Records:
+def record(engine: Engine, a: RunArgs) -> Records:
     """Integrator.record: the run in one piece."""
-    _fits(_int(steps, "steps", 0) // _int(every, "every", 1) + 1,
+    _fits(_int(a.steps, "steps", 0) // _int(a.every, "every", 1) + 1,
           engine.backend.record_width or 1, "record")
-    return next(stream_record(engine, g0, h, steps, xi0, mu0, every, max(steps, 1), newton,
-                              u, params, t0))
+    return next(stream_record(engine, a, max(a.steps, 1)))
 
 
-def record_batch(engine: Engine, g0, h, steps, xi0=None, mu0=None, every=1, threads=None,
-                 newton=None, u=None, params=None, t0=0.0, progress=None) -> list:
+def record_batch(engine: Engine, a: RunArgs, threads=None, progress=None) -> list:
     """Integrator.record_batch: B Records from one backend call per thread slice."""
     engine.require_c("record_batch")
-    e = engine.prepare_batch(g0, h, steps, xi0, mu0, every, newton, u, params, t0)
+    e = engine.prepare_batch(a)
     threads = engine.threads(threads)
     runs, steps, every = e.members, e.steps, e.every
     col = work_offset(engine.meta)
@@ -230,7 +226,7 @@ def record_batch(engine: Engine, g0, h, steps, xi0=None, mu0=None, every=1, thre
         mine = rows[b, :n_rows[b]]
         if col is not None and len(mine):     # the work from the every-step rows
             mine = _keep_every(mine[1:], col, WorkSum(e.h), 0, every, mine[:1])
-        out.append(make_records(engine, mine, sts[b], e.h, every, 0, float(t0)))
+        out.append(make_records(engine, mine, sts[b], e.h, every, 0, float(a.t0)))
     return out
 
 

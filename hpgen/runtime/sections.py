@@ -12,8 +12,9 @@ import numpy as np
 from .. import abi
 from ..errors import ConvergenceError, ModelError
 from .args import _error, _int, _positive, _step_size
-from .engine import Engine, Part, RunStart
+from .engine import Engine, Part, RunArgs, RunStart
 from .inputs import step_inputs
+from .states import stream
 from .trajectory import SectionCrossings
 
 
@@ -94,49 +95,45 @@ def _section_args(engine: Engine, h, steps, max_crossings, chunk, newton):
     return h, steps, cap_total, _int(chunk, "chunk", 1), engine.options(newton)
 
 
-def sections(engine: Engine, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
-             chunk=100_000, newton=None, u=None, params=None, t0=0.0,
+def sections(engine: Engine, a: RunArgs, max_crossings=None, chunk=100_000,
              every_t=None) -> SectionCrossings:
     """Integrator.sections: raises a failed run's error (with .partial)."""
     if every_t is not None:
-        return stroboscopic(engine, g0, h, steps, xi0, mu0, max_crossings, chunk, newton, u,
-                            params, t0, every_t)
-    h, steps, cap_total, chunk, opts = _section_args(engine, h, steps, max_crossings, chunk,
-                                                     newton)
-    s = engine.start(g0, xi0, mu0, h, steps, 1, opts,
-                     step_inputs(engine.open, steps, u, params, t0))
+        return stroboscopic(engine, a, max_crossings, chunk, every_t)
+    h, steps, cap_total, chunk, opts = _section_args(engine, a.h, a.steps, max_crossings,
+                                                     chunk, a.newton)
+    s = engine.start(a.g0, a.xi0, a.mu0, h, steps, 1, opts,
+                     step_inputs(engine.open, steps, a.u, a.params, a.t0))
     out = Crossings(engine, s, cap_total, chunk).run()
     if out.error is not None:
         raise out.error
     return out
 
 
-def sections_batch(engine: Engine, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
-                   threads=None, chunk=100_000, newton=None, u=None, params=None,
-                   t0=0.0) -> list:
+def sections_batch(engine: Engine, a: RunArgs, max_crossings=None, threads=None,
+                   chunk=100_000) -> list:
     """Integrator.sections_batch: the members' runs on ``threads`` threads (the C backend;
     one after the other on the Python backend); errors set, not raised."""
-    h, steps, cap_total, chunk, opts = _section_args(engine, h, steps, max_crossings, chunk,
-                                                     newton)
-    runs = engine.member_starts(g0, xi0, mu0, h, steps, 1, opts, u, params, t0)
+    h, steps, cap_total, chunk, opts = _section_args(engine, a.h, a.steps, max_crossings,
+                                                     chunk, a.newton)
+    runs = engine.member_starts(a, h, steps, 1, opts)
     return engine.each(lambda s: Crossings(engine, s, cap_total, chunk).run(), runs,
                        engine.threads(threads))
 
 
-def stroboscopic(engine: Engine, g0, h, steps, xi0, mu0, max_crossings, chunk, newton, u,
-                 params, t0, every_t) -> SectionCrossings:
+def stroboscopic(engine: Engine, a: RunArgs, max_crossings, chunk,
+                 every_t) -> SectionCrossings:
     """sections(..., every_t=T): the states at t0 + j T from the states output every N
     steps."""
-    from .states import stream
-    h = _positive(h, "h")
+    h = _positive(a.h, "h")
     N = strobe_steps(every_t, h)
-    steps = _int(steps, "steps", 0)
+    steps = _int(a.steps, "steps", 0)
     if max_crossings is not None:
         steps = min(steps, (_int(max_crossings, "max_crossings", 1) - 1) * N)
     parts, err = [], None
     try:
-        parts.extend(stream(engine, g0, h, steps, xi0, mu0, N, _int(chunk, "chunk", 1),
-                            newton, u, params, t0))
+        parts.extend(stream(engine, a.but(h=h, steps=steps, every=N),
+                            _int(chunk, "chunk", 1)))
     except ConvergenceError as e:
         err = e
         if e.partial is not None and len(e.partial.t):
@@ -144,7 +141,7 @@ def stroboscopic(engine: Engine, g0, h, steps, xi0, mu0, max_crossings, chunk, n
     cat = lambda name, shape: (np.concatenate([getattr(p, name) for p in parts])  # noqa
                                if parts else np.zeros(shape))
     t = cat("t", (0,))
-    k = np.rint((t - float(t0)) / h).astype(np.int64) if len(t) else np.zeros(0, np.int64)
+    k = np.rint((t - float(a.t0)) / h).astype(np.int64) if len(t) else np.zeros(0, np.int64)
     out = SectionCrossings(t=t, g=cat("g", (0, engine.n, engine.n)),
                            mu=cat("mu", (0, engine.d)), step=k, h=h,
                            steps=steps if err is None else int(err.step),

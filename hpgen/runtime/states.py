@@ -10,7 +10,7 @@ import numpy as np
 
 from .. import abi
 from .args import _error, _fits, _int
-from .engine import Engine, Part, RunStart
+from .engine import Engine, Part, RunArgs, RunStart
 from .inputs import check_t0
 from .progress import bar as progress_bar
 from .trajectory import Trajectory
@@ -77,12 +77,11 @@ def trajectory(engine: Engine, done, g_rec, p_rec, st, h, every, inputs=None,
                    inputs)
 
 
-def stream(engine: Engine, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000,
-           newton=None, u=None, params=None, t0=0.0):
+def stream(engine: Engine, a: RunArgs, chunk=100_000):
     """Integrator.stream: a Trajectory per chunk; raises a failed chunk's error."""
     chunk = _int(chunk, "chunk", 1)
-    s = engine.prepare(g0, h, steps, xi0, mu0, every, newton, u, params, t0)
-    yield from _pieces(engine, s, chunk, check_t0(t0))
+    s = engine.prepare(a)
+    yield from _pieces(engine, s, chunk, check_t0(a.t0))
 
 
 def _pieces(engine: Engine, s: RunStart, chunk: int, t_start: float):
@@ -94,21 +93,19 @@ def _pieces(engine: Engine, s: RunStart, chunk: int, t_start: float):
         yield traj
 
 
-def simulate(engine: Engine, g0, h, steps, xi0=None, mu0=None, every=1, newton=None,
-             u=None, params=None, t0=0.0) -> Trajectory:
+def simulate(engine: Engine, a: RunArgs) -> Trajectory:
     """Integrator.simulate's generic path (every module, backend and argument): the run in
     one piece."""
-    s = engine.prepare(g0, h, steps, xi0, mu0, every, newton, u, params, t0)
+    s = engine.prepare(a)
     _fits(s.steps // s.every + 1, engine.n * engine.n + engine.d, "simulate")
-    return next(_pieces(engine, s, max(s.steps, 1), check_t0(t0)))
+    return next(_pieces(engine, s, max(s.steps, 1), check_t0(a.t0)))
 
 
-def simulate_batch(engine: Engine, g0, h, steps, xi0=None, mu0=None, every=1, threads=None,
-                   newton=None, u=None, params=None, t0=0.0, progress=None,
+def simulate_batch(engine: Engine, a: RunArgs, threads=None, progress=None,
                    lanes=True) -> list:
     """Integrator.simulate_batch: B Trajectories from one backend call per thread slice."""
     engine.require_c("simulate_batch")
-    e = engine.prepare_batch(g0, h, steps, xi0, mu0, every, newton, u, params, t0)
+    e = engine.prepare_batch(a)
     threads = engine.threads(threads)
     runs, inputs = e.members, e.inputs
     _fits(len(runs) * (e.steps // e.every + 1), engine.n * engine.n + engine.d,
@@ -117,7 +114,7 @@ def simulate_batch(engine: Engine, g0, h, steps, xi0=None, mu0=None, every=1, th
         done, g_rec, p_rec, sts = engine.backend.simulate_batch(
             [s.g0 for s in runs], [s.mu0 for s in runs], e.h, [s.z0 for s in runs], e.steps,
             e.every, e.opts, threads, inputs, bar, lanes=bool(lanes))
-    t0 = check_t0(t0)
+    t0 = check_t0(a.t0)
     return [trajectory(engine, int(done[b]), g_rec[b], p_rec[b], sts[b], e.h, e.every,
                        None if inputs is None else inputs[b], t0)
             for b in range(len(runs))]

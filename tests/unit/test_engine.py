@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from hpgen.runtime.engine import Part, RunStart
+from hpgen.runtime.engine import Part, RunArgs, RunStart
 
 ROOT = Path(__file__).resolve().parents[2]
 FREE = ROOT / "examples" / "free_rigid_body.yaml"
@@ -80,7 +80,7 @@ def test_an_output_of_ones_own_runs_on_the_one_loop(compile_model, backend, chun
     integ = compile_model(FREE, backend=backend)
     g0, mu0, h, steps = np.eye(3), np.array([0.3, -1.1, 0.7]), 0.05, 50
     engine = integ.engine
-    s = engine.prepare(g0, h, steps, None, mu0, 1, None)
+    s = engine.prepare(RunArgs(g0, h, steps, mu0=mu0))
     out = LastState(engine, s, chunk)
     parts = list(engine.parts(out, s))
     assert [k for k, _, _ in parts] == list(range(0, steps, chunk))
@@ -96,7 +96,7 @@ def test_a_failed_first_call_restarts_and_the_handle_follows(compile_model, back
     integ = compile_model(FREE, backend=backend)
     engine = integ.engine
     g0, mu0, h, steps = np.eye(3), np.array([0.3, -1.1, 0.7]), 0.05, 12
-    good = engine.prepare(g0, h, steps, None, mu0, 1, None)
+    good = engine.prepare(RunArgs(g0, h, steps, mu0=mu0))
     bad = RunStart(good.h, good.steps, good.every, good.opts, good.g0, good.mu0, good.xi0,
                    np.full(integ.nz, 1e200), good.inputs)
     handle = engine.new_run(bad)

@@ -27,6 +27,7 @@ from hpgen.errors import ArgumentError, ConvergenceError, ModelError
 from hpgen.runtime import backends, newton
 from hpgen.runtime.integrator import Integrator
 from hpgen.runtime.state_maps import COND_MAX
+from hpgen.runtime.engine import RunArgs
 from hpgen.runtime.states import simulate as generic_simulate
 
 from _toy_step import integrator as toy_integrator
@@ -155,7 +156,8 @@ def test_initial_and_simulate_from_mu0_match_the_reference(compiled, backend):
     h, steps, every = 0.01, 7, 2
     tr = integ.simulate(g, h, steps, mu0=mu, every=every)
     gf = g.ravel(order="F")
-    z0 = integ.engine.backend.call("guess", reference_velocity(integ, g, mu), gf, mu, np.array([h]))[0]
+    z0 = integ.engine.backend.call("guess", reference_velocity(integ, g, mu), gf, mu,
+                                   np.array([h]))[0]
     done, G, P, st = backends._Backend.simulate(integ.engine.backend, gf, mu, h, z0, steps, every,
                                                 integ.engine.options(None))
     K = done // every + 1
@@ -404,7 +406,8 @@ def _run_outcome(fn, *args, **kw):
 
 def _generic(integ, g0, h, steps, xi0=None, mu0=None, every=1, *, newton=None, u=None,
              params=None, t0=0.0):
-    return generic_simulate(integ.engine, g0, h, steps, xi0, mu0, every, newton, u, params, t0)
+    return generic_simulate(integ.engine, RunArgs(g0, h, steps, xi0, mu0, every, newton, u,
+                                                  params, t0))
 
 
 def test_fast_simulate_is_the_generic_path(compiled):
