@@ -34,7 +34,7 @@ def run(integ, label, g0, h, init_of, bodies, steps, repeats):
     """Per B: the interleaved repeats (lanes on / off, 1 / 2 threads, `steps` and 0 steps
     alternate); ns per body-step = (min time of `steps` steps - min time of 0 steps) /
     (B steps): the stepping beyond the per-body setup, the same statistic on both sides."""
-    print(f"\n{label} (lanes: {integ._b.lanes or 'none'} bodies per call)")
+    print(f"\n{label} (lanes: {integ.engine.backend.lanes or 'none'} bodies per call)")
     print("| bodies | threads | lanes on ns/body-step | lanes off | on / off |")
     print("|---|---|---|---|---|")
     for B in bodies:

@@ -133,7 +133,7 @@ def table_collocation(quick: bool):
     for tab, h in (("gauss2", 0.05), ("gauss3", 0.08), ("gauss3", 0.1)):
         integ = hpgen.compile(HEAVY_TOP, backend="python", tableau=tab, tau="cay",
                               rkmk="exact")
-        b = integ._b
+        b = integ.engine.backend
         kern = b._newton
         pb = Problem(HEAVY_TOP)
         gf = np.asarray(pb.g0, dtype=float).ravel(order="F")
@@ -166,7 +166,7 @@ def table_floor(quick: bool):
     from hpgen.abi import THETA_FLOOR
     from hpgen.runtime import loop, newton
     integ = hpgen.compile(ROOT / "examples" / "lagrange_top.yaml", backend="python")
-    integ._b._newton.iterate = None
+    integ.engine.backend._newton.iterate = None
     steps = 20_000 if quick else 80_000
     e3, xi0 = np.array([0.0, 0.0, 1.0]), np.array([0.0, 150.0, -4.61538])
     shipped = loop.predict

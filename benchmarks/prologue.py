@@ -5,8 +5,7 @@ process.
 
 Heavy top (examples/heavy_top.yaml), C backend, gauss2/cay/exact and gauss3/cay/exact.
 "new" is ``Integrator.simulate`` (the fast path, hpgen.runtime.prologue), "old" is
-``Integrator._simulate``, the generic path that every call took before (main's simulate: the
-same functions, only the Trajectory's read-only flags set with setflags). Per case: steps = 0
+``hpgen.runtime.states.simulate``, the generic path (the run engine's loop). Per case: steps = 0
 (the fixed cost per call) and the T = 10 run of 130 steps (every = steps, as the
 work-precision timing), from xi0 and from mu0; "same" repeats one start (a repeated call),
 "new" takes a different start at every call (a sweep of initial conditions near the scene's:
@@ -24,6 +23,9 @@ import time
 from pathlib import Path
 
 import numpy as np
+
+from hpgen.runtime.engine import RunArgs
+from hpgen.runtime.states import simulate as generic_simulate
 
 ROOT = Path(__file__).resolve().parents[1]
 MODEL = ROOT / "examples" / "heavy_top.yaml"
@@ -50,14 +52,14 @@ def interleaved(fns, calls, repeats):
 
 def c_steps(integ, g0, xi0, h, steps):
     """f(k): hpgen_advance of ``steps`` steps on a run started once (the peer)."""
-    b = integ._b
+    b = integ.engine.backend
     tr = integ.simulate(g0, h, 0, xi0=xi0)
     z0 = b.call("guess", np.asarray(xi0, dtype=float), tr.g[0].ravel(order="F"), tr.mu[0],
                 np.array([h]))[0]
     gf, mu0 = tr.g[0].ravel(order="F"), tr.mu[0]
     run = b.start(gf, mu0, z0)
     from hpgen.runtime.cstructs import _Options, _Status
-    opts = _Options.of(integ._options(None))
+    opts = _Options.of(integ.engine.options(None))
     g_rec, p_rec, st = np.zeros((1, 9)), np.zeros((1, 3)), _Status()
 
     def f(k):
@@ -108,8 +110,8 @@ def main():
 
                     def old(k, kw=kw, n=n, steps=steps, every=every):
                         a = kw[k % n]
-                        integ._simulate(a["g0"], h, steps, a.get("xi0"), a.get("mu0"), every,
-                                        None, None, None, 0.0)
+                        generic_simulate(integ.engine, RunArgs(a["g0"], h, steps, a.get("xi0"),
+                                                               a.get("mu0"), every))
                     r = interleaved({"c": c_run, "old": old, "new": new}, calls, repeats)
                     peer = r["c"]
                     per_step = peer / STEPS
@@ -126,8 +128,8 @@ def main():
     g0, xi0 = np.eye(3), [0.1, -0.2, 0.3]
     for params in (None, {"kp": 2.0}):
         r = interleaved({
-            "old": lambda k, p=params: integ._simulate(g0, 0.05, 0, xi0, None, 1, None, None,
-                                                       p, 0.0),
+            "old": lambda k, p=params: generic_simulate(
+                integ.engine, RunArgs(g0, 0.05, 0, xi0, None, 1, None, None, p, 0.0)),
             "new": lambda k, p=params: integ.simulate(g0, 0.05, 0, xi0=xi0, params=p)},
             calls, repeats)
         print(f"spacecraft_slew (open), steps = 0, params={params}: old {r['old'] * 1e6:.1f} "

@@ -54,7 +54,7 @@ def _case(label, integ, sc, steps, repeats, observe):
     kept_rec = rec.t.nbytes + sum(a.nbytes for a in rec.arrays.values())
     kept_full = tr.t.nbytes + tr.g.nbytes + tr.mu.nbytes + sum(a.nbytes for a in obs.values())
     print(f"{label}, {steps} steps, every step recorded "
-          f"(skip g: {integ._b.skip_g}; row {rec.names}):")
+          f"(skip g: {integ.engine.backend.skip_g}; row {rec.names}):")
     other = f"simulate + {'/'.join(observe)}:"
     print(f"  {'record in the C loop:':30s} {t_rec / steps * 1e9:7.1f} ns/step, "
           f"{kept_rec / 1e6:7.1f} MB kept")

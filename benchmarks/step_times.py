@@ -82,7 +82,7 @@ def free_body(cache, quick):
     path.write_text("\n".join("  record: [mu]" if ln.strip().startswith("record:") else ln
                               for ln in text.splitlines()) + "\n")
     reduced = hpgen.compile(path, cache_dir=cache)
-    assert reduced._b.skip_g
+    assert reduced.engine.backend.skip_g
 
     # one body, interleaved, min of repeats: simulate (forms g_k) against record [mu]
     best = {"simulate": np.inf, "record": np.inf}

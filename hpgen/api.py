@@ -358,15 +358,9 @@ def emit_files(d: Derivation, text: str, opts: CompileOptions, key: str) -> dict
 
 def casadi_step(integ):
     """The step of a loaded Integrator as a casadi.Function (g, p, h, z) -> (F, g1, p1), an
-    open module's (g, p, u, params, h, z, t) -> (F, g1, p1) (hpgen.derive.export): its module's model.yaml and options derived again
-    (``derive_module``), checked against its residual kernel. Imports casadi: never called
-    on the runtime path."""
-    if getattr(integ, "module_dir", None) is None:
-        raise ModelError("this Integrator was made without its module directory; load it "
-                         "with hpgen.runtime.load", field="casadi_step")
-    path = Path(integ.module_dir) / "model.yaml"
-    o = integ.meta["options"]
-    d = derive_module(str(path), read_model_text(path),
-                      CompileOptions(tableau=o["tableau"], tau=o["tau"], rkmk=o["rkmk"]))
-    from .derive.export import casadi_step as export
-    return export(d.step, lambda *a: integ.kernel("residual", *a), where=str(path))
+    open module's (g, p, u, params, h, z, t) -> (F, g1, p1): Integrator.casadi_step
+    (hpgen.derive.export.module_casadi_step). Imports casadi: never called on the runtime
+    path."""
+    from .derive.export import module_casadi_step
+    return module_casadi_step(getattr(integ, "module_dir", None), integ.meta,
+                              lambda *a: integ.kernel("residual", *a))

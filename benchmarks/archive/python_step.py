@@ -48,7 +48,7 @@ def main():
         opts = dict(tableau=tab, tau=tau, rkmk=rk, cache_dir=cache)
         fused = hpgen.compile(MODEL, backend="python", **opts)
         unfused = hpgen.compile(MODEL, backend="python", **opts)
-        unfused._b._newton.iterate = unfused._b._newton.iterate_full = None
+        unfused.engine.backend._newton.iterate = unfused.engine.backend._newton.iterate_full = None
         c = hpgen.compile(MODEL, backend="c", **opts)
         best = {"fused": float("inf"), "unfused": float("inf"), "c": float("inf")}
         runs = [("fused", fused, steps), ("unfused", unfused, steps), ("c", c, 100 * steps)]

@@ -113,7 +113,7 @@ def converged_step(integ, g, p, h, z=None, newton=None, hv=None):
         vel = (integ.velocity(g, p) if integ.open is None else
                integ.velocity(g, p, t=hv[1], params=list(hv[2 + len(integ.open["inputs"]):])))
         z = integ.kernel("guess", vel, gf, p, hv)[0]
-    opts = integ._options(newton, full=True)    # full Newton unless newton.simplified
+    opts = integ.engine.options(newton, full=True)    # full Newton unless newton.simplified
     code, g1, p1, z, it, r, _ = _newton.step_core(integ.kernel, integ.nz, gf, p, hv, z, opts,
                                                   _newton.NewtonMemory())
     if code != _newton.OK:

@@ -16,12 +16,14 @@ H = [h, t_k, u, params]) gives
 u the inputs held over the step, params the runtime parameters (flat, the model's order),
 t the step's start time t_k (last: unused unless the model depends on t).
 
-Compile-time stack (casadi): reached only through Integrator.casadi_step -> hpgen.api, never
-on the runtime path. The DiscreteStep is hpgen.api.derive_module's, from the module's
-model.yaml and meta.json options (derive is deterministic); it is checked against the
-module's own residual kernel at a sample point.
+Compile-time stack (casadi): reached only through Integrator.casadi_step (which imports
+``module_casadi_step`` lazily), never on the runtime path. The DiscreteStep is derived again
+from the module's model.yaml and meta.json options (derive is deterministic); it is checked
+against the module's own residual kernel at a sample point.
 """
 from __future__ import annotations
+
+from pathlib import Path
 
 import numpy as np
 
@@ -66,3 +68,31 @@ def casadi_step(step, residual_kernel=None, where="the module"):
             raise ModelError("the re-derived residual differs from the module's kernel; "
                              "regenerate the module with this hpgen", file=where)
     return f
+
+
+def module_casadi_step(module_dir, meta, residual_kernel=None):
+    """The step of a generated module as casadi.Function (see the module docstring): its
+    ``model.yaml`` derived again with meta.json's options (tableau, tau, rkmk) and checked
+    against ``residual_kernel`` (the module's compiled residual). ModelError naming the file
+    for a bad model file, field casadi_step when module_dir is None."""
+    if module_dir is None:
+        raise ModelError("this Integrator was made without its module directory; load it "
+                         "with hpgen.runtime.load", field="casadi_step")
+    from ..model import load_model_text
+    from ..model.loader import read_model_bytes
+    from ..tableaus import resolve_tableau
+    from . import derive
+    from .checks import check_legendre
+    path = str(Path(module_dir) / "model.yaml")
+    try:
+        text = read_model_bytes(path).decode("utf-8")
+    except UnicodeDecodeError:
+        raise ModelError("expected a UTF-8 text file", file=path) from None
+    model = load_model_text(text, filename=path)
+    o = meta["options"]
+    try:
+        step = derive(model, resolve_tableau(o["tableau"]), o["tau"], o["rkmk"])
+        check_legendre(step, model)
+    except ModelError as e:
+        raise e.located(file=path) from None
+    return casadi_step(step, residual_kernel, where=path)

@@ -10,6 +10,7 @@ import numpy as np
 
 from .. import abi
 from ..errors import ArgumentError, ConvergenceError, DomainError
+from .newton import NewtonOptions
 
 #: the largest steps / every the C loops take (long long)
 STEPS_MAX = 2**63 - 1
@@ -20,7 +21,7 @@ _START = "the Newton start lies outside the chart map tau's domain (margin(z, h)
 def _error(code, step, time, residual, iterations, hint=""):
     """The exception of a failed step's status code (abi.STATUS): DomainError for DOMAIN,
     else ConvergenceError, with the code's message; DOMAIN after 0 iterations is the first
-    step's start (``hint``: what the chart needs, Integrator._domain_hint)."""
+    step's start (``hint``: what the chart needs, FirstStep.domain_hint)."""
     cls = DomainError if code == abi.DOMAIN else ConvergenceError
     msg = abi.MESSAGES.get(code, f"step failed with status {code}")
     if code == abi.DOMAIN and int(iterations) == 0:
@@ -79,6 +80,23 @@ def _step_size(x, field="h"):
         raise ArgumentError(f"expected a finite non-zero number (h < 0 runs backwards in "
                             f"time), got {x!r}", field=field)
     return float(x)
+
+
+def newton_options(newton, simplified_default: bool, full: bool = False) -> NewtonOptions:
+    """The checked Newton settings of a call, simplified resolved to a bool (None: full
+    Newton when ``full``, else ``simplified_default``). ArgumentError naming the field."""
+    if newton is None:
+        newton = NewtonOptions()
+    elif not isinstance(newton, NewtonOptions):
+        raise ArgumentError("expected hpgen.runtime.NewtonOptions(tol=, maxit=, "
+                            f"simplified=, predictor=) or None, got "
+                            f"{type(newton).__name__}", field="newton")
+    simplified = newton.simplified
+    if simplified is None:
+        simplified = False if full else simplified_default
+    return NewtonOptions(_positive(newton.tol, "newton.tol"),
+                         _int(newton.maxit, "newton.maxit", 1), bool(simplified),
+                         bool(newton.predictor))
 
 
 def _memory_bytes():

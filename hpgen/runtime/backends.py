@@ -9,7 +9,7 @@ interface:
   observe(g_rec, p_rec); advance_sections(run, h, steps, cap, opts)
   record(g, p) -> (code, row);  advance_record(run, h, steps, every, opts) -> (done, rows, status)
 
-opts is a newton.NewtonOptions as Integrator._options resolves it (simplified a bool); g_rec
+opts is a newton.NewtonOptions as Engine.options resolves it (simplified a bool); g_rec
 (K, n*n) column-major rows and p_rec (K, d) hold the records of the global steps
 k % every == 0 reached (simulate prepends step 0), status a dict with the fields of the C
 hpgen_status (hpgen.abi.STATUS_FIELDS: code, step, iterations, total_iterations, residual,

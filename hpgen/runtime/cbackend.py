@@ -1,7 +1,7 @@
 """The C backend: kernels, Newton, step and the run loops of the compiled kernels.c through
 ctypes (interface: hpgen.runtime.backends). Kernel calls go through per-thread staging
 buffers of fixed address (hpgen.runtime.cstructs); ensembles (simulate_batch, record_batch)
-are the mixin hpgen.runtime.cbatch. Imports only the standard library and numpy.
+run in hpgen.runtime.cbatch. Imports only the standard library and numpy.
 """
 from __future__ import annotations
 
@@ -15,14 +15,14 @@ from ..errors import BuildError
 from . import newton
 from .backends import _Backend, _flat
 from .build import build_library
-from .cbatch import CBatchMixin
+from . import cbatch
 from .cstructs import _Options, _Staging, _Status, _addr
 
 _F64 = np.dtype(np.float64)
 _RUN = ("run",)      # CBackend._staging key of the run state buffers (not a kernel name)
 
 
-class CBackend(CBatchMixin, _Backend):
+class CBackend(_Backend):
     """Kernels, Newton, step and simulate from the compiled kernels.c (built on first use)."""
     name = "c"
 
@@ -85,6 +85,15 @@ class CBackend(CBatchMixin, _Backend):
         self._lib = lib
         self._tls = threading.local()    # per thread: {key: _Staging} (see _staging)
 
+    @property
+    def lib(self) -> ctypes.CDLL:
+        """The loaded library (its C functions' argument types set)."""
+        return self._lib
+
+    def kernel_function(self, name):
+        """The ctypes function of kernel ``name`` (hpgen_kernel_<name>)."""
+        return self._fns[name]
+
     def _staging(self, key) -> _Staging:
         """This thread's staging buffers for kernel ``key``, or for _RUN (g, p, z in and
         out: hpgen_run_init / hpgen_run_get); per thread, so that concurrent calls (threads;
@@ -123,7 +132,7 @@ class CBackend(CBatchMixin, _Backend):
         run = ctypes.create_string_buffer(self.run_size)
         ctypes.memmove(run, raw.tobytes(), self.run_size)
         if self.open:
-            run.keep = self._set_inputs(run, inputs)
+            run.keep = self.set_inputs(run, inputs)  # type: ignore[attr-defined]
         return run
 
     def call(self, name, *args):
@@ -172,12 +181,14 @@ class CBackend(CBatchMixin, _Backend):
         g0, p0 = _flat(g0, nn, "g0"), _flat(p0, d, "p0")
         z0 = _flat(z0, self.nz, "z0")
         run = ctypes.create_string_buffer(self.run_size)
-        self._init_run(run, g0, p0, z0)
+        self.init_run(run, g0, p0, z0)
         if self.open:
-            run.keep = self._set_inputs(run, inputs)
+            run.keep = self.set_inputs(run, inputs)  # type: ignore[attr-defined]
         return run
 
-    def _set_inputs(self, run, inputs):
+    def set_inputs(self, run, inputs):
+        """Point the C run ``run`` (a buffer or its address) at an open module's StepInputs;
+        returns the arrays it points into (keep them alive while the run is used)."""
         if inputs is None:
             raise ValueError("an open module's run needs its inputs (t0, u, params)")
         U = np.ascontiguousarray(inputs.rows, dtype=np.float64)
@@ -186,7 +197,7 @@ class CBackend(CBatchMixin, _Backend):
                                        params.ctypes.data)
         return U, params
 
-    def _init_run(self, run, g0, p0, z0):
+    def init_run(self, run, g0, p0, z0):
         """hpgen_run_init from flat arrays of the right sizes (copied in: this thread's
         staging buffers)."""
         st = self._staging(_RUN)
@@ -209,6 +220,18 @@ class CBackend(CBatchMixin, _Backend):
             raise ValueError("hpgen_advance rejected its arguments")
         K = self.records_in(0, done, every) + 1
         return int(done), g_all[:K], p_all[:K], st.as_dict()
+
+    def simulate_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads, inputs=None,
+                       bar=None, lanes=True):
+        """B independent runs keeping their states (hpgen.runtime.cbatch.simulate_batch)."""
+        return cbatch.simulate_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads,
+                                     inputs, bar, lanes)
+
+    def record_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads, bar=None,
+                     inputs=None):
+        """B independent runs keeping record rows (hpgen.runtime.cbatch.record_batch)."""
+        return cbatch.record_batch(self, g0s, p0s, h, z0s, steps, every, opts, threads, bar,
+                                   inputs)
 
     def state(self, run):
         """(g flat, p, z, k) of a run."""

@@ -41,6 +41,7 @@ import numpy as np
 
 from ..errors import ConvergenceError, ModelError
 from .args import _int
+from .engine import RunArgs
 from .progress import bar as progress_bar
 from .partial_run import STATE, PartialFolder
 from .records import stream_records
@@ -57,7 +58,9 @@ def partial_dir(out) -> Path:
 def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
                   chunk=1_000_000, resume=False, resume_hint="", directions=None, *,
                   newton=None, progress=False):
-    """Run and save the module's record row (``integ.record_names``, one array each, and t);
+    """Run and save the module's record row (``integ.record_names``, one array each, and t)
+    of the Integrator ``integ`` (its run engine, hpgen.runtime.engine: the run's start, the
+    records output's chunks, the run's snapshot after each and its restore on resume);
     returns (path, summary): samples written, steps (done), resumed_at (steps the run
     started from: 0, or the resumed run's steps done), energy_max_change (max |E - E0|, if
     energy is recorded), momentum_max_change (per component, if momentum is recorded),
@@ -80,30 +83,30 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     path = npz_path(out)
     parts = partial_dir(path)
     chunk = _int(chunk, "chunk", 1)
-    h, steps, every, opts, gf, mu0, z0, inputs = integ._prepare(g0, h, steps, xi0, mu0, every,
-                                                                newton)
-    ident = _identity(integ, h, steps, every, opts, gf, mu0, z0)
+    engine = integ.engine
+    s = engine.prepare(RunArgs(g0, h, steps, xi0, mu0, every, newton))
+    h, steps, every = s.h, s.steps, s.every
+    ident = _identity(engine, s)
     removed = _remove_old_leftovers(path)
     with PartialFolder(parts, path) as folder:
         prog = (folder.resume if resume else folder.fresh)(ident, resume_hint)
         prog.directions = None if directions is None else np.asarray(directions, np.float64)
-        if prog.state is not None and work_offset(integ.meta) is not None:
+        if prog.state is not None and work_offset(engine.meta) is not None:
             raise ModelError(f"cannot resume {parts}: a run that records work cannot be "
                              "resumed (the work is accumulated from its start); delete the "
                              "folder and run it again", file=str(parts))
-        run = None if prog.state is None else integ._b.restore(prog.state, inputs)
-        if run is not None and integ._b.steps_done(run) != prog.k:
+        run = None if prog.state is None else engine.restore(prog.state, s.inputs)
+        if run is not None and run.steps_done() != prog.k:
             raise ModelError(f"cannot resume {parts}: its state is not at step {prog.k}; "
                              "delete the folder to start over", file=str(parts))
         resumed_at, error = prog.k, None
         try:
-            run = integ._b.start(gf, mu0, z0, inputs) if run is None else run
+            run = engine.new_run(s) if run is None else run
             with progress_bar(steps, "run", "step", progress) as bar:
                 bar.update(prog.k)
-                for rec in stream_records(integ, integ._b, gf, mu0, z0, h, steps, every, chunk,
-                                          opts, run=run, inputs=inputs):
-                    new = prog.added(rec, integ._b.steps_done(run))
-                    folder.commit(new, rec, integ._b.snapshot(run))
+                for rec in stream_records(engine, s, chunk, run):
+                    new = prog.added(rec, run.steps_done())
+                    folder.commit(new, rec, run.snapshot())
                     bar.update(new.k - prog.k)
                     prog = new       # only once the chunk is committed (an interrupt may come)
         except ConvergenceError as exc:
@@ -150,15 +153,15 @@ def load_partial(out) -> dict:
     return out
 
 
-def _identity(integ, h, steps, every, opts, gf, mu0, z0) -> dict:
+def _identity(engine, s) -> dict:
     """What a resumed run must share with the interrupted one (JSON-comparable)."""
     start = hashlib.sha256()
-    for a in (gf, mu0, z0):
+    for a in (s.g0, s.mu0, s.z0):
         start.update(np.ascontiguousarray(a, dtype=np.float64).tobytes())
-    meta = integ.meta
-    return {"module": meta["module"], "hash": meta["hash"], "backend": integ._b.name,
-            "h": float(h).hex(), "steps": int(steps), "every": int(every),
-            "start_sha256": start.hexdigest(), "newton": repr(opts)}
+    meta = engine.meta
+    return {"module": meta["module"], "hash": meta["hash"], "backend": engine.backend.name,
+            "h": float(s.h).hex(), "steps": int(s.steps), "every": int(s.every),
+            "start_sha256": start.hexdigest(), "newton": repr(s.opts)}
 
 
 def _remove_old_leftovers(path: Path) -> list:

@@ -1,4 +1,5 @@
-"""Integrator: the public API of a loaded module, the same for the C and Python backends.
+"""Integrator: the public API of a loaded module, the same for the C and Python backends; a
+thin front whose methods call the run engine (hpgen.runtime.engine) and its outputs.
 
 Conventions: g is an (n, n) group element (array-like), momenta p/mu and velocities xi are
 length-d vectors (body frame; a scalar for d = 1), h != 0 is the step in the model's time unit
@@ -6,47 +7,39 @@ length-d vectors (body frame; a scalar for d = 1), h != 0 is the step in the mod
 exact RKMK steps back exactly, step(g1, p1, -h) = (g, p) to round-off). Internally and
 across the C boundary matrices are flat column-major (``g.ravel(order="F")``).
 Newton settings: every stepping method takes ``newton=NewtonOptions(...)`` (None: the
-defaults, tol = 1e-14, maxit = 50 (hpgen.abi), a predictor extrapolating the last solutions,
-quadratic once three exist; see hpgen.runtime.newton). ``simplified`` (reuse the Jacobian's
-inverse across iterations and steps) left None means: for runs, True when the Jacobian kernel
-costs more than SIMPLIFIED_RATIO times the residual kernel (CasADi instruction counts in
-meta.json), where it is the faster choice (Gauss 2 exact: 7.5 residual evaluations and 0.14
-Jacobians per step instead of 2.8 of each); for ``step`` (a cold start), full Newton.
+defaults, tol = 1e-14, maxit = 50 (hpgen.abi), the predictor extrapolating the last
+solutions; see hpgen.runtime.newton). ``simplified`` (reuse the Jacobian's inverse across
+iterations and steps) left None means: for runs, True when the Jacobian kernel costs more
+than SIMPLIFIED_RATIO (hpgen.runtime.engine) times the residual kernel (CasADi instruction
+counts in meta.json); for ``step`` (a cold start), full Newton.
 """
 from __future__ import annotations
 
 import numpy as np
 
-from .. import abi
-from ..errors import ArgumentError
-from .args import _array, _error, _fits, _int, _positive, _step_size
+from . import linearize as _linearize, records, sections, states
+from .engine import Engine, RunArgs
 from .initial import GroupElements
-from .inputs import check_t0, step_inputs
 from .newton import NewtonOptions
 from .prologue import Prologue
-from .batch import BatchMixin
-from .first_step import FirstStepMixin
-from .records import RecordsMixin
-from .sections import SectionsMixin
-from .state_maps import StateMapsMixin
-from .trajectory import Trajectory
+from .trajectory import SectionCrossings, Trajectory
 
-DEFECT_MAX = 1e-10
-SIMPLIFIED_RATIO = 4.0
 
-class Integrator(StateMapsMixin, BatchMixin, FirstStepMixin, SectionsMixin, RecordsMixin):
+class Integrator:
     """A loaded generated module. Attributes: meta (dict from meta.json), backend ("c" or
-    "python"), n, d, nz, module_dir (the directory it was loaded from, or None)."""
+    "python"), n, d, nz, module_dir (the directory it was loaded from, or None), engine (the
+    run engine behind every run method, hpgen.runtime.engine: the declared interface of the
+    modules built on it), fast_path (simulate's fast path on the C backend, else None)."""
 
     def __init__(self, meta: dict, backend, module_dir=None):
-        self.meta, self._b, self.module_dir = meta, backend, module_dir
+        self.meta, self.module_dir = meta, module_dir
         self.backend = backend.name
         self.n, self.d, self.nz = meta["n"], meta["d"], meta["nz"]
-        self._cond_last = None     # (bytes of the last Hessian checked, its cond) (_cond)
-        #: an open module's step vector (meta.json "open", hpgen.abi), None when closed
+        #: an open module's step vector (meta.json "open"), None when closed
         self.open = meta.get("open")
+        self.engine = Engine(backend, meta, owner=self)
         #: simulate's fast path (the C backend; hpgen.runtime.prologue)
-        self._prologue = Prologue(self, DEFECT_MAX) if self.backend == "c" else None
+        self.fast_path = Prologue(self.engine) if self.backend == "c" else None
 
     def __repr__(self):
         return f"<hpgen Integrator {self.meta['module']} backend={self.backend}>"
@@ -60,41 +53,55 @@ class Integrator(StateMapsMixin, BatchMixin, FirstStepMixin, SectionsMixin, Reco
         ``group.product(*factor_elements)``; see hpgen.runtime.initial."""
         return GroupElements(self.meta["group"])
 
-    # ---- argument helpers -----------------------------------------------------------
-    def _g(self, g, field="g"):
-        return _array(g, (self.n, self.n), field, "an n x n matrix").ravel(order="F")
-
-    def _v(self, v, field):
-        return _array(v, (self.d,), field, "a vector of length d")
-
     def kernel(self, name, *args):
         """Evaluate one kernel on flat column-major arrays; returns its outputs (a list)."""
-        return self._b.call(name, *args)
+        return self.engine.backend.call(name, *args)
 
-    # ---- stepping -----------------------------------------------------------------------
     @property
     def simplified_default(self) -> bool:
         """True when simplified Newton pays: J costs > SIMPLIFIED_RATIO residuals."""
-        k = self.meta["kernels"]
-        cost = [k[n].get("instructions", 0) for n in ("jacobian", "residual")]
-        return cost[0] > SIMPLIFIED_RATIO * cost[1]
+        return self.engine.simplified_default
 
-    def _options(self, newton: NewtonOptions | None, full: bool = False) -> NewtonOptions:
-        """The checked Newton settings of a call, simplified resolved to a bool (None: full
-        Newton when ``full``, else simplified_default). ArgumentError naming the field."""
-        if newton is None:
-            newton = NewtonOptions()
-        elif not isinstance(newton, NewtonOptions):
-            raise ArgumentError("expected hpgen.runtime.NewtonOptions(tol=, maxit=, "
-                                f"simplified=, predictor=) or None, got "
-                                f"{type(newton).__name__}", field="newton")
-        simplified = newton.simplified
-        if simplified is None:
-            simplified = False if full else self.simplified_default
-        return NewtonOptions(_positive(newton.tol, "newton.tol"),
-                             _int(newton.maxit, "newton.maxit", 1), bool(simplified),
-                             bool(newton.predictor))
+    # ---- state maps (hpgen.runtime.state_maps) ------------------------------------------
+    def legendre(self, g, xi, *, t=0.0, params=None) -> np.ndarray:
+        """mu = dl/dxi (g, xi) (at time t, with the runtime parameters ``params``, for an
+        open module)."""
+        return self.engine.maps.legendre(g, xi, t=t, params=params)
 
+    def velocity(self, g, mu, *, newton: NewtonOptions | None = None, t=0.0, params=None):
+        """xi with legendre(g, xi) = mu: full Newton from xi = 0 with the hessian kernel
+        (newton: its tol and maxit)."""
+        return self.engine.maps.velocity(g, mu, newton=newton, t=t, params=params)
+
+    def observe(self, g, mu, *, t=None, inputs=None) -> dict:
+        """Observables of K records, g (K, n, n), mu (K, d) node momenta: arrays xi (K, d)
+        (Legendre inverse), energy (K,), momentum (K, d) (spatial), defect (K,). One C call
+        (kernel observe) when l is quadratic in xi (meta legendre_quadratic: its one Newton
+        step from xi = 0 is exact); otherwise xi and energy are refined record by record with
+        ``velocity`` (Newton, the singular-Legendre check included). An open module
+        evaluates l at the records' times ``t`` (K,) with the run's ``inputs`` (StepInputs:
+        its runtime parameters), record by record."""
+        return self.engine.maps.observe(g, mu, t=t, inputs=inputs)
+
+    def energy(self, g, mu, *, t=0.0, params=None) -> float:
+        """Energy <dl/dxi, xi> - l at (g, xi = velocity(g, mu)) (at time t, with ``params``,
+        for an open module)."""
+        return self.engine.maps.energy(g, mu, t=t, params=params)
+
+    def momentum(self, g, mu) -> np.ndarray:
+        """Spatial momentum Ad*_{g^{-1}} mu."""
+        return self.engine.maps.momentum(g, mu)
+
+    def defect(self, g) -> float:
+        """Distance of g from the group (0 on the group)."""
+        return self.engine.maps.defect(g)
+
+    @property
+    def record_names(self) -> tuple:
+        """What this module's record row holds (the scene's ``record:`` list, in order)."""
+        return records.record_names(self.meta)
+
+    # ---- stepping and runs (hpgen.runtime.engine) -----------------------------------------
     def step(self, g, p, h, z=None, *, newton: NewtonOptions | None = None, u=None,
              params=None, t=0.0):
         """One step (g_k, p_k) -> (g_(k+1), p_(k+1)).
@@ -131,31 +138,7 @@ class Integrator(StateMapsMixin, BatchMixin, FirstStepMixin, SectionsMixin, Reco
         ConvergenceError, DomainError
             Newton failed, or the solution left the chart's domain (step 0, t = 0).
         """
-        gf, p = self._g(g), self._v(p, "p")
-        h = _step_size(h)
-        inputs = step_inputs(self.open, 1, u, params, t)
-        hv = np.array([h] if inputs is None else inputs.hv(h, 0))
-        xi = None
-        opts = self._options(newton, full=True)
-        xi = None
-        if z is None:
-            if inputs is None:
-                xi = self._velocity(gf, p)
-                z = self._start(gf, p, xi, h, opts)
-            else:
-                lv = () if inputs is None else self._lv(inputs.t0, inputs.params)
-                z = self._b.call("guess", self._velocity(gf, p, lv=lv), gf, p, hv)[0]
-        else:
-            z = _array(z, (self.nz,), "z", "a vector of length nz")
-        code, g1, p1, _, it, r = self._b.step(gf, p, hv, z, opts)
-        z1 = None if xi is None else self._restart({"code": code, "step": 0}, gf, p, h, z,
-                                                  opts)
-        if z1 is not None:
-            code, g1, p1, _, it, r = self._b.step(gf, p, hv, z1, opts)
-        if code != abi.OK:
-            hint = self._domain_hint(gf, p, xi, h) if xi is not None else ""
-            raise _error(code, 0, 0.0, r, it, hint)
-        return g1.reshape(self.n, self.n, order="F"), p1
+        return self.engine.step(g, p, h, z, newton, u, params, t)
 
     def linearize(self, traj, *, u=None, params=None, t0=None, wrt=None,
                   newton: NewtonOptions | None = None):
@@ -168,86 +151,16 @@ class Integrator(StateMapsMixin, BatchMixin, FirstStepMixin, SectionsMixin, Reco
         and t0 (default: the trajectory's first time) and returns (A, B), B (K, 2d, m) =
         d(eta_{k+1}, dp_{k+1}) / d u_k, or with wrt="params" P (K, 2d, n_runtime_params).
         A closed module takes none of u, params, t0, wrt."""
-        from .linearize import linearize, linearize_open
-        if self.open is None:
-            for name, v in (("u", u), ("params", params), ("t0", t0), ("wrt", wrt)):
-                if v is not None:
-                    raise ArgumentError("this model has no forces, inputs, runtime "
-                                        f"parameters or t: linearize takes no {name}",
-                                        field=name)
-            return linearize(self, traj, self._options(newton))
-        return linearize_open(self, traj, self._options(newton), u, params, t0, wrt)
+        return _linearize.along(self.engine, traj, newton, u, params, t0, wrt)
 
     def casadi_step(self):
         """casadi.Function step(g, p, h, z) -> (F, g1, p1) (an open module's:
         step(g, p, u, params, h, z, t)): this module's residual and explicit update as CasADi
         expressions, for optimal control (compile-time stack: needs casadi;
-        hpgen.api.casadi_step, hpgen.derive.export)."""
-        from .. import api     # the compile side: it alone imports casadi (lazily)
-        return api.casadi_step(self)
-
-    def _initial(self, g0, xi0, mu0, lv=()):
-        """(g0 flat, mu0, xi0) from g0 and exactly one of xi0 / mu0, checked; lv: the
-        open module's extra argument of l at the start (_lv)."""
-        g0 = _array(g0, (self.n, self.n), "g0", "an n x n matrix")
-        if (xi0 is None) == (mu0 is None):
-            raise ArgumentError("give exactly one of xi0 (velocity) and mu0 (momentum)",
-                                field="xi0" if xi0 is not None else "mu0")
-        gf = g0.ravel(order="F")      # g0 checked: the kernels take it as it is
-        e = float(self._b.call("defect", gf)[0][0])
-        if not e <= DEFECT_MAX:
-            raise ArgumentError(f"g0 is not on the group (defect {e:.3g} > {DEFECT_MAX:g})",
-                                field="initial g")
-        if xi0 is not None:
-            xi0 = self._v(xi0, "xi0")
-            mu0 = self._b.call("legendre", gf, xi0, *lv)[0]
-        else:
-            mu0 = self._v(mu0, "mu0")
-            xi0 = self._velocity(gf, mu0, lv=lv)
-        return gf, mu0, xi0
-
-    def _trajectory(self, done, g_rec, p_rec, st, h, every, inputs=None, t0=0.0):
-        K = done // every + 1
-        return self._records(np.asarray(g_rec)[:K], np.asarray(p_rec)[:K], st, h, every, t0,
-                             inputs)
-
-    def _records(self, g_rec, p_rec, st, h, every, t0, inputs=None):
-        """Trajectory of flat column-major records starting at time t0; error set (and its
-        .partial) when the status is a failure."""
-        K, n = len(p_rec), self.n
-        g = np.ascontiguousarray(g_rec.reshape(K, n, n).transpose(0, 2, 1))
-        err = None
-        if st["code"] != abi.OK:
-            hint = ""
-            if st["code"] == abi.DOMAIN and st["iterations"] == 0 and t0 == 0.0:
-                hint = self._domain_hint(g_rec[0], p_rec[0], None, h)
-            err = _error(st["code"], st["step"], st["step"] * h, st["residual"],
-                         st["iterations"], hint)
-        # t0 + (k every) h; arange(0, K every, every) is arange(K) * every, and adding
-        # t0 = 0.0 to these non-negative numbers changes no bit
-        t = np.arange(0, K * every, every) * h
-        traj = Trajectory(t=t0 + t if t0 else t, g=g, mu=np.array(p_rec), h=h,
-                          every=every, partial=err is not None, error=err,
-                          newton_iterations=int(st["total_iterations"]),
-                          jacobians=int(st["jacobians"]), integrator=self, inputs=inputs)
-        if err is not None:
-            err.partial = traj
-        return traj
-
-    def _prepare(self, g0, h, steps, xi0, mu0, every, newton, u=None, params=None, t0=0.0):
-        """The checked arguments of a run and its start: (h, steps, every, options, g0 flat,
-        mu0, Newton start z0 (_start), StepInputs or None (closed))."""
-        h = _step_size(h)
-        steps, every = _int(steps, "steps", 0), _int(every, "every", 1)
-        opts = self._options(newton)
-        inputs = step_inputs(self.open, steps, u, params, t0)
-        if inputs is None:
-            gf, mu0, xi0 = self._initial(g0, xi0, mu0)
-            z0 = self._start(gf, mu0, xi0, h, opts)
-        else:
-            gf, mu0, xi0 = self._initial(g0, xi0, mu0, self._lv(inputs.t0, inputs.params))
-            z0 = self._b.call("guess", xi0, gf, mu0, np.array(inputs.hv(h, 0)))[0]
-        return h, steps, every, opts, gf, mu0, z0, inputs
+        hpgen.derive.export.module_casadi_step)."""
+        from ..derive.export import module_casadi_step    # the compile side (casadi)
+        return module_casadi_step(self.module_dir, self.meta,
+                                  lambda *a: self.kernel("residual", *a))
 
     def simulate(self, g0, h, steps, xi0=None, mu0=None, every=1, *,
                  newton: NewtonOptions | None = None, u=None, params=None,
@@ -298,30 +211,12 @@ class Integrator(StateMapsMixin, BatchMixin, FirstStepMixin, SectionsMixin, Reco
         ConvergenceError, DomainError
             A step failed; ``.partial`` is the Trajectory so far (partial=True).
         """
-        if self._prologue is not None:
-            traj = self._prologue.simulate(g0, h, steps, xi0, mu0, every, newton, t0, u,
-                                           params)
+        if self.fast_path is not None:
+            traj = self.fast_path.simulate(g0, h, steps, xi0, mu0, every, newton, t0, u, params)
             if traj is not None:
                 return traj
-        return self._simulate(g0, h, steps, xi0, mu0, every, newton, u, params, t0)
-
-    def _simulate(self, g0, h, steps, xi0, mu0, every, newton, u, params, t0):
-        """simulate's generic path (every module, backend and argument)."""
-        h, steps, every, opts, gf, mu0, z0, inputs = self._prepare(
-            g0, h, steps, xi0, mu0, every, newton, u, params, t0)
-        _fits(steps // every + 1, self.n * self.n + self.d, "simulate")
-        if inputs is None:
-            done, g_rec, p_rec, st = self._b.simulate(gf, mu0, h, z0, steps, every, opts)
-            z1 = self._restart(st, gf, mu0, h, z0, opts)
-            if z1 is not None:
-                done, g_rec, p_rec, st = self._b.simulate(gf, mu0, h, z1, steps, every, opts)
-        else:
-            done, g_rec, p_rec, st = self._b.simulate(gf, mu0, h, z0, steps, every, opts,
-                                                      inputs)
-        traj = self._trajectory(done, g_rec, p_rec, st, h, every, inputs, check_t0(t0))
-        if traj.error is not None:
-            raise traj.error
-        return traj
+        return states.simulate(self.engine, RunArgs(g0, h, steps, xi0, mu0, every, newton, u,
+                                                    params, t0))
 
     def stream(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000, *,
                newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
@@ -356,29 +251,171 @@ class Integrator(StateMapsMixin, BatchMixin, FirstStepMixin, SectionsMixin, Reco
         ConvergenceError, DomainError
             A step failed; ``.partial`` holds the records of the failing chunk.
         """
-        chunk = _int(chunk, "chunk", 1)
-        h, steps, every, opts, gf, mu0, z0, inputs = self._prepare(
-            g0, h, steps, xi0, mu0, every, newton, u, params, t0)
-        run = self._b.start(gf, mu0, z0) if inputs is None else \
-            self._b.start(gf, mu0, z0, inputs)
-        t_start = check_t0(t0)
-        k, first = 0, True
-        while first or k < steps:
-            todo = min(chunk, steps - k)
-            done, g_rec, p_rec, st = self._b.advance(run, h, todo, every, opts)
-            z1 = (self._restart(st, gf, mu0, h, z0, opts) if first and inputs is None
-                  else None)
-            if z1 is not None:
-                run = self._b.start(gf, mu0, z1)
-                done, g_rec, p_rec, st = self._b.advance(run, h, todo, every, opts)
-            if first:
-                g_rec = np.concatenate([gf.reshape(1, -1), g_rec])
-                p_rec = np.concatenate([mu0.reshape(1, -1), p_rec])
-            tc = (k // every + (0 if first else 1)) * every * h
-            traj = self._records(g_rec, p_rec, st, h, every, t_start + tc if t_start else tc,
-                                 inputs)
-            if traj.error is not None:
-                raise traj.error
-            yield traj
-            k += done
-            first = False
+        return states.stream(self.engine, RunArgs(g0, h, steps, xi0, mu0, every, newton, u,
+                                                  params, t0), chunk)
+
+    def simulate_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
+                       newton: NewtonOptions | None = None, u=None, params=None,
+                       t0=0.0, progress=None, lanes: bool = True) -> list:
+        """An ensemble of B runs, in C over ``threads`` threads (C backend only).
+
+        Each run's states are bitwise those of ``simulate`` on its own.
+
+        Parameters
+        ----------
+        g0 : array_like, shape (n, n) or (B, n, n)
+            Initial group element, shared or one per run.
+        h : float
+            Step size, != 0 (negative: backwards in time), in the model's time unit.
+        steps : int
+            Number of steps of every run, >= 0.
+        xi0, mu0 : array_like, shape (B, d), optional
+            Initial velocities or momenta, one row per run; exactly one of the two.
+        every : int, optional
+            Record interval in steps, >= 1 (default 1).
+        threads : int or None, optional
+            Worker threads, >= 1; None (default): the CPU count.
+        progress : bool or None, optional
+            A bar of the runs done on stderr; None (default): when stderr is a terminal.
+        lanes : bool, optional
+            True (default): step groups of L bodies together with the module's lane-wise
+            kernels when it has them (small closed steps, full Newton; hpgen.codegen.lanes),
+            the same states bit for bit; False: one body at a time (A/B measurement).
+        newton : NewtonOptions or None, optional
+            Newton settings, as for ``simulate``.
+        u, t0
+            As for ``simulate`` (shared by the runs).
+        params : dict, optional
+            As for ``simulate``; a value may carry a leading axis of length B: run b takes
+            entry b (a parameter sweep, no recompilation).
+
+        Returns
+        -------
+        list of Trajectory
+            B trajectories; a failed run's is partial with ``.error`` set (nothing is
+            raised for a failed run).
+
+        Raises
+        ------
+        ModelError
+            A bad argument, or the Python backend.
+        """
+        return states.simulate_batch(self.engine, RunArgs(g0, h, steps, xi0, mu0, every,
+                                                          newton, u, params, t0),
+                                     threads, progress, lanes)
+
+    def record(self, g0, h, steps, xi0=None, mu0=None, every=1, *,
+               newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
+        """Run ``steps`` steps keeping only the scene's record row every ``every`` steps.
+
+        The row (``record_names``: the scene's g, mu, xi, energy, momentum, defect and
+        expressions) is evaluated inside the C loop; when neither the step nor the row use
+        g, g is not reconstructed. The states are bitwise those of ``simulate``.
+
+        Parameters
+        ----------
+        g0, h, steps, xi0, mu0
+            As for ``simulate``: g0 (n, n) on the group, h != 0 in the model's time unit,
+            steps >= 0, exactly one of xi0 / mu0 (d,).
+        every : int, optional
+            Record interval in steps, >= 1 (default 1); record 0 is the initial state.
+        newton : NewtonOptions or None, optional
+            Newton settings, as for ``simulate``.
+        u, params, t0
+            As for ``simulate`` (an open module's inputs, runtime parameters, start time).
+
+        Returns
+        -------
+        Records
+            ``t`` (K,) and one array per record name, K = steps // every + 1: g (K, n, n);
+            mu, xi, momentum (K, d); energy, defect, expressions (K,). ``rec["energy"]``,
+            ``rec.save(path)``.
+
+        Raises
+        ------
+        ModelError
+            A bad argument.
+        ConvergenceError, DomainError, RecordError
+            A step failed, or a recorded value is not finite (``RecordError`` names the
+            entries); ``.partial`` holds the records up to the failure.
+        """
+        return records.record(self.engine, RunArgs(g0, h, steps, xi0, mu0, every, newton, u,
+                                                   params, t0))
+
+    def stream_record(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000, *,
+                      newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
+        """Like ``record`` in chunks of at most ``chunk`` steps (bounded memory): yields one
+        Records per chunk (the first starts with record 0; ``t`` is global). A failure raises
+        ConvergenceError / DomainError / RecordError with ``.partial`` the failing chunk's
+        records. u, params, t0: as in ``simulate``."""
+        return records.stream_record(self.engine, RunArgs(g0, h, steps, xi0, mu0, every,
+                                                          newton, u, params, t0), chunk)
+
+    def record_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
+                     newton: NewtonOptions | None = None, u=None, params=None, t0=0.0,
+                     progress=None) -> list:
+        """``record`` for an ensemble (starts as in ``simulate_batch``), in C over ``threads``
+        threads (default: the CPU count); each run's rows are bitwise those of ``record`` on
+        its own. Returns B Records; a failed run's Records is partial with ``.error`` set
+        (nothing is raised). u, params, t0 and progress: as for ``simulate_batch`` (a params
+        value with a leading axis of length B is a sweep: run b takes entry b)."""
+        return records.record_batch(self.engine, RunArgs(g0, h, steps, xi0, mu0, every,
+                                                         newton, u, params, t0),
+                                    threads, progress)
+
+    def sections(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None, chunk=100_000,
+                 *, newton: NewtonOptions | None = None, u=None, params=None,
+                 t0=0.0, every_t=None) -> SectionCrossings:
+        """Run up to ``steps`` steps and keep only the upward crossings of ``scene.section``.
+
+        s(g, mu) = 0 is tested inside the step loop (docs/numerics.md sec. 12); the states are
+        bitwise those of ``simulate``. The module's model must have a ``section``, unless
+        ``every_t`` is given.
+
+        Parameters
+        ----------
+        g0, h, steps, xi0, mu0
+            As for ``simulate``: g0 (n, n) on the group, h != 0 in the model's time unit,
+            steps >= 0, exactly one of xi0 / mu0 (d,).
+        max_crossings : int or None, optional
+            Stop the run at the step of this crossing; None (default): run all steps.
+        newton : NewtonOptions or None, optional
+            Newton settings, as for ``simulate``.
+        chunk : int, optional
+            Steps per C call, >= 1 (default 100,000); bounds the memory of a run.
+        u, params, t0
+            As for ``simulate`` (an open module's inputs, runtime parameters, start time).
+        every_t : float or None, optional
+            A section in t (the scene's ``section: {every_t: T}``): the stroboscopic section
+            at t0 + j T, j = 0, 1, ..., T a whole number N of steps of h (within 1e-9
+            relative): the node states after every N steps, exactly (no interpolation);
+            ``step`` = j N. No compiled section is needed; max_crossings caps the samples.
+
+        Returns
+        -------
+        SectionCrossings
+            ``t`` (K,), ``g`` (K, n, n) on the step's chart curve, ``mu`` (K, d) interpolated
+            linearly, ``step`` (K,) the step of each crossing; ``steps`` run.
+
+        Raises
+        ------
+        ModelError
+            A bad argument, or a model without ``section``.
+        ConvergenceError, DomainError
+            A step failed; ``.partial`` holds the crossings found before it.
+        """
+        return sections.sections(self.engine, RunArgs(g0, h, steps, xi0, mu0, 1, newton, u,
+                                                      params, t0), max_crossings, chunk, every_t)
+
+    def sections_batch(self, g0, h, steps, xi0=None, mu0=None, max_crossings=None,
+                       threads=None, chunk=100_000, *,
+                       newton: NewtonOptions | None = None, u=None, params=None,
+                       t0=0.0) -> list:
+        """``sections`` for B initial states (g0 (n, n) shared or (B, n, n); xi0 or mu0
+        (B, d)), the runs spread over ``threads`` threads (default: the CPU count); each
+        result is bitwise that of ``sections`` on its own. A failed run's SectionCrossings
+        is partial with ``.error`` set (nothing is raised). u, params, t0: as for
+        ``simulate_batch`` (a params value with a leading axis of length B is a sweep)."""
+        return sections.sections_batch(self.engine, RunArgs(g0, h, steps, xi0, mu0, 1, newton,
+                                                            u, params, t0),
+                                       max_crossings, threads, chunk)

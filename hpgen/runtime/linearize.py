@@ -1,4 +1,4 @@
-"""Derivatives of the step along a trajectory (issue 12; math.md sec. 10).
+"""Derivatives of the step along a trajectory (math.md sec. 10).
 
     Integrator.linearize(traj) -> A (K, 2d, 2d),  A[k] = d(eta_{k+1}, dp_{k+1}) / d(eta_k, dp_k)
 
@@ -38,7 +38,9 @@ backend runs the loop in the open module's ``hpgen_linearize`` (the step vectors
 steps passed as rows), the Python backend here (step k by full Newton from step k-1's
 solution).
 
-Runtime path only: numpy and hpgen.runtime.
+The functions take the module's run engine (hpgen.runtime.engine.Engine: its kernels,
+backend, state maps and meta), as Integrator.linearize passes it. Runtime path only: numpy
+and hpgen.runtime.
 """
 from __future__ import annotations
 
@@ -56,6 +58,20 @@ from .args import _error
 RECORD_RTOL = 1e-9
 
 
+def along(engine, traj, newton=None, u=None, params=None, t0=None, wrt=None):
+    """Integrator.linearize: ``linearize`` for a closed module (which takes none of u,
+    params, t0, wrt: ArgumentError naming the one given), ``linearize_open`` for an open
+    one; newton: the Newton settings (Engine.options resolves them)."""
+    if engine.open is None:
+        for name, v in (("u", u), ("params", params), ("t0", t0), ("wrt", wrt)):
+            if v is not None:
+                raise ArgumentError("this model has no forces, inputs, runtime "
+                                    f"parameters or t: linearize takes no {name}",
+                                    field=name)
+        return linearize(engine, traj, engine.options(newton))
+    return linearize_open(engine, traj, engine.options(newton), u, params, t0, wrt)
+
+
 def implicit_derivative(J, Fs, Yz, Ys):
     """Ys - Yz J^{-1} Fs: d Y / d s of the output Y(z(s), s) where F(z(s), s) = 0 (the implicit
     function theorem). J (nz, nz), Fs (nz, m), Yz (r, nz), Ys (r, m). The one implementation
@@ -63,36 +79,37 @@ def implicit_derivative(J, Fs, Yz, Ys):
     return Ys - Yz @ np.linalg.solve(J, Fs)
 
 
-def partials_at(integ, z, gf, p, hv):
+def partials_at(engine, z, gf, p, hv):
     """(J (nz, nz), Fs (nz, 2d), Yz (2d, nz), Ys (2d, 2d)) from the module's generated
-    ``jacobian`` and ``step_partials`` kernels at z (flat column-major g, hv = [h])."""
-    nz, s = integ.nz, 2 * integ.d
-    J = integ.kernel("jacobian", z, gf, p, hv)[0]
-    Fs, Yz, Ys = integ.kernel("step_partials", z, gf, p, hv)[:3]   # open: (FH, YH) too
+    ``jacobian`` and ``step_partials`` kernels at z (flat column-major g, hv = [h]); engine:
+    the run engine or an Integrator (``kernel``, ``nz``, ``d``)."""
+    nz, s = engine.nz, 2 * engine.d
+    J = engine.kernel("jacobian", z, gf, p, hv)[0]
+    Fs, Yz, Ys = engine.kernel("step_partials", z, gf, p, hv)[:3]   # open: (FH, YH) too
     return (J.reshape(nz, nz, order="F"), Fs.reshape(nz, s, order="F"),
             Yz.reshape(s, nz, order="F"), Ys.reshape(s, s, order="F"))
 
 
-def open_partials_at(integ, z, gf, p, hv):
+def open_partials_at(engine, z, gf, p, hv):
     """(J, Fs, Yz, Ys, FH (nz, H), YH (2d, H)) of an open module at z (hv its step vector)."""
-    nz, s, H = integ.nz, 2 * integ.d, len(hv)
-    J = integ.kernel("jacobian", z, gf, p, hv)[0]
-    Fs, Yz, Ys, FH, YH = integ.kernel("step_partials", z, gf, p, hv)
+    nz, s, H = engine.nz, 2 * engine.d, len(hv)
+    J = engine.kernel("jacobian", z, gf, p, hv)[0]
+    Fs, Yz, Ys, FH, YH = engine.kernel("step_partials", z, gf, p, hv)
     return (J.reshape(nz, nz, order="F"), Fs.reshape(nz, s, order="F"),
             Yz.reshape(s, nz, order="F"), Ys.reshape(s, s, order="F"),
             FH.reshape(nz, H, order="F"), YH.reshape(s, H, order="F"))
 
 
-def _check_traj(integ, traj):
+def _check_traj(engine, traj):
     """(g records flat (K+1, n*n), p records (K+1, d), h) of ``traj``, checked."""
-    n, d = integ.n, integ.d
+    n, d = engine.n, engine.d
     if not all(hasattr(traj, a) for a in ("g", "mu", "h", "every")):
         raise ArgumentError(f"expected a Trajectory from simulate, got {type(traj).__name__}",
                          field="traj")
     other = getattr(traj, "integrator", None)
-    if other is not None and getattr(other, "meta", {}).get("hash") != integ.meta["hash"]:
+    if other is not None and getattr(other, "meta", {}).get("hash") != engine.meta["hash"]:
         raise ArgumentError(f"the trajectory comes from module {other.meta.get('module')!r}, "
-                         f"not {integ.meta['module']!r}", field="traj")
+                         f"not {engine.meta['module']!r}", field="traj")
     if traj.every != 1:
         raise ArgumentError(f"expected a trajectory recorded at every step (every=1), got "
                          f"every={traj.every}", field="traj")
@@ -106,41 +123,41 @@ def _check_traj(integ, traj):
     return gf, np.array(mu, order="C"), float(traj.h)
 
 
-def _python_loop(integ, gf, p, hv, z, opts):
+def _python_loop(engine, gf, p, hv, z, opts):
     """The Python backend's twin of hpgen_linearize: (A (K, 2d, 2d), dev (K,), code, k)."""
-    K, s = len(gf) - 1, 2 * integ.d
+    K, s = len(gf) - 1, 2 * engine.d
     A, dev = np.zeros((K, s, s)), np.zeros(K)
     for k in range(K):
-        code, g1, p1, z, it, r = integ._b.step(gf[k], p[k], hv, z, opts)
+        code, g1, p1, z, it, r = engine.backend.step(gf[k], p[k], hv, z, opts)
         if code != abi.OK:
             return A, dev, (code, it, r), k
         dev[k] = max(np.abs(g1 - gf[k + 1]).max(), np.abs(p1 - p[k + 1]).max())
-        A[k] = implicit_derivative(*partials_at(integ, z, gf[k], p[k], hv))
+        A[k] = implicit_derivative(*partials_at(engine, z, gf[k], p[k], hv))
     return A, dev, None, K
 
 
-def linearize(integ, traj, opts):
-    """A (K, 2d, 2d) along ``traj`` (K + 1 records of ``integ.simulate(..., every=1)``); see
-    the module docstring. opts: resolved NewtonOptions (Integrator._options). Raises
+def linearize(engine, traj, opts):
+    """A (K, 2d, 2d) along ``traj`` (K + 1 records of ``Integrator.simulate(..., every=1)``); see
+    the module docstring. opts: resolved NewtonOptions (Engine.options). Raises
     ArgumentError (field traj) for a trajectory that is not this module's, ConvergenceError if a
     step's Newton fails."""
-    gf, p, h = _check_traj(integ, traj)
+    gf, p, h = _check_traj(engine, traj)
     hv = np.array([h])
-    g0 = gf[0].reshape(integ.n, integ.n, order="F")
-    z0 = integ.kernel("guess", integ.velocity(g0, p[0]), gf[0], p[0], hv)[0]
-    loop = getattr(integ._b, "linearize", None)
+    g0 = gf[0].reshape(engine.n, engine.n, order="F")
+    z0 = engine.kernel("guess", engine.maps.velocity(g0, p[0]), gf[0], p[0], hv)[0]
+    loop = getattr(engine.backend, "linearize", None)
     if loop is not None:
         A, dev, err, done = loop(gf, p, hv[0], z0, opts)
     else:
-        A, dev, err, done = _python_loop(integ, gf, p, hv, z0, opts)
+        A, dev, err, done = _python_loop(engine, gf, p, hv, z0, opts)
     if err is not None:
         code, it, r = err
         raise _error(code, done, done * h, r, it)
-    _check_dev(integ, gf, p, h, dev)
+    _check_dev(engine, gf, p, h, dev)
     return A
 
 
-def _check_dev(integ, gf, p, h, dev):
+def _check_dev(engine, gf, p, h, dev):
     """Refuse records that are not this module's steps (dev[k]: step k's deviation)."""
     scale = 1.0 + max(np.abs(gf).max(), np.abs(p).max())
     bad = np.flatnonzero(~(dev <= RECORD_RTOL * scale))
@@ -148,7 +165,7 @@ def _check_dev(integ, gf, p, h, dev):
         k = int(bad[0])
         raise ArgumentError(f"record {k + 1} is not this module's step from record {k} at "
                          f"h = {h!r} (deviation {dev[k]:.1e}); expected a trajectory "
-                         f"simulated by {integ.meta['module']!r} with these inputs",
+                         f"simulated by {engine.meta['module']!r} with these inputs",
                          field="traj")
 
 
@@ -157,49 +174,50 @@ def _check_dev(integ, gf, p, h, dev):
 WRT = (None, "u", "params")
 
 
-def linearize_open(integ, traj, opts, u=None, params=None, t0=None, wrt=None):
+def linearize_open(engine, traj, opts, u=None, params=None, t0=None, wrt=None):
     """Open module: (A, B) (wrt None or "u") or P (wrt "params") along ``traj``; see the
     module docstring. Raises ArgumentError for a bad trajectory, u, params, t0 or wrt,
     ConvergenceError if a step's Newton fails."""
     from .inputs import step_inputs
     if wrt not in WRT:
         raise ArgumentError(f"expected wrt=None, 'u' or 'params', got {wrt!r}", field="wrt")
-    gf, p, h = _check_traj(integ, traj)
-    K, m = len(gf) - 1, len(integ.open["inputs"])
+    gf, p, h = _check_traj(engine, traj)
+    K, m = len(gf) - 1, len(engine.open["inputs"])
     if t0 is None:
         t0 = float(np.asarray(traj.t, dtype=np.float64)[0]) if len(traj.t) else 0.0
-    inputs = step_inputs(integ.open, K, u, params, t0)
+    inputs = step_inputs(engine.open, K, u, params, t0)
     H = 2 + m + len(inputs.params)
     cols = slice(2, 2 + m) if wrt != "params" else slice(2 + m, H)
     if wrt == "params" and H == 2 + m:
         raise ArgumentError("this model has no runtime parameters", field="wrt")
     hv = np.array([inputs.hv(h, k) for k in range(K)], dtype=np.float64).reshape(K, H)
-    z = integ.kernel("guess", integ._velocity(gf[0], p[0], lv=integ._lv(t0, inputs.params)),
+    z = engine.kernel("guess", engine.maps.velocity_flat(gf[0], p[0],
+                                                       lv=engine.maps.lv(t0, inputs.params)),
                      gf[0], p[0], hv[0])[0]
-    loop = getattr(integ._b, "linearize_open", None)
+    loop = getattr(engine.backend, "linearize_open", None)
     if loop is not None:
         A, B, dev, err, done = loop(gf, p, hv, cols, z, opts)
     else:
-        A, B, dev, err, done = _python_open_loop(integ, gf, p, hv, cols, z, opts)
+        A, B, dev, err, done = _python_open_loop(engine, gf, p, hv, cols, z, opts)
     if err is not None:
         code, it, r = err
         raise _error(code, done, done * h, r, it)
-    _check_dev(integ, gf, p, h, dev)
+    _check_dev(engine, gf, p, h, dev)
     return B if wrt == "params" else (A, B)
 
 
-def _python_open_loop(integ, gf, p, hv, cols, z, opts):
+def _python_open_loop(engine, gf, p, hv, cols, z, opts):
     """The Python backend's twin of an open module's hpgen_linearize: (A, B, dev, err,
     steps done)."""
-    K, s = len(gf) - 1, 2 * integ.d
+    K, s = len(gf) - 1, 2 * engine.d
     A, B = np.zeros((K, s, s)), np.zeros((K, s, cols.stop - cols.start))
     dev = np.zeros(K)
     for k in range(K):
-        code, g1, p1, z, it, r = integ._b.step(gf[k], p[k], hv[k], z, opts)
+        code, g1, p1, z, it, r = engine.backend.step(gf[k], p[k], hv[k], z, opts)
         if code != abi.OK:
             return A, B, dev, (code, it, r), k
         dev[k] = max(np.abs(g1 - gf[k + 1]).max(), np.abs(p1 - p[k + 1]).max())
-        J, Fs, Yz, Ys, FH, YH = open_partials_at(integ, z, gf[k], p[k], hv[k])
+        J, Fs, Yz, Ys, FH, YH = open_partials_at(engine, z, gf[k], p[k], hv[k])
         D = implicit_derivative(J, np.hstack([Fs, FH[:, cols]]), Yz,
                                 np.hstack([Ys, YH[:, cols]]))
         A[k], B[k] = D[:, :s], D[:, s:]

@@ -119,7 +119,7 @@ class PartialFolder:
 
     def committed_files(self) -> list:
         """The committed chunk files 0, 1, ... (consecutive; the last holds a state)."""
-        files = []
+        files: list = []
         while (self.parts / _chunk_name(len(files))).is_file():
             files.append(self.parts / _chunk_name(len(files)))
         while files and STATE + "totals" not in _npz_names(files[-1]):
@@ -194,7 +194,7 @@ class PartialFolder:
                     heads = {k: (first[k].dtype, first[k].shape[1:]) for k in names}
                 # chunk files kept open across the names (their zip directories read once),
                 # at most OPEN_MAX at a time
-                opened = {} if len(files) <= OPEN_MAX else None
+                opened: dict | None = {} if len(files) <= OPEN_MAX else None
                 for name in names:
                     dtype, tail = heads[name]
                     with zf.open(name + ".npy", "w", force_zip64=True) as f:
@@ -250,7 +250,7 @@ def _leftover_line(parts: Path) -> str:
     """One line naming what an earlier, interrupted run left and how to continue it."""
     try:
         man = _read_manifest(parts)
-        files = PartialFolder(parts, None).committed_files()
+        files = PartialFolder(parts, parts).committed_files()   # (lists chunks only)
         with np.load(files[-1]) as f:
             chunks, k, samples, _ = (int(v) for v in f[STATE + "totals"])
         what = (f"holds {chunks} completed chunks ({k} of {man['run']['steps']} steps, "

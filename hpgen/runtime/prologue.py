@@ -1,7 +1,8 @@
 """simulate's fast path: the common call on the C backend without the generic prologue's
-per-call Python (Integrator.simulate; issue 14).
+per-call Python (Integrator.simulate).
 
-What the generic path (Integrator._prepare, CBackend.simulate, Integrator._trajectory) does
+What the generic path (hpgen.runtime.states.simulate: Engine.prepare, the engine's run loop,
+states.trajectory) does
 per call, done here with what can be kept across calls kept:
 - a Plan per (h, steps, every, newton) holds the checked h, steps, every, the resolved Newton
   options (and their C struct), the record count K, the record times and the memory check;
@@ -15,7 +16,7 @@ per call, done here with what can be kept across calls kept:
   kernel calls in place (defect, legendre, guess, and margin for a closed module), the run
   one hpgen_run_init (and hpgen_run_set_inputs) and one hpgen_advance writing the records
   after row 0; the Trajectory copies them out;
-- a mu0 start's velocity (Integrator._velocity: Newton with numpy's solve, ~30 us) is kept for
+- a mu0 start's velocity (StateMaps.velocity_flat: Newton with numpy's solve, ~30 us) is kept for
   the last (g0, mu0, lv) by their bytes (a function of those bytes alone).
 An open module's u, params and t0 are checked by the generic step_inputs at every call (u is
 the caller's array: it may have changed in place).
@@ -40,7 +41,9 @@ from .. import abi
 from ..errors import HpgenError
 from .args import _fits, _int, _step_size
 from .cstructs import _Options, _Status, _addr
+from .engine import DEFECT_MAX
 from .inputs import step_inputs
+from .states import trajectory
 from .trajectory import Trajectory
 
 #: plans kept per Integrator (the dict is cleared when it holds more)
@@ -57,20 +60,20 @@ class Plan:
     """The checked, per-call-independent part of a simulate call (see the module docstring)."""
     __slots__ = ("h", "steps", "every", "newton", "opts", "copts", "copts_addr", "K", "t")
 
-    def __init__(self, integ, h, steps, every, newton):
+    def __init__(self, engine, h, steps, every, newton):
         self.h = _step_size(h)
         self.steps, self.every = _int(steps, "steps", 0), _int(every, "every", 1)
-        self.newton, self.opts = newton, integ._options(newton)
+        self.newton, self.opts = newton, engine.options(newton)
         self.copts = _Options.of(self.opts)
         self.copts_addr = ctypes.addressof(self.copts)
         self.K = self.steps // self.every + 1
-        _fits(self.K, integ.n * integ.n + integ.d, "simulate")
+        _fits(self.K, engine.n * engine.n + engine.d, "simulate")
         # the times of the records for t0 = 0, in an immutable buffer: views of it handed to
         # Trajectories can never be made writeable
         self.t = np.frombuffer(self.times().tobytes()) if self.K <= ROWS_MAX else None
 
     def times(self) -> np.ndarray:
-        """t_k = k every h of records k = 0..K-1 (Integrator._records)."""
+        """t_k = k every h of records k = 0..K-1 (hpgen.runtime.states.records)."""
         return np.arange(0, self.K * self.every, self.every) * self.h
 
 
@@ -84,7 +87,7 @@ _NO_PLAN = _NoPlan()
 
 class _Thread:
     """One thread's staging: a block [xi | hv | lv | z | e | m] (hv the step vector, lv the
-    open module's argument of l, Integrator._lv) and the record rows G (cap, n*n),
+    open module's argument of l, StateMaps.lv) and the record rows G (cap, n*n),
     P (cap, d) whose row 0 is the start (g flat, mu): the kernels read and write them in
     place, hpgen_advance writes the records from row 1 (runs of more than ROWS_MAX records get
     rows of their own); their addresses made once per size; a run buffer and a status."""
@@ -121,14 +124,15 @@ class _Thread:
 
 
 class Prologue:
-    """simulate's fast path for one Integrator of the C backend."""
+    """simulate's fast path for the run engine (hpgen.runtime.engine) of a module on the C
+    backend."""
 
-    def __init__(self, integ, defect_max):
-        b = integ._b
-        self.defect_max = defect_max
-        self.integ, self.lib = integ, b._lib
-        self.n, self.d, self.nz = integ.n, integ.d, integ.nz
-        self.open = integ.open
+    def __init__(self, engine):
+        b = engine.backend
+        self.defect_max = DEFECT_MAX
+        self.engine, self.lib = engine, b.lib
+        self.n, self.d, self.nz = engine.n, engine.d, engine.nz
+        self.open = engine.open
         self.H = 1 if self.open is None else self.open["H"]
         #: the zeros of an open module's lv standing for the inputs (l takes no u)
         self.lv_u = [0.0] * (0 if self.open is None else len(self.open["inputs"]))
@@ -136,11 +140,12 @@ class Prologue:
         # the start's kernels and hpgen_run_init through a PyDLL handle of the same library:
         # calls of well under a microsecond that keep the GIL (a CDLL call releases and takes
         # it back, 0.2-0.4 us each on a loaded machine); hpgen_advance releases it
-        py = ctypes.PyDLL(str(b.library), handle=b._lib._handle)     # (no second dlopen)
+        py = ctypes.PyDLL(str(b.library), handle=b.lib._handle)     # (no second dlopen)
         self.fns = {}
         for k in ("defect", "legendre", "guess", "margin"):
             fn = getattr(py, f"hpgen_kernel_{k}")
-            fn.argtypes, fn.restype = b._fns[k].argtypes, b._fns[k].restype
+            kf = b.kernel_function(k)
+            fn.argtypes, fn.restype = kf.argtypes, kf.restype
             self.fns[k] = fn
         self.run_init = py.hpgen_run_init
         self.run_init.argtypes = [ctypes.c_void_p] * 4
@@ -171,7 +176,7 @@ class Prologue:
             self.last = p
             return p
         try:
-            p = Plan(self.integ, h, steps, every, newton)
+            p = Plan(self.engine, h, steps, every, newton)
         except HpgenError:
             return None
         if len(self.plans) >= PLANS_MAX:
@@ -246,7 +251,7 @@ class Prologue:
             ga, pa = _addr(G), _addr(P)
         self.run_init(s.run_addr, ptr["g"], ptr["mu"], ptr["z"])
         # (an open run points into its input rows and parameters: kept alive over the call)
-        keep = None if inputs is None else self.integ._b._set_inputs(s.run_addr, inputs)
+        keep = None if inputs is None else self.engine.backend.set_inputs(s.run_addr, inputs)
         done = self.lib.hpgen_advance(s.run_addr, plan.h, plan.steps, plan.every,
                                       plan.copts_addr, ga + 8 * nn, pa + 8 * d, s.status_addr)
         del keep
@@ -254,8 +259,8 @@ class Prologue:
         if st.code != abi.OK:
             if st.code < 0 or (st.step == 0 and inputs is None):   # C refused; the retry
                 return None
-            traj = self.integ._trajectory(done, G, P, st.as_dict(), plan.h, plan.every,
-                                          inputs, t0)
+            traj = trajectory(self.engine, done, G, P, st.as_dict(), plan.h, plan.every,
+                              inputs, t0)
             raise traj.error
         # (copies: the rows are this thread's scratch; g row-major per record)
         gk = np.array(G[:K].reshape(K, n, n).transpose(0, 2, 1), order="C")
@@ -263,12 +268,12 @@ class Prologue:
         t = plan.times() if plan.t is None else plan.t.view() if not t0 else plan.t
         return Trajectory.made(t=t0 + t if t0 else t, g=gk, mu=mu, h=plan.h,
                                every=plan.every, newton_iterations=int(st.total_iterations),
-                               jacobians=int(st.jacobians), integrator=self.integ,
+                               jacobians=int(st.jacobians), integrator=self.engine.owner,
                                inputs=inputs)
 
     def _velocity(self, s, is_open) -> bool:
         """xi0 from (g, mu) (and lv for an open module) of the staging block into it
-        (Integrator._velocity, kept for the last of those by their bytes); False when it
+        (StateMaps.velocity_flat, kept for the last of those by their bytes); False when it
         fails (the generic path raises)."""
         lv = (s.views["lv"].copy(),) if is_open else ()
         key = s.G[0].tobytes() + s.P[0].tobytes() + (lv[0].tobytes() if lv else b"")
@@ -277,7 +282,8 @@ class Prologue:
             s.views["xi"][...] = last[1]
             return True
         try:
-            xi = self.integ._velocity(s.views["g"].copy(), s.views["mu"].copy(), lv=lv)
+            xi = self.engine.maps.velocity_flat(s.views["g"].copy(), s.views["mu"].copy(),
+                                                lv=lv)
         except HpgenError:
             return False
         self.velocity_last = (key, xi)

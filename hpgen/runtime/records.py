@@ -1,4 +1,6 @@
-"""Runs that keep only what the scene's ``record:`` list asks for (Integrator.record).
+"""The records output: runs that keep only what the scene's ``record:`` list asks for, as
+Records (Integrator.record, stream_record, record_batch on the run engine,
+hpgen.runtime.engine).
 
 The C loop (``hpgen_advance_record``) evaluates the compiled record row (kernel ``record``:
 g, mu, xi, energy, momentum, defect and user expressions, in the scene's order; layout in
@@ -20,7 +22,7 @@ from .. import abi
 from ..errors import ModelError, RecordError
 from . import loop
 from .args import _error, _fits, _int
-from .newton import NewtonOptions
+from .engine import Engine, Part, RunArgs, RunHandle, RunStart
 from .progress import bar as progress_bar
 from .trajectory import npz_path, run_metadata, write_npz
 from .work import R as WORK_START, WorkSum, fill_work, work_offset
@@ -89,12 +91,13 @@ def _not_finite(row, layout) -> list:
             if not np.isfinite(row[off:off + int(np.prod(shape))]).all()]
 
 
-def make_records(integ, rows, st, h, every, first=0, t_start=0.0, start=None) -> Records:
+def make_records(engine: Engine, rows, st, h, every, first=0, t_start=0.0,
+                 start=None) -> Records:
     """Records of flat rows, the first of them record number ``first`` (t = t_start + j every
     h for record j, computed so: a chunk's t is bitwise the whole run's); error set
     (partial) when st failed (start: the run's (g0 flat, mu0), for what the chart needs
     when the first start is outside it)."""
-    layout = integ.meta["record"]
+    layout = engine.meta["record"]
     err = None
     if st["code"] == abi.RECORD:
         bad = _not_finite(rows[-1], layout) if len(rows) else []
@@ -105,67 +108,126 @@ def make_records(integ, rows, st, h, every, first=0, t_start=0.0, start=None) ->
     elif st["code"] != abi.OK:
         hint = ""
         if st["code"] == abi.DOMAIN and st["iterations"] == 0 and start is not None:
-            hint = integ._domain_hint(*start, None, h)
+            hint = engine.first_step.domain_hint(start[0], start[1], None, h)
         err = _error(st["code"], st["step"], st["step"] * h, st["residual"], st["iterations"],
                      hint)
     t = (first + np.arange(len(rows))) * every * h
     rec = Records(t=t_start + t if t_start else t,
-                  arrays=split_rows(rows, layout, integ.n), h=h, every=every,
+                  arrays=split_rows(rows, layout, engine.n), h=h, every=every,
                   partial=err is not None, error=err,
                   newton_iterations=int(st["total_iterations"]), jacobians=int(st["jacobians"]),
-                  integrator=integ)
+                  integrator=engine.owner)
     if err is not None:
         err.partial = rec
     return rec
 
 
-def stream_records(integ, backend, gf, mu0, z0, h, steps, every, chunk, opts, run=None,
-                   inputs=None, t_start=0.0):
-    """Yield Records per chunk of at most ``chunk`` steps (the first starts with record 0,
-    the initial state); raises the chunk's error (with .partial) on a failure. ``run``: the
-    run to advance (default a new one at gf, mu0, z0); one restored from a snapshot
-    (``backend.restore``) after k > 0 steps continues at step k without record 0, bitwise as
-    the uninterrupted run (hpgen.runtime.chunked_output's resume). inputs: an open module's
-    StepInputs; t_start: the time of step 0. A ``work`` record (hpgen.runtime.work) has the
-    row evaluated at every step, the work accumulated, and every ``every``-th row kept."""
-    if run is None:
-        run = backend.start(gf, mu0, z0) if inputs is None else \
-            backend.start(gf, mu0, z0, inputs)
-    k = backend.steps_done(run)
-    first = k == 0
-    col = work_offset(integ.meta)
-    acc = None if col is None else WorkSum(h)
-    if acc is not None and not first:
-        raise ModelError("a run that records work cannot be resumed (the work is accumulated "
-                         "from its start); run it again", field="record")
-    if first:
-        code, row0 = backend.record(gf, mu0) if inputs is None else \
-            backend.record(gf, mu0, inputs)
+class RecordRows:
+    """The records output of one run, in chunks of at most ``chunk`` steps. A ``work``
+    record (hpgen.runtime.work) has the row evaluated at every step, the work accumulated,
+    and every ``every``-th row kept; its first chunk holds at least the first R + 1 nodes,
+    which its start rule needs."""
+
+    def __init__(self, engine: Engine, s: RunStart, chunk: int):
+        self.engine, self.s, self.chunk = engine, s, chunk
+        self.col = work_offset(engine.meta)
+        self.acc = None if self.col is None else WorkSum(s.h)
+
+    def span(self, k, first):
+        if not first and k >= self.s.steps:
+            return None
+        chunk = self.chunk if self.acc is None or not first else max(self.chunk, WORK_START)
+        return (min(chunk, self.s.steps - k),)
+
+    def advance(self, run, span) -> Part:
+        s = self.s
+        done, rows, st = self.engine.backend.advance_record(
+            run, s.h, span[0], 1 if self.acc else s.every, s.opts)
+        return Part(done, (rows,), st)
+
+    def head(self):
+        """Record 0's row (1, W), the start's; raises its RecordError when not finite."""
+        s, b = self.s, self.engine.backend
+        code, row0 = b.record(s.g0, s.mu0) if s.inputs is None else \
+            b.record(s.g0, s.mu0, s.inputs)
         if code != abi.OK:
-            rec = make_records(integ, row0.reshape(1, -1), {**loop.new_status(), "code": code},
-                               h, every, 0, t_start)
+            rec = make_records(self.engine, row0.reshape(1, -1),
+                               {**loop.new_status(), "code": code}, s.h, s.every, 0)
             raise rec.error
-        row0 = np.array(row0, dtype=np.float64).reshape(1, -1)
-    while first or k < steps:
-        # (work: the first chunk holds the first R + 1 nodes, which its start rule needs)
-        todo = min(chunk if acc is None or not first else max(chunk, WORK_START), steps - k)
-        done, rows, st = backend.advance_record(run, h, todo, 1 if acc else every, opts)
-        z1 = (integ._restart(st, gf, mu0, h, z0, opts)
-              if first and inputs is None and z0 is not None else None)
-        if z1 is not None:                   # (closed modules only: no work record)
-            run = backend.start(gf, mu0, z1)
-            done, rows, st = backend.advance_record(run, h, todo, every, opts)
-        if acc is not None:
-            rows = _keep_every(rows, col, acc, k, every, row0 if first else None)
+        return np.array(row0, dtype=np.float64).reshape(1, -1)
+
+    def records(self, k, first, part, row0, t_start) -> Records:
+        s = self.s
+        rows = part.data[0]
+        if self.acc is not None:
+            rows = _keep_every(rows, self.col, self.acc, k, s.every, row0 if first else None)
         elif first:
             rows = np.concatenate([row0, rows])
-        rec = make_records(integ, rows, st, h, every, k // every + (0 if first else 1),
-                           t_start, (gf, mu0) if first and inputs is None else None)
+        return make_records(self.engine, rows, part.status, s.h, s.every,
+                            k // s.every + (0 if first else 1), t_start,
+                            (s.g0, s.mu0) if first and s.inputs is None else None)
+
+
+def stream_records(engine: Engine, s: RunStart, chunk: int, handle: RunHandle | None = None,
+                   t_start=0.0):
+    """Yield Records per chunk of at most ``chunk`` steps (the first starts with record 0,
+    the initial state); raises the chunk's error (with .partial) on a failure. ``handle``:
+    the run to advance (default a new one at s's start); one restored from a snapshot
+    (Engine.restore) after k > 0 steps continues at step k without record 0, bitwise as
+    the uninterrupted run (hpgen.runtime.chunked_output's resume). t_start: the time of
+    step 0."""
+    out = RecordRows(engine, s, chunk)
+    first = handle is None or handle.steps_done() == 0
+    if out.acc is not None and not first:
+        raise ModelError("a run that records work cannot be resumed (the work is accumulated "
+                         "from its start); run it again", field="record")
+    row0 = out.head() if first else None
+    for k, first, part in engine.parts(out, s, handle):
+        rec = out.records(k, first, part, row0, t_start)
         if rec.error is not None:
             raise rec.error
         yield rec
-        k += done
-        first = False
+
+
+def record_names(meta) -> tuple:
+    """What a module's record row holds (the scene's ``record:`` list, in order)."""
+    return tuple(name for name, _, _ in meta["record"])
+
+
+def stream_record(engine: Engine, a: RunArgs, chunk=100_000):
+    """Integrator.stream_record."""
+    chunk = _int(chunk, "chunk", 1)
+    s = engine.prepare(a)
+    yield from stream_records(engine, s, chunk, t_start=float(a.t0))
+
+
+def record(engine: Engine, a: RunArgs) -> Records:
+    """Integrator.record: the run in one piece."""
+    _fits(_int(a.steps, "steps", 0) // _int(a.every, "every", 1) + 1,
+          engine.backend.record_width or 1, "record")
+    return next(stream_record(engine, a, max(a.steps, 1)))
+
+
+def record_batch(engine: Engine, a: RunArgs, threads=None, progress=None) -> list:
+    """Integrator.record_batch: B Records from one backend call per thread slice."""
+    engine.require_c("record_batch")
+    e = engine.prepare_batch(a)
+    threads = engine.threads(threads)
+    runs, steps, every = e.members, e.steps, e.every
+    col = work_offset(engine.meta)
+    _fits(len(runs) * (steps // (every if col is None else 1) + 1),
+          engine.backend.record_width or 1, "record_batch")
+    with progress_bar(len(runs), "record_batch", "member", progress) as bar:
+        rows, n_rows, sts = engine.backend.record_batch(
+            [s.g0 for s in runs], [s.mu0 for s in runs], e.h, [s.z0 for s in runs], steps,
+            every if col is None else 1, e.opts, threads, bar, e.inputs)
+    out = []
+    for b in range(len(runs)):
+        mine = rows[b, :n_rows[b]]
+        if col is not None and len(mine):     # the work from the every-step rows
+            mine = _keep_every(mine[1:], col, WorkSum(e.h), 0, every, mine[:1])
+        out.append(make_records(engine, mine, sts[b], e.h, every, 0, float(a.t0)))
+    return out
 
 
 def _keep_every(rows, col, acc, k, every, row0=None):
@@ -177,91 +239,3 @@ def _keep_every(rows, col, acc, k, every, row0=None):
         rows, k = np.concatenate([row0, rows]), k - 1
     fill_work(rows, col, acc)
     return rows[(k + 1 + np.arange(len(rows))) % every == 0]
-
-
-class RecordsMixin:
-    """Integrator methods for scene records (uses the Integrator's _prepare, _prepare_batch
-    and backend)."""
-
-    @property
-    def record_names(self) -> tuple:
-        """What this module's record row holds (the scene's ``record:`` list, in order)."""
-        return tuple(name for name, _, _ in self.meta["record"])
-
-    def stream_record(self, g0, h, steps, xi0=None, mu0=None, every=1, chunk=100_000, *,
-                      newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
-        """Like ``record`` in chunks of at most ``chunk`` steps (bounded memory): yields one
-        Records per chunk (the first starts with record 0; ``t`` is global). A failure raises
-        ConvergenceError / DomainError / RecordError with ``.partial`` the failing chunk's
-        records. u, params, t0: as in ``simulate``."""
-        chunk = _int(chunk, "chunk", 1)
-        h, steps, every, opts, gf, mu0, z0, inputs = self._prepare(
-            g0, h, steps, xi0, mu0, every, newton, u, params, t0)
-        yield from stream_records(self, self._b, gf, mu0, z0, h, steps, every, chunk, opts,
-                                  inputs=inputs, t_start=float(t0))
-
-    def record(self, g0, h, steps, xi0=None, mu0=None, every=1, *,
-               newton: NewtonOptions | None = None, u=None, params=None, t0=0.0):
-        """Run ``steps`` steps keeping only the scene's record row every ``every`` steps.
-
-        The row (``record_names``: the scene's g, mu, xi, energy, momentum, defect and
-        expressions) is evaluated inside the C loop; when neither the step nor the row use
-        g, g is not reconstructed. The states are bitwise those of ``simulate``.
-
-        Parameters
-        ----------
-        g0, h, steps, xi0, mu0
-            As for ``simulate``: g0 (n, n) on the group, h != 0 in the model's time unit,
-            steps >= 0, exactly one of xi0 / mu0 (d,).
-        every : int, optional
-            Record interval in steps, >= 1 (default 1); record 0 is the initial state.
-        newton : NewtonOptions or None, optional
-            Newton settings, as for ``simulate``.
-        u, params, t0
-            As for ``simulate`` (an open module's inputs, runtime parameters, start time).
-
-        Returns
-        -------
-        Records
-            ``t`` (K,) and one array per record name, K = steps // every + 1: g (K, n, n);
-            mu, xi, momentum (K, d); energy, defect, expressions (K,). ``rec["energy"]``,
-            ``rec.save(path)``.
-
-        Raises
-        ------
-        ModelError
-            A bad argument.
-        ConvergenceError, DomainError, RecordError
-            A step failed, or a recorded value is not finite (``RecordError`` names the
-            entries); ``.partial`` holds the records up to the failure.
-        """
-        _fits(_int(steps, "steps", 0) // _int(every, "every", 1) + 1, self._b.record_width or 1,
-              "record")
-        chunks = list(self.stream_record(g0, h, steps, xi0, mu0, every, max(steps, 1),
-                                         newton=newton, u=u, params=params, t0=t0))
-        return chunks[0]
-
-    def record_batch(self, g0, h, steps, xi0=None, mu0=None, every=1, threads=None, *,
-                     newton: NewtonOptions | None = None, u=None, params=None, t0=0.0,
-                     progress=None) -> list:
-        """``record`` for an ensemble (starts as in ``simulate_batch``), in C over ``threads``
-        threads (default: the CPU count); each run's rows are bitwise those of ``record`` on
-        its own. Returns B Records; a failed run's Records is partial with ``.error`` set
-        (nothing is raised). u, params, t0 and progress: as for ``simulate_batch`` (a params
-        value with a leading axis of length B is a sweep: run b takes entry b)."""
-        h, steps, every, opts, threads, gs, ms, z0s, inputs = self._prepare_batch(
-            g0, h, steps, xi0, mu0, every, threads, newton, "record_batch", u, params, t0)
-        col = work_offset(self.meta)
-        _fits(len(gs) * (steps // (every if col is None else 1) + 1),
-              self._b.record_width or 1, "record_batch")
-        with progress_bar(len(gs), "record_batch", "member", progress) as bar:
-            rows, n_rows, sts = self._b.record_batch(gs, ms, h, z0s, steps,
-                                                     every if col is None else 1, opts,
-                                                     threads, bar, inputs)
-        out = []
-        for b in range(len(gs)):
-            mine = rows[b, :n_rows[b]]
-            if col is not None and len(mine):     # the work from the every-step rows
-                mine = _keep_every(mine[1:], col, WorkSum(h), 0, every, mine[:1])
-            out.append(make_records(self, mine, sts[b], h, every, 0, float(t0)))
-        return out

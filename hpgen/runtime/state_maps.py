@@ -1,8 +1,9 @@
-"""The pointwise maps of a loaded module's state, a mixin of hpgen.runtime.integrator
-.Integrator: the Legendre transform and its inverse (velocity from momentum, Newton with the
-singular-Legendre check), energy, spatial momentum, the group defect and the observables of
-many records in one call. Conventions as Integrator's (g (n, n), mu and xi length d, body
-frame); an open module evaluates l at a time t with its runtime parameters.
+"""The pointwise maps of a loaded module's state (``StateMaps``, behind Integrator's
+legendre, velocity, observe, energy, momentum and defect): the Legendre transform and its
+inverse (velocity from momentum, Newton with the singular-Legendre check), energy, spatial
+momentum, the group defect and the observables of many records in one call. Conventions as
+Integrator's (g (n, n), mu and xi length d, body frame); an open module evaluates l at a
+time t with its runtime parameters.
 """
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ import numpy as np
 from .. import abi
 from ..errors import ConvergenceError, ModelError
 from . import newton as _newton
+from .args import _array, newton_options
 from .inputs import check_params, check_t0
 from .newton import NewtonOptions
 
@@ -20,11 +22,30 @@ from .newton import NewtonOptions
 COND_MAX = 1e12
 
 
-class StateMapsMixin:
-    """legendre, velocity, observe, energy, momentum, defect (and their helpers)."""
+class StateMaps:
+    """The state maps of one loaded module on its kernel backend (hpgen.runtime.backends).
+
+    Public methods take user arrays (checked: ArgumentError naming the field); ``flat_g``
+    and ``vector`` are those checks; ``velocity_flat`` and ``lv`` are the unchecked forms
+    the run engine uses on arrays it has checked already (g flat column-major)."""
+
+    def __init__(self, backend, meta: dict):
+        self.backend, self.meta = backend, meta
+        self.n, self.d = meta["n"], meta["d"]
+        #: an open module's step vector (meta.json "open"), None when closed
+        self.open = meta.get("open")
+        self._cond_last = None     # (bytes of the last Hessian checked, its cond) (_cond)
+
+    def flat_g(self, g, field="g") -> np.ndarray:
+        """g checked as an (n, n) matrix, flat column-major."""
+        return _array(g, (self.n, self.n), field, "an n x n matrix").ravel(order="F")
+
+    def vector(self, v, field) -> np.ndarray:
+        """v checked as a vector of length d."""
+        return _array(v, (self.d,), field, "a vector of length d")
 
     # ---- open modules (forces, inputs, runtime parameters, t; hpgen.runtime.inputs) ------
-    def _lv(self, t=0.0, params=None) -> tuple:
+    def lv(self, t=0.0, params=None) -> tuple:
         """The extra argument of the kernels that evaluate l without h (abi.OPEN_EXTRA):
         () for a closed module, else (hv,) with hv = [0, t, 0 (m), params] (l takes no u)."""
         if self.open is None:
@@ -36,15 +57,15 @@ class StateMapsMixin:
     def legendre(self, g, xi, *, t=0.0, params=None) -> np.ndarray:
         """mu = dl/dxi (g, xi) (at time t, with the runtime parameters ``params``, for an
         open module)."""
-        return self._b.call("legendre", self._g(g), self._v(xi, "xi"),
-                            *self._lv(check_t0(t), params))[0]
+        return self.backend.call("legendre", self.flat_g(g), self.vector(xi, "xi"),
+                            *self.lv(check_t0(t), params))[0]
 
     def velocity(self, g, mu, *, newton: NewtonOptions | None = None, t=0.0, params=None):
         """xi with legendre(g, xi) = mu: full Newton from xi = 0 with the hessian kernel
         (newton: its tol and maxit)."""
-        o = self._options(newton, full=True)
-        return self._velocity(self._g(g), self._v(mu, "mu"), o.tol, o.maxit,
-                              self._lv(check_t0(t), params))
+        o = newton_options(newton, False, full=True)
+        return self.velocity_flat(self.flat_g(g), self.vector(mu, "mu"), o.tol, o.maxit,
+                              self.lv(check_t0(t), params))
 
     def _cond(self, Hf, H):
         """cond(H) of the Hessian H (Hf its flat column-major array), None when H has a
@@ -62,11 +83,11 @@ class StateMapsMixin:
         self._cond_last = (key, cond)
         return cond
 
-    def _velocity(self, gf, mu, tol=abi.DEFAULT_TOL, maxit=abi.DEFAULT_MAXIT, lv=()):
+    def velocity_flat(self, gf, mu, tol=abi.DEFAULT_TOL, maxit=abi.DEFAULT_MAXIT, lv=()):
         """velocity from g flat column-major and mu, both checked: newton.newton on
         F = legendre - mu, J = hessian; every Hessian passes the singular-Legendre check
         first (_cond)."""
-        d, call = self.d, self._b.call
+        d, call = self.d, self.backend.call
 
         def fun(xi):
             F = call("legendre", gf, xi, *lv)[0] - mu
@@ -99,7 +120,7 @@ class StateMapsMixin:
         K = len(mu)
         gf = np.ascontiguousarray(g.transpose(0, 2, 1)).reshape(K, self.n * self.n)
         if self.open is None:
-            done, xi, E, m, e = self._b.observe(gf, mu)
+            done, xi, E, m, e = self.backend.observe(gf, mu)
             exact = bool(self.meta.get("legendre_quadratic"))
         else:
             done, exact = 0, False
@@ -107,26 +128,26 @@ class StateMapsMixin:
             params = inputs.params if inputs is not None else check_params(self.open, None)
             t = np.zeros(K) if t is None else np.asarray(t, dtype=np.float64)
         for k in range(0 if not exact else done, K):
-            lv = () if self.open is None else self._lv(t[k], params)
-            xi[k] = self._velocity(gf[k], mu[k], lv=lv)
-            E[k] = self._b.call("energy", gf[k], xi[k], *lv)[0][0]
+            lv = () if self.open is None else self.lv(t[k], params)
+            xi[k] = self.velocity_flat(gf[k], mu[k], lv=lv)
+            E[k] = self.backend.call("energy", gf[k], xi[k], *lv)[0][0]
             if k >= done:
-                m[k] = self._b.call("momentum", gf[k], mu[k])[0]
-                e[k] = self._b.call("defect", gf[k])[0][0]
+                m[k] = self.backend.call("momentum", gf[k], mu[k])[0]
+                e[k] = self.backend.call("defect", gf[k])[0][0]
         return {"xi": xi, "energy": E, "momentum": m, "defect": e}
 
     def energy(self, g, mu, *, t=0.0, params=None) -> float:
         """Energy <dl/dxi, xi> - l at (g, xi = velocity(g, mu)) (at time t, with ``params``,
         for an open module)."""
-        lv = self._lv(check_t0(t), params)
-        return float(self._b.call("energy", self._g(g),
-                                  self._velocity(self._g(g), self._v(mu, "mu"), lv=lv),
+        lv = self.lv(check_t0(t), params)
+        return float(self.backend.call("energy", self.flat_g(g),
+                                  self.velocity_flat(self.flat_g(g), self.vector(mu, "mu"), lv=lv),
                                   *lv)[0][0])
 
     def momentum(self, g, mu) -> np.ndarray:
         """Spatial momentum Ad*_{g^{-1}} mu."""
-        return self._b.call("momentum", self._g(g), self._v(mu, "mu"))[0]
+        return self.backend.call("momentum", self.flat_g(g), self.vector(mu, "mu"))[0]
 
     def defect(self, g) -> float:
         """Distance of g from the group (0 on the group)."""
-        return float(self._b.call("defect", self._g(g))[0][0])
+        return float(self.backend.call("defect", self.flat_g(g))[0][0])

@@ -39,7 +39,7 @@ class WorkSum:
         self.h = float(h)
         self.k = -1              # the last node fed
         self.s = 0.0             # P_0 + ... + P_k
-        self.head = []           # P_0 .. P_R
+        self.head: list = []     # P_0 .. P_R
         self.tail = np.zeros(0)  # the last R powers fed
 
     def add(self, power) -> np.ndarray:

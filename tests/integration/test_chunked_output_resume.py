@@ -28,19 +28,19 @@ def test_interrupted_then_resumed_equals_uninterrupted(cache_dir, tmp_path, exam
               chunk=CHUNK)
     ref_path, ref_summary = record_to_npz(integ, tmp_path / "ref", **kw)
 
-    advance, calls = integ._b.advance_record, []
+    advance, calls = integ.engine.backend.advance_record, []
 
     def interrupted(*a, **k):        # the 4th chunk is interrupted: 3 are committed
         calls.append(1)
         if len(calls) == 4:
             raise KeyboardInterrupt
         return advance(*a, **k)
-    integ._b.advance_record = interrupted
+    integ.engine.backend.advance_record = interrupted
     try:
         with pytest.raises(KeyboardInterrupt) as info:
             record_to_npz(integ, tmp_path / "run", **kw)
     finally:
-        del integ._b.advance_record
+        del integ.engine.backend.advance_record
     saved, samples, k, parts = info.value.saved
     assert k == 3 * CHUNK and parts == partial_dir(tmp_path / "run.npz")
     with np.load(saved) as f, np.load(ref_path) as r:

@@ -75,18 +75,18 @@ def test_c_and_python_rows_are_bitwise_equal(compile_model):
 def test_left_invariant_scene_without_g_never_forms_g(compile_model, backend):
     integ = compile_model(BODY, backend=backend, **SV)
     assert not integ.meta["step_uses_g"] and not integ.meta["record_uses_g"]
-    assert integ._b.skip_g
+    assert integ.engine.backend.skip_g
     rec, tr, kw = _run(integ, BODY, 400, 3, "body")
     assert np.array_equal(rec["mu"], tr.mu)          # the momenta do not need g: bitwise
     assert np.allclose(rec["spin"], tr.xi()[:, 2], rtol=0, atol=1e-15)
     assert np.allclose(rec["energy"], tr.energy(), rtol=1e-15, atol=0)
     # the run's g was never advanced: the backend refuses to continue it with g
-    b = integ._b
+    b = integ.engine.backend
     gf = np.asarray(kw["g0"], dtype=float).ravel(order="F")
     run = b.start(gf, tr.mu[0], np.zeros(integ.nz) + 0.1)
-    b.advance_record(run, kw["h"], 2, 1, integ._options(None))
+    b.advance_record(run, kw["h"], 2, 1, integ.engine.options(None))
     with pytest.raises(ValueError, match="advance"):
-        b.advance(run, kw["h"], 1, 1, integ._options(None))
+        b.advance(run, kw["h"], 1, 1, integ.engine.options(None))
 
 
 @pytest.mark.parametrize("chunk", [1, 7, 100])
@@ -152,7 +152,7 @@ def test_a_row_without_xi_compiles_with_strict_warnings(compile_model, tmp_path)
     src = _with_record("free_rigid_body.yaml", '[g, mu, defect, {c: "R[0,0] + mu[1]"}]')
     integ = compile_model(src, backend="c", **SV)
     assert not integ.meta["record_uses_xi"] and integ.meta["record_uses_g"]
-    kernels_c = integ._b.library.parent / "kernels.c"
+    kernels_c = integ.engine.backend.library.parent / "kernels.c"
     from hpgen.runtime.build import include_flags
     proc = subprocess.run(["cc", "-std=c99", "-O1", "-Wall", "-Werror", "-fPIC", "-shared",
                            *include_flags(), "-o", str(tmp_path / "k.so"), str(kernels_c),

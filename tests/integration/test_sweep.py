@@ -264,7 +264,7 @@ def test_progress_bar_only_when_asked(body, capsys, monkeypatch):
     assert "sweep:" in err and "simulate_batch:" in err and "0/6 [" in err
     # the bars count every member once
     from hpgen.ensemble import sweep as sweep_mod
-    from hpgen.runtime import batch, progress
+    from hpgen.runtime import progress, states
     counts = []
 
     def counting(total, desc, unit, wanted=None):
@@ -279,7 +279,7 @@ def test_progress_bar_only_when_asked(body, capsys, monkeypatch):
         return Bar()
 
     monkeypatch.setattr(sweep_mod, "progress_bar", counting)
-    monkeypatch.setattr(batch, "progress_bar", counting)
+    monkeypatch.setattr(states, "progress_bar", counting)
     hpgen.sweep(body, xi0=W0, h=H, steps=5, chunk_size=4)
     body.simulate_batch(np.eye(3), H, 5, xi0=W0, threads=2)
     assert counts == [["sweep", 6, 6], ["simulate_batch", 6, 6]]

@@ -43,7 +43,7 @@ def _assert_same(a, b):
 
 
 def test_free_body_has_lanes(body):
-    assert body._b.lanes == lanes.LANES
+    assert body.engine.backend.lanes == lanes.LANES
 
 
 @pytest.mark.parametrize("threads", [1, 2])
@@ -68,7 +68,7 @@ def test_heavy_top_stormer_verlet_g_in_the_step(compile_model):
     from scipy.spatial.transform import Rotation
     top = compile_model(ROOT / "examples" / "heavy_top.yaml", tableau="stormer-verlet",
                         tau="cay", rkmk="truncated")
-    assert top._b.lanes == lanes.LANES
+    assert top.engine.backend.lanes == lanes.LANES
     B = 2 * lanes.LANES + 5
     xis = np.array([0.2, 1.0, 3.0]) + 0.3 * np.random.default_rng(3).normal(size=(B, 3))
     g0 = Rotation.from_rotvec([0.3, 0.2, 0.0]).as_matrix()
@@ -103,11 +103,11 @@ def test_backend_outputs_and_statuses_equal(body):
     slices of about 20 a thread, aligned to L)."""
     B = 2 * lanes.LANES + 3
     mus = _momenta(B, seed=2) * 2.0
-    opts = body._options(None)
+    opts = body.engine.options(None)
     gs = [np.eye(3).ravel(order="F")] * B
-    z0s = [body._start(g, m, np.zeros(3), 0.1, opts) for g, m in zip(gs, mus)]
+    z0s = [body.engine.first_step.closed_start(g, m, np.zeros(3), 0.1, opts) for g, m in zip(gs, mus)]
     for threads, bar in ((1, None), (2, None), (2, SimpleNamespace(update=lambda n: None))):
-        on, off = (body._b.simulate_batch(gs, list(mus), 0.1, z0s, 40, 3, opts, threads,
+        on, off = (body.engine.backend.simulate_batch(gs, list(mus), 0.1, z0s, 40, 3, opts, threads,
                                           None, bar, lanes=use) for use in (True, False))
         assert np.array_equal(on[0], off[0])
         assert np.array_equal(on[1], off[1]) and np.array_equal(on[2], off[2])
@@ -138,7 +138,7 @@ def test_lane_code_compiles_without_warnings(body, tmp_path):
     the runtime (hpgen/runtime/c, hpgen_lanes.c included; CasADi's part of kernels.c is
     checked by its own tests)."""
     from hpgen.runtime.build import RUNTIME_DIR, include_flags
-    source = (Path(body._b.library).parent / "kernels.c").read_text()
+    source = (Path(body.engine.backend.library).parent / "kernels.c").read_text()
     start, end = _lane_region(source)
     src = tmp_path / "kernels.c"
     src.write_text(source)

@@ -326,9 +326,9 @@ def test_solve_non_finite_and_singular_paths():
 
 def test_raw_kernels_are_the_public_kernels_on_lists():
     it = integrator("python")
-    raw, public = it._b._raw, it._b._kernels
+    raw, public = it.engine.backend._raw, it.engine.backend._kernels
     rng = np.random.default_rng(3)
-    for name, (ins, outs) in it._b._sig.items():
+    for name, (ins, outs) in it.engine.backend._sig.items():
         args = [rng.normal(size=s) * 0.3 for s in ins]
         want = public[name](*args)
         got = raw[name](*[a.tolist() for a in args])
@@ -369,7 +369,7 @@ def test_step_core_with_public_kernels_equals_backend_step():
     opts = newton.NewtonOptions(1e-14, 50, simplified=False)
     py = integrator("python")
     z0 = py.kernel("guess", py.velocity(g.reshape(3, 3, order="F"), p), g, p, hv)[0]
-    want = py._b.step(g, p, hv, z0, opts)
+    want = py.engine.backend.step(g, p, hv, z0, opts)
     for backend in ("python", "c"):
         it = integrator(backend)
         code, g1, p1, z, iters, r, jacs = newton.step_core(it.kernel, 3, g, p, hv, z0, opts,

@@ -29,7 +29,7 @@ from reference import rotvec
 def _starts_and_solutions(integ, h, steps):
     """[(Newton start of step k, solution z_k, G_k)] of a Python-backend run, step by step
     through hpgen.runtime.loop.advance; the start is the first z a residual kernel receives."""
-    b = integ._b
+    b = integ.engine.backend
     kern = b._newton
     g0, xi0 = rotvec([0.3, 0.2, 0.0]), [0.2, 1.0, 3.0]
     gf = np.asarray(g0, dtype=float).ravel(order="F")

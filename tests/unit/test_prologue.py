@@ -27,6 +27,8 @@ from hpgen.errors import ArgumentError, ConvergenceError, ModelError
 from hpgen.runtime import backends, newton
 from hpgen.runtime.integrator import Integrator
 from hpgen.runtime.state_maps import COND_MAX
+from hpgen.runtime.engine import RunArgs
+from hpgen.runtime.states import simulate as generic_simulate
 
 from _toy_step import integrator as toy_integrator
 from test_linearize_open import SPACECRAFT     # inputs, a runtime parameter, forces
@@ -64,12 +66,12 @@ def reference_newton(fun, z, tol, maxit):
 def reference_velocity(integ, g, mu, tol=newton.DEFAULT_TOL, maxit=newton.DEFAULT_MAXIT):
     """Integrator.velocity as it was: the generic Newton loop, np.linalg.cond of every
     Hessian."""
-    gf, mu = integ._g(g), integ._v(mu, "mu")
+    gf, mu = integ.engine.maps.flat_g(g), integ.engine.maps.vector(mu, "mu")
     d = integ.d
 
     def fun(xi):
-        F = integ._b.call("legendre", gf, xi)[0] - mu
-        H = integ._b.call("hessian", gf, xi)[0].reshape(d, d, order="F")
+        F = integ.engine.backend.call("legendre", gf, xi)[0] - mu
+        H = integ.engine.backend.call("hessian", gf, xi)[0].reshape(d, d, order="F")
         if np.isfinite(H).all():
             with np.errstate(all="ignore"):
                 cond = float(np.linalg.cond(H)) if H.any() else math.inf
@@ -142,21 +144,22 @@ def test_initial_and_simulate_from_mu0_match_the_reference(compiled, backend):
     rng = np.random.default_rng(2)
     for _ in range(4):
         g, mu = random_g(rng, integ.n), rng.normal(size=integ.d)
-        gf, mu0, xi0 = integ._initial(g, None, mu)
+        gf, mu0, xi0 = integ.engine.initial(g, None, mu)
         assert gf.tobytes() == g.ravel(order="F").tobytes()
         assert mu0.tobytes() == mu.tobytes()
         assert xi0.tobytes() == reference_velocity(integ, g, mu).tobytes()
         xi = rng.normal(size=integ.d)
-        gf, mu0, xi0 = integ._initial(g, xi, None)
+        gf, mu0, xi0 = integ.engine.initial(g, xi, None)
         assert mu0.tobytes() == integ.legendre(g, xi).tobytes() and xi0.tobytes() == xi.tobytes()
     # the whole of simulate against its pieces, run through the generic backend driver
     g, mu = random_g(rng, integ.n), 0.5 * rng.normal(size=integ.d)
     h, steps, every = 0.01, 7, 2
     tr = integ.simulate(g, h, steps, mu0=mu, every=every)
     gf = g.ravel(order="F")
-    z0 = integ._b.call("guess", reference_velocity(integ, g, mu), gf, mu, np.array([h]))[0]
-    done, G, P, st = backends._Backend.simulate(integ._b, gf, mu, h, z0, steps, every,
-                                                integ._options(None))
+    z0 = integ.engine.backend.call("guess", reference_velocity(integ, g, mu), gf, mu,
+                                   np.array([h]))[0]
+    done, G, P, st = backends._Backend.simulate(integ.engine.backend, gf, mu, h, z0, steps, every,
+                                                integ.engine.options(None))
     K = done // every + 1
     n = integ.n
     assert tr.g.tobytes() == np.ascontiguousarray(
@@ -221,10 +224,10 @@ def test_kept_cond_is_per_hessian_and_per_integrator():
     ok, bad = SCRIPTS["quadratic"], SCRIPTS["singular_H"]
     it = _scripted(*ok)
     it.velocity(np.eye(1), [1.0, 2.0])
-    it._b.hessian = bad[1]          # a new Hessian: checked again, refused
+    it.engine.backend.hessian = bad[1]          # a new Hessian: checked again, refused
     with pytest.raises(ModelError):
         it.velocity(np.eye(1), [1.0, 2.0])
-    it._b.hessian = ok[1]
+    it.engine.backend.hessian = ok[1]
     assert it.velocity(np.eye(1), [1.0, 2.0]).tobytes() == \
         reference_velocity(_scripted(*ok), np.eye(1), [1.0, 2.0]).tobytes()
 
@@ -246,7 +249,7 @@ def test_singular_legendre_still_refused(backend):
 # ---- the C backend's kernel calls ---------------------------------------------------------
 @pytest.fixture(scope="module")
 def cb():
-    return toy_integrator("c")._b
+    return toy_integrator("c").engine.backend
 
 
 def test_kernel_outputs_are_fresh_arrays(cb):
@@ -403,7 +406,8 @@ def _run_outcome(fn, *args, **kw):
 
 def _generic(integ, g0, h, steps, xi0=None, mu0=None, every=1, *, newton=None, u=None,
              params=None, t0=0.0):
-    return integ._simulate(g0, h, steps, xi0, mu0, every, newton, u, params, t0)
+    return generic_simulate(integ.engine, RunArgs(g0, h, steps, xi0, mu0, every, newton, u,
+                                                  params, t0))
 
 
 def test_fast_simulate_is_the_generic_path(compiled):
@@ -423,7 +427,7 @@ def test_fast_simulate_is_the_generic_path(compiled):
             for start in ({"xi0": xi0}, {"mu0": mu0}, {"mu0": list(mu0)}):
                 for t0 in (0.0, 1.25):
                     kw = dict(every=every, newton=nw, t0=t0, **start)
-                    fast = integ._prologue.simulate(g0, h, steps, start.get("xi0"),
+                    fast = integ.fast_path.simulate(g0, h, steps, start.get("xi0"),
                                                     start.get("mu0"), every, nw, t0)
                     assert fast is not None          # the common case takes the fast path
                     want = _run_outcome(_generic, integ, g0, h, steps, **kw)
@@ -513,7 +517,7 @@ def test_plans_are_keyed_by_type_and_identity(compile_model):
     them), and an equal but new NewtonOptions gets its own plan."""
     integ = compile_model(FREE_BODY, tableau="stormer-verlet", tau="cay", rkmk="truncated",
                           backend="c")
-    pro = integ._prologue
+    pro = integ.fast_path
     a = pro.plan(1.0, 3, 1, None)
     assert pro.plan(1.0, 3, 1, None) is a and pro.plan(np.float64(1.0), np.int64(3), 1, None) is a
     assert pro.plan(1, 3, 1, None) is None and pro.plan(True, 3, 1, None) is None
@@ -543,7 +547,7 @@ def test_fast_simulate_of_an_open_module_is_the_generic_path(compile_model):
                 for t0 in (0.0, 2.5):
                     for start in ({"xi0": xi0}, {"mu0": mu0}):
                         kw = dict(every=2, u=u, params=params, t0=t0, **start)
-                        fast = integ._prologue.simulate(g0, 0.05, steps, start.get("xi0"),
+                        fast = integ.fast_path.simulate(g0, 0.05, steps, start.get("xi0"),
                                                         start.get("mu0"), 2, None, t0, u,
                                                         params)
                         assert fast is not None

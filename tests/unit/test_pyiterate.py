@@ -101,7 +101,7 @@ def test_toy_iterate_equals_unfused_path():
 def test_heavy_top_gauss2_iterate_and_runs(compile_model, tau):
     integ = compile_model(HEAVY_TOP, tableau="gauss2", tau=tau, rkmk="exact", backend="python")
     mod = load(integ.module_dir)
-    kern = integ._b._newton
+    kern = integ.engine.backend._newton
     assert kern.iterate is not None
     g0, xi0 = rotvec([0.3, 0.2, 0.0]), [0.2, 1.0, 3.0]
     runs = []

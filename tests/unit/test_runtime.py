@@ -108,7 +108,7 @@ def test_non_finite_values_give_code_2_in_both_backends():
     for backend in ("c", "python"):
         it = integrator(backend)
         opts = newton.NewtonOptions(1e-14, 50)
-        code, g1, *_ = it._b.step(G0.ravel(), XI0, np.array([0.1]), np.full(3, 1e200), opts)
+        code, g1, *_ = it.engine.backend.step(G0.ravel(), XI0, np.array([0.1]), np.full(3, 1e200), opts)
         assert code == 2 and g1 is None
         with pytest.raises(ConvergenceError, match="non-finite"):
             it.step(G0, XI0, 0.1, z=np.full(3, 1e200))
@@ -283,5 +283,5 @@ def test_newton_settings_are_one_keyword_object():
     with pytest.raises(TypeError, match="unexpected keyword argument 'tolerance'"):
         NewtonOptions(tolerance=1e-3)
     # None is the defaults; step resolves simplified=None to full Newton, runs to the module's
-    assert it._options(None) == NewtonOptions(1e-14, 50, it.simplified_default, True)
-    assert it._options(NewtonOptions(maxit=7), full=True) == NewtonOptions(1e-14, 7, False, True)
+    assert it.engine.options(None) == NewtonOptions(1e-14, 50, it.simplified_default, True)
+    assert it.engine.options(NewtonOptions(maxit=7), full=True) == NewtonOptions(1e-14, 7, False, True)

@@ -1,0 +1,120 @@
+"""The states output: runs that keep the state (g_k, p_k) every ``every`` steps, as
+Trajectory (hpgen.runtime.trajectory): Integrator.simulate, stream and simulate_batch on
+the run engine (hpgen.runtime.engine). The backend calls are ``advance`` (hpgen_advance)
+and, for ensembles, ``simulate_batch``; simulate takes the C backend's fast path
+(hpgen.runtime.prologue) when it applies. numpy and the standard library only.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .. import abi
+from .args import _error, _fits, _int
+from .engine import Engine, Part, RunArgs, RunStart
+from .inputs import check_t0
+from .progress import bar as progress_bar
+from .trajectory import Trajectory
+
+
+class States:
+    """The states output of one run, in chunks of at most ``chunk`` steps."""
+
+    def __init__(self, engine: Engine, s: RunStart, chunk: int):
+        self.engine, self.s, self.chunk = engine, s, chunk
+
+    def span(self, k, first):
+        if not first and k >= self.s.steps:
+            return None
+        return (min(self.chunk, self.s.steps - k),)
+
+    def advance(self, run, span) -> Part:
+        s = self.s
+        done, g_rec, p_rec, st = self.engine.backend.advance(run, s.h, span[0], s.every,
+                                                             s.opts)
+        return Part(done, (g_rec, p_rec), st)
+
+    def trajectory(self, k, first, part, t_start) -> Trajectory:
+        """The Trajectory of one part (the first prepended with the start, record 0)."""
+        s = self.s
+        g_rec, p_rec = part.data
+        if first:
+            g_rec = np.concatenate([s.g0.reshape(1, -1), g_rec])
+            p_rec = np.concatenate([s.mu0.reshape(1, -1), p_rec])
+        tc = (k // s.every + (0 if first else 1)) * s.every * s.h
+        return records(self.engine, g_rec, p_rec, part.status, s.h, s.every,
+                       t_start + tc if t_start else tc, s.inputs)
+
+
+def records(engine: Engine, g_rec, p_rec, st, h, every, t0, inputs=None) -> Trajectory:
+    """Trajectory of flat column-major records starting at time t0; error set (and its
+    .partial) when the status is a failure."""
+    K, n = len(p_rec), engine.n
+    g = np.ascontiguousarray(g_rec.reshape(K, n, n).transpose(0, 2, 1))
+    err = None
+    if st["code"] != abi.OK:
+        hint = ""
+        if st["code"] == abi.DOMAIN and st["iterations"] == 0 and t0 == 0.0:
+            hint = engine.first_step.domain_hint(g_rec[0], p_rec[0], None, h)
+        err = _error(st["code"], st["step"], st["step"] * h, st["residual"],
+                     st["iterations"], hint)
+    # t0 + (k every) h; arange(0, K every, every) is arange(K) * every, and adding
+    # t0 = 0.0 to these non-negative numbers changes no bit
+    t = np.arange(0, K * every, every) * h
+    traj = Trajectory(t=t0 + t if t0 else t, g=g, mu=np.array(p_rec), h=h,
+                      every=every, partial=err is not None, error=err,
+                      newton_iterations=int(st["total_iterations"]),
+                      jacobians=int(st["jacobians"]), integrator=engine.owner, inputs=inputs)
+    if err is not None:
+        err.partial = traj
+    return traj
+
+
+def trajectory(engine: Engine, done, g_rec, p_rec, st, h, every, inputs=None,
+               t0=0.0) -> Trajectory:
+    """The Trajectory of a whole run's records (record 0 the start), ``done`` steps."""
+    K = done // every + 1
+    return records(engine, np.asarray(g_rec)[:K], np.asarray(p_rec)[:K], st, h, every, t0,
+                   inputs)
+
+
+def stream(engine: Engine, a: RunArgs, chunk=100_000):
+    """Integrator.stream: a Trajectory per chunk; raises a failed chunk's error."""
+    chunk = _int(chunk, "chunk", 1)
+    s = engine.prepare(a)
+    yield from _pieces(engine, s, chunk, check_t0(a.t0))
+
+
+def _pieces(engine: Engine, s: RunStart, chunk: int, t_start: float):
+    out = States(engine, s, chunk)
+    for k, first, part in engine.parts(out, s):
+        traj = out.trajectory(k, first, part, t_start)
+        if traj.error is not None:
+            raise traj.error
+        yield traj
+
+
+def simulate(engine: Engine, a: RunArgs) -> Trajectory:
+    """Integrator.simulate's generic path (every module, backend and argument): the run in
+    one piece."""
+    s = engine.prepare(a)
+    _fits(s.steps // s.every + 1, engine.n * engine.n + engine.d, "simulate")
+    return next(_pieces(engine, s, max(s.steps, 1), check_t0(a.t0)))
+
+
+def simulate_batch(engine: Engine, a: RunArgs, threads=None, progress=None,
+                   lanes=True) -> list:
+    """Integrator.simulate_batch: B Trajectories from one backend call per thread slice."""
+    engine.require_c("simulate_batch")
+    e = engine.prepare_batch(a)
+    threads = engine.threads(threads)
+    runs, inputs = e.members, e.inputs
+    _fits(len(runs) * (e.steps // e.every + 1), engine.n * engine.n + engine.d,
+          "simulate_batch")
+    with progress_bar(len(runs), "simulate_batch", "member", progress) as bar:
+        done, g_rec, p_rec, sts = engine.backend.simulate_batch(
+            [s.g0 for s in runs], [s.mu0 for s in runs], e.h, [s.z0 for s in runs], e.steps,
+            e.every, e.opts, threads, inputs, bar, lanes=bool(lanes))
+    t0 = check_t0(a.t0)
+    return [trajectory(engine, int(done[b]), g_rec[b], p_rec[b], sts[b], e.h, e.every,
+                       None if inputs is None else inputs[b], t0)
+            for b in range(len(runs))]
