@@ -123,6 +123,7 @@ def load(path, backend=None, *, cc=None, cflags=None) -> Integrator:
     backend = meta["backend"] if backend is None else backend
     if backend == "python":
         check_sources(module_dir)     # the C backend's build_library checks them too
+    impl: CBackend | PythonBackend
     if backend == "c":
         impl = CBackend(module_dir, meta, cc=cc, cflags=cflags)
     elif backend == "python":
