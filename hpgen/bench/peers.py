@@ -23,7 +23,7 @@ import time
 
 import numpy as np
 
-from .measure import Point, measure, thin
+from .measure import Point, fixed_note, measure, steps_for, thin
 from .rigid import FAMILIES
 
 ATOL_FACTOR = 1e-3
@@ -34,16 +34,6 @@ CVODES_MAX_STEPS = 10 ** 7
 RIGID_PEERS = FAMILIES
 PEERS = ("DOP853", "RK45", "cvodes-bdf", "cvodes-adams", "collocation", "RK4-numpy",
          "RK4-C") + RIGID_PEERS
-
-
-def steps_for(T, h):
-    """(steps, h_used = T / steps) with steps = max(1, round(T / h))."""
-    steps = max(1, int(round(T / h)))
-    return steps, T / steps
-
-
-def _fixed_note(h, h_used):
-    return [f"h adjusted to T/steps = {h_used:.6g}"] if abs(h_used - h) > 1e-9 * h else []
 
 
 def rk4_numpy(f, y0, h, steps, every=None):
@@ -91,7 +81,7 @@ def rk4_points(pb, y_ref, crk4, hs, timing, samples, which):
             def timed(hu=hu, steps=steps):
                 return rk4_numpy(crk4.f, pb.y0, hu, steps)[1], {"steps": steps,
                                                               "f_evals": 4 * steps}
-        p.notes += _fixed_note(h, hu)
+        p.notes += fixed_note(h, hu)
         out.append(measure(pb, y_ref, p, timing, timed, sampled))
     return out
 
@@ -176,6 +166,6 @@ def collocation_points(pb, y_ref, hs, timing, samples):
 
         def timed(I_end=I_end, N=N):
             return np.array(I_end(x0=pb.y0)["xf"]).ravel(), {"steps": N}
-        p.notes += _fixed_note(h, hu)
+        p.notes += fixed_note(h, hu)
         out.append(measure(pb, y_ref, p, timing, timed, sampled))
     return out

@@ -13,8 +13,7 @@ from __future__ import annotations
 import time
 
 from ..errors import ModelError
-from .measure import FAILURES, Point, measure
-from .peers import _fixed_note, steps_for
+from .measure import FAILURES, Point, fixed_note, measure, steps_for
 
 #: the default grid: (tableau, tau, rkmk)
 DEFAULT_SCHEMES = (("stormer-verlet", "cay", "truncated"), ("gauss2", "exp", "exact"),
@@ -69,7 +68,7 @@ def hpgen_points(pb, y_ref, schemes, hs, timing, samples, cache_dir=None, log=No
             every = max(1, steps // samples)
             p = Point(name + " (C)", name, "hpgen", "h", hu, setup_s=setup,
                       setup_note=f"hpgen.compile, {how}, in this process")
-            p.notes += _fixed_note(h, hu)
+            p.notes += fixed_note(h, hu)
 
             def sampled(hu=hu, steps=steps, every=every):
                 tr = integ.simulate(h=hu, steps=steps, every=every, **kw0)
