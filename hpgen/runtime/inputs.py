@@ -75,8 +75,9 @@ def check_params(open_meta, params) -> list:
     return flat
 
 
-def check_u(open_meta, u, steps: int) -> list:
-    """The input rows: [row] for a constant u (m,), steps rows for u (steps, m)."""
+def check_u(open_meta, u, steps: int | None) -> list:
+    """The input rows: [row] for a constant u (m,), steps rows for u (steps, m); ``steps``
+    None: one step (``Integrator.step``), which takes u of shape (m,) only."""
     m = 0 if open_meta is None else len(open_meta["inputs"])
     if m == 0:
         if u is not None:
@@ -84,17 +85,32 @@ def check_u(open_meta, u, steps: int) -> list:
                              "file's inputs)", field="u")
         return [[]]
     names = ", ".join(open_meta["inputs"])
+    shapes = f"({m},)" if steps is None else f"({m},) or (steps, {m})"
     if u is None:
         raise ArgumentError(f"u is required: the model has {m} control input(s) ({names}); pass "
-                         f"an array of shape ({m},) or (steps, {m})", field="u")
-    a = np.asarray(u, dtype=object)
-    if a.ndim > 1 and steps == 0:
+                         f"an array of shape {shapes}", field="u")
+    try:
+        ndim = np.ndim(u)
+    except ValueError:                      # ragged: _array reports it
+        ndim = 2
+    if ndim > 1 and steps == 0:
         raise ArgumentError(f"u with one row per step needs steps >= 1 (a run of 0 steps still "
                             f"records its start, which takes a constant u of shape ({m},))",
                             field="u")
-    shape = (m,) if a.ndim <= 1 else (steps, m)
-    what = f"the inputs ({names}: ({m},) constant or ({steps}, {m}) one row per step)"
-    a = _array(u, shape, "u", what)
+    shape: tuple[int, ...]
+    if steps is None or ndim <= 1:
+        shape, what = (m,), f"the inputs ({names}: shape ({m},)" + \
+            (")" if steps is None else f" constant or ({steps}, {m}) one row per step)")
+    else:
+        shape = (steps, m)
+        what = f"the inputs ({names}: ({m},) constant or ({steps}, {m}) one row per step)"
+    a = _array(u, shape, "u", what, finite=False)
+    bad = np.argwhere(~np.isfinite(a))
+    if len(bad):
+        where = tuple(int(i) for i in bad[0])
+        step = "" if a.ndim == 1 else f"step {where[0]}, "
+        raise ArgumentError(f"{step}input {open_meta['inputs'][where[-1]]} is not finite "
+                            f"(u[{', '.join(map(str, where))}] = {a[where]})", field="u")
     return [a.tolist()] if a.ndim == 1 else a.tolist()
 
 
@@ -119,9 +135,10 @@ def batch_inputs(open_meta, B: int, steps: int, u=None, params=None, t0=0.0) -> 
             for b in range(B)]
 
 
-def step_inputs(open_meta, steps: int, u=None, params=None, t0=0.0) -> StepInputs | None:
-    """The checked StepInputs of a run of ``steps`` steps, or None for a closed module
-    (which takes no u and no params)."""
+def step_inputs(open_meta, steps: int | None, u=None, params=None,
+                t0=0.0) -> StepInputs | None:
+    """The checked StepInputs of a run of ``steps`` steps (None: one step, u of shape (m,)),
+    or None for a closed module (which takes no u and no params)."""
     t0 = check_t0(t0)
     flat = check_params(open_meta, params)
     rows = check_u(open_meta, u, steps)

@@ -133,7 +133,7 @@ class Integrator(StateMapsMixin, BatchMixin, FirstStepMixin, SectionsMixin, Reco
         """
         gf, p = self._g(g), self._v(p, "p")
         h = _step_size(h)
-        inputs = step_inputs(self.open, 1, u, params, t)
+        inputs = step_inputs(self.open, None, u, params, t)
         hv = np.array([h] if inputs is None else inputs.hv(h, 0))
         xi = None
         opts = self._options(newton, full=True)
