@@ -56,7 +56,7 @@ def partial_dir(out) -> Path:
 
 def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
                   chunk=1_000_000, resume=False, resume_hint="", directions=None, *,
-                  newton=None, progress=False):
+                  newton=None, progress=False, u=None):
     """Run and save the module's record row (``integ.record_names``, one array each, and t);
     returns (path, summary): samples written, steps (done), resumed_at (steps the run
     started from: 0, or the resumed run's steps done), energy_max_change (max |E - E0|, if
@@ -72,7 +72,7 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     resume_hint: the command that resumes, written into the manifest and the messages.
     newton: the run's hpgen.runtime.newton.NewtonOptions (None: the module's defaults).
     progress: a bar of the steps done, per chunk (hpgen.runtime.progress; None: when stderr
-    is a terminal).
+    is a terminal). u: the control inputs of a model with inputs, as for ``simulate``.
     On a failed step the records before it are saved (partial=True) and the
     ConvergenceError is re-raised with ``.saved = (path, samples)``; on KeyboardInterrupt
     the completed chunks are saved (partial=True) and it is re-raised with ``.saved =
@@ -81,8 +81,11 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     parts = partial_dir(path)
     chunk = _int(chunk, "chunk", 1)
     h, steps, every, opts, gf, mu0, z0, inputs = integ._prepare(g0, h, steps, xi0, mu0, every,
-                                                                newton)
+                                                                newton, u=u)
     ident = _identity(integ, h, steps, every, opts, gf, mu0, z0)
+    if u is not None:                     # a resumed run must have the same inputs
+        ident["u_sha256"] = hashlib.sha256(
+            np.ascontiguousarray(inputs.rows, dtype=np.float64).tobytes()).hexdigest()
     removed = _remove_old_leftovers(path)
     with PartialFolder(parts, path) as folder:
         prog = (folder.resume if resume else folder.fresh)(ident, resume_hint)
