@@ -140,22 +140,10 @@ def _scheme_line(module_dir, args) -> str:
 
 
 def controls_of(args, model, file):
-    """The ControlSpec of a run (hpgen.model.controls): --u, else the scene's u; None for a
-    model without inputs. A model with inputs and no u: ModelError naming scene.u."""
-    from .model.controls import parse_cli_controls
-    given = getattr(args, "u", None)
-    if given is not None:
-        exact = {k: v for k, v in model.parameters}
-        return parse_cli_controls(given, model.inputs, exact, model.group,
-                                  getattr(args, "u_interpolation", None))
-    if getattr(args, "u_interpolation", None) is not None:
-        raise ModelError("--u-interpolation goes with --u FILE", field="option u-interpolation")
-    spec = None if model.scene is None else model.scene.u
-    if spec is None and model.inputs:
-        raise ModelError(f"the model has control inputs ({', '.join(model.inputs)}); give them "
-                         "as scene.u in the model file or with --u", file=str(file),
-                         field="scene.u")
-    return spec
+    """The ControlSpec of a run: --u, else the scene's u (hpgen.model.controls.controls_for)."""
+    from .model.controls import controls_for
+    return controls_for(model, getattr(args, "u", None), getattr(args, "u_interpolation", None),
+                        file)
 
 
 def cmd_run(args) -> int:

@@ -233,6 +233,32 @@ def parse_cli_controls(tokens, names, parameters, group, interpolation=None) -> 
     return parse_controls(raw, names, parameters, group, field="option u")
 
 
+def controls_for(model, tokens=None, interpolation=None, file=None):
+    """The ControlSpec of a command-line run: ``tokens`` (--u), else the scene's u; None
+    for a model without inputs. A model with inputs and no u: ModelError naming scene.u."""
+    if tokens is not None:
+        exact = {k: v for k, v in model.parameters}
+        return parse_cli_controls(tokens, model.inputs, exact, model.group, interpolation)
+    if interpolation is not None:
+        raise ModelError("--u-interpolation goes with --u FILE", field="option u-interpolation")
+    spec = None if model.scene is None else model.scene.u
+    if spec is None and model.inputs:
+        raise ModelError(f"the model has control inputs ({', '.join(model.inputs)}); give them "
+                         "as scene.u in the model file or with --u", file=None if file is None
+                         else str(file), field="scene.u")
+    return spec
+
+
+def member_rows(spec, h, steps):
+    """u for a sweep of members with steps h (a number, or one per member): shared rows,
+    or (B, steps, m) when u depends on the time and the members' h differ."""
+    hs = np.atleast_1d(np.asarray(h, dtype=np.float64))
+    shared = spec.kind == "constant" or (spec.kind == "table" and spec.times is None)
+    if len(hs) == 1 or shared or len(set(hs.tolist())) == 1:
+        return spec.rows(float(hs[0]), steps)
+    return np.stack([np.atleast_2d(spec.rows(float(x), steps)) for x in hs])
+
+
 # ---- tables ------------------------------------------------------------------------------
 def read_table(path: Path, names) -> tuple:
     """(table (rows, m), times (rows,) or None) of a .npz or .csv file (module docstring)."""
