@@ -1,6 +1,9 @@
 """The peers a user would pick instead of hpgen, all on the Problem's y' = f(y).
 
 Families (names used by --peers, the CSV ``family`` column and the comparisons):
+A forced or time-dependent model's f depends on t (the continuous forced Euler-Poincare
+equations with the inputs u constant, hpgen.bench.problem); every peer evaluates it at its
+own stage times.
 - ``DOP853``, ``RK45``: scipy.integrate.solve_ivp over a grid of rtol, atol = rtol *
   ATOL_FACTOR; f is the C vector field (hpgen.bench.crk4, via ctypes: the cheapest f Python
   can call). Samples: the accepted steps (solve_ivp without t_eval, no dense output).
@@ -37,15 +40,17 @@ PEERS = ("DOP853", "RK45", "cvodes-bdf", "cvodes-adams", "collocation", "RK4-num
 
 
 def rk4_numpy(f, y0, h, steps, every=None):
-    """(records or None, last state): the arithmetic of rk4.c.j2, in the same order."""
+    """(records or None, last state): the arithmetic of rk4.c.j2, in the same order;
+    ``f(y, t)``, t_k = k h."""
     y = np.array(y0, dtype=float)
     hh, h6 = 0.5 * h, h / 6.0
     rec = [y] if every else None
     for k in range(1, steps + 1):
-        k1 = f(y)
-        k2 = f(y + hh * k1)
-        k3 = f(y + hh * k2)
-        k4 = f(y + h * k3)
+        t = (k - 1) * h
+        k1 = f(y, t)
+        k2 = f(y + hh * k1, t + hh)
+        k3 = f(y + hh * k2, t + hh)
+        k4 = f(y + h * k3, t + h)
         y = y + h6 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
         if not np.isfinite(y).all():
             break
@@ -106,8 +111,9 @@ def scipy_points(pb, y_ref, crk4, method, rtols, timing, samples):
 
 def _casadi_integrator(pb, plugin, grid, opts):
     import casadi as ca
-    return ca.integrator(f"bench_{plugin}", plugin, {"x": pb.y_sym, "ode": pb.ydot_sym}, 0.0,
-                         list(grid), opts)
+    return ca.integrator(f"bench_{plugin}", plugin,
+                         {"t": pb.t_sym, "x": pb.y_sym, "ode": pb.ydot_sym}, 0.0, list(grid),
+                         opts)
 
 
 def cvodes_points(pb, y_ref, lmm, tols, timing, samples):

@@ -49,7 +49,7 @@ def rigid_parameters(eq):
     positive, l(R, xi) - l(R, 0) is the kinetic energy alone, and l(R, 0) is affine in R with
     a gradient on the third row only."""
     import casadi as ca
-    if eq.model.group.name != "SO3":
+    if eq.model.group.name != "SO3" or eq.model.open_system:     # forces, inputs, t
         return None
     g, xi = ca.SX.sym("g", 3, 3), ca.SX.sym("xi", 3)
     L = eq.lag(g, xi)

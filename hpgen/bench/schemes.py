@@ -48,6 +48,8 @@ def hpgen_points(pb, y_ref, schemes, hs, timing, samples, cache_dir=None, log=No
     out = []
     kw0 = {"g0": pb.g0}
     kw0.update({"xi0": pb.xi0} if pb.xi0 is not None else {"mu0": pb.mu0})
+    if pb.u is not None:              # the inputs, held over every step (t0 = 0)
+        kw0["u"] = pb.u
     for tab, tau, rkmk in schemes:
         name = scheme_name(tab, tau, rkmk)
         t0 = time.perf_counter()
