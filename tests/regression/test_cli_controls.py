@@ -128,3 +128,24 @@ def test_sweep_cli_and_api_take_u(quad, tmp_path, cache_dir, capsys):
         hpgen.sweep(integ, g0=sc.g0, xi0=W0, h=sc.h, steps=STEPS, u=np.ones((2, 4)))
     with pytest.raises(hpgen.ModelError, match="strings"):
         hpgen.sweep(integ, g0=sc.g0, xi0=W0, h=sc.h, steps=STEPS, u=["1", "2", "3", "4"])
+
+
+def test_sweep_grid_gives_u_per_member(quad, tmp_path, cache_dir, capsys):
+    integ, model = quad
+    sc = model.scene
+    W0 = np.array([sc.xi0, np.array(sc.xi0) * 0.5])
+    Um = [[2.5, 2.4, 2.45, 2.5], [0.0, 0.0, 0.0, 0.0]]
+    grid = tmp_path / "grid.yaml"
+    grid.write_text(f"xi0: {W0.tolist()}\nsteps: 20\nu: {Um}\n")
+    out = tmp_path / "s.npz"
+    assert main(["sweep", QUAD, "--grid", grid, "--out", out, "--no-progress",
+                 "--cache-dir", cache_dir]) == 0, capsys.readouterr().err
+    with np.load(out) as z:
+        for i in range(2):
+            one = integ.simulate(sc.g0, sc.h, 20, xi0=W0[i], u=Um[i], every=sc.every)
+            assert np.array_equal(z["mu"][i], one.mu)
+    grid.write_text(f"xi0: {W0.tolist()}\nsteps: 20\nu: [[1, 2, 3], [1, 2, 3]]\n")
+    assert main(["sweep", QUAD, "--grid", grid, "--out", out, "--no-progress",
+                 "--cache-dir", cache_dir]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and str(grid) in err and "u:" in err and "one per member" in err
