@@ -139,13 +139,6 @@ def _scheme_line(module_dir, args) -> str:
             f"({'; '.join(src)})")
 
 
-def controls_of(args, model, file):
-    """The ControlSpec of a run: --u, else the scene's u (hpgen.model.controls.controls_for)."""
-    from .model.controls import controls_for
-    return controls_for(model, getattr(args, "u", None), getattr(args, "u_interpolation", None),
-                        file)
-
-
 def cmd_run(args) -> int:
     from .api import build_module
     from .runtime import load
@@ -157,7 +150,8 @@ def cmd_run(args) -> int:
     sc = model.scene
     h = sc.h if args.h is None else args.h
     steps = sc.steps if args.steps is None else args.steps
-    controls = controls_of(args, model, args.model)
+    from .model.controls import controls_for
+    controls = controls_for(model, args.u, args.u_interpolation, args.model)
     u = None if controls is None else controls.rows(h, steps)
     module_dir = build_module(args.model, _options(args))
     integ = load(module_dir, backend=args.backend)
@@ -351,8 +345,10 @@ def cmd_check(args) -> int:
     """``hpgen check``: print the table (hpgen.analysis.check); exit 3 if a check fails."""
     from .analysis.check import run_check
     from .analysis.check_report import format_report, write_json
+    from .model.controls import controls_for
     model = _load_model(args.model)
-    controls = controls_of(args, model, args.model) if model.inputs or args.u else None
+    controls = controls_for(model, args.u, args.u_interpolation, args.model) \
+        if model.inputs or args.u else None
     report = run_check(args.model, scheme=args.scheme, tableau=args.tableau, tau=args.tau,
                        rkmk=args.rkmk, h=args.h, steps=args.steps, backend=args.backend,
                        cache_dir=args.cache_dir, order_horizon=args.order_horizon,
