@@ -96,3 +96,11 @@ def test_a_time_varying_scene_u_is_refused(model_file, cache_dir):
     from hpgen.errors import ModelError
     with pytest.raises(ModelError, match="constant u"):
         Problem(model_file(FORCED.replace("u: [0.3]", 'u: ["0.3*t"]')))
+
+
+def test_cli_bad_u_is_one_line_exit_2(model_file, tmp_path, capsys):
+    from hpgen.cli import main
+    code = main(["bench", model_file(FORCED), "--u", "1", "2", "--out", tmp_path / "b"])
+    err = capsys.readouterr().err
+    assert code == 2 and err.count("\n") == 1 and "option u" in err and "shape (1,)" in err
+    assert not (tmp_path / "b").exists()
