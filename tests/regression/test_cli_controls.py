@@ -149,3 +149,25 @@ def test_sweep_grid_gives_u_per_member(quad, tmp_path, cache_dir, capsys):
                  "--cache-dir", cache_dir]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and str(grid) in err and "u:" in err and "one per member" in err
+
+
+def test_chunked_run_and_sections_take_u(quad, tmp_path, cache_dir, capsys):
+    """Chunks index the rows of u by the global step (the file equals the one-call run's),
+    and a scene with a section runs with the same u."""
+    integ, model = quad
+    code, one = _run(tmp_path, cache_dir, "one")
+    code2, chunked = _run(tmp_path, cache_dir, "chunked", "--chunk", "7")
+    assert code == code2 == 0, capsys.readouterr().err
+    with np.load(one) as a, np.load(chunked) as b:
+        assert np.array_equal(a["mu"], b["mu"]) and np.array_equal(a["work"], b["work"])
+    path = tmp_path / "quad_section.yaml"
+    path.write_text(QUAD.read_text().replace("  record: [g, mu, energy, work]\n",
+                                             "  section: \"-R[0, 0]\"\n"))
+    out = tmp_path / "sec.npz"
+    assert main(["run", path, "--out", out, "--steps", 400, "--no-plot", "--cache-dir",
+                 cache_dir]) == 0, capsys.readouterr().err
+    sc = load_model(path).scene
+    ref = hpgen.compile(path, cache_dir=cache_dir).sections(
+        sc.g0, sc.h, 400, xi0=sc.xi0, u=sc.u.rows(sc.h, 400))
+    with np.load(out) as z:
+        assert len(ref) and np.array_equal(z["mu"], ref.mu)
