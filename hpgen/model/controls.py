@@ -227,8 +227,8 @@ def parse_cli_controls(tokens, names, parameters, group, interpolation=None) -> 
     raw = []
     for tok in tokens:
         try:
-            raw.append(float(tok) if tok.strip().lower() not in ("true", "false") else tok)
-        except ValueError:
+            raw.append(float(tok))
+        except ValueError:              # an expression of t
             raw.append(tok)
     return parse_controls(raw, names, parameters, group, field="option u")
 
