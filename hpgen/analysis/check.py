@@ -44,6 +44,8 @@ Figures (the keys of the JSON report):
   the scheme's order: informative, not a pass criterion); ``symplectic`` has no states
   (None: a forced flow is not symplectic). A model that is open without forces (t,
   runtime parameters) is checked as a closed one, the step vector at the state's time.
+- ``inputs``: None without control inputs, else {names, kind (constant, expressions, table,
+  zero), source (scene.u, --u, the default u = 0)}.
 - ``checks``: {symplectic, group, momentum (None unless l is left-invariant)} booleans;
   ``passed``: all of them that apply. Also model, file, group, scheme, integrator, h,
   steps, duration, hpgen_version, seconds.
@@ -327,6 +329,11 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
         "symplectic": {"defect": sym_abs, "relative": sym_rel, "tolerance": tol,
                        "states": states, "form": FORM},
         "checks": checks,
+        "inputs": None if not model.inputs else {
+            "names": list(model.inputs),
+            "kind": "zero" if U is None else controls.kind,
+            "source": "the default u = 0" if U is None else
+            ("--u" if controls.where[1].startswith("option") else controls.where[1])},
         "passed": all(v for v in checks.values() if v is not None),
         "seconds": time.perf_counter() - t_start,
     }

@@ -90,6 +90,8 @@ def test_check_holds_u_over_the_steps_and_keeps_the_order(cache_dir):
     model = load_model(QUAD)
     rep = run_check(QUAD, h=0.05, steps=20, cache_dir=cache_dir, controls=model.scene.u)
     assert abs(rep["order"]["observed"][-1] - 4) < 0.25, rep["order"]
+    assert rep["inputs"] == {"names": list(model.inputs), "kind": "expressions",
+                             "source": "scene.u"}
     zero = run_check(QUAD, h=0.05, steps=20, cache_dir=cache_dir,
                      controls=model.scene.u.__class__("constant", model.inputs,
                                                       values=(0.0,) * 4))
