@@ -88,19 +88,6 @@ class ControlSpec:
             out = self._of_time(t, h)
         return out[0] if steps == 0 else out
 
-    def on_grid(self, h: float, t0: float = 0.0) -> "ControlSpec":
-        """The same u as a function of time: a table of one row per step becomes the timed
-        staircase of the run with step h (row k from t0 + k h on); the others unchanged.
-        Used where one u serves runs of several steps (the order study of hpgen check)."""
-        if self.kind != "table" or self.times is not None:
-            return self
-        times = t0 + np.arange(len(self.table)) * float(h)
-        if h < 0:
-            return ControlSpec("table", self.names, self.where, table=self.table[::-1],
-                               times=times[::-1], interpolation="hold", source=self.source)
-        return ControlSpec("table", self.names, self.where, table=self.table, times=times,
-                           interpolation="hold", source=self.source)
-
     def _of_time(self, t, h) -> np.ndarray:
         if self.kind == "expressions":
             cols = []

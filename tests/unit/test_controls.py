@@ -74,13 +74,6 @@ def test_tables_per_step_and_timed(quad, tmp_path):
             hold.rows(0.1, 3, t0=-0.1)
 
 
-def test_on_grid_turns_steps_into_a_staircase(quad, tmp_path):
-    U = np.arange(12.0).reshape(3, 4)
-    np.savez(tmp_path / "u.npz", u=U)
-    s = _cli(quad, str(tmp_path / "u.npz")).on_grid(0.2)
-    assert np.array_equal(s.rows(0.1, 6), np.repeat(U, 2, axis=0))
-
-
 @pytest.mark.parametrize("text, parts", [
     ("T1,T2,T3\n1,2,3\n", ["row 0", "expected the columns T1, T2, T3, T4"]),
     ("1,2,3,4\n1,2,x,4\n", ["row 1", "expected a number, got 'x'"]),
