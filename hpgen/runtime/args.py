@@ -35,7 +35,9 @@ def _non_numeric(x, a):
     other objects (a list's booleans included, which numpy would turn into integers)."""
     kind = a.dtype.kind
     if kind in "iu" and not isinstance(x, np.ndarray) and a.size:
-        a = np.asarray(x, dtype=object)              # a list may hide True among ints
+        if a.ndim == 1 and isinstance(x, (list, tuple)):     # a list may hide True among ints
+            return "booleans" if any(isinstance(v, (bool, np.bool_)) for v in x) else None
+        a = np.asarray(x, dtype=object)
         kind = "O"
     if kind in "fiu":
         return None
