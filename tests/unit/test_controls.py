@@ -132,3 +132,19 @@ def test_u_is_not_in_the_module_hash(tmp_path):
     other = text.replace('u: ["2.4525 + 0.2*sin(3*t)"', 'u: ["1.0"')
     assert other != text
     assert normalized_model(text) == normalized_model(other)
+
+
+def test_scene_table_is_relative_to_the_model_file(tmp_path, monkeypatch):
+    (tmp_path / "m").mkdir()
+    U = np.arange(8.0).reshape(2, 4)
+    np.savetxt(tmp_path / "m" / "thrust.csv", np.c_[[0.0, 1.0], U], delimiter=",",
+               header="t,T1,T2,T3,T4", comments="")
+    text = QUAD.read_text().replace(
+        'u: ["2.4525 + 0.2*sin(3*t)", 2.4525, "2.4525 + 0.1*cos(2*t)", 2.4525]',
+        "u: {table: thrust.csv, interpolation: linear}")
+    (tmp_path / "m" / "quad.yaml").write_text(text)
+    monkeypatch.chdir(tmp_path)
+    spec = load_model(Path("m") / "quad.yaml").scene.u
+    assert spec.kind == "table" and spec.interpolation == "linear"
+    assert np.allclose(spec.rows(0.25, 3), [U[0], 0.75 * U[0] + 0.25 * U[1], 0.5 * (U[0] + U[1])],
+                       rtol=0, atol=1e-15)
