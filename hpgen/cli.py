@@ -31,6 +31,18 @@ def _add_options(p):
     p.add_argument("--cache-dir", help="build cache directory (default ~/.cache/hpgen)")
 
 
+def _add_u_options(p):
+    """--u and --u-interpolation: the control inputs of a model with ``inputs:``, given on
+    the command line (they replace the scene's u; hpgen.model.controls)."""
+    p.add_argument("--u", nargs="+", metavar="U",
+                   help="control inputs (replace scene.u): m numbers (a constant), m entries "
+                   "each a number or a quoted expression of t (u_k = u(t_k), held over step "
+                   "k), or one .npz / .csv table (one row per step, or with a time column t)")
+    p.add_argument("--u-interpolation", choices=("hold", "linear"),
+                   help="how a table with a time column gives u(t_k): hold (default, the "
+                   "last row at or before t_k) or linear")
+
+
 def _parser():
     ap = argparse.ArgumentParser(prog="hpgen", description=__doc__.splitlines()[0])
     ap.add_argument("--version", action="version", version=f"hpgen {__version__}")
@@ -53,6 +65,7 @@ def _parser():
     r.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     r.add_argument("--no-plot", action="store_true",
                    help="do not write the PNGs of the run next to --out (see hpgen plot)")
+    _add_u_options(r)
     sub.add_parser("list", help="groups, tableaus and chart maps")
     k = sub.add_parser("check", help="order, energy, momentum, group, symplecticity checks",
                        description="observed order, energy, momentum map, group and "
@@ -68,10 +81,11 @@ def _parser():
     k.add_argument("--states", type=int, default=4,
                    help="states along the run where the symplecticity defect is computed")
     k.add_argument("--json", help="also write the figures to this JSON file")
+    _add_u_options(k)
     from .bench.cli import add_parser as _add_bench_parser
     _add_bench_parser(sub)
     from .ensemble.cli import add_parser as _add_sweep_parser
-    _add_sweep_parser(sub, _add_options)
+    _add_u_options(_add_sweep_parser(sub, _add_options))
     pl = sub.add_parser("plot", help="PNG figures of a saved run, section run or benchmark",
                         description="PNGs of what the file holds: energy error, momentum "
                         "change, group distance, records (a run), crossings (a section run), "
@@ -136,12 +150,15 @@ def cmd_run(args) -> int:
     sc = model.scene
     h = sc.h if args.h is None else args.h
     steps = sc.steps if args.steps is None else args.steps
+    from .model.controls import controls_for
+    controls = controls_for(model, args.u, args.u_interpolation, args.model)
+    u = None if controls is None else controls.rows(h, steps)
     module_dir = build_module(args.model, _options(args))
     integ = load(module_dir, backend=args.backend)
     print(_scheme_line(module_dir, args))
     out = Path(args.out or f"{model.name}.npz")
     if sc.section is not None or sc.section_every_t is not None:
-        return _run_sections(integ, model, sc, h, steps, out, args)
+        return _run_sections(integ, model, sc, h, steps, out, args, u)
     directions = None
     if "momentum" in integ.record_names:
         from .analysis.symmetry import conserved_directions
@@ -152,7 +169,7 @@ def cmd_run(args) -> int:
             path, summary = record_to_npz(integ, out, g0=sc.g0, h=h, steps=steps, xi0=sc.xi0,
                                           mu0=sc.mu0, every=sc.every, chunk=args.chunk,
                                           resume=args.resume, resume_hint=_resume_command(args),
-                                          directions=directions,
+                                          directions=directions, u=u,
                                           progress=False if args.no_progress else None)
     except ConvergenceError as e:
         return _failed(e, "samples")
@@ -291,7 +308,7 @@ def _resume_hint(parts) -> str:
         return "run the same command with --resume"
 
 
-def _run_sections(integ, model, sc, h, steps, out, args) -> int:
+def _run_sections(integ, model, sc, h, steps, out, args, u=None) -> int:
     """``hpgen run`` of a scene with a ``section``: only the crossings are kept (t, g, mu,
     step; see hpgen.runtime.trajectory.SectionCrossings), saved like a trajectory."""
     from .runtime.trajectory import npz_path, run_metadata, write_npz
@@ -305,7 +322,7 @@ def _run_sections(integ, model, sc, h, steps, out, args) -> int:
     try:
         with _sigterm_raises():
             cr = integ.sections(g0=sc.g0, h=h, steps=steps, xi0=sc.xi0, mu0=sc.mu0,
-                                chunk=args.chunk, every_t=sc.section_every_t)
+                                chunk=args.chunk, every_t=sc.section_every_t, u=u)
     except ConvergenceError as e:
         cr = e.partial
         if cr is None:
@@ -328,10 +345,14 @@ def cmd_check(args) -> int:
     """``hpgen check``: print the table (hpgen.analysis.check); exit 3 if a check fails."""
     from .analysis.check import run_check
     from .analysis.check_report import format_report, write_json
+    from .model.controls import controls_for
+    model = _load_model(args.model)
+    controls = controls_for(model, args.u, args.u_interpolation, args.model) \
+        if model.inputs or args.u else None
     report = run_check(args.model, scheme=args.scheme, tableau=args.tableau, tau=args.tau,
                        rkmk=args.rkmk, h=args.h, steps=args.steps, backend=args.backend,
                        cache_dir=args.cache_dir, order_horizon=args.order_horizon,
-                       n_states=args.states)
+                       n_states=args.states, controls=controls)
     print(format_report(report))
     if args.json:
         print(f"  figures -> {write_json(report, args.json)}")

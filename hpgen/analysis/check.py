@@ -34,7 +34,9 @@ Figures (the keys of the JSON report):
   relative, jacobian_norm, cond_J, kernel_mismatch}], form}: the defect
   max |Phi'^T Omega(p_1) Phi' - Omega(p_0)| of the one-step map's Jacobian in the
   left-trivialized chart (hpgen.analysis.symplectic), at ``n_states`` states along the run.
-- a forced model (``forces``; u = 0, the file's runtime parameters, t0 = 0):
+- a forced model (``forces``; the file's runtime parameters, t0 = 0; the inputs u from
+  ``controls``, else the scene's u, else u = 0, held over the steps of h: the runs with
+  h / 2^k hold the same piecewise-constant u(t), and DOP853 restarts at its jumps):
   ``energy`` is the energy-work balance (E - W) - E_0 (``balance`` true), W the forces'
   work by the node rule of hpgen.runtime.work; ``momentum.max_change`` for a left-invariant
   l is the forced momentum balance max |m_k - m_0 - int_0^t Ad*_{g^-1} f dt| (``balance``
@@ -42,6 +44,8 @@ Figures (the keys of the JSON report):
   the scheme's order: informative, not a pass criterion); ``symplectic`` has no states
   (None: a forced flow is not symplectic). A model that is open without forces (t,
   runtime parameters) is checked as a closed one, the step vector at the state's time.
+- ``inputs``: None without control inputs, else {names, kind (constant, expressions, table,
+  zero), source (scene.u, --u, the default u = 0)}.
 - ``checks``: {symplectic, group, momentum (None unless l is left-invariant)} booleans;
   ``passed``: all of them that apply. Also model, file, group, scheme, integrator, h,
   steps, duration, hpgen_version, seconds.
@@ -107,12 +111,13 @@ class _Hpgen:
         self.order = tab.order if self.rkmk == "exact" else min(tab.order, 2)
         self.info = {"tableau": tab.name, "tau": self.tau, "rkmk": self.rkmk,
                      "backend": backend, "module": self.integ.meta.get("module")}
-        op = self.integ.open          # an open model: u = 0, the file's params, t0 = 0
+        op = self.integ.open          # an open model: the file's params, t0 = 0
         self.u = None if op is None or not op["inputs"] else np.zeros(len(op["inputs"]))
         self.defaults = [] if op is None else [float(v) for v in op["defaults"]]
 
-    def simulate(self, g0, mu0, h, steps, every=1):
-        tr = self.integ.simulate(g0=g0, mu0=mu0, h=h, steps=steps, every=every, u=self.u)
+    def simulate(self, g0, mu0, h, steps, every=1, u=None):
+        u = self.u if u is None else u
+        tr = self.integ.simulate(g0=g0, mu0=mu0, h=h, steps=steps, every=every, u=u)
         return tr.g, tr.mu
 
     def map_jacobian(self, g, p, h, t=0.0):
@@ -130,7 +135,7 @@ class _Rkmk:
         self.info = {"name": "rkmk-rk4", "tau": "exp"}
         self.extra = {"cond_J": 1.0, "kernel_mismatch": 0.0}
 
-    def simulate(self, g0, mu0, h, steps, every=1):
+    def simulate(self, g0, mu0, h, steps, every=1, u=None):
         g, mu = self.rk.simulate(g0, mu0, h, steps)
         return g[::every], mu[::every]
 
@@ -205,8 +210,11 @@ def _positive(x, name):
 
 
 def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None, steps=None,
-              backend="c", cache_dir=None, order_horizon=None, n_states=4) -> dict:
-    """Run every check on the model file ``path``; returns the report (see module doc)."""
+              backend="c", cache_dir=None, order_horizon=None, n_states=4,
+              controls=None) -> dict:
+    """Run every check on the model file ``path``; returns the report (see module doc).
+    ``controls``: the inputs u of a model with inputs (hpgen.model.controls.ControlSpec;
+    default the scene's u, else u = 0)."""
     t_start = time.perf_counter()
     if scheme not in SCHEMES:
         raise ModelError(f"expected one of {', '.join(SCHEMES)}, got {scheme!r}",
@@ -225,6 +233,7 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     if isinstance(steps, bool) or not isinstance(steps, int) or steps < 1:
         raise ModelError(f"expected an integer >= 1, got {steps!r}", field="option steps")
     eq = ContinuousEquations(model)
+    controls = sc.u if controls is None else controls
     g0 = np.array(sc.g0, dtype=float)
     mu0 = (np.array(sc.mu0, dtype=float) if sc.mu0 is not None
            else eq.legendre(g0, np.array(sc.xi0, dtype=float)))
@@ -236,11 +245,20 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
                   "order_horizon")
     n_o = max(1, round(T / h))
     T = n_o * h
-    gT, muT = (a[0] for a in eq.reference(g0, mu0, [T], rtol=REFERENCE_RTOL))
+    # u held over the steps of h (rows U); a run with h / 2^k holds row j over its steps
+    # j 2^k .. (j + 1) 2^k - 1: the same piecewise-constant u(t), jumps on every grid
+    U = None if controls is None or not model.inputs else \
+        np.atleast_2d(controls.rows(h, max(steps, n_o)))
+
+    def u_of(k, N):
+        return None if U is None else (U[0] if len(U) == 1 else
+                                       np.repeat(U, 2 ** k, axis=0)[:N])
+    gT, muT = (a[0] for a in eq.reference(g0, mu0, [T], rtol=REFERENCE_RTOL, u_rows=U,
+                                          u_h=h))
 
     def error_at(k):            # error at T of the run with step h / 2^k
         N = n_o * 2 ** k
-        g, mu = sch.simulate(g0, mu0, h / 2 ** k, N, every=N)
+        g, mu = sch.simulate(g0, mu0, h / 2 ** k, N, every=N, u=u_of(k, N))
         return float(max(np.abs(g[-1] - gT).max(), np.abs(mu[-1] - muT).max()))
 
     expected, why = expected_order(model.left_invariant, sch.order,
@@ -251,13 +269,15 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
 
     # the run at h: energy (a forced model: E - W), momentum map (forced: its balance with
     # the spatial impulse), group defect
-    g, mu = sch.simulate(g0, mu0, h, steps)
+    g, mu = sch.simulate(g0, mu0, h, steps, u=u_of(0, steps))
     t = np.arange(len(g)) * h
     E, xi, f = [], None, []
     for gk, mk, tk in zip(g, mu, t):
         xi = eq.velocity(gk, mk, xi, t=tk) if model.open_system else eq.velocity(gk, mk, xi)
         E.append(eq.energy(gk, xi, t=tk) if model.open_system else eq.energy(gk, xi))
         if model.forced:
+            if U is not None:     # the input of the step that ends at node k (u_0 at 0)
+                eq.u = U[min(max(len(f) - 1, 0), len(U) - 1)]
             f.append(eq.applied(gk, xi, t=tk))
     m = np.array([eq.momentum(gk, mk) for gk, mk in zip(g, mu)])
     dE, dm = np.array(E) - E[0], m - m[0]
@@ -309,6 +329,11 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
         "symplectic": {"defect": sym_abs, "relative": sym_rel, "tolerance": tol,
                        "states": states, "form": FORM},
         "checks": checks,
+        "inputs": None if not model.inputs else {
+            "names": list(model.inputs),
+            "kind": "zero" if U is None else controls.kind,
+            "source": "the default u = 0" if U is None else
+            ("--u" if controls.where[1].startswith("option") else controls.where[1])},
         "passed": all(v for v in checks.values() if v is not None),
         "seconds": time.perf_counter() - t_start,
     }

@@ -79,6 +79,10 @@ def format_report(r: dict) -> str:
             f"{r['steps']} steps (T = {r['duration']:g})")
     lines = [head, f"  {'quantity':{w0}s}  {'value':{w1}s}  note"]
     lines += [f"  {a:{w0}s}  {b:{w1}s}  {n}" for a, b, n in rows]
+    if r.get("inputs"):
+        u = r["inputs"]
+        lines.append(f"  inputs {', '.join(u['names'])}: {u['kind']} from {u['source']}, held "
+                     "over each step of h")
     lines.append(f"  result: {'PASS' if r['passed'] else 'FAIL'} ({r['seconds']:.1f} s)")
     return "\n".join(lines)
 

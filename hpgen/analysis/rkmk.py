@@ -54,8 +54,10 @@ class ContinuousEquations:
     rhs(g, xi, mu) -> (g', mu'), energy(g, xi), momentum(g, p) (spatial momentum
     Ad*_{g^-1} p), defect(g) (distance of g from the group), velocity(g, mu). For an open
     model (model.open_system) legendre, energy, velocity, rhs and reference take the time t
-    (keyword, default 0); ``u`` (m) and ``params`` (P, default Model.runtime_defaults) are
-    fixed here; applied(g, xi, t) is the force f. flow_jacobian and RKMK4 are for closed models.
+    (keyword, default 0); ``params`` (P, default Model.runtime_defaults) is fixed here, the
+    inputs ``u`` (m, default 0) are the attribute ``u`` (set it to change them; the CasADi
+    functions take (t, u) after their state arguments); applied(g, xi, t) is the force f;
+    reference also takes inputs held piecewise. flow_jacobian and RKMK4 are for closed models.
     """
 
     def __init__(self, model, u=None, params=None):
@@ -70,12 +72,13 @@ class ContinuousEquations:
             from ..derive.lagrangian import open_functions
             lag_f, force_f = open_functions(model)
             P = model.runtime_defaults if params is None else params
-            U = np.zeros(len(model.inputs)) if u is None else u
             P = ca.DM(np.asarray(P, float).reshape(-1, 1))
-            U = ca.DM(np.asarray(U, float).reshape(-1, 1))
+            U = ca.SX.sym("u", len(model.inputs))
+            self.u = np.zeros(len(model.inputs)) if u is None else \
+                np.asarray(u, float).reshape(-1)
             self.lag = lambda G, X: lag_f(G, X, t, P)  # noqa: E731
             applied = force_f(g, xi, t, U, P)
-            targs = [t]
+            targs = [t, U]
         else:
             self.lag = lagrangian_function(model)
             applied, targs = ca.SX.zeros(d), []
@@ -107,7 +110,7 @@ class ContinuousEquations:
 
     # ---- point evaluations -------------------------------------------------------------
     def _t(self, t) -> tuple:
-        return (float(t),) if self.open else ()
+        return (float(t), self.u) if self.open else ()
 
     def legendre(self, g, xi, t=0.0):
         return _np(self._leg(g, xi, *self._t(t))).ravel()
@@ -146,10 +149,12 @@ class ContinuousEquations:
         return _np(gd), _np(md).ravel()
 
     # ---- reference solutions -----------------------------------------------------------
-    def reference(self, g0, mu0, times, rtol=1e-12, t0=0.0):
+    def reference(self, g0, mu0, times, rtol=1e-12, t0=0.0, u_rows=None, u_h=None):
         """(g(t), mu(t)) at ``times`` (measured from t0, the time of (g0, mu0)) from DOP853
         with rtol = atol = ``rtol`` on the state (g row-major, mu); returns arrays (K, n, n)
-        and (K, d)."""
+        and (K, d). ``u_rows`` (J, m) with ``u_h`` > 0: the inputs held piecewise, row j on
+        [j u_h, (j + 1) u_h) (the last row after); DOP853 restarts at every such boundary,
+        so each piece is smooth."""
         n = self.n
         state = {"xi": self.velocity(g0, mu0, t=t0)}
 
@@ -161,12 +166,41 @@ class ContinuousEquations:
 
         times = np.atleast_1d(np.asarray(times, dtype=float))
         y0 = np.concatenate([np.asarray(g0, float).ravel(), np.asarray(mu0, float)])
-        sol = solve_ivp(f, (0.0, float(times[-1])), y0, method="DOP853", rtol=rtol, atol=rtol,
-                        t_eval=times)
-        if not sol.success:
-            raise ConvergenceError(f"reference solution (DOP853): {sol.message}", step=0,
-                                   time=0.0, residual=float("nan"), iterations=0)
-        return sol.y[:n * n].T.reshape(-1, n, n), sol.y[n * n:].T
+        end = float(times[-1])
+        if u_rows is None:
+            pieces = [(0.0, end, None)]
+        else:
+            u_rows = np.asarray(u_rows, dtype=float).reshape(len(u_rows), -1)
+            J = min(len(u_rows), max(1, int(np.ceil(end / u_h - 1e-9))))
+            edges = [j * u_h for j in range(J)] + [end]
+            pieces = [(edges[j], max(edges[j + 1], edges[j]), u_rows[j]) for j in range(J)]
+        out = np.empty((len(times), len(y0)))
+        kept = 0
+        saved_u = getattr(self, "u", None)
+        try:
+            for a, b, row in pieces:
+                if row is not None:
+                    self.u = row
+                inside = np.minimum(times[kept:][times[kept:] <= b + 1e-12 * max(1.0, abs(b))],
+                                    b)
+                if b > a:
+                    te = np.unique(np.r_[inside, b])
+                    sol = solve_ivp(f, (a, b), y0, method="DOP853", rtol=rtol, atol=rtol,
+                                    t_eval=te)
+                    if not sol.success:
+                        raise ConvergenceError(f"reference solution (DOP853): {sol.message}",
+                                               step=0, time=0.0, residual=float("nan"),
+                                               iterations=0)
+                    Y = sol.y.T
+                    out[kept:kept + len(inside)] = Y[np.searchsorted(te, inside)]
+                    y0 = Y[-1]
+                elif len(inside):
+                    out[kept:kept + len(inside)] = y0
+                kept += len(inside)
+        finally:
+            if saved_u is not None:
+                self.u = saved_u
+        return out[:, :n * n].reshape(-1, n, n), out[:, n * n:]
 
     def flow_jacobian(self, g0, mu0, T, rtol=1e-13):
         """(g(T), mu(T), Phi') for the exact flow over time T, Phi' the 2d x 2d derivative in

@@ -36,6 +36,8 @@ def add_parser(sub):
     b.add_argument("--out", help="output directory (default bench-<model name>/)")
     b.add_argument("--cache-dir", help="build cache directory (default ~/.cache/hpgen)")
     b.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
+    b.add_argument("--u", nargs="+", metavar="U", help="the constant control inputs of a model "
+                   "with inputs (m numbers; default: the scene's u)")
     return b
 
 
@@ -70,7 +72,8 @@ def cmd_bench(args) -> int:
             peers=parse_list(args.peers, "option peers", str), reference=args.reference,
             samples=_number(args.samples, "option samples", int),
             min_time=_number(args.min_time, "option min_time"), out=args.out,
-            cache_dir=args.cache_dir, log=log)
+            cache_dir=args.cache_dir, log=log,
+            u=None if args.u is None else [_number(x, "option u") for x in args.u])
     print(f"# {res.model_name}, T = {res.T:g}; reference: {res.reference}\n")
     print(md_table(res.points))
     print("\nhpgen against each peer at equal error (peer time / hpgen time, log-log "

@@ -18,6 +18,10 @@ Grids (API lists, or comma lists on the CLI), defaults from the scene's h = h0:
   splitting-2/4/6 and RATTLE are skipped, with a note, on a model they do not fit).
 Reference: ``reference`` = auto (exact solution when hpgen.analysis.exact has one, else
 DOP853 at rtol = atol = 1e-13 on the same f), exact, dop853 or none; computed once per run.
+Forced and time-dependent models (forces, inputs, runtime parameters, t): every method
+integrates the continuous forced equations (hpgen.bench.problem) with the default runtime
+parameters, t0 = 0 and a constant u (``u``, else the scene's); no energy drift is reported
+for them (the energy is not conserved), and the rigid-body peers are skipped.
 Bad input (file, scene, grid values, names) raises ModelError before anything is built.
 """
 from __future__ import annotations
@@ -148,9 +152,10 @@ def _check_steps(T, hs, field):
 def run_bench(model, *, T=None, schemes=None, tableau=None, tau=None, rkmk=None, h=None,
               rtol=None, cvodes_tol=None, collocation_h=None, rk4_h=None, peers=None,
               reference="auto", out=None, cache_dir=None, samples=200, min_time=0.2,
-              min_repeats=3, max_time=1.0, write=True, log=None) -> BenchResult:
+              min_repeats=3, max_time=1.0, write=True, log=None, u=None) -> BenchResult:
     """Run the benchmark (see the module docstring); write the files into ``out`` (default
-    bench-<model name>/) unless write=False. ``log``: progress callback (default: stderr)."""
+    bench-<model name>/) unless write=False. ``log``: progress callback (default: stderr).
+    ``u``: the constant inputs (m,) of a model with inputs (default: the scene's u)."""
     from .problem import Problem, positive
 
     log = log or (lambda s: print(s, file=sys.stderr, flush=True))
@@ -172,7 +177,7 @@ def run_bench(model, *, T=None, schemes=None, tableau=None, tau=None, rkmk=None,
         T = positive(T, "option T")
 
     t_start = time.perf_counter()
-    pb = Problem(model, T)
+    pb = Problem(model, T, u=u)
     sc = pb.scene
     if reference == "exact" and pb.exact_inertia() is None:
         pb.reference("exact", None)           # raises the ModelError, before any build
@@ -201,13 +206,17 @@ def run_bench(model, *, T=None, schemes=None, tableau=None, tau=None, rkmk=None,
 
     points = hpgen_points(pb, y_ref, schemes, hs, timing, samples, cache_dir, log)
     notes, rigid = list(pb.notes), None
+    if not pb.conservative:
+        notes.append("forced or time-dependent model: the energy is not conserved, no energy "
+                     "drift is reported; every method integrates the forced equations"
+                     + ("" if pb.u is None else f" with u = {pb.u.tolist()}"))
     if any(name in RIGID_PEERS for name in peers):
         body = rigid_parameters(pb.eq)
         if body is None:
             skipped = [name for name in peers if name in RIGID_PEERS]
             peers = [name for name in peers if name not in RIGID_PEERS]
             notes.append(f"{', '.join(skipped)} skipped: they need an SO3 body with "
-                         "l = 1/2 xi.diag(I) xi - m.(R^T e3)")
+                         "l = 1/2 xi.diag(I) xi - m.(R^T e3) and no forces")
         else:
             rigid = RigidPeers(*body, cache_dir)
             log(f"  rigid-body peers (C) built in {rigid.setup_s:.2f} s")

@@ -1,8 +1,8 @@
 """The classical RK4 peer (and the implicit midpoint rule) emitted as C by hpgen, so that RK4 and hpgen run in one language.
 
-CasADi's C generator writes f (the Problem's vector field, a dense casadi.Function y -> y');
-``rk4.c.j2`` (next to this file, rendered with Jinja2 StrictUndefined) adds the RK4 loop and a
-plain ``hpgen_bench_f(y, ydot)`` entry. The library is built by ``hpgen.runtime.build`` (flags
+CasADi's C generator writes f (the Problem's vector field, a dense casadi.Function
+(t, y) -> y'); ``rk4.c.j2`` (next to this file, rendered with Jinja2 StrictUndefined) adds the
+RK4 loop and a plain ``hpgen_bench_f(t, y, ydot)`` entry. The library is built by ``hpgen.runtime.build`` (flags
 DEFAULT_CFLAGS = -std=c99 -O3 -fPIC -shared, -lm, race-free) in a cache entry keyed by the
 sha256 of the C source, and loaded with ctypes. The template lives in hpgen/bench, not in
 templates/: every templates/*.j2 is hashed into hpgen's generator digest, so a file there
@@ -69,7 +69,7 @@ class CRK4:
         self.source = render(problem)
         self.path = build(self.source, cache_dir, cc)
         lib = self.lib = ctypes.CDLL(str(self.path))
-        lib.hpgen_bench_f.argtypes = [ctypes.c_void_p, ctypes.c_void_p]
+        lib.hpgen_bench_f.argtypes = [ctypes.c_double, ctypes.c_void_p, ctypes.c_void_p]
         lib.hpgen_bench_f.restype = ctypes.c_int
         lib.hpgen_bench_rk4.argtypes = [ctypes.c_void_p, ctypes.c_double, ctypes.c_long,
                                         ctypes.c_long, ctypes.c_void_p]
@@ -84,16 +84,17 @@ class CRK4:
         self._f = lib.hpgen_bench_f
         self.setup_s = time.perf_counter() - t0
 
-    def f(self, y):
-        """f(y) for a float64 vector y (contiguous copy made if needed)."""
+    def f(self, y, t=0.0):
+        """f(t, y) for a float64 vector y (contiguous copy made if needed); t matters for a
+        forced or time-dependent model only."""
         y = np.ascontiguousarray(y, dtype=np.float64)
         out = np.empty(self.ny)
-        self._f(y.ctypes.data, out.ctypes.data)
+        self._f(float(t), y.ctypes.data, out.ctypes.data)
         return out
 
     def rhs(self, t, y):
-        """SciPy's signature: f does not depend on t."""
-        return self.f(y)
+        """SciPy's signature."""
+        return self.f(y, t)
 
     def run(self, y0, h, steps, every=None):
         """(records (K, ny) or None, last state, steps done). Records y0 and every

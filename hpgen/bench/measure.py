@@ -89,6 +89,18 @@ class Point:
         return self.steps / self.wall_s if self.ok and self.steps else math.nan
 
 
+def steps_for(T, h):
+    """(steps, h_used = T / steps) with steps = max(1, round(T / h)): every fixed-step
+    method (hpgen's schemes and the peers) runs a whole number of steps to T."""
+    steps = max(1, int(round(T / h)))
+    return steps, T / steps
+
+
+def fixed_note(h, h_used):
+    """The point's note when the requested h moved to T / steps."""
+    return [f"h adjusted to T/steps = {h_used:.6g}"] if abs(h_used - h) > 1e-9 * h else []
+
+
 def thin(t, Y, samples):
     """About ``samples`` + 1 rows of (t, Y) by index stride, always keeping the last."""
     stride = max(1, (len(t) - 1) // max(1, samples))

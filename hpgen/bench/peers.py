@@ -1,6 +1,9 @@
 """The peers a user would pick instead of hpgen, all on the Problem's y' = f(y).
 
 Families (names used by --peers, the CSV ``family`` column and the comparisons):
+A forced or time-dependent model's f depends on t (the continuous forced Euler-Poincare
+equations with the inputs u constant, hpgen.bench.problem); every peer evaluates it at its
+own stage times.
 - ``DOP853``, ``RK45``: scipy.integrate.solve_ivp over a grid of rtol, atol = rtol *
   ATOL_FACTOR; f is the C vector field (hpgen.bench.crk4, via ctypes: the cheapest f Python
   can call). Samples: the accepted steps (solve_ivp without t_eval, no dense output).
@@ -23,7 +26,7 @@ import time
 
 import numpy as np
 
-from .measure import Point, measure, thin
+from .measure import Point, fixed_note, measure, steps_for, thin
 from .rigid import FAMILIES
 
 ATOL_FACTOR = 1e-3
@@ -36,26 +39,18 @@ PEERS = ("DOP853", "RK45", "cvodes-bdf", "cvodes-adams", "collocation", "RK4-num
          "RK4-C") + RIGID_PEERS
 
 
-def steps_for(T, h):
-    """(steps, h_used = T / steps) with steps = max(1, round(T / h))."""
-    steps = max(1, int(round(T / h)))
-    return steps, T / steps
-
-
-def _fixed_note(h, h_used):
-    return [f"h adjusted to T/steps = {h_used:.6g}"] if abs(h_used - h) > 1e-9 * h else []
-
-
 def rk4_numpy(f, y0, h, steps, every=None):
-    """(records or None, last state): the arithmetic of rk4.c.j2, in the same order."""
+    """(records or None, last state): the arithmetic of rk4.c.j2, in the same order;
+    ``f(y, t)``, t_k = k h."""
     y = np.array(y0, dtype=float)
     hh, h6 = 0.5 * h, h / 6.0
     rec = [y] if every else None
     for k in range(1, steps + 1):
-        k1 = f(y)
-        k2 = f(y + hh * k1)
-        k3 = f(y + hh * k2)
-        k4 = f(y + h * k3)
+        t = (k - 1) * h
+        k1 = f(y, t)
+        k2 = f(y + hh * k1, t + hh)
+        k3 = f(y + hh * k2, t + hh)
+        k4 = f(y + h * k3, t + h)
         y = y + h6 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
         if not np.isfinite(y).all():
             break
@@ -91,7 +86,7 @@ def rk4_points(pb, y_ref, crk4, hs, timing, samples, which):
             def timed(hu=hu, steps=steps):
                 return rk4_numpy(crk4.f, pb.y0, hu, steps)[1], {"steps": steps,
                                                               "f_evals": 4 * steps}
-        p.notes += _fixed_note(h, hu)
+        p.notes += fixed_note(h, hu)
         out.append(measure(pb, y_ref, p, timing, timed, sampled))
     return out
 
@@ -116,8 +111,9 @@ def scipy_points(pb, y_ref, crk4, method, rtols, timing, samples):
 
 def _casadi_integrator(pb, plugin, grid, opts):
     import casadi as ca
-    return ca.integrator(f"bench_{plugin}", plugin, {"x": pb.y_sym, "ode": pb.ydot_sym}, 0.0,
-                         list(grid), opts)
+    return ca.integrator(f"bench_{plugin}", plugin,
+                         {"t": pb.t_sym, "x": pb.y_sym, "ode": pb.ydot_sym}, 0.0, list(grid),
+                         opts)
 
 
 def cvodes_points(pb, y_ref, lmm, tols, timing, samples):
@@ -176,6 +172,6 @@ def collocation_points(pb, y_ref, hs, timing, samples):
 
         def timed(I_end=I_end, N=N):
             return np.array(I_end(x0=pb.y0)["xf"]).ravel(), {"steps": N}
-        p.notes += _fixed_note(h, hu)
+        p.notes += fixed_note(h, hu)
         out.append(measure(pb, y_ref, p, timing, timed, sampled))
     return out

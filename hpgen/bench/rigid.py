@@ -49,7 +49,7 @@ def rigid_parameters(eq):
     positive, l(R, xi) - l(R, 0) is the kinetic energy alone, and l(R, 0) is affine in R with
     a gradient on the third row only."""
     import casadi as ca
-    if eq.model.group.name != "SO3":
+    if eq.model.group.name != "SO3" or eq.model.open_system:     # forces, inputs, t
         return None
     g, xi = ca.SX.sym("g", 3, 3), ca.SX.sym("xi", 3)
     L = eq.lag(g, xi)
@@ -120,8 +120,7 @@ class RigidPeers:
 def rigid_points(pb, y_ref, rigid, family, hs, timing, samples):
     """Bench points of one family over the step grid ``hs`` (as RK4-C: one C call per run,
     the ctypes call inside the timed call)."""
-    from .measure import Point, measure
-    from .peers import _fixed_note, steps_for
+    from .measure import Point, fixed_note, measure, steps_for
     out = []
     for h in hs:
         steps, hu = steps_for(pb.T, h)
@@ -139,6 +138,6 @@ def rigid_points(pb, y_ref, rigid, family, hs, timing, samples):
             if family == "RATTLE":
                 info["notes"] = [f"Newton it/step {its / max(done, 1):.2f}"]
             return (y if done == steps else np.full(pb.ny, np.nan)), info
-        p.notes += _fixed_note(h, hu)
+        p.notes += fixed_note(h, hu)
         out.append(measure(pb, y_ref, p, timing, timed, sampled))
     return out

@@ -13,8 +13,7 @@ from __future__ import annotations
 import time
 
 from ..errors import ModelError
-from .measure import FAILURES, Point, measure
-from .peers import _fixed_note, steps_for
+from .measure import FAILURES, Point, fixed_note, measure, steps_for
 
 #: the default grid: (tableau, tau, rkmk)
 DEFAULT_SCHEMES = (("stormer-verlet", "cay", "truncated"), ("gauss2", "exp", "exact"),
@@ -49,6 +48,8 @@ def hpgen_points(pb, y_ref, schemes, hs, timing, samples, cache_dir=None, log=No
     out = []
     kw0 = {"g0": pb.g0}
     kw0.update({"xi0": pb.xi0} if pb.xi0 is not None else {"mu0": pb.mu0})
+    if pb.u is not None:              # the inputs, held over every step (t0 = 0)
+        kw0["u"] = pb.u
     for tab, tau, rkmk in schemes:
         name = scheme_name(tab, tau, rkmk)
         t0 = time.perf_counter()
@@ -69,7 +70,7 @@ def hpgen_points(pb, y_ref, schemes, hs, timing, samples, cache_dir=None, log=No
             every = max(1, steps // samples)
             p = Point(name + " (C)", name, "hpgen", "h", hu, setup_s=setup,
                       setup_note=f"hpgen.compile, {how}, in this process")
-            p.notes += _fixed_note(h, hu)
+            p.notes += fixed_note(h, hu)
 
             def sampled(hu=hu, steps=steps, every=every):
                 tr = integ.simulate(h=hu, steps=steps, every=every, **kw0)

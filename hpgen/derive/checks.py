@@ -28,6 +28,30 @@ def check_legendre(step, model) -> None:
     cond = np.linalg.cond(H) if np.all(np.isfinite(H)) else np.inf
     if not cond < MAX_HESSIAN_CONDITION:
         raise ModelError(f"the Legendre transform is singular {where}: d2l/dxi2 has condition "
-                         f"number {cond:.3g} (limit {MAX_HESSIAN_CONDITION:.0e}); the Lagrangian "
-                         "must be nondegenerate in xi (e.g. a positive definite kinetic energy)",
-                         file=model.path, field="lagrangian")
+                         f"number {cond:.3g} (limit {MAX_HESSIAN_CONDITION:.0e})"
+                         f"{_null_direction(H)}; the Lagrangian must be nondegenerate in xi "
+                         "(e.g. a positive definite kinetic energy)",
+                         file=model.path, field="lagrangian", line=_lagrangian_line(model))
+
+
+def _null_direction(H) -> str:
+    """Where l has no curvature: the coordinates xi[k] of the (near) null vector of H."""
+    if not np.all(np.isfinite(H)):
+        return ""
+    v = np.linalg.svd(H)[2][-1]
+    ks = [k for k in range(len(v)) if abs(v[k]) > 1e-8 * np.abs(v).max()]
+    if len(ks) == 1:
+        return f"; l has no second derivative in xi[{ks[0]}]"
+    if len(ks) <= 4:
+        parts = " ".join(f"{'+' if v[k] > 0 else '-'} {abs(v[k]):.3g} xi[{k}]" for k in ks)
+        return f"; l is flat along the velocity {parts.lstrip('+ ')}"
+    return ""
+
+
+def _lagrangian_line(model):
+    """The model file's line of ``lagrangian:`` (None for a model without source text)."""
+    from ..model.yamldoc import compose_document
+    try:
+        return compose_document(model.source, model.path).line(("lagrangian",))
+    except (ModelError, TypeError, AttributeError):
+        return None

@@ -1,7 +1,11 @@
 """The ``hpgen sweep`` subcommand: parser and command (used by hpgen.cli).
 
     hpgen sweep model.yaml --grid sweep.yaml [--scheduler tcp://host:8786 | --workers N]
-                [--out sweep.zarr] [--resume] [--chunk-size N] [--no-progress]
+                [--out sweep.zarr] [--resume] [--chunk-size N] [--no-progress] [--u U ...]
+
+A model with control inputs takes u from --u, else the grid file's ``u`` (constant: shared or
+one per member), else the scene's u (hpgen.model.controls), shared by the members (one row
+per member's step when u depends on t and the members' h differ).
 
 Completed chunks are kept in ``<out>.parts/`` as they complete; an interrupted sweep leaves
 them there and ``--resume`` continues from them. The output (.zarr, .nc or .npz) is written
@@ -64,12 +68,18 @@ def cmd_sweep(args, compile_options) -> int:
         if key not in kw and default is not None:
             kw[key] = default
     kw.setdefault("record", list(integ.record_names))
+    from ..model.controls import controls_for, member_rows
+    controls = None if "u" in kw and args.u is None else \
+        controls_for(model, args.u, args.u_interpolation, args.model)
     if args.chunk_size is not None:
         kw["chunk_size"] = args.chunk_size
     for key in ("h", "steps"):
         if key not in kw:
             raise ModelError(f"no {key}: give it in the grid file (the model has no scene)",
                              file=args.grid, field=key)
+    if args.u is not None or "u" not in kw:            # --u, else the grid's, else the scene's
+        if controls is not None:
+            kw["u"] = member_rows(controls, kw["h"], kw["steps"])
     t0 = time.perf_counter()
     progress = False if args.no_progress else None
     try:

@@ -8,6 +8,7 @@
     record: [energy, momentum]                 # optional (default: the scene's record list)
     chunk_size: 16                             # optional: members per chunk / Dask task
     params: {c: [0.1, 0.2]}                    # optional: runtime parameters per member
+    u: [[2.5, 2.4], [2.4, 2.5]]                # optional: constant inputs, shared or per member
 
 Read with hpgen.model.yamldoc (composed node by node: no PyYAML constructor runs, tags are
 refused); every error is one line naming the file, the field and its line.
@@ -16,7 +17,7 @@ from __future__ import annotations
 
 from ..model.yamldoc import compose_document, describe, is_number
 
-KEYS = ("xi0", "mu0", "g0", "h", "steps", "every", "record", "chunk_size", "params")
+KEYS = ("xi0", "mu0", "g0", "h", "steps", "every", "record", "chunk_size", "params", "u")
 
 
 def read_grid(path, n: int, d: int) -> dict:
@@ -58,6 +59,13 @@ def read_grid(path, n: int, d: int) -> dict:
             raise doc.error(("params",), f"expected a mapping of runtime parameter names to "
                                          f"one value per member, got {describe(p)}")
         out["params"] = {k: _per_member(doc, f"params.{k}", v, B) for k, v in p.items()}
+    if "u" in data:               # shapes against the model's inputs: hpgen.ensemble.members
+        v = data["u"]
+        rows = v if isinstance(v, list) and v and isinstance(v[0], list) else [v]
+        if not all(isinstance(r, list) and r and all(is_number(x) for x in r) for r in rows):
+            raise doc.error(("u",), "expected the constant inputs: a list of m numbers "
+                                    f"(shared) or one such list per member, got {describe(v)}")
+        out["u"] = v
     return out
 
 

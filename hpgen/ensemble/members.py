@@ -23,19 +23,26 @@ NO_RUNTIME_PARAMETERS = "params sweeps need runtime_parameters in the model"
 @dataclass(frozen=True, eq=False)
 class Members:
     """Checked member inputs: g0 (B, n, n), init (B, d) (``kind`` "xi0" or "mu0"), h (B,),
-    params {runtime parameter name: (B, *shape) values, member i's in row i} ({} without)."""
+    params {runtime parameter name: (B, *shape) values, member i's in row i} ({} without),
+    u the control inputs (None without; shared: (m,) or (steps, m); ``u_per_member``: (B, m)
+    or (B, steps, m), member i's in row i)."""
     g0: np.ndarray
     init: np.ndarray
     kind: str
     h: np.ndarray
     params: dict = field(default_factory=dict)
+    u: np.ndarray | None = None
+    u_per_member: bool = False
+    steps: int = 0
 
     def __len__(self) -> int:
         return len(self.init)
 
     def slice(self, lo: int, hi: int) -> "Members":
         return Members(self.g0[lo:hi], self.init[lo:hi], self.kind, self.h[lo:hi],
-                       {k: v[lo:hi] for k, v in self.params.items()})
+                       {k: v[lo:hi] for k, v in self.params.items()},
+                       self.u[lo:hi] if self.u_per_member else self.u, self.u_per_member,
+                       self.steps)
 
     def take(self, idx) -> dict:
         """The runs' keyword arguments of members ``idx``: the initial states and, with
@@ -43,13 +50,21 @@ class Members:
         kw = {self.kind: self.init[idx]}
         if self.params:
             kw["params"] = {k: v[idx] for k, v in self.params.items()}
+        if self.u is not None and self.u_per_member:
+            u = self.u[idx]
+            if u.ndim == 2 and len(u) == self.steps:      # (b, m) would read as (steps, m)
+                u = np.repeat(u[:, None, :], self.steps, axis=1)
+            kw["u"] = u
+        elif self.u is not None:
+            kw["u"] = self.u
         return kw
 
 
-def members(integ, g0, xi0, mu0, h, params=None) -> Members:
+def members(integ, g0, xi0, mu0, h, params=None, u=None, steps=None) -> Members:
     """Members from the sweep arguments (shapes, finiteness and h > 0 checked here; the
     group defect and the Legendre transform are checked per member when it starts).
-    ModelError naming the argument."""
+    u: shared (m,) or (steps, m), or per member (B, m) or (B, steps, m) (a (B, m) u with
+    B == steps is the shared (steps, m)). ModelError naming the argument."""
     if (xi0 is None) == (mu0 is None):
         raise ModelError("give exactly one of xi0 (velocities) and mu0 (momenta), each (B, d)",
                          field="xi0" if xi0 is not None else "mu0")
@@ -73,7 +88,29 @@ def members(integ, g0, xi0, mu0, h, params=None) -> Members:
     else:
         raise ModelError(f"expected a number or {B} numbers (one per member), got shape "
                          f"{H.shape}", field="h")
-    return Members(np.ascontiguousarray(G), init, kind, H, _params(integ, params, B))
+    U, per_member = _inputs(integ, u, B, steps)
+    return Members(np.ascontiguousarray(G), init, kind, H, _params(integ, params, B), U,
+                   per_member, int(steps or 0))
+
+
+def _inputs(integ, u, B, steps):
+    """(u as float64, per member?) of a sweep's ``u`` (see members)."""
+    names = list((integ.open or {}).get("inputs") or ())
+    if u is None:
+        return None, False
+    if not names:
+        raise ModelError("this model has no control inputs (inputs:), so it takes no u",
+                         field="u")
+    m = len(names)
+    a = _finite(u, "u")
+    shared = [(m,)] + ([(steps, m)] if steps else [])
+    if a.shape in shared:
+        return a, False
+    if a.shape == (B, m) or (steps and a.shape == (B, steps, m)):
+        return a, True
+    raise ModelError(f"expected u of shape ({m},) or (steps, {m}) shared, or ({B}, {m}) or "
+                     f"({B}, steps, {m}) one per member (inputs {', '.join(names)}), got "
+                     f"{a.shape}", field="u")
 
 
 def _params(integ, params, B) -> dict:
@@ -102,11 +139,15 @@ def _params(integ, params, B) -> dict:
 
 
 def _finite(x, field) -> np.ndarray:
+    from ..runtime.args import _non_numeric
     try:
-        a = np.array(x, dtype=np.float64)
+        bad = _non_numeric(x, np.asarray(x))
+        a = np.array(x, dtype=np.float64) if bad is None else None
     except (TypeError, ValueError):
         raise ModelError(f"expected an array of numbers, got {type(x).__name__}",
                          field=field) from None
+    if a is None:
+        raise ModelError(f"expected real numbers, got {bad}", field=field)
     if not np.isfinite(a).all():
         raise ModelError("has non-finite entries", field=field)
     return a

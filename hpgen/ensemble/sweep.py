@@ -43,7 +43,7 @@ CHUNK_KEYS = ("failed", "error", "samples", "steps_done", "newton_iterations")
 
 def sweep(integ, g0=None, xi0=None, mu0=None, h=None, steps=None, record=None, every=1,
           chunk_size=None, client=None, threads=None, progress=None, params=None,
-          checkpoint=None):
+          checkpoint=None, u=None):
     """Run B members and return a SweepResult (hpgen.ensemble.result).
 
     integ: a C-backend Integrator (hpgen.compile / hpgen.load). g0: (n, n) shared or
@@ -51,9 +51,12 @@ def sweep(integ, g0=None, xi0=None, mu0=None, h=None, steps=None, record=None, e
     members or one per member (B,); steps, every: as for simulate (K = steps // every + 1
     samples). record: None keeps g and mu; a list of names keeps those entries of the
     module's record row (``integ.record_names``). params: {runtime parameter name: values
-    (B, *shape), member i's in row i} (a model with runtime_parameters; no recompile). chunk_size: members per chunk (default: all in
-    one chunk locally, about 4 chunks per worker thread on Dask, smaller when a checkpoint or
-    progress bar wants progress). client: a dask.distributed Client, or None for the local
+    (B, *shape), member i's in row i} (a model with runtime_parameters; no recompile).
+    u: the control inputs of a model with inputs, shared ((m,) constant or (steps, m) one
+    row per step) or one per member ((B, m) or (B, steps, m); a (B, m) u with B == steps is
+    the shared (steps, m)), held over each step as for simulate. chunk_size: members per
+    chunk (default: all in one chunk locally, about 4 chunks per worker thread on Dask,
+    smaller when a checkpoint or progress bar wants progress). client: a dask.distributed Client, or None for the local
     threads (``threads``, default the CPU count). progress: tqdm bar of members done on
     stderr (None: when stderr is a terminal). checkpoint: directory of completed chunks (see
     the module docstring). Failed members are marked (``failed``, ``error``) with their
@@ -66,8 +69,8 @@ def sweep(integ, g0=None, xi0=None, mu0=None, h=None, steps=None, record=None, e
         raise ModelError("give the step h and the number of steps", field="h" if h is None
                          else "steps")
     g0 = np.eye(integ.n) if g0 is None else g0
-    m = members(integ, g0, xi0, mu0, h, params)
     steps, every, K = run_length(steps, every)
+    m = members(integ, g0, xi0, mu0, h, params, u, steps)
     layout(integ, record)                                   # check the names before running
     B = len(m)
     threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
@@ -130,10 +133,11 @@ def _on_dask(client, payload, m, todo, steps, every, record, store, done, pbar):
 def _fingerprint(payload, m, steps, every, record, bounds) -> str:
     h = hashlib.sha256()
     h.update(payload.digest.encode())
-    for a in (m.g0, m.init, m.h, *m.params.values()):
+    for a in (m.g0, m.init, m.h, *m.params.values(), *([] if m.u is None else [m.u])):
         h.update(np.ascontiguousarray(a, dtype=np.float64).tobytes())
     h.update(json.dumps([m.kind, steps, every, None if record is None else list(record),
-                         bounds, list(m.params)]).encode())
+                         bounds, list(m.params)]
+                        + ([] if m.u is None else [list(m.u.shape), m.u_per_member])).encode())
     return h.hexdigest()
 
 

@@ -11,7 +11,7 @@ sympy), so that a cache hit stays cheap:
   included, are kept as written: ``1`` and ``1.0`` stay different, as they may change code);
 - the scene keeps only what is compiled into kernels: ``record`` (the record kernel's row)
   and ``section`` (the section kernel; its text is also copied into meta.json, so it is
-  kept as written). ``h``, ``steps``, ``duration``, ``initial`` and ``every`` are run-time
+  kept as written). ``h``, ``steps``, ``duration``, ``initial``, ``every`` and ``u`` are run-time
   values and are dropped; any other key is kept (never a false hit);
 - ``integrator`` is returned apart (the caller merges it with explicit options);
 - every other top-level key (name, group, parameters, schema, and any key a later schema
@@ -29,7 +29,7 @@ from ..errors import ModelError
 from .yamldoc import MAX_FILE_BYTES, compose_document
 
 #: scene keys that only the run uses (not compiled into any kernel)
-RUN_ONLY_SCENE_KEYS = frozenset(("h", "steps", "duration", "initial", "every"))
+RUN_ONLY_SCENE_KEYS = frozenset(("h", "steps", "duration", "initial", "every", "u"))
 #: tokens that never change the parsed expression (a top-level NEWLINE or INDENT may: kept)
 _SKIP_TOKENS = frozenset((tokenize.NL, tokenize.DEDENT, tokenize.COMMENT, tokenize.ENDMARKER))
 

@@ -318,7 +318,7 @@ def build_model(doc: Doc, text: str) -> Model:
     scene = None
     if data.get("scene") is not None:
         from .scene import parse_scene
-        scene = parse_scene(doc, data["scene"], group, lag_params)
+        scene = parse_scene(doc, data["scene"], group, lag_params, inputs)
         _refuse_runtime_in_scene(doc, scene, rsyms)
         _refuse_unforced_work(doc, scene, forces)
     return Model(name=name, path=doc.file, source=text, group_spec=data["group"], group=group,

@@ -15,6 +15,8 @@ Conventions:
   (hpgen.model.expr.parse_record) under ``label`` ([A-Za-z][A-Za-z0-9_]{0,63}; not a RECORDABLE
   name, not ``t``, not a Python keyword). Scene.record lists names and labels in file order,
   Scene.expressions the RecordExpr of the labels. ``every``: integer >= 1.
+- ``u``: the control inputs of a model with ``inputs:`` (a constant, expressions of t or a
+  table; hpgen.model.controls), a ControlSpec in Scene.u; refused for a model without inputs.
 - ``section``: optional Poincare section s(g, mu), an expression text parsed like the Lagrangian
   with ``mu`` instead of ``xi`` (hpgen.model.expr.parse_section) into a SectionSpec.
 """
@@ -30,7 +32,7 @@ from ..errors import ModelError
 from ..runtime.initial import compose, rotation_from_angle, rotation_from_rotvec
 from .types import RecordExpr, Scene, SectionSpec
 
-SCENE_KEYS = ("h", "steps", "duration", "initial", "record", "every", "section")
+SCENE_KEYS = ("h", "steps", "duration", "initial", "record", "every", "section", "u")
 INITIAL_KEYS = ("g", "xi", "mu")
 RECORDABLE = ("g", "mu", "xi", "energy", "momentum", "defect")
 #: record names of a forced model only (the loader refuses them without forces, and refuses
@@ -281,10 +283,10 @@ def _record(doc, rec, group, parameters):
     return tuple(names), tuple(exprs)
 
 
-def parse_scene(doc, raw, group, parameters=None) -> Scene:
+def parse_scene(doc, raw, group, parameters=None, inputs=()) -> Scene:
     """Validate the scene mapping ``raw`` for ``group``; doc is the loader's located document.
     ``parameters``: the exact parameter values ({name: int | float | lists}) for the section
-    and the recorded expressions."""
+    and the recorded expressions; ``inputs``: the model's control input names (scene.u)."""
     raw = doc.mapping(("scene",), raw, SCENE_KEYS)
     if raw.get("h") is None:
         raise doc.error(("scene", "h"), "missing h: expected a step size h > 0")
@@ -312,10 +314,27 @@ def parse_scene(doc, raw, group, parameters=None) -> Scene:
         every_t = _every_t(doc, raw["section"], h)
     elif raw.get("section") is not None:
         section = _section(doc, raw["section"], group, parameters or {})
+    u = _controls(doc, raw, group, parameters or {}, inputs)
     return Scene(h=h, steps=steps, g0=tuple(tuple(float(x) for x in row) for row in G),
                  xi0=vec if has_xi else None, mu0=vec if has_mu else None,
                  record=record, every=every, section=section, expressions=expressions,
-                 section_every_t=every_t)
+                 section_every_t=every_t, u=u)
+
+
+def _controls(doc, raw, group, parameters, inputs):
+    """scene.u (hpgen.model.controls): None when absent."""
+    from pathlib import Path
+
+    from .controls import parse_controls
+    if raw.get("u") is None:
+        return None
+    path = ("scene", "u")
+    if not inputs:
+        raise doc.error(path, "this model has no control inputs (inputs:), so its scene takes "
+                              "no u")
+    base = None if doc.file in (None, "<string>") else Path(doc.file).parent
+    return parse_controls(raw["u"], inputs, parameters, group, file=doc.file, field="scene.u",
+                          base=base, line=doc.line(path))
 
 
 def _every_t(doc, raw, h) -> float:

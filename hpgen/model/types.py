@@ -58,7 +58,8 @@ class Scene:
     exactly one of xi0 / mu0 is set (tuples of length d); section: the optional Poincare
     section (SectionSpec) or None. record: the names to record in file order, built-in names
     (hpgen.model.scene.RECORDABLE) and the labels of the user expressions; expressions: those
-    expressions (RecordExpr, file order), looked up by label."""
+    expressions (RecordExpr, file order), looked up by label. u: the scene's control inputs
+    (hpgen.model.controls.ControlSpec: ``u.rows(h, steps, t0)``) or None."""
     h: float
     steps: int
     g0: tuple
@@ -70,6 +71,8 @@ class Scene:
     expressions: tuple = ()        # tuple of RecordExpr, in file order
     #: a section in t (``section: {every_t: T}``): the stroboscopic samples every T, or None
     section_every_t: float | None = None
+    #: the control inputs u (hpgen.model.controls.ControlSpec) of a model with inputs, or None
+    u: Any = None
 
 
 @dataclass(frozen=True)

@@ -30,12 +30,37 @@ def _error(code, step, time, residual, iterations, hint=""):
                iterations=int(iterations))
 
 
-def _array(x, shape, field, what):
+def _non_numeric(x, a):
+    """What makes ``x`` (as the array ``a``) non-numeric ("strings", "booleans", ...), or
+    None: real numbers only (int, float, numpy numbers), never strings, booleans, None or
+    other objects (a list's booleans included, which numpy would turn into integers)."""
+    kind = a.dtype.kind
+    if kind in "iu" and not isinstance(x, np.ndarray) and a.size:
+        if a.ndim == 1 and isinstance(x, (list, tuple)):     # a list may hide True among ints
+            return "booleans" if any(isinstance(v, (bool, np.bool_)) for v in x) else None
+        a = np.asarray(x, dtype=object)
+        kind = "O"
+    if kind in "fiu":
+        return None
+    if kind == "O":
+        for v in a.flat:
+            if isinstance(v, (bool, np.bool_)):
+                return "booleans"
+            if not isinstance(v, numbers.Real):
+                return "None" if v is None else f"{type(v).__name__} entries"
+        return None
+    return {"b": "booleans", "U": "strings", "S": "bytes", "c": "complex entries"}.get(
+        kind, f"{a.dtype} entries")
+
+
+def _array(x, shape, field, what, finite=True):
+    """``x`` as a float64 array of ``shape`` (a scalar for shape (1,)); ArgumentError naming
+    ``field`` otherwise. ``finite=False`` leaves the non-finite check to the caller."""
     try:
         a = np.asarray(x)
-        if np.iscomplexobj(a):
-            raise ArgumentError(f"expected {what} of real numbers, got complex entries",
-                                field=field)
+        bad = _non_numeric(x, a)
+        if bad is not None:
+            raise ArgumentError(f"expected {what} of real numbers, got {bad}", field=field)
         a = np.array(a, dtype=np.float64)
     except (TypeError, ValueError) as e:
         if isinstance(e, ArgumentError):
@@ -46,7 +71,7 @@ def _array(x, shape, field, what):
             return a.reshape(1)
         raise ArgumentError(f"expected {what} of shape {shape}, got shape {a.shape}",
                             field=field)
-    if not np.isfinite(a).all():
+    if finite and not np.isfinite(a).all():
         raise ArgumentError(f"{what} has non-finite entries", field=field)
     return a
 

@@ -57,7 +57,7 @@ def partial_dir(out) -> Path:
 
 def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
                   chunk=1_000_000, resume=False, resume_hint="", directions=None, *,
-                  newton=None, progress=False):
+                  newton=None, progress=False, u=None):
     """Run and save the module's record row (``integ.record_names``, one array each, and t)
     of the Integrator ``integ`` (its run engine, hpgen.runtime.engine: the run's start, the
     records output's chunks, the run's snapshot after each and its restore on resume);
@@ -75,7 +75,7 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     resume_hint: the command that resumes, written into the manifest and the messages.
     newton: the run's hpgen.runtime.newton.NewtonOptions (None: the module's defaults).
     progress: a bar of the steps done, per chunk (hpgen.runtime.progress; None: when stderr
-    is a terminal).
+    is a terminal). u: the control inputs of a model with inputs, as for ``simulate``.
     On a failed step the records before it are saved (partial=True) and the
     ConvergenceError is re-raised with ``.saved = (path, samples)``; on KeyboardInterrupt
     the completed chunks are saved (partial=True) and it is re-raised with ``.saved =
@@ -84,9 +84,12 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     parts = partial_dir(path)
     chunk = _int(chunk, "chunk", 1)
     engine = integ.engine
-    s = engine.prepare(RunArgs(g0, h, steps, xi0, mu0, every, newton))
+    s = engine.prepare(RunArgs(g0, h, steps, xi0, mu0, every, newton, u=u))
     h, steps, every = s.h, s.steps, s.every
     ident = _identity(engine, s)
+    if u is not None:                     # a resumed run must have the same inputs
+        ident["u_sha256"] = hashlib.sha256(
+            np.ascontiguousarray(s.inputs.rows, dtype=np.float64).tobytes()).hexdigest()
     removed = _remove_old_leftovers(path)
     with PartialFolder(parts, path) as folder:
         prog = (folder.resume if resume else folder.fresh)(ident, resume_hint)

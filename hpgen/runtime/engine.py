@@ -305,7 +305,7 @@ class Engine:
         """Integrator.step: (g1 (n, n), p1)."""
         gf, p = self.maps.flat_g(g), self.maps.vector(p, "p")
         h = _step_size(h)
-        inputs = step_inputs(self.open, 1, u, params, t)
+        inputs = step_inputs(self.open, None, u, params, t)
         hv = np.array([h] if inputs is None else inputs.hv(h, 0))
         opts = self.options(newton, full=True)
         xi = None

@@ -3,7 +3,8 @@ issue 16): checking the user's ``u``, ``params`` and ``t0`` and building
 hv = [h, t_k, u_k, params] for step k (hpgen.abi.step_vector_size; meta.json "open").
 
 Conventions: t_k = t0 + k h (computed from k, never accumulated); u is (m,) (held for every
-step) or (steps, m) (row k held over step k); params is a dict {runtime parameter name: value}
+step) or (steps, m) (row k held over step k; an ensemble also takes one u per run, see
+batch_inputs); params is a dict {runtime parameter name: value}
 of overrides of the model file's defaults (a number, or an array of the parameter's shape).
 Every problem is a one-line ArgumentError (a ValueError) naming the argument, raised before any
 step runs. numpy and the standard library only.
@@ -75,8 +76,9 @@ def check_params(open_meta, params) -> list:
     return flat
 
 
-def check_u(open_meta, u, steps: int) -> list:
-    """The input rows: [row] for a constant u (m,), steps rows for u (steps, m)."""
+def check_u(open_meta, u, steps: int | None) -> list:
+    """The input rows: [row] for a constant u (m,), steps rows for u (steps, m); ``steps``
+    None: one step (``Integrator.step``), which takes u of shape (m,) only."""
     m = 0 if open_meta is None else len(open_meta["inputs"])
     if m == 0:
         if u is not None:
@@ -84,44 +86,82 @@ def check_u(open_meta, u, steps: int) -> list:
                              "file's inputs)", field="u")
         return [[]]
     names = ", ".join(open_meta["inputs"])
+    shapes = f"({m},)" if steps is None else f"({m},) or (steps, {m})"
     if u is None:
         raise ArgumentError(f"u is required: the model has {m} control input(s) ({names}); pass "
-                         f"an array of shape ({m},) or (steps, {m})", field="u")
-    a = np.asarray(u, dtype=object)
-    if a.ndim > 1 and steps == 0:
+                         f"an array of shape {shapes}", field="u")
+    try:
+        ndim = np.ndim(u)
+    except ValueError:                      # ragged: _array reports it
+        ndim = 2
+    if ndim > 1 and steps == 0:
         raise ArgumentError(f"u with one row per step needs steps >= 1 (a run of 0 steps still "
                             f"records its start, which takes a constant u of shape ({m},))",
                             field="u")
-    shape = (m,) if a.ndim <= 1 else (steps, m)
-    what = f"the inputs ({names}: ({m},) constant or ({steps}, {m}) one row per step)"
-    a = _array(u, shape, "u", what)
+    shape: tuple[int, ...]
+    if steps is None or ndim <= 1:
+        shape, what = (m,), f"the inputs ({names}: shape ({m},)" + \
+            (")" if steps is None else f" constant or ({steps}, {m}) one row per step)")
+    else:
+        shape = (steps, m)
+        what = f"the inputs ({names}: ({m},) constant or ({steps}, {m}) one row per step)"
+    a = _array(u, shape, "u", what, finite=False)
+    bad = np.argwhere(~np.isfinite(a))
+    if len(bad):
+        where = tuple(int(i) for i in bad[0])
+        step = "" if a.ndim == 1 else f"step {where[0]}, "
+        raise ArgumentError(f"{step}input {open_meta['inputs'][where[-1]]} is not finite "
+                            f"(u[{', '.join(map(str, where))}] = {a[where]})", field="u")
     return [a.tolist()] if a.ndim == 1 else a.tolist()
 
 
+def _per_run_u(open_meta, u, B: int, steps: int) -> bool:
+    """True when ``u`` holds one entry per run: (B, steps, m), or (B, m) unless B == steps
+    (then (steps, m), one row per step shared by every run, as before)."""
+    m = 0 if open_meta is None else len(open_meta["inputs"])
+    try:
+        shape = np.shape(u)
+    except ValueError:                       # ragged: step_inputs reports it
+        return False
+    return m > 0 and (shape == (B, steps, m) or (shape == (B, m) and B != steps))
+
+
 def batch_inputs(open_meta, B: int, steps: int, u=None, params=None, t0=0.0) -> list | None:
-    """B StepInputs for an ensemble (None for a closed module): u and t0 shared; each value
-    of ``params`` either of the parameter's shape (shared) or with a leading axis of length
-    B (run b takes entry b: a sweep without recompiling)."""
-    if open_meta is None or not isinstance(params, dict):
+    """B StepInputs for an ensemble (None for a closed module): t0 shared; u shared ((m,) or
+    (steps, m)) or one per run ((B, m) constant per run, (B, steps, m) one row per step;
+    (B, m) with B == steps is read as the shared (steps, m)); each value of ``params``
+    either of the parameter's shape (shared) or with a leading axis of length B (run b
+    takes entry b: a sweep without recompiling)."""
+    per_run_u = _per_run_u(open_meta, u, B, steps)
+    if open_meta is None or (not isinstance(params, dict) and not per_run_u):
         one = step_inputs(open_meta, steps, u, params, t0)
         return None if one is None else [one] * B
     shapes = {name: tuple(shape) for name, shape in open_meta["runtime_parameters"]}
     per_run = set()
-    for key, v in params.items():
+    for key, v in (params.items() if isinstance(params, dict) else ()):
         try:
             if key in shapes and np.shape(v) == (B,) + shapes[key]:
                 per_run.add(key)
         except ValueError:                   # ragged: step_inputs reports it
             pass
-    return [step_inputs(open_meta, steps, u,
-                        {k: (np.asarray(v, dtype=np.float64)[b] if k in per_run else v)
-                         for k, v in params.items()}, t0)
-            for b in range(B)]
+    runs = []
+    for b in range(B):
+        p = params if not isinstance(params, dict) else \
+            {k: (np.asarray(v, dtype=np.float64)[b] if k in per_run else v)
+             for k, v in params.items()}
+        try:
+            runs.append(step_inputs(open_meta, steps, u[b] if per_run_u else u, p, t0))
+        except ArgumentError as e:
+            if not per_run_u or e.field != "u":
+                raise
+            raise ArgumentError(f"run {b}: {e.message}", field="u") from None
+    return runs
 
 
-def step_inputs(open_meta, steps: int, u=None, params=None, t0=0.0) -> StepInputs | None:
-    """The checked StepInputs of a run of ``steps`` steps, or None for a closed module
-    (which takes no u and no params)."""
+def step_inputs(open_meta, steps: int | None, u=None, params=None,
+                t0=0.0) -> StepInputs | None:
+    """The checked StepInputs of a run of ``steps`` steps (None: one step, u of shape (m,)),
+    or None for a closed module (which takes no u and no params)."""
     t0 = check_t0(t0)
     flat = check_params(open_meta, params)
     rows = check_u(open_meta, u, steps)

@@ -283,7 +283,11 @@ class Integrator:
             the same states bit for bit; False: one body at a time (A/B measurement).
         newton : NewtonOptions or None, optional
             Newton settings, as for ``simulate``.
-        u, t0
+        u : array_like, optional
+            As for ``simulate``, shared by the runs ((m,) or (steps, m)), or one per run:
+            (B, m) constant, (B, steps, m) one row per step ((B, m) with B == steps is the
+            shared (steps, m)).
+        t0 : float, optional
             As for ``simulate`` (shared by the runs).
         params : dict, optional
             As for ``simulate``; a value may carry a leading axis of length B: run b takes

@@ -143,7 +143,7 @@ SCENE_CASES = [c for c in CASES if c.is_scene]
 #: ``hpgen run`` is exercised on one case per scene check (h, steps, g0, xi0/mu0) to keep the
 #: module fast; HPGEN_TEST_ALL_RUN=1 runs it on every scene case
 RUN_SAMPLE = ("scene_h_nan", "scene_steps_negative", "initial_g_not_on_group",
-              "initial_mu_nonfinite")
+              "initial_mu_nonfinite", "scene_u_wrong_length")
 RUN_CASES = SCENE_CASES if os.environ.get("HPGEN_TEST_ALL_RUN") == "1" else \
     [c for c in SCENE_CASES if c.name in RUN_SAMPLE]
 PAYLOAD_CASES = [c for c in CASES if c.markers]

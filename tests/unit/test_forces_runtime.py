@@ -110,7 +110,13 @@ def test_bad_arguments_fail_before_any_step(modules, kw, parts):
     (None, ["u is required", "thrust"]),
     ([1.0, 2.0], ["u", "shape (1,)"]),
     (np.ones((9, 1)), ["u", "(10, 1)"]),
-    ([np.nan], ["u", "non-finite"]),
+    ([np.nan], ["u", "input thrust is not finite", "u[0] = nan"]),
+    (np.r_[np.ones(7), np.inf, np.ones(2)].reshape(10, 1),
+     ["u", "step 7, input thrust is not finite", "u[7, 0] = inf"]),
+    (["1.0"], ["u", "real numbers", "strings"]),
+    ([True], ["u", "real numbers", "booleans"]),
+    ([None], ["u", "real numbers", "None"]),
+    ([[1.0]] * 9 + [["x"]], ["u", "real numbers", "strings"]),
 ])
 def test_bad_inputs_u(modules, u, parts):
     with pytest.raises(ArgumentError) as e:
@@ -118,6 +124,40 @@ def test_bad_inputs_u(modules, u, parts):
                                     u=u)
     for part in parts:
         assert part in str(e.value)
+
+
+@pytest.mark.parametrize("kw, parts", [
+    (dict(params={"Mg": "1.3"}), ["params['Mg']", "real numbers", "strings"]),
+    (dict(params={"Mg": True}), ["params['Mg']", "real numbers", "booleans"]),
+    (dict(params={"Mg": None}), ["params['Mg']", "real numbers", "None"]),
+    (dict(params={"Mg": object()}), ["params['Mg']", "real numbers", "object"]),
+])
+def test_non_numeric_params_are_refused(modules, kw, parts):
+    """Strings, booleans, None and objects are not numbers (numpy would convert "1.3" and
+    True silently); numpy numbers and Python ints stay accepted."""
+    top = modules["top"]
+    with pytest.raises(ArgumentError) as e:
+        top.simulate(np.eye(3), 0.05, 10, xi0=[0.2, 1.0, 3.0], **kw)
+    assert e.value.field.startswith("params") and "\n" not in str(e.value)
+    for part in parts:
+        assert part in str(e.value)
+    a = top.simulate(np.eye(3), 0.05, 10, xi0=[0.2, 1.0, 3.0], params={"Mg": np.float32(2)})
+    b = top.simulate(np.eye(3), 0.05, 10, xi0=[0.2, 1.0, 3.0], params={"Mg": 2})
+    assert np.array_equal(a.mu, b.mu)
+
+
+def test_step_asks_for_one_row_of_u(modules):
+    """step() takes the input of one step: its messages ask for shape (m,) only."""
+    veh = modules["vehicle"]
+    mu0 = [0.3, 1.0, 0.2, 1.0, 0.0, 0.5]
+    with pytest.raises(ArgumentError) as e:
+        veh.step(np.eye(4), mu0, 0.05)
+    assert "shape (1,)" in str(e.value) and "steps" not in str(e.value)
+    with pytest.raises(ArgumentError) as e:
+        veh.step(np.eye(4), mu0, 0.05, u=np.ones((3, 1)))
+    assert "shape (1,)" in str(e.value) and "steps" not in str(e.value)
+    with pytest.raises(ArgumentError, match="input thrust is not finite"):
+        veh.step(np.eye(4), mu0, 0.05, u=[np.nan])
 
 
 @pytest.mark.parametrize("backend", ["python", "c"])
