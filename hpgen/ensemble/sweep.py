@@ -95,7 +95,7 @@ def sweep(integ, g0=None, xi0=None, mu0=None, h=None, steps=None, record=None, e
     initial = {"g0": np.array(m.g0), m.kind: m.init}
     attrs = {"module": integ.meta["module"], "hash": integ.meta["hash"], "steps": steps,
              "every": every}
-    return concat([done[b] for b in bounds], step, m.h, initial, attrs)
+    return concat([done[b] for b in bounds], step, m.h, initial, attrs, m.params)
 
 
 def _wants(progress) -> bool:

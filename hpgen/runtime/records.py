@@ -172,7 +172,9 @@ def _keep_every(rows, col, acc, k, every, row0=None):
     """Rows after steps k + 1, k + 2, ... (one per step; preceded by record 0's row ``row0``
     when given): the work column filled, then the rows of the steps that are multiples of
     ``every``."""
-    rows = np.array(rows, dtype=np.float64).reshape(len(rows), -1)
+    rows = np.array(rows, dtype=np.float64)
+    if rows.ndim != 2:                    # (an empty (0, W) block keeps its width)
+        rows = rows.reshape(len(rows), -1)
     if row0 is not None:
         rows, k = np.concatenate([row0, rows]), k - 1
     fill_work(rows, col, acc)
