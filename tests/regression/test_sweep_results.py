@@ -140,3 +140,94 @@ def test_a_parameter_named_like_a_record_gets_a_prefixed_coordinate(tmp_path):
     with pytest.raises(ModelError, match="not a saved hpgen sweep"):
         np.savez(tmp_path / "x.npz", t=np.arange(3))
         load(tmp_path / "x.npz")
+
+
+GRID = """\
+xi0: {xi}
+params: {{c: {c}}}
+steps: 30
+every: 5
+record: [energy, work, momentum]
+chunk_size: 4
+"""
+
+
+def _grid(tmp_path):
+    C = np.linspace(0.0, 0.35, 12)
+    xi = np.vstack([XI, XI[:4] + 1.0])
+    grid = tmp_path / "grid.yaml"
+    grid.write_text(GRID.format(xi=xi.tolist(), c=C.tolist()))
+    ref = dict(xi0=xi, h=H, steps=30, every=5, params={"c": C},
+               record=["energy", "work", "momentum"])
+    return grid, ref
+
+
+def test_cli_resume_redoes_swapped_foreign_and_misshaped_parts(top, tmp_path, monkeypatch,
+                                                                 capsys, cache_dir):
+    from hpgen import cli
+    from hpgen.ensemble import sweep as sweep_mod
+    grid, ref_kw = _grid(tmp_path)
+    out = tmp_path / "s.npz"
+    base = ["sweep", str(DAMPED), "--grid", str(grid), "--out", str(out), "--cache-dir",
+            str(cache_dir), "--no-progress"]
+    real, ran = sweep_mod.run_chunk, []
+
+    def interrupted(integ, m, lo, *a):
+        if lo == 8:
+            raise KeyboardInterrupt
+        return real(integ, m, lo, *a)
+
+    monkeypatch.setattr(sweep_mod, "run_chunk", interrupted)
+    assert cli.main(base) == 130
+    parts = tmp_path / "s.npz.parts"
+    a, b = parts / "chunk-0-4.npz", parts / "chunk-4-8.npz"
+    ab, bb = a.read_bytes(), b.read_bytes()
+    a.write_bytes(bb)                                        # swapped on disk
+    b.write_bytes(ab)
+    monkeypatch.setattr(sweep_mod, "run_chunk", lambda i, m, lo, *r: ran.append(lo) or
+                        real(i, m, lo, *r))
+    capsys.readouterr()
+    assert cli.main([*base, "--resume"]) == 0
+    assert ran == [0, 4, 8]
+    with np.load(out, allow_pickle=False) as z:
+        g0 = z["g0"]                                  # the scene's initial attitude
+        assert not np.allclose(g0[0], np.eye(3))
+        ref = hpgen.sweep(top, g0=g0, progress=False, **ref_kw)
+        for name in ("energy", "work", "momentum"):
+            assert _equal(z[name], ref[name]), name
+        assert _equal(z["newton_iterations"], ref.newton_iterations)
+        assert _equal(z["c"], ref_kw["params"]["c"])
+
+    # a valid .npz of the wrong shapes, and a part of another sweep: redone, same result
+    monkeypatch.setattr(sweep_mod, "run_chunk", interrupted)
+    assert cli.main(base) == 130
+    with np.load(a) as z:
+        good = {k: z[k] for k in z.files}
+    np.savez(a, **{**good, "a:energy": good["a:energy"][:, :3]})
+    np.savez(b, **{**good, "part_range": np.array([4, 8]), "fingerprint": np.str_("0" * 64)})
+    ran.clear()
+    monkeypatch.setattr(sweep_mod, "run_chunk", lambda i, m, lo, *r: ran.append(lo) or
+                        real(i, m, lo, *r))
+    assert cli.main([*base, "--resume"]) == 0
+    assert ran == [0, 4, 8] and not parts.exists()
+    with np.load(out, allow_pickle=False) as z:
+        assert _equal(z["energy"], ref["energy"]) and _equal(z["work"], ref["work"])
+
+
+def test_a_sweep_on_locked_parts_is_refused_in_one_line(top, tmp_path, cache_dir):
+    from hpgen.ensemble.parts import Checkpoint
+    grid, _ = _grid(tmp_path)
+    out = tmp_path / "s.npz"
+    held = Checkpoint(tmp_path / "s.npz.parts", "f" * 64)       # a sweep still running
+    p = _cli("sweep", DAMPED, "--grid", grid, "--out", out, "--cache-dir", cache_dir,
+             "--resume", "--no-progress")
+    assert p.returncode == 2 and p.stderr.count("\n") == 1, p.stderr
+    assert "another hpgen sweep is using this folder" in p.stderr and "s.npz.parts" in p.stderr
+    assert not out.exists()
+    with pytest.raises(ModelError, match="another hpgen sweep"):
+        hpgen.sweep(top, xi0=XI[:2], h=H, steps=2, checkpoint=tmp_path / "s.npz.parts",
+                    progress=False)
+    held.close()
+    p = _cli("sweep", DAMPED, "--grid", grid, "--out", out, "--cache-dir", cache_dir,
+             "--no-progress", "--resume")
+    assert p.returncode == 2 and "different sweep" in p.stderr, p.stderr   # its fingerprint
