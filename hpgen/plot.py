@@ -42,7 +42,7 @@ BLOCK_ROWS = 1_000_000
 #: records at which the group distance is computed from g when it is not recorded
 MAX_DEFECT_SAMPLES = 100_000
 #: arrays of a saved run that are metadata, not records
-META_KEYS = ("h", "every", "partial", "newton_iterations", "error", "module", "hash")
+META_KEYS = ("h", "every", "partial", "newton_iterations", "error", "module", "hash", "group")
 CHANGE_FIGURES = (("energy", "energy error |E(t) - E(0)|"),
                   ("momentum", "spatial momentum change |m_i(t) - m_i(0)|"),
                   ("defect", "distance of g from the group"))

@@ -22,7 +22,8 @@ from . import loop
 from .args import _error, _fits, _int
 from .newton import NewtonOptions
 from .progress import bar as progress_bar
-from .trajectory import npz_path, run_metadata, write_npz
+from .save_formats import save_run
+from .trajectory import run_metadata
 from .work import R as WORK_START, WorkSum, fill_work, work_offset
 
 
@@ -47,14 +48,13 @@ class Records:
             a.flags.writeable = False
 
     def save(self, path) -> Path:
-        """Write t and the record arrays to an .npz (".npz" appended if missing) atomically,
-        with the scalars of Trajectory.save (h, every, partial, newton_iterations, error,
-        module, hash): the file ``hpgen run`` writes. Returns the path written."""
-        path = npz_path(path)
-        write_npz(path, {"t": self.t, **self.arrays,
-                         **run_metadata(self.integrator, self.h, self.every, self.partial,
-                                        self.newton_iterations, self.error)})
-        return path
+        """Write t and the record arrays atomically with the scalars of Trajectory.save (h,
+        every, partial, newton_iterations, error, module, hash, group): .npz (the file
+        ``hpgen run`` writes; ".npz" appended when there is no suffix), .nc, .zarr or a .csv
+        table, by the suffix (hpgen.runtime.save_formats). Returns the path written."""
+        return save_run(path, {"t": self.t, **self.arrays},
+                        run_metadata(self.integrator, self.h, self.every, self.partial,
+                                     self.newton_iterations, self.error))
 
     @property
     def names(self) -> tuple:
