@@ -8,7 +8,8 @@ the rest are NaN), ``steps_done``, ``newton_iterations``.
 What tells the members apart is a coordinate of the member dimension: ``h``, the initial
 state (``g0`` and ``xi0`` or ``mu0``) and each swept runtime parameter under its own name
 (``param_<name>`` if the name is taken by a record; the attribute ``params`` lists them,
-comma-separated). Attributes: module, hash, steps, every, params, hpgen_version.
+comma-separated). Attributes: module, hash, steps, every, forced (1 for a model with forces),
+params, hpgen_version.
 ``load(path)`` reads any of the three forms back into a SweepResult.
 
 .npz needs numpy only (no pickles: text as fixed-width unicode); .zarr and .nc go through

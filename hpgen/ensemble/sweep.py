@@ -89,7 +89,7 @@ def sweep(integ, g0=None, xi0=None, mu0=None, h=None, steps=None, record=None, e
     step = np.arange(0, K * every, every)
     initial = {"g0": np.array(m.g0), m.kind: m.init}
     attrs = {"module": integ.meta["module"], "hash": integ.meta["hash"], "steps": steps,
-             "every": every}
+             "every": every, "forced": int(bool((integ.meta.get("open") or {}).get("forced")))}
     return concat([done[b] for b in bounds], step, m.h, initial, attrs, m.params)
 
 

@@ -125,7 +125,8 @@ def run_metadata(integrator, h, every, partial, newton_iterations, error) -> dic
             "newton_iterations": np.int64(newton_iterations),
             "error": np.str_("" if error is None else str(error)),
             "module": np.str_(meta.get("module", "")), "hash": np.str_(meta.get("hash", "")),
-            "group": np.str_(meta.get("group", ""))}
+            "group": np.str_(meta.get("group", "")),
+            "forced": np.bool_((meta.get("open") or {}).get("forced", False))}
 
 
 def write_npz(path: Path, data: dict) -> None:
