@@ -4,7 +4,7 @@
 
 What is drawn depends on what the file holds (names as ``scene.record`` spells them):
 - a run (.npz of ``hpgen run``, ``Trajectory.save`` or ``Records.save``, or their .nc /
-  .zarr: ``t`` and records): ``<stem>-energy.png`` what the run conserves: the energy-work
+  .zarr / .csv: ``t`` and records): ``<stem>-energy.png`` what the run conserves: the energy-work
   balance |(E - W) - (E0 - W0)| when energy and work are recorded (a forced model), else
   |E(t) - E(0)|, labelled the energy error for a conservative model and the energy change
   for a forced one (the file's ``forced``, the integrator's meta, or work / power recorded);
@@ -37,8 +37,8 @@ import numpy as np
 
 from .errors import HpgenError, ModelError
 from .files import atomic_output
-from .plot_read import META_KEYS, is_saved_sweep, load_labelled, load_npz, npz_arrays, \
-    read_bench_csv
+from .plot_read import META_KEYS, is_saved_sweep, load_csv_run, load_labelled, load_npz, \
+    npz_arrays, read_bench_csv
 
 #: (the name tests and older callers use)
 _npz_arrays = npz_arrays
@@ -58,16 +58,19 @@ def plot_file(path, out_dir=None, integrator=None) -> list[Path]:
     (optional, the run's hpgen Integrator) computes the group distance from recorded g when
     the file has no ``defect`` record."""
     path = Path(path)
-    if path.is_dir() or path.suffix == ".csv":
+    table = load_csv_run(path) if path.suffix == ".csv" and path.is_file() else None
+    if table is None and path.suffix != ".zarr" and (path.is_dir() or path.suffix == ".csv"):
         csv_path = path / "work_precision.csv" if path.is_dir() else path
         if not csv_path.is_file():
             raise ModelError("expected the output directory of hpgen bench (with "
                              "work_precision.csv) or an .npz of hpgen run", file=str(path))
         return [_work_precision(csv_path, Path(out_dir) if out_dir else csv_path.parent)]
     out = Path(out_dir) if out_dir else path.parent
-    stem = path.name[:-len(path.suffix)] if path.suffix in (".npz", ".nc", ".zarr") else \
-        path.name
-    if path.suffix in (".nc", ".zarr") or is_saved_sweep(path):
+    stem = path.name[:-len(path.suffix)] if path.suffix in (".npz", ".nc", ".zarr", ".csv") \
+        else path.name
+    if table is not None:
+        data = table
+    elif path.suffix in (".nc", ".zarr") or is_saved_sweep(path):
         data = load_labelled(path)
         if data is None:                                   # a sweep
             from .ensemble.result import load

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import csv
 import math
+import re
 import struct
 import zipfile
 from pathlib import Path
@@ -79,6 +80,42 @@ def load_labelled(path: Path):
     if len(data["t"]) == 0:
         raise ModelError("the file holds no sample (t is empty): nothing to plot",
                          file=str(path))
+    return data
+
+
+def load_csv_run(path: Path):
+    """The arrays of a run saved as a .csv table (hpgen.runtime.save_formats: header t,
+    g[0][0], ..., mu[0], ..., energy, ...), or None when the table does not start with t
+    (a benchmark's table)."""
+    try:
+        with open(path, newline="") as fh:
+            header = next(csv.reader(fh), [])
+    except (OSError, UnicodeDecodeError) as e:
+        raise ModelError(f"cannot read the table ({e})", file=str(path)) from None
+    if not header or header[0] != "t":
+        return None
+    names: dict = {}
+    for col, label in enumerate(header):
+        m = re.fullmatch(r"([A-Za-z_][A-Za-z0-9_]*)((?:\[\d+\])*)", label)
+        if m is None:
+            raise ModelError(f"column {col + 1} is named {label!r}; expected a record name "
+                             "with [i] indices", file=str(path), line=1)
+        names.setdefault(m.group(1), []).append(
+            (col, tuple(int(i) for i in re.findall(r"\d+", m.group(2)))))
+    try:
+        rows = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    except ValueError as e:
+        raise ModelError(f"expected numbers in every row ({e})", file=str(path)) from None
+    if rows.shape[1] != len(header) or len(rows) == 0:
+        raise ModelError(f"expected {len(header)} numbers in each of one or more rows",
+                         file=str(path))
+    data = {}
+    for name, cols in names.items():
+        shape = tuple(max(ix[k] for _, ix in cols) + 1 for k in range(len(cols[0][1])))
+        a = np.full((len(rows),) + shape, np.nan)
+        for col, ix in cols:
+            a[(slice(None),) + ix] = rows[:, col]
+        data[name] = a
     return data
 
 

@@ -157,3 +157,26 @@ def test_a_forced_sweep_without_work_plots_the_energy_change(compile_model, tmp_
     res = hpgen.sweep(closed, xi0=np.ones((3, 3)), h=0.05, steps=20, record=["energy"],
                       progress=False)
     assert res.attrs["forced"] == 0 and _changes(res)[0][0] == "energy error |E(t) - E(0)|"
+
+
+def test_plot_of_a_run_table_and_a_zarr_sweep(compile_model, tmp_path, capsys):
+    from hpgen.plot_read import load_csv_run
+    integ = compile_model(DAMPED)
+    rec = integ.record(np.eye(3), 0.05, 100, xi0=[0.2, 1.0, 3.0], every=2)
+    path = rec.save(tmp_path / "run.csv")
+    table = load_csv_run(path)
+    for name in rec.names:
+        assert np.array_equal(table[name], rec[name]), name
+    assert [p.name for p in plot_file(path)] == ["run-energy.png", "run-momentum.png",
+                                                 "run-pose.png", "run-records.png"]
+    (tmp_path / "bad.csv").write_text("t,g[0][0]\n0.0,abc\n")
+    assert main(["plot", str(tmp_path / "bad.csv")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "bad.csv: expected numbers" in err
+    pytest.importorskip("zarr")
+    import hpgen
+    res = hpgen.sweep(integ, xi0=np.ones((4, 3)), h=0.05, steps=40, every=5,
+                      params={"c": [0.0, 0.1, 0.2, 0.3]}, record=["energy", "work"],
+                      progress=False)
+    files = plot_file(res.save(tmp_path / "sw.zarr"))
+    assert [p.name for p in files] == ["sw-spread.png", "sw-vs-c.png", "sw-members.png"]
