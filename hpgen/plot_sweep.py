@@ -8,8 +8,8 @@
   5-95 percentile bands and the maximum. Failed members count up to their failure.
 - ``<stem>-vs-<p>.png``: per member, against the swept value p (a runtime parameter that
   varies, else h, else the initial-state component that varies most): the largest change
-  of the conserved quantity over the run and the last value of each scalar record (a
-  failed member: a dotted line at its value).
+  of the conserved quantity over the run and the last value of each scalar record (of mu's
+  components for a sweep of the states g, mu; a failed member: a dotted line at its value).
 - ``<stem>-members.png``: the scalar records (and the components of the first vector record)
   of at most MAX_MEMBERS members spread over the swept values, against t.
 The title says how many members failed.
@@ -106,10 +106,15 @@ def _per_member(res, changes) -> list:
         peak[some] = np.nanmax(v[some], axis=1)
         out.append((short, peak))
     last = np.maximum(np.asarray(res.samples) - 1, 0)
-    for name, a in res.arrays.items():
-        if a.ndim == 2 and len(out) < MAX_PANELS:
-            v = np.asarray(a, dtype=float)[np.arange(len(res)), last]
-            out.append((f"{name} at the end", np.where(res.failed, np.nan, v)))
+    columns = [(name, None) for name, a in res.arrays.items() if a.ndim == 2]
+    vectors = [name for name, a in res.arrays.items() if a.ndim == 3]
+    if not columns and vectors:                  # states only: the components of mu
+        columns = [(vectors[-1], i) for i in range(res[vectors[-1]].shape[2])]
+    for name, i in columns[:MAX_PANELS - len(out)]:
+        a = np.asarray(res[name] if i is None else res[name][:, :, i], dtype=float)
+        v = a[np.arange(len(res)), last]
+        label = name if i is None else f"{name}[{i}]"
+        out.append((f"{label} at the end", np.where(res.failed, np.nan, v)))
     return out
 
 
@@ -141,9 +146,9 @@ def _spread(plt, x, xlabel, changes, title):
                                 label=f"{lo}-{hi} % of members")
             ax.semilogy(xs, _positive(median), color="C0", lw=1.2, label="median")
             ax.semilogy(xs, _positive(top), color="C3", lw=0.8, label="max")
+            ax.legend(fontsize=7, loc="lower right")
         ax.set_ylabel(label, fontsize=8)
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize=7, loc="lower right")
     axes[-1, 0].set_xlabel(xlabel)
     axes[0, 0].set_title(f"{title}: spread over members", fontsize=9)
     fig.tight_layout()

@@ -180,3 +180,21 @@ def test_plot_of_a_run_table_and_a_zarr_sweep(compile_model, tmp_path, capsys):
                       progress=False)
     files = plot_file(res.save(tmp_path / "sw.zarr"))
     assert [p.name for p in files] == ["sw-spread.png", "sw-vs-c.png", "sw-members.png"]
+
+
+def test_plot_of_a_states_sweep_and_of_an_all_failed_sweep(compile_model, tmp_path):
+    import warnings
+
+    import hpgen
+    integ = compile_model(DAMPED)
+    states = hpgen.sweep(integ, xi0=np.outer([1.0, 2.0, 3.0], [1.0, 0.5, 2.0]), h=0.05,
+                         steps=40, every=5, progress=False)
+    assert [p.name for p in plot_file(states.save(tmp_path / "gm.npz"))] == [
+        "gm-vs-xi0_2.png", "gm-members.png"]
+    failed = hpgen.sweep(integ, xi0=[[0.2, 1, 300], [0.3, 1, 300]], h=0.05, steps=40,
+                         every=5, record=["energy", "momentum"], progress=False)
+    assert failed.failed.all()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        files = plot_file(failed.save(tmp_path / "f.npz"))
+    assert [p.name for p in files] == ["f-spread.png", "f-vs-xi0_0.png", "f-members.png"]
