@@ -42,22 +42,24 @@ def _interrupt_after(integ, kw, out, chunks):
         del integ._b.advance_record
 
 
-@pytest.mark.parametrize("where", [0.02, 0.5, 0.97, "truncated"])
-def test_resume_redoes_a_damaged_chunk(heavy_top, tmp_path, where):
+@pytest.mark.parametrize("where,which", [(0.02, 1), (0.5, 1), (0.97, 1), ("truncated", 1),
+                                         (0.5, 0), (0.5, 3)])
+def test_resume_redoes_a_damaged_chunk(heavy_top, tmp_path, where, which):
     integ, kw = heavy_top
     ref, _ = record_to_npz(integ, tmp_path / "ref.npz", **kw)
     out = tmp_path / "run.npz"
     _interrupt_after(integ, kw, out, 4)
-    bad = partial_dir(out) / "chunk_000001.npz"
+    bad = partial_dir(out) / f"chunk_{which:06d}.npz"
     data = bytearray(bad.read_bytes())
     if where == "truncated":
         del data[len(data) // 2:]
     else:
         data[int(where * len(data))] ^= 0x04                 # one flipped bit
     bad.write_bytes(bytes(data))
-    assert not is_intact(bad) and is_intact(partial_dir(out) / "chunk_000000.npz")
+    others = [partial_dir(out) / f"chunk_{i:06d}.npz" for i in range(4) if i != which]
+    assert not is_intact(bad) and all(is_intact(p) for p in others)
     path, summary = record_to_npz(integ, out, resume=True, **kw)
-    assert summary["resumed_at"] == CHUNK                    # from chunk 0's state
+    assert summary["resumed_at"] == CHUNK * which            # from the chunk before it
     with np.load(path) as f, np.load(ref) as r:
         assert sorted(f.files) == sorted(r.files)
         for key in r.files:
