@@ -115,6 +115,14 @@ class Checkpoint:
                    for k, a in arrays.items())
 
 
+def refuse_if_in_use(directory) -> None:
+    """ModelError when another sweep holds the lock of the parts folder ``directory``
+    (nothing when it does not exist or is free)."""
+    directory = Path(directory)
+    if directory.is_dir():
+        os.close(_lock(directory))
+
+
 def _lock(directory: Path) -> int:
     """An fd holding an exclusive flock on ``directory``; ModelError if another holds it."""
     import fcntl

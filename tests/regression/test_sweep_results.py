@@ -224,6 +224,9 @@ def test_a_sweep_on_locked_parts_is_refused_in_one_line(top, tmp_path, cache_dir
     assert p.returncode == 2 and p.stderr.count("\n") == 1, p.stderr
     assert "another hpgen sweep is using this folder" in p.stderr and "s.npz.parts" in p.stderr
     assert not out.exists()
+    p = _cli("sweep", DAMPED, "--grid", grid, "--out", out, "--cache-dir", cache_dir,
+             "--no-progress")                         # nor without --resume
+    assert p.returncode == 2 and "another hpgen sweep is using" in p.stderr, p.stderr
     with pytest.raises(ModelError, match="another hpgen sweep"):
         hpgen.sweep(top, xi0=XI[:2], h=H, steps=2, checkpoint=tmp_path / "s.npz.parts",
                     progress=False)
