@@ -10,8 +10,10 @@ sweep's, and every array has the expected shape and kind; any other part (damage
 swapped with another, from another sweep, or a foreign .npz) is run again and overwritten.
 
 While a sweep uses the folder it holds an exclusive lock on it (flock on the directory): a
-second sweep on the same folder is refused (ModelError) instead of racing the first. The
-lock is released when the Checkpoint is closed or collected. numpy and the standard
+sweep of another process on the same folder is refused (ModelError) instead of racing the
+first. The lock is released when the Checkpoint is closed or collected (and shared within a
+process, so that an interrupted sweep's Checkpoint still referenced by a traceback does not
+lock out the next one). numpy and the standard
 library only.
 """
 from __future__ import annotations
@@ -43,7 +45,7 @@ class Checkpoint:
         self.shapes = None if shapes is None else {k: tuple(v) for k, v in shapes.items()}
         self.dir.mkdir(parents=True, exist_ok=True)
         self._lock = _lock(self.dir)
-        self._release = weakref.finalize(self, os.close, self._lock)
+        self._release = weakref.finalize(self, _unlock, self._lock)
         path = self.dir / FINGERPRINT
         if path.exists():
             try:
@@ -116,16 +118,27 @@ class Checkpoint:
 
 
 def refuse_if_in_use(directory) -> None:
-    """ModelError when another sweep holds the lock of the parts folder ``directory``
-    (nothing when it does not exist or is free)."""
+    """ModelError when another process's sweep holds the lock of the parts folder
+    ``directory`` (nothing when it does not exist, is free or is held by this process)."""
     directory = Path(directory)
     if directory.is_dir():
-        os.close(_lock(directory))
+        _unlock(_lock(directory))
 
 
-def _lock(directory: Path) -> int:
-    """An fd holding an exclusive flock on ``directory``; ModelError if another holds it."""
+#: the parts folders this process holds: (st_dev, st_ino) -> [fd, holders]
+_HELD: dict = {}
+
+
+def _lock(directory: Path) -> tuple:
+    """Hold the exclusive flock of ``directory`` (shared by this process's holders: a
+    Checkpoint kept alive by a traceback does not lock out the next sweep of the same
+    process); ModelError if another process holds it. Returns the key for _unlock."""
     import fcntl
+    st = os.stat(directory)
+    key = (st.st_dev, st.st_ino)
+    if key in _HELD:
+        _HELD[key][1] += 1
+        return key
     fd = os.open(directory, os.O_RDONLY)
     try:
         fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
@@ -134,4 +147,15 @@ def _lock(directory: Path) -> int:
         raise ModelError("another hpgen sweep is using this folder of completed chunks; wait "
                          "for it to finish (or stop it) before resuming", file=str(directory)
                          ) from None
-    return fd
+    _HELD[key] = [fd, 1]
+    return key
+
+
+def _unlock(key) -> None:
+    held = _HELD.get(key)
+    if held is None:
+        return
+    held[1] -= 1
+    if held[1] == 0:
+        os.close(held[0])
+        del _HELD[key]

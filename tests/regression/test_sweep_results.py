@@ -215,22 +215,39 @@ def test_cli_resume_redoes_swapped_foreign_and_misshaped_parts(top, tmp_path, mo
 
 
 def test_a_sweep_on_locked_parts_is_refused_in_one_line(top, tmp_path, cache_dir):
-    from hpgen.ensemble.parts import Checkpoint
     grid, _ = _grid(tmp_path)
     out = tmp_path / "s.npz"
-    held = Checkpoint(tmp_path / "s.npz.parts", "f" * 64)       # a sweep still running
-    p = _cli("sweep", DAMPED, "--grid", grid, "--out", out, "--cache-dir", cache_dir,
-             "--resume", "--no-progress")
-    assert p.returncode == 2 and p.stderr.count("\n") == 1, p.stderr
-    assert "another hpgen sweep is using this folder" in p.stderr and "s.npz.parts" in p.stderr
-    assert not out.exists()
-    p = _cli("sweep", DAMPED, "--grid", grid, "--out", out, "--cache-dir", cache_dir,
-             "--no-progress")                         # nor without --resume
-    assert p.returncode == 2 and "another hpgen sweep is using" in p.stderr, p.stderr
-    with pytest.raises(ModelError, match="another hpgen sweep"):
-        hpgen.sweep(top, xi0=XI[:2], h=H, steps=2, checkpoint=tmp_path / "s.npz.parts",
-                    progress=False)
-    held.close()
+    parts = tmp_path / "s.npz.parts"
+    holder = subprocess.Popen(                           # a sweep still running on the parts
+        [sys.executable, "-c", "import sys; from hpgen.ensemble.parts import Checkpoint; "
+         f"c = Checkpoint({str(parts)!r}, 'f' * 64); print('held', flush=True); "
+         "sys.stdin.read()"], cwd=ROOT, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+        text=True)
+    try:
+        assert holder.stdout.readline().strip() == "held"
+        for extra in (["--resume"], []):
+            p = _cli("sweep", DAMPED, "--grid", grid, "--out", out, "--cache-dir", cache_dir,
+                     "--no-progress", *extra)
+            assert p.returncode == 2 and p.stderr.count("\n") == 1, p.stderr
+            assert "s.npz.parts: another hpgen sweep is using this folder" in p.stderr
+        assert not out.exists()
+        with pytest.raises(ModelError, match="another hpgen sweep"):
+            hpgen.sweep(top, xi0=XI[:2], h=H, steps=2, checkpoint=parts, progress=False)
+    finally:
+        holder.communicate("")
     p = _cli("sweep", DAMPED, "--grid", grid, "--out", out, "--cache-dir", cache_dir,
              "--no-progress", "--resume")
     assert p.returncode == 2 and "different sweep" in p.stderr, p.stderr   # its fingerprint
+
+
+def test_the_lock_is_shared_within_a_process(top, tmp_path):
+    from hpgen.ensemble import parts
+    kw = dict(xi0=XI[:4], h=H, steps=10, chunk_size=2, progress=False,
+              checkpoint=tmp_path / "parts")
+    first = hpgen.sweep(top, **kw)
+    assert not parts._HELD                              # released when the sweep returns
+    key = parts._lock(tmp_path / "parts")               # held on, as by a kept traceback
+    again = hpgen.sweep(top, **kw)                      # the same process: not locked out
+    assert _equal(again["mu"], first["mu"]) and parts._HELD[key][1] == 1
+    parts._unlock(key)
+    assert not parts._HELD
