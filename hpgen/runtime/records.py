@@ -49,7 +49,7 @@ class Records:
 
     def save(self, path) -> Path:
         """Write t and the record arrays atomically with the scalars of Trajectory.save (h,
-        every, partial, newton_iterations, error, module, hash, group): .npz (the file
+        every, partial, newton_iterations, error, module, hash, group, forced): .npz (the file
         ``hpgen run`` writes; ".npz" appended when there is no suffix), .nc, .zarr or a .csv
         table, by the suffix (hpgen.runtime.save_formats). Returns the path written."""
         return save_run(path, {"t": self.t, **self.arrays},

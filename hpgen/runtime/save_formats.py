@@ -8,9 +8,9 @@
 
 .nc and .zarr hold one variable per record with dimensions ``time`` (sample k), ``row`` and
 ``col`` for g (n x n), ``component`` for mu, xi, momentum (d), the coordinates ``t`` and
-``step`` (k * every) on ``time``, and the run's scalars (h, every, partial as 0/1,
-newton_iterations, error, module, hash, group) as attributes; they need xarray (and zarr, or
-h5netcdf / scipy for NetCDF): ``pip install 'hpgen[scale]'``. The .csv table has the header
+``step`` (k * every) on ``time``, and the run's scalars (h, every, partial and forced as
+0/1, newton_iterations, error, module, hash, group) as attributes; they need xarray (and
+zarr, or h5netcdf / scipy for NetCDF): ``pip install 'hpgen[scale]'``. The .csv table has the header
 ``t, g[0][0], g[0][1], ..., mu[0], ..., energy, ...`` (g row by row) and every number written
 as its shortest round-trip decimal (read back bitwise); the scalars are not in it. Any other suffix
 raises ArgumentError. Every file is written beside its final name and renamed into place.

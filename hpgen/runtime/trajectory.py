@@ -100,8 +100,8 @@ class Trajectory:
         hpgen.runtime.save_formats).
 
         Arrays t, g, mu (or, if ``arrays`` is given, those: see ``observables``); scalars h,
-        every, partial, newton_iterations; error (message or ""); module, hash and group of
-        the generating module when known. Returns the path written.
+        every, partial, newton_iterations; error (message or ""); module, hash, group and
+        forced (whether its model has forces) of the generating module when known. Returns the path written.
         """
         data = dict(arrays) if arrays is not None else {"t": self.t, "g": self.g, "mu": self.mu}
         return save_run(path, data, run_metadata(self.integrator, self.h, self.every,
