@@ -46,6 +46,10 @@ def sweep_figures(res, out: Path, stem: str, source: Path) -> list:
     fig = _members(plt, res, swept, title)
     if fig is not None:
         files.append(_save(fig, out / f"{stem}-members.png"))
+    if not files:
+        from .errors import ModelError
+        raise ModelError("the sweep holds no record hpgen plot can draw (expected some of "
+                         "energy, momentum, mu or scalar records)", file=str(source))
     return files
 
 

@@ -198,3 +198,14 @@ def test_plot_of_a_states_sweep_and_of_an_all_failed_sweep(compile_model, tmp_pa
         warnings.simplefilter("error")
         files = plot_file(failed.save(tmp_path / "f.npz"))
     assert [p.name for p in files] == ["f-spread.png", "f-vs-xi0_0.png", "f-members.png"]
+
+
+def test_a_sweep_of_g_alone_is_one_line(compile_model, tmp_path, capsys):
+    import hpgen
+    integ = compile_model(DAMPED)
+    res = hpgen.sweep(integ, xi0=np.ones((2, 3)), h=0.05, steps=10, record=["g"],
+                      progress=False)
+    assert main(["plot", str(res.save(tmp_path / "g.npz"))]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "g.npz: the sweep holds no record" in err
+    assert not list(tmp_path.glob("*.png"))
