@@ -1,18 +1,25 @@
-"""``hpgen plot``: PNG figures of what a run, a section run or a benchmark saved.
+"""``hpgen plot``: PNG figures of what a run, a section run, a sweep or a benchmark saved.
 
     files = plot_file("heavy_top.npz")            # -> [heavy_top-energy.png, ...]
 
 What is drawn depends on what the file holds (names as ``scene.record`` spells them):
-- a run (.npz of ``hpgen run``, ``Trajectory.save`` or ``Records.save``: ``t`` and records):
-  ``<stem>-energy.png`` |E(t) - E(0)| if ``energy`` is recorded; ``<stem>-momentum.png``
-  |m_i(t) - m_i(0)| per component of the spatial momentum if ``momentum`` is;
-  ``<stem>-group.png`` the distance of g from the group if ``defect`` is recorded (or computed
-  from ``g`` by the ``integrator`` passed in, as ``hpgen run`` does); ``<stem>-records.png``
-  the user expressions and mu / xi against t. Changes are drawn on a log axis as the maximum
-  over bins of at most MAX_POINTS bins (a long run keeps its peaks).
+- a run (.npz of ``hpgen run``, ``Trajectory.save`` or ``Records.save``, or their .nc /
+  .zarr / .csv: ``t`` and records): ``<stem>-energy.png`` what the run conserves: the energy-work
+  balance |(E - W) - (E0 - W0)| when energy and work are recorded (a forced model), else
+  |E(t) - E(0)|, labelled the energy error for a conservative model and the energy change
+  for a forced one (the file's ``forced``, the integrator's meta, or work / power recorded);
+  ``<stem>-momentum.png`` |m_i(t) - m_i(0)| per component of the spatial momentum if
+  ``momentum`` is; ``<stem>-group.png`` the distance of g from the group if ``defect`` is
+  recorded (or computed from ``g`` by the ``integrator`` passed in, as ``hpgen run`` does);
+  ``<stem>-pose.png`` the attitude and position read from ``g`` by the group
+  (hpgen.plot_pose); ``<stem>-records.png`` the user expressions and mu / xi against t.
+  Changes are drawn on a log axis as the maximum over bins of at most MAX_POINTS bins (a
+  long run keeps its peaks).
 - a section run (.npz with ``step``: ``hpgen run`` on a scene with ``section``):
   ``<stem>-sections.png``, the crossings in the planes of the momentum components that vary
   most (up to three panels).
+- a sweep (SweepResult.save: .npz, .nc, .zarr): the spread over members, a quantity against
+  the swept value and a few members' trajectories (hpgen.plot_sweep).
 - a benchmark (the ``hpgen bench`` output directory or its ``work_precision.csv``):
   ``work_precision.png``, error against wall time (hpgen.bench.report).
 Figures go next to the input unless ``out_dir`` is given; each is written atomically.
@@ -24,25 +31,23 @@ A file that is none of these raises ModelError naming it (``hpgen plot``: exit s
 """
 from __future__ import annotations
 
-import csv
-import math
-import struct
-import zipfile
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 
-from .files import atomic_output
 from .errors import HpgenError, ModelError
+from .files import atomic_output
+from .plot_read import META_KEYS, is_saved_sweep, load_csv_run, load_labelled, load_npz, \
+    npz_arrays, read_bench_csv
+
+#: (the name tests and older callers use)
+_npz_arrays = npz_arrays
 
 MAX_POINTS = 4000
 #: rows read at once from a (memory-mapped) record array
 BLOCK_ROWS = 1_000_000
 #: records at which the group distance is computed from g when it is not recorded
 MAX_DEFECT_SAMPLES = 100_000
-#: arrays of a saved run that are metadata, not records
-META_KEYS = ("h", "every", "partial", "newton_iterations", "error", "module", "hash")
 CHANGE_FIGURES = (("energy", "energy error |E(t) - E(0)|"),
                   ("momentum", "spatial momentum change |m_i(t) - m_i(0)|"),
                   ("defect", "distance of g from the group"))
@@ -53,101 +58,29 @@ def plot_file(path, out_dir=None, integrator=None) -> list[Path]:
     (optional, the run's hpgen Integrator) computes the group distance from recorded g when
     the file has no ``defect`` record."""
     path = Path(path)
-    if path.is_dir() or path.suffix == ".csv":
+    table = load_csv_run(path) if path.suffix == ".csv" and path.is_file() else None
+    if table is None and path.suffix != ".zarr" and (path.is_dir() or path.suffix == ".csv"):
         csv_path = path / "work_precision.csv" if path.is_dir() else path
         if not csv_path.is_file():
             raise ModelError("expected the output directory of hpgen bench (with "
                              "work_precision.csv) or an .npz of hpgen run", file=str(path))
         return [_work_precision(csv_path, Path(out_dir) if out_dir else csv_path.parent)]
-    data = _load_npz(path)
     out = Path(out_dir) if out_dir else path.parent
-    stem = path.name[:-4] if path.name.endswith(".npz") else path.name
+    stem = path.name[:-len(path.suffix)] if path.suffix in (".npz", ".nc", ".zarr", ".csv") \
+        else path.name
+    if table is not None:
+        data = table
+    elif path.suffix in (".nc", ".zarr") or is_saved_sweep(path):
+        data = load_labelled(path)
+        if data is None:                                   # a sweep
+            from .ensemble.result import load
+            from .plot_sweep import sweep_figures
+            return sweep_figures(load(path), out, stem, path)
+    else:
+        data = load_npz(path)
     if "step" in data:
         return [_sections(data, out / f"{stem}-sections.png", path)]
     return _run(data, out, stem, path, integrator)
-
-
-# ---- reading ------------------------------------------------------------------------------
-def _load_npz(path: Path) -> dict:
-    if not path.is_file():
-        raise ModelError("expected an .npz file written by hpgen run / save, or a bench "
-                         "directory", file=str(path))
-    if not zipfile.is_zipfile(path):
-        raise ModelError("not an .npz file (expected the output of hpgen run / save)",
-                         file=str(path))
-    try:
-        data = _npz_arrays(path)
-    except (OSError, ValueError, zipfile.BadZipFile, EOFError, struct.error) as e:
-        raise ModelError(f"not a readable .npz file ({type(e).__name__}: "
-                         f"{str(e).splitlines()[0] if str(e) else 'unreadable'})",
-                         file=str(path)) from None
-    t = data.get("t")
-    if t is None or t.ndim != 1:
-        raise ModelError("expected the array t of a saved hpgen run (and its records)",
-                         file=str(path))
-    if len(t) == 0:
-        raise ModelError("the file holds no sample (t is empty): nothing to plot",
-                         file=str(path))
-    for name, a in data.items():
-        if name not in META_KEYS and (a.dtype.kind not in "fiub" or len(a) != len(t)):
-            raise ModelError(f"array {name!r} is not a record of the run (expected {len(t)} "
-                             f"numeric rows, got shape {a.shape}, dtype {a.dtype})",
-                             file=str(path))
-    return data
-
-
-def _npz_arrays(path: Path) -> dict:
-    """{name: array} of an .npz, memory-mapped where the member is stored uncompressed (as
-    np.savez and hpgen's writers store them), so that a file larger than memory is read
-    bin by bin; compressed members and scalars are loaded."""
-    out = {}
-    with zipfile.ZipFile(path) as zf, open(path, "rb") as fh:
-        for info in zf.infolist():
-            name = info.filename[:-4] if info.filename.endswith(".npy") else info.filename
-            arr = None
-            if info.compress_type == zipfile.ZIP_STORED:
-                fh.seek(info.header_offset)
-                local = fh.read(30)
-                if local[:4] != b"PK\x03\x04":
-                    raise ValueError(f"bad local header of member {info.filename!r}")
-                n_name, n_extra = struct.unpack("<HH", local[26:30])
-                fh.seek(info.header_offset + 30 + n_name + n_extra)
-                version = np.lib.format.read_magic(fh)
-                read = (np.lib.format.read_array_header_1_0 if version == (1, 0)
-                        else np.lib.format.read_array_header_2_0)
-                shape, fortran, dtype = read(fh)
-                if dtype.hasobject:
-                    raise ValueError(f"member {name!r} holds Python objects")
-                if shape and dtype.itemsize and int(np.prod(shape)):
-                    arr = np.memmap(path, dtype=dtype, mode="r", offset=fh.tell(), shape=shape,
-                                    order="F" if fortran else "C")
-            if arr is None:
-                with zf.open(info) as member:
-                    arr = np.lib.format.read_array(member, allow_pickle=False)
-            out[name] = arr
-    return out
-
-
-def _read_bench_csv(path: Path) -> list:
-    from .bench.report import CSV_COLUMNS
-    try:
-        with open(path, newline="") as fh:
-            rows = list(csv.DictReader(fh))
-    except (OSError, UnicodeDecodeError) as e:
-        raise ModelError(f"cannot read the benchmark table ({e})", file=str(path)) from None
-    if not rows or not set(CSV_COLUMNS) <= set(rows[0]):
-        raise ModelError("expected work_precision.csv of hpgen bench (columns "
-                         f"{', '.join(CSV_COLUMNS)})", file=str(path))
-    points = []
-    for k, r in enumerate(rows, start=2):
-        try:
-            err, wall = float(r["error"]), float(r["wall_time_s"])
-        except ValueError:
-            raise ModelError("expected numbers in error and wall_time_s", file=str(path),
-                             line=k) from None
-        points.append(SimpleNamespace(family=r["family"], kind=r["kind"], error=err,
-                                      wall_s=wall, ok=math.isfinite(err)))
-    return points
 
 
 # ---- drawing ------------------------------------------------------------------------------
@@ -225,14 +158,23 @@ def _run(data, out, stem, path, integrator) -> list[Path]:
         stride = -(-len(t) // MAX_DEFECT_SAMPLES)          # ceil: at most that many samples
         sources["defect"] = (t[::stride], np.array([integrator.defect(gk)
                                                     for gk in data["g"][::stride]]))
+    labels_of = dict(CHANGE_FIGURES)
+    if "energy" in data:
+        sources["energy"], labels_of["energy"] = energy_source(data, _forced(data, integrator))
+    if "momentum" in data and _forced(data, integrator):
+        labels_of["momentum"] = "spatial momentum change |m_i(t) - m_i(0)| (forced: not conserved)"
     title = _title(data, path)
-    for name, what in CHANGE_FIGURES:
+    for name, _ in CHANGE_FIGURES:
         if name not in sources:
             continue
         tn, v = sources[name]
         labels = [f"m_{i}" for i in range(v.shape[1])] if v.ndim == 2 else None
         png = out / f"{stem}-{'group' if name == 'defect' else name}.png"
-        files.append(_change_figure(tn, v, what, png, title, labels, absolute=name == "defect"))
+        files.append(_change_figure(tn, v, labels_of[name], png, title, labels,
+                                    absolute=name == "defect"))
+    if "g" in data:
+        pose = _pose(t, data, integrator, out / f"{stem}-pose.png", title)
+        files += [pose] if pose else []
     series = [k for k in data if k not in META_KEYS + ("t", "g", "energy", "momentum",
                                                        "defect")]
     if series:
@@ -242,6 +184,51 @@ def _run(data, out, stem, path, integrator) -> list[Path]:
                          "energy, momentum, defect, mu, xi or expressions next to t; g alone "
                          "needs `defect` in scene.record)", file=str(path))
     return files
+
+
+class _Difference:
+    """a - b read row block by row block (two records, possibly memory maps)."""
+
+    def __init__(self, a, b):
+        self.a, self.b, self.shape, self.ndim = a, b, a.shape, a.ndim
+
+    def __len__(self):
+        return len(self.a)
+
+    def __getitem__(self, rows):
+        return np.asarray(self.a[rows], dtype=float) - np.asarray(self.b[rows], dtype=float)
+
+
+def energy_source(data, forced: bool):
+    """((t, values), label) of the energy figure: what is conserved where the file has it.
+    With work recorded, the energy-work balance E - W (a forced model's conserved quantity,
+    docs/numerics.md sec. 13); without, E itself: its error for a conservative model, its
+    change for a forced one."""
+    t = data["t"]
+    if "work" in data:
+        return ((t, _Difference(data["energy"], data["work"])),
+                "energy-work balance |(E - W) - (E0 - W0)|")
+    if forced:
+        return (t, data["energy"]), "energy change |E(t) - E(0)| (forced: not conserved)"
+    return (t, data["energy"]), "energy error |E(t) - E(0)|"
+
+
+def _forced(data, integrator) -> bool:
+    """Whether the run's model has forces: said by the file, the integrator or its records."""
+    if "forced" in data:
+        return bool(data["forced"])
+    meta = getattr(integrator, "meta", None) or {}
+    return bool((meta.get("open") or {}).get("forced")) or "work" in data or "power" in data
+
+
+def _pose(t, data, integrator, path, title):
+    from .plot_pose import pose_figure
+    group = str(data["group"]) if "group" in data else \
+        str((getattr(integrator, "meta", None) or {}).get("group", ""))
+    step = max(1, len(t) // MAX_POINTS)
+    fig = pose_figure(_pyplot(), np.asarray(t[::step], dtype=float), data["g"][::step], group,
+                      title)
+    return None if fig is None else _save(fig, path)
 
 
 def _title(data, path) -> str:
@@ -296,6 +283,6 @@ def _sections(data, path, src) -> Path:
 
 def _work_precision(csv_path: Path, out: Path) -> Path:
     from .bench.report import draw_work_precision
-    points = _read_bench_csv(csv_path)
+    points = read_bench_csv(csv_path)
     fig = draw_work_precision(_pyplot(), points, f"hpgen bench: {csv_path.parent.name}")
     return _save(fig, out / "work_precision.png")

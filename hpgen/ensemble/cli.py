@@ -48,6 +48,7 @@ def cmd_sweep(args, compile_options) -> int:
     from ..model import load_model_text
     from ..runtime import load
     from .grid import read_grid
+    from .parts import refuse_if_in_use
     from .result import SUFFIXES
     from .sweep import sweep
 
@@ -57,6 +58,7 @@ def cmd_sweep(args, compile_options) -> int:
         raise ModelError(f"expected a file name ending in {', '.join(SUFFIXES)}, got "
                          f"{out.name!r}", field="option out")
     parts = out.with_name(out.name + ".parts")
+    refuse_if_in_use(parts)
     if parts.exists() and not args.resume:
         raise ModelError("holds the chunks of an interrupted sweep; pass --resume to continue "
                          "it, or remove it", file=str(parts))

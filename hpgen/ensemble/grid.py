@@ -9,6 +9,7 @@
     chunk_size: 16                             # optional: members per chunk / Dask task
     params: {c: [0.1, 0.2]}                    # optional: runtime parameters per member
     u: [[2.5, 2.4], [2.4, 2.5]]                # optional: constant inputs, shared or per member
+                                               # (a single number in params: shared by all)
 
 Read with hpgen.model.yamldoc (composed node by node: no PyYAML constructor runs, tags are
 refused); every error is one line naming the file, the field and its line.
@@ -58,7 +59,7 @@ def read_grid(path, n: int, d: int) -> dict:
         if not isinstance(p, dict) or not p:
             raise doc.error(("params",), f"expected a mapping of runtime parameter names to "
                                          f"one value per member, got {describe(p)}")
-        out["params"] = {k: _per_member(doc, f"params.{k}", v, B) for k, v in p.items()}
+        out["params"] = {k: _param(doc, k, v, B) for k, v in p.items()}
     if "u" in data:               # shapes against the model's inputs: hpgen.ensemble.members
         v = data["u"]
         rows = v if isinstance(v, list) and v and isinstance(v[0], list) else [v]
@@ -88,6 +89,23 @@ def _per_member(doc, key, v, B):
     if len(v) != B:
         raise doc.error(tuple(key.split(".")), f"expected one value per member ({B}), got "
                                                f"{len(v)}")
+    return v
+
+
+def _param(doc, name, v, B):
+    """A runtime parameter's values: one per member (numbers, or lists of numbers for a
+    vector parameter), or one number shared by all B members."""
+    if is_number(v):
+        return [doc.number(("params", name), v)] * B
+    if not isinstance(v, list):
+        raise doc.error(("params", name), f"expected a number (shared by all members) or a "
+                                          f"list of {B} values (one per member), got "
+                                          f"{describe(v)}")
+    for i, x in enumerate(_per_member(doc, f"params.{name}", v, B)):
+        if isinstance(x, list):
+            doc.vector(("params", name, i), x)
+        else:
+            doc.number(("params", name, i), x)
     return v
 
 

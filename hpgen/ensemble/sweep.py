@@ -15,30 +15,25 @@ scheduler runs it again on another worker (Dask's own retry of tasks of lost wor
 
 ``checkpoint``: a directory where each completed chunk is saved as it completes; a sweep
 started again with the same inputs and checkpoint reuses the chunks found there (``hpgen sweep
---resume``). It holds ``sweep.json`` (the sweep's fingerprint: module content hash, inputs,
-steps, every, record, chunking) and ``chunk-<lo>-<hi>.npz`` files, written atomically.
+--resume``); its parts are checked on load and the folder is locked while the sweep runs
+(hpgen.ensemble.parts).
 """
 from __future__ import annotations
 
 import hashlib
 import json
 import os
-import zipfile
-from pathlib import Path
 
 import numpy as np
 
 from ..errors import ModelError
 from ..runtime.args import _int
 from ..runtime.progress import bar as progress_bar
-from ..runtime.trajectory import write_npz
 from . import remote
 from .chunk import layout, run_chunk
 from .members import chunk_bounds, default_chunk_size, members, run_length
+from .parts import Checkpoint
 from .result import concat
-
-FINGERPRINT = "sweep.json"
-CHUNK_KEYS = ("failed", "error", "samples", "steps_done", "newton_iterations")
 
 
 def sweep(integ, g0=None, xi0=None, mu0=None, h=None, steps=None, record=None, every=1,
@@ -71,7 +66,7 @@ def sweep(integ, g0=None, xi0=None, mu0=None, h=None, steps=None, record=None, e
     g0 = np.eye(integ.n) if g0 is None else g0
     steps, every, K = run_length(steps, every)
     m = members(integ, g0, xi0, mu0, h, params, u, steps)
-    layout(integ, record)                                   # check the names before running
+    _, names, shapes = layout(integ, record)                # check the names before running
     B = len(m)
     threads = _int(threads if threads is not None else (os.cpu_count() or 1), "threads", 1)
     slots = sum(client.nthreads().values()) if client is not None else threads
@@ -81,8 +76,8 @@ def sweep(integ, g0=None, xi0=None, mu0=None, h=None, steps=None, record=None, e
                                             else max(threads, -(-B // 20)))
     bounds = chunk_bounds(B, chunk_size)
     payload = remote.payload_of(integ) if (client is not None or checkpoint) else None
-    store = _Checkpoint(checkpoint, _fingerprint(payload, m, steps, every, record, bounds)) \
-        if checkpoint is not None else None
+    store = Checkpoint(checkpoint, _fingerprint(payload, m, steps, every, record, bounds),
+                       {r: (K, *shapes[r]) for r in names}) if checkpoint is not None else None
     done = {} if store is None else store.load(bounds)
     with progress_bar(B, "sweep", "member", progress) as pbar:
         pbar.update(sum(hi - lo for lo, hi in done))
@@ -97,8 +92,8 @@ def sweep(integ, g0=None, xi0=None, mu0=None, h=None, steps=None, record=None, e
     step = np.arange(0, K * every, every)
     initial = {"g0": np.array(m.g0), m.kind: m.init}
     attrs = {"module": integ.meta["module"], "hash": integ.meta["hash"], "steps": steps,
-             "every": every}
-    return concat([done[b] for b in bounds], step, m.h, initial, attrs)
+             "every": every, "forced": int(bool((integ.meta.get("open") or {}).get("forced")))}
+    return concat([done[b] for b in bounds], step, m.h, initial, attrs, m.params)
 
 
 def _wants(progress) -> bool:
@@ -139,43 +134,3 @@ def _fingerprint(payload, m, steps, every, record, bounds) -> str:
                          bounds, list(m.params)]
                         + ([] if m.u is None else [list(m.u.shape), m.u_per_member])).encode())
     return h.hexdigest()
-
-
-class _Checkpoint:
-    """The chunks of one sweep on disk (``directory``): see the module docstring."""
-
-    def __init__(self, directory, fingerprint: str):
-        self.dir, self.fingerprint = Path(directory), fingerprint
-        path = self.dir / FINGERPRINT
-        if path.exists():
-            try:
-                found = json.loads(path.read_text()).get("fingerprint")
-            except (OSError, ValueError, AttributeError):
-                found = None
-            if found != fingerprint:
-                raise ModelError("holds the chunks of a different sweep (other module, inputs "
-                                 "or chunking); remove it or choose another", file=str(self.dir))
-        else:
-            self.dir.mkdir(parents=True, exist_ok=True)
-            path.write_text(json.dumps({"fingerprint": fingerprint}) + "\n")
-
-    def _path(self, bounds) -> Path:
-        return self.dir / f"chunk-{bounds[0]}-{bounds[1]}.npz"
-
-    def save(self, bounds, result: dict) -> None:
-        data = {f"a:{k}": v for k, v in result["arrays"].items()}
-        data.update({k: result[k] for k in CHUNK_KEYS})
-        data["error"] = np.asarray(result["error"], dtype=str)
-        write_npz(self._path(bounds), data)
-
-    def load(self, bounds) -> dict:
-        """{bounds: chunk dict} of the chunks already on disk (unreadable ones are redone)."""
-        out = {}
-        for b in bounds:
-            try:
-                with np.load(self._path(b), allow_pickle=False) as z:
-                    out[b] = {"arrays": {k[2:]: z[k] for k in z.files if k.startswith("a:")},
-                              **{k: z[k] for k in CHUNK_KEYS}}
-            except (OSError, ValueError, KeyError, EOFError, zipfile.BadZipFile):
-                continue
-        return out

@@ -18,6 +18,7 @@ import numpy as np
 
 from ..errors import ModelError
 from ..files import atomic_output, write_file
+from .checked_npz import is_intact
 from .trajectory import write_npz
 
 #: the layout of ``<out>.partial/`` (bump when it changes: an older folder is not resumed)
@@ -119,8 +120,8 @@ class PartialFolder:
 
     def committed_files(self) -> list:
         """The committed chunk files 0, 1, ... (consecutive; the last holds a state)."""
-        files: list = []
-        while (self.parts / _chunk_name(len(files))).is_file():
+        files: list = []    # up to the first damaged file (it and those after are redone)
+        while is_intact(self.parts / _chunk_name(len(files))):
             files.append(self.parts / _chunk_name(len(files)))
         while files and STATE + "totals" not in _npz_names(files[-1]):
             files.pop()          # a failed run's last chunk (no state), never committed

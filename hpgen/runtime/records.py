@@ -24,7 +24,8 @@ from . import loop
 from .args import _error, _fits, _int
 from .engine import Engine, Part, RunArgs, RunHandle, RunStart
 from .progress import bar as progress_bar
-from .trajectory import npz_path, run_metadata, write_npz
+from .save_formats import save_run
+from .trajectory import run_metadata
 from .work import R as WORK_START, WorkSum, fill_work, work_offset
 
 
@@ -49,14 +50,13 @@ class Records:
             a.flags.writeable = False
 
     def save(self, path) -> Path:
-        """Write t and the record arrays to an .npz (".npz" appended if missing) atomically,
-        with the scalars of Trajectory.save (h, every, partial, newton_iterations, error,
-        module, hash): the file ``hpgen run`` writes. Returns the path written."""
-        path = npz_path(path)
-        write_npz(path, {"t": self.t, **self.arrays,
-                         **run_metadata(self.integrator, self.h, self.every, self.partial,
-                                        self.newton_iterations, self.error)})
-        return path
+        """Write t and the record arrays atomically with the scalars of Trajectory.save (h,
+        every, partial, newton_iterations, error, module, hash, group, forced): .npz (the file
+        ``hpgen run`` writes; ".npz" appended when there is no suffix), .nc, .zarr or a .csv
+        table, by the suffix (hpgen.runtime.save_formats). Returns the path written."""
+        return save_run(path, {"t": self.t, **self.arrays},
+                        run_metadata(self.integrator, self.h, self.every, self.partial,
+                                     self.newton_iterations, self.error))
 
     @property
     def names(self) -> tuple:
@@ -234,7 +234,9 @@ def _keep_every(rows, col, acc, k, every, row0=None):
     """Rows after steps k + 1, k + 2, ... (one per step; preceded by record 0's row ``row0``
     when given): the work column filled, then the rows of the steps that are multiples of
     ``every``."""
-    rows = np.array(rows, dtype=np.float64).reshape(len(rows), -1)
+    rows = np.array(rows, dtype=np.float64)
+    if rows.ndim != 2:                    # (an empty (0, W) block keeps its width)
+        rows = rows.reshape(len(rows), -1)
     if row0 is not None:
         rows, k = np.concatenate([row0, rows]), k - 1
     fill_work(rows, col, acc)

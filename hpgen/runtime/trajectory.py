@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from ..files import atomic_output
+from .save_formats import run_path, save_run
 
 
 @dataclass(frozen=True, eq=False)
@@ -94,18 +95,18 @@ class Trajectory:
         return {"t": self.t, **{n: compute[n]() for n in names}}
 
     def save(self, path, arrays: dict | None = None) -> Path:
-        """Write an .npz (".npz" appended if missing) atomically: temp file + os.replace.
+        """Write the run atomically (temp file + os.replace) as .npz, .nc, .zarr or .csv by
+        the suffix of ``path`` (none: ".npz" appended; any other: ArgumentError; formats:
+        hpgen.runtime.save_formats).
 
         Arrays t, g, mu (or, if ``arrays`` is given, those: see ``observables``); scalars h,
-        every, partial, newton_iterations; error (message or ""); module and hash of the
-        generating module when known. Returns the path written.
+        every, partial, newton_iterations; error (message or ""); module, hash, group and
+        forced (whether its model has forces) of the generating module when known. Returns the path written.
         """
-        path = npz_path(path)
         data = dict(arrays) if arrays is not None else {"t": self.t, "g": self.g, "mu": self.mu}
-        data.update(run_metadata(self.integrator, self.h, self.every, self.partial,
-                                 self.newton_iterations, self.error))
-        write_npz(path, data)
-        return path
+        return save_run(path, data, run_metadata(self.integrator, self.h, self.every,
+                                                 self.partial, self.newton_iterations,
+                                                 self.error))
 
 
 #: the defaults of Trajectory's fields (Trajectory.made; _obs is a new dict each time)
@@ -113,9 +114,8 @@ _DEFAULTS = {f.name: f.default for f in fields(Trajectory) if f.default is not M
 
 
 def npz_path(path) -> Path:
-    """``path`` with ".npz" appended unless it already ends so."""
-    path = Path(path)
-    return path if path.suffix == ".npz" else path.with_name(path.name + ".npz")
+    """``path`` with ".npz" appended when it has no suffix; ArgumentError for another."""
+    return run_path(path, (".npz",))
 
 
 def run_metadata(integrator, h, every, partial, newton_iterations, error) -> dict:
@@ -124,7 +124,9 @@ def run_metadata(integrator, h, every, partial, newton_iterations, error) -> dic
     return {"h": np.float64(h), "every": np.int64(every), "partial": np.bool_(partial),
             "newton_iterations": np.int64(newton_iterations),
             "error": np.str_("" if error is None else str(error)),
-            "module": np.str_(meta.get("module", "")), "hash": np.str_(meta.get("hash", ""))}
+            "module": np.str_(meta.get("module", "")), "hash": np.str_(meta.get("hash", "")),
+            "group": np.str_(meta.get("group", "")),
+            "forced": np.bool_((meta.get("open") or {}).get("forced", False))}
 
 
 def write_npz(path: Path, data: dict) -> None:

@@ -42,7 +42,7 @@ def test_run_writes_the_figures_of_what_it_records(tmp_path, cache_dir, capsys):
                  "--cache-dir", str(cache_dir)]) == 0
     printed = capsys.readouterr().out
     # heavy_top records [g, mu, energy, momentum, height]: the group distance comes from g
-    names = {f"top-{k}.png" for k in ("energy", "momentum", "group", "records")}
+    names = {f"top-{k}.png" for k in ("energy", "momentum", "group", "pose", "records")}
     assert {p.name for p in tmp_path.glob("*.png")} == names
     for name in names:
         _png(tmp_path / name)
@@ -64,9 +64,9 @@ def test_trajectory_file_and_group_distance_from_the_integrator(tmp_path, compil
     integ = compile_model(FREE_BODY, backend="c")
     tr = integ.simulate(g0=np.eye(3), mu0=[0.45, 0.0, 0.89], h=0.1, steps=200)
     path = tr.save(tmp_path / "tr.npz")
-    assert [p.name for p in plot_file(path)] == ["tr-records.png"]         # t, g, mu only
+    assert [p.name for p in plot_file(path)] == ["tr-pose.png", "tr-records.png"]  # t, g, mu
     files = plot_file(path, out_dir=tmp_path / "b", integrator=integ)
-    assert [p.name for p in files] == ["tr-group.png", "tr-records.png"]
+    assert [p.name for p in files] == ["tr-group.png", "tr-pose.png", "tr-records.png"]
     for f in files:
         _png(f)
 
@@ -101,7 +101,7 @@ def _bad_files(tmp_path):
     np.savez(tmp_path / "empty.npz", t=np.zeros(0))
     np.savez(tmp_path / "text.npz", t=np.arange(3.0), s=np.array(["a", "b", "c"]))
     np.savez(tmp_path / "short.npz", t=np.arange(3.0), energy=np.arange(2.0))
-    np.savez(tmp_path / "g_only.npz", t=np.arange(2.0), g=np.stack([np.eye(3)] * 2))
+    np.savez(tmp_path / "g_only.npz", t=np.arange(2.0), g=np.stack([np.eye(5)] * 2))
     (tmp_path / "bench").mkdir()
     (tmp_path / "bench" / "work_precision.csv").write_text("a,b\n1,2\n")
     return ["missing.npz", "junk.npz", "no_t.npz", "empty.npz", "text.npz", "short.npz",
