@@ -27,19 +27,19 @@ def heavy_top(cache_dir):
 
 
 def _interrupt_after(integ, kw, out, chunks):
-    advance, calls = integ._b.advance_record, []
+    advance, calls = integ.engine.backend.advance_record, []
 
     def interrupted(*a, **k):
         calls.append(1)
         if len(calls) == chunks + 1:
             raise KeyboardInterrupt
         return advance(*a, **k)
-    integ._b.advance_record = interrupted
+    integ.engine.backend.advance_record = interrupted
     try:
         with pytest.raises(KeyboardInterrupt):
             record_to_npz(integ, out, **kw)
     finally:
-        del integ._b.advance_record
+        del integ.engine.backend.advance_record
 
 
 @pytest.mark.parametrize("where,which", [(0.02, 1), (0.5, 1), (0.97, 1), ("truncated", 1),
