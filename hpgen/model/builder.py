@@ -21,6 +21,7 @@ Symbols a builder hands out (SymPy Symbols named as in the model language): ``xi
 """
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 
@@ -78,6 +79,7 @@ def model_text(model) -> str:
 
 
 # ---- SymPy -> the model language -----------------------------------------------------------
+@functools.lru_cache(maxsize=1)
 def _printer_class():
     from sympy.printing.str import StrPrinter
 
@@ -202,6 +204,9 @@ class ModelBuilder:
         file; ``runtime=True`` lists it in ``runtime_parameters``) and return its symbol: a
         Symbol, or a Matrix of Symbols ``name[i]`` / ``name[i, j]``."""
         import numpy as np
+        if name in self.parameters:
+            raise ModelError(f"{name!r} is declared twice", file=MAPPING_SOURCE,
+                             field=f"parameters.{name}")
         value = _plain(value, f"parameters.{name}")
         self.parameters[name] = value
         if runtime:

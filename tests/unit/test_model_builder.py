@@ -119,7 +119,7 @@ def test_mapping_errors_name_the_field(mapping, field, words, cache_dir):
         assert info.value.field == field or info.value.field.startswith(field), msg
 
 
-def test_builder_refuses_what_the_language_lacks():
+def test_builder_refuses_what_the_language_lacks(cache_dir):
     m = ModelBuilder("m", "SO3")
     for lag, words in ((sp.Abs(m.xi[0]), "Abs"), (sp.Symbol("y") * m.xi[0], "'y'"),
                        (sp.atan(m.xi[0]), "atan"), (sp.I * m.xi[0], "ImaginaryUnit"),
@@ -130,6 +130,13 @@ def test_builder_refuses_what_the_language_lacks():
         assert info.value.field == "lagrangian" and words in str(info.value), str(info.value)
     with pytest.raises(ModelError, match="group"):
         ModelBuilder("m", "SO4")
+    m.parameter("c", 1.0)
+    with pytest.raises(ModelError, match="declared twice"):
+        m.parameter("c", 2.0)
+    m.lagrangian = m.xi[0]**2 + m.t
+    m.parameter("t", 1.0)            # the loader's rules: t is reserved
+    with pytest.raises(ModelError, match="parameters.t: parameter name 't' is reserved"):
+        hpgen.build(m, backend="python", cache_dir=cache_dir)
     assert ModelBuilder("m", "SO3").R.shape == (3, 3) and ModelBuilder("m", "SO3").x is None
     prod = ModelBuilder("m", ["SO3", "R3"])
     assert prod.xi.shape == (6, 1) and prod.g.shape == (7, 7) and prod.R is None
