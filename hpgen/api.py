@@ -99,14 +99,6 @@ def model_source(model) -> tuple[str, str]:
                      field="model")
 
 
-def _without_line(err: ModelError, path: str) -> ModelError:
-    """A model from Python has no lines to point at: its errors name the field only."""
-    from .model.builder import MAPPING_SOURCE
-    if path != MAPPING_SOURCE:
-        return err
-    return ModelError(err.message, file=path, field=err.field)
-
-
 @dataclass(frozen=True)
 class Derivation:
     """The derive stage's result for one compile: the parsed model, the resolved tableau
@@ -358,11 +350,11 @@ def derive_module(path: str, text: str, opts: CompileOptions) -> Derivation:
     """The model (text of the file ``path``) parsed, its options resolved and its step
     derived and checked. Raises ModelError naming the file."""
     from .model import load_model_text
-
+    from .model.builder import without_line
     try:
         model_obj = load_model_text(text, filename=path)   # bad input fails before casadi
     except ModelError as e:
-        raise _without_line(e, path) from None
+        raise without_line(e, path) from None
     from .derive import derive
     from .derive.checks import check_legendre
     try:
@@ -370,7 +362,7 @@ def derive_module(path: str, text: str, opts: CompileOptions) -> Derivation:
         step = derive(model_obj, tab, tau, rkmk)
         check_legendre(step, model_obj)
     except ModelError as e:          # errors of the options and the derivation name the file too
-        raise _without_line(e.located(file=path), path) from None
+        raise without_line(e.located(file=path), path) from None
     return Derivation(model_obj, tab, tau, rkmk, step)
 
 

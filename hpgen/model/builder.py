@@ -31,6 +31,14 @@ from ..errors import ModelError
 MAPPING_SOURCE = "<mapping>"
 
 
+def without_line(err: ModelError, path: str) -> ModelError:
+    """``err`` of the model named ``path``; a model from Python has no lines to point at, so
+    its errors name the field only."""
+    if path != MAPPING_SOURCE:
+        return err
+    return ModelError(err.message, file=path, field=err.field)
+
+
 # ---- a mapping -> model-file text ----------------------------------------------------------
 def _plain(value, path: str):
     """value as plain YAML-able data (dict, list, str, int, float, bool, None)."""

@@ -247,6 +247,9 @@ def main(argv=None) -> int:
                     help="do not write; exit 1 when the page differs from the code")
     args = ap.parse_args(argv)
     path = Path(args.page)
+    if not path.is_file():
+        print(f"api_docs: no page {path} (run from a checkout, or give --page)", file=sys.stderr)
+        return 2
     old = path.read_text()
     new = update(old)
     if args.check:
