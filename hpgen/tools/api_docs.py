@@ -145,11 +145,12 @@ def render_reference() -> str:
             block.append("Fields: " + ", ".join(f"`{f}`" for f in fields) + ".\n")
         for name, kind, obj in _members(cls):
             if kind == "property":
-                block.append(f"- `{heading}.{name}` (property): {summary(obj)}\n")
+                about = summary(obj)
+                block.append(f"- `{heading}.{name}` (property)" + (f": {about}" if about else ""))
             else:
                 block.append(_entry(f"{heading}.{name}", obj))
-        parts.append("\n".join(block) + "\n")
-    return "\n".join(parts)
+        parts.append("\n".join(b.rstrip("\n") + "\n" for b in block))
+    return "\n".join(p.rstrip("\n") + "\n" for p in parts)
 
 
 def render_errors() -> str:
