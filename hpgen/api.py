@@ -29,7 +29,9 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+import os
 import sys
+from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
 from pathlib import Path
@@ -84,6 +86,19 @@ def read_model_text(path) -> str:
         raise ModelError("expected a UTF-8 text file", file=str(path)) from None
 
 
+def model_source(model) -> tuple[str, str]:
+    """(name, text) of a model given as a model file's path, a mapping with the model file's
+    keys or a hpgen.model.builder.ModelBuilder (name ``<mapping>``; hpgen.model.builder)."""
+    if isinstance(model, (str, os.PathLike)):
+        return os.fspath(model), read_model_text(model)
+    if isinstance(model, Mapping) or hasattr(model, "to_mapping"):
+        from .model.builder import MAPPING_SOURCE, model_text
+        return MAPPING_SOURCE, model_text(model)
+    raise ModelError("expected the path of a model file, a mapping with the model file's keys "
+                     f"or a hpgen.model.builder.ModelBuilder, got {type(model).__name__}",
+                     field="model")
+
+
 @dataclass(frozen=True)
 class Derivation:
     """The derive stage's result for one compile: the parsed model, the resolved tableau
@@ -129,15 +144,17 @@ class CompiledModule:
 
 def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
             cache_dir=None, cc=None, cflags=None):
-    """Compile a model file into an integrator and load it.
+    """Compile a model (a model file, or one declared in Python) into an integrator and load it.
 
     The module is generated (or taken from the build cache), built (C backend) and loaded.
     A cache hit imports none of sympy, casadi, jinja2.
 
     Parameters
     ----------
-    model : str or pathlib.Path
-        Path of the model file (YAML, docs/model-file.md).
+    model : str, pathlib.Path, mapping or hpgen.model.builder.ModelBuilder
+        Path of the model file (YAML, docs/model-file.md); or a mapping with the model
+        file's keys, or a ModelBuilder (SymPy expressions), checked by the same rules and
+        compiled into the module of the equivalent file (hpgen.model.builder).
     tableau : str, dict, ButcherTableau or None, optional
         Catalog name (``euler-forward``, ``euler-backward``, ``stormer-verlet``, ``midpoint``,
         ``gauss2``, ``gauss3``, ``lobatto3a3``; ``hpgen list``), or a user tableau
@@ -247,15 +264,15 @@ def build_compiled(model, opts: CompileOptions) -> CompiledModule:
     is used instead.
     """
     opts.validate()
-    text = read_model_text(model)
+    source, text = model_source(model)
     cache_dir = Path(opts.cache_dir) if opts.cache_dir else cache.default_cache_dir()
     try:
-        result, library = _cached_module(str(model), text, opts, cache_dir)
+        result, library = _cached_module(source, text, opts, cache_dir)
     except cache.CacheUnwritable as exc:
         tmp = cache.private_cache_dir()
         print(f"hpgen: warning: the cache directory {cache_dir} cannot be written "
               f"({exc.reason}); building in {tmp}", file=sys.stderr)
-        result, library = _cached_module(str(model), text, opts, tmp)
+        result, library = _cached_module(source, text, opts, tmp)
     if opts.out is None:
         return result
     entry = result.module_dir
@@ -333,8 +350,11 @@ def derive_module(path: str, text: str, opts: CompileOptions) -> Derivation:
     """The model (text of the file ``path``) parsed, its options resolved and its step
     derived and checked. Raises ModelError naming the file."""
     from .model import load_model_text
-
-    model_obj = load_model_text(text, filename=path)   # bad input fails before casadi loads
+    from .model.builder import without_line
+    try:
+        model_obj = load_model_text(text, filename=path)   # bad input fails before casadi
+    except ModelError as e:
+        raise without_line(e, path) from None
     from .derive import derive
     from .derive.checks import check_legendre
     try:
@@ -342,7 +362,7 @@ def derive_module(path: str, text: str, opts: CompileOptions) -> Derivation:
         step = derive(model_obj, tab, tau, rkmk)
         check_legendre(step, model_obj)
     except ModelError as e:          # errors of the options and the derivation name the file too
-        raise e.located(file=path) from None
+        raise without_line(e.located(file=path), path) from None
     return Derivation(model_obj, tab, tau, rkmk, step)
 
 

@@ -28,7 +28,8 @@ def _add_options(p):
     p.add_argument("--rkmk", choices=RKMK.names, help=RKMK.help("default: the model's"))
     p.add_argument("--backend", choices=BACKEND.names, default="c",
                    help=BACKEND.help("default: c"))
-    p.add_argument("--cache-dir", help="build cache directory (default ~/.cache/hpgen)")
+    p.add_argument("--cache-dir", help="build cache directory (default $XDG_CACHE_HOME/hpgen, "
+                   "else ~/.cache/hpgen)")
 
 
 def _add_u_options(p):

@@ -34,7 +34,8 @@ def add_parser(sub):
     b.add_argument("--samples", default="200", help="samples for the energy drift (default 200)")
     b.add_argument("--min-time", default="0.2", help="timing: seconds of repeats (default 0.2)")
     b.add_argument("--out", help="output directory (default bench-<model name>/)")
-    b.add_argument("--cache-dir", help="build cache directory (default ~/.cache/hpgen)")
+    b.add_argument("--cache-dir", help="build cache directory (default $XDG_CACHE_HOME/hpgen, "
+                   "else ~/.cache/hpgen)")
     b.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     b.add_argument("--u", nargs="+", metavar="U", help="the constant control inputs of a model "
                    "with inputs (m numbers; default: the scene's u)")

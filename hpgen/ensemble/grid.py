@@ -2,7 +2,7 @@
 
     xi0: [[0.2, 1.0, 3.0], [0.3, 1.0, 3.0]]   # or mu0: one vector of length d per member
     g0: [[1, 0, 0], [0, 1, 0], [0, 0, 1]]     # optional: one matrix, or one per member
-    h: 0.05                                    # optional: one step, or one per member
+    h: 0.05                                    # optional: one step, or one per member (!= 0)
     steps: 1000                                # optional (default: the scene's)
     every: 10                                  # optional (default: the scene's)
     record: [energy, momentum]                 # optional (default: the scene's record list)
@@ -43,8 +43,8 @@ def read_grid(path, n: int, d: int) -> dict:
         out["g0"] = _g0(doc, data["g0"], n, B)
     if "h" in data:
         v = data["h"]
-        out["h"] = _positive(doc, ("h",), v) if not isinstance(v, list) else \
-            [_positive(doc, ("h", i), x) for i, x in enumerate(_per_member(doc, "h", v, B))]
+        out["h"] = _nonzero(doc, ("h",), v) if not isinstance(v, list) else \
+            [_nonzero(doc, ("h", i), x) for i, x in enumerate(_per_member(doc, "h", v, B))]
     for key in ("steps", "every", "chunk_size"):
         if key in data:
             out[key] = _integer(doc, key, data[key], 0 if key == "steps" else 1)
@@ -109,10 +109,10 @@ def _param(doc, name, v, B):
     return v
 
 
-def _positive(doc, path, v):
-    x = doc.number(path, v, "a number > 0")
-    if not x > 0:
-        raise doc.error(path, f"expected a number > 0, got {v!r}")
+def _nonzero(doc, path, v):
+    x = doc.number(path, v, "a step h != 0")
+    if x == 0:
+        raise doc.error(path, "expected a step h != 0 (h < 0 runs backwards in time), got 0")
     return x
 
 

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import ModelError
-from ..runtime.args import _int, _positive
+from ..runtime.args import _int, _step_size
 
 #: error text of a params= sweep on a model without runtime parameters
 NO_RUNTIME_PARAMETERS = "params sweeps need runtime_parameters in the model"
@@ -61,7 +61,7 @@ class Members:
 
 
 def members(integ, g0, xi0, mu0, h, params=None, u=None, steps=None) -> Members:
-    """Members from the sweep arguments (shapes, finiteness and h > 0 checked here; the
+    """Members from the sweep arguments (shapes, finiteness and h != 0 checked here; the
     group defect and the Legendre transform are checked per member when it starts).
     u: shared (m,) or (steps, m), or per member (B, m) or (B, steps, m) (a (B, m) u with
     B == steps is the shared (steps, m)). ModelError naming the argument."""
@@ -82,9 +82,9 @@ def members(integ, g0, xi0, mu0, h, params=None, u=None, steps=None) -> Members:
                          field="g0")
     H = np.asarray(h, dtype=object)
     if H.ndim == 0:
-        H = np.full(B, _positive(h, "h"))
+        H = np.full(B, _step_size(h, "h"))
     elif H.shape == (B,):
-        H = np.array([_positive(x, f"h[{i}]") for i, x in enumerate(H.tolist())])
+        H = np.array([_step_size(x, f"h[{i}]") for i, x in enumerate(H.tolist())])
     else:
         raise ModelError(f"expected a number or {B} numbers (one per member), got shape "
                          f"{H.shape}", field="h")

@@ -1,9 +1,10 @@
 """The ``scene:`` section: step size, number of steps, initial state, what to record.
 
 Conventions:
-- ``h`` > 0 finite; ``steps`` an integer >= 0, or ``duration`` > 0 with steps = round(duration/h)
-  integral within 1e-9 relative (exactly one of the two).
-- ``initial.g``: ``identity`` | an n x n matrix | ``{rotvec: [3]}`` (SO3, SE3) or ``{angle: a}``
+- ``h`` != 0 finite (h < 0 runs backwards in time); ``steps`` an integer >= 0, or ``duration``
+  > 0 with steps = round(duration/|h|) integral within 1e-9 relative (exactly one of the two).
+- ``initial.g``: ``identity`` | an n x n matrix | ``{rotvec: [3]}`` or ``{quat: [w, x, y, z]}``
+  (a unit quaternion, scalar first; hpgen.groups.elements) (SO3, SE3) or ``{angle: a}``
   (SO2, SE2), optionally with ``position: [k]`` (SE2, SE3; R<k> takes ``{position: [k]}``).
   For a product: ``identity``, the full block-diagonal matrix, or a list with one such entry per
   factor. Rotations come from Rodrigues' formula. The result must be on the group: every
@@ -29,7 +30,8 @@ import re
 import numpy as np
 
 from ..errors import ModelError
-from ..runtime.initial import compose, rotation_from_angle, rotation_from_rotvec
+from ..groups.elements import (compose, quat_norm_error, rotation_from_angle, rotation_from_quat,
+                               rotation_from_rotvec)
 from .types import RecordExpr, Scene, SectionSpec
 
 SCENE_KEYS = ("h", "steps", "duration", "initial", "record", "every", "section", "u")
@@ -69,6 +71,13 @@ def _rotation(doc, path, fgroup, spec):
         return rotation_from_angle(doc.number(path + ("angle",), spec["angle"]))
     if "angle" in spec:
         raise doc.error(path + ("angle",), f"{fgroup.name} takes rotvec: [3 numbers], not angle")
+    if "quat" in spec:
+        if "rotvec" in spec:
+            raise doc.error(path + ("quat",), "give either rotvec or quat, not both")
+        q = doc.vector(path + ("quat",), spec["quat"], 4)
+        if quat_norm_error(q):
+            raise doc.error(path + ("quat",), quat_norm_error(q))
+        return rotation_from_quat(q)
     if "rotvec" not in spec:
         return np.eye(3)
     return rotation_from_rotvec(doc.vector(path + ("rotvec",), spec["rotvec"], 3))
@@ -77,8 +86,8 @@ def _rotation(doc, path, fgroup, spec):
 def _from_mapping(doc, path, fgroup, spec):
     rot = fgroup.rotation_block is not None
     tr = fgroup.translation_block is not None
-    allowed = (("rotvec" if fgroup.rotation_block[1] - fgroup.rotation_block[0] == 3 else "angle",)
-               if rot else ()) + (("position",) if tr else ())
+    allowed = ((("rotvec", "quat") if fgroup.rotation_block[1] - fgroup.rotation_block[0] == 3
+                else ("angle",)) if rot else ()) + (("position",) if tr else ())
     if not allowed:
         raise doc.error(path, f"for {fgroup.name} expected identity or a matrix")
     doc.mapping(path, spec, allowed)
@@ -193,7 +202,7 @@ def _steps(doc, raw, h):
     T = doc.number(path, raw["duration"], "a duration > 0")
     if T <= 0:
         raise doc.error(path, f"expected a duration > 0, got {T!r}")
-    ratio = T / h
+    ratio = T / abs(h)
     if not math.isfinite(ratio) or ratio > MAX_STEPS + 0.5:
         raise doc.error(path, f"duration / h = {ratio:.6g} steps is too many (limit {MAX_STEPS})")
     steps = round(ratio)
@@ -289,10 +298,11 @@ def parse_scene(doc, raw, group, parameters=None, inputs=()) -> Scene:
     and the recorded expressions; ``inputs``: the model's control input names (scene.u)."""
     raw = doc.mapping(("scene",), raw, SCENE_KEYS)
     if raw.get("h") is None:
-        raise doc.error(("scene", "h"), "missing h: expected a step size h > 0")
-    h = doc.number(("scene", "h"), raw["h"], "a step size h > 0")
-    if h <= 0:
-        raise doc.error(("scene", "h"), f"expected a step size h > 0, got {h!r}")
+        raise doc.error(("scene", "h"), "missing h: expected a step size h != 0")
+    h = doc.number(("scene", "h"), raw["h"], "a step size h != 0")
+    if h == 0:
+        raise doc.error(("scene", "h"), "expected a step size h != 0 (h < 0 runs backwards "
+                                        "in time), got 0.0")
     steps = _steps(doc, raw, h)
     ipath = ("scene", "initial")
     init = doc.mapping(ipath, raw.get("initial"), INITIAL_KEYS)

@@ -1,76 +1,20 @@
-"""Initial group elements from a rotation vector, an angle and a position: the constructors of
-a model file's ``initial.g`` ({rotvec: [3]} on SO3/SE3, {angle: a} on SO2/SE2, position: [k]
-on SE2/SE3/R<k>), shared by the model loader (hpgen.model.scene, which validates the YAML
-first) and the Python API (``Integrator.group``). numpy and the standard library only.
-
-Conventions (hpgen.groups.catalog): SO<k> is the k x k rotation R; SE<k> the (k+1) x (k+1)
-matrix [[R, x], [0, 1]]; R<k> is [[I, x], [0, 1]]; a product "[A, B, ...]" is the
-block-diagonal matrix of its factors' elements. Rotations: Rodrigues' formula
-exp(w^) = I + sin t K + (1 - cos t) K^2 (t = |w|, K = (w/t)^), and [[c, -s], [s, c]] for an
-angle a (c = cos a, s = sin a).
+"""``Integrator.group``: elements of a module's group from a rotation vector, an angle, a
+quaternion and a position (the forms of a model file's ``initial.g``), and the attitudes of
+elements as quaternions or rotation vectors. The constructors and their conventions (scalar-first
+unit quaternions, Rodrigues' formula) live in hpgen.groups.elements, shared with the model
+loader (hpgen.model.scene). numpy and the standard library only.
 """
 from __future__ import annotations
-
-import math
-import re
 
 import numpy as np
 
 from ..errors import ArgumentError
+from ..groups.elements import (compose, factor_layout, factor_names, quat_from_rotation,
+                               quat_norm_error, rotation_blocks, rotation_from_angle,
+                               rotation_from_quat, rotation_from_rotvec, rotvec_from_rotation)
 
-_R = re.compile(r"R([1-9][0-9]*)")
-#: factor name -> (n, rotation block (rows a:b), translation block (rows a:b of the last column))
-_FACTORS = {"SO2": (2, (0, 2), None), "SO3": (3, (0, 3), None),
-            "SE2": (3, (0, 2), (0, 2)), "SE3": (4, (0, 3), (0, 3))}
-
-
-def factor_layout(name: str):
-    """(n, rotation block or None, translation block or None) of a non-product group."""
-    m = _R.fullmatch(name)
-    if m:
-        k = int(m.group(1))
-        return k + 1, None, (0, k)
-    if name not in _FACTORS:
-        raise ArgumentError(f"unknown group {name!r}", field="group")
-    return _FACTORS[name]
-
-
-def factor_names(group_name: str) -> list:
-    """["SO3"] for "SO3"; the factors of a product "[SO3, R3]"."""
-    name = group_name.strip()
-    if name.startswith("[") and name.endswith("]"):
-        return [f.strip() for f in name[1:-1].split(",")]
-    return [name]
-
-
-def rotation_from_rotvec(w) -> np.ndarray:
-    """The 3 x 3 rotation exp(w^) (Rodrigues; the identity for w = 0)."""
-    w = np.asarray(w, dtype=np.float64)
-    theta = math.hypot(*w)
-    if theta == 0.0:
-        return np.eye(3)
-    u = w / theta
-    K = np.array([[0, -u[2], u[1]], [u[2], 0, -u[0]], [-u[1], u[0], 0]])
-    return np.eye(3) + math.sin(theta) * K + (1 - math.cos(theta)) * (K @ K)
-
-
-def rotation_from_angle(a) -> np.ndarray:
-    """The 2 x 2 rotation by the angle a."""
-    c, s = math.cos(a), math.sin(a)
-    return np.array([[c, -s], [s, c]])
-
-
-def compose(n, rotation_block, translation_block, R=None, position=None) -> np.ndarray:
-    """The n x n element with rotation block R and translation ``position`` (identity parts
-    where None)."""
-    G = np.eye(n)
-    if R is not None:
-        a, b = rotation_block
-        G[a:b, a:b] = R
-    if position is not None:
-        a, b = translation_block
-        G[a:b, n - 1] = position
-    return G
+__all__ = ["GroupElements", "compose", "factor_layout", "factor_names", "rotation_from_angle",
+           "rotation_from_rotvec", "rotation_from_quat"]
 
 
 class GroupElements:
@@ -124,6 +68,33 @@ class GroupElements:
                                 field="rotvec")
         R = rotation_from_rotvec(self._vector(rotvec, 3, "rotvec"))
         return compose(lay[0], lay[1], lay[2], R, self._position(name, lay, position))
+
+    def from_quat(self, quat, position=None) -> np.ndarray:
+        """SO3 / SE3: the rotation of the unit quaternion ``quat`` = [w, x, y, z], scalar
+        first (hpgen.groups.elements; [cos(t/2), sin(t/2) e] is from_rotvec(t e)), and the
+        translation ``position`` (SE3; model file ``{quat: [4], position: [3]}``). A
+        quaternion whose norm is not 1 within 1e-10 is an ArgumentError."""
+        name, lay = self._single("from_quat")
+        if lay[1] is None or lay[1][1] - lay[1][0] != 3:
+            raise ArgumentError(f"{name} takes from_angle_position(angle, ...), not a quaternion"
+                                if lay[1] else f"{name} has no rotation part", field="quat")
+        q = self._vector(quat, 4, "quat")
+        problem = quat_norm_error(q)
+        if problem:
+            raise ArgumentError(problem, field="quat")
+        return compose(lay[0], lay[1], lay[2], rotation_from_quat(q),
+                       self._position(name, lay, position))
+
+    def as_quat(self, g, factor=None) -> np.ndarray:
+        """The attitudes of elements g (..., n, n) as unit quaternions (..., 4), [w, x, y, z]
+        with w >= 0: of the SO3 block (SO3, SE3, or the one such factor of a product; else
+        ``factor=k``)."""
+        return quat_from_rotation(rotation_blocks(self.name, g, factor))
+
+    def as_rotvec(self, g, factor=None) -> np.ndarray:
+        """The attitudes of elements g (..., n, n) as rotation vectors (..., 3), angle in
+        [0, pi] (the inverse of from_rotvec); the block as for as_quat."""
+        return rotvec_from_rotation(rotation_blocks(self.name, g, factor))
 
     def from_angle_position(self, angle, position=None) -> np.ndarray:
         """SO2 / SE2: rotation by ``angle`` and translation ``position`` (SE2; model file

@@ -47,7 +47,9 @@ class Integrator:
     @property
     def group(self) -> GroupElements:
         """Constructors of initial group elements, as the model file's ``initial.g``:
-        ``group.from_rotvec(rotvec, position=None)`` (SO3, SE3),
+        ``group.from_rotvec(rotvec, position=None)``, ``group.from_quat([w, x, y, z],
+        position=None)`` (SO3, SE3; scalar first), and ``group.as_quat(g)`` /
+        ``group.as_rotvec(g)`` reading attitudes back;
         ``group.from_angle_position(angle, position=None)`` (SO2, SE2),
         ``group.from_position(position)`` (R<k>, SE2, SE3), ``group.identity()`` and
         ``group.product(*factor_elements)``; see hpgen.runtime.initial."""

@@ -58,6 +58,15 @@ class Records:
                         run_metadata(self.integrator, self.h, self.every, self.partial,
                                      self.newton_iterations, self.error))
 
+    def as_quat(self, factor=None) -> np.ndarray:
+        """(K, 4) attitudes of the recorded g as unit quaternions [w, x, y, z], scalar first
+        (Trajectory.as_quat); ArgumentError when g is not recorded."""
+        return self.integrator.group.as_quat(self.arrays.get("g"), factor)
+
+    def as_rotvec(self, factor=None) -> np.ndarray:
+        """(K, 3) attitudes of the recorded g as rotation vectors (Trajectory.as_rotvec)."""
+        return self.integrator.group.as_rotvec(self.arrays.get("g"), factor)
+
     @property
     def names(self) -> tuple:
         return tuple(self.arrays)

@@ -84,6 +84,15 @@ class Trajectory:
         """(K, d) body velocities xi_k = (dl/dxi)^{-1}(g_k, mu_k)."""
         return self._observed("xi")
 
+    def as_quat(self, factor=None) -> np.ndarray:
+        """(K, 4) attitudes of g as unit quaternions [w, x, y, z], scalar first, w >= 0
+        (Integrator.group.as_quat: the SO3 block, or factor ``factor`` of a product)."""
+        return self._need().group.as_quat(self.g, factor)
+
+    def as_rotvec(self, factor=None) -> np.ndarray:
+        """(K, 3) attitudes of g as rotation vectors, angle in [0, pi] (Integrator.group)."""
+        return self._need().group.as_rotvec(self.g, factor)
+
     def observables(self, names) -> dict:
         """The arrays a scene's ``record:`` list asks for, by name: g, mu, xi, energy,
         momentum (spatial, Ad*_{g^-1} p), defect; t is always included."""

@@ -80,7 +80,7 @@ def test_failed_member_is_marked_and_others_complete(body):
 def test_bad_inputs_are_one_line_model_errors(body):
     cases = [(dict(xi0=W0, mu0=W0), "exactly one"), (dict(xi0=W0[:, :2]), "shape"),
              (dict(xi0=W0, h=[0.1, 0.2]), "one per member"),
-             (dict(xi0=W0, h=-1.0), "> 0"), (dict(xi0=W0, record=["height"]), "record row"),
+             (dict(xi0=W0, h=0.0), "non-zero"), (dict(xi0=W0, record=["height"]), "record row"),
              (dict(xi0=W0, g0=2 * np.eye(3)), "member 0"),
              (dict(xi0=W0, params={"c": [1.0] * 6}), "runtime_parameters")]
     for kw, text in cases:
