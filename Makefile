@@ -6,7 +6,7 @@ PIP_INSTALL = $(PYTHON) -m pip install --quiet -c constraints.txt
 .PHONY: install demo test test-fast test-lowest wheel-test generate clean
 
 install:
-	$(PIP_INSTALL) -e '.[test,scale]'
+	$(PIP_INSTALL) -e '.[test,scale,peers]'
 
 # the heavy top's scene -> out/heavy_top.npz and its figures out/heavy_top-*.png (out/ is
 # ignored by git; DEMO_OUT=dir to write elsewhere)
