@@ -72,7 +72,7 @@ def test_mujoco_run_records_energy_and_chunks_do_not_matter():
     one = mujoco_peer.run(spec, qpos, qvel, 1e-3, 95, sample=10, chunk=1000)
     many = mujoco_peer.run(spec, qpos, qvel, 1e-3, 95, sample=10, chunk=20)
     assert np.array_equal(one.qpos, many.qpos) and np.array_equal(one.qvel, many.qvel)
-    assert np.array_equal(one.energy, many.energy)
+    assert np.array_equal(one.energy, many.energy) and one.stable
     assert list(one.times) == pytest.approx([0.0, *np.arange(0.01, 0.095, 0.01), 0.095])
     final = chain.from_joint(spec, one.qpos, one.qvel)
     assert one.energy[-1] == pytest.approx(sum(chain.energy(spec, final)), rel=1e-13)
@@ -82,6 +82,16 @@ def test_mujoco_run_records_energy_and_chunks_do_not_matter():
     assert 0 < band < 1e-8                   # RK4, 95 steps of 1e-3 on two links
     euler = mujoco_peer.run(spec, qpos, qvel, 1e-3, 95, integrator="Euler")
     assert np.abs(euler.energy - euler.energy[0]).max() > 10 * band * abs(one.energy[0])
+
+
+def test_blow_ups_are_flagged():
+    spec = chain.ChainSpec(4)
+    qpos, qvel = chain.initial_joint_state(spec, rate=30.0)
+    assert mujoco_peer.run(spec, qpos, qvel, 1e-4, 20, sample=10).stable
+    assert not mujoco_peer.run(spec, qpos, qvel, 2e-2, 200, integrator="Euler").stable
+    assert pinocchio_peer.run(spec, qpos, qvel, 1e-4, 20).stable
+    blown = pinocchio_peer.run(spec, qpos, qvel, 5e-2, 200)
+    assert not blown.stable and blown.steps < 200
 
 
 def test_mujoco_bad_integrator():

@@ -233,11 +233,12 @@ def constraint_residual(spec: ChainSpec, state: ChainState) -> tuple[float, floa
     return (float(max(np.abs(gaps).max(), np.abs(orth).max())), float(np.abs(gaps_v).max()))
 
 
-def initial_joint_state(spec: ChainSpec, seed: int = 0, angle: float = 0.3,
+def initial_joint_state(spec: ChainSpec, seed: int = 0, angle: float = 0.0,
                         rate: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
-    """The benchmark's start in joint coordinates (qpos, qvel): every joint rotated about a
-    random axis by a normal angle of standard deviation ``angle`` (rad), joint angular
-    velocities normal with standard deviation ``rate`` (rad/s), numpy's default_rng(seed)."""
+    """A start in joint coordinates (qpos, qvel): every joint rotated about a random axis by
+    a normal angle of standard deviation ``angle`` (rad), joint angular velocities (qvel)
+    normal with standard deviation ``rate`` (rad/s), numpy's default_rng(seed). The
+    benchmark's start is the default: hanging straight down, qvel ~ N(0, 1), seed 0."""
     rng = np.random.default_rng(seed)
     rotvec = angle * rng.standard_normal((spec.n, 3))
     theta = np.linalg.norm(rotvec, axis=1, keepdims=True)

@@ -80,13 +80,16 @@ def model(spec: ChainSpec, dt: float, integrator: str = "RK4"):
 class MujocoRun:
     """A rollout: the final joint state, the energy (kinetic + potential, J; MuJoCo's own
     computation) of the states 0, sample, 2 sample, ... and of the final state at ``times``,
-    the wall time of the rollout calls alone (s)."""
+    the wall time of the rollout calls alone (s). ``stable`` is False when MuJoCo reset the
+    simulation (its reaction to non-finite or huge accelerations: the rollout's clock
+    restarts) or an energy is not finite."""
     qpos: np.ndarray
     qvel: np.ndarray
     times: np.ndarray
     energy: np.ndarray
     seconds: float
     steps: int
+    stable: bool
 
 
 def run(spec: ChainSpec, qpos, qvel, dt: float, steps: int, integrator: str = "RK4",
@@ -115,7 +118,7 @@ def run(spec: ChainSpec, qpos, qvel, dt: float, steps: int, integrator: str = "R
     d.qpos[:], d.qvel[:] = np.asarray(qpos, dtype=float), np.asarray(qvel, dtype=float)
     mujoco.mj_getState(m, d, state, full)
     marks, energy = [0], [energy_of(state)]
-    done, seconds = 0, 0.0
+    done, seconds, reset = 0, 0.0, False
     while done < steps:
         k = min(chunk, steps - done)
         start = time.perf_counter()
@@ -126,9 +129,11 @@ def run(spec: ChainSpec, qpos, qvel, dt: float, steps: int, integrator: str = "R
             energy.append(energy_of(states[0, j]))
         state = states[0, -1].copy()
         done += k
+        reset = reset or abs(state[0] - done * dt) > 1e-9 * (1.0 + done * dt)
     if marks[-1] != steps:
         marks.append(steps)
         energy.append(energy_of(state))
     mujoco.mj_setState(m, d, state, full)
-    return MujocoRun(d.qpos.copy(), d.qvel.copy(), dt * np.asarray(marks), np.asarray(energy),
-                     seconds, int(steps))
+    energy_arr = np.asarray(energy)
+    return MujocoRun(d.qpos.copy(), d.qvel.copy(), dt * np.asarray(marks), energy_arr,
+                     seconds, int(steps), not reset and bool(np.isfinite(energy_arr).all()))

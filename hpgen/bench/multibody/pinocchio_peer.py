@@ -84,7 +84,8 @@ def dexpinv(phi: np.ndarray, w: np.ndarray) -> np.ndarray:
 class PinocchioRun:
     """An RK4 run: the final joint state in MuJoCo's convention, the energy (J; Pinocchio's
     computeMechanicalEnergy) at ``times``, the wall time of the step loop and of its aba calls
-    alone (s)."""
+    alone (s); ``stable`` False when a state or an energy is not finite (the run stops at
+    the first such sample)."""
     qpos: np.ndarray
     qvel: np.ndarray
     times: np.ndarray
@@ -92,6 +93,7 @@ class PinocchioRun:
     seconds: float
     aba_seconds: float
     steps: int
+    stable: bool
 
 
 def run(spec: ChainSpec, qpos, qvel, dt: float, steps: int, sample: int = 10) -> PinocchioRun:
@@ -111,38 +113,43 @@ def run(spec: ChainSpec, qpos, qvel, dt: float, steps: int, sample: int = 10) ->
     q = to_pinocchio(qpos)
     v = np.array(qvel, dtype=float)
     tau = np.zeros(m.nv)
+    q0, v0 = q.copy(), v.copy()
     h, h2, h6 = dt, dt / 2, dt / 6
     n = spec.n
     marks, energy = [0], [pin.computeMechanicalEnergy(m, data, q, v)]
     seconds = 0.0
     done = 0
-    while done < steps:
-        k = min(sample, steps - done)
-        start = time.perf_counter()
-        for _ in range(k):
-            a1 = aba(m, data, q, v, tau).copy()
-            phi = h2 * v
-            v2 = v + h2 * a1
-            a2 = aba(m, data, integrate(m, q, phi), v2, tau).copy()
-            k2 = dexpinv(phi.reshape(n, 3), v2.reshape(n, 3)).reshape(-1)
-            phi = h2 * k2
-            v3 = v + h2 * a2
-            a3 = aba(m, data, integrate(m, q, phi), v3, tau).copy()
-            k3 = dexpinv(phi.reshape(n, 3), v3.reshape(n, 3)).reshape(-1)
-            phi = h * k3
-            v4 = v + h * a3
-            a4 = aba(m, data, integrate(m, q, phi), v4, tau)
-            k4 = dexpinv(phi.reshape(n, 3), v4.reshape(n, 3)).reshape(-1)
-            q = integrate(m, q, h6 * (v + 2.0 * (k2 + k3) + k4))
-            v = v + h6 * (a1 + 2.0 * (a2 + a3) + a4)
-        seconds += time.perf_counter() - start
-        done += k
-        marks.append(done)
-        energy.append(pin.computeMechanicalEnergy(m, data, q, v))
+    with np.errstate(all="ignore"):     # a blow-up is reported by ``stable``
+        while done < steps:
+            k = min(sample, steps - done)
+            start = time.perf_counter()
+            for _ in range(k):
+                a1 = aba(m, data, q, v, tau).copy()
+                phi = h2 * v
+                v2 = v + h2 * a1
+                a2 = aba(m, data, integrate(m, q, phi), v2, tau).copy()
+                k2 = dexpinv(phi.reshape(n, 3), v2.reshape(n, 3)).reshape(-1)
+                phi = h2 * k2
+                v3 = v + h2 * a2
+                a3 = aba(m, data, integrate(m, q, phi), v3, tau).copy()
+                k3 = dexpinv(phi.reshape(n, 3), v3.reshape(n, 3)).reshape(-1)
+                phi = h * k3
+                v4 = v + h * a3
+                a4 = aba(m, data, integrate(m, q, phi), v4, tau)
+                k4 = dexpinv(phi.reshape(n, 3), v4.reshape(n, 3)).reshape(-1)
+                q = integrate(m, q, h6 * (v + 2.0 * (k2 + k3) + k4))
+                v = v + h6 * (a1 + 2.0 * (a2 + a3) + a4)
+            seconds += time.perf_counter() - start
+            done += k
+            marks.append(done)
+            energy.append(pin.computeMechanicalEnergy(m, data, q, v))
+            if not (np.isfinite(energy[-1]) and np.isfinite(v).all()):
+                break
     reps = 200
     start = time.perf_counter()
     for _ in range(reps):
-        aba(m, data, q, v, tau)
-    aba_seconds = (time.perf_counter() - start) / reps * 4 * steps
+        aba(m, data, q0, v0, tau)
+    aba_seconds = (time.perf_counter() - start) / reps * 4 * done
+    stable = bool(np.isfinite(energy[-1]) and np.isfinite(v).all())
     return PinocchioRun(from_pinocchio(q), v.copy(), dt * np.asarray(marks),
-                        np.asarray(energy), seconds, aba_seconds, int(steps))
+                        np.asarray(energy), seconds, aba_seconds, done, stable)
