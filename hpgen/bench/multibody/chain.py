@@ -112,6 +112,16 @@ def hat(w: np.ndarray) -> np.ndarray:
     return out
 
 
+def cross(u: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """Row-wise cross products of (N,3) arrays (np.cross's overhead dominates at these
+    sizes)."""
+    out = np.empty(np.broadcast_shapes(u.shape, w.shape))
+    out[..., 0] = u[..., 1] * w[..., 2] - u[..., 2] * w[..., 1]
+    out[..., 1] = u[..., 2] * w[..., 0] - u[..., 0] * w[..., 2]
+    out[..., 2] = u[..., 0] * w[..., 1] - u[..., 1] * w[..., 0]
+    return out
+
+
 def quat_to_matrix(q: np.ndarray) -> np.ndarray:
     """Rotation matrices of quaternions (..., 4), scalar first; normalised first."""
     q = np.asarray(q, dtype=float)

@@ -37,7 +37,7 @@ import numpy as np
 from hpgen.errors import ArgumentError
 
 from . import require
-from .chain import ChainSpec
+from .chain import ChainSpec, cross
 
 
 def model(spec: ChainSpec):
@@ -70,14 +70,17 @@ def from_pinocchio(q: np.ndarray) -> np.ndarray:
 def dexpinv(phi: np.ndarray, w: np.ndarray) -> np.ndarray:
     """J_r(phi)^-1 w per row of phi, w (N,3): w + phi x w / 2 + c(t) phi x (phi x w) with
     t = |phi|, c = 1/t^2 - (1 + cos t) / (2 t sin t) (its series 1/12 + t^2/720 below 1e-3)."""
-    t2 = np.sum(phi * phi, axis=1)
+    t2 = np.einsum("ni,ni->n", phi, phi)
     t = np.sqrt(t2)
-    small = t < 1e-3
-    safe = np.where(small, 1.0, t)
-    c = np.where(small, 1.0 / 12.0 + t2 / 720.0,
-                 1.0 / safe ** 2 - (1.0 + np.cos(safe)) / (2.0 * safe * np.sin(safe)))
-    pw = np.cross(phi, w)
-    return w + 0.5 * pw + c[:, None] * np.cross(phi, pw)
+    if t.min() >= 1e-3:
+        c = 1.0 / t2 - (1.0 + np.cos(t)) / (2.0 * t * np.sin(t))
+    else:
+        small = t < 1e-3
+        safe = np.where(small, 1.0, t)
+        c = np.where(small, 1.0 / 12.0 + t2 / 720.0,
+                     1.0 / safe ** 2 - (1.0 + np.cos(safe)) / (2.0 * safe * np.sin(safe)))
+    pw = cross(phi, w)
+    return w + 0.5 * pw + c[:, None] * cross(phi, pw)
 
 
 @dataclass(frozen=True)

@@ -39,6 +39,7 @@ from hpgen.errors import HpgenError
 from .chain import (
     ChainSpec,
     ChainState,
+    cross,
     from_joint,
     from_rotations,
     hat,
@@ -55,6 +56,9 @@ class ChainDynamics:
     :meth:`accelerations` gives (x'', omega', F) for rotations and angular velocities."""
 
     def __init__(self, spec: ChainSpec):
+        from scipy.linalg import solve_banded
+
+        self._solve_banded = solve_banded
         self.spec = spec
         n = spec.n
         self.size = 9 * n
@@ -95,8 +99,6 @@ class ChainDynamics:
 
     def accelerations(self, R: np.ndarray, omega: np.ndarray):
         """(x'' (N,3) world, omega' (N,3) body, F (N,3) world joint forces)."""
-        from scipy.linalg import solve_banded
-
         spec, n = self.spec, self.spec.n
         ab = self.template.copy()
         lever_force = -self.ahat @ np.swapaxes(R, 1, 2)        # -a^ R_i^T
@@ -106,13 +108,13 @@ class ChainDynamics:
         ab[self.ix_joint_w] = lever_acc
         ab[self.ix_joint_wprev] = lever_acc[:-1]
         Jw = self.J * omega
-        centripetal = np.einsum("nij,nj->ni", R, np.cross(omega, np.cross(omega, self.a)))
+        centripetal = np.einsum("nij,nj->ni", R, cross(omega, cross(omega, self.a)))
         rhs = np.empty((n, 9))
         rhs[:, 0:3] = [0.0, 0.0, -spec.mass * spec.g]
-        rhs[:, 3:6] = -np.cross(omega, Jw)
+        rhs[:, 3:6] = -cross(omega, Jw)
         rhs[:, 6:9] = -centripetal
         rhs[1:, 6:9] -= centripetal[:-1]
-        sol = solve_banded((BAND, BAND), ab, rhs.reshape(-1), overwrite_ab=True,
+        sol = self._solve_banded((BAND, BAND), ab, rhs.reshape(-1), overwrite_ab=True,
                            check_finite=False).reshape(n, 9)
         return sol[:, 0:3], sol[:, 3:6], sol[:, 6:9]
 
@@ -124,7 +126,7 @@ class ChainDynamics:
         _, domega, _ = self.accelerations(R, omega)
         w, u = Q[:, :1], Q[:, 1:]
         dQ = 0.5 * np.concatenate([-np.sum(u * omega, axis=1, keepdims=True),
-                                   w * omega + np.cross(u, omega)], axis=1)
+                                   w * omega + cross(u, omega)], axis=1)
         return np.concatenate([dQ.reshape(-1), domega.reshape(-1)])
 
 
