@@ -1,5 +1,6 @@
 """The N-link 3-D pendulum chain (hpgen.bench.multibody) run by its peers, MuJoCo (RK4,
-Euler, implicitfast through its C rollout) and Pinocchio (ABA + RKMK4, a Python step loop),
+Euler, implicitfast through its C rollout) and Pinocchio (RKMK4 in a Python step loop, the
+accelerations by ABA or by the mass matrix and Cholesky),
 against the independent DOP853 reference, for N = 2, 4, 8, 16, 32, 64, in one process.
 
     pip install -c constraints.txt -e '.[peers]'
@@ -9,8 +10,9 @@ against the independent DOP853 reference, for N = 2, 4, 8, 16, 32, 64, in one pr
 Start: the chain hanging straight down, joint angular velocities qvel ~ N(0, 1) (seed 0;
 chain.initial_joint_state). For every N and peer:
 - time per step: MuJoCo the wall time of its rollout calls alone; Pinocchio the Python step
-  loop (4 ABA calls, 4 exponential maps and NumPy arithmetic per step) and, in brackets, the
-  share of its 4 ABA calls (what a C loop around Pinocchio could not go below);
+  loop (4 acceleration evaluations, 4 exponential maps and NumPy arithmetic per step) and, in
+  brackets, the share of its 4 acceleration evaluations (what a C loop around Pinocchio could
+  not go below);
 - energy band over ``steps`` steps of dt: max_k |E_k - E_0| / (E_0 - V_rest), sampled every 10
   steps, E the total energy and V_rest the potential energy of the chain hanging at rest, so
   the band is relative to the energy above the chain's minimum and does not depend on where
@@ -36,14 +38,16 @@ import numpy as np
 
 from hpgen.bench.multibody import chain, mujoco_peer, pinocchio_peer, reference
 
-PEERS = ("MuJoCo RK4", "MuJoCo Euler", "MuJoCo implicitfast", "Pinocchio RKMK4")
+PEERS = ("MuJoCo RK4", "MuJoCo Euler", "MuJoCo implicitfast", "Pinocchio RKMK4 ABA",
+         "Pinocchio RKMK4 CRBA")
 SAMPLE = 10
 
 
 def run_peer(peer, spec, qpos, qvel, dt, steps):
     if peer.startswith("MuJoCo"):
         return mujoco_peer.run(spec, qpos, qvel, dt, steps, peer.split()[1], sample=SAMPLE)
-    return pinocchio_peer.run(spec, qpos, qvel, dt, steps, sample=SAMPLE)
+    return pinocchio_peer.run(spec, qpos, qvel, dt, steps, sample=SAMPLE,
+                              dynamics=peer.split()[2].lower())
 
 
 def steps_for(peers, spec, qpos, qvel, dt, max_steps, budget):
@@ -65,15 +69,15 @@ def measure(peer, spec, qpos, qvel, dt, steps, final_ref):
     row = {"N": spec.n, "peer": peer, "steps": long.steps, "us_per_step":
            1e6 * long.seconds / long.steps, "band": dev / (e0 - chain.rest_potential(spec)),
            "band_abs_E0": dev / abs(e0), "error_T1": error, "stable": long.stable}
-    if hasattr(long, "aba_seconds"):
-        row["aba_us_per_step"] = 1e6 * long.aba_seconds / long.steps
+    if hasattr(long, "dynamics_seconds"):
+        row["dynamics_us_per_step"] = 1e6 * long.dynamics_seconds / long.steps
     return row
 
 
 def fmt(row):
     step = f"{row['us_per_step']:.1f}"
-    if "aba_us_per_step" in row:
-        step += f" ({row['aba_us_per_step']:.1f})"
+    if "dynamics_us_per_step" in row:
+        step += f" ({row['dynamics_us_per_step']:.1f})"
     note = "" if row["stable"] else "unstable"
     return (f"| {row['N']} | {row['peer']} | {row['steps']} | {step} | {row['band']:.2e} | "
             f"{row['band_abs_E0']:.2e} | {row['error_T1']:.2e} | {note} |")

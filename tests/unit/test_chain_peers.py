@@ -133,14 +133,52 @@ def test_pinocchio_dexpinv_inverts_the_integrate_jacobian():
     assert np.abs(pinocchio_peer.dexpinv(small, w[None])[0] - closed).max() < 1e-15 * 10
 
 
-def test_pinocchio_rkmk4_is_order_4_against_the_reference():
+def reference_joint_accelerations(spec, qpos, qvel):
+    """qacc of the reference: qvel_i = omega_i - P_i^T omega_(i-1), P_i = R(q_i), so
+    qacc_i = omega_i' - P_i^T omega_(i-1)' + qvel_i x (P_i^T omega_(i-1))."""
+    s = chain.from_joint(spec, qpos, qvel)
+    _, wd, _ = reference.ChainDynamics(spec).accelerations(s.R, s.omega)
+    rel = chain.quat_to_matrix(qpos.reshape(-1, 4))
+    rel_w = qvel.reshape(-1, 3)
+    out = wd.copy()
+    for i in range(1, spec.n):
+        out[i] += -rel[i].T @ wd[i - 1] + np.cross(rel_w[i], rel[i].T @ s.omega[i - 1])
+    return out.reshape(-1)
+
+
+@pytest.mark.parametrize("n, dynamics", [(8, "aba"), (8, "crba"), (64, "crba")])
+def test_pinocchio_accelerations_match_the_reference(n, dynamics):
+    spec = chain.ChainSpec(n)
+    qpos, qvel = chain.initial_joint_state(spec, seed=10, angle=0.05)
+    m = pinocchio_peer.model(spec)
+    f = pinocchio_peer.accelerations(m, m.createData(), dynamics)
+    got = f(pinocchio_peer.to_pinocchio(qpos), qvel)
+    want = reference_joint_accelerations(spec, qpos, qvel)
+    # the joint-space mass matrix of the 64-link chain has a condition number near 1e9
+    assert np.abs(got - want).max() < (1e-12 if n == 8 else 1e-7) * np.abs(want).max()
+
+
+def test_mujoco_accelerations_match_the_reference():
+    spec = chain.ChainSpec(64)
+    qpos, qvel = chain.initial_joint_state(spec, seed=10, angle=0.05)
+    m = mujoco_peer.model(spec, 1e-3)
+    d = mujoco.MjData(m)
+    d.qpos[:], d.qvel[:] = qpos, qvel
+    mujoco.mj_forward(m, d)
+    want = reference_joint_accelerations(spec, qpos, qvel)
+    assert np.abs(d.qacc - want).max() < 1e-7 * np.abs(want).max()
+
+
+@pytest.mark.parametrize("dynamics", ["aba", "crba"])
+def test_pinocchio_rkmk4_is_order_4_against_the_reference(dynamics):
     spec = chain.ChainSpec(2)
     qpos, qvel = chain.initial_joint_state(spec)
     horizon = 0.5
     ref = reference.solve(spec, qpos, qvel, [horizon]).final
     errors = []
     for dt in (1e-3, 5e-4):
-        run = pinocchio_peer.run(spec, qpos, qvel, dt, round(horizon / dt), sample=50)
+        run = pinocchio_peer.run(spec, qpos, qvel, dt, round(horizon / dt), sample=50,
+                                 dynamics=dynamics)
         errors.append(chain.trajectory_error(chain.from_joint(spec, run.qpos, run.qvel), ref))
         assert run.energy[0] == pytest.approx(sum(chain.energy(
             spec, chain.from_joint(spec, qpos, qvel))), rel=1e-14)

@@ -1,7 +1,7 @@
 """Pinocchio as a peer on the chain: the same N-link chain as a ``pinocchio.Model`` built in
-Python, stepped by classical RK4 on the joint velocities with Pinocchio's articulated-body
-algorithm (``pinocchio.aba``) for the accelerations and ``pinocchio.integrate`` (the exponential
-map of each spherical joint) for the positions.
+Python, stepped by RKMK4 (below) with Pinocchio's articulated-body algorithm
+(``pinocchio.aba``) or its mass matrix for the accelerations and ``pinocchio.integrate`` (the
+exponential map of each spherical joint) for the positions.
 
 Model: joint i is a ``JointModelSpherical`` placed at its parent's bottom point ((0, 0, 0) in
 the world for joint 0, (0, 0, -length) in the parent joint's frame otherwise), carrying a body
@@ -12,7 +12,7 @@ the parent in the joint's (child's) frame: :func:`to_pinocchio` / :func:`from_pi
 convert from and to MuJoCo's order (scalar first), the only difference.
 
 The step is RKMK4, classical RK4 in the exponential chart of each spherical joint centred
-at the step's start q (Munthe-Kaas): with f(q, v) = aba(q, v, 0), q (+) phi =
+at the step's start q (Munthe-Kaas): with f(q, v) the joint accelerations, q (+) phi =
 pinocchio.integrate(q, phi) = q exp(phi) per joint and dexpinv(phi) = J_r(phi)^-1 the inverse
 right Jacobian of SO3 (the chart's velocity phi' = dexpinv(phi) v, v the body velocity),
     phi1 = 0,           v1 = v,            k1 = v1,                    a1 = f(q, v1)
@@ -22,11 +22,20 @@ right Jacobian of SO3 (the chart's velocity phi' = dexpinv(phi) v, v the body ve
     q+ = q (+) h (k1 + 2 k2 + 2 k3 + k4) / 6,    v+ = v + h (a1 + 2 a2 + 2 a3 + a4) / 6.
 Order 4. (Without the dexpinv factors, combining the stage velocities as if they lived in
 one chart, the scheme is only order 2 on ball joints.)
-with q (+) w = pinocchio.integrate(q, w). Pinocchio's Python wheel offers no C-level time loop
+with q (+) w = pinocchio.integrate(q, w).
+
+Accelerations f(q, v) (``dynamics``): ``"aba"``, Pinocchio's articulated-body algorithm (O(N));
+or ``"crba"``, the joint-space mass matrix M (composite rigid bodies, ``pinocchio.crba``)
+factored by Cholesky with the bias forces from ``pinocchio.nonLinearEffects`` (O(N^3) for a
+chain, MuJoCo's way). On long chains of these thin links ABA loses accuracy quickly with N
+(its articulated inertias are eliminated joint by joint, and round-off in them grows from
+link to link), while M, ill-conditioned as it is, still gives the accelerations to
+cond(M) times round-off: check ``accelerations`` against the reference before trusting ABA
+at a new N. Pinocchio's Python wheel offers no C-level time loop
 (no rollout, and this build has neither its CasADi nor its CppAD bindings; ``abaInParallel``
 batches independent states, not the stages of one trajectory), so the step loop is Python
-around the C++ calls; :func:`run` also reports the time of the ``aba`` calls alone (the
-C++ share, a lower bound of what a C loop would cost).
+around the C++ calls; :func:`run` also reports the time of the acceleration evaluations
+alone (mostly C++: a lower bound of what a C loop would cost).
 """
 from __future__ import annotations
 
@@ -57,6 +66,27 @@ def model(spec: ChainSpec):
     return m
 
 
+DYNAMICS = ("aba", "crba")
+
+
+def accelerations(m, data, dynamics: str = "aba"):
+    """The joint accelerations f(q, v) (no joint torques) of model ``m`` by ``dynamics``."""
+    pin = require("pinocchio")
+    if dynamics not in DYNAMICS:
+        raise ArgumentError(f"expected one of {', '.join(DYNAMICS)}, got {dynamics!r}",
+                            field="dynamics")
+    if dynamics == "aba":
+        tau = np.zeros(m.nv)
+        return lambda q, v: pin.aba(m, data, q, v, tau).copy()
+    from scipy.linalg import cho_factor, cho_solve
+
+    def crba(q, v):
+        factor = cho_factor(pin.crba(m, data, q), lower=False, check_finite=False)
+        return cho_solve(factor, -pin.nonLinearEffects(m, data, q, v), check_finite=False)
+
+    return crba
+
+
 def to_pinocchio(qpos: np.ndarray) -> np.ndarray:
     """MuJoCo's ball-joint quaternions (w x y z per joint) -> Pinocchio's (x y z w)."""
     return np.roll(np.asarray(qpos, dtype=float).reshape(-1, 4), -1, axis=1).reshape(-1)
@@ -85,23 +115,24 @@ def dexpinv(phi: np.ndarray, w: np.ndarray) -> np.ndarray:
 
 @dataclass(frozen=True)
 class PinocchioRun:
-    """An RK4 run: the final joint state in MuJoCo's convention, the energy (J; Pinocchio's
-    computeMechanicalEnergy) at ``times``, the wall time of the step loop and of its aba calls
-    alone (s); ``stable`` False when a state or an energy is not finite (the run stops at
-    the first such sample)."""
+    """An RKMK4 run: the final joint state in MuJoCo's convention, the energy (J; Pinocchio's
+    computeMechanicalEnergy) at ``times``, the wall time of the step loop and of its 4
+    acceleration evaluations per step alone (s); ``stable`` False when a state or an energy
+    is not finite (the run stops at the first such sample, ``steps`` says where)."""
     qpos: np.ndarray
     qvel: np.ndarray
     times: np.ndarray
     energy: np.ndarray
     seconds: float
-    aba_seconds: float
+    dynamics_seconds: float
     steps: int
     stable: bool
 
 
-def run(spec: ChainSpec, qpos, qvel, dt: float, steps: int, sample: int = 10) -> PinocchioRun:
-    """``steps`` RK4 steps of size dt from (qpos, qvel) (MuJoCo's convention) at t = 0; the
-    energy of every ``sample``-th state and of the last one."""
+def run(spec: ChainSpec, qpos, qvel, dt: float, steps: int, sample: int = 10,
+        dynamics: str = "aba") -> PinocchioRun:
+    """``steps`` RKMK4 steps of size dt from (qpos, qvel) (MuJoCo's convention) at t = 0,
+    accelerations by ``dynamics``; the energy of every ``sample``-th state and of the last."""
     import time
 
     pin = require("pinocchio")
@@ -112,10 +143,10 @@ def run(spec: ChainSpec, qpos, qvel, dt: float, steps: int, sample: int = 10) ->
         raise ArgumentError(f"expected a positive time step, got {dt!r}", field="dt")
     m = model(spec)
     data = m.createData()
-    aba, integrate = pin.aba, pin.integrate
+    f = accelerations(m, data, dynamics)
+    integrate = pin.integrate
     q = to_pinocchio(qpos)
     v = np.array(qvel, dtype=float)
-    tau = np.zeros(m.nv)
     q0, v0 = q.copy(), v.copy()
     h, h2, h6 = dt, dt / 2, dt / 6
     n = spec.n
@@ -127,18 +158,18 @@ def run(spec: ChainSpec, qpos, qvel, dt: float, steps: int, sample: int = 10) ->
             k = min(sample, steps - done)
             start = time.perf_counter()
             for _ in range(k):
-                a1 = aba(m, data, q, v, tau).copy()
+                a1 = f(q, v)
                 phi = h2 * v
                 v2 = v + h2 * a1
-                a2 = aba(m, data, integrate(m, q, phi), v2, tau).copy()
+                a2 = f(integrate(m, q, phi), v2)
                 k2 = dexpinv(phi.reshape(n, 3), v2.reshape(n, 3)).reshape(-1)
                 phi = h2 * k2
                 v3 = v + h2 * a2
-                a3 = aba(m, data, integrate(m, q, phi), v3, tau).copy()
+                a3 = f(integrate(m, q, phi), v3)
                 k3 = dexpinv(phi.reshape(n, 3), v3.reshape(n, 3)).reshape(-1)
                 phi = h * k3
                 v4 = v + h * a3
-                a4 = aba(m, data, integrate(m, q, phi), v4, tau)
+                a4 = f(integrate(m, q, phi), v4)
                 k4 = dexpinv(phi.reshape(n, 3), v4.reshape(n, 3)).reshape(-1)
                 q = integrate(m, q, h6 * (v + 2.0 * (k2 + k3) + k4))
                 v = v + h6 * (a1 + 2.0 * (a2 + a3) + a4)
@@ -148,11 +179,11 @@ def run(spec: ChainSpec, qpos, qvel, dt: float, steps: int, sample: int = 10) ->
             energy.append(pin.computeMechanicalEnergy(m, data, q, v))
             if not (np.isfinite(energy[-1]) and np.isfinite(v).all()):
                 break
-    reps = 200
+    reps = 100
     start = time.perf_counter()
     for _ in range(reps):
-        aba(m, data, q0, v0, tau)
-    aba_seconds = (time.perf_counter() - start) / reps * 4 * done
+        f(q0, v0)
+    dynamics_seconds = (time.perf_counter() - start) / reps * 4 * done
     stable = bool(np.isfinite(energy[-1]) and np.isfinite(v).all())
     return PinocchioRun(from_pinocchio(q), v.copy(), dt * np.asarray(marks),
-                        np.asarray(energy), seconds, aba_seconds, done, stable)
+                        np.asarray(energy), seconds, dynamics_seconds, done, stable)
