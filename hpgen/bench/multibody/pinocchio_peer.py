@@ -26,8 +26,9 @@ with q (+) w = pinocchio.integrate(q, w).
 
 Accelerations f(q, v) (``dynamics``): ``"aba"``, Pinocchio's articulated-body algorithm (O(N));
 or ``"crba"``, the joint-space mass matrix M (composite rigid bodies, ``pinocchio.crba``)
-factored by Cholesky with the bias forces from ``pinocchio.nonLinearEffects`` (O(N^3) for a
-chain, MuJoCo's way). On long chains of these thin links ABA loses accuracy quickly with N
+factored by Pinocchio's own Cholesky (``pinocchio.cholesky``, which follows the tree's
+sparsity: dense for a chain, O(N^3)) with the bias forces from
+``pinocchio.nonLinearEffects`` (MuJoCo's way). On long chains of these thin links ABA loses accuracy quickly with N
 (its articulated inertias are eliminated joint by joint, and round-off in them grows from
 link to link), while M, ill-conditioned as it is, still gives the accelerations to
 cond(M) times round-off: check ``accelerations`` against the reference before trusting ABA
@@ -78,11 +79,11 @@ def accelerations(m, data, dynamics: str = "aba"):
     if dynamics == "aba":
         tau = np.zeros(m.nv)
         return lambda q, v: pin.aba(m, data, q, v, tau).copy()
-    from scipy.linalg import cho_factor, cho_solve
 
     def crba(q, v):
-        factor = cho_factor(pin.crba(m, data, q), lower=False, check_finite=False)
-        return cho_solve(factor, -pin.nonLinearEffects(m, data, q, v), check_finite=False)
+        pin.crba(m, data, q)
+        pin.cholesky.decompose(m, data)
+        return pin.cholesky.solve(m, data, -pin.nonLinearEffects(m, data, q, v))
 
     return crba
 
