@@ -20,7 +20,7 @@ VENV_PYTHON = $(if $(filter $(VENV)/bin/python,$(PYTHON)),$(VENV)/bin/python)
 .PHONY: install demo lint test test-fast test-lowest wheel-test generate docs clean
 
 install: $(VENV_PYTHON)
-	$(PIP_INSTALL) -e '.[test,scale]'
+	$(PIP_INSTALL) -e '.[test,scale,peers]'
 
 ifneq ($(strip $(VENV)),)
 $(VENV)/bin/python:
