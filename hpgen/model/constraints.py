@@ -6,7 +6,8 @@ parser (hpgen.model.expr.parse_constraint); each entry of a vector is one row of
 velocity xi, the time t, control inputs and runtime parameters are refused. Errors name the
 field ``constraints[i]``.
 
-The scene's initial state must be admissible: |phi_r(g0)| <= INITIAL_TOL (the residual is
+Redundant rows are refused: Phi(g) of deficient row rank at a fixed generic g (then it is
+deficient everywhere). The scene's initial state must be admissible: |phi_r(g0)| <= INITIAL_TOL (the residual is
 reported), the body-frame constraint Jacobian Phi(g0) (m x d, Phi(g) eta = d/de phi(g exp(e
 eta)) at 0) must have full row rank m (a redundant row is named), and when the scene gives
 xi0 the hidden constraint |Phi(g0) xi0| <= INITIAL_TOL (1 + |xi0|) must hold.
@@ -35,9 +36,10 @@ class ConstraintSpec:
     rows: tuple
 
 
-def parse_constraints(doc, raw, group, exact: dict, runtime_names) -> tuple:
+def parse_constraints(doc, raw, group, exact: dict, runtime_names, g_symbols) -> tuple:
     """(ConstraintSpec, ...) from the ``constraints:`` list; ``exact`` the fixed parameters
-    (ints exact), ``runtime_names`` the runtime parameters' names (refused)."""
+    (ints exact), ``runtime_names`` the runtime parameters' names (refused); g_symbols:
+    Model.g_symbols. Redundant rows (Phi of deficient rank at a generic g) are refused."""
     from .expr import parse_constraint
     if not isinstance(raw, list) or not raw:
         raise doc.error(("constraints",), "expected a non-empty list of expressions in g "
@@ -59,7 +61,30 @@ def parse_constraints(doc, raw, group, exact: dict, runtime_names) -> tuple:
     if sum(len(c.rows) for c in out) >= group.d:
         raise doc.error(("constraints",), f"{sum(len(c.rows) for c in out)} constraint rows "
                         f"leave no freedom on {group.name} (d = {group.d}); expected fewer than d")
+    _check_rank(doc, out, g_symbols, group, _generic_point(group), "at a generic g")
     return tuple(out)
+
+
+def _generic_point(group):
+    """A fixed pseudo-random element tau(x) of the group (x of norm about 0.5 per entry):
+    the rank of Phi there is its generic (maximal) rank, so a rank drop there is a drop
+    everywhere (the rows are redundant as written, not only at special configurations)."""
+    import casadi as ca
+    x = np.random.default_rng(12345).uniform(-0.5, 0.5, group.d)
+    return np.array(ca.evalf(ca.SX(group.tau(group.tau_kinds[0], ca.SX(x)))), dtype=float)
+
+
+def _check_rank(doc, constraints, g_symbols, group, g, where: str) -> None:
+    _, Phi, labels = constraint_values(constraints, g_symbols, group, g)
+    scale = max(np.abs(Phi).max(), 1e-300)
+    basis = np.zeros((0, group.d))
+    for r in range(len(Phi)):
+        rest = Phi[r] - basis.T @ (basis @ Phi[r])
+        if np.linalg.norm(rest) <= RANK_TOL * scale:
+            raise doc.error(("constraints",), f"{labels[r]} is redundant {where}: its Jacobian "
+                            "row is a combination of the previous rows' (singular constraint "
+                            "Jacobian); remove it or the rows it repeats")
+        basis = np.vstack([basis, rest / np.linalg.norm(rest)])
 
 
 def _numeric_hats(group) -> list:
@@ -104,15 +129,7 @@ def check_initial(doc, constraints, g_symbols, group, scene) -> None:
         if not abs(v) <= INITIAL_TOL:
             raise doc.error(path, f"the initial g violates {labels[r]}: residual {v:.3e} "
                             f"(expected |phi(g0)| <= {INITIAL_TOL:g})")
-    scale = max(np.abs(Phi).max(), 1e-300)
-    basis = np.zeros((0, group.d))
-    for r in range(len(Phi)):
-        rest = Phi[r] - basis.T @ (basis @ Phi[r]) if len(basis) else Phi[r].copy()
-        if np.linalg.norm(rest) <= RANK_TOL * scale:
-            raise doc.error(("constraints",), f"{labels[r]} is redundant at the initial g: its "
-                            "Jacobian row is a combination of the previous rows' (singular "
-                            "constraint Jacobian); remove it or the rows it repeats")
-        basis = np.vstack([basis, rest / np.linalg.norm(rest)])
+    _check_rank(doc, constraints, g_symbols, group, scene.g0, "at the initial g")
     if scene.xi0 is not None:
         xi0 = np.asarray(scene.xi0, dtype=float)
         hidden = Phi @ xi0

@@ -325,7 +325,7 @@ def build_model(doc: Doc, text: str) -> Model:
     if data.get("constraints") is not None:
         from .constraints import check_initial, parse_constraints
         constraints = parse_constraints(doc, data["constraints"], group, exact,
-                                        [nm for nm, _ in runtime])
+                                        [nm for nm, _ in runtime], g_syms)
         check_initial(doc, constraints, g_syms, group, scene)
     return Model(name=name, path=doc.file, source=text, group_spec=data["group"], group=group,
                  parameters=stored, lagrangian_text=data["lagrangian"], lagrangian=lag,
