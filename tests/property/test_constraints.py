@@ -1,5 +1,5 @@
 """Holonomic constraints (RATTLE-type Stormer-Verlet, docs/numerics.md "Holonomic
-constraints") on the double spherical pendulum of examples/double_spherical_pendulum.yaml:
+constraints") on the double spherical pendulum of tests/models/double_spherical_pendulum.yaml:
 two links on [SE3, SE3], a ball joint pinning link 0 to the world origin and one between
 the links, gravity -e3.
 
@@ -21,9 +21,9 @@ import numpy as np
 import pytest
 
 from ball_chain_reference import BallChain, rotvec
-from conftest import EXAMPLES
+from conftest import ROOT
 
-MODEL = EXAMPLES / "double_spherical_pendulum.yaml"
+MODEL = ROOT / "tests" / "models" / "double_spherical_pendulum.yaml"
 J = np.array([1 / 48, 1 / 48, 0.002])
 TOP, BOT = np.array([0.0, 0.0, 0.25]), np.array([0.0, 0.0, -0.25])
 CHAIN = BallChain(2, 1.0, J, TOP, BOT, 9.81)
