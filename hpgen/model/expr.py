@@ -33,6 +33,11 @@ A recorded expression (``parse_record``, an entry ``{label: "text"}`` of ``scene
 use both ``xi`` and ``mu`` (and g); it must be a scalar depending on xi, mu or a varying entry of
 g. Its xi / mu / g symbols are equal to the Lagrangian's / the section's. Errors carry the field
 the caller passes (the scene uses "scene.record[i].label").
+
+A holonomic constraint (``parse_constraint``, an entry of the model's ``constraints:`` list)
+is a scalar or a vector in g (and its aliases) and the fixed parameters, one row per entry;
+xi and t are refused, every row must depend on a varying entry of g. Errors carry the field
+the caller passes ("constraints[i]").
 """
 from __future__ import annotations
 
@@ -237,8 +242,8 @@ def parse_constraint(text: str, group, parameters: dict, field: str, refused=Non
     expression in g and its aliases (R, x; R_k, x_k, g_k of products) and the parameters,
     the same grammar, functions and limits as the Lagrangian. ``rows``: a tuple of sympy
     scalars (one per entry), each depending on a varying entry of g; xi and t are refused,
-    and so are the names in ``refused`` ({name: message}: the runtime parameters). Raises ModelError(field=field)
-    without file/line (the loader adds them)."""
+    and so are the names in ``refused`` ({name: message}: the runtime parameters). Raises
+    ModelError(field=field) without file/line (the loader adds them)."""
     forbidden = (_XI_NAME, "a constraint may use g (R, x, ...) and fixed parameters, not the "
                            "velocity xi: holonomic constraints are functions of the "
                            "configuration")
