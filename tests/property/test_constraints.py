@@ -184,3 +184,29 @@ def test_forced_open_model_keeps_the_constraint(compile_model):
         assert np.abs(phi).max() < 1e-14
         if u == 0.0:
             assert np.all(np.diff(E[::50]) < 0)
+
+
+@pytest.mark.slow
+def test_yoshida_composition_of_constrained_sv_is_order_four(compile_model, reference_at_1):
+    """Constrained SV is symmetric (step(h) then step(-h) is the identity to round-off), so
+    the triple jump w1 h, w0 h, w1 h of its steps is order 4 on the constraint manifold."""
+    integ = compile_model(MODEL)
+    _, _, g0, xi0 = _initial()
+    p0 = np.asarray(integ.kernel("legendre", g0.ravel(order="F"), xi0)[0])
+    g1, p1 = integ.step(g0, p0, 0.05)
+    g2, p2 = integ.step(g1, p1, -0.05)
+    assert max(np.abs(g2 - g0).max(), np.abs(p2 - p0).max()) < 1e-14
+    gr, pr = _reference_state(reference_at_1)
+    w1 = 1 / (2 - 2 ** (1 / 3))
+    errs = []
+    for h in (0.02, 0.01, 0.005):
+        g, p = g0, p0
+        for _ in range(round(1.0 / h)):
+            for w in (w1, 1 - 2 * w1, w1):
+                g, p = integ.step(g, p, w * h)
+        errs.append(max(np.abs(g - gr).max(), np.abs(p - pr).max()))
+        phi, hidden = constraint_residuals(g[None], p[None])
+        assert phi < 1e-14 and hidden < 1e-13
+    rates = np.log2(np.array(errs[:-1]) / np.array(errs[1:]))
+    print("triple jump errors", errs, "rates", rates)
+    assert abs(rates[-1] - 4.0) < 0.2 and rates[0] > 3.5
