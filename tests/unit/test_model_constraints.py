@@ -121,3 +121,13 @@ def test_derived_step_unknowns():
     step = derive(m, get_tableau("stormer-verlet"), "cay", "truncated")
     assert step.unknowns == (("Xi", 0, 6), ("lambda", 6, 9), ("nu", 9, 12), ("v1", 12, 18))
     assert step.nz == 18 and not step.reduced
+
+
+def test_check_refuses_constrained_models(tmp_path):
+    from hpgen.analysis.check import run_check
+    path = tmp_path / "pend.yaml"
+    path.write_text(PEND + "scene: {h: 0.01, steps: 10, initial: {g: {rotvec: [0, 0, 0], "
+                    "position: [0, 0, -0.25]}, xi: [1.0, 0, 0, 0, 0.25, 0]}}\n")
+    with pytest.raises(ModelError) as e:
+        run_check(path, cache_dir=tmp_path)
+    assert "constraints" in str(e.value) and "\n" not in str(e.value)
