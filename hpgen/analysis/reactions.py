@@ -4,8 +4,8 @@ A model with ``constraints:`` has the blocks ``lambda`` and ``nu`` among the ste
 z (docs/numerics.md, "Holonomic constraints"): the impulses h lambda_k (at the start of step k,
 fixed by phi(g_(k+1)) = 0) and h nu_(k+1) (at its end, fixed by the hidden constraint). The
 runtime does not keep z, so ``reactions`` solves the step again from each recorded state (full
-Newton from the guess kernel, tol 1e-14 relative, to round-off like the run's own solve) and
-reads the two blocks.
+Newton from the guess kernel, tol 1e-14 relative, or until the correction stalls at round-off
+below STALL_TOL) and reads the two blocks.
 
 Convention: the constraint force in g* (body frame, the sign of the forces f) is
 -Phi(g)^T lambda, Phi(g) eta = d/de phi(g exp(e eta)) at 0; for a joint written
@@ -19,6 +19,9 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import ConvergenceError
+
+#: a Newton correction that stops decreasing below STALL_TOL (1 + |z|) is round-off
+STALL_TOL = 1e-11
 
 
 def _block(integ, label):
@@ -36,14 +39,17 @@ def step_unknowns(integ, g, p, h, tol=1e-14, maxit=50, k=0):
     p = np.asarray(p, dtype=float)
     hv = np.array([h], dtype=float)
     z = np.asarray(integ.kernel("guess", integ.velocity(g, p), gf, p, hv)[0], dtype=float)
-    nz = z.size
+    nz, last = z.size, np.inf
     for _ in range(maxit):
         F, J = integ.kernel("residual_jacobian", z, gf, p, hv)
         dz = np.linalg.solve(np.asarray(J, dtype=float).reshape(nz, nz, order="F"),
                              np.asarray(F, dtype=float).ravel())
         z = z - dz
-        if np.abs(dz).max() <= tol * (1.0 + np.abs(z).max()):
+        dn, scale = np.abs(dz).max(), 1.0 + np.abs(z).max()
+        # converged, or stalled at round-off (no longer decreasing, within STALL_TOL)
+        if dn <= tol * scale or (dn >= last and dn <= STALL_TOL * scale):
             return z
+        last = dn
     raise ConvergenceError("Newton did not converge re-solving the step", step=k,
                            time=k * h, residual=float(np.abs(np.asarray(F)).max()),
                            iterations=maxit)

@@ -16,15 +16,18 @@ Conventions (docs/numerics.md, "Holonomic constraints"):
       phi(g_{k+1}) / h = 0                                          (m rows)
       p_{k+1}   = p_{k+1}^- - h Phi(g_{k+1})^T nu_{k+1}
       dl/dxi(g_{k+1}, v_{k+1}) - p_{k+1} = 0,  Phi(g_{k+1}) v_{k+1} = 0   (d + m rows)
-  Unknowns z = (Z, lambda_k, nu_{k+1}, v_{k+1}): the unconstrained step's unknowns, the two
-  multipliers (force units) and the node velocity v_{k+1} = xi(g_{k+1}, p_{k+1}) (the
-  inverse Legendre transform, kept as an unknown so that l need not be quadratic).
+  Unknowns z = (Z, h lambda_k, h nu_{k+1}, v_{k+1}): the unconstrained step's unknowns, the
+  two impulses and the node velocity v_{k+1} = xi(g_{k+1}, p_{k+1}) (the inverse Legendre
+  transform, an unknown so that l need not be quadratic). When d2l/dxi2 is a constant
+  matrix H (l = 1/2 xi.H xi + b(g, t).xi + ...), v_{k+1} = H^{-1} (p_{k+1} - b) is explicit
+  and the d Legendre rows and unknowns are dropped.
   Since p_k enters the unconstrained step only through its eta_0 condition
   p_k + ds_k/deta_0 = 0, "the step from p_k^+" is the substitution p_k -> p_k^+ in it.
 """
 from __future__ import annotations
 
 import casadi as ca
+import numpy as np
 
 from .action import StepEquations
 from .lagrangian import to_casadi
@@ -58,11 +61,22 @@ def constrain_step(eqs: StepEquations, group, phi, lag1, g, p, h) -> StepEquatio
     g1 = sub(eqs.g1)
     Phi1 = body_jacobian(group, phi, g1)
     p1 = sub(eqs.p1) - ca.mtimes(Phi1.T, nu)
-    mu1 = ca.gradient(lag1(g1, v1), v1)
-    residual = ca.vertcat(sub(eqs.residual), phi(g1) / h, mu1 - p1, ca.mtimes(Phi1, v1))
     nz = eqs.z.numel()
-    blocks = eqs.blocks + (("lambda", nz, nz + m), ("nu", nz + m, nz + 2 * m),
-                           ("v1", nz + 2 * m, nz + 2 * m + d))
+    blocks = eqs.blocks + (("lambda", nz, nz + m), ("nu", nz + m, nz + 2 * m))
+    free = ca.SX.sym("xi", d)
+    dl = ca.gradient(lag1(g1, free), free)
+    hess = ca.jacobian(dl, free)
+    if hess.is_constant():
+        # l = 1/2 xi.H xi + b(g).xi + ...: the node velocity is explicit, H^{-1} (p - b)
+        Hinv = np.linalg.inv(np.array(ca.evalf(hess), dtype=float))
+        vel = ca.mtimes(ca.DM(Hinv), p1 - ca.substitute(dl, free, ca.SX.zeros(d)))
+        residual = ca.vertcat(sub(eqs.residual), phi(g1) / h, ca.mtimes(Phi1, vel))
+        return StepEquations(ca.vertcat(eqs.z, lam, nu), blocks, residual, g1, p1,
+                             ca.vertcat(eqs.guess, ca.SX.zeros(2 * m)), eqs.xi_hat,
+                             sub(eqs.margin), sub(eqs.chart_step))
+    mu1 = ca.substitute(dl, free, v1)
+    residual = ca.vertcat(sub(eqs.residual), phi(g1) / h, mu1 - p1, ca.mtimes(Phi1, v1))
+    blocks += (("v1", nz + 2 * m, nz + 2 * m + d),)
     guess = ca.vertcat(eqs.guess, ca.SX.zeros(2 * m), eqs.xi_hat)
     return StepEquations(ca.vertcat(eqs.z, lam, nu, v1), blocks, residual, g1, p1, guess,
                          eqs.xi_hat, sub(eqs.margin), sub(eqs.chart_step))

@@ -119,8 +119,12 @@ def test_derived_step_unknowns():
     from hpgen.tableaus import get_tableau
     m = load_model_text(PEND, "m.yaml")
     step = derive(m, get_tableau("stormer-verlet"), "cay", "truncated")
-    assert step.unknowns == (("Xi", 0, 6), ("lambda", 6, 9), ("nu", 9, 12), ("v1", 12, 18))
-    assert step.nz == 18 and not step.reduced
+    # l quadratic in xi with a constant Hessian: the node velocity is explicit (no v1 block)
+    assert step.unknowns == (("Xi", 0, 6), ("lambda", 6, 9), ("nu", 9, 12))
+    assert step.nz == 12 and not step.reduced
+    quartic = load_model_text(PEND.replace("xi[3]**2 +", "xi[3]**2 + 0.1*xi[3]**4 +"), "m.yaml")
+    step = derive(quartic, get_tableau("stormer-verlet"), "cay", "truncated")
+    assert step.unknowns[-1] == ("v1", 12, 18) and step.nz == 18
 
 
 def test_check_refuses_constrained_models(tmp_path):
