@@ -210,3 +210,46 @@ def test_yoshida_composition_of_constrained_sv_is_order_four(compile_model, refe
     rates = np.log2(np.array(errs[:-1]) / np.array(errs[1:]))
     print("triple jump errors", errs, "rates", rates)
     assert abs(rates[-1] - 4.0) < 0.2 and rates[0] > 3.5
+
+
+def _manifold_jacobian(model, g, p):
+    """D(phi, Phi xi)(g, p) (2m x 2d) in the left-trivialized chart (g (I + delta^), p + dp),
+    by CasADi AD; xi = H^-1 p with H = diag(J, m, m, m, J, m, m, m) (l quadratic, b = 0)."""
+    import casadi as ca
+    from hpgen.derive.constraints import body_jacobian, constraint_function
+    group, d = model.group, model.group.d
+    phi = constraint_function(model)
+    delta, dp = ca.SX.sym("delta", d), ca.SX.sym("dp", d)
+    G = ca.mtimes(ca.DM(g), ca.SX.eye(group.n) + group.hat(delta))
+    Hinv = 1.0 / np.concatenate([J, np.ones(3), J, np.ones(3)])
+    C = ca.vertcat(phi(G), ca.mtimes(body_jacobian(group, phi, G), ca.DM(Hinv) * (ca.DM(p) + dp)))
+    s = ca.vertcat(delta, dp)
+    D = ca.Function("D", [s], [ca.jacobian(C, s)])(np.zeros(2 * d))
+    return np.array(D, dtype=float)
+
+
+def test_step_is_symplectic_on_the_constraint_manifold(compile_model):
+    """The linearized step A (integ.linearize) preserves the canonical form on tangent vectors
+    of the constraint manifold {phi = 0, Phi xi = 0} (a basis T of the null space of its
+    2m x 2d Jacobian): T^T (A^T Omega(p1) A - Omega(p0)) T = 0 to round-off.
+    Off the manifold the map is not symplectic (RATTLE's projection): the full defect is O(1)."""
+    from scipy.linalg import null_space
+    from hpgen.analysis.symplectic import ad_matrices, omega_matrix
+    from hpgen.model import load_model
+    model = load_model(MODEL)
+    integ = compile_model(MODEL)
+    _, _, g0, xi0 = _initial()
+    tr = integ.simulate(g0=g0, xi0=xi0, h=0.01, steps=20, every=1)
+    A = integ.linearize(tr)
+    ad = ad_matrices(model.group)
+    worst, full = 0.0, 0.0
+    for k in (0, 7, 19):
+        T = null_space(_manifold_jacobian(model, tr.g[k], tr.mu[k]))
+        assert T.shape[1] == 2 * (12 - 6)
+        E = A[k].T @ omega_matrix(ad, tr.mu[k + 1]) @ A[k] - omega_matrix(ad, tr.mu[k])
+        scale = np.linalg.norm(A[k], 2) ** 2 * np.linalg.norm(omega_matrix(ad, tr.mu[k + 1]), 2)
+        worst = max(worst, np.abs(T.T @ E @ T).max() / scale)
+        full = max(full, np.abs(E).max() / scale)
+    print(f"symplectic defect on the manifold {worst:.2e}, on all of T*G {full:.2e}")
+    assert worst < 1e-13
+    assert full > 1e-6
