@@ -135,3 +135,20 @@ def test_check_refuses_constrained_models(tmp_path):
     with pytest.raises(ModelError) as e:
         run_check(path, cache_dir=tmp_path)
     assert "constraints" in str(e.value) and "\n" not in str(e.value)
+
+
+def test_reactions_of_a_hanging_pendulum(tmp_path):
+    """At rest, hanging straight down: each node's two impulses carry the weight, so
+    lambda_k + nu_k = -(pin force on the link) = (0, 0, -m grav) (docs/numerics.md sec. 14)."""
+    import hpgen
+    from hpgen.analysis.reactions import reactions
+    path = tmp_path / "pend.yaml"
+    path.write_text(PEND)
+    integ = hpgen.compile(path, cache_dir=tmp_path / "cache", backend="python")
+    g0 = np.eye(4)
+    g0[2, 3] = -0.25
+    tr = integ.simulate(g0=g0, mu0=np.zeros(6), h=0.01, steps=3)
+    assert np.abs(tr.mu).max() < 1e-14 and np.abs(tr.g - g0).max() < 1e-15
+    lam, nu = reactions(integ, tr.g, tr.mu, 0.01)
+    assert lam.shape == nu.shape == (4, 3)
+    np.testing.assert_allclose(lam[1:] + nu[:-1], [[0.0, 0.0, -9.81]] * 3, atol=1e-12)
