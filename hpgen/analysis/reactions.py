@@ -1,7 +1,7 @@
 """The multipliers (joint reactions) of a constrained model's steps, from recorded states.
 
 A model with ``constraints:`` has the blocks ``lambda`` and ``nu`` among the step's unknowns
-z (docs/numerics.md, "Holonomic constraints"): the impulses h lambda_k (at the start of step k,
+z (docs/numerics.md sec. 14): the impulses h lambda_k (at the start of step k,
 fixed by phi(g_(k+1)) = 0) and h nu_(k+1) (at its end, fixed by the hidden constraint). The
 runtime does not keep z, so ``reactions`` solves the step again from each recorded state (full
 Newton from the guess kernel, tol 1e-14 relative, or until the correction stalls at round-off

@@ -1,12 +1,12 @@
 """Holonomic constraints phi(g) = 0 in one step: RATTLE-type multipliers at the nodes.
 
-Conventions (docs/numerics.md, "Holonomic constraints"):
+Conventions (docs/numerics.md sec. 14):
 - Phi(g) (m x d) is the body-frame (left-trivialized) constraint Jacobian,
   Phi(g) eta = d/de phi(g exp(e eta)) at e = 0; it is taken by CasADi as the derivative of
   phi(g (I + eta^)) at eta = 0 (same first derivative).
 - The action sum gains -h <lambda_k, phi(g_k)> at every node. Its variation in g_k is the
   impulse -h Phi(g_k)^T lambda_k: the reaction force in g* is f_c = -Phi^T lambda (the sign of
-  the forces f of math.md sec. 9 applied to -Phi^T lambda). RATTLE splits the node's impulse
+  the forces f, docs/numerics.md sec. 13, applied to -Phi^T lambda). RATTLE splits the node's impulse
   into two multipliers, lambda_k (fixed by phi(g_{k+1}) = 0, SHAKE's) and nu_{k+1} (fixed by
   the hidden constraint at the end of the step, Phi(g_{k+1}) xi_{k+1} = 0); the node
   momentum p_{k+1} is the one between the two impulses, on the hidden constraint.

@@ -7,10 +7,11 @@ velocity xi, the time t, control inputs and runtime parameters are refused. Erro
 field ``constraints[i]``.
 
 Redundant rows are refused: Phi(g) of deficient row rank at a fixed generic g (then it is
-deficient everywhere). The scene's initial state must be admissible: |phi_r(g0)| <= INITIAL_TOL (the residual is
-reported), the body-frame constraint Jacobian Phi(g0) (m x d, Phi(g) eta = d/de phi(g exp(e
-eta)) at 0) must have full row rank m (a redundant row is named), and when the scene gives
-xi0 the hidden constraint |Phi(g0) xi0| <= INITIAL_TOL (1 + |xi0|) must hold.
+deficient everywhere). The scene's initial state must be admissible: |phi_r(g0)| <=
+INITIAL_TOL (the residual is reported), the body-frame constraint Jacobian Phi(g0) (m x d,
+Phi(g) eta = d/de phi(g exp(e eta)) at 0) must have full row rank m (a redundant row is
+named), and when the scene gives xi0 the hidden constraint |Phi(g0) xi0| <= INITIAL_TOL
+(1 + |xi0|) must hold. A scene given by mu0 is checked on the constraint only.
 """
 from __future__ import annotations
 
