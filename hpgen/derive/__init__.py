@@ -14,6 +14,11 @@ parameters (Model.runtime_symbols order). The kernels that evaluate l but take n
 (hpgen.abi.OPEN_EXTRA: legendre, hessian, energy, observe, velocity_step, record) take hv
 as a last input (their t is t_k). A closed model derives exactly the conservative kernels
 (zero forces included), with H = 1.
+
+A model with ``constraints:`` wraps the step in RATTLE-type node multipliers
+(hpgen.derive.constraints, docs/numerics.md sec. 14): the unknowns gain the blocks ``lambda``
+and ``nu`` (impulses h lambda_k, h nu_(k+1)) and, when d2l/dxi2 is not constant, ``v1``; the
+reduced Euler-Poincare step is not used.
 """
 from __future__ import annotations
 
