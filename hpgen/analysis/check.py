@@ -224,6 +224,10 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     if sc is None:
         raise ModelError("hpgen check needs the model's scene (initial state)", file=str(path),
                          field="scene")
+    if getattr(model, "constraints", ()):
+        raise ModelError("hpgen check does not handle constraints: yet (its reference solves "
+                         "the unconstrained equations); see docs/numerics.md sec. 14",
+                         file=str(path), field="constraints")
     if model.open_system and scheme != "hpgen":
         raise ModelError("the rkmk-rk4 scheme of hpgen check runs closed models only (no "
                          "forces, inputs, runtime parameters or t)", file=str(path),

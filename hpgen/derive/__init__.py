@@ -14,6 +14,11 @@ parameters (Model.runtime_symbols order). The kernels that evaluate l but take n
 (hpgen.abi.OPEN_EXTRA: legendre, hessian, energy, observe, velocity_step, record) take hv
 as a last input (their t is t_k). A closed model derives exactly the conservative kernels
 (zero forces included), with H = 1.
+
+A model with ``constraints:`` wraps the step in RATTLE-type node multipliers
+(hpgen.derive.constraints, docs/numerics.md sec. 14): the unknowns gain the blocks ``lambda``
+and ``nu`` (impulses h lambda_k, h nu_(k+1)) and, when d2l/dxi2 is not constant, ``v1``; the
+reduced Euler-Poincare step is not used.
 """
 from __future__ import annotations
 
@@ -21,6 +26,7 @@ import casadi as ca
 
 from ..schemes import RKMK
 from .action import step_equations
+from .constraints import constrain_step, constraint_function
 from .lagrangian import lagrangian_function, open_functions, to_casadi
 from .linearize import step_partials
 from .record_kernel import record_row, velocity_step
@@ -64,15 +70,19 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
         lag_t = lambda G, X, tt: lag_f(G, X, tt, P)  # noqa: E731
         lag = lambda G, X: lag_f(G, X, t, P)  # noqa: E731  (at t_k: records, energy)
         force = (lambda G, X, tt: force_f(G, X, tt, u, P)) if model.forced else None
-        reduced = model.left_invariant and not model.forced and not model.time_dependent
+        reduced = model.left_invariant and not model.forced and not model.time_dependent \
+            and not model.constraints
         eqs = step_equations(group, lag_t, tableau, tau, rkmk, reduced, g, p, h, t, force)
+        lag1 = lambda G, X: lag_f(G, X, t + h, P)  # noqa: E731  (at t_{k+1})
         extra = [("h", hv)]
     else:
         h = hv = ca.SX.sym("h", 1)
-        lag = lagrangian_function(model)
-        reduced = model.left_invariant
+        lag = lag1 = lagrangian_function(model)
+        reduced = model.left_invariant and not model.constraints
         eqs = step_equations(group, lag, tableau, tau, rkmk, reduced, g, p, h)
         extra = []
+    if model.constraints:
+        eqs = constrain_step(eqs, group, constraint_function(model), lag1, g, p, h)
     z = eqs.z
     nz = z.numel()
     gf = _flat(g)

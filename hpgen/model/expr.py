@@ -33,6 +33,11 @@ A recorded expression (``parse_record``, an entry ``{label: "text"}`` of ``scene
 use both ``xi`` and ``mu`` (and g); it must be a scalar depending on xi, mu or a varying entry of
 g. Its xi / mu / g symbols are equal to the Lagrangian's / the section's. Errors carry the field
 the caller passes (the scene uses "scene.record[i].label").
+
+A holonomic constraint (``parse_constraint``, an entry of the model's ``constraints:`` list)
+is a scalar or a vector in g (and its aliases) and the fixed parameters, one row per entry;
+xi and t are refused, every row must depend on a varying entry of g. Errors carry the field
+the caller passes ("constraints[i]").
 """
 from __future__ import annotations
 
@@ -230,3 +235,37 @@ def parse_record(text: str, group, parameters: dict, field: str = RECORD_FIELD):
     mu_syms = tuple(ev.vars["mu"].tolist())
     g_syms = tuple(tuple(row) for row in ev.g.tolist())
     return result, xi_syms, mu_syms, g_syms
+
+
+def parse_constraint(text: str, group, parameters: dict, field: str, refused=None):
+    """(rows, g_symbols) for one holonomic constraint phi(g) = 0: a scalar or a vector
+    expression in g and its aliases (R, x; R_k, x_k, g_k of products) and the parameters,
+    the same grammar, functions and limits as the Lagrangian. ``rows``: a tuple of sympy
+    scalars (one per entry), each depending on a varying entry of g; xi and t are refused,
+    and so are the names in ``refused`` ({name: message}: the runtime parameters). Raises
+    ModelError(field=field) without file/line (the loader adds them)."""
+    forbidden = (_XI_NAME, "a constraint may use g (R, x, ...) and fixed parameters, not the "
+                           "velocity xi: holonomic constraints are functions of the "
+                           "configuration")
+    try:
+        tree = parse_checked(text)
+        ev = _Evaluator(group, parameters, variables=(), forbidden=forbidden,
+                        refused=refused)
+        try:
+            result = ev.walk(tree.body)
+        except RecursionError:
+            raise ModelError(f"expression too large: nested too deeply (limit {MAX_DEPTH})",
+                             field=field) from None
+        if isinstance(result, np.ndarray) and result.ndim != 1:
+            raise ModelError(f"a constraint must be a scalar or a vector, got shape "
+                             f"{result.shape} (a {_shape_text(result.shape)})", field=field)
+        rows = tuple(result.tolist()) if isinstance(result, np.ndarray) else (result,)
+        for r, row in enumerate(rows):
+            what = "the constraint" + (f" (row {r})" if len(rows) > 1 else "")
+            if not _final_checks(row, set(ev.varying_g), field, what):
+                raise ModelError(f"{what} is constant on the group (it is {str(row)[:60]}); "
+                                 "expected an expression in R, x or g that vanishes on the "
+                                 "admissible configurations, e.g. x - dot(R, c)", field=field)
+    except ModelError as e:
+        raise _relabel(e, field) from None
+    return rows, tuple(tuple(row) for row in ev.g.tolist())

@@ -6,7 +6,7 @@ sympy), so that a cache hit stays cheap:
 
 - the YAML is parsed (hpgen.model.yamldoc), so comments, quoting, key order, indentation and
   flow/block style do not count;
-- expressions (the Lagrangian, ``record:`` expressions) are reduced to their Python tokens,
+- expressions (the Lagrangian, ``constraints:`` entries, ``record:`` expressions) are reduced to their Python tokens,
   so spaces, line breaks and comments inside them do not count (the tokens, literals
   included, are kept as written: ``1`` and ``1.0`` stay different, as they may change code);
 - the scene keeps only what is compiled into kernels: ``record`` (the record kernel's row)
@@ -69,6 +69,8 @@ def normalized_model(text: str) -> tuple[dict, object]:
     norm = {k: v for k, v in data.items() if k not in ("integrator", "scene")}
     if "lagrangian" in norm:
         norm["lagrangian"] = expression_tokens(norm["lagrangian"])
+    if isinstance(norm.get("constraints"), list):
+        norm["constraints"] = [expression_tokens(c) for c in norm["constraints"]]
     scene = data.get("scene")
     if isinstance(scene, dict):
         scene = {k: v for k, v in scene.items() if k not in RUN_ONLY_SCENE_KEYS}

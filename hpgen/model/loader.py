@@ -26,7 +26,7 @@ MAX_NAME_LEN = 64
 MAX_MATRIX_SIZE = 64                # n and d of the group (g has n*n symbols)
 
 TOP_KEYS = ("schema", "name", "group", "parameters", "lagrangian", "integrator", "scene",
-            "runtime_parameters", "inputs", "forces")
+            "runtime_parameters", "inputs", "forces", "constraints")
 INTEGRATOR_KEYS = ("tableau", "tau", "rkmk")
 
 C_KEYWORDS = frozenset("""
@@ -321,12 +321,18 @@ def build_model(doc: Doc, text: str) -> Model:
         scene = parse_scene(doc, data["scene"], group, lag_params, inputs)
         _refuse_runtime_in_scene(doc, scene, rsyms)
         _refuse_unforced_work(doc, scene, forces)
+    constraints = ()
+    if data.get("constraints") is not None:
+        from .constraints import check_initial, parse_constraints
+        constraints = parse_constraints(doc, data["constraints"], group, exact,
+                                        [nm for nm, _ in runtime], g_syms)
+        check_initial(doc, constraints, g_syms, group, scene)
     return Model(name=name, path=doc.file, source=text, group_spec=data["group"], group=group,
                  parameters=stored, lagrangian_text=data["lagrangian"], lagrangian=lag,
                  xi_symbols=xi_syms, g_symbols=g_syms, integrator=integrator, scene=scene,
                  runtime_parameters=runtime, runtime_symbols=rsyms, runtime_defaults=rdefaults,
                  inputs=inputs, input_symbols=tuple(input_symbol(u) for u in inputs),
-                 forces=forces, forces_text=forces_text)
+                 forces=forces, forces_text=forces_text, constraints=constraints)
 
 
 def load_model_text(text, filename: str = "<string>") -> Model:

@@ -113,6 +113,9 @@ class Model:
     #: Free symbols: xi_symbols, g_symbols, TIME_SYMBOL, runtime_symbols, input_symbols.
     forces: tuple = ()
     forces_text: tuple = ()
+    #: holonomic constraints phi(g) = 0 (hpgen.model.constraints): one ConstraintSpec per
+    #: entry of the file's ``constraints:`` list, in file order; () for an unconstrained model
+    constraints: tuple = ()
 
     @property
     def forced(self) -> bool:

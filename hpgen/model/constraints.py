@@ -1,0 +1,142 @@
+"""The ``constraints:`` key: holonomic constraints phi(g) = 0 of the configuration.
+
+The key holds a list; entry i is one expression (scalar or vector) in g and its aliases
+(R, x; g_k, R_k, x_k of a product group) and the fixed parameters, parsed by the whitelist
+parser (hpgen.model.expr.parse_constraint); each entry of a vector is one row of phi. The
+velocity xi, the time t, control inputs and runtime parameters are refused. Errors name the
+field ``constraints[i]``.
+
+Redundant rows are refused: Phi(g) of deficient row rank at a fixed generic g (then it is
+deficient everywhere). The scene's initial state must be admissible: |phi_r(g0)| <=
+INITIAL_TOL (the residual is reported), the body-frame constraint Jacobian Phi(g0) (m x d,
+Phi(g) eta = d/de phi(g exp(e eta)) at 0) must have full row rank m (a redundant row is
+named), and when the scene gives xi0 the hidden constraint |Phi(g0) xi0| <= INITIAL_TOL
+(1 + |xi0|) must hold. A scene given by mu0 is checked on the constraint only.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import ModelError
+from .yamldoc import describe, is_number
+
+#: absolute tolerance on phi(g0) and on the hidden constraint Phi(g0) xi0 of the scene
+INITIAL_TOL = 1e-9
+#: a row of Phi(g0) whose distance to the span of the previous rows is below this fraction
+#: of the largest row norm is redundant
+RANK_TOL = 1e-9
+
+
+@dataclass(frozen=True)
+class ConstraintSpec:
+    """One entry of ``constraints:``: ``text`` as written, ``rows`` its sympy scalars (one per
+    vector entry) in Model.g_symbols, parameters substituted as for the Lagrangian."""
+    text: str
+    rows: tuple
+
+
+def parse_constraints(doc, raw, group, exact: dict, runtime_names, g_symbols) -> tuple:
+    """(ConstraintSpec, ...) from the ``constraints:`` list; ``exact`` the fixed parameters
+    (ints exact), ``runtime_names`` the runtime parameters' names (refused); g_symbols:
+    Model.g_symbols. Redundant rows (Phi of deficient rank at a generic g) are refused."""
+    from .expr import parse_constraint
+    if not isinstance(raw, list) or not raw:
+        raise doc.error(("constraints",), "expected a non-empty list of expressions in g "
+                        f"(R, x, ...) that vanish, e.g. [x - dot(R, c)], got {describe(raw)}")
+    refused = {n: f"the runtime parameter {n!r} may not appear in a constraint (constraints "
+                  "take fixed parameters only)" for n in runtime_names}
+    params = {k: v for k, v in exact.items() if k not in refused}
+    out = []
+    for i, text in enumerate(raw):
+        field = f"constraints[{i}]"
+        if is_number(text) or not isinstance(text, str) or not text.strip():
+            raise doc.error(("constraints", i), "expected an expression in g (R, x, ...) and "
+                            f"parameters that vanishes, got {describe(text)}")
+        try:
+            rows, _ = parse_constraint(text, group, params, field, refused)
+        except ModelError as e:
+            raise e.located(doc.file, field, doc.line(("constraints", i))) from None
+        out.append(ConstraintSpec(text, rows))
+    if sum(len(c.rows) for c in out) >= group.d:
+        raise doc.error(("constraints",), f"{sum(len(c.rows) for c in out)} constraint rows "
+                        f"leave no freedom on {group.name} (d = {group.d}); expected fewer than d")
+    _check_rank(doc, out, g_symbols, group, _generic_point(group), "at a generic g")
+    return tuple(out)
+
+
+def _generic_point(group):
+    """A fixed pseudo-random element tau(x) of the group (x of norm about 0.5 per entry):
+    the rank of Phi there is its generic (maximal) rank, so a rank drop there is a drop
+    everywhere (the rows are redundant as written, not only at special configurations)."""
+    import casadi as ca
+    x = np.random.default_rng(12345).uniform(-0.5, 0.5, group.d)
+    return np.array(ca.evalf(ca.SX(group.tau(group.tau_kinds[0], ca.SX(x)))), dtype=float)
+
+
+def _check_rank(doc, constraints, g_symbols, group, g, where: str) -> None:
+    _, Phi, labels = constraint_values(constraints, g_symbols, group, g)
+    scale = max(np.abs(Phi).max(), 1e-300)
+    basis = np.zeros((0, group.d))
+    for r in range(len(Phi)):
+        rest = Phi[r] - basis.T @ (basis @ Phi[r])
+        if np.linalg.norm(rest) <= RANK_TOL * scale:
+            raise doc.error(("constraints",), f"{labels[r]} is redundant {where}: its Jacobian "
+                            "row is a combination of the previous rows' (singular constraint "
+                            "Jacobian); remove it or the rows it repeats")
+        basis = np.vstack([basis, rest / np.linalg.norm(rest)])
+
+
+def _numeric_hats(group) -> list:
+    """hat(e_a) as numpy n x n arrays, a = 0..d-1."""
+    import casadi as ca
+    eye = np.eye(group.d)
+    return [np.array(ca.evalf(ca.SX(group.hat(ca.SX(eye[:, a])))), dtype=float)
+            for a in range(group.d)]
+
+
+def constraint_values(constraints, g_symbols, group, g0):
+    """(phi(g0) (m,), Phi(g0) (m x d), labels) for numeric g0 (n x n); labels[r] names row r
+    (``constraints[i]`` or ``constraints[i] row j``)."""
+    import sympy as sp
+    g0 = np.asarray(g0, dtype=float)
+    n = g0.shape[0]
+    subs = {g_symbols[i][j]: sp.Float(float(g0[i, j])) for i in range(n) for j in range(n)}
+    hats = _numeric_hats(group)
+    dirs = [g0 @ E for E in hats]                 # d/de g0 exp(e E) at 0
+    vals, jac, labels = [], [], []
+    for i, c in enumerate(constraints):
+        for j, row in enumerate(c.rows):
+            labels.append(f"constraints[{i}]" + (f" row {j}" if len(c.rows) > 1 else ""))
+            vals.append(float(row.xreplace(subs)))
+            grad = np.zeros((n, n))
+            for s in row.free_symbols:
+                for a in range(n):
+                    for b in range(n):
+                        if g_symbols[a][b] == s:
+                            grad[a, b] = float(sp.diff(row, s).xreplace(subs))
+            jac.append([float(np.sum(grad * D)) for D in dirs])
+    return np.array(vals), np.array(jac).reshape(len(labels), group.d), labels
+
+
+def check_initial(doc, constraints, g_symbols, group, scene) -> None:
+    """Refuse a scene whose initial state is not admissible (see the module docstring)."""
+    if scene is None or not constraints:
+        return
+    phi, Phi, labels = constraint_values(constraints, g_symbols, group, scene.g0)
+    path = ("scene", "initial", "g")
+    for r, v in enumerate(phi):
+        if not abs(v) <= INITIAL_TOL:
+            raise doc.error(path, f"the initial g violates {labels[r]}: residual {v:.3e} "
+                            f"(expected |phi(g0)| <= {INITIAL_TOL:g})")
+    _check_rank(doc, constraints, g_symbols, group, scene.g0, "at the initial g")
+    if scene.xi0 is not None:
+        xi0 = np.asarray(scene.xi0, dtype=float)
+        hidden = Phi @ xi0
+        tol = INITIAL_TOL * (1 + np.abs(xi0).max())
+        for r, v in enumerate(hidden):
+            if not abs(v) <= tol:
+                raise doc.error(("scene", "initial", "xi"), f"the initial xi violates the "
+                                f"velocity form of {labels[r]}: Phi(g0) xi0 = {v:.3e} "
+                                f"(expected |Phi(g0) xi0| <= {tol:.1e})")
