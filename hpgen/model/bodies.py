@@ -1,0 +1,73 @@
+"""The body-indexed names of a family model and the vector functions of the expression language.
+
+Used by hpgen.model.evaluator. Values are sympy scalars or numpy object arrays of them (the
+evaluator's convention). In a model on ``G^N`` (hpgen.model.families) the names below are
+BodyIndexed: their first index is a body (0..N-1) and gives body i's value:
+
+    xi[i]  body i's algebra vector (length d of G)     mu[i]  its momentum (sections, records)
+    g[i]   its group element (n x n)                    R[i]   its rotation (SO2 SO3 SE2 SE3)
+    x[i]   its position (SE2 SE3 R<k>)                  w[i]   its angular velocity: SO3, SE3
+           xi[i][0:3]; SO2, SE2 the scalar xi[i][0]     v[i]   its body-frame linear velocity:
+           SE2 xi[i][1:3], SE3 xi[i][3:6], R<k> xi[i]
+
+Functions: ``cross(a, b)`` (two 3-vectors), ``transpose(M)`` (a matrix), ``norm2(v)`` (the
+squared Euclidean norm of a vector, the squared Frobenius norm of a matrix); ``a @ b`` is
+``dot(a, b)``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import sympy as sp
+
+
+@dataclass(frozen=True)
+class BodyIndexed:
+    """A name of a family model indexed by body: ``values[i]`` is body i's value."""
+    name: str
+    values: tuple
+    what: str                      # e.g. "algebra vector", for messages
+
+
+def body_names(layouts, groups, variables: dict, g) -> dict:
+    """{name: BodyIndexed} for a family: ``layouts`` the product's FactorLayouts, ``groups``
+    the factor groups, ``variables`` {"xi": array, "mu": array, ...} (flat, length d), ``g``
+    the n x n array."""
+    out = {}
+    for v, arr in variables.items():
+        out[v] = BodyIndexed(v, tuple(arr[L.off:L.off + L.d] for L in layouts),
+                             "algebra vector" if v == "xi" else "momentum")
+    blocks = [g[L.row:L.row + L.n, L.row:L.row + L.n] for L in layouts]
+    out["g"] = BodyIndexed("g", tuple(blocks), "group element")
+    G = groups[0]
+    if G.rotation_block:
+        a, b = G.rotation_block
+        out["R"] = BodyIndexed("R", tuple(B[a:b, a:b] for B in blocks), "rotation")
+    if G.translation_block:
+        a, b = G.translation_block
+        out["x"] = BodyIndexed("x", tuple(B[a:b, L.n - 1] for B, L in zip(blocks, layouts)),
+                               "position")
+    if "xi" in variables:
+        xis = out["xi"].values
+        if G.rotation_block:
+            k = G.rotation_block[1] - G.rotation_block[0]
+            ang = (lambda s: s[0]) if k == 2 else (lambda s: s[0:3])
+            out["w"] = BodyIndexed("w", tuple(ang(s) for s in xis), "angular velocity")
+        if G.translation_block:
+            lin = (lambda s: s[s.shape[0] - (G.translation_block[1] - G.translation_block[0]):])
+            out["v"] = BodyIndexed("v", tuple(lin(s) for s in xis), "linear velocity")
+    return out
+
+
+def cross(a, b):
+    return np.array([a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                     a[0] * b[1] - a[1] * b[0]], dtype=object)
+
+
+def transpose(m):
+    return np.ascontiguousarray(m.T)
+
+
+def norm2(v):
+    return sp.Add(*[e * e for e in v.flat])
