@@ -17,6 +17,7 @@ import math
 import yaml
 
 from ..errors import ModelError
+from .yamldoc import _PLAIN_FLOAT
 
 MAX_VALUE_CHARS = 10_000
 
@@ -40,12 +41,17 @@ def read_value(text: str, field: str):
     except yaml.YAMLError:
         raise ModelError(f"cannot read the value {text.strip()[:40]!r}: expected a number or a "
                          "list of numbers, e.g. 8 or [1.0, 2.0]", field=field) from None
-    if isinstance(value, str):                  # YAML 1.1 reads 1e-3 as a string
-        try:
-            value = float(value)
-        except ValueError:
-            pass
+    value = _plain_floats(value)
     _check_value(value, field)
+    return value
+
+
+def _plain_floats(value):
+    """YAML 1.1 reads 1e-3 as a string: such strings as floats (hpgen.model.yamldoc's rule)."""
+    if isinstance(value, list):
+        return [_plain_floats(v) for v in value]
+    if isinstance(value, str) and _PLAIN_FLOAT.fullmatch(value.strip()):
+        return float(value)
     return value
 
 
@@ -72,7 +78,10 @@ def apply_overrides(text: str, overrides: dict | None, file: str = "<string>") -
     if not overrides:
         return text
     for name, value in overrides.items():
-        _check_value(value, f"parameters.{name}")
+        try:
+            _check_value(value, f"parameters.{name}")
+        except ModelError as e:
+            raise e.located(file=file) from None
     try:
         root = yaml.compose(text, Loader=yaml.SafeLoader)
     except yaml.YAMLError:
