@@ -50,13 +50,14 @@ def body_names(layouts, groups, variables: dict, g) -> dict:
                                "position")
     if "xi" in variables:
         xis = out["xi"].values
-        if G.rotation_block:
-            k = G.rotation_block[1] - G.rotation_block[0]
-            ang = (lambda s: s[0]) if k == 2 else (lambda s: s[0:3])
-            out["w"] = BodyIndexed("w", tuple(ang(s) for s in xis), "angular velocity")
-        if G.translation_block:
-            lin = (lambda s: s[s.shape[0] - (G.translation_block[1] - G.translation_block[0]):])
-            out["v"] = BodyIndexed("v", tuple(lin(s) for s in xis), "linear velocity")
+        if G.rotation_block:                       # angular first: SO2/SE2 omega, SO3/SE3 w
+            planar = G.rotation_block[1] - G.rotation_block[0] == 2
+            out["w"] = BodyIndexed("w", tuple(s[0] if planar else s[0:3] for s in xis),
+                                   "angular velocity")
+        if G.translation_block:                    # the last k entries (all of R<k>'s)
+            k = G.translation_block[1] - G.translation_block[0]
+            out["v"] = BodyIndexed("v", tuple(s[s.shape[0] - k:] for s in xis),
+                                   "linear velocity")
     return out
 
 
