@@ -92,3 +92,55 @@ def test_family_step_is_the_hand_written_step(n, compile_model):
     # sympy keeps sums in a canonical order: the family's Lagrangian is the hand-written one
     # term for term, so the derived kernels and the states are bitwise the same
     assert np.array_equal(a.g, b.g) and np.array_equal(a.mu, b.mu)
+
+
+# ---- N from the command line ----------------------------------------------------------------
+TINY = """name: springs
+group: R1^N
+parameters: {N: 2, k: 1.0}
+lagrangian: sum(i, 0.5*norm2(v[i])) - 0.5*k*x[0][0]**2 - sum(i, 1, N, 0.5*k*(x[i][0] - x[i-1][0])**2)
+scene:
+  h: 0.01
+  steps: 10
+  initial: {g: {position: [0.1]}, xi: [0.0]}
+  record: [g, mu, energy]
+"""
+
+
+def _cli(*argv, cwd):
+    import os
+    import subprocess
+    import sys
+    from tests.conftest import ROOT
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    return subprocess.run([sys.executable, "-m", "hpgen", *argv], cwd=cwd, env=env,
+                          capture_output=True, text=True, timeout=600)
+
+
+def test_cli_set_n(tmp_path, cache_dir):
+    (tmp_path / "springs.yaml").write_text(TINY)
+    for n in (2, 3):
+        out = tmp_path / f"n{n}.npz"
+        p = _cli("run", "springs.yaml", "--set", f"N={n}", "--backend", "python", "--out",
+                 str(out), "--no-plot", "--no-progress", "--cache-dir", str(cache_dir),
+                 cwd=tmp_path)
+        assert p.returncode == 0, p.stderr
+        with np.load(out) as data:
+            assert data["mu"].shape == (11, n)
+    p = _cli("run", "springs.yaml", "--set", "K=3", "--backend", "python", "--cache-dir",
+             str(cache_dir), cwd=tmp_path)
+    assert p.returncode == 2 and p.stderr.count("\n") == 1
+    assert "springs.yaml: parameters.K: cannot set 'K'" in p.stderr
+    p = _cli("compile", "springs.yaml", "--set", "N=0", "--backend", "python", "--cache-dir",
+             str(cache_dir), cwd=tmp_path)
+    assert p.returncode == 2 and "parameters.N:" in p.stderr and "positive integer" in p.stderr
+
+
+def test_api_parameters_enter_the_module(tmp_path, cache_dir):
+    import hpgen
+    path = tmp_path / "springs.yaml"
+    path.write_text(TINY)
+    two = hpgen.build(path, backend="python", cache_dir=cache_dir)
+    four = hpgen.build(path, backend="python", cache_dir=cache_dir, parameters={"N": 4})
+    assert two.meta["hash"] != four.meta["hash"] and four.meta["d"] == 4
+    assert "N: 4" in (four.module_dir / "model.yaml").read_text()
