@@ -3,7 +3,8 @@
 ``parse_checked(text)`` parses with ``ast.parse(text, mode="eval")`` and checks, without
 recursion: size (<= MAX_CHARS characters, <= MAX_NODES expression nodes, i.e. names, constants,
 operations, calls, subscripts; operator and context markers are not counted), the whitelist of
-node types (see ALLOWED) and the nesting depth (<= MAX_DEPTH, where a left-nested chain of ``+ -`` or of
+node types (see ALLOWED; an index is a non-negative integer literal or an integer expression
+``+ - *`` of names, whose value the evaluator checks) and the nesting depth (<= MAX_DEPTH, where a left-nested chain of ``+ -`` or of
 ``* /`` counts as one level). CPython builds left-nested chains recursively, so ast.parse runs
 with a temporarily raised recursion limit (enough for any chain within MAX_NODES); if it still
 fails, a top-level sum is split at its binary ``+``/``-`` tokens and the terms parsed one by one.
