@@ -13,6 +13,7 @@ the file and the field ``parameters.<name>``.
 from __future__ import annotations
 
 import math
+import re
 
 import yaml
 
@@ -20,6 +21,8 @@ from ..errors import ModelError
 from .yamldoc import _PLAIN_FLOAT
 
 MAX_VALUE_CHARS = 10_000
+#: the text between a key and its own value node: the colon, blanks, an optional anchor
+_VALUE_START = re.compile(r"\s*:\s*(&[^\s]+\s*)?")
 
 
 def parse_assignment(text: str) -> tuple[str, object]:
@@ -96,7 +99,12 @@ def apply_overrides(text: str, overrides: dict | None, file: str = "<string>") -
     spans = {}
     for key, node in params.value:
         if key.value in overrides:
-            spans[key.value] = (node.start_mark.index, node.end_mark.index)
+            between = text[key.end_mark.index:node.start_mark.index]
+            if not _VALUE_START.fullmatch(between):        # an alias: the node is elsewhere
+                raise ModelError(f"cannot set {key.value!r}: its value is a YAML alias; write "
+                                 "the value itself", file=file, field=f"parameters.{key.value}")
+            a, b = node.start_mark.index, node.end_mark.index
+            spans[key.value] = (a, a + len(text[a:b].rstrip()))   # a block ends after blanks
     for name in overrides:
         if name not in spans:
             declared = ", ".join(k.value for k, _ in params.value) or "none"

@@ -237,3 +237,15 @@ def test_refusal_fields():
     assert err("norm2(xi[0])", group="SE4^N").startswith("m.yaml:2: group:")
     assert err("norm2(xi[0]) + x[5][0]").startswith("m.yaml:4: lagrangian:")
     assert "(column 16)" in err("norm2(xi[0]) + x[5][0]")
+
+
+def test_override_block_values_and_aliases():
+    text = ("name: m\ngroup: SO3^N\nparameters:\n  M: &n 2\n  L: *n\n  N: 2 # bodies\n"
+            "  J:\n    - 1.0\n    - 2.0\n  K: 3\nlagrangian: sum(i, J[i]*norm2(w[i]))\n")
+    out = apply_overrides(text, {"J": [5.0, 6.0, 7.0], "N": 3})
+    m = load_model_text(out, "m.yaml")
+    assert dict(m.parameters)["J"] == (5.0, 6.0, 7.0) and m.family.count == 3
+    assert "N: 3 # bodies" in out and out.count("\n") == text.count("\n")   # lines kept
+    with pytest.raises(ModelError) as info:
+        apply_overrides(text, {"L": 4}, file="m.yaml")
+    assert "m.yaml: parameters.L: cannot set 'L': its value is a YAML alias" in str(info.value)
