@@ -21,6 +21,8 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from .syntax import fail
+
 
 @dataclass(frozen=True)
 class BodyIndexed:
@@ -72,3 +74,37 @@ def transpose(m):
 
 def norm2(v):
     return sp.Add(*[e * e for e in v.flat])
+
+
+def select_body(node, val: BodyIndexed, idx):
+    """``val[i]``: body i's value; ``idx`` the evaluated index tuple."""
+    n = len(val.values)
+    if len(idx) != 1:
+        raise fail(node, f"{val.name} takes one body index in a family model: {val.name}[i] "
+                         f"is body i's {val.what}; index its entries after it, e.g. "
+                         f"{val.name}[i][0]")
+    if not 0 <= idx[0] < n:
+        raise fail(node, f"body index {idx[0]} out of range for {val.name}: the family has "
+                         f"N = {n} bodies (0..{n - 1})")
+    return val.values[idx[0]]
+
+
+def body_parameter(node, name: str, val, idx, n: int):
+    """``p[i]`` with a sum variable in the index, for a family of ``n`` bodies: a scalar is
+    shared by every body; a list must have one entry per body (along its first axis)."""
+    if not isinstance(val, np.ndarray):
+        if len(idx) != 1:
+            raise fail(node, f"the parameter {name} is a scalar: index it with one body index "
+                             "(shared by every body) or not at all")
+        if not 0 <= idx[0] < n:
+            raise fail(node, f"body index {idx[0]} out of range for {name}: the family has "
+                             f"N = {n} bodies (0..{n - 1})")
+        return val
+    if val.shape[0] != n:
+        raise fail(node, f"the body-indexed parameter {name} has {val.shape[0]} entries but the "
+                         f"family has N = {n} bodies; expected one entry per body or one shared "
+                         "value (a shared vector or matrix is written without the index)")
+    if len(idx) > len(val.shape) or not all(0 <= i < s for i, s in zip(idx, val.shape)):
+        raise fail(node, f"index {list(idx)} out of range for the parameter {name} (shape "
+                         f"{' x '.join(map(str, val.shape))})")
+    return val[idx] if len(idx) == len(val.shape) else val[idx[0]]

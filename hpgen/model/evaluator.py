@@ -284,10 +284,10 @@ class _Evaluator:
         idx_nodes = sl.elts if isinstance(sl, ast.Tuple) else [sl]
         idx = tuple(self.index_value(n) for n in idx_nodes)
         if isinstance(val, BodyIndexed):
-            return self.body(node, val, idx)
+            return bodies.select_body(node, val, idx)
         if isinstance(base, ast.Name) and base.id in self.params and self.family is not None \
                 and any(self.uses_sum_variable(n) for n in idx_nodes):
-            return self.body_parameter(node, base.id, val, idx)
+            return bodies.body_parameter(node, base.id, val, idx, self.family.count)
         shape = _shape(val)
         if len(idx) != len(shape):
             want = {0: "a scalar cannot be indexed", 1: "index a vector with one index v[i]",
@@ -328,39 +328,6 @@ class _Evaluator:
 
     def uses_sum_variable(self, node) -> bool:
         return any(isinstance(n, ast.Name) and n.id in self.bound for n in ast.walk(node))
-
-    def body(self, node, val: BodyIndexed, idx):
-        n = len(val.values)
-        if len(idx) != 1:
-            raise fail(node, f"{val.name} takes one body index in a family model: "
-                             f"{val.name}[i] is body i's {val.what}; index its entries "
-                             f"after it, e.g. {val.name}[i][0]")
-        if not 0 <= idx[0] < n:
-            raise fail(node, f"body index {idx[0]} out of range for {val.name}: the family has "
-                             f"N = {n} bodies (0..{n - 1})")
-        return val.values[idx[0]]
-
-    def body_parameter(self, node, name: str, val, idx):
-        """``p[i]`` with a sum variable in the index: a scalar is shared by every body; a list
-        must have one entry per body (along its first axis)."""
-        n = self.family.count
-        if not isinstance(val, np.ndarray):
-            if len(idx) != 1:
-                raise fail(node, f"the parameter {name} is a scalar: index it with one body "
-                                 "index (shared by every body) or not at all")
-            if not 0 <= idx[0] < n:
-                raise fail(node, f"body index {idx[0]} out of range for {name}: the family "
-                                 f"has N = {n} bodies (0..{n - 1})")
-            return val
-        if val.shape[0] != n:
-            raise fail(node, f"the body-indexed parameter {name} has {val.shape[0]} entries but "
-                             f"the family has N = {n} bodies; expected one entry per body or "
-                             "one shared value (a shared vector or matrix is written without "
-                             "the index)")
-        if len(idx) > len(val.shape) or not all(0 <= i < s for i, s in zip(idx, val.shape)):
-            raise fail(node, f"index {list(idx)} out of range for the parameter {name} "
-                             f"(a {_shape_text(val.shape)})")
-        return val[idx] if len(idx) == len(val.shape) else val[idx[0]]
 
     def sum(self, node):
         args = node.args
