@@ -301,7 +301,7 @@ class _Evaluator:
     # ---- families of bodies (hpgen.model.families) -------------------------------------------
     def index_value(self, node) -> int:
         """An index as a Python int: literals, sum variables, integer parameters, + - *."""
-        if isinstance(node, ast.Constant):
+        if isinstance(node, ast.Constant) and type(node.value) is int:
             return node.value
         if isinstance(node, ast.Name):
             nm = node.id
@@ -316,9 +316,12 @@ class _Evaluator:
             raise fail(node, f"the index {nm!r} is {what}: indices must be non-negative integer "
                              "literals or integer expressions of sum variables and integer "
                              "parameters")
-        if isinstance(node, ast.UnaryOp):
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
             v = self.index_value(node.operand)
             return -v if isinstance(node.op, ast.USub) else v
+        if not (isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub, ast.Mult))):
+            raise fail(node, "expected an integer: a literal, a sum variable, an integer "
+                             "parameter, or + - * of them")
         a, b = self.index_value(node.left), self.index_value(node.right)
         v = a + b if isinstance(node.op, ast.Add) else a - b if isinstance(node.op, ast.Sub) \
             else a * b
