@@ -257,3 +257,17 @@ def test_override_block_values_and_aliases():
     with pytest.raises(ModelError) as info:
         apply_overrides(text, {"L": 4}, file="m.yaml")
     assert "m.yaml: parameters.L: cannot set 'L': its value is a YAML alias" in str(info.value)
+
+
+def test_section_records_and_runtime_parameters_in_a_family():
+    text = ("name: m\ngroup: SO3^N\nparameters: {N: 2, J: [1.0, 2.0, 3.0], k: [0.5, 0.25]}\n"
+            "runtime_parameters: [J, k]\n"
+            "lagrangian: sum(i, 0.5*dot(w[i], J*w[i]) + k[i]*R[i][2, 2])\n"
+            "scene:\n  h: 0.1\n  steps: 2\n  initial: {xi: [1, 0, 0]}\n"
+            "  section: mu[1][0] - mu[0][0]\n  record: [{a: \"dot(mu[0], xi[1])\"}]\n")
+    m = load_model_text(text, "m.yaml")
+    mu = [sp.Symbol(f"mu_{k}", real=True) for k in range(6)]
+    assert m.scene.section.expr == mu[3] - mu[0]
+    assert m.scene.expressions[0].expr == mu[0] * xi(3) + mu[1] * xi(4) + mu[2] * xi(5)
+    k0, k1 = (sp.Symbol(f"param:k[{i}]", real=True) for i in range(2))
+    assert sp.expand(m.lagrangian.diff(g(2, 2)) - k0) == 0 and m.lagrangian.diff(g(5, 5)) == k1
