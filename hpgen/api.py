@@ -56,6 +56,8 @@ class CompileOptions:
     cache_dir: str | Path | None = None
     cc: str | None = None
     cflags: tuple[str, ...] | None = None
+    #: parameter overrides ((name, value), ...) applied to the model text (model.overrides)
+    parameters: tuple | None = None
 
     def validate(self):
         for option, value in ((TAU, self.tau), (RKMK, self.rkmk), (BACKEND, self.backend)):
@@ -143,7 +145,7 @@ class CompiledModule:
 
 
 def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
-            cache_dir=None, cc=None, cflags=None):
+            cache_dir=None, cc=None, cflags=None, parameters=None):
     """Compile a model (a model file, or one declared in Python) into an integrator and load it.
 
     The module is generated (or taken from the build cache), built (C backend) and loaded.
@@ -178,6 +180,9 @@ def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
     cflags : sequence of str or None, optional
         Extra compiler flags after the defaults ``-std=c99 -O3 -fPIC -shared`` (a library
         built with extra flags is kept apart from the portable one).
+    parameters : dict or None, optional
+        New values of parameters declared in the file, e.g. ``{"N": 8}`` (a family's body
+        count): the model is the file with these values (a different module, cached apart).
 
     Returns
     -------
@@ -193,14 +198,16 @@ def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
         The C compiler is missing or failed (``backend="python"`` is the fallback).
     """
     return build(model, tableau=tableau, tau=tau, rkmk=rkmk, backend=backend, out=out,
-                 cache_dir=cache_dir, cc=cc, cflags=cflags).load()
+                 cache_dir=cache_dir, cc=cc, cflags=cflags, parameters=parameters).load()
 
 
 def build(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
-          cache_dir=None, cc=None, cflags=None) -> CompiledModule:
+          cache_dir=None, cc=None, cflags=None, parameters=None) -> CompiledModule:
     """Compile ``model`` like ``compile`` and return the CompiledModule (not loaded)."""
     return build_compiled(model, CompileOptions(tableau, tau, rkmk, backend, out, cache_dir,
-                                                cc, tuple(cflags) if cflags else None))
+                                                cc, tuple(cflags) if cflags else None,
+                                                tuple(dict(parameters).items())
+                                                if parameters else None))
 
 
 #: what produces the generated code, besides the model and options (hashed into the key)
@@ -265,6 +272,9 @@ def build_compiled(model, opts: CompileOptions) -> CompiledModule:
     """
     opts.validate()
     source, text = model_source(model)
+    if opts.parameters:
+        from .model.overrides import apply_overrides
+        text = apply_overrides(text, dict(opts.parameters), file=source)
     cache_dir = Path(opts.cache_dir) if opts.cache_dir else cache.default_cache_dir()
     try:
         result, library = _cached_module(source, text, opts, cache_dir)

@@ -44,16 +44,23 @@ def _add_u_options(p):
                    "last row at or before t_k) or linear")
 
 
+def _add_set(p):
+    p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                   help="override a parameter of the model file, e.g. --set N=8 (repeatable)")
+
+
 def _parser():
     ap = argparse.ArgumentParser(prog="hpgen", description=__doc__.splitlines()[0])
     ap.add_argument("--version", action="version", version=f"hpgen {__version__}")
     sub = ap.add_subparsers(dest="command", required=True)
     c = sub.add_parser("compile", help="generate (and build) the integrator module of a model")
     _add_options(c)
+    _add_set(c)
     c.add_argument("-o", "--out", help="directory receiving <module>/ (default: none, the "
                    "module stays in the build cache, whose path is printed)")
     r = sub.add_parser("run", help="simulate the model's scene, save its records (.npz)")
     _add_options(r)
+    _add_set(r)
     r.add_argument("--out", help="output .npz file (default <model name>.npz)")
     r.add_argument("--h", type=float, help="override scene.h")
     r.add_argument("--steps", type=int, help="override scene.steps")
@@ -100,7 +107,15 @@ def _parser():
 def _options(args, out=None):
     from .api import CompileOptions
     return CompileOptions(tableau=args.tableau, tau=args.tau, rkmk=args.rkmk,
-                          backend=args.backend, out=out, cache_dir=args.cache_dir)
+                          backend=args.backend, out=out, cache_dir=args.cache_dir,
+                          parameters=_overrides(args))
+
+
+def _overrides(args):
+    """The --set NAME=VALUE options as ((name, value), ...), or None."""
+    from .model.overrides import parse_assignment
+    pairs = dict(parse_assignment(a) for a in getattr(args, "set", None) or ())
+    return tuple(pairs.items()) or None
 
 
 def cmd_compile(args) -> int:
@@ -113,10 +128,12 @@ def cmd_compile(args) -> int:
     return 0
 
 
-def _load_model(file):
+def _load_model(file, overrides=None):
     from .api import read_model_text
     from .model import load_model_text
-    return load_model_text(read_model_text(file), filename=file)
+    from .model.overrides import apply_overrides
+    text = apply_overrides(read_model_text(file), dict(overrides or ()), file=file)
+    return load_model_text(text, filename=file)
 
 
 def _scheme_line(module_dir, args) -> str:
@@ -145,7 +162,7 @@ def cmd_run(args) -> int:
     from .runtime import load
     from .runtime.chunked_output import record_to_npz
 
-    model = _load_model(args.model)
+    model = _load_model(args.model, _overrides(args))
     if model.scene is None:
         raise ModelError("the model has no scene section to run", file=args.model, field="scene")
     sc = model.scene

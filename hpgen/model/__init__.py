@@ -9,7 +9,9 @@ Every problem raises hpgen.errors.ModelError with a one-line message
 Python's ``ast`` (see hpgen.model.expr); nothing is ever evaluated as code.
 
 Modules: yamldoc (YAML -> values with lines), loader (schema), syntax (ast parse + whitelist),
-expr (ast -> sympy: Lagrangian and scene section), scene (scene / initial state), types (the
+expr (ast -> sympy: Lagrangian and scene section), evaluator (the walker), families (groups
+G^N and their sums), bodies (body-indexed names, vector functions), overrides (parameter
+values set from the command line or the API), scene (scene / initial state), types (the
 frozen IR dataclasses).
 """
 from __future__ import annotations

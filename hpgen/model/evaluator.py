@@ -20,13 +20,19 @@ import numpy as np
 import sympy as sp
 
 from ..errors import ModelError
+from . import bodies
+from .bodies import BodyIndexed
+from .families import family_of
 from .syntax import fail
 
 MAX_WORK = 50_000
 MAX_EXACT_BITS = 4096
 
 FUNCTIONS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "exp": sp.exp, "log": sp.log,
-             "sqrt": sp.sqrt, "dot": None}
+             "sqrt": sp.sqrt, "dot": None, "cross": None, "transpose": None, "norm2": None,
+             "sum": None}
+MAX_SUM_TERMS = 10_000
+MAX_INDEX = 10**9
 _FACTOR_ALIAS = re.compile(r"(R|x)_([0-9]+)")
 _NONFINITE = (sp.S.NaN, sp.S.ComplexInfinity, sp.S.Infinity, sp.S.NegativeInfinity)
 
@@ -97,8 +103,19 @@ class _Evaluator:
                 a, b = fg.translation_block
                 names["x" + sfx] = blk[a:b, lay.n - 1]
                 varying.update(blk[a:b, lay.n - 1].flat)
+        self.family = family_of(group)
+        if self.family is not None:
+            fgroups = [group_from_spec(lay.name) for lay in factors]
+            body = bodies.body_names(factors, fgroups, self.vars, self.g)
+            clash = sorted(set(body) & set(parameters))
+            if clash:
+                raise ModelError(f"the parameter {clash[0]!r} has the name of a body-indexed "
+                                 f"name of a family model ({', '.join(sorted(body))}); rename "
+                                 "the parameter", field="lagrangian")
+            names.update(body)
         names.update(extra or {})
         self.names, self.varying_g = names, varying
+        self.bound: dict = {}              # sum variables in scope -> their current int value
 
     # ---- helpers ---------------------------------------------------------------------------
     def charge(self, node, amount: int):
@@ -186,6 +203,8 @@ class _Evaluator:
                         raise fail(node, f"exact power too large (limit {MAX_EXACT_BITS} bits); "
                                          "write the base as a float")
             return self.elementwise(node, lambda a, b: a ** b, [base, expo], "**")
+        if op is ast.MatMult:
+            return self.dot(node, self.walk(node.left), self.walk(node.right))
         # flatten a left-nested chain of + - (or * /) iteratively
         kinds = (ast.Add, ast.Sub) if op in (ast.Add, ast.Sub) else (ast.Mult, ast.Div)
         chain, cur = [], node
@@ -219,7 +238,18 @@ class _Evaluator:
         raise fail(node, f"{type(v).__name__} constant is not allowed", allowed=True)
 
     def name(self, node):
+        v = self.lookup(node)
+        if isinstance(v, BodyIndexed):
+            raise fail(node, f"{v.name} is indexed by body in a family model: write "
+                             f"{v.name}[i] for body i's {v.what}"
+                             + (f", {v.name}[i][k] for its component k" if v.name == "xi" else ""))
+        return v
+
+    def lookup(self, node):
+        """The value of a name (a BodyIndexed for a family's body-indexed names)."""
         nm = node.id
+        if nm in self.bound:
+            return sp.Integer(self.bound[nm])
         if nm in self.names:
             return self.names[nm]
         if self.forbidden and self.forbidden[0].fullmatch(nm):
@@ -248,22 +278,94 @@ class _Evaluator:
         raise fail(node, f"unknown name {nm!r}; available names: {', '.join(avail)}")
 
     def subscript(self, node):
-        val = self.walk(node.value)
+        base = node.value
+        val = self.lookup(base) if isinstance(base, ast.Name) else self.walk(base)
         sl = node.slice
         idx_nodes = sl.elts if isinstance(sl, ast.Tuple) else [sl]
-        idx = tuple(n.value for n in idx_nodes)
+        idx = tuple(self.index_value(n) for n in idx_nodes)
+        if isinstance(val, BodyIndexed):
+            return bodies.select_body(node, val, idx)
+        if isinstance(base, ast.Name) and base.id in self.params and self.family is not None \
+                and any(self.uses_sum_variable(n) for n in idx_nodes):
+            return bodies.body_parameter(node, base.id, val, idx, self.family.count)
         shape = _shape(val)
         if len(idx) != len(shape):
             want = {0: "a scalar cannot be indexed", 1: "index a vector with one index v[i]",
                     2: "index a matrix with two indices M[i, j]"}[len(shape)]
             raise fail(node, f"wrong number of indices for a {_shape_text(shape)}: {want}")
         for i, s in zip(idx, shape):
-            if i >= s:
+            if not 0 <= i < s:
                 raise fail(node, f"index {list(idx)} out of range for a {_shape_text(shape)}")
         return val[idx]
 
+    # ---- families of bodies (hpgen.model.families) -------------------------------------------
+    def index_value(self, node) -> int:
+        """An index as a Python int: literals, sum variables, integer parameters, + - *."""
+        if isinstance(node, ast.Constant) and type(node.value) is int:
+            return node.value
+        if isinstance(node, ast.Name):
+            nm = node.id
+            if nm in self.bound:
+                return self.bound[nm]
+            value = self.params.get(nm)
+            if type(value) is int:
+                return value
+            what = ("a runtime parameter" if isinstance(value, (sp.Basic, np.ndarray))
+                    else "not an integer parameter" if nm in self.params
+                    else "not a sum variable or a parameter")
+            raise fail(node, f"the index {nm!r} is {what}: indices must be non-negative integer "
+                             "literals or integer expressions of sum variables and integer "
+                             "parameters")
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+            v = self.index_value(node.operand)
+            return -v if isinstance(node.op, ast.USub) else v
+        if not (isinstance(node, ast.BinOp) and isinstance(node.op, (ast.Add, ast.Sub, ast.Mult))):
+            raise fail(node, "expected an integer: a literal, a sum variable, an integer "
+                             "parameter, or + - * of them")
+        a, b = self.index_value(node.left), self.index_value(node.right)
+        v = a + b if isinstance(node.op, ast.Add) else a - b if isinstance(node.op, ast.Sub) \
+            else a * b
+        if abs(v) > MAX_INDEX:
+            raise fail(node, f"index expression too large ({v})")
+        return v
+
+    def uses_sum_variable(self, node) -> bool:
+        return any(isinstance(n, ast.Name) and n.id in self.bound for n in ast.walk(node))
+
+    def sum(self, node):
+        args = node.args
+        if len(args) not in (2, 4) or not isinstance(args[0], ast.Name):
+            raise fail(node, "sum takes (i, term) over the bodies 0..N-1 or (i, start, stop, "
+                             "term) over start..stop-1, with i a new name")
+        var = args[0].id
+        if var in self.names or var in self.params or var in self.bound or var in FUNCTIONS \
+                or var in self.refused or (self.forbidden and self.forbidden[0].fullmatch(var)):
+            raise fail(args[0], f"the sum variable {var!r} shadows a name of the model; choose "
+                                "a new name, e.g. i or j")
+        if len(args) == 2:
+            if self.family is None:
+                raise fail(node, "sum(i, term) sums over the bodies of a family (group G^N); "
+                                 "give the range otherwise: sum(i, start, stop, term)")
+            start, stop = 0, self.family.count
+        else:
+            start, stop = self.index_value(args[1]), self.index_value(args[2])
+        if stop - start > MAX_SUM_TERMS:
+            raise fail(node, f"sum over {stop - start} terms (limit {MAX_SUM_TERMS})")
+        terms = []
+        for k in range(start, stop):
+            self.bound[var] = k
+            terms.append(self.walk(args[3 if len(args) == 4 else 1]))
+        self.bound.pop(var, None)
+        if not terms:
+            return sp.Integer(0)
+        return self.elementwise(node, lambda *vals: sp.Add(*vals), terms, "sum")
+
     def call(self, node):
         fname = node.func.id
+        if fname == "sum":
+            return self.sum(node)
+        if fname in ("cross", "transpose", "norm2"):
+            return self.vector_function(node, fname)
         if fname == "dot":
             if len(node.args) != 2:
                 raise fail(node, f"dot takes 2 arguments, got {len(node.args)}")
@@ -271,6 +373,23 @@ class _Evaluator:
         if len(node.args) != 1:
             raise fail(node, f"{fname} takes 1 argument, got {len(node.args)}")
         return self.elementwise(node, FUNCTIONS[fname], [self.walk(node.args[0])], fname)
+
+    def vector_function(self, node, fname):
+        want = 2 if fname == "cross" else 1
+        if len(node.args) != want:
+            raise fail(node, f"{fname} takes {want} argument{'s' if want > 1 else ''}, got "
+                             f"{len(node.args)}")
+        vals = [self.walk(a) for a in node.args]
+        shapes = [_shape(v) for v in vals]
+        if fname == "cross" and shapes != [(3,), (3,)]:
+            raise fail(node, "cross: expected two vectors of length 3, got a "
+                             + " and a ".join(_shape_text(s) for s in shapes))
+        if fname == "transpose" and len(shapes[0]) != 2:
+            raise fail(node, f"transpose: expected a matrix, got a {_shape_text(shapes[0])}")
+        if fname == "norm2" and not shapes[0]:
+            raise fail(node, "norm2: expected a vector or a matrix, got a scalar")
+        self.charge(node, 3 * max(1, int(np.prod(shapes[0]))))
+        return self.checked(node, getattr(bodies, fname)(*vals))
 
     def dot(self, node, a, b):
         sa, sb = _shape(a), _shape(b)

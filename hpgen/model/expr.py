@@ -4,10 +4,14 @@ Security: the text goes through ``ast.parse(..., mode="eval")`` only (hpgen.mode
 tree is checked against a whitelist and evaluated by the walker in hpgen.model.evaluator into
 sympy objects. Nothing here evaluates strings.
 
-Allowed: int/float literals; names; ``+ - * / **``; unary ``- +``; indexing with non-negative
-integer literals ``v[i]`` / ``M[i, j]``; calls ``sin cos tan exp log sqrt`` (one argument,
-elementwise) and ``dot(u, v)`` (numpy dot: vector.vector, matrix.vector, vector.matrix,
-matrix.matrix). Values are sympy scalars or numpy object arrays (1-D vectors, 2-D matrices) of
+Allowed: int/float literals; names; ``+ - * / ** @``; unary ``- +``; indexing ``v[i]`` /
+``M[i, j]`` with non-negative integer literals or integer expressions (``+ - *``) of sum
+variables and integer parameters; calls ``sin cos tan exp log sqrt`` (one argument,
+elementwise), ``dot(u, v)`` and ``u @ v`` (numpy dot: vector.vector, matrix.vector,
+vector.matrix, matrix.matrix), ``cross(a, b)``, ``transpose(M)``, ``norm2(v)`` and the sums
+``sum(i, term)`` (over the bodies of a family) / ``sum(i, start, stop, term)`` (over
+range(start, stop)); families of bodies (group ``G^N``) and their body-indexed names are
+described in hpgen.model.families and hpgen.model.bodies. Values are sympy scalars or numpy object arrays (1-D vectors, 2-D matrices) of
 sympy scalars; ``+ - * /`` are elementwise with scalar broadcasting, ``**`` needs a scalar
 exponent. Literal ints stay exact (``1/2`` is Rational(1, 2)); parameters are numbers
 (int -> Integer, float -> Float with the exact binary value), never symbols.

@@ -96,12 +96,13 @@ def _parameters(doc: Doc, raw) -> tuple[tuple, dict]:
     return tuple(stored), exact
 
 
-def _group(doc: Doc, spec):
-    from ..groups import group_from_spec
+def _group(doc: Doc, spec, params: dict):
+    from .families import group_of_spec
     try:
-        group = group_from_spec(spec)
+        group = group_of_spec(spec, params)
     except ModelError as e:
-        raise e.located(doc.file, "group", doc.line(("group",))) from None
+        path = tuple(e.field.split(".")) if e.field and e.field != "group" else ("group",)
+        raise e.located(doc.file, "group", doc.line(path)) from None
     if group.n > MAX_MATRIX_SIZE or group.d > MAX_MATRIX_SIZE:
         raise doc.error(("group",), f"group too large: matrix size {group.n}, dimension "
                                     f"{group.d} (limit {MAX_MATRIX_SIZE} each)")
@@ -170,6 +171,14 @@ def _lagrangian(doc: Doc, text, group, exact_params, refused=None):
         if line and doc.lagrangian_style == "|" and getattr(e, "expr_line", None):
             line += e.expr_line
         raise e.located(doc.file, "lagrangian", line) from None
+
+
+def _family(group, text: str, exact):
+    """The BodyFamily of a model on G^N with its Lagrangian's sums (None otherwise)."""
+    from .families import family_of, with_sums
+    from .syntax import parse_checked
+    family = family_of(group)
+    return None if family is None else with_sums(family, text, parse_checked(text), exact)
 
 
 def _name_list(doc: Doc, key: str, raw, what: str) -> list:
@@ -303,8 +312,8 @@ def build_model(doc: Doc, text: str) -> Model:
             what = "missing required key" if key not in data else "empty value for required key"
             raise doc.error((key,), f"{what} {key!r} (a model needs name, group and lagrangian)")
     name = check_identifier(doc, ("name",), data["name"], "model name")
-    group = _group(doc, data["group"])
     stored, exact = _parameters(doc, data.get("parameters"))
+    group = _group(doc, data["group"], exact)
     runtime, rsyms, rdefaults, lag_params = _runtime_parameters(
         doc, data.get("runtime_parameters"), stored, exact)
     inputs = _inputs(doc, data.get("inputs"), stored)
@@ -312,6 +321,7 @@ def build_model(doc: Doc, text: str) -> Model:
     refused = {u: f"the input {u!r} may not appear in the Lagrangian (control inputs enter "
                   "through forces only)" for u in inputs}
     lag, xi_syms, g_syms = _lagrangian(doc, data["lagrangian"], group, lag_params, refused)
+    family = _family(group, data["lagrangian"], exact)
     forces, forces_text = (), ()
     if data.get("forces") is not None:
         forces, forces_text = _forces(doc, data["forces"], group, lag_params, inputs)
@@ -332,7 +342,8 @@ def build_model(doc: Doc, text: str) -> Model:
                  xi_symbols=xi_syms, g_symbols=g_syms, integrator=integrator, scene=scene,
                  runtime_parameters=runtime, runtime_symbols=rsyms, runtime_defaults=rdefaults,
                  inputs=inputs, input_symbols=tuple(input_symbol(u) for u in inputs),
-                 forces=forces, forces_text=forces_text, constraints=constraints)
+                 forces=forces, forces_text=forces_text, constraints=constraints,
+                 family=family)
 
 
 def load_model_text(text, filename: str = "<string>") -> Model:

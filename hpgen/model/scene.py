@@ -32,6 +32,7 @@ import numpy as np
 from ..errors import ModelError
 from ..groups.elements import (compose, quat_norm_error, rotation_from_angle, rotation_from_quat,
                                rotation_from_rotvec)
+from .families import repeat_initial
 from .types import RecordExpr, Scene, SectionSpec
 
 SCENE_KEYS = ("h", "steps", "duration", "initial", "record", "every", "section", "u")
@@ -306,6 +307,7 @@ def parse_scene(doc, raw, group, parameters=None, inputs=()) -> Scene:
     steps = _steps(doc, raw, h)
     ipath = ("scene", "initial")
     init = doc.mapping(ipath, raw.get("initial"), INITIAL_KEYS)
+    init = repeat_initial(group, init)          # G^N: one body's g, xi or mu for every body
     G = initial_g(doc, ipath + ("g",), group, init.get("g"))
     has_xi, has_mu = init.get("xi") is not None, init.get("mu") is not None
     if has_xi == has_mu:

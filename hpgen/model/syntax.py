@@ -3,7 +3,8 @@
 ``parse_checked(text)`` parses with ``ast.parse(text, mode="eval")`` and checks, without
 recursion: size (<= MAX_CHARS characters, <= MAX_NODES expression nodes, i.e. names, constants,
 operations, calls, subscripts; operator and context markers are not counted), the whitelist of
-node types (see ALLOWED) and the nesting depth (<= MAX_DEPTH, where a left-nested chain of ``+ -`` or of
+node types (see ALLOWED; an index is a non-negative integer literal or an integer expression
+``+ - *`` of names, whose value the evaluator checks) and the nesting depth (<= MAX_DEPTH, where a left-nested chain of ``+ -`` or of
 ``* /`` counts as one level). CPython builds left-nested chains recursively, so ast.parse runs
 with a temporarily raised recursion limit (enough for any chain within MAX_NODES); if it still
 fails, a top-level sum is split at its binary ``+``/``-`` tokens and the terms parsed one by one.
@@ -24,10 +25,13 @@ from ..errors import ModelError
 MAX_CHARS = 200_000
 MAX_NODES = 50_000
 MAX_DEPTH = 200
-FUNCTION_NAMES = ("sin", "cos", "tan", "exp", "log", "sqrt", "dot")
-ALLOWED = ("allowed: numbers, names, + - * / **, unary -, indexing v[i] and M[i, j] with integer "
-           "literals, calls of " + " ".join(FUNCTION_NAMES))
-_BINOPS = (ast.Add, ast.Sub, ast.Mult, ast.Div, ast.Pow)
+FUNCTION_NAMES = ("sin", "cos", "tan", "exp", "log", "sqrt", "dot", "cross", "transpose",
+                  "norm2", "sum")
+ALLOWED = ("allowed: numbers, names, + - * / ** @, unary -, indexing v[i] and M[i, j] with "
+           "integer literals or integer expressions of sum variables, calls of "
+           + " ".join(FUNCTION_NAMES))
+_BINOPS = (ast.Add, ast.Sub, ast.Mult, ast.Div, ast.Pow, ast.MatMult)
+_INDEX_OPS = (ast.Add, ast.Sub, ast.Mult)
 _OPS = {ast.Mod: "%", ast.FloorDiv: "//", ast.MatMult: "@", ast.BitAnd: "&", ast.BitOr: "|",
         ast.BitXor: "^", ast.LShift: "<<", ast.RShift: ">>", ast.Not: "not", ast.Invert: "~"}
 _CONSTRUCTS = {
@@ -162,6 +166,25 @@ def _suspicious(node) -> bool:
         (isinstance(node, ast.Attribute) and _is_dunder(node.attr))
 
 
+def _is_index(node) -> bool:
+    """A non-negative integer literal, or an expression of names, integer literals, + - *
+    and unary - that holds at least one name (its value is checked by the evaluator)."""
+    if isinstance(node, ast.Constant):
+        return type(node.value) is int and node.value >= 0
+    named, stack = False, [node]
+    while stack:
+        n = stack.pop()
+        if isinstance(n, ast.Name):
+            named = True
+        elif isinstance(n, ast.BinOp) and isinstance(n.op, _INDEX_OPS):
+            stack += [n.left, n.right]
+        elif isinstance(n, ast.UnaryOp) and isinstance(n.op, (ast.USub, ast.UAdd)):
+            stack.append(n.operand)
+        elif not (isinstance(n, ast.Constant) and type(n.value) is int):
+            return False
+    return named
+
+
 def _disallowed(node, t, allowed_tuples):
     """The message for a node that is not allowed, or None."""
     if t is ast.BinOp:
@@ -181,11 +204,11 @@ def _disallowed(node, t, allowed_tuples):
         idx = node.slice.elts if isinstance(node.slice, ast.Tuple) else [node.slice]
         if isinstance(node.slice, ast.Tuple):
             allowed_tuples.add(id(node.slice))
-        if 1 <= len(idx) <= 2 and all(isinstance(i, ast.Constant) and type(i.value) is int
-                                      and i.value >= 0 for i in idx):
+        if 1 <= len(idx) <= 2 and all(_is_index(i) for i in idx):
             return None
-        return ("indices must be one or two non-negative integer literals, e.g. xi[0] or "
-                "R[2, 1] (no slices, negative or computed indices)")
+        return ("indices must be one or two non-negative integer literals, or integer "
+                "expressions (+ - *) of sum variables and integer parameters, e.g. xi[0], "
+                "R[2, 1] or m[i - 1] (no slices, negative literals or other computed indices)")
     if t is ast.Call:
         f = node.func
         if isinstance(f, ast.Name):
@@ -231,7 +254,7 @@ def check_tree(tree) -> None:
         if depth > MAX_DEPTH:
             raise fail(node, f"expression too large: nested more than {MAX_DEPTH} levels deep "
                              f"(limit {MAX_DEPTH})")
-        if isinstance(node, ast.BinOp) and not isinstance(node.op, ast.Pow):
+        if isinstance(node, ast.BinOp) and not isinstance(node.op, (ast.Pow, ast.MatMult)):
             kinds = (ast.Add, ast.Sub) if isinstance(node.op, (ast.Add, ast.Sub)) \
                 else (ast.Mult, ast.Div)
             while isinstance(node, ast.BinOp) and isinstance(node.op, kinds):

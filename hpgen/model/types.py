@@ -5,7 +5,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 #: names the Lagrangian may use besides parameters (see hpgen.model.expr for products)
-RESERVED_NAMES = ("xi", "g", "R", "x", "t", "dot", "sin", "cos", "tan", "exp", "log", "sqrt")
+RESERVED_NAMES = ("xi", "g", "R", "x", "t", "dot", "sin", "cos", "tan", "exp", "log", "sqrt",
+                  "cross", "transpose", "norm2", "sum")
 
 
 @dataclass(frozen=True)
@@ -116,6 +117,9 @@ class Model:
     #: holonomic constraints phi(g) = 0 (hpgen.model.constraints): one ConstraintSpec per
     #: entry of the file's ``constraints:`` list, in file order; () for an unconstrained model
     constraints: tuple = ()
+    #: the family of bodies of a model on G^N (hpgen.model.families.BodyFamily: body group,
+    #: N, the Lagrangian's per-body sums), None otherwise; ``group`` is then its product
+    family: Any = None
 
     @property
     def forced(self) -> bool:
