@@ -5,7 +5,7 @@ and the previous step's collocation polynomial as the start of the next.
 
 1. Iterations and Jacobians per step by the predictor's degree. The run loop starts step k
    from G_k plus the polynomial through the last m offsets dz_j = z_j - G_j extrapolated one
-   step (hpgen.runtime.loop.predict, kernels.c.j2 hpgen_predict; m <= 6: quintic). Degree
+   step (hpgen.runtime.loop.predict, hpgen/runtime/c/hpgen_runs.c hpgen_predict; m <= 6: quintic). Degree
    q < 5 is emulated on the Python backend by handing predict only the q + 1 newest offsets
    (the same coefficients as a build with PREDICTOR_HISTORY = q + 1); the iteration counts
    are those of the C backend (bitwise the same runs). Scenes: the heavy top (Gauss 2 and 3,

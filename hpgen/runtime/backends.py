@@ -44,7 +44,7 @@ class _Backend:
     def __init__(self, meta: dict):
         self.meta = meta
         self.n, self.d, self.nz = meta["n"], meta["d"], meta["nz"]
-        #: the record row's width and whether advance_record skips g (see kernels.c.j2)
+        #: the record row's width and whether advance_record skips g (see hpgen/runtime/c/hpgen_runs.c)
         self.record_width = sum(int(np.prod(shape)) for _, _, shape in meta["record"])
         self.skip_g = not (meta["step_uses_g"] or meta["record_uses_g"])
         self._sig = {k: ([s for _, s in v["inputs"]], [s for _, s in v["outputs"]])

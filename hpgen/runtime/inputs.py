@@ -1,5 +1,5 @@
-"""The step vector of an open module (forces, control inputs, runtime parameters or the time t;
-issue 16): checking the user's ``u``, ``params`` and ``t0`` and building
+"""The step vector of an open module (forces, control inputs, runtime parameters or the time t):
+checking the user's ``u``, ``params`` and ``t0`` and building
 hv = [h, t_k, u_k, params] for step k (hpgen.abi.step_vector_size; meta.json "open").
 
 Conventions: t_k = t0 + k h (computed from k, never accumulated); u is (m,) (held for every
