@@ -6,9 +6,13 @@ and, for ensembles, ``simulate_batch``; simulate takes the C backend's fast path
 """
 from __future__ import annotations
 
+import time
+from dataclasses import replace
+
 import numpy as np
 
 from .. import abi
+from . import loop
 from .args import _error, _fits, _int
 from .engine import Engine, Part, RunArgs, RunStart
 from .inputs import check_t0
@@ -95,10 +99,60 @@ def _pieces(engine: Engine, s: RunStart, chunk: int, t_start: float):
 
 def simulate(engine: Engine, a: RunArgs) -> Trajectory:
     """Integrator.simulate's generic path (every module, backend and argument): the run in
-    one piece."""
+    one piece, advanced in slices (``Slices``) so that Ctrl-C interrupts it; a
+    KeyboardInterrupt is re-raised with ``.partial``, the Trajectory of the steps done
+    (partial=True)."""
     s = engine.prepare(a)
     _fits(s.steps // s.every + 1, engine.n * engine.n + engine.d, "simulate")
-    return next(_pieces(engine, s, max(s.steps, 1), check_t0(a.t0)))
+    t0 = check_t0(a.t0)
+    got: list = []            # (g_rec, p_rec, status) per slice, appended in one operation
+    try:
+        for _, _, part in engine.parts(Slices(engine, s), s):
+            got.append((*part.data, part.status))
+    except KeyboardInterrupt as exc:
+        exc.partial = _joined(  # type: ignore[attr-defined]
+            engine, s, list(got), t0, interrupted=True)
+        raise
+    traj = _joined(engine, s, got, t0)
+    if traj.error is not None:
+        raise traj.error
+    return traj
+
+
+#: simulate advances a run in slices whose backend calls take about this long (seconds), so
+#: that a pending interrupt is taken between them; the first slice has SLICE_FIRST steps
+SLICE_SECONDS = 0.05
+SLICE_FIRST = 256
+
+
+class Slices(States):
+    """The states output of simulate: the run in slices of steps sized from the last
+    slice's wall time to about SLICE_SECONDS each (at most 4 times the last size). The
+    slices continue one run: the records are bitwise those of one call."""
+
+    def __init__(self, engine: Engine, s: RunStart):
+        super().__init__(engine, s, SLICE_FIRST)
+
+    def advance(self, run, span) -> Part:
+        t = time.perf_counter()
+        part = super().advance(run, span)
+        dt = time.perf_counter() - t
+        rate = span[0] * SLICE_SECONDS / dt if dt > 0 else 4 * span[0]
+        self.chunk = max(1, min(4 * span[0], int(rate)))
+        return part
+
+
+def _joined(engine: Engine, s: RunStart, got: list, t0: float,
+            interrupted=False) -> Trajectory:
+    """The Trajectory of a run's slices ``got`` (record 0, the start, prepended); Newton
+    totals summed over the slices; partial when ``interrupted``."""
+    g_rec = np.concatenate([s.g0.reshape(1, -1), *(g for g, _, _ in got)])
+    p_rec = np.concatenate([s.mu0.reshape(1, -1), *(p for _, p, _ in got)])
+    st = dict(got[-1][2]) if got else loop.new_status()
+    for key in ("total_iterations", "jacobians"):
+        st[key] = sum(int(part[2][key]) for part in got)
+    traj = records(engine, g_rec, p_rec, st, s.h, s.every, t0, s.inputs)
+    return replace(traj, partial=True) if interrupted else traj
 
 
 def simulate_batch(engine: Engine, a: RunArgs, threads=None, progress=None,
