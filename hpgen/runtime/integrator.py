@@ -347,6 +347,9 @@ class Integrator:
         ConvergenceError, DomainError, RecordError
             A step failed, or a recorded value is not finite (``RecordError`` names the
             entries); ``.partial`` holds the records up to the failure.
+        KeyboardInterrupt
+            Ctrl-C (taken between slices of bounded wall time); ``.partial`` holds the
+            records of the steps done (partial=True).
         """
         return records.record(self.engine, RunArgs(g0, h, steps, xi0, mu0, every, newton, u,
                                                    params, t0))

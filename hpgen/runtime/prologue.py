@@ -54,7 +54,7 @@ ROWS_MAX = 4096
 ROWS_MIN = 64
 #: the fast path runs at most this many steps (in one C call, which an interrupt cannot
 #: stop); longer runs take the generic path, which advances them in slices
-#: (hpgen.runtime.states.Slices)
+#: (hpgen.runtime.engine.Sliced)
 STEPS_MAX = 20_000
 _FLOATS, _INTS = (float, np.float64), (int, np.int64)
 _F64 = np.dtype(np.float64)

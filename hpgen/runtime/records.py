@@ -22,7 +22,7 @@ from .. import abi
 from ..errors import ModelError, RecordError
 from . import loop
 from .args import _error, _fits, _int
-from .engine import Engine, Part, RunArgs, RunHandle, RunStart
+from .engine import SLICE_FIRST, Engine, Part, RunArgs, RunHandle, RunStart, Sliced
 from .progress import bar as progress_bar
 from .save_formats import save_run
 from .trajectory import run_metadata
@@ -214,10 +214,44 @@ def stream_record(engine: Engine, a: RunArgs, chunk=100_000):
 
 
 def record(engine: Engine, a: RunArgs) -> Records:
-    """Integrator.record: the run in one piece."""
+    """Integrator.record: the run in one piece, advanced in slices
+    (hpgen.runtime.engine.Sliced) so that Ctrl-C interrupts it; a KeyboardInterrupt is
+    re-raised with ``.partial``, the Records of the steps done (partial=True)."""
     _fits(_int(a.steps, "steps", 0) // _int(a.every, "every", 1) + 1,
           engine.backend.record_width or 1, "record")
-    return next(stream_record(engine, a, max(a.steps, 1)))
+    s = engine.prepare(a)
+    t0 = float(a.t0)
+    out = RecordRows(engine, s, SLICE_FIRST)
+    row0 = out.head()
+    got: list = []            # the Records of each slice, appended in one operation
+    try:
+        for k, first, part in engine.parts(Sliced(out), s):
+            got.append(out.records(k, first, part, row0, t0))
+    except KeyboardInterrupt as exc:
+        exc.partial = _joined(engine, s, list(got), True)  # type: ignore[attr-defined]
+        raise
+    rec = _joined(engine, s, got)
+    if rec.error is not None:
+        raise rec.error
+    return rec
+
+
+def _joined(engine: Engine, s: RunStart, got: list, interrupted=False) -> Records:
+    """The Records of a run's slices ``got`` joined (Newton totals summed; the last slice's
+    error, its .partial the joined Records); partial when ``interrupted``."""
+    names = record_names(engine.meta)
+    width = {name: shape for name, _, shape in engine.meta["record"]}
+    arrays = {name: np.concatenate([r.arrays[name] for r in got]) if got else
+              np.zeros((0, *width[name])) for name in names}
+    err = got[-1].error if got else None
+    rec = Records(t=np.concatenate([r.t for r in got]) if got else np.zeros(0),
+                  arrays=arrays, h=s.h, every=s.every,
+                  partial=interrupted or err is not None, error=err,
+                  newton_iterations=sum(r.newton_iterations for r in got),
+                  jacobians=sum(r.jacobians for r in got), integrator=engine.owner)
+    if err is not None:
+        err.partial = rec
+    return rec
 
 
 def record_batch(engine: Engine, a: RunArgs, threads=None, progress=None) -> list:

@@ -6,7 +6,6 @@ and, for ensembles, ``simulate_batch``; simulate takes the C backend's fast path
 """
 from __future__ import annotations
 
-import time
 from dataclasses import replace
 
 import numpy as np
@@ -14,7 +13,7 @@ import numpy as np
 from .. import abi
 from . import loop
 from .args import _error, _fits, _int
-from .engine import Engine, Part, RunArgs, RunStart
+from .engine import SLICE_FIRST, Engine, Part, RunArgs, RunStart, Sliced
 from .inputs import check_t0
 from .progress import bar as progress_bar
 from .trajectory import Trajectory
@@ -99,7 +98,7 @@ def _pieces(engine: Engine, s: RunStart, chunk: int, t_start: float):
 
 def simulate(engine: Engine, a: RunArgs) -> Trajectory:
     """Integrator.simulate's generic path (every module, backend and argument): the run in
-    one piece, advanced in slices (``Slices``) so that Ctrl-C interrupts it; a
+    one piece, advanced in slices (hpgen.runtime.engine.Sliced) so that Ctrl-C interrupts it; a
     KeyboardInterrupt is re-raised with ``.partial``, the Trajectory of the steps done
     (partial=True)."""
     s = engine.prepare(a)
@@ -107,7 +106,7 @@ def simulate(engine: Engine, a: RunArgs) -> Trajectory:
     t0 = check_t0(a.t0)
     got: list = []            # (g_rec, p_rec, status) per slice, appended in one operation
     try:
-        for _, _, part in engine.parts(Slices(engine, s), s):
+        for _, _, part in engine.parts(Sliced(States(engine, s, SLICE_FIRST)), s):
             got.append((*part.data, part.status))
     except KeyboardInterrupt as exc:
         exc.partial = _joined(  # type: ignore[attr-defined]
@@ -117,29 +116,6 @@ def simulate(engine: Engine, a: RunArgs) -> Trajectory:
     if traj.error is not None:
         raise traj.error
     return traj
-
-
-#: simulate advances a run in slices whose backend calls take about this long (seconds), so
-#: that a pending interrupt is taken between them; the first slice has SLICE_FIRST steps
-SLICE_SECONDS = 0.05
-SLICE_FIRST = 256
-
-
-class Slices(States):
-    """The states output of simulate: the run in slices of steps sized from the last
-    slice's wall time to about SLICE_SECONDS each (at most 4 times the last size). The
-    slices continue one run: the records are bitwise those of one call."""
-
-    def __init__(self, engine: Engine, s: RunStart):
-        super().__init__(engine, s, SLICE_FIRST)
-
-    def advance(self, run, span) -> Part:
-        t = time.perf_counter()
-        part = super().advance(run, span)
-        dt = time.perf_counter() - t
-        rate = span[0] * SLICE_SECONDS / dt if dt > 0 else 4 * span[0]
-        self.chunk = max(1, min(4 * span[0], int(rate)))
-        return part
 
 
 def _joined(engine: Engine, s: RunStart, got: list, t0: float,

@@ -1,7 +1,7 @@
-"""Ctrl-C stops a long ``simulate``: the run is advanced in slices of bounded wall time
-(hpgen.runtime.states.Slices), a pending SIGINT raises KeyboardInterrupt between them, and
-the exception carries ``.partial``, the Trajectory of the steps done, bitwise the start of
-the uninterrupted run."""
+"""Ctrl-C stops a long ``simulate`` or ``record``: the run is advanced in slices of bounded
+wall time (hpgen.runtime.engine.Sliced), a pending SIGINT raises KeyboardInterrupt between
+them, and the exception carries ``.partial``, the Trajectory (Records) of the steps done,
+bitwise the start of the uninterrupted run."""
 from __future__ import annotations
 
 import json
@@ -17,8 +17,6 @@ import numpy as np
 import pytest
 
 from conftest import EXAMPLES
-from hpgen.runtime.states import Slices
-
 ROOT = Path(__file__).resolve().parents[2]
 
 SCRIPT = textwrap.dedent("""
@@ -26,35 +24,41 @@ SCRIPT = textwrap.dedent("""
     import numpy as np
     import hpgen
     integ = hpgen.compile(sys.argv[1], cache_dir=sys.argv[2])
+    run = getattr(integ, sys.argv[3])          # simulate or record
     g0, xi0, h, every = np.eye(3), np.array([0.3, 1.0, 0.2]), 0.01, 10_000
+
+    def arrays(r):
+        return ([r.t, r.g, r.mu] if sys.argv[3] == "simulate" else
+                [r.t, *(r[name] for name in r.names)])
+
     print("ready", flush=True)
     try:
-        integ.simulate(g0, h, 10**10, xi0=xi0, every=every)
+        run(g0, h, 10**10, xi0=xi0, every=every)
         print(json.dumps({"interrupted": False}), flush=True)
     except KeyboardInterrupt as exc:
         part = exc.partial
         K = len(part.t)
-        again = integ.simulate(g0, h, (K - 1) * every, xi0=xi0, every=every)
+        again = run(g0, h, (K - 1) * every, xi0=xi0, every=every)
         print(json.dumps({
             "interrupted": True, "partial": bool(part.partial), "records": K,
-            "same": again.g.tobytes() == part.g.tobytes()
-                    and again.mu.tobytes() == part.mu.tobytes()
-                    and again.t.tobytes() == part.t.tobytes()}), flush=True)
+            "same": all(a.tobytes() == b.tobytes()
+                        for a, b in zip(arrays(again), arrays(part)))}), flush=True)
 """)
 
 
-def test_sigint_stops_a_long_simulate_promptly_with_the_partial_trajectory(compile_model,
-                                                                           cache_dir):
+@pytest.mark.parametrize("method", ["simulate", "record"])
+def test_sigint_stops_a_long_run_promptly_with_the_partial_result(compile_model, cache_dir,
+                                                                  method):
     compile_model(EXAMPLES / "free_rigid_body.yaml")          # compiled: the child loads it
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
     child = subprocess.Popen([sys.executable, "-c", SCRIPT,
-                              str(EXAMPLES / "free_rigid_body.yaml"), str(cache_dir)],
+                              str(EXAMPLES / "free_rigid_body.yaml"), str(cache_dir), method],
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                              env=env, cwd=ROOT)
     try:
         assert child.stdout.readline().strip() == "ready"
         time.sleep(1.0)
-        assert child.poll() is None              # still running the long simulate
+        assert child.poll() is None              # still running the long run
         child.send_signal(signal.SIGINT)
         out, err = child.communicate(timeout=60)
     finally:
@@ -67,20 +71,31 @@ def test_sigint_stops_a_long_simulate_promptly_with_the_partial_trajectory(compi
     assert res["records"] > 1 and res["same"]
 
 
-def test_slices_continue_one_run_bitwise(compile_model, monkeypatch):
-    """simulate in slices of a few steps is bitwise simulate in one slice (the generic
-    path on both backends; totals of Newton iterations summed over the slices)."""
+@pytest.mark.parametrize("model", ["heavy_top", "driven_pendulum"])
+def test_slices_continue_one_run_bitwise(compile_model, monkeypatch, model):
+    """simulate and record in slices of one step are bitwise simulate and record in the
+    default slices (Newton totals summed over the slices; a forced model's work
+    accumulated across them)."""
+    import hpgen.runtime.engine as engine
+    import hpgen.runtime.records as records
     import hpgen.runtime.states as states
-    integ = compile_model(EXAMPLES / "heavy_top.yaml")
-    kw = dict(g0=np.eye(3), h=0.01, steps=30_000, xi0=np.array([0.3, 1.0, 0.2]), every=7)
-    whole = integ.simulate(**kw)       # more than the fast path's steps: the generic path
+    integ = compile_model(EXAMPLES / f"{model}.yaml")
+    n, d = integ.n, integ.d
+    kw = dict(g0=np.eye(n).tolist(), h=0.01, steps=3000,       # lists: the generic path
+              xi0=[0.3, 1.0, 0.2][:d], every=7)
+    whole, rec = integ.simulate(**kw), integ.record(**kw)
     monkeypatch.setattr(states, "SLICE_FIRST", 5)
-    monkeypatch.setattr(Slices, "advance", lambda self, run, span: states.States.advance(
-        self, run, (min(span[0], 13),)))
-    sliced = integ.simulate(**kw)
+    monkeypatch.setattr(records, "SLICE_FIRST", 5)
+    monkeypatch.setattr(engine, "SLICE_SECONDS", 0.0)       # slices of one step from the 2nd
+    sliced, rec1 = integ.simulate(**kw), integ.record(**kw)
     for name in ("t", "g", "mu"):
         assert getattr(whole, name).tobytes() == getattr(sliced, name).tobytes(), name
     assert whole.newton_iterations == sliced.newton_iterations
+    assert rec.names == rec1.names and rec.t.tobytes() == rec1.t.tobytes()
+    for name in rec.names:
+        assert rec[name].tobytes() == rec1[name].tobytes(), name
+    assert rec.newton_iterations == rec1.newton_iterations == whole.newton_iterations
+    assert len(rec.t) == 3000 // 7 + 1
 
 
 @pytest.mark.parametrize("steps", [0, 1, 255, 256, 257])
