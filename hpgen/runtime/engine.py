@@ -15,6 +15,8 @@ engine owns everything else, the same for every output:
   restored from a snapshot), advances it span by span (a chunk of steps: streaming), and
   when a fresh run's first step fails from z0 it starts again from the first step solved by
   continuation in h (hpgen.runtime.first_step) and repeats that call;
+- ``Sliced``: an output advanced in slices of bounded wall time (simulate, record), so that
+  Ctrl-C (a KeyboardInterrupt raised between backend calls) stops a long run;
 - ``threads`` / ``each``: an ensemble's worker count and its members' runs through the loop
   on threads; an output with an ensemble call of its own (states and records on the C
   backend: one C call per thread slice) makes that call instead.
