@@ -14,7 +14,8 @@ holds:
   record arrays of the chunk (``np.load`` reads them; ``load_partial`` joins them), and,
   under keys ``state.*``, the run's whole state after the chunk (the backend's snapshot:
   for C the bytes of its ``hpgen_run``: state, Newton start and memory, steps done) with the
-  running totals (chunks, steps done, samples, Newton iterations, energy / momentum change).
+  running totals (chunks, steps done, samples, Newton iterations, energy / momentum change)
+  and, for a run that records work, the work accumulated so far (hpgen.runtime.work).
 
 Each chunk file is written to a temp file and renamed (atomic): a chunk is committed when
 its file exists, so a kill at any instant leaves a consistent folder (one rename to a new
@@ -46,7 +47,7 @@ from .progress import bar as progress_bar
 from .partial_run import STATE, PartialFolder
 from .records import stream_records
 from .trajectory import npz_path, run_metadata
-from .work import work_offset
+from .work import WorkSum, work_offset
 
 
 def partial_dir(out) -> Path:
@@ -94,10 +95,16 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     with PartialFolder(parts, path) as folder:
         prog = (folder.resume if resume else folder.fresh)(ident, resume_hint)
         prog.directions = None if directions is None else np.asarray(directions, np.float64)
-        if prog.state is not None and work_offset(engine.meta) is not None:
-            raise ModelError(f"cannot resume {parts}: a run that records work cannot be "
-                             "resumed (the work is accumulated from its start); delete the "
-                             "folder and run it again", file=str(parts))
+        work = None
+        if work_offset(engine.meta) is not None:    # the work accumulated so far goes on
+            if prog.state is None:
+                work = WorkSum(h)
+            elif prog.work:
+                work = WorkSum.restore(h, prog.work)
+            else:
+                raise ModelError(f"cannot resume {parts}: its chunks do not hold the work "
+                                 "accumulated so far; delete the folder to start over",
+                                 file=str(parts))
         run = None if prog.state is None else engine.restore(prog.state, s.inputs)
         if run is not None and run.steps_done() != prog.k:
             raise ModelError(f"cannot resume {parts}: its state is not at step {prog.k}; "
@@ -107,9 +114,10 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
             run = engine.new_run(s) if run is None else run
             with progress_bar(steps, "run", "step", progress) as bar:
                 bar.update(prog.k)
-                for rec in stream_records(engine, s, chunk, run):
+                for rec in stream_records(engine, s, chunk, run, work=work):
                     new = prog.added(rec, run.steps_done())
-                    folder.commit(new, rec, run.snapshot())
+                    folder.commit(new, rec, run.snapshot(),
+                                  None if work is None else work.state())
                     bar.update(new.k - prog.k)
                     prog = new       # only once the chunk is committed (an interrupt may come)
         except ConvergenceError as exc:

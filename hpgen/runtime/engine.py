@@ -15,6 +15,8 @@ engine owns everything else, the same for every output:
   restored from a snapshot), advances it span by span (a chunk of steps: streaming), and
   when a fresh run's first step fails from z0 it starts again from the first step solved by
   continuation in h (hpgen.runtime.first_step) and repeats that call;
+- ``Sliced``: an output advanced in slices of bounded wall time (simulate, record), so that
+  Ctrl-C (a KeyboardInterrupt raised between backend calls) stops a long run;
 - ``threads`` / ``each``: an ensemble's worker count and its members' runs through the loop
   on threads; an output with an ensemble call of its own (states and records on the C
   backend: one C call per thread slice) makes that call instead.
@@ -28,6 +30,7 @@ numpy and the standard library only.
 from __future__ import annotations
 
 import os
+import time
 from dataclasses import dataclass, replace
 from typing import Any, Iterator, Protocol
 
@@ -120,6 +123,34 @@ class Output(Protocol):
     def span(self, k: int, first: bool) -> tuple | None: ...
 
     def advance(self, run: Any, span: tuple) -> Part: ...
+
+
+#: a run advanced in slices (``Sliced``) has backend calls of about this many seconds, so
+#: that a pending interrupt (Ctrl-C: KeyboardInterrupt) is taken between them; the first
+#: slice has SLICE_FIRST steps
+SLICE_SECONDS = 0.05
+SLICE_FIRST = 256
+
+
+class Sliced:
+    """An output (``out``, whose calls go at most ``out.chunk`` steps) advanced in slices of
+    bounded wall time: after each call, ``out.chunk`` is set from that call's time to about
+    SLICE_SECONDS (at most 4 times the call's steps). The slices continue one run: what
+    they return is bitwise what one call returns."""
+
+    def __init__(self, out):
+        self.out = out
+
+    def span(self, k: int, first: bool) -> tuple | None:
+        return self.out.span(k, first)
+
+    def advance(self, run: Any, span: tuple) -> Part:
+        t = time.perf_counter()
+        part = self.out.advance(run, span)
+        dt = time.perf_counter() - t
+        rate = span[0] * SLICE_SECONDS / dt if dt > 0 else 4 * span[0]
+        self.out.chunk = max(1, min(4 * span[0], int(rate)))
+        return part
 
 
 class RunHandle:

@@ -212,6 +212,9 @@ class Integrator:
             A bad argument (shape, value, g0 off the group, both or neither of xi0/mu0).
         ConvergenceError, DomainError
             A step failed; ``.partial`` is the Trajectory so far (partial=True).
+        KeyboardInterrupt
+            Ctrl-C (a long run is advanced in slices of bounded wall time and checks for it
+            between them); ``.partial`` is the Trajectory of the steps done (partial=True).
         """
         if self.fast_path is not None:
             traj = self.fast_path.simulate(g0, h, steps, xi0, mu0, every, newton, t0, u, params)
@@ -344,6 +347,9 @@ class Integrator:
         ConvergenceError, DomainError, RecordError
             A step failed, or a recorded value is not finite (``RecordError`` names the
             entries); ``.partial`` holds the records up to the failure.
+        KeyboardInterrupt
+            Ctrl-C (taken between slices of bounded wall time); ``.partial`` holds the
+            records of the steps done (partial=True).
         """
         return records.record(self.engine, RunArgs(g0, h, steps, xi0, mu0, every, newton, u,
                                                    params, t0))

@@ -32,12 +32,15 @@ class Progress:
     """Running totals of a chunked run: chunks, steps done k, samples, Newton iterations,
     the first samples of energy / momentum and the max change so far of energy, momentum
     and its projections on ``directions`` ("conserved"); ``state`` the snapshot to continue
-    from (a resumed run)."""
+    from (a resumed run) and ``work`` the accumulated work's (WorkSum.state; empty when
+    the run records no work)."""
     CHANGES = ("energy", "momentum", "conserved", "balance")
 
     def __init__(self, directions=None):
         self.chunks = self.k = self.samples = self.iterations = 0
         self.first, self.change, self.state = {}, {}, None
+        #: a run that records work: the WorkSum's state (hpgen.runtime.work) to continue
+        self.work = {}
         self.directions = directions
 
     def added(self, rec, k) -> "Progress":
@@ -84,6 +87,7 @@ class Progress:
             if f"change_{name}" in arrays:
                 prog.change[name] = arrays[f"change_{name}"]
         prog.state = {k[len("run_"):]: v for k, v in arrays.items() if k.startswith("run_")}
+        prog.work = {k[len("work_"):]: v for k, v in arrays.items() if k.startswith("work_")}
         return prog
 
 
@@ -178,10 +182,12 @@ class PartialFolder:
     def write_chunk(self, i, rec, extra=None):
         write_npz(self.parts / _chunk_name(i), {"t": rec.t, **rec.arrays, **(extra or {})})
 
-    def commit(self, prog: Progress, rec, snapshot: dict):
+    def commit(self, prog: Progress, rec, snapshot: dict, work: dict | None = None):
         """Chunk prog.chunks - 1, ``rec`` (folded into prog), is complete: write it with the
-        run's state after it (``snapshot``) and the totals; its file is the commit."""
-        state = {**prog.totals(), **{f"run_{k}": v for k, v in snapshot.items()}}
+        run's state after it (``snapshot``; ``work``: the accumulated work's WorkSum.state,
+        a run that records work) and the totals; its file is the commit."""
+        state = {**prog.totals(), **{f"run_{k}": v for k, v in snapshot.items()},
+                 **{f"work_{k}": v for k, v in (work or {}).items()}}
         self.write_chunk(prog.chunks - 1, rec, {STATE + k: v for k, v in state.items()})
         self.keep = True
 

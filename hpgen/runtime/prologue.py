@@ -25,9 +25,9 @@ The same kernels on the same doubles in the same order as the generic path: the 
 bitwise those of the generic path. Whatever is not the common case -- another type or shape
 of g0 / xi0 / mu0 / h / steps / every / t0, a non-finite entry, g0 off the group, any
 argument error, a closed module's start outside the chart (the first step by continuation)
-or first step failing (the retry) -- is left to the generic path (``simulate`` returns None
-before anything is returned or raised), which raises the same errors as before. numpy, ctypes
-and the standard library only.
+or first step failing (the retry), a run of more than STEPS_MAX steps -- is left to the
+generic path (``simulate`` returns None before anything is returned or raised), which raises
+the same errors as before. numpy, ctypes and the standard library only.
 """
 from __future__ import annotations
 
@@ -52,6 +52,10 @@ PLANS_MAX = 32
 #: (longer runs make theirs per call)
 ROWS_MAX = 4096
 ROWS_MIN = 64
+#: the fast path runs at most this many steps (in one C call, which an interrupt cannot
+#: stop); longer runs take the generic path, which advances them in slices
+#: (hpgen.runtime.engine.Sliced)
+STEPS_MAX = 20_000
 _FLOATS, _INTS = (float, np.float64), (int, np.int64)
 _F64 = np.dtype(np.float64)
 
@@ -190,7 +194,7 @@ class Prologue:
         failure as the generic path does (a closed module's after the first step only: the
         first step's retry is the generic path's)."""
         plan = self.plan(h, steps, every, newton)
-        if plan is None or (xi0 is None) == (mu0 is None):
+        if plan is None or plan.steps > STEPS_MAX or (xi0 is None) == (mu0 is None):
             return None
         if type(t0) is float or type(t0) is int:
             t0 = float(t0)

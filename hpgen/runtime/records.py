@@ -22,7 +22,7 @@ from .. import abi
 from ..errors import ModelError, RecordError
 from . import loop
 from .args import _error, _fits, _int
-from .engine import Engine, Part, RunArgs, RunHandle, RunStart
+from .engine import SLICE_FIRST, Engine, Part, RunArgs, RunHandle, RunStart, Sliced
 from .progress import bar as progress_bar
 from .save_formats import save_run
 from .trajectory import run_metadata
@@ -135,12 +135,13 @@ class RecordRows:
     """The records output of one run, in chunks of at most ``chunk`` steps. A ``work``
     record (hpgen.runtime.work) has the row evaluated at every step, the work accumulated,
     and every ``every``-th row kept; its first chunk holds at least the first R + 1 nodes,
-    which its start rule needs."""
+    which its start rule needs; ``acc``: the WorkSum to continue (a resumed run's, restored
+    with WorkSum.restore), default a new one."""
 
-    def __init__(self, engine: Engine, s: RunStart, chunk: int):
+    def __init__(self, engine: Engine, s: RunStart, chunk: int, acc: WorkSum | None = None):
         self.engine, self.s, self.chunk = engine, s, chunk
         self.col = work_offset(engine.meta)
-        self.acc = None if self.col is None else WorkSum(s.h)
+        self.acc = None if self.col is None else (WorkSum(s.h) if acc is None else acc)
 
     def span(self, k, first):
         if not first and k >= self.s.steps:
@@ -178,18 +179,20 @@ class RecordRows:
 
 
 def stream_records(engine: Engine, s: RunStart, chunk: int, handle: RunHandle | None = None,
-                   t_start=0.0):
+                   t_start=0.0, work: WorkSum | None = None):
     """Yield Records per chunk of at most ``chunk`` steps (the first starts with record 0,
     the initial state); raises the chunk's error (with .partial) on a failure. ``handle``:
     the run to advance (default a new one at s's start); one restored from a snapshot
     (Engine.restore) after k > 0 steps continues at step k without record 0, bitwise as
     the uninterrupted run (hpgen.runtime.chunked_output's resume). t_start: the time of
-    step 0."""
-    out = RecordRows(engine, s, chunk)
+    step 0. work: a run that records work continues this WorkSum (it is updated in place
+    as the chunks are yielded: after each, its state is the run's after the chunk); a
+    resumed run that records work needs the one saved with its snapshot."""
+    out = RecordRows(engine, s, chunk, work)
     first = handle is None or handle.steps_done() == 0
-    if out.acc is not None and not first:
-        raise ModelError("a run that records work cannot be resumed (the work is accumulated "
-                         "from its start); run it again", field="record")
+    if out.acc is not None and not first and work is None:
+        raise ModelError("a resumed run that records work needs the work accumulated up to "
+                         "its snapshot (WorkSum.state)", field="record")
     row0 = out.head() if first else None
     for k, first, part in engine.parts(out, s, handle):
         rec = out.records(k, first, part, row0, t_start)
@@ -211,10 +214,44 @@ def stream_record(engine: Engine, a: RunArgs, chunk=100_000):
 
 
 def record(engine: Engine, a: RunArgs) -> Records:
-    """Integrator.record: the run in one piece."""
+    """Integrator.record: the run in one piece, advanced in slices
+    (hpgen.runtime.engine.Sliced) so that Ctrl-C interrupts it; a KeyboardInterrupt is
+    re-raised with ``.partial``, the Records of the steps done (partial=True)."""
     _fits(_int(a.steps, "steps", 0) // _int(a.every, "every", 1) + 1,
           engine.backend.record_width or 1, "record")
-    return next(stream_record(engine, a, max(a.steps, 1)))
+    s = engine.prepare(a)
+    t0 = float(a.t0)
+    out = RecordRows(engine, s, SLICE_FIRST)
+    row0 = out.head()
+    got: list = []            # the Records of each slice, appended in one operation
+    try:
+        for k, first, part in engine.parts(Sliced(out), s):
+            got.append(out.records(k, first, part, row0, t0))
+    except KeyboardInterrupt as exc:
+        exc.partial = _joined(engine, s, list(got), True)  # type: ignore[attr-defined]
+        raise
+    rec = _joined(engine, s, got)
+    if rec.error is not None:
+        raise rec.error
+    return rec
+
+
+def _joined(engine: Engine, s: RunStart, got: list, interrupted=False) -> Records:
+    """The Records of a run's slices ``got`` joined (Newton totals summed; the last slice's
+    error, its .partial the joined Records); partial when ``interrupted``."""
+    names = record_names(engine.meta)
+    width = {name: shape for name, _, shape in engine.meta["record"]}
+    arrays = {name: np.concatenate([r.arrays[name] for r in got]) if got else
+              np.zeros((0, *width[name])) for name in names}
+    err = got[-1].error if got else None
+    rec = Records(t=np.concatenate([r.t for r in got]) if got else np.zeros(0),
+                  arrays=arrays, h=s.h, every=s.every,
+                  partial=interrupted or err is not None, error=err,
+                  newton_iterations=sum(r.newton_iterations for r in got),
+                  jacobians=sum(r.jacobians for r in got), integrator=engine.owner)
+    if err is not None:
+        err.partial = rec
+    return rec
 
 
 def record_batch(engine: Engine, a: RunArgs, threads=None, progress=None) -> list:

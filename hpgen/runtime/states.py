@@ -6,11 +6,14 @@ and, for ensembles, ``simulate_batch``; simulate takes the C backend's fast path
 """
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from .. import abi
+from . import loop
 from .args import _error, _fits, _int
-from .engine import Engine, Part, RunArgs, RunStart
+from .engine import SLICE_FIRST, Engine, Part, RunArgs, RunStart, Sliced
 from .inputs import check_t0
 from .progress import bar as progress_bar
 from .trajectory import Trajectory
@@ -95,10 +98,37 @@ def _pieces(engine: Engine, s: RunStart, chunk: int, t_start: float):
 
 def simulate(engine: Engine, a: RunArgs) -> Trajectory:
     """Integrator.simulate's generic path (every module, backend and argument): the run in
-    one piece."""
+    one piece, advanced in slices (hpgen.runtime.engine.Sliced) so that Ctrl-C interrupts it; a
+    KeyboardInterrupt is re-raised with ``.partial``, the Trajectory of the steps done
+    (partial=True)."""
     s = engine.prepare(a)
     _fits(s.steps // s.every + 1, engine.n * engine.n + engine.d, "simulate")
-    return next(_pieces(engine, s, max(s.steps, 1), check_t0(a.t0)))
+    t0 = check_t0(a.t0)
+    got: list = []            # (g_rec, p_rec, status) per slice, appended in one operation
+    try:
+        for _, _, part in engine.parts(Sliced(States(engine, s, SLICE_FIRST)), s):
+            got.append((*part.data, part.status))
+    except KeyboardInterrupt as exc:
+        exc.partial = _joined(  # type: ignore[attr-defined]
+            engine, s, list(got), t0, interrupted=True)
+        raise
+    traj = _joined(engine, s, got, t0)
+    if traj.error is not None:
+        raise traj.error
+    return traj
+
+
+def _joined(engine: Engine, s: RunStart, got: list, t0: float,
+            interrupted=False) -> Trajectory:
+    """The Trajectory of a run's slices ``got`` (record 0, the start, prepended); Newton
+    totals summed over the slices; partial when ``interrupted``."""
+    g_rec = np.concatenate([s.g0.reshape(1, -1), *(g for g, _, _ in got)])
+    p_rec = np.concatenate([s.mu0.reshape(1, -1), *(p for _, p, _ in got)])
+    st = dict(got[-1][2]) if got else loop.new_status()
+    for key in ("total_iterations", "jacobians"):
+        st[key] = sum(int(part[2][key]) for part in got)
+    traj = records(engine, g_rec, p_rec, st, s.h, s.every, t0, s.inputs)
+    return replace(traj, partial=True) if interrupted else traj
 
 
 def simulate_batch(engine: Engine, a: RunArgs, threads=None, progress=None,

@@ -13,7 +13,8 @@ for polynomials of degree 5, error O(h^6) for a power smooth in t (k >= 4); W_1.
 integrals of the polynomial through P_0..P_4 (START: exact for degree 4), so the first five
 nodes must be fed together (a run of fewer than 5 nodes keeps the r = min(4, k) rule there).
 It is cumulative (each node needs the first five and the last five powers), so chunks of a
-run give bitwise the whole run's values. The error is below the order of every shipped scheme
+run give bitwise the whole run's values, and so does a run continued from a saved
+``WorkSum.state``. The error is below the order of every shipped scheme
 (<= 6): energy - work is the conserved balance to the scheme's order. A control input u that
 jumps between steps makes the power jump: the rule is then first order at each jump.
 numpy and the standard library only.
@@ -71,6 +72,21 @@ class WorkSum:
         self.s = float(S[-1])
         self.tail = allp[-R:].copy()
         return out
+
+    def state(self) -> dict:
+        """What continues the sum bitwise (``restore``): the last node k, the running sum
+        and the first and last powers fed, as arrays."""
+        return {"k": np.array(self.k, dtype=np.int64), "s": np.array(self.s),
+                "head": np.array(self.head, dtype=np.float64), "tail": self.tail.copy()}
+
+    @classmethod
+    def restore(cls, h: float, state: dict) -> "WorkSum":
+        """The WorkSum ``state`` (WorkSum.state) holds, for step h."""
+        acc = cls(h)
+        acc.k, acc.s = int(state["k"]), float(state["s"])
+        acc.head = [float(v) for v in np.asarray(state["head"], dtype=np.float64)]
+        acc.tail = np.array(state["tail"], dtype=np.float64)
+        return acc
 
 
 def work_offset(meta) -> int | None:
