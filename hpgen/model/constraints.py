@@ -17,6 +17,7 @@ named), and when the scene gives xi0 the hidden constraint |Phi(g0) xi0| <= INIT
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -67,9 +68,11 @@ def parse_constraints(doc, raw, group, exact: dict, runtime_names, g_symbols) ->
             try:
                 rows, _ = parse_constraint(b.text, group, params, field, refused, b.bound)
             except ModelError as e:
+                message = re.sub(r" \((line \d+, )?column \d+\)", "", e.message) \
+                    if b.generated else e.message
                 if b.bound:
-                    e = ModelError(f"{b.label.removeprefix(field).strip()}: {e.message}",
-                                   field=e.field)
+                    message = f"{b.label.removeprefix(field).strip()}: {message}"
+                e = ModelError(message, field=e.field)
                 raise e.located(doc.file, field, doc.line(("constraints", i))) from None
             out.append(ConstraintSpec(b.text, rows, b.label))
     if sum(len(c.rows) for c in out) >= group.d:

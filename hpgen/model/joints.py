@@ -38,6 +38,7 @@ class RowBlock:
     text: str
     bound: dict
     label: str
+    generated: bool = False         #: text written by a shorthand (its columns mean nothing)
 
 
 def expand_entry(doc, k: int, entry, group, params: dict) -> list:
@@ -72,7 +73,8 @@ def expand_entry(doc, k: int, entry, group, params: dict) -> list:
     out = []
     for i in indices:
         bound = {} if variable is None else {variable: i}
-        out.append(RowBlock(text, bound, field + (f" ({variable} = {i})" if bound else "")))
+        out.append(RowBlock(text, bound, field + (f" ({variable} = {i})" if bound else ""),
+                            kind != "row"))
     return out
 
 
