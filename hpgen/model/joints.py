@@ -6,6 +6,12 @@ mapping with exactly one of the keys
     row:  "text"                 an expression, as a plain entry
     ball: [A, B], at: [a, b]     a ball joint: point a of body A (in A's frame) coincides with
                                  point b of body B; the row block is x_B + R_B b - x_A - R_A a
+    hinge: [A, B], at: [a, b], axis: z
+                                 a ball joint whose relative rotation M = R_A^T R_B turns about
+                                 the body axis (x, y or z) that A's and B's frames share: the
+                                 ball's rows and the alignment rows M[j, k] (j != k, k the axis)
+    fixed: [A, B], at: [a, b]    a ball joint and no relative rotation: the rows
+                                 M[2, 1] - M[1, 2], M[0, 2] - M[2, 0], M[1, 0] - M[0, 1]
     pin:  A, at: a (, to: p)     point a of body A is pinned at the world point p (default the
                                  origin); the row block is x_A + R_A a - p
 
@@ -26,8 +32,9 @@ from dataclasses import dataclass
 from ..errors import ModelError
 from .yamldoc import describe, is_number
 
-KINDS = ("row", "ball", "pin")
-KEYS = KINDS + ("at", "to", "for", "in")
+KINDS = ("row", "ball", "hinge", "fixed", "pin")
+KEYS = KINDS + ("at", "to", "axis", "for", "in")
+AXES = {"x": 0, "y": 1, "z": 2}
 
 
 @dataclass(frozen=True)
@@ -69,13 +76,37 @@ def expand_entry(doc, k: int, entry, group, params: dict) -> list:
         if stop - start > 10_000:
             raise doc.error(path + ("in",), f"{stop - start} joints (limit 10000)")
         indices = list(range(start, stop))
-    text = _text(doc, path, kind, entry, group)
+    texts = [(_text(doc, path, "ball" if kind in ("hinge", "fixed") else kind, entry, group),
+              "")]
+    if kind in ("hinge", "fixed"):
+        texts += _alignment(doc, path, kind, entry, group)
+    elif "axis" in entry:
+        raise doc.error(path + ("axis",), "axis: belongs to hinge:")
     out = []
     for i in indices:
         bound = {} if variable is None else {variable: i}
-        out.append(RowBlock(text, bound, field + (f" ({variable} = {i})" if bound else ""),
-                            kind != "row"))
+        for text, part in texts:
+            out.append(RowBlock(text, bound, field + (f" ({variable} = {i})" if bound else "")
+                                + part, kind != "row"))
     return out
+
+
+def _alignment(doc, path, kind: str, entry: dict, group) -> list:
+    """The rotation rows of a hinge (about a shared body axis) or a fixed joint."""
+    A, B = (str(b) for b in entry[kind])
+    M = f"(transpose({_alias(group, 'R', A)}) @ {_alias(group, 'R', B)})"
+    if kind == "fixed":
+        if "axis" in entry:
+            raise doc.error(path + ("axis",), "axis: belongs to hinge:, not fixed:")
+        return [(f"{M}[2, 1] - {M}[1, 2]", " rotation"), (f"{M}[0, 2] - {M}[2, 0]", " rotation"),
+                (f"{M}[1, 0] - {M}[0, 1]", " rotation")]
+    axis = entry.get("axis")
+    if axis not in AXES:
+        raise doc.error(path + ("axis",), "expected the hinge's axis, shared by both bodies' "
+                        f"frames: x, y or z; got {describe(axis)}")
+    k = AXES[axis]
+    return [(f"{M}[{j}, {k}]", f" axis row {n}") for n, j in enumerate(j for j in range(3)
+                                                                   if j != k)]
 
 
 def _integer(doc, path, value, group, params) -> int:
@@ -132,14 +163,15 @@ def _text(doc, path, kind: str, entry: dict, group) -> str:
         if kind == "ball":
             if "to" in entry:
                 raise doc.error(path + ("to",), "to: belongs to pin:, not ball:")
-            bodies = entry["ball"]
+            key = next(c for c in ("ball", "hinge", "fixed") if c in entry)
+            bodies = entry[key]
             if not isinstance(bodies, list) or len(bodies) != 2:
-                raise doc.error(path + ("ball",), "expected the two bodies [A, B], got "
+                raise doc.error(path + (key,), "expected the two bodies [A, B], got "
                                 f"{describe(bodies)}")
             if not isinstance(at, list) or len(at) != 2:
                 raise doc.error(path + ("at",), "expected the joint point in each body's "
                                 f"frame, [a, b], got {describe(at)}")
-            A, B = (_part(doc, path + ("ball",), b, "a body index") for b in bodies)
+            A, B = (_part(doc, path + (key,), b, "a body index") for b in bodies)
             a, b = (_part(doc, path + ("at",), p, "a vector expression, e.g. a parameter name")
                     for p in at)
             return (f"{_alias(group, 'x', B)} + {_alias(group, 'R', B)} @ ({b}) - "

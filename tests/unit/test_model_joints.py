@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from hpgen.errors import ModelError
@@ -93,7 +94,7 @@ constraints:
      "constraints[0].in: expected [start, stop]"),
     ("{for: i, in: [1, N], ball: [i], at: [bot, top]}",
      "constraints[0].ball: expected the two bodies [A, B]"),
-    ("{pin: 0, at: top, axis: bot}", "constraints[0]: unknown key 'axis'"),
+    ("{pin: 0, at: top, angle: bot}", "constraints[0]: unknown key 'angle'"),
     ("{pin: 0, at: [1.0, 2.0, 3.0]}", "constraints[0].at: expected a vector expression"),
     ("{for: i, in: [0, N], row: \"x[i] - v[i]\"}", "constraints[0]: (i = 0): "),
     ("{for: i, in: [0, 2], pin: i, at: top}", "constraints[1] (i = 1) row 0 is redundant"),
@@ -132,3 +133,36 @@ def test_pendulum_chain_example_is_short_and_admissible(n):
     model = load_model_text(apply_overrides(path.read_text(), {"N": n}), str(path))
     assert model.group.d == 6 * n and len(_rows(model)) == 3 * n
     assert load_model(path).group.d == 12
+
+
+def test_hinge_and_fixed_add_alignment_rows():
+    hinge = load_model_text(HEAD + "  - {for: i, in: [1, N], hinge: [i - 1, i], at: [bot, top], "
+                                   "axis: y}\n")
+    assert len(_rows(hinge)) == 3 * 5
+    assert [c.label for c in hinge.constraints[:3]] == [
+        "constraints[0] (i = 1)", "constraints[0] (i = 1) axis row 0",
+        "constraints[0] (i = 1) axis row 1"]
+    assert hinge.constraints[1].text == "(transpose(R[(i - 1)]) @ R[(i)])[0, 1]"
+    assert hinge.constraints[2].text == "(transpose(R[(i - 1)]) @ R[(i)])[2, 1]"
+    from scipy.spatial.transform import Rotation
+
+    from hpgen.model.constraints import constraint_values
+    g, joint = np.eye(16), np.zeros(3)    # admissible: links 1, 2, 3 turned about y
+    for i in range(4):
+        R = Rotation.from_rotvec([0.0, 0.3 * (i > 0), 0.0]).as_matrix()
+        g[4 * i:4 * i + 3, 4 * i:4 * i + 3] = R
+        g[4 * i:4 * i + 3, 4 * i + 3] = joint - R @ [0, 0, 0.25]
+        joint = joint - 2 * R @ [0, 0, 0.25]
+    phi, Phi, _ = constraint_values(hinge.constraints, hinge.g_symbols, hinge.group, g)
+    assert np.abs(phi).max() < 1e-15
+    turn, tilt = np.zeros(24), np.zeros(24)
+    turn[7], tilt[6] = 1.0, 1.0           # link 1 about its y axis, about its x axis
+    assert np.abs(Phi[3:5] @ turn).max() < 1e-15 < np.abs(Phi[0:3] @ turn).max()
+    assert np.abs(Phi[3:5] @ tilt).max() > 0.5     # joint 1's axis rows (rows 0-2: its ball)
+    fixed = load_model_text(HEAD + "  - {fixed: [0, 1], at: [bot, top]}\n")
+    assert len(_rows(fixed)) == 6
+    assert "axis: belongs to hinge:" in _err(HEAD + "  - {ball: [0, 1], at: [bot, top], axis: z}\n")
+    assert "constraints[0].axis: expected the hinge's axis" in _err(
+        HEAD + "  - {hinge: [0, 1], at: [bot, top], axis: w}\n")
+    assert "constraints[0].hinge: expected the two bodies" in _err(
+        HEAD + "  - {hinge: [0], at: [bot, top], axis: z}\n")
