@@ -12,7 +12,9 @@ the same T (1) at dt = h and (2) at equal cost per simulated second: dt = h c_mj
 with c the measured time per step (MuJoCo's from a 2000-step probe of its C rollout, hpgen's
 from its own run). Band: max_k |E_k - E_0| / (E_0 - V_rest), V_rest the potential energy of
 the chain at rest (chain_peers.py's normalisation). Also: the joints' largest position and
-velocity gaps over hpgen's recorded nodes (chain.constraint_residual).
+velocity gaps over hpgen's recorded nodes (chain.constraint_residual), and hpgen.compile's
+wall time (cold unless the build cache already holds the module: use a fresh --cache-dir
+for cold figures).
 """
 from __future__ import annotations
 
@@ -60,6 +62,7 @@ def main(argv=None):
     ap.add_argument("--n", type=int, nargs="+", default=[2, 4])
     ap.add_argument("--steps", type=int, default=100_000)
     ap.add_argument("--h", type=float, default=1e-3)
+    ap.add_argument("--cache-dir", default=None, help="hpgen's build cache (default its own)")
     args = ap.parse_args(argv)
     print("| N | runner | dt | steps | us/step | us per simulated ms | energy band | joints |")
     print("|---|---|---|---|---|---|---|---|")
@@ -68,7 +71,7 @@ def main(argv=None):
         qpos, qvel = chain.initial_joint_state(spec)
         g0, xi0 = to_hpgen(spec, chain.from_joint(spec, qpos, qvel))
         start = time.perf_counter()
-        integ = hpgen.compile(MODEL, parameters={"N": n})
+        integ = hpgen.compile(MODEL, parameters={"N": n}, cache_dir=args.cache_dir)
         compile_s = time.perf_counter() - start
         start = time.perf_counter()
         tr = integ.simulate(g0=g0, xi0=xi0, h=args.h, steps=args.steps, every=10)
