@@ -3,8 +3,10 @@
 The key holds a list; entry i is one expression (scalar or vector) in g and its aliases
 (R, x; g_k, R_k, x_k of a product group) and the fixed parameters, parsed by the whitelist
 parser (hpgen.model.expr.parse_constraint); each entry of a vector is one row of phi. The
-velocity xi, the time t, control inputs and runtime parameters are refused. Errors name the
-field ``constraints[i]``.
+velocity xi, the time t, control inputs and runtime parameters are refused. An entry may also
+be a mapping (a row block repeated over joints ``for: i, in: [start, stop]``, the ball and pin
+shorthands: hpgen.model.joints), expanded to one ConstraintSpec per row block. Errors name the
+field ``constraints[i]`` (and the loop variable's value).
 
 Redundant rows are refused: Phi(g) of deficient row rank at a fixed generic g (then it is
 deficient everywhere). The scene's initial state must be admissible: |phi_r(g0)| <=
@@ -15,6 +17,7 @@ named), and when the scene gives xi0 the hidden constraint |Phi(g0) xi0| <= INIT
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -35,6 +38,7 @@ class ConstraintSpec:
     vector entry) in Model.g_symbols, parameters substituted as for the Lagrangian."""
     text: str
     rows: tuple
+    label: str = ""                 #: how messages name it; "" -> constraints[i]
 
 
 def parse_constraints(doc, raw, group, exact: dict, runtime_names, g_symbols) -> tuple:
@@ -42,6 +46,7 @@ def parse_constraints(doc, raw, group, exact: dict, runtime_names, g_symbols) ->
     (ints exact), ``runtime_names`` the runtime parameters' names (refused); g_symbols:
     Model.g_symbols. Redundant rows (Phi of deficient rank at a generic g) are refused."""
     from .expr import parse_constraint
+    from .joints import RowBlock, expand_entry
     if not isinstance(raw, list) or not raw:
         raise doc.error(("constraints",), "expected a non-empty list of expressions in g "
                         f"(R, x, ...) that vanish, e.g. [x - dot(R, c)], got {describe(raw)}")
@@ -49,16 +54,27 @@ def parse_constraints(doc, raw, group, exact: dict, runtime_names, g_symbols) ->
                   "take fixed parameters only)" for n in runtime_names}
     params = {k: v for k, v in exact.items() if k not in refused}
     out = []
-    for i, text in enumerate(raw):
+    for i, entry in enumerate(raw):
         field = f"constraints[{i}]"
-        if is_number(text) or not isinstance(text, str) or not text.strip():
+        if isinstance(entry, dict):
+            blocks = expand_entry(doc, i, entry, group, params)
+        elif is_number(entry) or not isinstance(entry, str) or not entry.strip():
             raise doc.error(("constraints", i), "expected an expression in g (R, x, ...) and "
-                            f"parameters that vanishes, got {describe(text)}")
-        try:
-            rows, _ = parse_constraint(text, group, params, field, refused)
-        except ModelError as e:
-            raise e.located(doc.file, field, doc.line(("constraints", i))) from None
-        out.append(ConstraintSpec(text, rows))
+                            "parameters that vanishes, or a mapping (row:, ball:, pin:, "
+                            f"optionally for: / in:), got {describe(entry)}")
+        else:
+            blocks = [RowBlock(entry, {}, field)]
+        for b in blocks:
+            try:
+                rows, _ = parse_constraint(b.text, group, params, field, refused, b.bound)
+            except ModelError as e:
+                message = re.sub(r" \((line \d+, )?column \d+\)", "", e.message) \
+                    if b.generated else e.message
+                if b.bound:
+                    message = f"{b.label.removeprefix(field).strip()}: {message}"
+                e = ModelError(message, field=e.field)
+                raise e.located(doc.file, field, doc.line(("constraints", i))) from None
+            out.append(ConstraintSpec(b.text, rows, b.label))
     if sum(len(c.rows) for c in out) >= group.d:
         raise doc.error(("constraints",), f"{sum(len(c.rows) for c in out)} constraint rows "
                         f"leave no freedom on {group.name} (d = {group.d}); expected fewer than d")
@@ -108,7 +124,8 @@ def constraint_values(constraints, g_symbols, group, g0):
     vals, jac, labels = [], [], []
     for i, c in enumerate(constraints):
         for j, row in enumerate(c.rows):
-            labels.append(f"constraints[{i}]" + (f" row {j}" if len(c.rows) > 1 else ""))
+            labels.append((c.label or f"constraints[{i}]")
+                          + (f" row {j}" if len(c.rows) > 1 else ""))
             vals.append(float(row.xreplace(subs)))
             grad = np.zeros((n, n))
             for s in row.free_symbols:

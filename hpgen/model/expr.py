@@ -241,13 +241,15 @@ def parse_record(text: str, group, parameters: dict, field: str = RECORD_FIELD):
     return result, xi_syms, mu_syms, g_syms
 
 
-def parse_constraint(text: str, group, parameters: dict, field: str, refused=None):
+def parse_constraint(text: str, group, parameters: dict, field: str, refused=None,
+                     bound=None):
     """(rows, g_symbols) for one holonomic constraint phi(g) = 0: a scalar or a vector
     expression in g and its aliases (R, x; R_k, x_k, g_k of products) and the parameters,
     the same grammar, functions and limits as the Lagrangian. ``rows``: a tuple of sympy
     scalars (one per entry), each depending on a varying entry of g; xi and t are refused,
     and so are the names in ``refused`` ({name: message}: the runtime parameters). Raises
-    ModelError(field=field) without file/line (the loader adds them)."""
+    ModelError(field=field) without file/line (the loader adds them). ``bound``: {name: int},
+    the loop variables of a constraint family (hpgen.model.joints), integers in the text."""
     forbidden = (_XI_NAME, "a constraint may use g (R, x, ...) and fixed parameters, not the "
                            "velocity xi: holonomic constraints are functions of the "
                            "configuration")
@@ -255,6 +257,7 @@ def parse_constraint(text: str, group, parameters: dict, field: str, refused=Non
         tree = parse_checked(text)
         ev = _Evaluator(group, parameters, variables=(), forbidden=forbidden,
                         refused=refused)
+        ev.bound.update(bound or {})
         try:
             result = ev.walk(tree.body)
         except RecursionError:
