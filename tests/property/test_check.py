@@ -87,7 +87,7 @@ def test_generated_schemes_are_symplectic_and_rkmk_is_not(compile_model, model_f
 
 DOC_KEYS = {"hpgen_version", "model", "file", "group", "scheme", "integrator", "h", "steps",
             "duration", "order", "energy", "momentum", "group_defect", "symplectic", "checks",
-            "passed", "seconds"}
+            "passed", "seconds", "inputs"}
 
 
 def test_cli_check_free_rigid_body_exits_0_and_writes_json(tmp_path, cache_dir):
