@@ -57,3 +57,14 @@ def compile_model(cache_dir, model_file):
         path = Path(model) if isinstance(model, Path) else model_file(model)
         return hpgen.compile(path, cache_dir=cache_dir, **opts)
     return _compile
+
+
+def model_error(text, filename="m.yaml") -> str:
+    """The ModelError message of loading the model text ``text``, checked to be one line."""
+    from hpgen.errors import ModelError
+    from hpgen.model import load_model_text
+    with pytest.raises(ModelError) as e:
+        load_model_text(text, filename)
+    msg = str(e.value)
+    assert "\n" not in msg
+    return msg

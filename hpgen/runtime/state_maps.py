@@ -108,13 +108,7 @@ class StateMaps:
         return xi
 
     def observe(self, g, mu, *, t=None, inputs=None) -> dict:
-        """Observables of K records, g (K, n, n), mu (K, d) node momenta: arrays xi (K, d)
-        (Legendre inverse), energy (K,), momentum (K, d) (spatial), defect (K,). One C call
-        (kernel observe) when l is quadratic in xi (meta legendre_quadratic: its one Newton
-        step from xi = 0 is exact); otherwise xi and energy are refined record by record with
-        ``velocity`` (Newton, the singular-Legendre check included). An open module
-        evaluates l at the records' times ``t`` (K,) with the run's ``inputs`` (StepInputs:
-        its runtime parameters), record by record."""
+        """Observables of K records (xi, energy, momentum, defect): see Integrator.observe."""
         g = np.asarray(g, dtype=np.float64).reshape(-1, self.n, self.n)
         mu = np.asarray(mu, dtype=np.float64).reshape(-1, self.d)
         K = len(mu)

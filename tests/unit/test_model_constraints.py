@@ -9,6 +9,7 @@ import sympy as sp
 from hpgen.errors import ModelError
 from hpgen.model import load_model_text
 from hpgen.model.fingerprint import normalized_model
+from conftest import model_error
 
 PEND = """\
 name: pend
@@ -31,11 +32,7 @@ constraints:
 
 
 def _err(text) -> str:
-    with pytest.raises(ModelError) as e:
-        load_model_text(text, "m.yaml")
-    msg = str(e.value)
-    assert "\n" not in msg
-    return msg
+    return model_error(text)
 
 
 def _g(i, j):

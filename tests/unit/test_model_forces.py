@@ -5,9 +5,9 @@ from __future__ import annotations
 import pytest
 import sympy as sp
 
-from hpgen.errors import ModelError
 from hpgen.model import load_model_text
 from hpgen.model.symbols import TIME_SYMBOL, input_symbol, runtime_symbol
+from conftest import model_error
 
 TOP = """\
 name: controlled_top
@@ -21,11 +21,7 @@ forces: ["-c*xi[0] + u0", "-c*xi[1] + u1", "-c*xi[2] + u2*sin(t)"]
 
 
 def _err(text) -> str:
-    with pytest.raises(ModelError) as e:
-        load_model_text(text, "m.yaml")
-    msg = str(e.value)
-    assert "\n" not in msg
-    return msg
+    return model_error(text)
 
 
 def test_forced_model_fields():

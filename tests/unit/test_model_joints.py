@@ -7,8 +7,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from hpgen.errors import ModelError
 from hpgen.model import load_model, load_model_text
+from conftest import model_error
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -29,11 +29,7 @@ def _rows(model):
 
 
 def _err(text) -> str:
-    with pytest.raises(ModelError) as e:
-        load_model_text(text, "m.yaml")
-    msg = str(e.value)
-    assert "\n" not in msg
-    return msg
+    return model_error(text)
 
 
 @pytest.mark.parametrize("entry", [
