@@ -293,6 +293,7 @@ def test_cli_on_an_open_model(modules, tmp_path):
     for cmd in (["bench", "--T", "0.5", "--peers", "DOP853"],):
         res = subprocess.run([sys.executable, "-m", "hpgen", cmd[0], str(path), *cmd[1:],
                               "--cache-dir", env_cache], capture_output=True, text=True,
-                             timeout=600)
+                             timeout=600, cwd=tmp_path)   # bench writes bench-<name>/ here
         assert res.returncode == 0, res.stderr          # bench integrates the forced model
+        assert (tmp_path / "bench-forced_top" / "work_precision.csv").is_file()
         assert "DOP853" in res.stdout and "Traceback" not in res.stderr
