@@ -88,7 +88,7 @@ KERNEL_NAMES = tuple(k.name for k in KERNELS)
 #: name -> (input size symbols, output size symbols)
 SIGNATURES = {k.name: (k.inputs, k.outputs) for k in KERNELS}
 
-#: Open models (forces, control inputs, runtime parameters or the time t; issue 16): every
+#: Open models (forces, control inputs, runtime parameters or the time t): every
 #: "H" input is the step vector hv = [h, t_k, u_0..u_{m-1}, params_0..params_{P-1}]
 #: (t_k the start time of the step, u the control inputs held over the step, params the
 #: runtime parameters, flat, in the model's order), and these kernels, which evaluate the

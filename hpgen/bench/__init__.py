@@ -1,4 +1,4 @@
-"""Work-precision benchmark (issue 4): hpgen's schemes against the integrators a user would
+"""Work-precision benchmark: hpgen's schemes against the integrators a user would
 pick instead (SciPy DOP853 / RK45, CasADi cvodes and Gauss-Legendre collocation, classical
 RK4 in NumPy and the same RK4 emitted as C), on a model's scene, in one process.
 

@@ -1,4 +1,4 @@
-"""``run_bench``: the work-precision benchmark of a model's scene (issue 4).
+"""``run_bench``: the work-precision benchmark of a model's scene.
 
     from hpgen.bench import run_bench
     res = run_bench("examples/heavy_top.yaml", T=10, out="bench-heavy_top")

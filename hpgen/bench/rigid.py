@@ -1,4 +1,4 @@
-"""Structure-preserving peers in C for rigid-body scenes (issue 14): what a person who
+"""Structure-preserving peers in C for rigid-body scenes: what a person who
 integrates rigid bodies for a living would try instead of hpgen.
 
 Families (names in hpgen.bench.peers.PEERS, the CSV ``family`` column):

@@ -96,7 +96,7 @@ class Model:
     g_symbols: tuple
     integrator: IntegratorChoice = field(default_factory=IntegratorChoice)
     scene: Scene | None = None
-    # forced, controlled and time-dependent models (issue 16); the defaults are a closed,
+    # forced, controlled and time-dependent models; the defaults are a closed,
     # conservative model whose parameters are all frozen into the generated code.
     #: ((name, shape), ...) in file order: the parameters that are kernel inputs; shape () for
     #: a number, (k,) a vector, (r, c) a matrix. Their file values are the defaults.
