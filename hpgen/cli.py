@@ -174,6 +174,8 @@ def cmd_run(args) -> int:
     module_dir = build_module(args.model, _options(args))
     integ = load(module_dir, backend=args.backend)
     print(_scheme_line(module_dir, args))
+    if sc.projection is not None:
+        print(f"  {sc.projection.note}")
     out = Path(args.out or f"{model.name}.npz")
     if sc.section is not None or sc.section_every_t is not None:
         return _run_sections(integ, model, sc, h, steps, out, args, u)

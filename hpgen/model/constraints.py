@@ -13,7 +13,9 @@ deficient everywhere). The scene's initial state must be admissible: |phi_r(g0)|
 INITIAL_TOL (the residual is reported), the body-frame constraint Jacobian Phi(g0) (m x d,
 Phi(g) eta = d/de phi(g exp(e eta)) at 0) must have full row rank m (a redundant row is
 named), and when the scene gives xi0 the hidden constraint |Phi(g0) xi0| <= INITIAL_TOL
-(1 + |xi0|) must hold. A scene given by mu0 is checked on the constraint only.
+(1 + |xi0|) must hold. A scene given by mu0 is checked on the constraint only. A scene with
+``initial.project: true`` is first moved onto the constraints (hpgen.model.projection), and
+refused only when that fails.
 """
 from __future__ import annotations
 
@@ -30,6 +32,9 @@ INITIAL_TOL = 1e-9
 #: a row of Phi(g0) whose distance to the span of the previous rows is below this fraction
 #: of the largest row norm is redundant
 RANK_TOL = 1e-9
+#: a Legendre map whose smallest singular value is below this fraction of its largest is
+#: singular (derive.checks' limit on the condition number, 1e12)
+LEGENDRE_TOL = 1e-12
 
 
 @dataclass(frozen=True)
@@ -41,10 +46,13 @@ class ConstraintSpec:
     label: str = ""                 #: how messages name it; "" -> constraints[i]
 
 
-def parse_constraints(doc, raw, group, exact: dict, runtime_names, g_symbols) -> tuple:
+def parse_constraints(doc, raw, group, exact: dict, runtime_names, g_symbols,
+                      lagrangian=None) -> tuple:
     """(ConstraintSpec, ...) from the ``constraints:`` list; ``exact`` the fixed parameters
     (ints exact), ``runtime_names`` the runtime parameters' names (refused); g_symbols:
-    Model.g_symbols. Redundant rows (Phi of deficient rank at a generic g) are refused."""
+    Model.g_symbols. Redundant rows (Phi of deficient rank at a generic g) are refused, and
+    with ``lagrangian`` = (l, xi_symbols, {runtime symbol: default}) a singular Legendre map
+    (check_legendre)."""
     from .expr import parse_constraint
     from .joints import RowBlock, expand_entry
     if not isinstance(raw, list) or not raw:
@@ -78,8 +86,51 @@ def parse_constraints(doc, raw, group, exact: dict, runtime_names, g_symbols) ->
     if sum(len(c.rows) for c in out) >= group.d:
         raise doc.error(("constraints",), f"{sum(len(c.rows) for c in out)} constraint rows "
                         f"leave no freedom on {group.name} (d = {group.d}); expected fewer than d")
-    _check_rank(doc, out, g_symbols, group, _generic_point(group), "at a generic g")
+    generic = _generic_point(group)
+    _check_rank(doc, out, g_symbols, group, generic, "at a generic g")
+    if lagrangian is not None:
+        check_legendre(doc, out, g_symbols, group, generic, lagrangian)
     return tuple(out)
+
+
+def check_legendre(doc, constraints, g_symbols, group, g, lagrangian) -> None:
+    """The constrained step inverts H = d2l/dxi2 (its node velocity is H^-1 (p - Phi^T nu)
+    on Phi xi = 0): refuse, at g and xi = 0 (t = 0, runtime parameters at their defaults),
+    a constrained Legendre map [[H, Phi^T], [Phi, 0]] that is singular (l flat along a
+    velocity the constraints leave free: naming it), and a singular H whose flat direction
+    the constraints remove (a massless constrained direction, not supported)."""
+    from .projection import casadi_maps
+    from .symbols import TIME_SYMBOL
+    lag, xi_symbols, runtime = lagrangian
+    fun = casadi_maps(constraints, g_symbols, group, lag, xi_symbols,
+                      {TIME_SYMBOL: 0, **runtime})
+    _, Phi, H = (np.array(v, dtype=float) for v in fun(g, np.zeros(group.d)))
+    if not np.all(np.isfinite(H)):
+        return                      # the Legendre check of the derived step reports it
+    m, d = Phi.shape
+    scale = max(np.abs(H).max(), 1e-300)
+    kkt = np.block([[H / scale, Phi.T], [Phi, np.zeros((m, m))]])
+    s = np.linalg.svd(kkt, compute_uv=False)
+    if s[-1] <= LEGENDRE_TOL * s[0]:
+        v = np.linalg.svd(kkt)[2][-1][:d]
+        raise doc.error(("lagrangian",), "the constrained Legendre map is singular at a "
+                        "generic g: l has no second derivative along the velocity "
+                        f"{_direction(v)}, which the constraints leave free; the Lagrangian "
+                        "must be nondegenerate in xi on the constraints")
+    sh = np.linalg.svd(H / scale, compute_uv=False)
+    if sh[-1] <= LEGENDRE_TOL * sh[0]:
+        v = np.linalg.svd(H)[2][-1]
+        raise doc.error(("lagrangian",), "d2l/dxi2 is singular at a generic g (l is flat "
+                        f"along the velocity {_direction(v)}); the constraints fix that "
+                        "velocity, but the constrained step needs d2l/dxi2 invertible: give "
+                        "that direction an inertia")
+
+
+def _direction(v) -> str:
+    """A unit vector of the algebra as text: its largest entries, ``xi[k]``."""
+    ks = [k for k in np.argsort(-np.abs(v)) if abs(v[k]) > 1e-8 * np.abs(v).max()][:4]
+    return " ".join(f"{'+' if v[k] > 0 else '-'} {abs(v[k]):.3g} xi[{k}]"
+                    for k in sorted(ks)).lstrip("+ ")
 
 
 def _generic_point(group):
@@ -137,16 +188,28 @@ def constraint_values(constraints, g_symbols, group, g0):
     return np.array(vals), np.array(jac).reshape(len(labels), group.d), labels
 
 
-def check_initial(doc, constraints, g_symbols, group, scene) -> None:
-    """Refuse a scene whose initial state is not admissible (see the module docstring)."""
-    if scene is None or not constraints:
-        return
+def check_initial(doc, constraints, g_symbols, group, scene, lagrangian=None):
+    """The scene with its admissible initial state: refused when not admissible (the module
+    docstring), or first moved onto the constraints when the scene asks (``initial.project``,
+    hpgen.model.projection; the returned Scene then carries ``projection``). lagrangian:
+    (l, xi_symbols, {runtime symbol: default}) for the projection's metric."""
+    if scene is None:
+        return scene
+    if scene.project:
+        if not constraints:
+            raise doc.error(("scene", "initial", "project"), "this model has no constraints: "
+                            "there is nothing to project the initial state onto (remove "
+                            "project or add constraints:)")
+        scene = _projected(doc, constraints, g_symbols, group, scene, lagrangian)
+    if not constraints:
+        return scene
     phi, Phi, labels = constraint_values(constraints, g_symbols, group, scene.g0)
     path = ("scene", "initial", "g")
     for r, v in enumerate(phi):
         if not abs(v) <= INITIAL_TOL:
             raise doc.error(path, f"the initial g violates {labels[r]}: residual {v:.3e} "
-                            f"(expected |phi(g0)| <= {INITIAL_TOL:g})")
+                            f"(expected |phi(g0)| <= {INITIAL_TOL:g}, or initial.project: true "
+                            "to move it onto the constraints)")
     _check_rank(doc, constraints, g_symbols, group, scene.g0, "at the initial g")
     if scene.xi0 is not None:
         xi0 = np.asarray(scene.xi0, dtype=float)
@@ -156,4 +219,35 @@ def check_initial(doc, constraints, g_symbols, group, scene) -> None:
             if not abs(v) <= tol:
                 raise doc.error(("scene", "initial", "xi"), f"the initial xi violates the "
                                 f"velocity form of {labels[r]}: Phi(g0) xi0 = {v:.3e} "
-                                f"(expected |Phi(g0) xi0| <= {tol:.1e})")
+                                f"(expected |Phi(g0) xi0| <= {tol:.1e}, or initial.project: "
+                                "true to project it)")
+    return scene
+
+
+def _projected(doc, constraints, g_symbols, group, scene, lagrangian):
+    """The scene with (g0, xi0) projected (hpgen.model.projection)."""
+    import dataclasses
+
+    from .projection import project
+    from .symbols import TIME_SYMBOL
+    path = ("scene", "initial", "project")
+    _check_rank(doc, constraints, g_symbols, group, scene.g0, "at the initial g")
+    lag, xi_symbols, runtime = lagrangian
+    fixed = {TIME_SYMBOL: 0, **runtime}
+    try:
+        g, xi, note = project(constraints, g_symbols, group, lag, xi_symbols, fixed,
+                              scene.g0, scene.xi0)
+    except np.linalg.LinAlgError:
+        raise doc.error(path, "cannot project: d2l/dxi2 or Phi H^-1 Phi^T is singular at the "
+                        "initial state (the constrained Legendre map is not invertible)") \
+            from None
+    if not note.residual_after <= INITIAL_TOL:
+        raise doc.error(path, f"cannot project the initial g onto the constraints: the "
+                        f"residual went from {note.residual_before:.3e} to "
+                        f"{note.residual_after:.3e} (expected <= {INITIAL_TOL:g}); start "
+                        "closer to them")
+    if not np.all(np.isfinite(g)):
+        raise doc.error(path, "cannot project: the projected g is not finite")
+    return dataclasses.replace(
+        scene, g0=tuple(tuple(float(v) for v in row) for row in g),
+        xi0=None if xi is None else tuple(float(v) for v in xi), projection=note)

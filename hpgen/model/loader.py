@@ -192,10 +192,14 @@ def build_model(doc: Doc, text: str) -> Model:
         _refuse_unforced_work(doc, scene, forces)
     constraints = ()
     if data.get("constraints") is not None:
-        from .constraints import check_initial, parse_constraints
+        from .constraints import parse_constraints
         constraints = parse_constraints(doc, data["constraints"], group, exact,
-                                        [nm for nm, _ in runtime], g_syms)
-        check_initial(doc, constraints, g_syms, group, scene)
+                                        [nm for nm, _ in runtime], g_syms,
+                                        (lag, xi_syms, dict(zip(rsyms, rdefaults))))
+    if scene is not None and (constraints or scene.project):
+        from .constraints import check_initial
+        scene = check_initial(doc, constraints, g_syms, group, scene,
+                              (lag, xi_syms, dict(zip(rsyms, rdefaults))))
     return Model(name=name, path=doc.file, source=text, group_spec=data["group"], group=group,
                  parameters=stored, lagrangian_text=data["lagrangian"], lagrangian=lag,
                  xi_symbols=xi_syms, g_symbols=g_syms, integrator=integrator, scene=scene,

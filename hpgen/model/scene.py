@@ -11,6 +11,8 @@ Conventions:
   rotation block has |R^T R - I|max and |det R - 1| <= 1e-10; the affine bottom row, the identity
   block of R<k> and the off-diagonal blocks of a product are exact.
 - Exactly one of ``initial.xi`` / ``initial.mu`` (d finite numbers).
+- ``initial.project``: true or false (default); true asks the loader to move the initial state
+  onto the model's constraints (hpgen.model.projection) instead of refusing it.
 - ``record``: a list of distinct entries (default g, mu): names from RECORDABLE, or one-key
   mappings ``{label: "expression"}`` recording a scalar expression in xi, mu and g
   (hpgen.model.expr.parse_record) under ``label`` ([A-Za-z][A-Za-z0-9_]{0,63}; not a RECORDABLE
@@ -36,7 +38,7 @@ from .families import repeat_initial
 from .types import RecordExpr, Scene, SectionSpec
 
 SCENE_KEYS = ("h", "steps", "duration", "initial", "record", "every", "section", "u")
-INITIAL_KEYS = ("g", "xi", "mu")
+INITIAL_KEYS = ("g", "xi", "mu", "project")
 RECORDABLE = ("g", "mu", "xi", "energy", "momentum", "defect")
 #: record names of a forced model only (the loader refuses them without forces, and refuses
 #: them as expression labels with forces): the power <f, xi> at the record and the work done
@@ -315,6 +317,10 @@ def parse_scene(doc, raw, group, parameters=None, inputs=()) -> Scene:
                                f"got {'both' if has_xi else 'neither'}")
     key = "xi" if has_xi else "mu"
     vec = doc.vector(ipath + (key,), init[key], group.d)
+    project = init.get("project", False)
+    if type(project) is not bool:
+        raise doc.error(ipath + ("project",), f"expected true or false, got "
+                        f"{_describe(doc, project)}")
     record, expressions = ("g", "mu"), ()
     if raw.get("record") is not None:
         record, expressions = _record(doc, raw["record"], group, parameters or {})
@@ -330,7 +336,7 @@ def parse_scene(doc, raw, group, parameters=None, inputs=()) -> Scene:
     return Scene(h=h, steps=steps, g0=tuple(tuple(float(x) for x in row) for row in G),
                  xi0=vec if has_xi else None, mu0=vec if has_mu else None,
                  record=record, every=every, section=section, expressions=expressions,
-                 section_every_t=every_t, u=u)
+                 section_every_t=every_t, u=u, project=project)
 
 
 def _controls(doc, raw, group, parameters, inputs):

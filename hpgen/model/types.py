@@ -74,6 +74,10 @@ class Scene:
     section_every_t: float | None = None
     #: the control inputs u (hpgen.model.controls.ControlSpec) of a model with inputs, or None
     u: Any = None
+    #: ``initial.project: true``: move the initial state onto the constraints (the loader does)
+    project: bool = False
+    #: how far that moved it (hpgen.model.projection.InitialProjection), None when not asked
+    projection: Any = None
 
 
 @dataclass(frozen=True)
