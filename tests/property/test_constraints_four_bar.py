@@ -1,5 +1,5 @@
-"""A closed kinematic loop: the planar four-bar linkage of tests/models/four_bar.yaml on
-[SE2, SE2, SE2] (4 hinges, 8 rows, one degree of freedom), constrained Stormer-Verlet.
+"""A closed kinematic loop: the planar four-bar linkage of examples/four_bar.yaml on
+SE2^3 (4 hinges, 8 rows, one degree of freedom), constrained Stormer-Verlet.
 
 - every hinge closes to round-off at every node (1e-14: Newton's 1e-14 relative stop on
   O(1) rows), and so does its velocity form (the hidden constraint);
@@ -13,7 +13,7 @@ import pytest
 
 from conftest import ROOT
 
-MODEL = ROOT / "tests" / "models" / "four_bar.yaml"
+MODEL = ROOT / "examples" / "four_bar.yaml"
 L = (1.0, 2.5, 2.0)
 GROUND = np.array([2.5, 0.0])
 

@@ -329,6 +329,7 @@ SCENE_ENERGY_BOUND = {
     "lagrange_top": 5.1e-10,
     "pendulum_chain": 4.2e-5,
     "spacecraft_panels": 3.0e-6,
+    "four_bar": 7.2e-5,
     "turntable": 1.1e-3,
     "underwater_vehicle": 2.0e-7,
 }
