@@ -10,8 +10,9 @@ the links, gravity -e3.
   invariant under rotations about e3 through the origin, so the discrete Noether theorem
   keeps it to round-off (1e-12 relative to |p| over 10^4 steps, as the unconstrained tests).
 - energy: bounded, no drift over 10^5 steps (symplectic on the constraint manifold).
-- order 2 (2.0 +- 0.2) against an independent reference (tests/ball_chain_reference.py:
-  Newton-Euler with acceleration-level reactions, DOP853 at rtol 1e-13).
+- order 2 (2.0 +- 0.2) against an independent reference (hpgen.bench.multibody.reference:
+  Newton-Euler in reduced coordinates with the joint forces at the acceleration level,
+  DOP853 at rtol = atol = 1e-13).
 - the multipliers (hpgen.analysis.reactions): lambda_K + nu_K approximates the continuous
   multiplier, minus the joints' reaction forces of the reference, to O(h^2).
 """
@@ -20,20 +21,28 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ball_chain_reference import BallChain, rotvec
 from conftest import ROOT
+from hpgen.bench.multibody import chain, reference
+from hpgen.groups.elements import rotation_from_rotvec as rotvec
 
 MODEL = ROOT / "tests" / "models" / "double_spherical_pendulum.yaml"
 J = np.array([1 / 48, 1 / 48, 0.002])
 TOP, BOT = np.array([0.0, 0.0, 0.25]), np.array([0.0, 0.0, -0.25])
-CHAIN = BallChain(2, 1.0, J, TOP, BOT, 9.81)
+CHAIN = chain.ChainSpec(2, mass=1.0, length=0.5, g=9.81, moments=tuple(J))   # top, bot = +-a
+
+
+def _admissible(spec, Rs, ws):
+    """(x_i, v_i) (v_i body frame) putting links with rotations Rs and body angular
+    velocities ws on the joints and their velocity form."""
+    s = chain.from_rotations(spec, np.array(Rs), np.array(ws))
+    return s.x, [R.T @ v for R, v in zip(s.R, s.v)]
 
 
 def _initial():
     """An admissible, generic state: both links tilted and spinning."""
     Rs = [rotvec([0.6, -0.3, 0.2]), rotvec([-0.4, 0.8, 0.5])]
     ws = [np.array([1.0, -0.5, 2.0]), np.array([-1.5, 0.7, -1.0])]
-    xs, vs = CHAIN.admissible(Rs, ws)
+    xs, vs = _admissible(CHAIN, Rs, ws)
     g0 = np.eye(8)
     g0[:3, :3], g0[:3, 3], g0[4:7, 4:7], g0[4:7, 7] = Rs[0], xs[0], Rs[1], xs[1]
     return Rs, ws, g0, np.concatenate([ws[0], vs[0], ws[1], vs[1]])
@@ -106,7 +115,7 @@ def test_constrained_energy_bounded_without_drift(compile_model):
 
 
 def _reference_state(ref):
-    Rr, wr, xr, ur, _ = ref
+    Rr, wr, xr, ur = ref.R, ref.omega, ref.x, ref.v
     g = np.eye(8)
     g[:3, :3], g[:3, 3], g[4:7, 4:7], g[4:7, 7] = Rr[0], xr[0], Rr[1], xr[1]
     p = np.concatenate([J * wr[0], Rr[0].T @ ur[0], J * wr[1], Rr[1].T @ ur[1]])
@@ -115,8 +124,10 @@ def _reference_state(ref):
 
 @pytest.fixture(scope="module")
 def reference_at_1():
+    """The reference's ChainState at t = 1 from _initial()'s state."""
     Rs, ws, _, _ = _initial()
-    return CHAIN.solve(Rs, ws, np.array([1.0]))[-1]
+    qpos, qvel = chain.to_joint(CHAIN, chain.from_rotations(CHAIN, np.array(Rs), np.array(ws)))
+    return reference.solve(CHAIN, qpos, qvel, [1.0]).final
 
 
 @pytest.mark.slow
@@ -139,7 +150,8 @@ def test_multipliers_are_the_joint_reactions(compile_model, reference_at_1):
     from hpgen.analysis.reactions import reactions
     integ = compile_model(MODEL)
     _, _, g0, xi0 = _initial()
-    f = np.concatenate(reference_at_1[4])          # joint forces on the child links at T = 1
+    ref = reference_at_1                            # joint forces on the child links at T = 1
+    f = np.concatenate(reference.ChainDynamics(CHAIN).accelerations(ref.R, ref.omega)[2])
     errs = []
     for h in (0.01, 0.005):
         K = int(round(1.0 / h))
@@ -170,9 +182,9 @@ def test_forced_open_model_keeps_the_constraint(compile_model):
     to round-off with and without the input; with the damping torque only (u = 0) the energy
     decreases monotonically."""
     integ = compile_model(FORCED_PENDULUM, backend="python")
-    chain = BallChain(1, 1.0, [0.02, 0.02, 0.002], TOP, BOT, 9.81)
+    one = chain.ChainSpec(1, mass=1.0, length=0.5, g=9.81, moments=(0.02, 0.02, 0.002))
     R, w = rotvec([0.5, 0.2, 0.0]), np.array([1.0, 2.0, 0.5])
-    xs, vs = chain.admissible([R], [w])
+    xs, vs = _admissible(one, [R], [w])
     g0 = np.eye(4)
     g0[:3, :3], g0[:3, 3] = R, xs[0]
     xi0 = np.concatenate([w, vs[0]])

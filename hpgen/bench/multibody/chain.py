@@ -52,6 +52,9 @@ class ChainSpec:
     length: float = 0.5
     radius: float = 0.05
     g: float = 9.81
+    #: principal moments (Ixx, Iyy, Izz) about the centre of mass in the link frame, for a
+    #: link that is not the capsule; None: the capsule's (:func:`capsule_inertia`)
+    moments: tuple | None = None
 
     def __post_init__(self):
         if not isinstance(self.n, (int, np.integer)) or isinstance(self.n, bool) or self.n < 1:
@@ -62,10 +65,18 @@ class ChainSpec:
             if not (np.isfinite(value) and value > 0):
                 raise ArgumentError(f"expected a positive finite number, got {value!r}",
                                     field=name)
+        if self.moments is not None:
+            J = np.asarray(self.moments, dtype=float)
+            if J.shape != (3,) or not (np.isfinite(J).all() and (J > 0).all()):
+                raise ArgumentError(f"expected three positive finite moments, got "
+                                    f"{self.moments!r}", field="moments")
 
     @property
     def inertia(self) -> np.ndarray:
-        """Principal moments (Ixx, Iyy, Izz) about the centre of mass in the link frame."""
+        """Principal moments (Ixx, Iyy, Izz) about the centre of mass in the link frame:
+        ``moments`` when given, else the capsule's."""
+        if self.moments is not None:
+            return np.asarray(self.moments, dtype=float)
         return capsule_inertia(self.mass, self.length, self.radius)
 
     @property
