@@ -1,7 +1,7 @@
 """The N-link pendulum chain (examples/pendulum_chain.yaml: SE3^N, ball joints as holonomic
 constraints, constrained Stormer-Verlet) against MuJoCo (RK4, Euler, implicitfast through
-mujoco.rollout) and Pinocchio (RKMK4 with ABA) in one run, for N in a list, with a
-work-precision figure per N.
+mujoco.rollout) and Pinocchio (RKMK4, accelerations by CRBA + Cholesky; ABA on request) in
+one run, for N in a list, with a work-precision figure per N.
 
     PYTHONPATH=. python benchmarks/chain_bench.py [--n 2 4 8 16 32 64] [--budget 120]
         [--steps 100000] [--dt 1e-3] [--wp-h 4e-3 2e-3 1e-3 5e-4 2.5e-4] [--out bench-chain]
@@ -44,7 +44,10 @@ sys.path.insert(0, str(ROOT))
 from hpgen.bench.multibody import chain, hpgen_chain, mujoco_peer, pinocchio_peer  # noqa: E402
 from hpgen.bench.multibody import reference  # noqa: E402
 
-PEERS = ("MuJoCo RK4", "MuJoCo Euler", "MuJoCo implicitfast", "Pinocchio RKMK4 ABA")
+PEERS = ("MuJoCo RK4", "MuJoCo Euler", "MuJoCo implicitfast", "Pinocchio RKMK4 CRBA",
+         "Pinocchio RKMK4 ABA")
+#: ABA loses accuracy on long chains of these links (pinocchio_peer): CRBA by default
+DEFAULT_PEERS = PEERS[:4]
 COMPILE = ("import sys, time, hpgen; n, cache = int(sys.argv[1]), sys.argv[2]; "
            "t = time.perf_counter(); hpgen.compile(sys.argv[3], parameters={'N': n}, "
            "cache_dir=cache); print(time.perf_counter() - t)")
@@ -94,7 +97,8 @@ def hpgen_run(integ, spec, g0, xi0, h, steps, chunk=20_000):
 def peer_run(peer, spec, qpos, qvel, dt, steps):
     if peer.startswith("MuJoCo"):
         return mujoco_peer.run(spec, qpos, qvel, dt, steps, peer.split()[1], sample=10)
-    return pinocchio_peer.run(spec, qpos, qvel, dt, steps, sample=10, dynamics="aba")
+    return pinocchio_peer.run(spec, qpos, qvel, dt, steps, sample=10,
+                              dynamics=peer.split()[2].lower())
 
 
 def peer_final(spec, run):
@@ -149,7 +153,7 @@ def main(argv=None):
     ap.add_argument("--steps", type=int, default=100_000)
     ap.add_argument("--dt", type=float, default=1e-3)
     ap.add_argument("--wp-h", type=float, nargs="+", default=[4e-3, 2e-3, 1e-3, 5e-4, 2.5e-4])
-    ap.add_argument("--peers", nargs="*", default=list(PEERS), choices=PEERS)
+    ap.add_argument("--peers", nargs="*", default=list(DEFAULT_PEERS), choices=PEERS)
     ap.add_argument("--out", type=Path, default=Path("bench-chain"))
     ap.add_argument("--quick", action="store_true",
                     help="a smoke run: 2000 long steps, two work-precision step sizes")
