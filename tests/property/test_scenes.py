@@ -330,6 +330,7 @@ SCENE_ENERGY_BOUND = {
     "pendulum_chain": 4.2e-5,
     "spacecraft_panels": 3.0e-6,
     "four_bar": 7.2e-5,
+    "rod": 1.4e-6,
     "turntable": 1.1e-3,
     "underwater_vehicle": 2.0e-7,
 }
