@@ -105,6 +105,7 @@ def test_cli_run_prints_the_projection(tmp_path, cache_dir):
     path = tmp_path / "projected.yaml"
     path.write_text(_scene(OFF).replace("steps: 5000", "steps: 20"))
     out = subprocess.run([sys.executable, "-m", "hpgen", "run", str(path), "--no-plot",
+                          "--backend", "python",
                           "--out", str(tmp_path / "p.npz"), "--cache-dir", str(cache_dir)],
                          capture_output=True, text=True, cwd=ROOT, timeout=600)
     assert out.returncode == 0, out.stderr
