@@ -28,10 +28,12 @@ from dataclasses import dataclass
 #: (4: hpgen_advance_batch_lanes and hpgen_lanes, the lane-wise ensembles, where emitted)
 #: (5: hpgen_run holds the predictor offsets dz0..dz2 instead of zprev, zprev2)
 #: (6: hpgen_run holds PREDICTOR_HISTORY offsets dz[0..5], the predictor is quintic)
-ABI_VERSION = 6
+#: (7: a sparse module's hpgen_run.lu holds the sparse QR of J, HPGEN_LU_SIZE doubles)
+ABI_VERSION = 7
 #: version of meta.json's layout; the loader refuses any other (recompile the module)
 #: (3: "group", the group's name, e.g. "SO3" or "[SO3, R3]")
-META_FORMAT = 3
+#: (4: "jacobian", the Newton matrix's storage: dense, or sparse with J's CCS pattern)
+META_FORMAT = 4
 
 
 # ---- kernels -----------------------------------------------------------------------------

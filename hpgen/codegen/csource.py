@@ -11,6 +11,7 @@ from __future__ import annotations
 import casadi
 
 from .contract import CodegenError, dense_positions
+from .sparse import aux_function, jacobian_sparsity
 
 #: CasADi CodeGenerator options. with_mem False: no memory objects, no static mutable state.
 CG_OPTIONS = {"casadi_real": "double", "casadi_int": "long long int", "with_mem": False,
@@ -49,6 +50,9 @@ def casadi_c_code(step, module: str) -> str:
     for k in step.kernels:
         if k.name not in C_FROM_FUSED:
             cg.add(k.function)
+    sp = jacobian_sparsity(step)
+    if sp is not None:       # a sparse J: casadi_qr, casadi_qr_solve for the runtime's Newton
+        cg.add(aux_function(sp))
     code = cg.dump()
     for call, inline in _INLINE_MINMAX.items():
         code = code.replace(call, inline)
@@ -76,6 +80,9 @@ def c_kernel_context(kernel) -> dict:
     f = kernel.function
     fused = C_FROM_FUSED.get(kernel.name)
     return {"name": kernel.name, "symbol": f.name(),
+            # a kernel with a sparse output also gets hpgen_k_<name>_nz, which writes the
+            # structural nonzeros of every output (the sparse Newton's J)
+            "nz_variant": not all(f.sparsity_out(i).is_dense() for i in range(f.n_out())),
             "fused": None if fused is None else {"name": fused[0], "output": fused[1]},
             "inputs": [_arg(f, i, False, kernel.inputs[i]) for i in range(f.n_in())],
             "outputs": [_arg(f, i, True, kernel.outputs[i]) for i in range(f.n_out())],

@@ -1,13 +1,17 @@
-/* hpgen's C runtime, part 1: dense linear algebra of the Newton matrix (HPGEN_NZ unknowns).
-   Mirrored operation for operation in Python by hpgen.codegen.pylinear (printed per nz).
-   Included by hpgen_runtime.c; the model and the contract are hpgen_runtime.h's.
+/* hpgen's C runtime, part 1: linear algebra of the Newton matrix (HPGEN_NZ unknowns), dense
+   (mirrored operation for operation in Python by hpgen.codegen.pylinear, printed per nz) or,
+   in a module with HPGEN_SPARSE, a sparse QR on patterns analysed at compile time (mirrored
+   to round-off by hpgen.runtime.sparse). Included by hpgen_runtime.c; the model and the
+   contract are hpgen_runtime.h's.
 
-   What Newton, the runs and the linearization use of this file (its interface):
-     hpgen_lu_factor_solve(A, piv, b, keep)  b <- J^{-1} b with J in A; keep: A <- J^{-1}
+   What Newton, the runs and the linearization use of this file (its interface), A being
+   HPGEN_LU_SIZE doubles:
+     hpgen_newton_fj(z, g, p, hv, F, A)      F and J (into A's J storage) in one evaluation
+     hpgen_newton_j(z, g, p, hv, A)          J alone (into A's J storage)
+     hpgen_lu_factor_solve(A, piv, b, keep)  b <- J^{-1} b with J in A; keep: A keeps the
+                                             factors (dense: A <- J^{-1})
      hpgen_lu_apply(A, piv, b)               b <- J^{-1} b with the kept A
-     hpgen_norm_inf(x, n), hpgen_all_finite(x, n)
-   A factorization of another structure (a sparse one for many bodies) provides the same
-   two functions over its own storage. */
+     hpgen_norm_inf(x, n), hpgen_all_finite(x, n) */
 
 /* max |x_i|; NaN if any x_i is NaN */
 static double hpgen_norm_inf(const double* x, int n) {
@@ -28,6 +32,64 @@ static int hpgen_all_finite(const double* x, int n) {
     int i;
     for (i = 0; i < n; ++i) if (!isfinite(x[i])) return 0;
     return 1;
+}
+
+#if HPGEN_SPARSE
+/* A = V (HPGEN_SP_NV) | R (HPGEN_SP_NR) | beta (HPGEN_NZ) | J's nonzeros (HPGEN_SP_NJ):
+   J P_c = Q R (CasADi's casadi_qr: Householder vectors V with factors beta, R upper
+   triangular, the static patterns hpgen_sp_*). Nothing is pivoted: the zero diagonals of the
+   multiplier blocks need no care. */
+static int hpgen_newton_fj(const double* z, const double* g, const double* p, const double* hv,
+                           double* F, double* A) {
+    return hpgen_k_residual_jacobian_nz(z, g, p, hv, F, A + HPGEN_J_OFFSET);
+}
+
+static int hpgen_newton_j(const double* z, const double* g, const double* p, const double* hv,
+                          double* A) {
+    double F[HPGEN_NZ];
+    return hpgen_k_residual_jacobian_nz(z, g, p, hv, F, A + HPGEN_J_OFFSET);
+}
+
+/* b <- J^{-1} b with the kept factors: x = P_c R^{-1} Q^T P_r b */
+static void hpgen_lu_apply(const double* A, const int* piv, double* b) {
+    double w[HPGEN_SP_NROW];
+    (void)piv;
+    casadi_qr_solve(b, 1, 0, hpgen_sp_v, A, hpgen_sp_r, A + HPGEN_SP_NV,
+                    A + HPGEN_SP_NV + HPGEN_SP_NR, hpgen_sp_prinv, hpgen_sp_pc, w);
+}
+
+/* Factor J (nonzeros at A + HPGEN_J_OFFSET) into A's V, R, beta and b <- J^{-1} b; the factors
+   are always kept (keep is the dense interface's). Returns 1 if J has a non-finite entry or is
+   singular: a diagonal entry of R not finite, or at most HPGEN_NZ DBL_EPSILON times the
+   largest (numerically rank deficient; exactly zero where J is structurally singular). */
+static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
+    double w[HPGEN_SP_NROW], rmax = 0.0, rmin = HUGE_VAL;
+    double *V = A, *R = A + HPGEN_SP_NV, *beta = A + HPGEN_SP_NV + HPGEN_SP_NR;
+    const long long* rcol = hpgen_sp_r + 2;
+    int c;
+    (void)keep;
+    if (!hpgen_all_finite(A + HPGEN_J_OFFSET, HPGEN_SP_NJ)) return 1;
+    casadi_qr(hpgen_sp_j, A + HPGEN_J_OFFSET, w, hpgen_sp_v, V, hpgen_sp_r, R, beta,
+              hpgen_sp_prinv, hpgen_sp_pc);
+    for (c = 0; c < HPGEN_NZ; ++c) {      /* R's diagonal: the last entry of each column */
+        double r = fabs(R[rcol[c + 1] - 1]);
+        if (!isfinite(r)) return 1;
+        if (r > rmax) rmax = r;
+        if (r < rmin) rmin = r;
+    }
+    if (!(rmin > HPGEN_NZ * DBL_EPSILON * rmax)) return 1;
+    hpgen_lu_apply(A, piv, b);
+    return 0;
+}
+#else
+static int hpgen_newton_fj(const double* z, const double* g, const double* p, const double* hv,
+                           double* F, double* A) {
+    return hpgen_k_residual_jacobian(z, g, p, hv, F, A);
+}
+
+static int hpgen_newton_j(const double* z, const double* g, const double* p, const double* hv,
+                          double* A) {
+    return hpgen_kernel_jacobian(z, g, p, hv, A);
 }
 
 /* The Newton matrix is kept as J^{-1} (explicit, column-major in A; piv is workspace): a
@@ -183,3 +245,4 @@ static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
     return 0;
 }
 #endif
+#endif /* HPGEN_SPARSE */

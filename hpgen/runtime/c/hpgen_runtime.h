@@ -20,6 +20,11 @@
  *   HPGEN_LEGENDRE_QUADRATIC        1: l is quadratic in xi (one velocity Newton step is exact)
  *   HPGEN_SKIP_G                    1: neither the step nor the record row use g
  *   HPGEN_FLATTEN                   1: inline the kernels into the step (small kernels)
+ *   HPGEN_SPARSE                    0: J dense (column-major, LU); 1: J as its structural
+ *                                   nonzeros, factored by a sparse QR on static patterns:
+ *                                   HPGEN_SP_NJ, _NV, _NR, _NROW (nonzeros of J, V, R and
+ *                                   the rows of V) and the arrays hpgen_sp_j, hpgen_sp_v,
+ *                                   hpgen_sp_r, hpgen_sp_prinv, hpgen_sp_pc (hpgen.codegen.sparse)
  *   HPGEN_HASH                      the content hash (a string literal)
  *   HPGEN_L                         (optional) lanes of the lane-wise kernels hpgen_lane_*
  *
@@ -43,7 +48,7 @@
 #if !defined(HPGEN_N) || !defined(HPGEN_D) || !defined(HPGEN_NZ) || !defined(HPGEN_OPEN) \
     || !defined(HPGEN_W) || !defined(HPGEN_RECORD_USES_XI) \
     || !defined(HPGEN_LEGENDRE_QUADRATIC) || !defined(HPGEN_SKIP_G) \
-    || !defined(HPGEN_FLATTEN) || !defined(HPGEN_HASH)
+    || !defined(HPGEN_FLATTEN) || !defined(HPGEN_HASH) || !defined(HPGEN_SPARSE)
 #error "define the model (HPGEN_N, HPGEN_D, HPGEN_NZ, HPGEN_OPEN, ...) before hpgen_runtime.h"
 #endif
 #if HPGEN_OPEN && (!defined(HPGEN_M) || !defined(HPGEN_P))
@@ -64,8 +69,17 @@
 #endif
 
 /* the version of the exported API (hpgen.abi.ABI_VERSION) */
-#define HPGEN_ABI 6
+#define HPGEN_ABI 7
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
+/* the Newton matrix's storage (doubles): dense, J or J^{-1} column-major; sparse, the QR
+   factors V | R | beta (HPGEN_NZ) followed by J's nonzeros at HPGEN_J_OFFSET */
+#if HPGEN_SPARSE
+#define HPGEN_J_OFFSET (HPGEN_SP_NV + HPGEN_SP_NR + HPGEN_NZ)
+#define HPGEN_LU_SIZE (HPGEN_J_OFFSET + HPGEN_SP_NJ)
+#else
+#define HPGEN_J_OFFSET 0
+#define HPGEN_LU_SIZE (HPGEN_NZ * HPGEN_NZ)
+#endif
 #if HPGEN_OPEN
 #define HPGEN_H (2 + HPGEN_M + HPGEN_P)
 #endif
@@ -151,7 +165,7 @@ typedef struct hpgen_run {
     double z[HPGEN_NZ];              /* solution of the last step (or the initial guess) */
     double dz[HPGEN_PH][HPGEN_NZ];   /* predictor: z_j - G_j of the last steps j = k-1, k-2, ...
                                         (G_j the guess at step j's start, see hpgen_run_step) */
-    double lu[HPGEN_NZ * HPGEN_NZ];  /* J^{-1} of the last Jacobian (simplified Newton) */
+    double lu[HPGEN_LU_SIZE];        /* J^{-1} (sparse: J's QR) of the last Jacobian */
     int piv[HPGEN_NZ];
     long long k;                     /* steps done */
     long long have_prev;             /* how many of dz[0], dz[1], ... are valid (0..HPGEN_PH) */

@@ -1,0 +1,80 @@
+"""The sparse Newton matrix of a module whose J outputs stay sparse (hpgen.derive.sparse_jacobian):
+its pattern and the symbolic analysis of its factorization, computed once at compile time.
+
+The numeric factorization is CasADi's sparse Householder QR (the ``casadi_qr`` and
+``casadi_qr_solve`` of CasADi's C runtime, the code its Linsol "qr" generates): J P_c = Q R
+with a fill-reducing column order P_c (approximate minimum degree on J^T J) and Q kept as
+Householder vectors V. The analysis (``casadi.Sparsity.qr_sparse``) fixes the patterns of V
+and R, the row permutation and the column order, so the runtime only computes numbers on
+static arrays (kernels.c) and sizes known at compile time.
+
+Why QR: J is not symmetric (so no LDL^T, neither CasADi's ``ldl`` nor QDLDL) and its
+multiplier blocks have zero diagonals (RATTLE's constraint rows), which an LU with a static
+order can only pivot on after the right bodies are eliminated; Householder QR needs no
+pivoting, is backward stable, and keeps the factors O(nz) for chains and trees under the
+minimum-degree order. A singular J shows as a negligible diagonal of R.
+
+Conventions: CasADi's compressed sparsity [nrow, ncol, colind (ncol + 1), row (nnz)], J's
+nonzeros in column-major (CCS) order, which is the order of the kernels' J output (the
+structural nonzeros of the nz*nz column, hpgen.codegen.contract.dense_positions).
+"""
+from __future__ import annotations
+
+import casadi
+
+from .contract import CodegenError, dense_positions
+
+#: the CasADi Function whose generated code brings casadi_qr and casadi_qr_solve into
+#: kernels.c (it is not called; the runtime calls those two on the arrays below)
+AUX_FUNCTION = "newton_sparse_qr"
+
+
+def jacobian_sparsity(step):
+    """The Sparsity (nz x nz) of J when the module's J outputs are sparse, else None; the
+    jacobian and residual_jacobian kernels must agree."""
+    nz = step.nz
+    sps = [step.kernel("jacobian").function.sparsity_out(0),
+           step.kernel("residual_jacobian").function.sparsity_out(1)]
+    if all(sp.is_dense() for sp in sps):
+        return None
+    pos = [dense_positions(sp) for sp in sps]
+    if pos[0] != pos[1]:
+        raise CodegenError("the jacobian and residual_jacobian kernels have different J "
+                           "sparsity")
+    rows, cols = [p % nz for p in pos[0]], [p // nz for p in pos[0]]
+    sp = casadi.Sparsity.triplet(nz, nz, rows, cols)
+    if dense_positions(sp) != pos[0]:
+        raise CodegenError("J's nonzeros are not in column-major order")
+    return sp
+
+
+def sparse_context(step) -> dict | None:
+    """kernels.c.j2's ``sparse`` entry (None for a dense J): sizes and static arrays of the
+    QR's symbolic analysis. nnz_j, nnz_v, nnz_r: nonzeros of J, V, R; nrow_v: rows of V (nz,
+    or more when J is structurally singular); sp_j, sp_v, sp_r: compressed sparsities;
+    prinv: the inverse row permutation; pc: the column order."""
+    sp = jacobian_sparsity(step)
+    if sp is None:
+        return None
+    spv, spr, prinv, pc = sp.qr_sparse(True)
+    return {"nnz_j": sp.nnz(), "nnz_v": spv.nnz(), "nnz_r": spr.nnz(), "nrow_v": spv.size1(),
+            "sp_j": list(sp.compress()), "sp_v": list(spv.compress()),
+            "sp_r": list(spr.compress()), "prinv": [int(i) for i in prinv],
+            "pc": [int(i) for i in pc]}
+
+
+def aux_function(sp):
+    """x = J \\ b by CasADi's Linsol "qr" on J's sparsity (for its generated code)."""
+    A = casadi.MX.sym("J", sp)
+    b = casadi.MX.sym("b", sp.size1())
+    return casadi.Function(AUX_FUNCTION, [A, b], [casadi.solve(A, b, "qr")])
+
+
+def meta_entry(step) -> dict:
+    """meta.json's "jacobian" entry: {"storage": "dense"} or {"storage": "sparse", "colind",
+    "row"} (J's CCS pattern, the order of the J nonzeros the runtime's Newton works on)."""
+    sp = jacobian_sparsity(step)
+    if sp is None:
+        return {"storage": "dense"}
+    return {"storage": "sparse", "colind": [int(i) for i in sp.colind()],
+            "row": [int(i) for i in sp.row()]}
