@@ -75,14 +75,14 @@ def work_sizes(f) -> dict[str, int]:
             "sz_w": int(f.sz_w())}
 
 
-def c_kernel_context(kernel) -> dict:
-    """What kernels.c.j2 needs to wrap one kernel: symbol, args and work sizes."""
+def c_kernel_context(kernel, nz_variant: bool = False) -> dict:
+    """What kernels.c.j2 needs to wrap one kernel: symbol, args and work sizes; nz_variant:
+    also a wrapper hpgen_k_<name>_nz writing every output's structural nonzeros."""
     f = kernel.function
     fused = C_FROM_FUSED.get(kernel.name)
     return {"name": kernel.name, "symbol": f.name(),
-            # a kernel with a sparse output also gets hpgen_k_<name>_nz, which writes the
-            # structural nonzeros of every output (the sparse Newton's J)
-            "nz_variant": not all(f.sparsity_out(i).is_dense() for i in range(f.n_out())),
+            # a sparse Newton matrix: hpgen_k_residual_jacobian_nz writes F and J's nonzeros
+            "nz_variant": nz_variant,
             "fused": None if fused is None else {"name": fused[0], "output": fused[1]},
             "inputs": [_arg(f, i, False, kernel.inputs[i]) for i in range(f.n_in())],
             "outputs": [_arg(f, i, True, kernel.outputs[i]) for i in range(f.n_out())],

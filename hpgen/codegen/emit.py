@@ -163,13 +163,16 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
     info = _check_info(info)
     head = header_lines(info)
     instructions = _step_instructions(step)
+    sparse = sparse_context(step)
     common = {"header_lines": head, "n": step.n, "d": step.d}
     return {
         "kernels.c.j2": dict(common, nz=step.nz, hash=info["hash"],
                              casadi_code=casadi_c_code(step, info["module"]),
-                             kernels=[c_kernel_context(k) for k in step.kernels],
+                             kernels=[c_kernel_context(k, sparse is not None and
+                                                       k.name == "residual_jacobian")
+                                      for k in step.kernels],
                              flatten=instructions <= FLATTEN_MAX_INSTRUCTIONS,
-                             sparse=sparse_context(step),
+                             sparse=sparse,
                              lanes=lanes_context(step, instructions),
                              record_width=step.record_width,
                              open=None if step.open_spec is None else {

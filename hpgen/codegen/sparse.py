@@ -15,14 +15,14 @@ pivoting, is backward stable, and keeps the factors O(nz) for chains and trees u
 minimum-degree order. A singular J shows as a negligible diagonal of R.
 
 Conventions: CasADi's compressed sparsity [nrow, ncol, colind (ncol + 1), row (nnz)], J's
-nonzeros in column-major (CCS) order, which is the order of the kernels' J output (the
-structural nonzeros of the nz*nz column, hpgen.codegen.contract.dense_positions).
+nonzeros in column-major (CCS) order, which is the order in which CasADi's code writes the
+kernels' J output (the public kernels still return J dense, column-major).
 """
 from __future__ import annotations
 
 import casadi
 
-from .contract import CodegenError, dense_positions
+from .contract import CodegenError
 
 #: the CasADi Function whose generated code brings casadi_qr and casadi_qr_solve into
 #: kernels.c (it is not called; the runtime calls those two on the arrays below)
@@ -30,22 +30,21 @@ AUX_FUNCTION = "newton_sparse_qr"
 
 
 def jacobian_sparsity(step):
-    """The Sparsity (nz x nz) of J when the module's J outputs are sparse, else None; the
-    jacobian and residual_jacobian kernels must agree."""
+    """The Sparsity (nz x nz) of J when the module's Newton matrix is sparse, else None.
+
+    The derive stage marks a sparse J by the shape of the J outputs of the jacobian and
+    residual_jacobian kernels: the nz x nz matrix (its structural nonzeros, column-major),
+    where a dense J is the nz*nz column (hpgen.derive.sparse_jacobian). Both must agree."""
     nz = step.nz
     sps = [step.kernel("jacobian").function.sparsity_out(0),
            step.kernel("residual_jacobian").function.sparsity_out(1)]
-    if all(sp.is_dense() for sp in sps):
+    shaped = [nz > 1 and sp.size1() == sp.size2() == nz for sp in sps]
+    if not any(shaped):
         return None
-    pos = [dense_positions(sp) for sp in sps]
-    if pos[0] != pos[1]:
-        raise CodegenError("the jacobian and residual_jacobian kernels have different J "
-                           "sparsity")
-    rows, cols = [p % nz for p in pos[0]], [p // nz for p in pos[0]]
-    sp = casadi.Sparsity.triplet(nz, nz, rows, cols)
-    if dense_positions(sp) != pos[0]:
-        raise CodegenError("J's nonzeros are not in column-major order")
-    return sp
+    if not all(shaped) or sps[0] != sps[1]:
+        raise CodegenError("the jacobian and residual_jacobian kernels disagree on J's "
+                           "storage or sparsity")
+    return sps[0]
 
 
 def sparse_context(step) -> dict | None:

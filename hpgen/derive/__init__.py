@@ -41,9 +41,10 @@ def _flat(M):
     return ca.densify(ca.reshape(M, M.numel(), 1))
 
 
-#: the step's Jacobian J = dF/dz stays sparse (the kernels' J output keeps its structural
-#: nonzeros, the runtime factors it with a sparse QR, hpgen.codegen.sparse) when nz is at
-#: least SPARSE_MIN_NZ and at most SPARSE_MAX_DENSITY of its entries are structural nonzeros
+#: the step's Jacobian J = dF/dz stays sparse (the kernels' J output is the nz x nz matrix
+#: with J's structural nonzeros, not the dense nz*nz column; the runtime factors it with a
+#: sparse QR, hpgen.codegen.sparse) when nz is at least SPARSE_MIN_NZ and at most
+#: SPARSE_MAX_DENSITY of its entries are structural nonzeros
 SPARSE_MIN_NZ = 48
 SPARSE_MAX_DENSITY = 0.3
 
@@ -123,7 +124,7 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None) -> DiscreteStep:
 
     J = ca.jacobian(eqs.residual, z)
     sparse = sparse_jacobian(J, jacobian)
-    J_out = ca.reshape(J, nz * nz, 1) if sparse else _flat(J)   # sparse: J's CCS nonzeros
+    J_out = J if sparse else _flat(J)   # sparse: the nz x nz matrix, its CCS nonzeros
     # the Legendre inverse at a record: one Newton step from xi = 0, exact when l is quadratic
     # in xi (hessian free of xi: legendre_quadratic), the runtime's start otherwise
     at0 = lambda e: ca.substitute(e, xi, ca.SX.zeros(d))  # noqa: E731
