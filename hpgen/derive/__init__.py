@@ -44,9 +44,10 @@ def _flat(M):
 #: the step's Jacobian J = dF/dz stays sparse (the kernels' J output is the nz x nz matrix
 #: with J's structural nonzeros, not the dense nz*nz column; the runtime factors it with a
 #: sparse QR, hpgen.codegen.sparse) when nz is at least SPARSE_MIN_NZ and at most
-#: SPARSE_MAX_DENSITY of its entries are structural nonzeros
-SPARSE_MIN_NZ = 48
-SPARSE_MAX_DENSITY = 0.3
+#: SPARSE_MAX_DENSITY of its entries are structural nonzeros (the crossover of the pendulum
+#: chain's step time, benchmarks/chain_linear_algebra.py: every shipped scene stays dense)
+SPARSE_MIN_NZ = 32
+SPARSE_MAX_DENSITY = 0.4
 
 
 def sparse_jacobian(J, jacobian) -> bool:
