@@ -8,7 +8,8 @@ one process, for N = 2, 3, 4 (and more with --n, compiles permitting).
 For every N and storage, the scene's start (the chain swung as one rigid body) and h, and
 both Newton variants (full: J at every iterate; simplified: J^{-1} or the QR kept across
 iterations and steps):
-- us/step: the best of ``repeats`` runs of ``steps`` steps (simulate, every = steps);
+- us/step: the best of ``repeats`` runs of ``steps`` steps (simulate, every = steps), the
+  dense and the sparse module's runs interleaved;
 - it/step, J/step: Newton iterations and Jacobian evaluations (factorizations) per step;
 - kernels us/step: it/step residual evaluations' worth of kernel time, J/step of them the
   residual_jacobian kernel instead of the residual, each kernel timed alone through the
@@ -76,38 +77,46 @@ def qr_flops(integ) -> int:
                    if rr[k] < c))
 
 
-def measure(n: int, storage: str, steps: int, repeats: int) -> dict:
+def prepare(n: int, storage: str) -> dict:
+    """Compile (timed), the kernel times and the factorization's flops of one storage."""
     sc = scene(n)
     t = time.perf_counter()
     integ = hpgen.compile(MODEL, parameters={"N": n}, jacobian=storage)
     compile_s = time.perf_counter() - t
     nz = integ.meta["nz"]
-    g0 = np.asarray(sc.g0, dtype=float)
-    h = sc.h
-    tr = integ.simulate(g0, h, 1, xi0=sc.xi0)
+    tr = integ.simulate(sc.g0, sc.h, 1, xi0=sc.xi0)
     gf, pk = np.asarray(tr.g[-1]).ravel(order="F"), np.asarray(tr.mu[-1])
     zk = np.zeros(nz)
-    args = (zk, gf, pk, np.array([h]))
-    over = kernel_time(integ, "margin", (zk, np.array([h])))
-    t_r = kernel_time(integ, "residual", args) - over
-    t_rj = kernel_time(integ, "residual_jacobian", args, reps=300) - over
-    out = {"N": n, "storage": storage, "nz": nz, "compile_s": round(compile_s, 1),
-           "residual_us": t_r * 1e6, "residual_jacobian_us": t_rj * 1e6,
-           "flops": (2 * nz ** 3 // 3) if storage == "dense" else qr_flops(integ)}
+    args = (zk, gf, pk, np.array([sc.h]))
+    over = kernel_time(integ, "margin", (zk, np.array([sc.h])))
+    return {"integ": integ, "scene": sc, "N": n, "storage": storage, "nz": nz,
+            "compile_s": round(compile_s, 1),
+            "residual_us": (kernel_time(integ, "residual", args) - over) * 1e6,
+            "residual_jacobian_us": (kernel_time(integ, "residual_jacobian", args, reps=300)
+                                     - over) * 1e6,
+            "flops": (2 * nz ** 3 // 3) if storage == "dense" else qr_flops(integ)}
+
+
+def measure(pair: list, steps: int, repeats: int) -> None:
+    """us/step (best of ``repeats``, the storages' runs interleaved so that both see the same
+    load), iterations and Jacobians per step and the split, into each entry of ``pair``."""
     for variant, simplified in (("full", False), ("simplified", True)):
         opts = NewtonOptions(simplified=simplified)
-        best, run = np.inf, None
+        best, runs = [np.inf] * len(pair), [None] * len(pair)
         for _ in range(repeats):
-            t = time.perf_counter()
-            run = integ.simulate(g0, h, steps, xi0=sc.xi0, every=steps, newton=opts)
-            best = min(best, time.perf_counter() - t)
-        it, jac = run.newton_iterations / steps, run.jacobians / steps
-        step_us = best / steps * 1e6
-        kern_us = (jac * t_rj + (it - jac) * t_r) * 1e6
-        out[variant] = {"us_step": step_us, "it_step": it, "J_step": jac,
-                        "kernels_us": kern_us, "rest_us": step_us - kern_us,
-                        "g_end": np.asarray(run.g[-1]).tolist()}
-    return out
+            for i, r in enumerate(pair):
+                sc = r["scene"]
+                t = time.perf_counter()
+                runs[i] = r["integ"].simulate(sc.g0, sc.h, steps, xi0=sc.xi0, every=steps,
+                                              newton=opts)
+                best[i] = min(best[i], time.perf_counter() - t)
+        for r, b, run in zip(pair, best, runs):
+            it, jac = run.newton_iterations / steps, run.jacobians / steps
+            step_us = b / steps * 1e6
+            kern_us = jac * r["residual_jacobian_us"] + (it - jac) * r["residual_us"]
+            r[variant] = {"us_step": step_us, "it_step": it, "J_step": jac,
+                          "kernels_us": kern_us, "rest_us": step_us - kern_us,
+                          "g_end": np.asarray(run.g[-1]).tolist()}
 
 
 def main() -> int:
@@ -122,7 +131,8 @@ def main() -> int:
           "| simplified us/step | it/step | J/step | kernels us | rest us | compile s |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for n in a.n:
-        pair = [measure(n, s, a.steps, a.repeats) for s in ("dense", "sparse")]
+        pair = [prepare(n, s) for s in ("dense", "sparse")]
+        measure(pair, a.steps, a.repeats)
         for r in pair:
             f, s = r["full"], r["simplified"]
             print(f"| {n} | {r['nz']} | {r['storage']} | {r['flops']} | {f['us_step']:.1f} | "
@@ -134,7 +144,7 @@ def main() -> int:
         print(f"|   | sparse/dense: full {pair[1]['full']['us_step'] / pair[0]['full']['us_step']:.2f},"
               f" simplified {pair[1]['simplified']['us_step'] / pair[0]['simplified']['us_step']:.2f};"
               f" max |g_dense - g_sparse| at the end {dev:.1e} |", flush=True)
-        rows += pair
+        rows += [{k: v for k, v in r.items() if k not in ("integ", "scene")} for r in pair]
     if a.json:
         Path(a.json).write_text(json.dumps(rows, indent=1))
     return 0

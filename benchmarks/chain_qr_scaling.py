@@ -15,6 +15,7 @@ them). The QR's symbolic analysis is the one the compiler emits (casadi.Sparsity
 with AMD), its C the one CasADi's code generator writes into kernels.c, compiled here with
 the runtime's flags (-O3) and called through ctypes (best of 5 timings of ``reps`` calls).
 Columns: nonzeros of J, of V + R; flops of one QR (4 |v_r| per R_rc above the diagonal);
+the fill and flops of the LU with a static order it was chosen over (static_lu_flops);
 us per factorization (QR) and per solve with the kept factors (simplified Newton's
 iterate); LAPACK dense LU + solve of the nz x nz matrix for comparison; the ratios to the
 smallest N.
@@ -79,6 +80,34 @@ def extrapolated_pattern(base: np.ndarray, nb: int, n: int) -> np.ndarray:
     return M
 
 
+def static_lu_flops(M: np.ndarray) -> tuple[int, int]:
+    """(flops, nnz(L + U)) of the peer the QR was chosen over: an LU without run-time
+    pivoting on an order fixed at compile time, Markowitz's (the pivot of least
+    (|L col| |U row|), ties by index) on the structure with fill, where a variable with a
+    structurally zero diagonal (a multiplier) is a pivot only once all its neighbours are
+    eliminated (the Schur complement on it is then the full -C A^-1 B). Flops: 2 |L col|
+    |U row| + |L col| per pivot."""
+    n = M.shape[0]
+    rows = [set(np.flatnonzero(M[i]).tolist()) for i in range(n)]
+    cols = [set(np.flatnonzero(M[:, j]).tolist()) for j in range(n)]
+    waits = {k: (rows[k] | cols[k]) - {k} for k in range(n) if not M[k, k]}
+    alive, flops, nnz = set(range(n)), 0, 0
+    while alive:
+        ready = [k for k in alive if k in rows[k] and not (waits.get(k, set()) & alive)]
+        k = min(ready, key=lambda v: ((len(rows[v]) - 1) * (len(cols[v]) - 1), v))
+        L, U = cols[k] - {k}, rows[k] - {k}
+        flops += 2 * len(L) * len(U) + len(L)
+        nnz += len(L) + len(U) + 1
+        for i in L:
+            rows[i] |= U
+            rows[i].discard(k)
+        for j in U:
+            cols[j] |= L
+            cols[j].discard(k)
+        alive.discard(k)
+    return flops, nnz
+
+
 def qr_library(tmp: Path) -> ctypes.CDLL:
     """casadi_qr and casadi_qr_solve as CasADi's code generator writes them (a Linsol "qr"),
     compiled with -O3; symbols bench_qr, bench_qr_solve."""
@@ -136,7 +165,9 @@ def measure(lib, M: np.ndarray, rng) -> dict:
     vcol, rci, rr = np.diff(spv.colind()), spr.colind(), spr.row()
     flops = int(sum(4 * vcol[rr[k]] for c in range(nz) for k in range(rci[c], rci[c + 1])
                     if rr[k] < c))
+    lu_flops, lu_nnz = static_lu_flops(M)
     return {"nz": nz, "nnz_j": sp.nnz(), "nnz_vr": spv.nnz() + spr.nnz(), "flops": flops,
+            "lu_flops": lu_flops, "lu_nnz": lu_nnz,
             "qr_us": t_qr * 1e6, "solve_us": t_solve * 1e6, "lapack_us": t_lapack * 1e6,
             "residual": err}
 
@@ -155,15 +186,15 @@ def main() -> int:
     rng = np.random.default_rng(0)
     with tempfile.TemporaryDirectory() as tmp:
         lib = qr_library(Path(tmp))
-        print("| N | nz | nnz J | nnz V+R | QR flops | QR us | solve us | LAPACK LU+solve us "
-              "| QR / QR(N0) | solve / solve(N0) | |J x - b|/|b| |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|")
+        print("| N | nz | nnz J | nnz V+R | QR flops | static LU: nnz L+U, flops | QR us | "
+              "solve us | LAPACK LU+solve us | QR / QR(N0) | solve / solve(N0) | |J x - b|/|b| |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|")
         first = None
         for n in a.n:
             r = measure(lib, extrapolated_pattern(base, a.base, n), rng)
             first = first or r
             print(f"| {n} | {r['nz']} | {r['nnz_j']} | {r['nnz_vr']} | {r['flops']} | "
-                  f"{r['qr_us']:.1f} | {r['solve_us']:.2f} | {r['lapack_us']:.0f} | "
+                  f"{r['lu_nnz']}, {r['lu_flops']} | {r['qr_us']:.1f} | {r['solve_us']:.2f} | {r['lapack_us']:.0f} | "
                   f"{r['qr_us'] / first['qr_us']:.2f} | {r['solve_us'] / first['solve_us']:.2f} "
                   f"| {r['residual']:.1e} |", flush=True)
     return 0
