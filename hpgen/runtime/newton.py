@@ -31,7 +31,9 @@ for simplified Newton, forms J^{-1}, which the other iterates apply as a matrix-
 product. For nz <= UNROLL_MAX these are printed once per nz as straight-line Python, so that
 with the same kernels (the backends' kernels are bitwise equal) the Python backend computes
 the same doubles as the C backend; above UNROLL_MAX numpy/LAPACK does the linear algebra,
-which agrees with C to round-off. The iterates with a kept J^{-1} run, when the module has
+which agrees with C to round-off; a module whose Newton matrix is sparse (meta.json
+"jacobian") solves with SuperLU on J's structural nonzeros (hpgen.runtime.sparse), which
+agrees with C's sparse QR to round-off. The iterates with a kept J^{-1} run, when the module has
 it, in its printed ITERATE (hpgen.codegen.pyiterate: the residual's body, J^{-1} F, z - dz and
 this loop's tests fused into one function, the same operations), which hands back at a
 refresh of J or to the way below at a math error or a non-finite value; full Newton's

@@ -9,8 +9,8 @@ singularity test as in C: a diagonal of the triangular factor that is not finite
 most nz DBL_EPSILON times the largest makes factor_solve return None (Newton's NONFINITE).
 
 The kept factors are a tuple of J's nonzeros (what a run's checkpoint saves,
-hpgen.runtime.loop.Run.to_arrays) carrying the SuperLU object; a tuple restored from a
-checkpoint is factored again at its first use (the same numbers, the same factors).
+hpgen.runtime.loop.Run.to_arrays) carrying the SuperLU object; a plain tuple restored from a
+checkpoint is factored where it is applied (the same numbers, the same factors).
 """
 from __future__ import annotations
 
