@@ -1,6 +1,6 @@
 """How the sparse Newton linear algebra of the N-link pendulum chain grows with N, up to 64
-links: the C runtime's factorization (casadi_qr) and solve (casadi_qr_solve) alone, on the
-chain's Jacobian pattern, against LAPACK's dense LU (numpy) of the same matrix.
+links: the C runtime's factorizations and solves alone (the static LU and CasADi's sparse QR
+it falls back to), on the chain's Jacobian pattern, against LAPACK's dense LU (numpy).
 
     PYTHONPATH=. python benchmarks/chain_qr_scaling.py [--n 8 16 32 64] [--base 5]
 
@@ -14,11 +14,13 @@ patterns) before timing. The values are random (a Householder QR's cost does not
 them). The QR's symbolic analysis is the one the compiler emits (casadi.Sparsity.qr_sparse
 with AMD), its C the one CasADi's code generator writes into kernels.c, compiled here with
 the runtime's flags (-O3) and called through ctypes (best of 5 timings of ``reps`` calls).
-Columns: nonzeros of J, of V + R; flops of one QR (4 |v_r| per R_rc above the diagonal);
-the fill and flops of the LU with a static order it was chosen over (static_lu_flops);
-us per factorization (QR) and per solve with the kept factors (simplified Newton's
-iterate); LAPACK dense LU + solve of the nz x nz matrix for comparison; the ratios to the
-smallest N.
+The static LU (the runtime's first choice) likewise: hpgen_slu_factor / hpgen_slu_solve
+taken from hpgen_linalg.c with the compile-time analysis (hpgen.codegen.static_lu).
+Columns: nonzeros of J; for the LU and the QR the nonzeros of the factors (L + U, V + R),
+flops of one factorization (LU: static_lu.flops; QR: 4 |v_r| per R_rc above the diagonal),
+us per factorization and per solve with the kept factors (simplified Newton's iterate);
+LAPACK's dense LU + solve of the nz x nz matrix for comparison; the factorizations' time
+ratios to the smallest N; the largest relative residual of the solves.
 """
 from __future__ import annotations
 
@@ -32,10 +34,15 @@ from pathlib import Path
 import casadi as ca
 import numpy as np
 
+from hpgen.abi import STATIC_PIVOT_TOL
 from hpgen.api import CompileOptions, derive_module, read_model_text
+from hpgen.codegen.static_lu import flops as lu_flops
+from hpgen.codegen.static_lu import static_lu
 from hpgen.model.overrides import apply_overrides
 
-MODEL = str(Path(__file__).resolve().parent.parent / "examples" / "pendulum_chain.yaml")
+ROOT = Path(__file__).resolve().parent.parent
+MODEL = str(ROOT / "examples" / "pendulum_chain.yaml")
+RUNTIME_LINALG = ROOT / "hpgen" / "runtime" / "c" / "hpgen_linalg.c"
 SIZES = {"x": 6, "l": 3, "n": 3}       # unknowns per link (Xi) and per joint (lambda, nu)
 
 
@@ -80,32 +87,38 @@ def extrapolated_pattern(base: np.ndarray, nb: int, n: int) -> np.ndarray:
     return M
 
 
-def static_lu_flops(M: np.ndarray) -> tuple[int, int]:
-    """(flops, nnz(L + U)) of the peer the QR was chosen over: an LU without run-time
-    pivoting on an order fixed at compile time, Markowitz's (the pivot of least
-    (|L col| |U row|), ties by index) on the structure with fill, where a variable with a
-    structurally zero diagonal (a multiplier) is a pivot only once all its neighbours are
-    eliminated (the Schur complement on it is then the full -C A^-1 B). Flops: 2 |L col|
-    |U row| + |L col| per pivot."""
+def lu_library(tmp: Path, M: np.ndarray, tag: str):
+    """(StaticLU, library with bench_lu_factor(J, X), bench_lu_solve(X, b)): the runtime's
+    hpgen_slu_factor / hpgen_slu_solve (taken from hpgen_linalg.c) on the compile-time
+    analysis of pattern M (hpgen.codegen.static_lu), built like a module (-O3)."""
     n = M.shape[0]
-    rows = [set(np.flatnonzero(M[i]).tolist()) for i in range(n)]
-    cols = [set(np.flatnonzero(M[:, j]).tolist()) for j in range(n)]
-    waits = {k: (rows[k] | cols[k]) - {k} for k in range(n) if not M[k, k]}
-    alive, flops, nnz = set(range(n)), 0, 0
-    while alive:
-        ready = [k for k in alive if k in rows[k] and not (waits.get(k, set()) & alive)]
-        k = min(ready, key=lambda v: ((len(rows[v]) - 1) * (len(cols[v]) - 1), v))
-        L, U = cols[k] - {k}, rows[k] - {k}
-        flops += 2 * len(L) * len(U) + len(L)
-        nnz += len(L) + len(U) + 1
-        for i in L:
-            rows[i] |= U
-            rows[i].discard(k)
-        for j in U:
-            cols[j] |= L
-            cols[j].discard(k)
-        alive.discard(k)
-    return flops, nnz
+    c_idx, r_idx = np.nonzero(M.T)
+    colind = np.searchsorted(c_idx, np.arange(n + 1)).tolist()
+    lu = static_lu(n, colind, r_idx.tolist())
+    code = RUNTIME_LINALG.read_text()
+    code = code[code.index("static int hpgen_slu_factor("):]
+    code = code[:code.index("#endif")]
+    arrays = "".join(f"static const int hpgen_slu_{name}[] = {{{', '.join(map(str, v))}}};\n"
+                     for name, v in (("perm", lu.perm), ("colptr", lu.colptr), ("row", lu.row),
+                                     ("diag", lu.diag), ("jmap", lu.jmap)))
+    src = tmp / f"lu{tag}.c"
+    src.write_text(f"""#include <math.h>
+#include <string.h>
+#define HPGEN_NZ {n}
+#define HPGEN_SP_NJ {len(lu.jmap)}
+#define HPGEN_SP_NLU {lu.nnz}
+#define HPGEN_STATIC_PIVOT_TOL {STATIC_PIVOT_TOL!r}
+{arrays}{code}
+int bench_lu_factor(const double* J, double* X) {{ return hpgen_slu_factor(J, X); }}
+void bench_lu_solve(const double* X, const double* b0, double* b) {{
+    memcpy(b, b0, sizeof(double) * HPGEN_NZ);
+    hpgen_slu_solve(X, b);
+}}
+""")
+    lib = tmp / f"lu{tag}.so"
+    subprocess.run(["cc", "-std=c99", "-O3", "-fPIC", "-shared", "-o", str(lib), str(src),
+                    "-lm"], check=True)
+    return lu, ctypes.CDLL(str(lib))
 
 
 def qr_library(tmp: Path) -> ctypes.CDLL:
@@ -117,7 +130,17 @@ def qr_library(tmp: Path) -> ctypes.CDLL:
                                       "casadi_int": "long long int"})
     cg.add(ca.Function("aux", [A, b], [ca.solve(A, b, "qr")]))
     src = tmp / "qrbench.c"
-    src.write_text(cg.dump())
+    src.write_text(cg.dump() + """
+#include <string.h>
+/* x = J^{-1} b0 with the kept factors (a solve from the same right-hand side every time) */
+void bench_qr_solve_from(long long n, const double* b0, double* x, const long long* sv,
+                         const double* v, const long long* sr, const double* r,
+                         const double* beta, const long long* prinv, const long long* pc,
+                         double* w) {
+    memcpy(x, b0, sizeof(double) * n);
+    casadi_qr_solve(x, 1, 0, sv, v, sr, r, beta, prinv, pc, w);
+}
+""")
     lib = tmp / "qrbench.so"
     subprocess.run(["cc", "-std=c99", "-O3", "-fPIC", "-shared", "-o", str(lib), str(src), "-lm"],
                    check=True)
@@ -134,7 +157,7 @@ def best_of(f, reps, repeats=5) -> float:
     return best
 
 
-def measure(lib, M: np.ndarray, rng) -> dict:
+def measure(lib, M: np.ndarray, rng, tmp: Path, tag: str) -> dict:
     nz = M.shape[0]
     c_idx, r_idx = np.nonzero(M.T)
     sp = ca.Sparsity.triplet(nz, nz, r_idx.tolist(), c_idx.tolist())
@@ -150,24 +173,34 @@ def measure(lib, M: np.ndarray, rng) -> dict:
     ptr = lambda a: a.ctypes.data_as(P)  # noqa: E731
     qr_args = (ptr(sj), ptr(vals), ptr(w), ptr(sv), ptr(V), ptr(sr), ptr(R), ptr(beta),
                ptr(pri), ptr(pcc))
-    solve_args = (ptr(x), ctypes.c_longlong(1), ctypes.c_longlong(0), ptr(sv), ptr(V), ptr(sr),
-                  ptr(R), ptr(beta), ptr(pri), ptr(pcc), ptr(w))
+    b0 = x.copy()
+    solve_args = (ctypes.c_longlong(nz), ptr(b0), ptr(x), ptr(sv), ptr(V), ptr(sr), ptr(R),
+                  ptr(beta), ptr(pri), ptr(pcc), ptr(w))
     lib.bench_qr(*qr_args)
     dense = np.zeros((nz, nz))
     dense[np.asarray(sp.row()), np.asarray(sp.get_col())] = vals
-    b0 = x.copy()
-    lib.bench_qr_solve(*solve_args)
+    lib.bench_qr_solve_from(*solve_args)
     err = np.abs(dense @ x - b0).max() / np.abs(b0).max()
     reps = max(20, int(2e5 / nz))
     t_qr = best_of(lambda: lib.bench_qr(*qr_args), reps)
-    t_solve = best_of(lambda: lib.bench_qr_solve(*solve_args), reps)
+    t_solve = best_of(lambda: lib.bench_qr_solve_from(*solve_args), reps)
     t_lapack = best_of(lambda: np.linalg.solve(dense, b0), max(3, reps // 50))
     vcol, rci, rr = np.diff(spv.colind()), spr.colind(), spr.row()
     flops = int(sum(4 * vcol[rr[k]] for c in range(nz) for k in range(rci[c], rci[c + 1])
                     if rr[k] < c))
-    lu_flops, lu_nnz = static_lu_flops(M)
+    lu, lulib = lu_library(tmp, M, tag)
+    jnz = np.ascontiguousarray(vals)             # J's nonzeros, CCS order, as the kernels'
+    X, bl = np.zeros(lu.nnz), b0.copy()
+    lu_args = (ptr(jnz), ptr(X))
+    assert lulib.bench_lu_factor(*lu_args) == 0
+    lus_args = (ptr(X), ptr(b0), ptr(bl))
+    lulib.bench_lu_solve(*lus_args)
+    err = max(err, np.abs(dense @ bl - b0).max() / np.abs(b0).max())
+    t_lu = best_of(lambda: lulib.bench_lu_factor(*lu_args), reps)
+    t_lus = best_of(lambda: lulib.bench_lu_solve(*lus_args), reps)
     return {"nz": nz, "nnz_j": sp.nnz(), "nnz_vr": spv.nnz() + spr.nnz(), "flops": flops,
-            "lu_flops": lu_flops, "lu_nnz": lu_nnz,
+            "lu_flops": lu_flops(lu), "lu_nnz": lu.nnz, "lu_us": t_lu * 1e6,
+            "lu_solve_us": t_lus * 1e6,
             "qr_us": t_qr * 1e6, "solve_us": t_solve * 1e6, "lapack_us": t_lapack * 1e6,
             "residual": err}
 
@@ -186,17 +219,19 @@ def main() -> int:
     rng = np.random.default_rng(0)
     with tempfile.TemporaryDirectory() as tmp:
         lib = qr_library(Path(tmp))
-        print("| N | nz | nnz J | nnz V+R | QR flops | static LU: nnz L+U, flops | QR us | "
-              "solve us | LAPACK LU+solve us | QR / QR(N0) | solve / solve(N0) | |J x - b|/|b| |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+        print("| N | nz | nnz J | LU: nnz L+U | flops | factor us | solve us | QR: nnz V+R | "
+              "flops | factor us | solve us | LAPACK LU+solve us | LU factor / N0 | "
+              "QR factor / N0 | max |J x - b|/|b| |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         first = None
         for n in a.n:
-            r = measure(lib, extrapolated_pattern(base, a.base, n), rng)
+            r = measure(lib, extrapolated_pattern(base, a.base, n), rng, Path(tmp), str(n))
             first = first or r
-            print(f"| {n} | {r['nz']} | {r['nnz_j']} | {r['nnz_vr']} | {r['flops']} | "
-                  f"{r['lu_nnz']}, {r['lu_flops']} | {r['qr_us']:.1f} | {r['solve_us']:.2f} | {r['lapack_us']:.0f} | "
-                  f"{r['qr_us'] / first['qr_us']:.2f} | {r['solve_us'] / first['solve_us']:.2f} "
-                  f"| {r['residual']:.1e} |", flush=True)
+            print(f"| {n} | {r['nz']} | {r['nnz_j']} | {r['lu_nnz']} | {r['lu_flops']} | "
+                  f"{r['lu_us']:.1f} | {r['lu_solve_us']:.2f} | {r['nnz_vr']} | {r['flops']} | "
+                  f"{r['qr_us']:.1f} | {r['solve_us']:.2f} | {r['lapack_us']:.0f} | "
+                  f"{r['lu_us'] / first['lu_us']:.2f} | {r['qr_us'] / first['qr_us']:.2f} | "
+                  f"{r['residual']:.1e} |", flush=True)
     return 0
 
 

@@ -1,18 +1,21 @@
 """The sparse Newton matrix of a module whose J outputs stay sparse (hpgen.derive.sparse_jacobian):
 its pattern and the symbolic analysis of its factorization, computed once at compile time.
 
-The numeric factorization is CasADi's sparse Householder QR (the ``casadi_qr`` and
+The numeric factorization is an LU with a static pivot order (hpgen.codegen.static_lu) and,
+for a J on which a static pivot fails at run time (or with no static order), CasADi's sparse
+Householder QR (the ``casadi_qr`` and
 ``casadi_qr_solve`` of CasADi's C runtime, the code its Linsol "qr" generates): J P_c = Q R
 with a fill-reducing column order P_c (approximate minimum degree on J^T J) and Q kept as
 Householder vectors V. The analysis (``casadi.Sparsity.qr_sparse``) fixes the patterns of V
 and R, the row permutation and the column order, so the runtime only computes numbers on
 static arrays (kernels.c) and sizes known at compile time.
 
-Why QR: J is not symmetric (so no LDL^T, neither CasADi's ``ldl`` nor QDLDL) and its
-multiplier blocks have zero diagonals (RATTLE's constraint rows), which an LU with a static
-order can only pivot on after the right bodies are eliminated; Householder QR needs no
-pivoting, is backward stable, and keeps the factors O(nz) for chains and trees under the
-minimum-degree order. A singular J shows as a negligible diagonal of R.
+Why these two: J is not symmetric (so no LDL^T, neither CasADi's ``ldl`` nor QDLDL) and its
+multiplier blocks have zero diagonals (RATTLE's constraint rows). The static LU pivots on them
+only after the bodies they join are eliminated and costs a fraction of the QR's flops;
+Householder QR needs no pivoting at all, is backward stable, and keeps the factors O(nz) for
+chains and trees under the minimum-degree order: the safety net. A singular J shows as a
+negligible diagonal of R.
 
 Conventions: CasADi's compressed sparsity [nrow, ncol, colind (ncol + 1), row (nnz)], J's
 nonzeros in column-major (CCS) order, which is the order in which CasADi's code writes the
@@ -23,6 +26,7 @@ from __future__ import annotations
 import casadi
 
 from .contract import CodegenError
+from .static_lu import static_lu
 
 #: the CasADi Function whose generated code brings casadi_qr and casadi_qr_solve into
 #: kernels.c (it is not called; the runtime calls those two on the arrays below)
@@ -51,15 +55,20 @@ def sparse_context(step) -> dict | None:
     """kernels.c.j2's ``sparse`` entry (None for a dense J): sizes and static arrays of the
     QR's symbolic analysis. nnz_j, nnz_v, nnz_r: nonzeros of J, V, R; nrow_v: rows of V (nz,
     or more when J is structurally singular); sp_j, sp_v, sp_r: compressed sparsities;
-    prinv: the inverse row permutation; pc: the column order."""
+    prinv: the inverse row permutation; pc: the column order; lu: the static LU's analysis
+    (hpgen.codegen.static_lu.StaticLU's fields and nnz) or None."""
     sp = jacobian_sparsity(step)
     if sp is None:
         return None
     spv, spr, prinv, pc = sp.qr_sparse(True)
+    lu = static_lu(sp.size1(), [int(i) for i in sp.colind()], [int(i) for i in sp.row()])
     return {"nnz_j": sp.nnz(), "nnz_v": spv.nnz(), "nnz_r": spr.nnz(), "nrow_v": spv.size1(),
             "sp_j": list(sp.compress()), "sp_v": list(spv.compress()),
             "sp_r": list(spr.compress()), "prinv": [int(i) for i in prinv],
-            "pc": [int(i) for i in pc]}
+            "pc": [int(i) for i in pc],
+            "lu": None if lu is None else {
+                "nnz": lu.nnz, "perm": list(lu.perm), "colptr": list(lu.colptr),
+                "row": list(lu.row), "diag": list(lu.diag), "jmap": list(lu.jmap)}}
 
 
 def aux_function(sp):

@@ -17,7 +17,9 @@ import numpy as np
 import pytest
 
 import hpgen
+from hpgen.abi import STATIC_PIVOT_TOL
 from hpgen.api import read_model_text
+from hpgen.codegen.static_lu import static_lu
 from hpgen.derive import SPARSE_MIN_NZ, sparse_jacobian
 from hpgen.model import load_model_text
 from hpgen.model.overrides import apply_overrides
@@ -42,11 +44,11 @@ def chain(cache_dir):
     """chain(n, storage, backend) -> Integrator of the N-link chain (cached per module)."""
     made = {}
 
-    def get(n, storage, backend="c"):
-        key = (n, storage, backend)
+    def get(n, storage, backend="c", cflags=None):
+        key = (n, storage, backend, cflags)
         if key not in made:
             made[key] = hpgen.compile(CHAIN, parameters={"N": n}, jacobian=storage,
-                                      backend=backend, cache_dir=cache_dir)
+                                      backend=backend, cache_dir=cache_dir, cflags=cflags)
         return made[key]
     return get
 
@@ -165,6 +167,20 @@ def test_every_run_kind_on_a_sparse_module(chain, backend):
         assert max_deviation(run(), ref[kind]()) <= TOL, kind
 
 
+@pytest.mark.parametrize("simplified", [False, True])
+def test_qr_takes_over_where_a_static_pivot_fails(chain, simplified):
+    """Built with a pivot threshold no pivot passes, every J of the run goes to the QR: the
+    same run to round-off, by other operations than the static LU's."""
+    sc = chain_scene(2)
+    opts = NewtonOptions(simplified=simplified)
+    ref = chain(2, "dense").simulate(sc.g0, sc.h, STEPS, xi0=sc.xi0, newton=opts)
+    lu = chain(2, "sparse").simulate(sc.g0, sc.h, STEPS, xi0=sc.xi0, newton=opts)
+    qr = chain(2, "sparse", cflags=("-DHPGEN_STATIC_PIVOT_TOL=1e300",)).simulate(
+        sc.g0, sc.h, STEPS, xi0=sc.xi0, newton=opts)
+    assert max_deviation(qr.g, ref.g) <= TOL and max_deviation(qr.mu, ref.mu) <= TOL
+    assert not np.array_equal(qr.g, lu.g)
+
+
 @pytest.mark.parametrize("backend", ["c", "python"])
 @pytest.mark.parametrize("simplified", [False, True])
 def test_singular_jacobian_is_a_convergence_error(chain, backend, simplified):
@@ -227,3 +243,83 @@ def test_python_sparse_solver():
     bad = list(J)
     bad[0] = np.nan
     assert lin.factor_solve(bad, F.tolist(), True) is None
+
+
+# ---- the static LU's analysis (hpgen.codegen.static_lu) -----------------------------------
+
+def slu_factor(lu, jnz, n):
+    """hpgen_slu_factor of hpgen_linalg.c, loop for loop: the values X, or None."""
+    X = np.zeros(lu.nnz)
+    X[list(lu.jmap)] = jnz
+    x = np.zeros(n)
+    for t in range(n):
+        c0, c1, dt = lu.colptr[t], lu.colptr[t + 1], lu.diag[t]
+        x[list(lu.row[c0:c1])] = X[c0:c1]
+        cmax = np.abs(X[c0:c1]).max()
+        for q in range(c0, dt):
+            k = lu.row[q]
+            X[q], x[k] = x[k], 0.0
+            for s in range(lu.diag[k] + 1, lu.colptr[k + 1]):
+                x[lu.row[s]] -= X[s] * X[q]
+        d, x[t] = x[t], 0.0
+        if not (abs(d) > STATIC_PIVOT_TOL * cmax and np.isfinite(d)):
+            return None
+        X[dt] = 1.0 / d
+        for q in range(dt + 1, c1):
+            X[q], x[lu.row[q]] = x[lu.row[q]] / d, 0.0
+    return X
+
+
+def slu_solve(lu, X, b, n):
+    """hpgen_slu_solve of hpgen_linalg.c."""
+    y = np.asarray(b, dtype=float)[list(lu.perm)]
+    for t in range(n):
+        for s in range(lu.diag[t] + 1, lu.colptr[t + 1]):
+            y[lu.row[s]] -= X[s] * y[t]
+    for t in range(n - 1, -1, -1):
+        y[t] *= X[lu.diag[t]]
+        for s in range(lu.colptr[t], lu.diag[t]):
+            y[lu.row[s]] -= X[s] * y[t]
+    out = np.zeros(n)
+    out[list(lu.perm)] = y
+    return out
+
+
+def test_static_lu_orders_multipliers_after_their_bodies():
+    rng = np.random.default_rng(5)
+    for trial in range(5):
+        M = kkt(rng, nb=6, nc=3)
+        n = M.shape[0]
+        colind, row = ccs(M)
+        lu = static_lu(n, colind, row)
+        pos = {v: t for t, v in enumerate(lu.perm)}
+        for k in range(6, n):                       # a multiplier after every body it joins
+            joined = set(np.flatnonzero(M[k])) | set(np.flatnonzero(M[:, k]))
+            assert all(pos[b] < pos[k] for b in joined)
+        jnz = np.concatenate([M[row[colind[c]:colind[c + 1]], c] for c in range(n)])
+        X = slu_factor(lu, jnz, n)
+        F = rng.standard_normal(n)
+        ref = np.linalg.solve(M, F)
+        np.testing.assert_allclose(slu_solve(lu, X, F, n), ref, rtol=0,
+                                   atol=1e-12 * np.abs(ref).max())
+
+
+def test_static_lu_of_the_chain_is_banded(chain):
+    """The chain's order keeps L + U within a constant band of nonzeros per unknown, and the
+    factorization of the module's J solves J dz = F."""
+    integ = chain(2, "sparse", "python")
+    jac, nz = integ.meta["jacobian"], integ.meta["nz"]
+    lu = static_lu(nz, jac["colind"], jac["row"])
+    assert lu is not None and lu.nnz <= 1.5 * len(jac["row"])
+    sc = chain_scene(2)
+    g = np.asarray(sc.g0, dtype=float).ravel(order="F")
+    p = integ.legendre(sc.g0, sc.xi0)
+    z = integ.kernel("guess", sc.xi0, g, p, [sc.h])[0]
+    J = integ.kernel("jacobian", z, g, p, [sc.h])[0].reshape(nz, nz, order="F")
+    jnz = np.concatenate([J[jac["row"][jac["colind"][c]:jac["colind"][c + 1]], c]
+                          for c in range(nz)])
+    X = slu_factor(lu, jnz, nz)
+    F = np.linspace(-1.0, 1.0, nz)
+    ref = np.linalg.solve(J, F)
+    np.testing.assert_allclose(slu_solve(lu, X, F, nz), ref, rtol=0,
+                               atol=1e-11 * np.abs(ref).max())

@@ -21,10 +21,13 @@
  *   HPGEN_SKIP_G                    1: neither the step nor the record row use g
  *   HPGEN_FLATTEN                   1: inline the kernels into the step (small kernels)
  *   HPGEN_SPARSE                    0: J dense (column-major, LU); 1: J as its structural
- *                                   nonzeros, factored by a sparse QR on static patterns:
- *                                   HPGEN_SP_NJ, _NV, _NR, _NROW (nonzeros of J, V, R and
- *                                   the rows of V) and the arrays hpgen_sp_j, hpgen_sp_v,
- *                                   hpgen_sp_r, hpgen_sp_prinv, hpgen_sp_pc (hpgen.codegen.sparse)
+ *                                   nonzeros, factored by an LU with a static pivot order
+ *                                   (HPGEN_SP_STATIC 1: HPGEN_SP_NLU entries of L + U, the
+ *                                   arrays hpgen_slu_*, hpgen.codegen.static_lu) or, where a
+ *                                   static pivot fails, by a sparse QR: HPGEN_SP_NJ, _NV,
+ *                                   _NR, _NROW (nonzeros of J, V, R and the rows of V) and the
+ *                                   arrays hpgen_sp_j, hpgen_sp_v, hpgen_sp_r, hpgen_sp_prinv,
+ *                                   hpgen_sp_pc (hpgen.codegen.sparse)
  *   HPGEN_HASH                      the content hash (a string literal)
  *   HPGEN_L                         (optional) lanes of the lane-wise kernels hpgen_lane_*
  *
@@ -71,10 +74,14 @@
 /* the version of the exported API (hpgen.abi.ABI_VERSION) */
 #define HPGEN_ABI 7
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
-/* the Newton matrix's storage (doubles): dense, J or J^{-1} column-major; sparse, the QR
-   factors V | R | beta (HPGEN_NZ) followed by J's nonzeros at HPGEN_J_OFFSET */
+/* the Newton matrix's storage (doubles): dense, J or J^{-1} column-major; sparse, the static
+   LU's values (HPGEN_SP_NLU), the QR factors V | R | beta (HPGEN_NZ) from HPGEN_SP_QR, which
+   of the two holds the factors at HPGEN_SP_FLAG (0: LU, 1: QR), J's nonzeros at
+   HPGEN_J_OFFSET */
 #if HPGEN_SPARSE
-#define HPGEN_J_OFFSET (HPGEN_SP_NV + HPGEN_SP_NR + HPGEN_NZ)
+#define HPGEN_SP_QR HPGEN_SP_NLU
+#define HPGEN_SP_FLAG (HPGEN_SP_QR + HPGEN_SP_NV + HPGEN_SP_NR + HPGEN_NZ)
+#define HPGEN_J_OFFSET (HPGEN_SP_FLAG + 1)
 #define HPGEN_LU_SIZE (HPGEN_J_OFFSET + HPGEN_SP_NJ)
 #else
 #define HPGEN_J_OFFSET 0
@@ -103,6 +110,11 @@
 /* the velocity xi of a record row: Newton's tolerance and iteration cap */
 #define HPGEN_VELOCITY_TOL 1e-14
 #define HPGEN_VELOCITY_MAXIT 50
+/* a static pivot u_kk of the sparse LU is accepted when |u_kk| > this * max_i |J_ik| (a
+   build may set it, e.g. -DHPGEN_STATIC_PIVOT_TOL=1e300 sends every J to the QR) */
+#ifndef HPGEN_STATIC_PIVOT_TOL
+#define HPGEN_STATIC_PIVOT_TOL 1e-08
+#endif
 /* the predictor keeps the offsets of this many past steps; row m - 1 of hpgen_pc weighs the
    m newest in the extrapolation through m of them (hpgen.abi.PREDICTOR_COEFFICIENTS) */
 #define HPGEN_PH 6
