@@ -1,19 +1,18 @@
 """The sparse Newton matrix of a module whose J outputs stay sparse (hpgen.derive.sparse_jacobian):
-its pattern and the symbolic analysis of its factorization, computed once at compile time.
+its pattern and the symbolic analysis of its factorizations, computed once at compile time.
 
-The numeric factorization is an LU with a static pivot order (hpgen.codegen.static_lu) and,
-for a J on which a static pivot fails at run time (or with no static order), CasADi's sparse
-Householder QR (the ``casadi_qr`` and
-``casadi_qr_solve`` of CasADi's C runtime, the code its Linsol "qr" generates): J P_c = Q R
-with a fill-reducing column order P_c (approximate minimum degree on J^T J) and Q kept as
-Householder vectors V. The analysis (``casadi.Sparsity.qr_sparse``) fixes the patterns of V
-and R, the row permutation and the column order, so the runtime only computes numbers on
-static arrays (kernels.c) and sizes known at compile time.
+The runtime factors J's nonzeros by an LU with a static pivot order (hpgen.codegen.static_lu)
+and, for a J on which a static pivot fails at run time (or a pattern with no static order),
+by CasADi's sparse Householder QR: ``casadi_qr`` and ``casadi_qr_solve`` of CasADi's C
+runtime, the code its Linsol "qr" generates, J P_c = Q R with a fill-reducing column order
+P_c (approximate minimum degree on J^T J) and Q kept as Householder vectors V. The analyses
+(static_lu; ``casadi.Sparsity.qr_sparse``) fix every pattern and permutation, so the runtime
+only computes numbers on static arrays (kernels.c) with sizes known at compile time.
 
 Why these two: J is not symmetric (so no LDL^T, neither CasADi's ``ldl`` nor QDLDL) and its
 multiplier blocks have zero diagonals (RATTLE's constraint rows). The static LU pivots on them
-only after the bodies they join are eliminated and costs a fraction of the QR's flops;
-Householder QR needs no pivoting at all, is backward stable, and keeps the factors O(nz) for
+only after the bodies they join are eliminated and needs a fraction of the QR's flops;
+Householder QR needs no pivoting at all, is backward stable and keeps its factors O(nz) for
 chains and trees under the minimum-degree order: the safety net. A singular J shows as a
 negligible diagonal of R.
 
