@@ -121,6 +121,20 @@ def test_sparse_module_layout(chain):
         np.testing.assert_allclose(Js, J, rtol=0, atol=1e-14 * np.abs(J).max())
 
 
+def test_loader_refuses_a_bad_pattern(chain, tmp_path):
+    import json
+    from hpgen.runtime import read_meta
+    meta = json.loads((chain(2, "sparse").module_dir / "meta.json").read_text())
+    read_meta(chain(2, "sparse").module_dir)
+    nz = meta["nz"]
+    for bad in ({"storage": "banded"}, {"storage": "sparse", "colind": [0] * nz, "row": []},
+                dict(meta["jacobian"], row=[nz] + meta["jacobian"]["row"][1:])):
+        (tmp_path / "meta.json").write_text(json.dumps(dict(meta, jacobian=bad)))
+        with pytest.raises(hpgen.ModelError, match="jacobian") as info:
+            read_meta(tmp_path)
+        assert "\n" not in str(info.value)
+
+
 # ---- the runs -------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("n", NS)
