@@ -2,7 +2,7 @@
 links: the C runtime's factorizations and solves alone (the static LU and CasADi's sparse QR
 it falls back to), on the chain's Jacobian pattern, against LAPACK's dense LU (numpy).
 
-    PYTHONPATH=. python benchmarks/chain_qr_scaling.py [--n 8 16 32 64] [--base 5]
+    PYTHONPATH=. python benchmarks/chain_sparse_scaling.py [--n 8 16 32 64] [--base 5]
 
 The step's derivation (and the model loader's group size limit) do not reach 64 links yet, so
 the pattern is the chain's block pattern extrapolated: the pattern of J for --base links is
