@@ -337,3 +337,21 @@ def test_static_lu_of_the_chain_is_banded(chain):
     ref = np.linalg.solve(J, F)
     np.testing.assert_allclose(slu_solve(lu, X, F, nz), ref, rtol=0,
                                atol=1e-11 * np.abs(ref).max())
+
+
+@pytest.mark.parametrize("backend", ["c", "python"])
+def test_a_small_step_forced_sparse(cache_dir, backend):
+    """jacobian="sparse" on a small step (the heavy top, Gauss 2: nz = 9, below every printed
+    dense solver's limit): the sparse path, the same run to round-off."""
+    top = EXAMPLES / "heavy_top.yaml"
+    sc = load_model_text(read_model_text(str(top)), filename=str(top)).scene
+    runs = {}
+    for storage in ("dense", "sparse"):
+        integ = hpgen.compile(top, tableau="gauss2", jacobian=storage, backend=backend,
+                              cache_dir=cache_dir)
+        assert integ.meta["jacobian"]["storage"] == storage
+        kw = {"xi0": sc.xi0} if sc.xi0 is not None else {"mu0": sc.mu0}
+        runs[storage] = integ.simulate(sc.g0, sc.h, STEPS, **kw)
+    assert runs["sparse"].error is None
+    assert max_deviation(runs["sparse"].g, runs["dense"].g) <= TOL
+    assert max_deviation(runs["sparse"].mu, runs["dense"].mu) <= TOL
