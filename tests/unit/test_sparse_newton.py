@@ -163,6 +163,9 @@ def run_kinds(integ, sc):
         "backward": lambda: integ.simulate(g0, -h, 60, every=3, **x0),
         "linearize": lambda: integ.linearize(integ.simulate(g0, h, 8, **x0)),
     }
+    if getattr(sc, "section_every_t", None) is not None:
+        kinds["stroboscopic"] = lambda: integ.sections(g0, h, 300, every_t=sc.section_every_t,
+                                                       **x0)
     if integ.backend == "c":
         kinds["simulate_batch"] = lambda: integ.simulate_batch(g0, h, 60, every=3, threads=2,
                                                                **batch)
@@ -355,3 +358,18 @@ def test_a_small_step_forced_sparse(cache_dir, backend):
     assert runs["sparse"].error is None
     assert max_deviation(runs["sparse"].g, runs["dense"].g) <= TOL
     assert max_deviation(runs["sparse"].mu, runs["dense"].mu) <= TOL
+
+
+@pytest.mark.parametrize("backend", ["c", "python"])
+def test_every_run_kind_on_an_open_model_forced_sparse(cache_dir, backend):
+    """The driven pendulum (forces in t, a runtime parameter, a stroboscopic section; Gauss 2,
+    nz = 3) with a sparse Newton matrix: every run kind as with the dense one, to round-off."""
+    path = EXAMPLES / "driven_pendulum.yaml"
+    sc = load_model_text(read_model_text(str(path)), filename=str(path)).scene
+    dense = hpgen.compile(path, jacobian="dense", cache_dir=cache_dir)
+    sparse = hpgen.compile(path, jacobian="sparse", backend=backend, cache_dir=cache_dir)
+    assert sparse.meta["jacobian"]["storage"] == "sparse" and sparse.meta["nz"] == 3
+    ref, got = run_kinds(dense, sc), run_kinds(sparse, sc)
+    assert "stroboscopic" in got and set(got) <= set(ref)
+    for kind, run in got.items():
+        assert max_deviation(run(), ref[kind]()) <= TOL, kind
