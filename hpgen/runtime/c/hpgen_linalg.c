@@ -1,8 +1,9 @@
 /* hpgen's C runtime, part 1: linear algebra of the Newton matrix (HPGEN_NZ unknowns), dense
    (mirrored operation for operation in Python by hpgen.codegen.pylinear, printed per nz) or,
    in a module with HPGEN_SPARSE, an LU with a static pivot order and a sparse QR, both on
-   patterns analysed at compile time (mirrored to round-off by hpgen.runtime.sparse). Included by hpgen_runtime.c; the model and the
-   contract are hpgen_runtime.h's.
+   patterns analysed at compile time (the Python backend agrees to round-off,
+   hpgen.runtime.sparse). Included by hpgen_runtime.c; the model and the contract are
+   hpgen_runtime.h's.
 
    What Newton, the runs and the linearization use of this file (its interface), A being
    HPGEN_LU_SIZE doubles:

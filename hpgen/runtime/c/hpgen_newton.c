@@ -31,7 +31,7 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
             *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
             if (!isfinite(*rnorm) || hpgen_lu_factor_solve(lu, piv, F, o->simplified))
                 return HPGEN_NONFINITE;
-            *lu_valid = o->simplified ? 1 : 0;   /* lu holds J^{-1} only when it is kept */
+            *lu_valid = o->simplified ? 1 : 0;   /* lu's J^{-1} (or factors) kept or not */
             fresh = 1;
         } else {
             if (hpgen_k_residual(z, g, p, hv, F)) return HPGEN_NONFINITE;
