@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import casadi
 
-from .contract import CodegenError
+from .contract import CodegenError, dense_positions
 from .static_lu import static_lu
 
 #: the CasADi Function whose generated code brings casadi_qr and casadi_qr_solve into
@@ -35,19 +35,26 @@ AUX_FUNCTION = "newton_sparse_qr"
 def jacobian_sparsity(step):
     """The Sparsity (nz x nz) of J when the module's Newton matrix is sparse, else None.
 
-    The derive stage marks a sparse J by the shape of the J outputs of the jacobian and
-    residual_jacobian kernels: the nz x nz matrix (its structural nonzeros, column-major),
-    where a dense J is the nz*nz column (hpgen.derive.sparse_jacobian). Both must agree."""
+    The J outputs of the jacobian and residual_jacobian kernels (they must agree) say it: the
+    nz x nz matrix (its structural nonzeros, column-major) is a sparse J by the derive stage's
+    choice (hpgen.derive.sparse_jacobian, a forced one included); the nz*nz column is dense,
+    unless its structural nonzeros are few enough for the derive stage's rule (a derivation
+    that keeps its outputs' structure, e.g. a family's, leaves the choice to this rule)."""
+    from ..derive import sparse_jacobian
     nz = step.nz
     sps = [step.kernel("jacobian").function.sparsity_out(0),
            step.kernel("residual_jacobian").function.sparsity_out(1)]
-    shaped = [nz > 1 and sp.size1() == sp.size2() == nz for sp in sps]
-    if not any(shaped):
-        return None
-    if not all(shaped) or sps[0] != sps[1]:
+    if sps[0] != sps[1]:
         raise CodegenError("the jacobian and residual_jacobian kernels disagree on J's "
                            "storage or sparsity")
-    return sps[0]
+    sp = sps[0]
+    if nz > 1 and sp.size1() == sp.size2() == nz:
+        return sp
+    if sp.is_dense():
+        return None
+    pos = dense_positions(sp)
+    mat = casadi.Sparsity.triplet(nz, nz, [q % nz for q in pos], [q // nz for q in pos])
+    return mat if sparse_jacobian(mat, None) else None
 
 
 def sparse_context(step) -> dict | None:

@@ -373,3 +373,22 @@ def test_every_run_kind_on_an_open_model_forced_sparse(cache_dir, backend):
     assert "stroboscopic" in got and set(got) <= set(ref)
     for kind, run in got.items():
         assert max_deviation(run(), ref[kind]()) <= TOL, kind
+
+
+def test_storage_from_the_j_outputs():
+    """The nz x nz J output is sparse by choice; an nz*nz column with structural zeros (a
+    derivation that keeps its outputs' structure) is sparse when the rule says so."""
+    from types import SimpleNamespace
+    from hpgen.codegen.sparse import jacobian_sparsity
+
+    def step(J, nz):
+        z = ca.SX.sym("z", nz)
+        fs = {"jacobian": ca.Function("j", [z], [J]),
+              "residual_jacobian": ca.Function("rj", [z], [z, J])}
+        return SimpleNamespace(nz=nz, kernel=lambda name: SimpleNamespace(function=fs[name]))
+    for nz in (3, SPARSE_MIN_NZ - 1, SPARSE_MIN_NZ):
+        sp = ca.Sparsity.banded(nz, 1)
+        assert jacobian_sparsity(step(ca.SX(sp), nz)) == sp
+        col = jacobian_sparsity(step(ca.reshape(ca.SX(sp), nz * nz, 1), nz))
+        assert (col == sp) if nz >= SPARSE_MIN_NZ else col is None
+        assert jacobian_sparsity(step(ca.SX(ca.Sparsity.dense(nz * nz, 1)), nz)) is None
