@@ -28,10 +28,12 @@ from dataclasses import dataclass
 #: (4: hpgen_advance_batch_lanes and hpgen_lanes, the lane-wise ensembles, where emitted)
 #: (5: hpgen_run holds the predictor offsets dz0..dz2 instead of zprev, zprev2)
 #: (6: hpgen_run holds PREDICTOR_HISTORY offsets dz[0..5], the predictor is quintic)
-ABI_VERSION = 6
+#: (7: a sparse module's hpgen_run.lu holds the sparse QR of J, HPGEN_LU_SIZE doubles)
+ABI_VERSION = 7
 #: version of meta.json's layout; the loader refuses any other (recompile the module)
 #: (3: "group", the group's name, e.g. "SO3" or "[SO3, R3]")
-META_FORMAT = 3
+#: (4: "jacobian", the Newton matrix's storage: dense, or sparse with J's CCS pattern)
+META_FORMAT = 4
 
 
 # ---- kernels -----------------------------------------------------------------------------
@@ -209,6 +211,11 @@ VELOCITY_MAXIT = DEFAULT_MAXIT
 #: (bitwise the C runtime's; above it numpy/LAPACK, equal to C to round-off)
 UNROLL_MAX = 12
 
+#: a sparse Newton matrix's LU with a static pivot order (hpgen.codegen.static_lu) accepts a
+#: pivot u_kk when |u_kk| > STATIC_PIVOT_TOL max_i |J_ik| (J's column k, permuted); else that J
+#: is factored by the sparse QR, which needs no pivoting
+STATIC_PIVOT_TOL = 1e-8
+
 #: the predictor keeps the offsets z_j - G_j of this many past steps; the start of a step is G_k
 #: plus the polynomial through the last m = min(steps done, PREDICTOR_HISTORY) offsets,
 #: extrapolated one step (degree m - 1: quintic once six exist). Heavy top gauss2 h = 0.05:
@@ -226,7 +233,8 @@ PREDICTOR_COEFFICIENTS = tuple(tuple(float((-1) ** i * math.comb(m, i + 1)) for 
 C_CONSTANTS = {"HPGEN_ABI": ABI_VERSION, "HPGEN_ROUNDOFF_FLOOR": ROUNDOFF_FLOOR,
                "HPGEN_THETA_MAX": THETA_MAX, "HPGEN_SIMPLIFIED_TOL": SIMPLIFIED_TOL,
                "HPGEN_THETA_FLOOR": THETA_FLOOR, "HPGEN_VELOCITY_TOL": VELOCITY_TOL,
-               "HPGEN_VELOCITY_MAXIT": VELOCITY_MAXIT, "HPGEN_PH": PREDICTOR_HISTORY}
+               "HPGEN_VELOCITY_MAXIT": VELOCITY_MAXIT, "HPGEN_PH": PREDICTOR_HISTORY,
+               "HPGEN_STATIC_PIVOT_TOL": STATIC_PIVOT_TOL}
 
 
 def c_literal(value) -> str:

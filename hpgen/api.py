@@ -58,11 +58,16 @@ class CompileOptions:
     cflags: tuple[str, ...] | None = None
     #: parameter overrides ((name, value), ...) applied to the model text (model.overrides)
     parameters: tuple | None = None
+    #: the Newton matrix's storage: None (hpgen.derive.sparse_jacobian's rule), "sparse", "dense"
+    jacobian: str | None = None
 
     def validate(self):
         for option, value in ((TAU, self.tau), (RKMK, self.rkmk), (BACKEND, self.backend)):
             if value is not None:
                 option.check(value, field=f"option {option.name}")
+        if self.jacobian not in (None, "sparse", "dense"):
+            raise ModelError(f"expected sparse or dense, got {self.jacobian!r}",
+                             field="option jacobian")
         if self.tableau is not None and not isinstance(self.tableau, (str, dict)) \
                 and not hasattr(self.tableau, "A"):
             raise ModelError("expected a catalog name or {A: [[...]], b: [...]}",
@@ -73,8 +78,10 @@ class CompileOptions:
         tab = self.tableau
         if tab is not None and not isinstance(tab, (str, dict)):
             tab = {"A": [list(r) for r in tab.A], "b": list(tab.b), "name": tab.name}
-        return json.dumps({"tableau": tab, "tau": self.tau, "rkmk": self.rkmk},
-                          sort_keys=True, default=repr)
+        key = {"tableau": tab, "tau": self.tau, "rkmk": self.rkmk}
+        if self.jacobian is not None:
+            key["jacobian"] = self.jacobian
+        return json.dumps(key, sort_keys=True, default=repr)
 
 
 def read_model_text(path) -> str:
@@ -145,7 +152,7 @@ class CompiledModule:
 
 
 def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
-            cache_dir=None, cc=None, cflags=None, parameters=None):
+            cache_dir=None, cc=None, cflags=None, parameters=None, jacobian=None):
     """Compile a model (a model file, or one declared in Python) into an integrator and load it.
 
     The module is generated (or taken from the build cache), built (C backend) and loaded.
@@ -183,6 +190,10 @@ def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
     parameters : dict or None, optional
         New values of parameters declared in the file, e.g. ``{"N": 8}`` (a family's body
         count): the model is the file with these values (a different module, cached apart).
+    jacobian : {"sparse", "dense"} or None, optional
+        How Newton stores and factors the step's Jacobian: dense LU, or a sparse QR on its
+        structural nonzeros. None (default): sparse for large, sparse systems
+        (hpgen.derive.sparse_jacobian).
 
     Returns
     -------
@@ -198,16 +209,18 @@ def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
         The C compiler is missing or failed (``backend="python"`` is the fallback).
     """
     return build(model, tableau=tableau, tau=tau, rkmk=rkmk, backend=backend, out=out,
-                 cache_dir=cache_dir, cc=cc, cflags=cflags, parameters=parameters).load()
+                 cache_dir=cache_dir, cc=cc, cflags=cflags, parameters=parameters,
+                 jacobian=jacobian).load()
 
 
 def build(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
-          cache_dir=None, cc=None, cflags=None, parameters=None) -> CompiledModule:
+          cache_dir=None, cc=None, cflags=None, parameters=None,
+          jacobian=None) -> CompiledModule:
     """Compile ``model`` like ``compile`` and return the CompiledModule (not loaded)."""
     return build_compiled(model, CompileOptions(tableau, tau, rkmk, backend, out, cache_dir,
                                                 cc, tuple(cflags) if cflags else None,
                                                 tuple(dict(parameters).items())
-                                                if parameters else None))
+                                                if parameters else None, jacobian))
 
 
 #: what produces the generated code, besides the model and options (hashed into the key)
@@ -241,6 +254,7 @@ def content_hash(text: str, opts: CompileOptions) -> str:
     effective = {k: next((v for v in (getattr(opts, k), written_opts.get(k),
                                       getattr(IntegratorChoice(), k)) if v is not None))
                  for k in ("tableau", "tau", "rkmk")}
+    effective["jacobian"] = opts.jacobian
     model = json.dumps({"model": norm, "integrator": written}, sort_keys=True, default=repr)
     return cache.cache_key(CODE_FORMAT, __version__, model,
                            CompileOptions(**effective).key())
@@ -369,7 +383,7 @@ def derive_module(path: str, text: str, opts: CompileOptions) -> Derivation:
     from .derive.checks import check_legendre
     try:
         tab, tau, rkmk = resolve(model_obj, opts)
-        step = derive(model_obj, tab, tau, rkmk)
+        step = derive(model_obj, tab, tau, rkmk, opts.jacobian)
         check_legendre(step, model_obj)
     except ModelError as e:          # errors of the options and the derivation name the file too
         raise without_line(e.located(file=path), path) from None

@@ -31,6 +31,7 @@
 /* the step's kernels are small: inlined into the step */
 #define HPGEN_FLATTEN 1
 #define HPGEN_HASH "b76f001c568489b54c25240c2e6bce8e6b4f732e81abe16fca3e42f6b849b2ff"
+#define HPGEN_SPARSE 0
 #include "hpgen_runtime.h"
 
 #if defined(__GNUC__)

@@ -25,6 +25,7 @@
 /* the step's kernels are small: inlined into the step */
 #define HPGEN_FLATTEN 1
 #define HPGEN_HASH "3b5e8c59678a8d08dcfbeb794dc549e09d951a1bd2a11e84fefde85f6aa301ff"
+#define HPGEN_SPARSE 0
 #include "hpgen_runtime.h"
 
 #if defined(__GNUC__)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import casadi
 
 from .contract import CodegenError, dense_positions
+from .sparse import aux_function, jacobian_sparsity
 
 #: CasADi CodeGenerator options. with_mem False: no memory objects, no static mutable state.
 CG_OPTIONS = {"casadi_real": "double", "casadi_int": "long long int", "with_mem": False,
@@ -49,6 +50,9 @@ def casadi_c_code(step, module: str) -> str:
     for k in step.kernels:
         if k.name not in C_FROM_FUSED:
             cg.add(k.function)
+    sp = jacobian_sparsity(step)
+    if sp is not None:       # a sparse J: casadi_qr, casadi_qr_solve for the runtime's Newton
+        cg.add(aux_function(sp))
     code = cg.dump()
     for call, inline in _INLINE_MINMAX.items():
         code = code.replace(call, inline)
@@ -71,11 +75,14 @@ def work_sizes(f) -> dict[str, int]:
             "sz_w": int(f.sz_w())}
 
 
-def c_kernel_context(kernel) -> dict:
-    """What kernels.c.j2 needs to wrap one kernel: symbol, args and work sizes."""
+def c_kernel_context(kernel, nz_variant: bool = False) -> dict:
+    """What kernels.c.j2 needs to wrap one kernel: symbol, args and work sizes; nz_variant:
+    also a wrapper hpgen_k_<name>_nz writing every output's structural nonzeros."""
     f = kernel.function
     fused = C_FROM_FUSED.get(kernel.name)
     return {"name": kernel.name, "symbol": f.name(),
+            # a sparse Newton matrix: hpgen_k_residual_jacobian_nz writes F and J's nonzeros
+            "nz_variant": nz_variant,
             "fused": None if fused is None else {"name": fused[0], "output": fused[1]},
             "inputs": [_arg(f, i, False, kernel.inputs[i]) for i in range(f.n_in())],
             "outputs": [_arg(f, i, True, kernel.outputs[i]) for i in range(f.n_out())],

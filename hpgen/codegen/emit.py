@@ -33,6 +33,7 @@ from ..schemes import BACKENDS, OPTION_KEYS
 from .contract import HASH_RE, MODULE_RE, CodegenError, check_step
 from .csource import c_kernel_context, casadi_c_code, work_sizes
 from . import pyiterate, pylinear
+from .sparse import meta_entry, sparse_context
 from .lanes import lanes_context
 from .pysource import py_kernel_context
 
@@ -162,12 +163,16 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
     info = _check_info(info)
     head = header_lines(info)
     instructions = _step_instructions(step)
+    sparse = sparse_context(step)
     common = {"header_lines": head, "n": step.n, "d": step.d}
     return {
         "kernels.c.j2": dict(common, nz=step.nz, hash=info["hash"],
                              casadi_code=casadi_c_code(step, info["module"]),
-                             kernels=[c_kernel_context(k) for k in step.kernels],
+                             kernels=[c_kernel_context(k, sparse is not None and
+                                                       k.name == "residual_jacobian")
+                                      for k in step.kernels],
                              flatten=instructions <= FLATTEN_MAX_INSTRUCTIONS,
+                             sparse=sparse,
                              lanes=lanes_context(step, instructions),
                              record_width=step.record_width,
                              open=None if step.open_spec is None else {
@@ -208,6 +213,7 @@ def meta(step, info: dict) -> dict:
             "step_uses_g": bool(step.step_uses_g), "record_uses_g": bool(step.record_uses_g),
             "record_uses_xi": bool(step.record_uses_xi),
             "unknowns": [[str(u[0]), int(u[1]), int(u[2])] for u in step.unknowns],
+            "jacobian": meta_entry(step),
             "kernels": kernels,
             "c_work": {k.name: work_sizes(k.function) for k in step.kernels},
             **_open_meta(step)}

@@ -41,6 +41,24 @@ def _flat(M):
     return ca.densify(ca.reshape(M, M.numel(), 1))
 
 
+#: the step's Jacobian J = dF/dz stays sparse (the kernels' J output is the nz x nz matrix
+#: with J's structural nonzeros, not the dense nz*nz column; the runtime factors it with a
+#: sparse QR, hpgen.codegen.sparse) when nz is at least SPARSE_MIN_NZ and at most
+#: SPARSE_MAX_DENSITY of its entries are structural nonzeros (the crossover of the pendulum
+#: chain's step time, benchmarks/chain_linear_algebra.py: every shipped scene stays dense)
+SPARSE_MIN_NZ = 32
+SPARSE_MAX_DENSITY = 0.4
+
+
+def sparse_jacobian(J, jacobian) -> bool:
+    """Whether the J outputs stay sparse: ``jacobian`` "sparse" / "dense" forces it, None
+    applies the rule above."""
+    if jacobian in ("sparse", "dense"):
+        return jacobian == "sparse"
+    nz = J.size1()
+    return nz >= SPARSE_MIN_NZ and J.nnz() <= SPARSE_MAX_DENSITY * nz * nz
+
+
 def section_function(model, g, p):
     """SX of the scene's Poincare section s(g, mu) at (g, p) (p the node momentum), or the
     constant 1 (never crosses) when the model's scene has no ``section``."""
@@ -54,7 +72,8 @@ def section_function(model, g, p):
     return to_casadi(spec.expr, mapping)
 
 
-def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
+def derive(model, tableau, tau: str, rkmk: str, jacobian=None) -> DiscreteStep:
+    """The step of ``model``; jacobian: None, "sparse" or "dense" (sparse_jacobian)."""
     group = model.group
     group.require_chart(tau)
     RKMK.check(rkmk, field="integrator.rkmk")
@@ -99,11 +118,14 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
             inputs = list(inputs) + extra
         names_in = tuple(nm for nm, _ in inputs)
         names_out = tuple(nm for nm, _ in outputs)
-        outs = ca.cse([ca.densify(to_mat(e)) for _, e in outputs])  # merge repeated subtrees
+        outs = ca.cse([to_mat(e) if nm == "J" and sparse else ca.densify(to_mat(e))
+                       for nm, e in outputs])  # merge repeated subtrees
         f = ca.Function(name, [v for _, v in inputs], outs, list(names_in), list(names_out))
         return Kernel(name, f, names_in, names_out)
 
     J = ca.jacobian(eqs.residual, z)
+    sparse = sparse_jacobian(J, jacobian)
+    J_out = J if sparse else _flat(J)   # sparse: the nz x nz matrix, its CCS nonzeros
     # the Legendre inverse at a record: one Newton step from xi = 0, exact when l is quadratic
     # in xi (hessian free of xi: legendre_quadratic), the runtime's start otherwise
     at0 = lambda e: ca.substitute(e, xi, ca.SX.zeros(d))  # noqa: E731
@@ -119,10 +141,10 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     chart_point = ca.mtimes(g, group.tau(tau, theta * eqs.chart_step))
     kernels = (
         kernel("residual", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("F", eqs.residual)]),
-        kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("J", _flat(J))]),
+        kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("J", J_out)]),
         # F and J in one pass (shared subexpressions): full Newton's iteration
         kernel("residual_jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
-               [("F", eqs.residual), ("J", _flat(J))]),
+               [("F", eqs.residual), ("J", J_out)]),
         kernel("update", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
                [("g1", _flat(eqs.g1)), ("p1", eqs.p1)]),
         kernel("guess", [("xi", eqs.xi_hat), ("g", gvec), ("p", p), ("h", hv)], [("z0", eqs.guess)]),

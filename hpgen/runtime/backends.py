@@ -86,7 +86,8 @@ class PythonBackend(_Backend):
         self._raw = {k: raw[k] for k in self._sig}
         self._newton = newton.Kernels.from_raw(self.nz, self._raw, getattr(mod, "LINEAR", None),
                                                getattr(mod, "ITERATE", None),
-                                               getattr(mod, "ITERATE_FULL", None))
+                                               getattr(mod, "ITERATE_FULL", None),
+                                               meta.get("jacobian"))
 
     def call(self, name, *args):
         return self._kernels[name](*args)

@@ -5,8 +5,10 @@ format, hpgen_version, module, model, options {tableau, tau, rkmk}, hash, backen
 "python", the default), group (e.g. "SO3", "[SO3, R3]"), n, d, nz, reduced, section,
 legendre_quadratic, record [[name, offset, shape], ...] (hpgen.abi.record_width), step_uses_g,
 record_uses_g, record_uses_xi, unknowns [[label, start, stop], ...], kernels {name: {"inputs":
-[[name, size], ...], "outputs": ..., "instructions": int}} (hpgen.abi.KERNELS) and c_work
-{name: {sz_arg, sz_res, sz_iw, sz_w}}.
+[[name, size], ...], "outputs": ..., "instructions": int}} (hpgen.abi.KERNELS), c_work
+{name: {sz_arg, sz_res, sz_iw, sz_w}} and jacobian, the Newton matrix's storage: {"storage":
+"dense"} or {"storage": "sparse", "colind": [nz + 1 ints], "row": [...]} (J's CCS pattern,
+hpgen.codegen.sparse).
 """
 from __future__ import annotations
 
@@ -66,6 +68,7 @@ def read_meta(module_dir) -> dict:
     for key in ("step_uses_g", "record_uses_g", "record_uses_xi", "legendre_quadratic"):
         if not isinstance(meta.get(key), bool):
             raise bad(key, "expected true or false")
+    _jacobian_entry(meta.get("jacobian"), nz, bad)
     op = _open_entry(meta, bad)
     size = abi.sizes(n, d, nz, w, 1 if op is None else op["H"])
     kernels = meta.get("kernels")
@@ -82,6 +85,22 @@ def read_meta(module_dir) -> dict:
         if got != want:
             raise bad(f"kernels.{name}", f"sizes {got} do not match the contract {want}")
     return meta
+
+
+def _jacobian_entry(jac, nz: int, bad) -> None:
+    """meta["jacobian"] checked: dense, or sparse with a CCS pattern of an nz x nz matrix."""
+    if not isinstance(jac, dict) or jac.get("storage") not in ("dense", "sparse"):
+        raise bad("jacobian", 'expected {"storage": "dense" | "sparse", ...}')
+    if jac["storage"] == "dense":
+        return
+    colind, row = jac.get("colind"), jac.get("row")
+    ok = (isinstance(colind, list) and isinstance(row, list) and len(colind) == nz + 1
+          and all(isinstance(v, int) for v in colind + row) and colind[0] == 0
+          and colind[-1] == len(row) and all(a <= b for a, b in zip(colind, colind[1:]))
+          and all(0 <= r < nz for r in row))
+    if not ok:
+        raise bad("jacobian", f"expected colind ({nz + 1} nondecreasing ints from 0) and row "
+                              f"(ints in [0, {nz}))")
 
 
 def _open_entry(meta: dict, bad):

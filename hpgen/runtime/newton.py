@@ -31,7 +31,9 @@ for simplified Newton, forms J^{-1}, which the other iterates apply as a matrix-
 product. For nz <= UNROLL_MAX these are printed once per nz as straight-line Python, so that
 with the same kernels (the backends' kernels are bitwise equal) the Python backend computes
 the same doubles as the C backend; above UNROLL_MAX numpy/LAPACK does the linear algebra,
-which agrees with C to round-off. The iterates with a kept J^{-1} run, when the module has
+which agrees with C to round-off; a module whose Newton matrix is sparse (meta.json
+"jacobian") solves with SuperLU on J's structural nonzeros (hpgen.runtime.sparse), which
+agrees with C's sparse QR to round-off. The iterates with a kept J^{-1} run, when the module has
 it, in its printed ITERATE (hpgen.codegen.pyiterate: the residual's body, J^{-1} F, z - dz and
 this loop's tests fused into one function, the same operations), which hands back at a
 refresh of J or to the way below at a math error or a non-finite value; full Newton's
@@ -172,23 +174,34 @@ class Kernels:
 
     def __init__(self, nz, residual, jacobian, residual_jacobian=None, update=None,
                  margin=None, linear=None, update_p=None, iterate=None, iterate_full=None,
-                 guess=None, velocity_step=None):
+                 guess=None, velocity_step=None, pattern=None):
         self.nz = nz
         self.residual, self.jacobian = residual, jacobian
         self.residual_jacobian = residual_jacobian
         self.update, self.margin, self.update_p = update, margin, update_p
         self.guess, self.velocity_step = guess, velocity_step
-        self.linear = linear_solver(nz, linear)
+        if pattern is not None:       # a sparse Newton matrix: no printed dense solver
+            from .sparse import sparse_solver
+            linear = None
+            self.linear = sparse_solver(nz, *pattern)
+        else:
+            self.linear = linear_solver(nz, linear)
         self.iterate = iterate if linear is not None else None
         self.iterate_full = iterate_full if linear is not None else None
 
     @classmethod
-    def from_raw(cls, nz, raw: dict, linear=None, iterate=None, iterate_full=None) -> "Kernels":
+    def from_raw(cls, nz, raw: dict, linear=None, iterate=None, iterate_full=None,
+                 jacobian=None) -> "Kernels":
         """linear: the module's LINEAR (printed solver functions) or None; iterate,
-        iterate_full: its ITERATE and ITERATE_FULL or None."""
+        iterate_full: its ITERATE and ITERATE_FULL or None; jacobian: meta.json's "jacobian"
+        entry (a sparse one: Newton factors J sparse, hpgen.runtime.sparse)."""
+        pattern = None
+        if jacobian is not None and jacobian.get("storage") == "sparse":
+            pattern = (jacobian["colind"], jacobian["row"])
         return cls(nz, raw["residual"], raw["jacobian"], raw.get("residual_jacobian"),
                    raw.get("update"), raw.get("margin"), linear, raw.get("update_p"),
-                   iterate, iterate_full, raw.get("guess"), raw.get("velocity_step"))
+                   iterate, iterate_full, raw.get("guess"), raw.get("velocity_step"),
+                   pattern)
 
 
 def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory):

@@ -1,13 +1,18 @@
-/* hpgen's C runtime, part 1: dense linear algebra of the Newton matrix (HPGEN_NZ unknowns).
-   Mirrored operation for operation in Python by hpgen.codegen.pylinear (printed per nz).
-   Included by hpgen_runtime.c; the model and the contract are hpgen_runtime.h's.
+/* hpgen's C runtime, part 1: linear algebra of the Newton matrix (HPGEN_NZ unknowns), dense
+   (mirrored operation for operation in Python by hpgen.codegen.pylinear, printed per nz) or,
+   in a module with HPGEN_SPARSE, an LU with a static pivot order and a sparse QR, both on
+   patterns analysed at compile time (the Python backend agrees to round-off,
+   hpgen.runtime.sparse). Included by hpgen_runtime.c; the model and the contract are
+   hpgen_runtime.h's.
 
-   What Newton, the runs and the linearization use of this file (its interface):
-     hpgen_lu_factor_solve(A, piv, b, keep)  b <- J^{-1} b with J in A; keep: A <- J^{-1}
+   What Newton, the runs and the linearization use of this file (its interface), A being
+   HPGEN_LU_SIZE doubles:
+     hpgen_newton_fj(z, g, p, hv, F, A)      F and J (into A's J storage) in one evaluation
+     hpgen_newton_j(z, g, p, hv, A)          J alone (into A's J storage)
+     hpgen_lu_factor_solve(A, piv, b, keep)  b <- J^{-1} b with J in A; keep: A keeps the
+                                             factors (dense: A <- J^{-1})
      hpgen_lu_apply(A, piv, b)               b <- J^{-1} b with the kept A
-     hpgen_norm_inf(x, n), hpgen_all_finite(x, n)
-   A factorization of another structure (a sparse one for many bodies) provides the same
-   two functions over its own storage. */
+     hpgen_norm_inf(x, n), hpgen_all_finite(x, n) */
 
 /* max |x_i|; NaN if any x_i is NaN */
 static double hpgen_norm_inf(const double* x, int n) {
@@ -28,6 +33,140 @@ static int hpgen_all_finite(const double* x, int n) {
     int i;
     for (i = 0; i < n; ++i) if (!isfinite(x[i])) return 0;
     return 1;
+}
+
+#if HPGEN_SPARSE
+/* A (HPGEN_LU_SIZE doubles, hpgen_runtime.h): the static LU's values | the QR's V, R, beta |
+   which holds the factors (A[HPGEN_SP_FLAG]: 0 LU, 1 QR) | J's nonzeros (HPGEN_J_OFFSET).
+   The LU: P J P^T = L U with the compile-time order of hpgen_slu_* (diagonal pivots; the
+   multipliers' zero diagonals come after the bodies they join), 1 / u_tt stored on the
+   diagonal. The QR (CasADi's casadi_qr): J P_c = Q R, V the Householder vectors; it needs no
+   pivoting and takes over a J on which a static pivot fails. */
+static int hpgen_newton_fj(const double* z, const double* g, const double* p, const double* hv,
+                           double* F, double* A) {
+    return hpgen_k_residual_jacobian_nz(z, g, p, hv, F, A + HPGEN_J_OFFSET);
+}
+
+static int hpgen_newton_j(const double* z, const double* g, const double* p, const double* hv,
+                          double* A) {
+    double F[HPGEN_NZ];
+    return hpgen_k_residual_jacobian_nz(z, g, p, hv, F, A + HPGEN_J_OFFSET);
+}
+
+#if HPGEN_SP_STATIC
+/* L U of J's nonzeros Jnz into X (the filled pattern), left-looking: column t of P J P^T,
+   minus L(:, k) U(k, t) for the k < t of its U part in ascending order, then scaled below
+   the diagonal. Returns 1 when a pivot is not finite or |u_tt| <= HPGEN_STATIC_PIVOT_TOL
+   times the largest |J| entry of the column (X is then partly overwritten). */
+static int hpgen_slu_factor(const double* Jnz, double* X) {
+    double x[HPGEN_NZ];
+    int t, q, s;
+    memset(x, 0, sizeof x);
+    memset(X, 0, HPGEN_SP_NLU * sizeof(double));
+    for (q = 0; q < HPGEN_SP_NJ; ++q) X[hpgen_slu_jmap[q]] = Jnz[q];
+    for (t = 0; t < HPGEN_NZ; ++t) {
+        const int c0 = hpgen_slu_colptr[t], c1 = hpgen_slu_colptr[t + 1], dt = hpgen_slu_diag[t];
+        double cmax = 0.0, d, r;
+        for (q = c0; q < c1; ++q) {
+            const double a = X[q];
+            x[hpgen_slu_row[q]] = a;
+            if (fabs(a) > cmax) cmax = fabs(a);
+        }
+        for (q = c0; q < dt; ++q) {
+            const int k = hpgen_slu_row[q];
+            const double xk = x[k];
+            X[q] = xk;
+            x[k] = 0.0;
+            if (xk != 0.0)
+                for (s = hpgen_slu_diag[k] + 1; s < hpgen_slu_colptr[k + 1]; ++s)
+                    x[hpgen_slu_row[s]] -= X[s] * xk;
+        }
+        d = x[t];
+        x[t] = 0.0;
+        if (!(fabs(d) > HPGEN_STATIC_PIVOT_TOL * cmax) || !isfinite(d)) return 1;
+        r = 1.0 / d;
+        X[dt] = r;
+        for (q = dt + 1; q < c1; ++q) {
+            X[q] = x[hpgen_slu_row[q]] * r;
+            x[hpgen_slu_row[q]] = 0.0;
+        }
+    }
+    return 0;
+}
+
+/* b <- J^{-1} b with the LU in X: y = P b, L y' = y, U x' = y', b = P^T x' */
+static void hpgen_slu_solve(const double* X, double* b) {
+    double y[HPGEN_NZ];
+    int t, s;
+    for (t = 0; t < HPGEN_NZ; ++t) y[t] = b[hpgen_slu_perm[t]];
+    for (t = 0; t < HPGEN_NZ; ++t) {
+        const double yt = y[t];
+        if (yt != 0.0)
+            for (s = hpgen_slu_diag[t] + 1; s < hpgen_slu_colptr[t + 1]; ++s)
+                y[hpgen_slu_row[s]] -= X[s] * yt;
+    }
+    for (t = HPGEN_NZ - 1; t >= 0; --t) {
+        const double yt = y[t] * X[hpgen_slu_diag[t]];
+        y[t] = yt;
+        for (s = hpgen_slu_colptr[t]; s < hpgen_slu_diag[t]; ++s) y[hpgen_slu_row[s]] -= X[s] * yt;
+    }
+    for (t = 0; t < HPGEN_NZ; ++t) b[hpgen_slu_perm[t]] = y[t];
+}
+#endif
+
+/* b <- J^{-1} b with the kept factors (the LU's, or the QR's: x = P_c R^{-1} Q^T P_r b) */
+static void hpgen_lu_apply(const double* A, const int* piv, double* b) {
+    double w[HPGEN_SP_NROW];
+    (void)piv;
+#if HPGEN_SP_STATIC
+    if (A[HPGEN_SP_FLAG] == 0.0) { hpgen_slu_solve(A, b); return; }
+#endif
+    casadi_qr_solve(b, 1, 0, hpgen_sp_v, A + HPGEN_SP_QR, hpgen_sp_r,
+                    A + HPGEN_SP_QR + HPGEN_SP_NV, A + HPGEN_SP_QR + HPGEN_SP_NV + HPGEN_SP_NR,
+                    hpgen_sp_prinv, hpgen_sp_pc, w);
+}
+
+/* Factor J (nonzeros at A + HPGEN_J_OFFSET) and b <- J^{-1} b; the factors are always kept
+   (keep is the dense interface's). The static LU first; where one of its pivots fails, the
+   QR. Returns 1 if J has a non-finite entry or is singular: a diagonal entry of R not finite,
+   or at most HPGEN_NZ DBL_EPSILON times the largest (numerically rank deficient; exactly
+   zero where J is structurally singular). */
+static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
+    double w[HPGEN_SP_NROW], rmax = 0.0, rmin = HUGE_VAL;
+    double *V = A + HPGEN_SP_QR, *R = V + HPGEN_SP_NV, *beta = R + HPGEN_SP_NR;
+    const long long* rcol = hpgen_sp_r + 2;
+    int c;
+    (void)keep;
+    if (!hpgen_all_finite(A + HPGEN_J_OFFSET, HPGEN_SP_NJ)) return 1;
+#if HPGEN_SP_STATIC
+    if (!hpgen_slu_factor(A + HPGEN_J_OFFSET, A)) {
+        A[HPGEN_SP_FLAG] = 0.0;
+        hpgen_slu_solve(A, b);
+        return 0;
+    }
+#endif
+    A[HPGEN_SP_FLAG] = 1.0;
+    casadi_qr(hpgen_sp_j, A + HPGEN_J_OFFSET, w, hpgen_sp_v, V, hpgen_sp_r, R, beta,
+              hpgen_sp_prinv, hpgen_sp_pc);
+    for (c = 0; c < HPGEN_NZ; ++c) {      /* R's diagonal: the last entry of each column */
+        double r = fabs(R[rcol[c + 1] - 1]);
+        if (!isfinite(r)) return 1;
+        if (r > rmax) rmax = r;
+        if (r < rmin) rmin = r;
+    }
+    if (!(rmin > HPGEN_NZ * DBL_EPSILON * rmax)) return 1;
+    hpgen_lu_apply(A, piv, b);
+    return 0;
+}
+#else
+static int hpgen_newton_fj(const double* z, const double* g, const double* p, const double* hv,
+                           double* F, double* A) {
+    return hpgen_k_residual_jacobian(z, g, p, hv, F, A);
+}
+
+static int hpgen_newton_j(const double* z, const double* g, const double* p, const double* hv,
+                          double* A) {
+    return hpgen_kernel_jacobian(z, g, p, hv, A);
 }
 
 /* The Newton matrix is kept as J^{-1} (explicit, column-major in A; piv is workspace): a
@@ -183,3 +322,4 @@ static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
     return 0;
 }
 #endif
+#endif /* HPGEN_SPARSE */

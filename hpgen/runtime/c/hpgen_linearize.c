@@ -19,7 +19,7 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
                                        double* z, const hpgen_options* o, double* A,
                                        double* B, double* dev, hpgen_status* st) {
     enum { S = 2 * HPGEN_D };
-    double g1[HPGEN_NN], p1[HPGEN_D], J[HPGEN_NZ * HPGEN_NZ], Fs[HPGEN_NZ * S],
+    double g1[HPGEN_NN], p1[HPGEN_D], J[HPGEN_LU_SIZE], Fs[HPGEN_NZ * S],
         Yz[S * HPGEN_NZ], Ys[S * S], FH[HPGEN_NZ * HPGEN_H], YH[S * HPGEN_H],
         zlast[HPGEN_NZ], zprev[HPGEN_NZ] = {0.0}, zprev2[HPGEN_NZ] = {0.0}, res;
 #else
@@ -27,7 +27,7 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
                                        double h, double* z, const hpgen_options* o,
                                        double* A, double* dev, hpgen_status* st) {
     enum { S = 2 * HPGEN_D };
-    double hv[1], g1[HPGEN_NN], p1[HPGEN_D], J[HPGEN_NZ * HPGEN_NZ], Fs[HPGEN_NZ * S],
+    double hv[1], g1[HPGEN_NN], p1[HPGEN_D], J[HPGEN_LU_SIZE], Fs[HPGEN_NZ * S],
         Yz[S * HPGEN_NZ], Ys[S * S], zlast[HPGEN_NZ], zprev[HPGEN_NZ] = {0.0},
         zprev2[HPGEN_NZ] = {0.0}, res;
 #endif
@@ -71,7 +71,7 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
         dev[k] = m;
         ++st->jacobians;
         valid = 0;
-        if (hpgen_kernel_jacobian(z, g, p, hv, J)
+        if (hpgen_newton_j(z, g, p, hv, J)
 #if HPGEN_OPEN
             || hpgen_k_step_partials(z, g, p, hv, Fs, Yz, Ys, FH, YH)
 #else

@@ -27,11 +27,11 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
             /* F and a fresh J in one evaluation (their common subexpressions once) */
             *lu_valid = 0;
             ++*jacs;
-            if (hpgen_k_residual_jacobian(z, g, p, hv, F, lu)) return HPGEN_NONFINITE;
+            if (hpgen_newton_fj(z, g, p, hv, F, lu)) return HPGEN_NONFINITE;
             *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
             if (!isfinite(*rnorm) || hpgen_lu_factor_solve(lu, piv, F, o->simplified))
                 return HPGEN_NONFINITE;
-            *lu_valid = o->simplified ? 1 : 0;   /* lu holds J^{-1} only when it is kept */
+            *lu_valid = o->simplified ? 1 : 0;   /* lu's J^{-1} (or factors) kept or not */
             fresh = 1;
         } else {
             if (hpgen_k_residual(z, g, p, hv, F)) return HPGEN_NONFINITE;
@@ -76,14 +76,14 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
 static int hpgen_newton_full(const double* g, const double* p, const double* hv, double* z,
                              const hpgen_options* o, long long* iters, long long* jacs,
                              double* rnorm) {
-    double F[HPGEN_NZ], Fz[HPGEN_NZ], J[HPGEN_NZ * HPGEN_NZ], dprev = HUGE_VAL;
+    double F[HPGEN_NZ], Fz[HPGEN_NZ], J[HPGEN_LU_SIZE], dprev = HUGE_VAL;
     const double tol = o->tol;
     const long long maxit = o->maxit;
     long long it;
     int i, piv[HPGEN_NZ], evaluated = 0, code = HPGEN_NO_CONVERGENCE;
     for (it = 1; it <= maxit; ++it) {
         double dn, zn;
-        if (hpgen_k_residual_jacobian(z, g, p, hv, F, J)) { code = HPGEN_NONFINITE; break; }
+        if (hpgen_newton_fj(z, g, p, hv, F, J)) { code = HPGEN_NONFINITE; break; }
         memcpy(Fz, F, sizeof F);                  /* F(z), for *rnorm */
         evaluated = 1;
         if (hpgen_lu_factor_solve(J, piv, F, 0)) { code = HPGEN_NONFINITE; break; }
@@ -163,11 +163,11 @@ static int hpgen_options_ok(const hpgen_options* o) {
 /* (open model: hv is the step vector [h, t, u, params] of the step) */
 HPGEN_EXPORT int hpgen_step(const double* g, const double* p, const double* hv, double* z,
                             const hpgen_options* o, double* g1, double* p1, hpgen_status* st) {
-    double lu[HPGEN_NZ * HPGEN_NZ];
+    double lu[HPGEN_LU_SIZE];
 #else
 HPGEN_EXPORT int hpgen_step(const double* g, const double* p, double h, double* z,
                             const hpgen_options* o, double* g1, double* p1, hpgen_status* st) {
-    double hv[1], lu[HPGEN_NZ * HPGEN_NZ];
+    double hv[1], lu[HPGEN_LU_SIZE];
 #endif
     int piv[HPGEN_NZ];
     long long it, valid = 0;

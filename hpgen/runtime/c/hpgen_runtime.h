@@ -20,6 +20,14 @@
  *   HPGEN_LEGENDRE_QUADRATIC        1: l is quadratic in xi (one velocity Newton step is exact)
  *   HPGEN_SKIP_G                    1: neither the step nor the record row use g
  *   HPGEN_FLATTEN                   1: inline the kernels into the step (small kernels)
+ *   HPGEN_SPARSE                    0: J dense (column-major, LU); 1: J as its structural
+ *                                   nonzeros, factored by an LU with a static pivot order
+ *                                   (HPGEN_SP_STATIC 1: HPGEN_SP_NLU entries of L + U, the
+ *                                   arrays hpgen_slu_*, hpgen.codegen.static_lu) or, where a
+ *                                   static pivot fails, by a sparse QR: HPGEN_SP_NJ, _NV,
+ *                                   _NR, _NROW (nonzeros of J, V, R and the rows of V) and the
+ *                                   arrays hpgen_sp_j, hpgen_sp_v, hpgen_sp_r, hpgen_sp_prinv,
+ *                                   hpgen_sp_pc (hpgen.codegen.sparse)
  *   HPGEN_HASH                      the content hash (a string literal)
  *   HPGEN_L                         (optional) lanes of the lane-wise kernels hpgen_lane_*
  *
@@ -43,7 +51,7 @@
 #if !defined(HPGEN_N) || !defined(HPGEN_D) || !defined(HPGEN_NZ) || !defined(HPGEN_OPEN) \
     || !defined(HPGEN_W) || !defined(HPGEN_RECORD_USES_XI) \
     || !defined(HPGEN_LEGENDRE_QUADRATIC) || !defined(HPGEN_SKIP_G) \
-    || !defined(HPGEN_FLATTEN) || !defined(HPGEN_HASH)
+    || !defined(HPGEN_FLATTEN) || !defined(HPGEN_HASH) || !defined(HPGEN_SPARSE)
 #error "define the model (HPGEN_N, HPGEN_D, HPGEN_NZ, HPGEN_OPEN, ...) before hpgen_runtime.h"
 #endif
 #if HPGEN_OPEN && (!defined(HPGEN_M) || !defined(HPGEN_P))
@@ -64,8 +72,21 @@
 #endif
 
 /* the version of the exported API (hpgen.abi.ABI_VERSION) */
-#define HPGEN_ABI 6
+#define HPGEN_ABI 7
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
+/* the Newton matrix's storage (doubles): dense, J or J^{-1} column-major; sparse, the static
+   LU's values (HPGEN_SP_NLU), the QR factors V | R | beta (HPGEN_NZ) from HPGEN_SP_QR, which
+   of the two holds the factors at HPGEN_SP_FLAG (0: LU, 1: QR), J's nonzeros at
+   HPGEN_J_OFFSET */
+#if HPGEN_SPARSE
+#define HPGEN_SP_QR HPGEN_SP_NLU
+#define HPGEN_SP_FLAG (HPGEN_SP_QR + HPGEN_SP_NV + HPGEN_SP_NR + HPGEN_NZ)
+#define HPGEN_J_OFFSET (HPGEN_SP_FLAG + 1)
+#define HPGEN_LU_SIZE (HPGEN_J_OFFSET + HPGEN_SP_NJ)
+#else
+#define HPGEN_J_OFFSET 0
+#define HPGEN_LU_SIZE (HPGEN_NZ * HPGEN_NZ)
+#endif
 #if HPGEN_OPEN
 #define HPGEN_H (2 + HPGEN_M + HPGEN_P)
 #endif
@@ -89,6 +110,11 @@
 /* the velocity xi of a record row: Newton's tolerance and iteration cap */
 #define HPGEN_VELOCITY_TOL 1e-14
 #define HPGEN_VELOCITY_MAXIT 50
+/* a static pivot u_kk of the sparse LU is accepted when |u_kk| > this * max_i |J_ik| (a
+   build may set it, e.g. -DHPGEN_STATIC_PIVOT_TOL=1e300 sends every J to the QR) */
+#ifndef HPGEN_STATIC_PIVOT_TOL
+#define HPGEN_STATIC_PIVOT_TOL 1e-08
+#endif
 /* the predictor keeps the offsets of this many past steps; row m - 1 of hpgen_pc weighs the
    m newest in the extrapolation through m of them (hpgen.abi.PREDICTOR_COEFFICIENTS) */
 #define HPGEN_PH 6
@@ -151,7 +177,7 @@ typedef struct hpgen_run {
     double z[HPGEN_NZ];              /* solution of the last step (or the initial guess) */
     double dz[HPGEN_PH][HPGEN_NZ];   /* predictor: z_j - G_j of the last steps j = k-1, k-2, ...
                                         (G_j the guess at step j's start, see hpgen_run_step) */
-    double lu[HPGEN_NZ * HPGEN_NZ];  /* J^{-1} of the last Jacobian (simplified Newton) */
+    double lu[HPGEN_LU_SIZE];        /* J^{-1} (sparse: J's QR) of the last Jacobian */
     int piv[HPGEN_NZ];
     long long k;                     /* steps done */
     long long have_prev;             /* how many of dz[0], dz[1], ... are valid (0..HPGEN_PH) */
