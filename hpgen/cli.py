@@ -23,7 +23,7 @@ from .errors import ArgumentError, ConvergenceError, HpgenError, ModelError
 def _add_options(p):
     p.add_argument("model", help="model file (YAML, schema version 1)")
     from .schemes import BACKEND, RKMK, TAU
-    p.add_argument("--tableau", help="catalog name (see `hpgen list`); default: the model's")
+    p.add_argument("--tableau", help="catalog name or splitting scheme (see `hpgen list`); default: the model's")
     p.add_argument("--tau", choices=TAU.names, help=TAU.help("default: the model's"))
     p.add_argument("--rkmk", choices=RKMK.names, help=RKMK.help("default: the model's"))
     p.add_argument("--backend", choices=BACKEND.names, default="c",
@@ -380,7 +380,7 @@ def cmd_check(args) -> int:
 def cmd_list(args) -> int:
     """``hpgen list``: the groups and every registered option value (hpgen.schemes)."""
     from .groups import GROUP_NAMES
-    from .schemes import BACKEND, RKMK, TAU, tableaus
+    from .schemes import BACKEND, RKMK, TAU, splittings, tableaus
     from .tableaus import tableau_summary
     print("groups: " + ", ".join(GROUP_NAMES) + " and lists of them (direct products)")
     print("tau (chart maps):")
@@ -396,6 +396,10 @@ def cmd_list(args) -> int:
     for t in tableaus():
         print(f"  {t.name:15s} stages {t.stages}  order {t.order}  {tableau_summary(t.name)}"
               f"{', symplectic RK' if t.is_symplectic else ''}")
+    print("splitting schemes (explicit; for l = 1/2 xi.M xi - V(g) with constant M on SO3, SE3,"
+          " SO2, R<n> and products; chosen as the tableau; tau and rkmk unused):")
+    for s in splittings():
+        print(f"  {s.name:17s} stages {s.stages:2d}  order {s.order}  {s.summary}")
     return 0
 
 

@@ -243,8 +243,9 @@ def run_bench(model, *, T=None, schemes=None, tableau=None, tau=None, rkmk=None,
 
 
 def _tableau_names():
+    from ..splitting import SPLITTING_NAMES
     from ..tableaus import TABLEAU_NAMES
-    return TABLEAU_NAMES
+    return TABLEAU_NAMES + SPLITTING_NAMES
 
 
 def write_files(res: BenchResult, out: Path) -> list:
