@@ -90,8 +90,9 @@ def _parser():
                    help="states along the run where the symplecticity defect is computed")
     k.add_argument("--json", help="also write the figures to this JSON file")
     _add_u_options(k)
-    from .bench.cli import add_parser as _add_bench_parser
+    from .bench.cli import add_parser as _add_bench_parser, add_recommend_parser
     _add_bench_parser(sub)
+    add_recommend_parser(sub)
     from .ensemble.cli import add_parser as _add_sweep_parser
     _add_u_options(_add_sweep_parser(sub, _add_options))
     pl = sub.add_parser("plot", help="PNG figures of a saved run, section run or benchmark",
@@ -411,6 +412,9 @@ def main(argv=None) -> int:
         if args.command == "bench":
             from .bench.cli import cmd_bench
             return cmd_bench(args)
+        if args.command == "recommend":
+            from .bench.recommend import cmd_recommend
+            return cmd_recommend(args)
         if args.command == "sweep":
             from .ensemble.cli import cmd_sweep
             return cmd_sweep(args, _options)

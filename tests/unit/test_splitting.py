@@ -100,7 +100,7 @@ def test_measured_order_against_the_exact_free_body(compile_model, name, hs):
     inertia = np.array([2.0, 1.0, 0.6666666666666666])
     pi0 = np.array([math.cos(1.1), 0.0, math.sin(1.1)])
     T = 10.0
-    RT, piT = (a[-1] for a in free_rigid_body_attitude(inertia, pi0, np.eye(3), [T]))
+    RT, piT = (a[-1] for a in free_rigid_body_attitude(inertia, pi0, np.eye(3), [0.0, T]))
     errs = []
     for h in hs:
         N = round(T / h)
