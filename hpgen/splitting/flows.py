@@ -10,11 +10,15 @@ schemes' (p_k the momentum at the node t_k). The exact sub-flows over a time t:
   theta = t (a.pi) / D, Q = exp(theta a^), R <- R Q, pi <- Q^T pi (SE3: also P <- Q^T P,
   x fixed);
 - drift: R^n x <- x + t M^{-1} p; SE3 x <- x + t R v, pi <- pi + t P x v, v = M_tr^{-1} P;
-- SO2: R <- R rot(t p / I).
+- SO2: R <- R rot(t p / I);
+- free (a symmetric body, two equal moments D_a and the distinct D_c about a_c): the exact
+  free flow, the commuting rotations R <- R exp(t pi^ / D_a) (pi fixed) and about a_c by
+  t (a_c.pi)(1/D_c - 1/D_a).
 
 The basic step S(t) = K(t/2) F(t) K(t/2) with the free flow's symmetric approximation
 F(t) = product over factors of X1(t/2) X2(t/2) X3(t) X2(t/2) X1(t/2) (Dullweber, Leimkuhler,
-McLachlan 1997; SE3: D(t/2) [rotations] D(t/2)) is symmetric, symplectic, of order 2; a scheme
+McLachlan 1997; a symmetric body's exact free flow instead; SE3: D(t/2) [rotations] D(t/2))
+is symmetric, symplectic, of order 2; a scheme
 composes S(gamma_1 h) ... S(gamma_s h) (hpgen.splitting.coefficients). Adjacent sub-flows of
 the same kind merge exactly (phi_a phi_b = phi_{a+b}: a kick leaves g fixed, a rotation
 about a keeps a.pi), and kicks vanish where V is constant.
@@ -47,8 +51,11 @@ def _elementary(fk: FactorKinetics, k: int, c: float) -> list:
         return [("drift", k, 0, c)]
     if fk.family == "SO2":
         return [("rot", k, 0, c)]
-    rots = [("rot", k, 0, c / 2), ("rot", k, 1, c / 2), ("rot", k, 2, c),
-            ("rot", k, 1, c / 2), ("rot", k, 0, c / 2)]
+    if fk.symmetric_axis is not None:
+        rots = [("free", k, 0, c)]
+    else:
+        rots = [("rot", k, 0, c / 2), ("rot", k, 1, c / 2), ("rot", k, 2, c),
+                ("rot", k, 1, c / 2), ("rot", k, 0, c / 2)]
     if fk.family == "SE3":
         return [("drift", k, 0, c / 2)] + rots + [("drift", k, 0, c / 2)]
     return rots
@@ -152,6 +159,45 @@ def _rotate(st: _State, k: int, axis: int, t):
     st.p[k] = ca.vertcat(*parts)
 
 
+def _rodrigues(w):
+    """exp(w^) for an SX 3-vector w, any |w|: I + sinc(t) w^ + ((1 - cos t)/t^2) w^2, t = |w|,
+    the two coefficients from their Taylor series below t^2 = 1e-4 (error < 1e-20) and from
+    sin, cos at a safe argument above (no NaN in values or derivatives at w = 0)."""
+    t2 = ca.dot(w, w)
+    small = t2 < 1e-4
+    ts = ca.sqrt(ca.if_else(small, 1.0, t2))
+    s1 = ca.if_else(small, 1 - t2 / 6 * (1 - t2 / 20 * (1 - t2 / 42)), ca.sin(ts) / ts)
+    c1 = ca.if_else(small, 0.5 - t2 / 24 * (1 - t2 / 30 * (1 - t2 / 56)),
+                    (1 - ca.cos(ts)) / (ts * ts))
+    W = ca.vertcat(ca.horzcat(0, -w[2], w[1]), ca.horzcat(w[2], 0, -w[0]),
+                   ca.horzcat(-w[1], w[0], 0))
+    return ca.SX.eye(3) + s1 * W + c1 * ca.mtimes(W, W)
+
+
+def _free(st: _State, k: int, t):
+    """The exact free flow of a symmetric body (moments D_a = D_b, distinct D_c about axis
+    a_c): H = |pi|^2 / (2 D_a) + (a_c.pi)^2 (1/D_c - 1/D_a) / 2, two commuting exact flows:
+    the rotation by t pi / D_a (pi fixed) and the rotation about a_c."""
+    fk = st.structure.factors[k]
+    c = fk.symmetric_axis
+    Da = fk.moments[(c + 1) % 3]
+    pi = st.p[k][0:3]
+    Q = _rodrigues(t * (1.0 / Da) * pi)
+    st.R[k] = ca.mtimes(st.R[k], Q)
+    if fk.family == "SE3":
+        st.p[k] = ca.vertcat(pi, ca.mtimes(Q.T, st.p[k][3:6]))
+    rate = 1.0 / fk.moments[c] - 1.0 / Da
+    if rate != 0.0:
+        a = tuple(fk.axes[r][c] for r in range(3))
+        api = sum((a[r] * pi[r] for r in range(3) if a[r] != 0.0), ca.SX(0))
+        Q2 = _axis_rotation(a, t * api * rate)
+        st.R[k] = ca.mtimes(st.R[k], Q2)
+        parts = [ca.mtimes(Q2.T, pi)]
+        if fk.family == "SE3":
+            parts.append(ca.mtimes(Q2.T, st.p[k][3:6]))
+        st.p[k] = ca.vertcat(*parts)
+
+
 def _drift(st: _State, k: int, t):
     fk = st.structure.factors[k]
     Minv = ca.SX(ca.DM(list(map(list, fk.translation_inverse))))
@@ -179,6 +225,8 @@ def composition(structure, group, force, gsym, ops, g, p, h):
             _kick(st, group, force, gsym, t)
         elif kind == "rot":
             _rotate(st, k, axis, t)
+        elif kind == "free":
+            _free(st, k, t)
         else:
             _drift(st, k, t)
     return st.g(group.n), st.momentum()

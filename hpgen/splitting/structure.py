@@ -8,7 +8,8 @@ with M constant (free of g, xi and the runtime parameters), symmetric positive d
 block diagonal over the factors of the group, each factor one of
 
 - SO3: any SPD 3 x 3 block, diagonalised at compile time: M = Q diag(D) Q^T, the columns
-  of Q the principal axes (body frame); a diagonal block keeps the coordinate axes;
+  of Q the principal axes (body frame); a diagonal block keeps the coordinate axes; two
+  equal moments (a symmetric body) are noted (its free flow is exact in closed form);
 - SE3: xi = (omega, v), M = diag(M_rot, M_tr) (rotation and translation decoupled), M_rot
   as for SO3, M_tr any SPD block;
 - SO2: M = (I,);
@@ -47,6 +48,9 @@ class FactorKinetics:
     axes: tuple = ()
     moments: tuple = ()
     translation_inverse: tuple = ()
+    #: the axis index of the distinct moment of a symmetric body (two moments equal, or
+    #: three: then any), whose free flow is exact in closed form; None otherwise
+    symmetric_axis: int | None = None
 
 
 @dataclass(frozen=True)
@@ -146,8 +150,15 @@ def recognise(model, lag, params=None) -> SplitStructure:
         if fam in ("SE3", "R"):
             T = B[3:, 3:] if fam == "SE3" else B
             tinv = tuple(tuple(float(v) for v in r) for r in np.linalg.inv(T))
+        sym = None
+        if len(moments) == 3:
+            for c in range(3):
+                a, b = [i for i in range(3) if i != c]
+                if moments[a] == moments[b]:
+                    sym = c
+                    break
         factors.append(FactorKinetics(fam, lay.row, lay.n, lay.off, lay.d, axes, moments,
-                                      tinv))
+                                      tinv, sym))
     return SplitStructure(tuple(factors))
 
 
