@@ -88,9 +88,11 @@ def _measure(integ, pb, y_ref, order, kw, Ts, timing):
     raise ValueError(last)
 
 
-def recommend(path, error, T, cache_dir=None, log=None, timing=Timing(0.05, 3, 0.5)):
+def recommend(path, error, T, cache_dir=None, log=None, timing=Timing(0.05, 3, 0.5),
+              candidates=None):
     """[Candidate] ranked by predicted seconds (not measurable last), and a dict of notes:
-    reference, Ts. ModelError on bad input."""
+    reference, Ts. ``candidates``: [(tableau or splitting name, tau, rkmk)] instead of
+    SPLITTINGS and VPRK (tau, rkmk None: the model's). ModelError on bad input."""
     import hpgen
     from .problem import Problem, positive
     error = positive(error, "option error")
@@ -105,11 +107,15 @@ def recommend(path, error, T, cache_dir=None, log=None, timing=Timing(0.05, 3, 0
                          "forces, inputs or t)", file=str(path), field="option model")
     y_ref, ref_text = pb.reference("auto", lambda t, y: np.asarray(pb.f(t, y)).ravel())
     kw = {"g0": pb.g0, **({"xi0": pb.xi0} if pb.xi0 is not None else {"mu0": pb.mu0})}
-    from ..splitting import get_splitting
-    tries = [(s, None, None, get_splitting(s).order, True) for s in SPLITTINGS]
+    from ..splitting import get_splitting, is_splitting
     from ..tableaus import get_tableau
     ic = pb.model.integrator
-    for tab, tau, rkmk in VPRK:
+    tries = []
+    for tab, tau, rkmk in (candidates if candidates is not None else
+                           [(s, None, None) for s in SPLITTINGS] + list(VPRK)):
+        if is_splitting(tab):
+            tries.append((tab, None, None, get_splitting(tab).order, True))
+            continue
         tau, rkmk = tau or ic.tau, rkmk or ic.rkmk
         order = get_tableau(tab).order if rkmk == "exact" else min(get_tableau(tab).order, 2)
         tries.append((tab, tau, rkmk, order, False))

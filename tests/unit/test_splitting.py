@@ -281,3 +281,37 @@ def test_symmetric_body_free_flow_is_exact(compile_model):
     R = Rotation.from_rotvec(t * p0 / Da).as_matrix() @ Q2
     assert np.abs(tr.g[-1] - R).max() <= 1e-12
     assert np.abs(tr.mu[-1] - Q2.T @ p0).max() <= 1e-12 * np.abs(p0).max()
+
+
+def test_bench_default_grid_adds_splittings_where_they_apply():
+    from hpgen.bench.core import _scheme_grid
+    from hpgen.bench.schemes import DEFAULT_SPLITTINGS
+    from hpgen.model import load_model
+    top = [s[0] for s in _scheme_grid(load_model(HEAVY_TOP), None, None, None, None)]
+    damped = [s[0] for s in _scheme_grid(load_model(EXAMPLES / "damped_top.yaml"), None, None,
+                                         None, None)]
+    assert set(DEFAULT_SPLITTINGS) <= set(top)
+    assert not set(DEFAULT_SPLITTINGS) & set(damped)
+
+
+def test_recommend_predicts_a_step_that_reaches_the_error(cache_dir):
+    """The recommended scheme run at its predicted h over T reaches the requested error
+    within a factor 10 (the free body's error grows about linearly in t)."""
+    from hpgen import compile as hcompile
+    from hpgen.bench.recommend import recommend, report
+    T, target = 20.0, 1e-6
+    cands, notes = recommend(FREE_BODY, target, T, cache_dir=cache_dir,
+                             candidates=[("split2", None, None), ("split4-suzuki", None, None),
+                                         ("stormer-verlet", None, None)])
+    assert [c.seconds is not None for c in cands] == [True, True, True]
+    assert cands[0].seconds <= cands[1].seconds <= cands[2].seconds
+    text = report(cands, notes, target, T)
+    assert f"recommendation: {cands[0].label} with h = " in text
+    best = cands[0]
+    integ = hcompile(FREE_BODY, tableau=best.label.split("/")[0], cache_dir=cache_dir)
+    inertia = np.array([2.0, 1.0, 0.6666666666666666])
+    pi0 = np.array([0.4535961214255773, 0.0, 0.8912073600614354])
+    RT, piT = (a[-1] for a in free_rigid_body_attitude(inertia, pi0, np.eye(3), [0.0, T]))
+    tr = integ.simulate(np.eye(3), T / best.steps, best.steps, mu0=pi0, every=best.steps)
+    err = max(np.abs(tr.g[-1] - RT).max(), np.abs(tr.mu[-1] - piT).max())
+    assert target / 10 <= err <= 10 * target, (best.label, best.h_star, err)
