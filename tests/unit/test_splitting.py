@@ -315,3 +315,27 @@ def test_recommend_predicts_a_step_that_reaches_the_error(cache_dir):
     tr = integ.simulate(np.eye(3), T / best.steps, best.steps, mu0=pi0, every=best.steps)
     err = max(np.abs(tr.g[-1] - RT).max(), np.abs(tr.mu[-1] - piT).max())
     assert target / 10 <= err <= 10 * target, (best.label, best.h_star, err)
+
+
+def test_runtime_parameter_in_the_potential_sweeps(compile_model):
+    """V may depend on runtime parameters: the default equals the closed model bitwise, a
+    parameter sweep (simulate_batch) equals the single runs, C equals Python."""
+    text = ("name: top_rp\ngroup: SO3\nparameters: {I: [1.0, 5.0, 6.0], Mg: 1.0}\n"
+            "runtime_parameters: [Mg]\nlagrangian: 0.5*(I[0]*xi[0]**2 + I[1]*xi[1]**2 + "
+            "I[2]*xi[2]**2) - Mg*R[2,2]\n")
+    runs = {}
+    for b in ("c", "python"):
+        integ = compile_model(text, tableau="split4-yoshida", backend=b)
+        runs[b] = [integ.simulate(_g0(), 0.02, 100, xi0=XI0, every=100, params={"Mg": m})
+                   for m in (1.0, 2.0)]
+    closed = compile_model(HEAVY_TOP, tableau="split4-yoshida").simulate(_g0(), 0.02, 100,
+                                                                         xi0=XI0, every=100)
+    assert np.array_equal(runs["c"][0].g, closed.g) and np.array_equal(runs["c"][0].mu, closed.mu)
+    assert not np.array_equal(runs["c"][1].g, closed.g)
+    for a, b in zip(runs["c"], runs["python"]):
+        assert np.array_equal(a.g, b.g) and np.array_equal(a.mu, b.mu)
+    integ = compile_model(text, tableau="split4-yoshida")
+    batch = integ.simulate_batch(_g0(), 0.02, 100, xi0=np.array([XI0, XI0]), every=100,
+                                 params={"Mg": np.array([1.0, 2.0])}, threads=2)
+    for got, one in zip(batch, runs["c"]):
+        assert np.array_equal(got.g, one.g) and np.array_equal(got.mu, one.mu)
