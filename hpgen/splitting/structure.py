@@ -8,7 +8,8 @@ with M constant (free of g, xi and the runtime parameters), symmetric positive d
 block diagonal over the factors of the group, each factor one of
 
 - SO3: any SPD 3 x 3 block, diagonalised at compile time: M = Q diag(D) Q^T, the columns
-  of Q the principal axes (body frame); a diagonal block keeps the coordinate axes; two
+  of Q the principal axes (body frame), the largest moment last; a diagonal block keeps
+  the coordinate axes (permuted); two
   equal moments (a symmetric body) are noted (its free flow is exact in closed form);
 - SE3: xi = (omega, v), M = diag(M_rot, M_tr) (rotation and translation decoupled), M_rot
   as for SO3, M_tr any SPD block;
@@ -91,12 +92,20 @@ def _term_breaking(model) -> str:
 
 
 def _principal(block: np.ndarray):
-    """(axes Q as nested tuples, moments D) of an SPD 3 x 3 block: the identity and the
-    diagonal for a diagonal block, else numpy's eigh with det Q = +1."""
+    """(axes Q as nested tuples, moments D) of an SPD 3 x 3 block, ordered so that the
+    largest moment comes last: the DLM free flow X1(t/2) X2(t/2) X3(t) X2(t/2) X1(t/2) then
+    rotates about the axis of largest moment in the middle (heavy top I = (1, 5, 6): 15-70x
+    smaller errors than the other two choices at orders 2, 6, 8). A diagonal block keeps the
+    coordinate axes (a signed permutation with det +1), any other is diagonalised by numpy's
+    eigh (ascending moments, det Q = +1)."""
     if not np.any(block - np.diag(np.diag(block))):
-        return tuple(tuple(float(v) for v in r) for r in np.eye(3)), \
-            tuple(float(v) for v in np.diag(block))
-    D, Q = np.linalg.eigh(block)
+        D = np.diag(block)
+        last = int(np.argmax(D))
+        order = [i for i in range(3) if i != last] + [last]
+        Q = np.eye(3)[:, order]
+        D = D[order]
+    else:
+        D, Q = np.linalg.eigh(block)
     if np.linalg.det(Q) < 0:
         Q[:, 0] = -Q[:, 0]
     return tuple(tuple(float(v) for v in r) for r in Q), tuple(float(v) for v in D)
