@@ -154,6 +154,9 @@ def _scheme_line(module_dir, args) -> str:
     src = ([f"{', '.join(given)} given"] if given else []) + \
         ([f"{', '.join(model)} from the model's integrator:"] if model else []) + \
         ([f"{', '.join(default)}: hpgen's default"] if default else [])
+    from .schemes import is_splitting
+    if is_splitting(o["tableau"]):     # an explicit composition: no chart map, no RKMK
+        return f"scheme: splitting {o['tableau']} (explicit; tau and rkmk unused)"
     return (f"scheme: tableau {o['tableau']}, tau {o['tau']}, rkmk {o['rkmk']} "
             f"({'; '.join(src)})")
 
