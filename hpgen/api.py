@@ -225,7 +225,7 @@ def build(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
 
 #: what produces the generated code, besides the model and options (hashed into the key)
 _GENERATOR_SOURCES = ("hpgen/abi.py", "hpgen/model", "hpgen/groups", "hpgen/tableaus",
-                      "hpgen/derive", "hpgen/codegen", "templates")
+                      "hpgen/derive", "hpgen/splitting", "hpgen/codegen", "templates")
 
 
 @lru_cache(maxsize=1)

@@ -23,7 +23,7 @@ from .errors import ArgumentError, ConvergenceError, HpgenError, ModelError
 def _add_options(p):
     p.add_argument("model", help="model file (YAML, schema version 1)")
     from .schemes import BACKEND, RKMK, TAU
-    p.add_argument("--tableau", help="catalog name (see `hpgen list`); default: the model's")
+    p.add_argument("--tableau", help="catalog name or splitting scheme (see `hpgen list`); default: the model's")
     p.add_argument("--tau", choices=TAU.names, help=TAU.help("default: the model's"))
     p.add_argument("--rkmk", choices=RKMK.names, help=RKMK.help("default: the model's"))
     p.add_argument("--backend", choices=BACKEND.names, default="c",
@@ -90,8 +90,9 @@ def _parser():
                    help="states along the run where the symplecticity defect is computed")
     k.add_argument("--json", help="also write the figures to this JSON file")
     _add_u_options(k)
-    from .bench.cli import add_parser as _add_bench_parser
+    from .bench.cli import add_parser as _add_bench_parser, add_recommend_parser
     _add_bench_parser(sub)
+    add_recommend_parser(sub)
     from .ensemble.cli import add_parser as _add_sweep_parser
     _add_u_options(_add_sweep_parser(sub, _add_options))
     pl = sub.add_parser("plot", help="PNG figures of a saved run, section run or benchmark",
@@ -153,6 +154,9 @@ def _scheme_line(module_dir, args) -> str:
     src = ([f"{', '.join(given)} given"] if given else []) + \
         ([f"{', '.join(model)} from the model's integrator:"] if model else []) + \
         ([f"{', '.join(default)}: hpgen's default"] if default else [])
+    from .schemes import is_splitting
+    if is_splitting(o["tableau"]):     # an explicit composition: no chart map, no RKMK
+        return f"scheme: splitting {o['tableau']} (explicit; tau and rkmk unused)"
     return (f"scheme: tableau {o['tableau']}, tau {o['tau']}, rkmk {o['rkmk']} "
             f"({'; '.join(src)})")
 
@@ -382,7 +386,7 @@ def cmd_check(args) -> int:
 def cmd_list(args) -> int:
     """``hpgen list``: the groups and every registered option value (hpgen.schemes)."""
     from .groups import GROUP_NAMES
-    from .schemes import BACKEND, RKMK, TAU, tableaus
+    from .schemes import BACKEND, RKMK, TAU, splittings, tableaus
     from .tableaus import tableau_summary
     print("groups: " + ", ".join(GROUP_NAMES) + " and lists of them (direct products)")
     print("tau (chart maps):")
@@ -398,6 +402,10 @@ def cmd_list(args) -> int:
     for t in tableaus():
         print(f"  {t.name:15s} stages {t.stages}  order {t.order}  {tableau_summary(t.name)}"
               f"{', symplectic RK' if t.is_symplectic else ''}")
+    print("splitting schemes (explicit; for l = 1/2 xi.M xi - V(g) with constant M on SO3, SE3,"
+          " SO2, R<n> and products; chosen as the tableau; tau and rkmk unused):")
+    for s in splittings():
+        print(f"  {s.name:17s} stages {s.stages:2d}  order {s.order}  {s.summary}")
     return 0
 
 
@@ -409,6 +417,9 @@ def main(argv=None) -> int:
         if args.command == "bench":
             from .bench.cli import cmd_bench
             return cmd_bench(args)
+        if args.command == "recommend":
+            from .bench.recommend import cmd_recommend
+            return cmd_recommend(args)
         if args.command == "sweep":
             from .ensemble.cli import cmd_sweep
             return cmd_sweep(args, _options)

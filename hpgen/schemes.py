@@ -13,7 +13,10 @@ compile-time stack); the implementations stay with their stage:
   constraint in ``hpgen.derive.action``;
 - a backend: its ``Backend`` here and its loader in ``hpgen.runtime``;
 - a tableau: one entry in ``hpgen.tableaus.catalog`` (A, b, order, summary); ``tableaus()``
-  reads that catalog (it imports mpmath, not sympy/casadi/jinja2).
+  reads that catalog (it imports mpmath, not sympy/casadi/jinja2);
+- a splitting scheme (explicit, for l = 1/2 xi.M xi - V(g); chosen where a tableau is): one
+  entry in ``hpgen.splitting.coefficients`` (composition coefficients, order, summary);
+  ``splittings()`` reads that catalog, ``is_splitting(name)`` tells them from tableaus.
 
 Choices are listed in registration order, which is the order of CLI choices and messages.
 """
@@ -141,3 +144,15 @@ def tableaus():
     """The catalog tableaus (``hpgen.tableaus.ButcherTableau``), in catalog order."""
     from .tableaus import TABLEAU_NAMES, get_tableau
     return tuple(get_tableau(name) for name in TABLEAU_NAMES)
+
+
+def splittings():
+    """The catalog splitting schemes (``hpgen.splitting.SplittingScheme``), in catalog order."""
+    from .splitting import SPLITTING_NAMES, get_splitting
+    return tuple(get_splitting(name) for name in SPLITTING_NAMES)
+
+
+def is_splitting(spec) -> bool:
+    """Whether ``spec`` (a name or a scheme object) is a splitting scheme, not a tableau."""
+    from .splitting import is_splitting as check
+    return check(spec)

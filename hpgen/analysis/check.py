@@ -72,6 +72,7 @@ import numpy as np
 
 from .. import __version__
 from ..errors import ModelError
+from ..schemes import is_splitting
 from .rkmk import RKMK4, ContinuousEquations
 from .symplectic import GeneratedMap, ad_matrices, defect_along
 
@@ -109,6 +110,9 @@ class _Hpgen:
         tab, self.tau, self.rkmk = d.tableau, d.tau, d.rkmk
         self.map = GeneratedMap(self.integ, d.step, model.group)
         self.order = tab.order if self.rkmk == "exact" else min(tab.order, 2)
+        self.splitting = is_splitting(tab)
+        if self.splitting:            # explicit composition: its own order, no chart, no RKMK
+            self.order = tab.order
         self.info = {"tableau": tab.name, "tau": self.tau, "rkmk": self.rkmk,
                      "backend": backend, "module": self.integ.meta.get("module")}
         op = self.integ.open          # an open model: the file's params, t0 = 0
@@ -267,6 +271,8 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
 
     expected, why = expected_order(model.left_invariant, sch.order,
                                    sch.info.get("rkmk") if scheme == "hpgen" else None)
+    if getattr(sch, "splitting", False):
+        expected, why = sch.order, "the splitting scheme's composition order"
     errs = [error_at(k) for k in range(3)]
     hs, observed = [h, h / 2, h / 4], _slopes(errs)
     refined = _refine(errs, expected, error_at, h, n_o)

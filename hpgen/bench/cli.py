@@ -42,6 +42,20 @@ def add_parser(sub):
     return b
 
 
+def add_recommend_parser(sub):
+    """Add ``recommend`` (hpgen.bench.recommend) to hpgen's subparsers."""
+    r = sub.add_parser("recommend", help="which scheme reaches an error over a horizon "
+                       "fastest (a short measured run)",
+                       description="rank hpgen's schemes that apply to the model by the "
+                       "predicted time to reach --error over --T, from a short measured run")
+    r.add_argument("model", help="model file with a scene")
+    r.add_argument("--error", required=True, help="target error max(|g - g_ref|, "
+                   "|mu - mu_ref|) at T")
+    r.add_argument("--T", required=True, help="horizon")
+    r.add_argument("--cache-dir", help="build cache directory")
+    return r
+
+
 def _number(text, field, convert=float):
     from ..errors import ModelError
     if text is None:

@@ -7,8 +7,9 @@
 Grids (API lists, or comma lists on the CLI), defaults from the scene's h = h0:
 - hpgen schemes: ``schemes`` [(tableau, tau, rkmk)], or the product of ``tableau`` x ``tau``
   x ``rkmk`` lists (a missing one: the model's default), else DEFAULT_SCHEMES
-  (stormer-verlet/cay/truncated, gauss2/exp/exact, gauss2/cay/exact, gauss3/cay/exact).
-  Catalog names only.
+  (stormer-verlet/cay/truncated, gauss2/exp/exact, gauss2/cay/exact, gauss3/cay/exact) and,
+  when the model has their structure (l = 1/2 xi.M xi - V(g)), the explicit splittings
+  DEFAULT_SPLITTINGS. Catalog names (tableaus and splitting schemes) only.
 - ``h`` (hpgen): h0 * 2^-k, k = -1..4 (one step coarser than the scene's h: where the
   6th-order schemes reach errors around 1e-6); ``rk4_h``: as ``h``; ``collocation_h``:
   h0 * 2^-k, k = 0..2. Every h is turned into steps = round(T / h), h = T / steps (noted if it moves).
@@ -134,12 +135,27 @@ def _scheme_grid(model, schemes, tableau, tau, rkmk):
     if schemes is not None:
         return validate_schemes([tuple(s) for s in schemes])
     if tableau is None and tau is None and rkmk is None:
-        return validate_schemes(DEFAULT_SCHEMES)
+        return validate_schemes(list(DEFAULT_SCHEMES) + _default_splittings(model))
     ic = model.integrator
     tabs = [tableau] if isinstance(tableau, str) else list(tableau or [ic.tableau])
     taus = [tau] if isinstance(tau, str) else list(tau or [ic.tau])
     rks = [rkmk] if isinstance(rkmk, str) else list(rkmk or [ic.rkmk])
     return validate_schemes(list(itertools.product(tabs, taus, rks)))
+
+
+def _default_splittings(model):
+    """The splitting schemes the default grid adds when the model has their structure
+    (hpgen.splitting.structure), else none."""
+    from ..derive.lagrangian import lagrangian_function
+    from ..splitting.structure import recognise
+    from .schemes import DEFAULT_SPLITTINGS
+    if model.open_system or model.constraints:
+        return []
+    try:
+        recognise(model, lagrangian_function(model))
+    except ModelError:
+        return []
+    return [(s, "cay", "exact") for s in DEFAULT_SPLITTINGS]
 
 
 def _check_steps(T, hs, field):
@@ -243,8 +259,9 @@ def run_bench(model, *, T=None, schemes=None, tableau=None, tau=None, rkmk=None,
 
 
 def _tableau_names():
+    from ..splitting import SPLITTING_NAMES
     from ..tableaus import TABLEAU_NAMES
-    return TABLEAU_NAMES
+    return TABLEAU_NAMES + SPLITTING_NAMES
 
 
 def write_files(res: BenchResult, out: Path) -> list:

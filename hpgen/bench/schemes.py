@@ -18,18 +18,21 @@ from .measure import FAILURES, Point, fixed_note, measure, steps_for
 #: the default grid: (tableau, tau, rkmk)
 DEFAULT_SCHEMES = (("stormer-verlet", "cay", "truncated"), ("gauss2", "exp", "exact"),
                    ("gauss2", "cay", "exact"), ("gauss3", "cay", "exact"))
+#: the splitting schemes the default grid adds for a model with their structure
+DEFAULT_SPLITTINGS = ("split4-suzuki", "split6-kahan-li", "split8-kahan-li")
 
 
 def validate_schemes(schemes):
     """ModelError (one line) for an unknown tableau, tau or rkmk, before anything is built."""
     from ..schemes import RKMK_CHOICES, TAU_CHOICES
+    from ..splitting import SPLITTING_NAMES
     from ..tableaus import TABLEAU_NAMES
     if not schemes:
         raise ModelError("expected at least one scheme", field="option tableau")
     for tab, tau, rkmk in schemes:
-        if tab not in TABLEAU_NAMES:
-            raise ModelError(f"expected one of {', '.join(TABLEAU_NAMES)}, got {tab!r}",
-                             field="option tableau")
+        if tab not in TABLEAU_NAMES + SPLITTING_NAMES:
+            raise ModelError(f"expected one of {', '.join(TABLEAU_NAMES + SPLITTING_NAMES)}, "
+                             f"got {tab!r}", field="option tableau")
         if tau not in TAU_CHOICES:
             raise ModelError(f"expected one of {', '.join(TAU_CHOICES)}, got {tau!r}",
                              field="option tau")
@@ -40,7 +43,9 @@ def validate_schemes(schemes):
 
 
 def scheme_name(tab, tau, rkmk):
-    return f"hpgen {tab}/{tau}/{rkmk}"
+    """The scheme's label; a splitting scheme's step uses no chart map nor RKMK constraint."""
+    from ..splitting import is_splitting
+    return f"hpgen {tab}" if is_splitting(tab) else f"hpgen {tab}/{tau}/{rkmk}"
 
 
 def hpgen_points(pb, y_ref, schemes, hs, timing, samples, cache_dir=None, log=None):

@@ -3,7 +3,8 @@
     derive(model, tableau, tau, rkmk) -> DiscreteStep
 
 tableau: a hpgen.tableaus.ButcherTableau; tau: a chart map the model's group supports; rkmk:
-an RKMK constraint (both registered in hpgen.schemes). A left-invariant Lagrangian (no g in
+an RKMK constraint (both registered in hpgen.schemes); a splitting scheme
+(hpgen.splitting, in place of the tableau) gives the explicit step of hpgen.splitting.flows. A left-invariant Lagrangian (no g in
 l) gives the reduced Euler-Poincare step, whose unknowns live in the algebra only.
 
 An open model (Model.open_system: forces, control inputs, runtime parameters or t) packs
@@ -25,6 +26,7 @@ from __future__ import annotations
 import casadi as ca
 
 from ..schemes import RKMK
+from ..splitting import is_splitting, splitting_step
 from .action import step_equations
 from .constraints import constrain_step, constraint_function
 from .lagrangian import lagrangian_function, open_functions, to_casadi
@@ -91,14 +93,22 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None) -> DiscreteStep:
         force = (lambda G, X, tt: force_f(G, X, tt, u, P)) if model.forced else None
         reduced = model.left_invariant and not model.forced and not model.time_dependent \
             and not model.constraints
-        eqs = step_equations(group, lag_t, tableau, tau, rkmk, reduced, g, p, h, t, force)
+        if is_splitting(tableau):
+            reduced = False
+            eqs, chart = splitting_step(model, tableau, lag, g, p, h, P)
+        else:
+            eqs = step_equations(group, lag_t, tableau, tau, rkmk, reduced, g, p, h, t, force)
         lag1 = lambda G, X: lag_f(G, X, t + h, P)  # noqa: E731  (at t_{k+1})
         extra = [("h", hv)]
     else:
         h = hv = ca.SX.sym("h", 1)
         lag = lag1 = lagrangian_function(model)
         reduced = model.left_invariant and not model.constraints
-        eqs = step_equations(group, lag, tableau, tau, rkmk, reduced, g, p, h)
+        if is_splitting(tableau):
+            reduced = False
+            eqs, chart = splitting_step(model, tableau, lag, g, p, h)
+        else:
+            eqs = step_equations(group, lag, tableau, tau, rkmk, reduced, g, p, h)
         extra = []
     if model.constraints:
         eqs = constrain_step(eqs, group, constraint_function(model), lag1, g, p, h)
@@ -138,7 +148,8 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None) -> DiscreteStep:
     # what the loop may skip: g_{k+1} is not computed when neither the step nor the row use g
     step_uses_g = bool(ca.depends_on(eqs.residual, gf) or ca.depends_on(eqs.p1, gf))
     theta = ca.SX.sym("theta", 1)
-    chart_point = ca.mtimes(g, group.tau(tau, theta * eqs.chart_step))
+    chart_point = chart(theta) if eqs.chart_step is None else \
+        ca.mtimes(g, group.tau(tau, theta * eqs.chart_step))
     kernels = (
         kernel("residual", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("F", eqs.residual)]),
         kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("J", J_out)]),

@@ -247,16 +247,23 @@ def tableau_summary(name: str) -> str:
 
 
 def get_tableau(name) -> ButcherTableau:
-    """The catalog tableau ``name``; ModelError (field integrator.tableau) if unknown."""
+    """The catalog tableau ``name``, or the splitting scheme ``name``
+    (hpgen.splitting.SplittingScheme, chosen in the tableau's place); ModelError (field
+    integrator.tableau) if unknown."""
+    from ..splitting import SPLITTING_NAMES, get_splitting
+    if isinstance(name, str) and name in SPLITTING_NAMES:
+        return get_splitting(name)
     if not isinstance(name, str) or name not in _ENTRIES:
-        raise _err(f"unknown tableau {name!r}: expected one of {', '.join(TABLEAU_NAMES)} "
+        raise _err(f"unknown tableau {name!r}: expected one of {', '.join(TABLEAU_NAMES)}, "
+                   f"a splitting scheme ({', '.join(SPLITTING_NAMES)}) "
                    "or a user tableau {A: [[...]], b: [...]}")
     return _build(name)
 
 
 def resolve_tableau(spec) -> ButcherTableau:
     """A catalog name -> its tableau; a ButcherTableau -> itself."""
-    if isinstance(spec, ButcherTableau):
+    from ..splitting import SplittingScheme
+    if isinstance(spec, (ButcherTableau, SplittingScheme)):
         return spec
     if isinstance(spec, str):
         return get_tableau(spec)

@@ -1,0 +1,138 @@
+"""The splitting schemes' speed targets, measured in one run, one process (portable -O3).
+
+    PYTHONPATH=. python benchmarks/splitting_targets.py [--quick]
+
+1. Heavy top, T = 10 (``hpgen bench`` points: the generated splittings, SciPy DOP853, RK4
+   emitted as C, the hand-written DLM splittings of hpgen.bench.rigid): at errors 1e-4 ..
+   1e-10, each family's time read off its Pareto front (log-log interpolation, as the bench's
+   equal-error comparison), then the best generated splitting against DOP853, RK4-C and the
+   best hand-written splitting (ratio = their time / hpgen's time, > 1: hpgen faster).
+2. Free rigid body (examples/free_rigid_body.yaml), T = 10, against the exact solution: the
+   error of the generated Stormer-Verlet (cay, truncated) at h = 0.01, and for every
+   splitting scheme the step h reaching that error (log-log interpolation over a ladder of
+   h), its time per step and the simulated time per second as Stormer-Verlet steps of 0.01
+   ("SV-equivalent steps/s" = (T / 0.01) / wall time at that h).
+"""
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+SPLITS = ("split2", "split4-yoshida", "split4-suzuki", "split6-yoshida", "split6-kahan-li",
+          "split8-mclachlan", "split8-kahan-li")
+HAND = ("splitting-2", "splitting-4", "splitting-6")
+
+
+def heavy_top(quick):
+    from hpgen.bench import run_bench
+    from hpgen.bench.report import time_at_error
+    hs = [0.4, 0.3, 0.2, 0.1, 0.05, 0.025, 0.0125, 0.00625, 0.003125]
+    res = run_bench(ROOT / "examples" / "heavy_top.yaml", T=10, schemes=[
+        (s, "cay", "exact") for s in SPLITS], h=hs, rtol=[1e-4, 1e-6, 1e-8, 1e-10, 1e-12],
+        peers=["DOP853", "RK4-C", *HAND], write=False, min_time=0.05 if quick else 0.2,
+        log=lambda s: None)
+    gen = [p for p in res.points if p.kind == "hpgen"]
+    hand = [p for p in res.points if p.family in HAND]
+    fam = {name: [p for p in res.points if p.family == name] for name in ("DOP853", "RK4-C")}
+    print("## Heavy top, T = 10: time at equal error (ratio = peer time / best generated "
+          "splitting's time)\n")
+    print("| error | best generated (s) | DOP853 / gen | RK4-C / gen | best hand splitting / "
+          "gen | gen / hand |")
+    print("|---|---|---|---|---|---|")
+    for e in (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10):
+        tg = _best(gen, e, time_at_error)
+        th = _best(hand, e, time_at_error)
+        cells = [f"{e:g}", _f(tg)]
+        for name in ("DOP853", "RK4-C"):
+            t = time_at_error(fam[name], e)
+            cells.append("-" if t is None or tg is None else f"{t / tg:.3g}x")
+        cells.append("-" if th is None or tg is None else f"{th / tg:.3g}x")
+        cells.append("-" if th is None or tg is None else f"{tg / th:.3g}")
+        print("| " + " | ".join(cells) + " |")
+
+
+def _best(points, e, time_at_error):
+    """The least time at error e over the families of ``points``."""
+    out = None
+    for f in sorted({p.family for p in points}):
+        t = time_at_error([p for p in points if p.family == f], e)
+        if t is not None and (out is None or t < out):
+            out = t
+    return out
+
+
+def _f(x):
+    return "-" if x is None else f"{x:.3g}"
+
+
+def free_body(quick):
+    import hpgen
+    from hpgen.analysis.exact import free_rigid_body_attitude
+    path = ROOT / "examples" / "free_rigid_body.yaml"
+    inertia = np.array([2.0, 1.0, 0.6666666666666666])
+    pi0 = np.array([0.4535961214255773, 0.0, 0.8912073600614354])
+    T = 10.0
+    RT, piT = (a[-1] for a in free_rigid_body_attitude(inertia, pi0, np.eye(3), [0.0, T]))
+
+    def run(integ, h, steps):
+        return integ.simulate(np.eye(3), h, steps, mu0=pi0, every=steps)
+
+    def error_time(integ, h):
+        steps = max(1, round(T / h))
+        tr = run(integ, T / steps, steps)
+        err = max(np.abs(tr.g[-1] - RT).max(), np.abs(tr.mu[-1] - piT).max())
+        reps = []
+        for _ in range(3 if quick else 7):
+            t0 = time.perf_counter()
+            run(integ, T / steps, steps)
+            reps.append(time.perf_counter() - t0)
+        return err, min(reps), steps
+
+    sv = hpgen.compile(path, tableau="stormer-verlet", tau="cay", rkmk="truncated")
+    e_sv, t_sv, n_sv = error_time(sv, 0.01)
+    print(f"\n## Free rigid body, T = 10: Stormer-Verlet (cay, truncated) at h = 0.01: error "
+          f"{e_sv:.3g}, {n_sv / t_sv / 1e6:.3g} M steps/s\n")
+    print("| scheme | h at SV's error | error | steps/s (M) | ns/step | SV-equivalent "
+          "steps/s (M) | time / SV's |")
+    print("|---|---|---|---|---|---|---|")
+    for name in SPLITS:
+        integ = hpgen.compile(path, tableau=name)
+        ladder = [2.0 ** -k for k in range(-1, 9)]
+        pts = [(h, *error_time(integ, h)) for h in ladder]
+        h_eq = _h_at(pts, e_sv)
+        if h_eq is None:
+            print(f"| {name} | - | - | - | - | - | - |")
+            continue
+        e, t, steps = error_time(integ, h_eq)
+        print(f"| {name} | {T / steps:.4g} | {e:.3g} | {steps / t / 1e6:.3g} | "
+              f"{t / steps * 1e9:.0f} | {n_sv / t / 1e6:.3g} | {t / t_sv:.3g} |")
+
+
+def _h_at(pts, e):
+    """h with error e by log-log interpolation over (h, error, ...) points, or None."""
+    pts = sorted((h, err) for h, err, *_ in pts if err > 0 and math.isfinite(err))
+    for (h0, e0), (h1, e1) in zip(pts, pts[1:]):
+        if min(e0, e1) <= e <= max(e0, e1) and e0 != e1:
+            s = (math.log(e) - math.log(e0)) / (math.log(e1) - math.log(e0))
+            return math.exp(math.log(h0) + s * (math.log(h1) - math.log(h0)))
+    return None
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true")
+    args = ap.parse_args()
+    heavy_top(args.quick)
+    free_body(args.quick)
+
+
+if __name__ == "__main__":
+    main()
