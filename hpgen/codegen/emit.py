@@ -34,7 +34,7 @@ from .contract import HASH_RE, MODULE_RE, CodegenError, check_step
 from .csource import c_kernel_context, casadi_c_code, work_sizes
 from . import pyiterate, pylinear
 from .lanes import lanes_context
-from .pysource import py_kernel_context
+from .pysource import callee_lines, py_kernel_context
 
 META_FORMAT = abi.META_FORMAT
 TEMPLATES = {"kernels.c": "kernels.c.j2", "kernels.py": "kernels.py.j2",
@@ -179,7 +179,8 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
         "kernels.py.j2": dict(common, nz=step.nz, module=info["module"],
                               **_python_linear(step),
                               safe_unary=[list(p) for p in SAFE_UNARY],
-                              kernels=[py_kernel_context(k) for k in step.kernels]),
+                              kernels=[py_kernel_context(k) for k in step.kernels],
+                              callees=callee_lines(step.kernels)),
         "__init__.py.j2": dict(common, module=info["module"], hash=info["hash"],
                                backend=info["backend"], model_label=_safe(info["model_name"]),
                                record_note=" (" + ", ".join(

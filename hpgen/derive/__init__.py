@@ -27,6 +27,7 @@ import casadi as ca
 from ..schemes import RKMK
 from .action import step_equations
 from .constraints import constrain_step, constraint_function
+from .family import block_diagonal_symbol, family_local, family_step
 from .lagrangian import lagrangian_function, open_functions, to_casadi
 from .linearize import step_partials
 from .record_kernel import record_row, velocity_step
@@ -36,9 +37,14 @@ from .step import KERNEL_NAMES, DiscreteStep, Kernel, OpenSpec
 __all__ = ["derive", "DiscreteStep", "Kernel", "KERNEL_NAMES"]
 
 
-def _flat(M):
+def _dense_flat(M):
     """Column-major flattening of an SX matrix into a dense column."""
     return ca.densify(ca.reshape(M, M.numel(), 1))
+
+
+def _column(M):
+    """Column-major flattening of an SX matrix, its structural zeros kept."""
+    return ca.reshape(M, M.numel(), 1)
 
 
 def section_function(model, g, p):
@@ -54,12 +60,18 @@ def section_function(model, g, p):
     return to_casadi(spec.expr, mapping)
 
 
-def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
+def derive(model, tableau, tau: str, rkmk: str, expand: bool = False) -> DiscreteStep:
+    """expand: derive a family model (group G^N) as one expression on the product group
+    instead of once per body and joint (hpgen.derive.family); for comparisons."""
     group = model.group
+    fam = None
     group.require_chart(tau)
     RKMK.check(rkmk, field="integrator.rkmk")
     n, d = group.n, group.d
-    g = ca.SX.sym("g", n, n)
+    local = not expand and family_local(model)
+    # a family's g is block-diagonal: its off-diagonal entries are structural zeros, so
+    # products with g stay block by block (the kernels still take all n*n entries)
+    g = block_diagonal_symbol(group) if local else ca.SX.sym("g", n, n)
     p = ca.SX.sym("p", d)
     is_open = model.open_system
     if is_open:
@@ -77,17 +89,24 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
         extra = [("h", hv)]
     else:
         h = hv = ca.SX.sym("h", 1)
-        lag = lag1 = lagrangian_function(model)
-        reduced = model.left_invariant and not model.constraints
-        eqs = step_equations(group, lag, tableau, tau, rkmk, reduced, g, p, h)
         extra = []
-    if model.constraints:
+        fam = family_step(model, tableau, tau, rkmk, g, p, h) if local else None
+        if fam is not None:          # derived once per body and per joint (call nodes)
+            eqs, lag = fam.eqs, fam.lag
+            reduced = model.left_invariant and not model.constraints
+        else:
+            lag = lag1 = lagrangian_function(model)
+            reduced = model.left_invariant and not model.constraints
+            eqs = step_equations(group, lag, tableau, tau, rkmk, reduced, g, p, h)
+    if model.constraints and fam is None:
         eqs = constrain_step(eqs, group, constraint_function(model), lag1, g, p, h)
     z = eqs.z
     nz = z.numel()
-    gf = _flat(g)
+    gcol = ca.reshape(g, n * n, 1)
+    gf = ca.vertcat(*[gcol[k] for k in gcol.sparsity().row()]) if local else _dense_flat(g)
     gvec = ca.SX.sym("g", n * n)
-    to_mat = lambda e: ca.substitute(e, gf, gvec)  # noqa: E731  (kernels take g flattened)
+    gsub = gvec[gcol.sparsity().row()] if local else gvec
+    to_mat = lambda e: ca.substitute(e, gf, gsub)  # noqa: E731  (kernels take g flattened)
 
     xi = ca.SX.sym("xi", d)
     lval = lag(g, xi)
@@ -99,15 +118,22 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
             inputs = list(inputs) + extra
         names_in = tuple(nm for nm, _ in inputs)
         names_out = tuple(nm for nm, _ in outputs)
-        outs = ca.cse([ca.densify(to_mat(e)) for _, e in outputs])  # merge repeated subtrees
+        outs = ca.cse([dense(to_mat(e)) for _, e in outputs])  # merge repeated subtrees
         f = ca.Function(name, [v for _, v in inputs], outs, list(names_in), list(names_out))
         return Kernel(name, f, names_in, names_out)
 
     J = ca.jacobian(eqs.residual, z)
+    # a family's kernels keep their outputs' structural sparsity (the C and Python wrappers
+    # scatter the nonzeros into the dense arrays of the contract): block-diagonal Hessians
+    # and banded Jacobians of N bodies are not written out entry by entry
+    dense = ca.densify if fam is None else (lambda e: e)  # noqa: E731
+    flat = _dense_flat if fam is None else _column
+    vstep = fam.velocity if fam is not None else (
+        lambda G, P, X: velocity_step(G, P, X, lag))  # noqa: E731
     # the Legendre inverse at a record: one Newton step from xi = 0, exact when l is quadratic
     # in xi (hessian free of xi: legendre_quadratic), the runtime's start otherwise
     at0 = lambda e: ca.substitute(e, xi, ca.SX.zeros(d))  # noqa: E731
-    xi_obs = at0(velocity_step(g, p, xi, lag))
+    xi_obs = at0(vstep(g, p, xi))
     quadratic = not ca.depends_on(hess, xi)
     power = None
     if is_open and model.forced:     # the forces' power at a record (t = t_k, u of hv)
@@ -119,31 +145,31 @@ def derive(model, tableau, tau: str, rkmk: str) -> DiscreteStep:
     chart_point = ca.mtimes(g, group.tau(tau, theta * eqs.chart_step))
     kernels = (
         kernel("residual", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("F", eqs.residual)]),
-        kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("J", _flat(J))]),
+        kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("J", flat(J))]),
         # F and J in one pass (shared subexpressions): full Newton's iteration
         kernel("residual_jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
-               [("F", eqs.residual), ("J", _flat(J))]),
+               [("F", eqs.residual), ("J", flat(J))]),
         kernel("update", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
-               [("g1", _flat(eqs.g1)), ("p1", eqs.p1)]),
+               [("g1", flat(eqs.g1)), ("p1", eqs.p1)]),
         kernel("guess", [("xi", eqs.xi_hat), ("g", gvec), ("p", p), ("h", hv)], [("z0", eqs.guess)]),
         kernel("legendre", [("g", gvec), ("xi", xi)], [("mu", mu)]),
-        kernel("hessian", [("g", gvec), ("xi", xi)], [("H", _flat(hess))]),
+        kernel("hessian", [("g", gvec), ("xi", xi)], [("H", flat(hess))]),
         kernel("energy", [("g", gvec), ("xi", xi)], [("E", ca.dot(mu, xi) - lval)]),
         kernel("momentum", [("g", gvec), ("p", p)], [("m", group.momentum_map(g, p))]),
         kernel("defect", [("g", gvec)], [("e", group.group_defect(g))]),
         kernel("margin", [("z", z), ("h", hv)], [("m", eqs.margin)]),
         kernel("section", [("g", gvec), ("p", p)], [("s", section_function(model, g, p))]),
         kernel("chart_point", [("z", z), ("g", gvec), ("h", hv), ("theta", theta)],
-               [("g_theta", _flat(chart_point))]),
+               [("g_theta", flat(chart_point))]),
         kernel("observe", [("g", gvec), ("p", p)],
                [("xi", xi_obs), ("E", ca.substitute(ca.dot(mu, xi) - lval, xi, xi_obs)),
                 ("m", group.momentum_map(g, p)), ("e", group.group_defect(g))]),
         kernel("update_p", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("p1", eqs.p1)]),
         kernel("velocity_step", [("g", gvec), ("p", p), ("xi", xi)],
-               [("xi1", velocity_step(g, p, xi, lag))]),
+               [("xi1", vstep(g, p, xi))]),
         kernel("record", [("g", gvec), ("p", p), ("xi", xi)], [("row", row)]),
         kernel("step_partials", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
-               [(nm, _flat(e)) for nm, e in zip(("Fs", "Yz", "Ys", "FH", "YH"), step_partials(
+               [(nm, flat(e)) for nm, e in zip(("Fs", "Yz", "Ys", "FH", "YH"), step_partials(
                    group, g, p, z, eqs.residual, eqs.g1, eqs.p1, hv if is_open else None))]),
     )
     assert tuple(k.name for k in kernels) == KERNEL_NAMES

@@ -39,6 +39,8 @@ class ConstraintSpec:
     text: str
     rows: tuple
     label: str = ""                 #: how messages name it; "" -> constraints[i]
+    #: ((loop variable, value),) of a row block repeated by ``for:`` (hpgen.model.joints)
+    bound: tuple = ()
 
 
 def parse_constraints(doc, raw, group, exact: dict, runtime_names, g_symbols) -> tuple:
@@ -74,7 +76,7 @@ def parse_constraints(doc, raw, group, exact: dict, runtime_names, g_symbols) ->
                     message = f"{b.label.removeprefix(field).strip()}: {message}"
                 e = ModelError(message, field=e.field)
                 raise e.located(doc.file, field, doc.line(("constraints", i))) from None
-            out.append(ConstraintSpec(b.text, rows, b.label))
+            out.append(ConstraintSpec(b.text, rows, b.label, tuple(b.bound.items())))
     if sum(len(c.rows) for c in out) >= group.d:
         raise doc.error(("constraints",), f"{sum(len(c.rows) for c in out)} constraint rows "
                         f"leave no freedom on {group.name} (d = {group.d}); expected fewer than d")

@@ -58,6 +58,9 @@ class BodyFamily:
     count_name: str | None = None
     sums: tuple = ()
     rest: str | None = None
+    #: the sums and joints evaluated once for a generic body (hpgen.model.bodyterms.LocalTerms),
+    #: None when some term couples bodies (the model is then compiled expanded)
+    local: object = None
 
 
 class FamilyGroup(ProductGroup):

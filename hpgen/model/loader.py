@@ -199,6 +199,10 @@ def build_model(doc: Doc, text: str) -> Model:
         constraints = parse_constraints(doc, data["constraints"], group, exact,
                                         [nm for nm, _ in runtime], g_syms)
         check_initial(doc, constraints, g_syms, group, scene)
+    if family is not None:
+        from dataclasses import replace
+        from .bodyterms import local_terms
+        family = replace(family, local=local_terms(family, constraints, lag_params))
     return Model(name=name, path=doc.file, source=text, group_spec=data["group"], group=group,
                  parameters=stored, lagrangian_text=data["lagrangian"], lagrangian=lag,
                  xi_symbols=xi_syms, g_symbols=g_syms, integrator=integrator, scene=scene,

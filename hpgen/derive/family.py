@@ -1,0 +1,280 @@
+"""The step of a family model (group G^N) derived once per body and once per joint, composed
+with CasADi call nodes.
+
+For a body-separable Lagrangian l = sum_i l_i(g_i, xi_i; i) (hpgen.model.bodyterms: every sum
+term local to its body, the body index i a numeric input) the unconstrained step of the
+product group is N independent steps: body i's stage equations involve its own unknowns z_i,
+(g_i, p_i) and h only (the chart maps and the action sum of a product split factor by
+factor). Each is derived once as a SX Function of (z_i, g_i, p_i, h, i) with the option
+``never_inline``; calling it on the kernels' symbols leaves one call instruction per body in
+the kernel, and CasADi's derivatives of a call are calls of derivative functions (derived
+once too). Bodies whose Lagrangians differ (sums over different ranges) get one function per
+distinct set of sums ("class").
+
+Constraints (hpgen.derive.constraints, docs/numerics.md sec. 14) decompose by joint: with
+joint j's rows phi_j(g_a, g_b, ...; i_j) and body-frame Jacobians Phi_{j,a},
+    p_i^+ = p_i - sum_{j touching i} Phi_{j,i}(g)^T h lambda_j
+    (body i's unconstrained step from (g_i, p_i^+))
+    phi_j(g_{k+1}) / h = 0
+    p_{i,k+1} = p_{i,k+1}^- - sum_{j touching i} Phi_{j,i}(g_{k+1})^T h nu_j
+    Phi_j(g_{k+1}) v_{k+1} = 0,  v_{k+1} = xi(g_{k+1}, p_{k+1}) per body
+where each joint's (phi_j, Phi_{j,a}, ...) is one call of the function of its row block's
+text (rows with the loop variable i as a numeric input).
+
+Unknowns, in this order: every body's step unknowns (body 0's blocks, body 1's, ...; the
+block labels of the expanded step with the body as a suffix, "Xi1[3]"), then ``lambda`` and
+``nu`` (all constraint rows, file order: the expanded step's blocks, so the multipliers'
+readers work unchanged) and, when d2l/dxi2 is not constant, ``v1`` (d, body by body). The
+rows follow the same order. For a chain the Jacobian is an arrow of blocks: block-diagonal in
+the bodies, each joint's rows and columns touching two neighbouring bodies; a fill-reducing
+order keeps its sparse factors O(N).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import casadi as ca
+import numpy as np
+
+from ..groups import group_from_spec
+from .action import StepEquations, step_equations
+from .lagrangian import to_casadi
+
+CALL = {"never_inline": True}
+
+
+@dataclass(frozen=True)
+class FamilyParts:
+    """A family model's step (``eqs``, in the symbols g, p, h given to family_step) and the
+    Lagrangian as a sum of per-body calls: lag(G, X) -> SX scalar for the product's G, X."""
+    eqs: StepEquations
+    lag: object
+    velocity: object     # (g, p, xi) -> SX d: one Newton step of dl/dxi = p, body by body
+
+
+def _body_lagrangians(model, body):
+    """{class key: (inline Function l(G, X, i), call Function)}, and the key of each body."""
+    terms = model.family.local.bodies
+    N = model.family.count
+    keys = [tuple(j for j, t in enumerate(terms) if t.start <= k < t.stop) for k in range(N)]
+    G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i")
+    funs = {}
+    for c, key in enumerate(sorted(set(keys))):
+        expr = ca.SX(0)
+        for j in key:
+            t = terms[j]
+            mapping = {sp_sym: X[int(str(sp_sym)[3:])] for sp_sym in t.expr.free_symbols
+                       if str(sp_sym).startswith("xi_")}
+            for s in t.expr.free_symbols:
+                name = str(s)
+                if name.startswith("g_"):
+                    a, b = map(int, name[2:].split("_"))
+                    mapping[s] = G[a, b]
+            mapping[t.index] = I
+            expr = expr + to_casadi(t.expr, mapping)
+        funs[key] = (ca.Function(f"l_body{c}", [G, X, I], [expr]),
+                     ca.Function(f"l_body{c}_call", [G, X, I], [expr], CALL))
+    return funs, keys
+
+
+def _joint_functions(model, body):
+    """{(text, index symbol): Function(g_slot0, ..., i) -> (phi, Phi_0, ...)} (call nodes)."""
+    out = {}
+    nb, db = body.n, body.d
+    for jt in model.family.local.joints:
+        key = (jt.text, jt.index)
+        if key in out:
+            continue
+        K = len(jt.bodies)
+        Gs = [ca.SX.sym(f"g{s}", nb, nb) for s in range(K)]
+        I = ca.SX.sym("i")
+        mapping = {}
+        for r in jt.rows:
+            for sym in r.free_symbols:
+                name = str(sym)
+                if name.startswith("g_"):
+                    a, b = map(int, name[2:].split("_"))
+                    mapping[sym] = Gs[a // nb][a % nb, b - (a // nb) * nb]
+        if jt.index is not None:
+            mapping[jt.index] = I
+        phi = ca.vertcat(*[to_casadi(r, mapping) for r in jt.rows])
+        etas = [ca.SX.sym(f"eta{s}", db) for s in range(K)]
+        varied = ca.substitute(phi, ca.vertcat(*[ca.vec(G) for G in Gs]), ca.vertcat(*[
+            ca.vec(ca.mtimes(G, ca.SX.eye(nb) + body.hat(e))) for G, e in zip(Gs, etas)]))
+        Phis = [ca.substitute(ca.jacobian(varied, e), ca.vertcat(*etas), ca.SX.zeros(K * db))
+                for e in etas]
+        out[key] = ca.Function(f"joint{len(out)}", [*[ca.vec(G) for G in Gs], I],
+                               [phi, *Phis], CALL)
+    return out
+
+
+def family_local(model) -> bool:
+    """True when ``model`` is derived body by body: a closed family model whose Lagrangian
+    sums and joints are local (hpgen.model.bodyterms); otherwise it is expanded."""
+    family = getattr(model, "family", None)
+    return family is not None and family.local is not None and not model.open_system
+
+
+def block_diagonal_symbol(group):
+    """An n x n SX of a product group's element: a symbol in each factor's diagonal block,
+    structural zeros elsewhere."""
+    blocks = [ca.SX.sym(f"g{k}", lay.n, lay.n) for k, lay in enumerate(group.factors)]
+    return ca.diagcat(*blocks)
+
+
+def family_step(model, tableau, tau: str, rkmk: str, g, p, h) -> FamilyParts:
+    """The family step (module docstring) in the SX symbols g (n x n, block-diagonal), p (d),
+    h (1), for a model with family_local(model)."""
+    family = model.family
+    body = group_from_spec(family.body)
+    nb, db, N = body.n, body.d, family.count
+    lags, keys = _body_lagrangians(model, body)
+    reduced = model.left_invariant and not model.constraints
+
+    # one body's step per class, derived once
+    gb, pb, hb, ib = ca.SX.sym("g", nb, nb), ca.SX.sym("p", db), ca.SX.sym("h"), ca.SX.sym("i")
+    gbv = ca.vec(gb)
+    steps = {}
+    for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
+        e = step_equations(body, lambda G, X, f=lag_in: f(G, X, ib), tableau, tau, rkmk,
+                           reduced, gb, pb, hb)
+        args = [e.z, gbv, pb, hb, ib]
+        steps[key] = dict(
+            nz=e.z.numel(), blocks=e.blocks,
+            F=ca.Function(f"body{c}_residual", args, [e.residual], CALL),
+            U=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1], CALL),
+            M=ca.Function(f"body{c}_margin", [e.z, hb], [e.margin], CALL),
+            C=ca.Function(f"body{c}_chart", [e.z, hb], [e.chart_step], CALL),
+            Z=ca.Function(f"body{c}_guess", [e.xi_hat, gbv, pb, hb], [e.guess], CALL))
+
+    Gk = [g[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb] for k in range(N)]
+    pk = [p[k * db:(k + 1) * db] for k in range(N)]
+    xi_hat = ca.SX.sym("xi_hat", N * db)
+    zs, blocks, off = [], [], 0
+    for k in range(N):
+        st = steps[keys[k]]
+        zs.append(ca.SX.sym(f"z{k}", st["nz"]))
+        blocks += [(f"{lab}[{k}]", off + a, off + b) for lab, a, b in st["blocks"]]
+        off += st["nz"]
+
+    joints = model.family.local.joints
+    jfun = _joint_functions(model, body) if joints else {}
+    m = sum(len(j.rows) for j in joints)
+    lam, nu = ca.SX.sym("lambda", m), ca.SX.sym("nu", m)
+    rows = np.cumsum([0] + [len(j.rows) for j in joints])
+    impulse = [ca.SX.zeros(db) for _ in range(N)]        # sum_j Phi_{j,k}^T lambda_j
+    for j, jt in enumerate(joints):
+        out = jfun[(jt.text, jt.index)](*[ca.vec(Gk[b]) for b in jt.bodies], jt.value)
+        for s, b in enumerate(jt.bodies):
+            impulse[b] = impulse[b] + ca.mtimes(out[1 + s].T, lam[rows[j]:rows[j + 1]])
+    res, g1s, p1s, margins, charts, guesses = [], [], [], [], [], []
+    for k in range(N):
+        st = steps[keys[k]]
+        args = [zs[k], ca.vec(Gk[k]), pk[k] - impulse[k], h, k]
+        res.append(st["F"](*args))
+        g1v, p1 = st["U"](*args)
+        g1s.append(ca.reshape(g1v, nb, nb))
+        p1s.append(p1)
+        margins.append(st["M"](zs[k], h))
+        charts.append(st["C"](zs[k], h))
+        guesses.append(st["Z"](xi_hat[k * db:(k + 1) * db], ca.vec(Gk[k]), pk[k], h))
+    z = ca.vertcat(*zs)
+    margin = margins[0]
+    for mk in margins[1:]:
+        margin = ca.fmin(margin, mk)
+    g1 = ca.diagcat(*g1s)
+    lag, velocity = _product_lagrangian(lags, keys, body, N)
+    if not joints:
+        eqs = StepEquations(z, tuple(blocks), ca.vertcat(*res), g1, ca.vertcat(*p1s),
+                            ca.vertcat(*guesses), xi_hat, margin, ca.vertcat(*charts))
+        return FamilyParts(eqs, lag, velocity)
+
+    nz = z.numel()
+    blocks += [("lambda", nz, nz + m), ("nu", nz + m, nz + 2 * m)]
+    phis, Phi1 = [], []
+    kick = [ca.SX.zeros(db) for _ in range(N)]           # sum_j Phi_{j,k}(g1)^T nu_j
+    for j, jt in enumerate(joints):
+        out = jfun[(jt.text, jt.index)](*[ca.vec(g1s[b]) for b in jt.bodies], jt.value)
+        phis.append(out[0] / h)
+        Phi1.append(out[1:])
+        for s, b in enumerate(jt.bodies):
+            kick[b] = kick[b] + ca.mtimes(out[1 + s].T, nu[rows[j]:rows[j + 1]])
+    p1s = [p1s[k] - kick[k] for k in range(N)]
+    vel_funs = _node_velocity(lags, body)
+    explicit = all(f is not None for f in vel_funs.values())
+    if explicit:
+        vel = [vel_funs[keys[k]][0](ca.vec(g1s[k]), p1s[k], k,
+                                    _inverse_hessian(vel_funs[keys[k]][1], k)) for k in range(N)]
+        extra_rows, extra_z, extra_guess = [], [], []
+    else:
+        v1 = ca.SX.sym("v1", N * db)
+        vel = [v1[k * db:(k + 1) * db] for k in range(N)]
+        dl = _momentum(lags, body)
+        extra_rows = [dl[keys[k]](g1s[k], vel[k], k) - p1s[k] for k in range(N)]
+        extra_z, extra_guess = [v1], [xi_hat]
+        blocks.append(("v1", nz + 2 * m, nz + 2 * m + N * db))
+    hidden = []
+    for j, jt in enumerate(joints):
+        hidden.append(sum((ca.mtimes(Phi1[j][s], vel[b]) for s, b in enumerate(jt.bodies)),
+                          ca.SX.zeros(len(jt.rows))))
+    residual = ca.vertcat(*res, *phis, *hidden, *extra_rows)
+    eqs = StepEquations(ca.vertcat(z, lam, nu, *extra_z), tuple(blocks), residual, g1,
+                        ca.vertcat(*p1s), ca.vertcat(*guesses, ca.SX.zeros(2 * m), *extra_guess),
+                        xi_hat, margin, ca.vertcat(*charts))
+    return FamilyParts(eqs, lag, velocity)
+
+
+def _momentum(lags, body):
+    """{class key: Function(g, xi, i) -> dl/dxi} (call nodes)."""
+    G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i")
+    return {key: ca.Function(f"body{c}_momentum", [G, X, I],
+                             [ca.gradient(lag_in(G, X, I), X)], CALL)
+            for c, (key, (lag_in, _)) in enumerate(sorted(lags.items()))}
+
+
+def _node_velocity(lags, body):
+    """{class key: (Function(g (vec), p, i, Hinv (d*d, column-major)) -> Hinv (p - dl/dxi(g, 0)),
+    Function(i) -> d2l/dxi2)}, or None for a class whose d2l/dxi2 depends on g or xi (it may
+    depend on i: its inverse is taken numerically per body, as the expanded step does)."""
+    G, X, I, P = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i"), \
+        ca.SX.sym("p", body.d)
+    Hinv = ca.SX.sym("Hinv", body.d, body.d)
+    out = {}
+    for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
+        dl = ca.gradient(lag_in(G, X, I), X)
+        hess = ca.jacobian(dl, X)
+        if ca.depends_on(hess, ca.vertcat(ca.vec(G), X)):
+            out[key] = None
+            continue
+        vel = ca.mtimes(Hinv, P - ca.substitute(dl, X, ca.SX.zeros(body.d)))
+        out[key] = (ca.Function(f"body{c}_velocity", [ca.vec(G), P, I, ca.vec(Hinv)], [vel],
+                                CALL), ca.Function(f"body{c}_hessian", [I], [hess]))
+    return out
+
+
+def _inverse_hessian(fun, k: int):
+    """d2l/dxi2 of body k inverted numerically, column-major (a DM)."""
+    H = np.array(fun(k), dtype=float)
+    return ca.DM(np.linalg.inv(H).ravel(order="F"))
+
+
+def _product_lagrangian(lags, keys, body, N):
+    """(lag, velocity): l(G, X) of the product as a sum of per-body calls, and one Newton step
+    of dl/dxi = p from xi body by body (the Hessian of a separable l is block-diagonal)."""
+    nb, db = body.n, body.d
+    G, X, I, P = ca.SX.sym("g", nb, nb), ca.SX.sym("xi", db), ca.SX.sym("i"), ca.SX.sym("p", db)
+    steps = {}
+    for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
+        mu = ca.gradient(lag_in(G, X, I), X)
+        steps[key] = ca.Function(f"body{c}_velocity_step", [ca.vec(G), P, X, I],
+                                 [X - ca.solve(ca.jacobian(mu, X), mu - P)], CALL)
+
+    def lag(Gp, Xp):
+        return sum((lags[keys[k]][1](Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb],
+                                     Xp[k * db:(k + 1) * db], k) for k in range(N)), ca.SX(0))
+
+    def velocity(Gp, Pp, Xp):
+        return ca.vertcat(*[steps[keys[k]](ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]),
+                                           Pp[k * db:(k + 1) * db], Xp[k * db:(k + 1) * db], k)
+                            for k in range(N)])
+    return lag, velocity
