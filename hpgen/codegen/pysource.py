@@ -356,11 +356,37 @@ class _Callee:
         self.outputs = tuple(f"y{i}" for i in range(fn.n_out()))
 
 
+class _Expanded:
+    """A kernel over MX seen as its SX expansion (calls of never_inline functions stay
+    calls): the form the printer walks."""
+
+    def __init__(self, kernel):
+        self.name, self.inputs, self.outputs = kernel.name, kernel.inputs, kernel.outputs
+        self.function = kernel.function.expand()
+
+
+_EXPANDED: dict = {}
+
+
+def as_sx(kernel):
+    """``kernel`` itself when its function is over SX, else its SX expansion (cached per
+    kernel object)."""
+    f = kernel.function
+    if not f.is_a("MXFunction"):
+        return kernel
+    key = id(kernel)
+    hit = _EXPANDED.get(key)
+    if hit is None or hit[0] is not kernel:
+        _EXPANDED.clear() if len(_EXPANDED) > 64 else None
+        hit = _EXPANDED[key] = (kernel, _Expanded(kernel))
+    return hit[1]
+
+
 def callee_functions(kernels) -> list:
     """The functions that ``kernels`` call (OP_CALL), directly or through other callees, in
     order of first use (CasADi names the functions of one derivation uniquely)."""
     seen: dict = {}
-    stack = [k.function for k in reversed(list(kernels))]
+    stack = [as_sx(k).function for k in reversed(list(kernels))]
     order = []
     while stack:
         f = stack.pop()
@@ -410,7 +436,8 @@ def kernel_lines(kernel, nonzeros: bool = False) -> list[str]:
 
 
 def py_kernel_context(kernel) -> dict:
-    """What kernels.py.j2 needs for one kernel."""
+    """What kernels.py.j2 needs for one kernel (an MX kernel through its SX expansion)."""
+    kernel = as_sx(kernel)
     f = kernel.function
     return {"name": kernel.name,
             "inputs": [{"name": kernel.inputs[i], "numel": f.numel_in(i)}

@@ -27,7 +27,7 @@ import casadi as ca
 from ..schemes import RKMK
 from .action import step_equations
 from .constraints import constrain_step, constraint_function
-from .family import block_diagonal_symbol, family_local, family_step
+from .family import block_diagonal_symbol, family_local, family_step, mx_step_kernels
 from .lagrangian import lagrangian_function, open_functions, to_casadi
 from .linearize import step_partials
 from .record_kernel import record_row, velocity_step
@@ -113,7 +113,13 @@ def derive(model, tableau, tau: str, rkmk: str, expand: bool = False) -> Discret
     mu = ca.gradient(lval, xi)
     hess = ca.jacobian(mu, xi)
 
+    mx = mx_step_kernels(model, tableau, tau, rkmk) if local else {}
+
     def kernel(name, inputs, outputs):
+        if name in mx:               # a family's step kernels, composed over MX
+            f, names_in, names_out = mx[name]
+            return Kernel(name, f, tuple(names_in), tuple(names_out))
+        outputs = outputs() if callable(outputs) else outputs
         if extra and name in OPEN_EXTRA:
             inputs = list(inputs) + extra
         names_in = tuple(nm for nm, _ in inputs)
@@ -122,7 +128,6 @@ def derive(model, tableau, tau: str, rkmk: str, expand: bool = False) -> Discret
         f = ca.Function(name, [v for _, v in inputs], outs, list(names_in), list(names_out))
         return Kernel(name, f, names_in, names_out)
 
-    J = ca.jacobian(eqs.residual, z)
     # a family's kernels keep their outputs' structural sparsity (the C and Python wrappers
     # scatter the nonzeros into the dense arrays of the contract): block-diagonal Hessians
     # and banded Jacobians of N bodies are not written out entry by entry
@@ -142,13 +147,14 @@ def derive(model, tableau, tau: str, rkmk: str, expand: bool = False) -> Discret
     # what the loop may skip: g_{k+1} is not computed when neither the step nor the row use g
     step_uses_g = bool(ca.depends_on(eqs.residual, gf) or ca.depends_on(eqs.p1, gf))
     theta = ca.SX.sym("theta", 1)
-    chart_point = ca.mtimes(g, group.tau(tau, theta * eqs.chart_step))
+    chart_point = lambda: ca.mtimes(g, group.tau(tau, theta * eqs.chart_step))  # noqa: E731
     kernels = (
         kernel("residual", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("F", eqs.residual)]),
-        kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("J", flat(J))]),
+        kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
+               lambda: [("J", flat(ca.jacobian(eqs.residual, z)))]),
         # F and J in one pass (shared subexpressions): full Newton's iteration
         kernel("residual_jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
-               [("F", eqs.residual), ("J", flat(J))]),
+               lambda: [("F", eqs.residual), ("J", flat(ca.jacobian(eqs.residual, z)))]),
         kernel("update", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
                [("g1", flat(eqs.g1)), ("p1", eqs.p1)]),
         kernel("guess", [("xi", eqs.xi_hat), ("g", gvec), ("p", p), ("h", hv)], [("z0", eqs.guess)]),
@@ -160,7 +166,7 @@ def derive(model, tableau, tau: str, rkmk: str, expand: bool = False) -> Discret
         kernel("margin", [("z", z), ("h", hv)], [("m", eqs.margin)]),
         kernel("section", [("g", gvec), ("p", p)], [("s", section_function(model, g, p))]),
         kernel("chart_point", [("z", z), ("g", gvec), ("h", hv), ("theta", theta)],
-               [("g_theta", flat(chart_point))]),
+               lambda: [("g_theta", flat(chart_point()))]),
         kernel("observe", [("g", gvec), ("p", p)],
                [("xi", xi_obs), ("E", ca.substitute(ca.dot(mu, xi) - lval, xi, xi_obs)),
                 ("m", group.momentum_map(g, p)), ("e", group.group_defect(g))]),
@@ -169,8 +175,9 @@ def derive(model, tableau, tau: str, rkmk: str, expand: bool = False) -> Discret
                [("xi1", vstep(g, p, xi))]),
         kernel("record", [("g", gvec), ("p", p), ("xi", xi)], [("row", row)]),
         kernel("step_partials", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
-               [(nm, flat(e)) for nm, e in zip(("Fs", "Yz", "Ys", "FH", "YH"), step_partials(
-                   group, g, p, z, eqs.residual, eqs.g1, eqs.p1, hv if is_open else None))]),
+               lambda: [(nm, flat(e)) for nm, e in zip(("Fs", "Yz", "Ys", "FH", "YH"),
+                   step_partials(group, g, p, z, eqs.residual, eqs.g1, eqs.p1,
+                                 hv if is_open else None))]),
     )
     assert tuple(k.name for k in kernels) == KERNEL_NAMES
     return DiscreteStep(

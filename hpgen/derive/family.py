@@ -40,7 +40,7 @@ from ..groups import group_from_spec
 from .action import StepEquations, step_equations
 from .lagrangian import to_casadi
 
-CALL = {"never_inline": True}
+CALL = {"never_inline": True, "jac_penalty": 0}
 
 
 @dataclass(frozen=True)
@@ -122,12 +122,19 @@ def block_diagonal_symbol(group):
     return ca.diagcat(*blocks)
 
 
-def family_step(model, tableau, tau: str, rkmk: str, g, p, h) -> FamilyParts:
-    """The family step (module docstring) in the SX symbols g (n x n, block-diagonal), p (d),
-    h (1), for a model with family_local(model)."""
+_LAST: list = []
+
+
+def _functions(model, tableau, tau: str, rkmk: str):
+    """(body group, lags, keys, steps, joint functions, node velocity functions): the
+    per-body and per-joint functions, built once per (model, scheme) and shared by every
+    kernel (one CasADi function each, so the generated code has each once)."""
+    key = (tableau.name, tuple(map(tuple, tableau.A)), tau, rkmk)
+    if _LAST and _LAST[0] is model and _LAST[1] == key:
+        return _LAST[2]
     family = model.family
     body = group_from_spec(family.body)
-    nb, db, N = body.n, body.d, family.count
+    nb, db = body.n, body.d
     lags, keys = _body_lagrangians(model, body)
     reduced = model.left_invariant and not model.constraints
 
@@ -135,11 +142,11 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h) -> FamilyParts:
     gb, pb, hb, ib = ca.SX.sym("g", nb, nb), ca.SX.sym("p", db), ca.SX.sym("h"), ca.SX.sym("i")
     gbv = ca.vec(gb)
     steps = {}
-    for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
+    for c, (cls, (lag_in, _)) in enumerate(sorted(lags.items())):
         e = step_equations(body, lambda G, X, f=lag_in: f(G, X, ib), tableau, tau, rkmk,
                            reduced, gb, pb, hb)
         args = [e.z, gbv, pb, hb, ib]
-        steps[key] = dict(
+        steps[cls] = dict(
             nz=e.z.numel(), blocks=e.blocks,
             F=ca.Function(f"body{c}_residual", args, [e.residual], CALL),
             U=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1], CALL),
@@ -147,22 +154,41 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h) -> FamilyParts:
             C=ca.Function(f"body{c}_chart", [e.z, hb], [e.chart_step], CALL),
             Z=ca.Function(f"body{c}_guess", [e.xi_hat, gbv, pb, hb], [e.guess], CALL))
 
+    joints = family.local.joints
+    jfun = _joint_functions(model, body) if joints else {}
+    vel_funs = _node_velocity(lags, body) if joints else {}
+    out = (body, lags, keys, steps, jfun, vel_funs)
+    _LAST[:] = [model, key, out]
+    return out
+
+
+def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyParts:
+    """The family step (module docstring) in g (n x n: SX, block-diagonal, or MX), p (d), h
+    (1), for a model with family_local(model); z: the unknowns' symbol to use (else a new
+    one, of the class of g)."""
+    S = ca.MX if isinstance(g, ca.MX) else ca.SX      # the composition's symbol class
+    body, lags, keys, steps, jfun, vel_funs = _functions(model, tableau, tau, rkmk)
+    nb, db, N = body.n, body.d, model.family.count
+
     Gk = [g[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb] for k in range(N)]
     pk = [p[k * db:(k + 1) * db] for k in range(N)]
-    xi_hat = ca.SX.sym("xi_hat", N * db)
+    xi_hat = S.sym("xi_hat", N * db)
+    joints = model.family.local.joints
+    m = sum(len(j.rows) for j in joints)
+    explicit = all(f is not None for f in vel_funs.values())
+    nzb = sum(steps[keys[k]]["nz"] for k in range(N))
+    # one symbol for all unknowns (an MX function's input must be a whole symbol)
+    if z is None:
+        z = S.sym("z", nzb + (2 * m + (0 if explicit else N * db) if joints else 0))
     zs, blocks, off = [], [], 0
     for k in range(N):
         st = steps[keys[k]]
-        zs.append(ca.SX.sym(f"z{k}", st["nz"]))
+        zs.append(z[off:off + st["nz"]])
         blocks += [(f"{lab}[{k}]", off + a, off + b) for lab, a, b in st["blocks"]]
         off += st["nz"]
-
-    joints = model.family.local.joints
-    jfun = _joint_functions(model, body) if joints else {}
-    m = sum(len(j.rows) for j in joints)
-    lam, nu = ca.SX.sym("lambda", m), ca.SX.sym("nu", m)
+    lam, nu = z[nzb:nzb + m], z[nzb + m:nzb + 2 * m]
     rows = np.cumsum([0] + [len(j.rows) for j in joints])
-    impulse = [ca.SX.zeros(db) for _ in range(N)]        # sum_j Phi_{j,k}^T lambda_j
+    impulse = [S.zeros(db) for _ in range(N)]        # sum_j Phi_{j,k}^T lambda_j
     for j, jt in enumerate(joints):
         out = jfun[(jt.text, jt.index)](*[ca.vec(Gk[b]) for b in jt.bodies], jt.value)
         for s, b in enumerate(jt.bodies):
@@ -178,7 +204,6 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h) -> FamilyParts:
         margins.append(st["M"](zs[k], h))
         charts.append(st["C"](zs[k], h))
         guesses.append(st["Z"](xi_hat[k * db:(k + 1) * db], ca.vec(Gk[k]), pk[k], h))
-    z = ca.vertcat(*zs)
     margin = margins[0]
     for mk in margins[1:]:
         margin = ca.fmin(margin, mk)
@@ -189,10 +214,10 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h) -> FamilyParts:
                             ca.vertcat(*guesses), xi_hat, margin, ca.vertcat(*charts))
         return FamilyParts(eqs, lag, velocity)
 
-    nz = z.numel()
+    nz = nzb
     blocks += [("lambda", nz, nz + m), ("nu", nz + m, nz + 2 * m)]
     phis, Phi1 = [], []
-    kick = [ca.SX.zeros(db) for _ in range(N)]           # sum_j Phi_{j,k}(g1)^T nu_j
+    kick = [S.zeros(db) for _ in range(N)]           # sum_j Phi_{j,k}(g1)^T nu_j
     for j, jt in enumerate(joints):
         out = jfun[(jt.text, jt.index)](*[ca.vec(g1s[b]) for b in jt.bodies], jt.value)
         phis.append(out[0] / h)
@@ -200,26 +225,24 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h) -> FamilyParts:
         for s, b in enumerate(jt.bodies):
             kick[b] = kick[b] + ca.mtimes(out[1 + s].T, nu[rows[j]:rows[j + 1]])
     p1s = [p1s[k] - kick[k] for k in range(N)]
-    vel_funs = _node_velocity(lags, body)
-    explicit = all(f is not None for f in vel_funs.values())
     if explicit:
         vel = [vel_funs[keys[k]][0](ca.vec(g1s[k]), p1s[k], k,
                                     _inverse_hessian(vel_funs[keys[k]][1], k)) for k in range(N)]
-        extra_rows, extra_z, extra_guess = [], [], []
+        extra_rows, extra_guess = [], []
     else:
-        v1 = ca.SX.sym("v1", N * db)
+        v1 = z[nz + 2 * m:]
         vel = [v1[k * db:(k + 1) * db] for k in range(N)]
         dl = _momentum(lags, body)
         extra_rows = [dl[keys[k]](g1s[k], vel[k], k) - p1s[k] for k in range(N)]
-        extra_z, extra_guess = [v1], [xi_hat]
+        extra_guess = [xi_hat]
         blocks.append(("v1", nz + 2 * m, nz + 2 * m + N * db))
     hidden = []
     for j, jt in enumerate(joints):
         hidden.append(sum((ca.mtimes(Phi1[j][s], vel[b]) for s, b in enumerate(jt.bodies)),
-                          ca.SX.zeros(len(jt.rows))))
+                          S.zeros(len(jt.rows))))
     residual = ca.vertcat(*res, *phis, *hidden, *extra_rows)
-    eqs = StepEquations(ca.vertcat(z, lam, nu, *extra_z), tuple(blocks), residual, g1,
-                        ca.vertcat(*p1s), ca.vertcat(*guesses, ca.SX.zeros(2 * m), *extra_guess),
+    eqs = StepEquations(z, tuple(blocks), residual, g1,
+                        ca.vertcat(*p1s), ca.vertcat(*guesses, S.zeros(2 * m), *extra_guess),
                         xi_hat, margin, ca.vertcat(*charts))
     return FamilyParts(eqs, lag, velocity)
 
@@ -270,11 +293,76 @@ def _product_lagrangian(lags, keys, body, N):
                                  [X - ca.solve(ca.jacobian(mu, X), mu - P)], CALL)
 
     def lag(Gp, Xp):
-        return sum((lags[keys[k]][1](Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb],
-                                     Xp[k * db:(k + 1) * db], k) for k in range(N)), ca.SX(0))
+        terms = [lags[keys[k]][1](Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb],
+                                  Xp[k * db:(k + 1) * db], k) for k in range(N)]
+        return ca.sum1(ca.vertcat(*terms))
 
     def velocity(Gp, Pp, Xp):
         return ca.vertcat(*[steps[keys[k]](ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]),
                                            Pp[k * db:(k + 1) * db], Xp[k * db:(k + 1) * db], k)
                             for k in range(N)])
     return lag, velocity
+
+
+def _body_maps(body, tau: str):
+    """Per-body SX functions (call nodes) for the MX kernels: the chart point
+    g tau(theta x), the perturbed element g (I + eta^), and vee(g_ref^{-1} g)."""
+    G, R = ca.SX.sym("g", body.n, body.n), ca.SX.sym("gref", body.n, body.n)
+    x, th, eta = ca.SX.sym("x", body.d), ca.SX.sym("theta"), ca.SX.sym("eta", body.d)
+    return (ca.Function("body_chart_point", [ca.vec(G), x, th],
+                        [ca.vec(ca.mtimes(G, body.tau(tau, th * x)))], CALL),
+            ca.Function("body_perturbed", [ca.vec(G), eta],
+                        [ca.vec(ca.mtimes(G, ca.SX.eye(body.n) + body.hat(eta)))], CALL),
+            ca.Function("body_chart_of", [ca.vec(R), ca.vec(G)],
+                        [body.vee(ca.mtimes(body.inverse(R), G))], CALL))
+
+
+def _blocks(M, nb, N):
+    return [ca.vec(M[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]) for k in range(N)]
+
+
+def mx_step_kernels(model, tableau, tau: str, rkmk: str) -> dict:
+    """{kernel name: (Function over MX, input names, output names)} for the step kernels of
+    a family model (residual, jacobian, residual_jacobian, update, guess, margin,
+    chart_point, update_p, step_partials; hpgen.abi's signatures, closed models). Composed
+    over MX, the calls pass whole vectors and CasADi differentiates them through the
+    callees' own Jacobians (``jac_penalty`` 0): the generated C has the per-body functions
+    once and a few lines per call. Outputs keep their structural sparsity."""
+    n, d = model.group.n, model.group.d
+    body = group_from_spec(model.family.body)
+    nb, N = body.n, model.family.count
+    gv, p, h = ca.MX.sym("g", n * n), ca.MX.sym("p", d), ca.MX.sym("h")
+    g = ca.reshape(gv, n, n)
+    eqs = family_step(model, tableau, tau, rkmk, g, p, h).eqs
+    z, col = eqs.z, (lambda M: ca.reshape(M, M.numel(), 1))  # noqa: E731
+    J = col(ca.jacobian(eqs.residual, z))
+    g1 = col(eqs.g1)
+    chart_fn, perturb, chart_of = _body_maps(body, tau)
+    theta = ca.MX.sym("theta")
+    db = body.d
+    gth = ca.diagcat(*[ca.reshape(chart_fn(G, eqs.chart_step[k * db:(k + 1) * db], theta),
+                                  nb, nb) for k, G in enumerate(_blocks(g, nb, N))])
+    # step partials (hpgen.derive.linearize): s = (eta, dp), g -> g (I + eta^), p -> p + dp
+    eta, dp = ca.MX.sym("eta", d), ca.MX.sym("dp", d)
+    g_s = ca.diagcat(*[ca.reshape(perturb(G, eta[k * db:(k + 1) * db]), nb, nb)
+                       for k, G in enumerate(_blocks(g, nb, N))])
+    pert = family_step(model, tableau, tau, rkmk, g_s, p + dp, h, z=z).eqs
+    g1ref = ca.MX.sym("g1ref", n * n)
+    Y = ca.vertcat(*[chart_of(R, G) for R, G in zip(_blocks(ca.reshape(g1ref, n, n), nb, N),
+                                                    _blocks(pert.g1, nb, N))], pert.p1)
+    s = ca.vertcat(eta, dp)
+    parts = [ca.jacobian(pert.residual, s), ca.jacobian(Y, z), ca.jacobian(Y, s)]
+    parts = ca.substitute(parts, [s, g1ref], [ca.MX.zeros(2 * d), ca.densify(g1)])
+    step_in = ([z, gv, p, h], ("z", "g", "p", "h"))
+    out = {"residual": (step_in, [eqs.residual], ("F",)),
+           "jacobian": (step_in, [J], ("J",)),
+           "residual_jacobian": (step_in, [eqs.residual, J], ("F", "J")),
+           "update": (step_in, [g1, eqs.p1], ("g1", "p1")),
+           "guess": (([eqs.xi_hat, gv, p, h], ("xi", "g", "p", "h")), [eqs.guess], ("z0",)),
+           "margin": (([z, h], ("z", "h")), [eqs.margin], ("m",)),
+           "chart_point": (([z, gv, h, theta], ("z", "g", "h", "theta")), [col(gth)],
+                           ("g_theta",)),
+           "update_p": (step_in, [eqs.p1], ("p1",)),
+           "step_partials": (step_in, [col(e) for e in parts], ("Fs", "Yz", "Ys"))}
+    return {name: (ca.Function(name, list(ins), outs, list(nin), list(nout)), nin, nout)
+            for name, ((ins, nin), outs, nout) in out.items()}
