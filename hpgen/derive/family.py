@@ -5,11 +5,13 @@ For a body-separable Lagrangian l = sum_i l_i(g_i, xi_i; i) (hpgen.model.bodyter
 term local to its body, the body index i a numeric input) the unconstrained step of the
 product group is N independent steps: body i's stage equations involve its own unknowns z_i,
 (g_i, p_i) and h only (the chart maps and the action sum of a product split factor by
-factor). Each is derived once as a SX Function of (z_i, g_i, p_i, h, i) with the option
-``never_inline``; calling it on the kernels' symbols leaves one call instruction per body in
-the kernel, and CasADi's derivatives of a call are calls of derivative functions (derived
-once too). Bodies whose Lagrangians differ (sums over different ranges) get one function per
-distinct set of sums ("class").
+factor). Each is derived once as a SX Function of (z_i, g_i, p_i, h, i) with the options
+``never_inline`` (a call node where it is used) and ``jac_penalty`` 0 (CasADi differentiates
+a call through the callee's own Jacobian function, derived once, instead of one directional
+derivative per seed). The step kernels (mx_step_kernels) compose the calls over MX, where a
+call passes whole vectors; family_step composes them over SX as well (the SX kernels' and
+the tests' form). Bodies whose Lagrangians differ (sums over different ranges) get one
+function per distinct set of sums ("class").
 
 Constraints (hpgen.derive.constraints, docs/numerics.md sec. 14) decompose by joint: with
 joint j's rows phi_j(g_a, g_b, ...; i_j) and body-frame Jacobians Phi_{j,a},
@@ -24,10 +26,13 @@ text (rows with the loop variable i as a numeric input).
 Unknowns, in this order: every body's step unknowns (body 0's blocks, body 1's, ...; the
 block labels of the expanded step with the body as a suffix, "Xi1[3]"), then ``lambda`` and
 ``nu`` (all constraint rows, file order: the expanded step's blocks, so the multipliers'
-readers work unchanged) and, when d2l/dxi2 is not constant, ``v1`` (d, body by body). The
-rows follow the same order. For a chain the Jacobian is an arrow of blocks: block-diagonal in
-the bodies, each joint's rows and columns touching two neighbouring bodies; a fill-reducing
-order keeps its sparse factors O(N).
+readers work unchanged) and, when d2l/dxi2 depends on g or xi, ``v1`` (d, body by body; when
+it is constant per body, possibly depending on i, the node velocity is explicit, its inverse
+taken numerically per body as the expanded step does). The rows follow the same order. For a
+chain the Jacobian is an arrow of blocks: block-diagonal in the bodies, each joint's rows
+and columns touching two neighbouring bodies (all bodies first, then all joints: the
+multiplier blocks stay contiguous in file order); a fill-reducing order keeps its sparse
+factors O(N).
 """
 from __future__ import annotations
 
