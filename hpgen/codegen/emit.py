@@ -34,7 +34,8 @@ from .contract import HASH_RE, MODULE_RE, CodegenError, check_step
 from .csource import c_kernel_context, casadi_c_code, work_sizes
 from . import pyiterate, pylinear
 from .lanes import lanes_context
-from .pysource import callee_lines, py_kernel_context
+from .pycallees import callee_lines
+from .pysource import py_kernel_context
 
 META_FORMAT = abi.META_FORMAT
 TEMPLATES = {"kernels.c": "kernels.c.j2", "kernels.py": "kernels.py.j2",

@@ -347,79 +347,6 @@ def fast_lines(kernel, bound: bool = False, nonzeros: bool = False) -> tuple[lis
     return lines, raising
 
 
-class _Callee:
-    """A called function printed like a kernel whose arguments are their nonzeros."""
-
-    def __init__(self, fn):
-        self.function, self.name = fn, callee_name(fn)
-        self.inputs = tuple(f"x{i}" for i in range(fn.n_in()))
-        self.outputs = tuple(f"y{i}" for i in range(fn.n_out()))
-
-
-class _Expanded:
-    """A kernel over MX seen as its SX expansion (calls of never_inline functions stay
-    calls): the form the printer walks."""
-
-    def __init__(self, kernel):
-        self.name, self.inputs, self.outputs = kernel.name, kernel.inputs, kernel.outputs
-        self.function = kernel.function.expand()
-
-
-_EXPANDED: dict = {}
-
-
-def as_sx(kernel):
-    """``kernel`` itself when its function is over SX, else its SX expansion (cached per
-    kernel object)."""
-    f = kernel.function
-    if not f.is_a("MXFunction"):
-        return kernel
-    key = id(kernel)
-    hit = _EXPANDED.get(key)
-    if hit is None or hit[0] is not kernel:
-        _EXPANDED.clear() if len(_EXPANDED) > 64 else None
-        hit = _EXPANDED[key] = (kernel, _Expanded(kernel))
-    return hit[1]
-
-
-def callee_functions(kernels) -> list:
-    """The functions that ``kernels`` call (OP_CALL), directly or through other callees, in
-    order of first use (CasADi names the functions of one derivation uniquely)."""
-    seen: dict = {}
-    stack = [as_sx(k).function for k in reversed(list(kernels))]
-    order = []
-    while stack:
-        f = stack.pop()
-        for fn in _callees(f).values():
-            name = fn.name()
-            if name in seen:
-                continue
-            seen[name] = fn
-            order.append(fn)
-            stack.append(fn)
-    return order
-
-
-def callee_lines(kernels) -> list[str]:
-    """Module-level Python functions ``_call_<name>(*a)``, one per called function: ``a`` the
-    nonzeros of its inputs in order, the result the nonzeros of its outputs in order (what an
-    OP_CALL instruction passes and receives); the same statements as a kernel body."""
-    lines: list[str] = []
-    for fn in callee_functions(kernels):
-        c = _Callee(fn)
-        lines += ["", "", f"def {c.name}(*a):",
-                  f'    """{fn.name()}: the nonzeros of ({", ".join(fn.name_in())}) -> the '
-                  f'nonzeros of ({", ".join(fn.name_out())})"""']
-        off = 0
-        for i in range(fn.n_in()):
-            lines.append(f"    x{i} = a[{off}:{off + fn.nnz_in(i)}]")
-            off += fn.nnz_in(i)
-        lines += ["    " + t for t in kernel_lines(c, nonzeros=True)]
-        outs = ", ".join(f"*r{i}" for i in range(fn.n_out()))
-        lines.append(f"    return ({outs}{',' if fn.n_out() == 1 else ''})")
-    return lines
-
-
 def kernel_lines(kernel, nonzeros: bool = False) -> list[str]:
     """Body statements (unindented) of the Python function for one kernel, after the input
     conversion that the template prints; they leave the outputs in lists ``r<i>``."""
@@ -437,6 +364,7 @@ def kernel_lines(kernel, nonzeros: bool = False) -> list[str]:
 
 def py_kernel_context(kernel) -> dict:
     """What kernels.py.j2 needs for one kernel (an MX kernel through its SX expansion)."""
+    from .pycallees import as_sx
     kernel = as_sx(kernel)
     f = kernel.function
     return {"name": kernel.name,
