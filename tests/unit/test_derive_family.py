@@ -189,3 +189,24 @@ def test_compiled_c_and_python_modules_match_the_expansion(tmp_path):
     for backend, rows in out.items():
         assert np.abs(rows - ref_rows).max() <= 1e-11, backend
     assert np.abs(out["c"] - out["python"]).max() <= 1e-13
+
+
+def test_local_terms_of_the_chain_and_a_coupled_family():
+    """The chain's sum and joints are local (one body; two bodies per ball joint, the pin one);
+    a family whose sum couples neighbours (a spring between R[i-1] and R[i]) is not, and is
+    derived expanded."""
+    local = chain(3).family.local
+    assert local is not None and len(local.bodies) == 1
+    assert [j.bodies for j in local.joints] == [(0,), (1, 0), (2, 1)]
+    from tests.unit.test_families_step import family_text
+    text = family_text(3)
+    coupled = load_model_text(text)
+    assert coupled.family is not None and coupled.family.local is None
+    assert all("[" not in lab for lab, _, _ in derive(
+        coupled, resolve_tableau("stormer-verlet"), "cay", "truncated").unknowns)
+
+
+def test_family_group_sizes_beyond_the_dense_limit_load():
+    """SE3^64 (n = 256, d = 384) loads; the product-group limit (64) still holds otherwise."""
+    m = chain(64)
+    assert (m.group.n, m.group.d) == (256, 384) and m.family.local is not None
