@@ -337,6 +337,9 @@ def mx_step_kernels(model, tableau, tau: str, rkmk: str) -> dict:
     body = group_from_spec(model.family.body)
     nb, N = body.n, model.family.count
     gv, p, h = ca.MX.sym("g", n * n), ca.MX.sym("p", d), ca.MX.sym("h")
+    mapped = _mapped_kernels(model, tableau, tau, rkmk, gv, p, h)
+    if mapped is not None:
+        return mapped
     g = ca.reshape(gv, n, n)
     eqs = family_step(model, tableau, tau, rkmk, g, p, h).eqs
     z, col = eqs.z, (lambda M: ca.reshape(M, M.numel(), 1))  # noqa: E731
@@ -366,6 +369,57 @@ def mx_step_kernels(model, tableau, tau: str, rkmk: str) -> dict:
            "guess": (([eqs.xi_hat, gv, p, h], ("xi", "g", "p", "h")), [eqs.guess], ("z0",)),
            "margin": (([z, h], ("z", "h")), [eqs.margin], ("m",)),
            "chart_point": (([z, gv, h, theta], ("z", "g", "h", "theta")), [col(gth)],
+                           ("g_theta",)),
+           "update_p": (step_in, [eqs.p1], ("p1",)),
+           "step_partials": (step_in, [col(e) for e in parts], ("Fs", "Yz", "Ys"))}
+    return {name: (ca.Function(name, list(ins), outs, list(nin), list(nout)), nin, nout)
+            for name, ((ins, nin), outs, nout) in out.items()}
+
+
+def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
+    """mx_step_kernels' dict from mapped calls (hpgen.derive.family_map), or None when the
+    family does not qualify (several Lagrangian classes, a node velocity that is not
+    explicit)."""
+    from .family_map import mapped_step
+    funcs = _functions(model, tableau, tau, rkmk)
+    body, lags, keys, steps, jfun, vel_funs = funcs
+    if len(steps) != 1 or any(f is None for f in vel_funs.values()):
+        return None
+    n, d, N = model.group.n, model.group.d, model.family.count
+    nb, db = body.n, body.d
+    gcol = ca.reshape(ca.DM(block_diagonal_symbol(model.group).sparsity(), 1.0), n * n, 1)
+    spcol = gcol.sparsity()
+    idx = [int(k) for k in spcol.row()]
+    G, P = ca.reshape(gv[idx], nb * nb, N), ca.reshape(p, db, N)
+    m = sum(len(j.rows) for j in model.family.local.joints)
+    nzb = next(iter(steps.values()))["nz"]
+    z = ca.MX.sym("z", nzb * N + (2 * m if m else 0))
+    xi_hat = ca.MX.sym("xi_hat", d)
+    eqs = mapped_step(model, funcs, G, P, h, z, xi_hat)
+    if eqs is None:
+        return None
+    col = lambda M: ca.reshape(M, M.numel(), 1)  # noqa: E731
+    cast = lambda M: ca.sparsity_cast(ca.vec(M), spcol)  # noqa: E731  (nb^2 x N -> g's)
+    J = col(ca.jacobian(eqs.residual, z))
+    chart_fn, perturb, chart_of = _body_maps(body, tau)
+    theta = ca.MX.sym("theta")
+    gth = chart_fn.map(N)(G, ca.reshape(eqs.chart_step, db, N), theta)
+    eta, dp = ca.MX.sym("eta", d), ca.MX.sym("dp", d)
+    G_s = perturb.map(N)(G, ca.reshape(eta, db, N))
+    pert = mapped_step(model, funcs, G_s, P + ca.reshape(dp, db, N), h, z, xi_hat)
+    G1ref = ca.MX.sym("g1ref", nb * nb, N)
+    Y = ca.vertcat(ca.vec(chart_of.map(N)(G1ref, pert.g1)), pert.p1)
+    s = ca.vertcat(eta, dp)
+    parts = [ca.jacobian(pert.residual, s), ca.jacobian(Y, z), ca.jacobian(Y, s)]
+    parts = ca.substitute(parts, [s, G1ref], [ca.MX.zeros(2 * d), eqs.g1])
+    step_in = ([z, gv, p, h], ("z", "g", "p", "h"))
+    out = {"residual": (step_in, [eqs.residual], ("F",)),
+           "jacobian": (step_in, [J], ("J",)),
+           "residual_jacobian": (step_in, [eqs.residual, J], ("F", "J")),
+           "update": (step_in, [cast(eqs.g1), eqs.p1], ("g1", "p1")),
+           "guess": (([xi_hat, gv, p, h], ("xi", "g", "p", "h")), [eqs.guess], ("z0",)),
+           "margin": (([z, h], ("z", "h")), [eqs.margin], ("m",)),
+           "chart_point": (([z, gv, h, theta], ("z", "g", "h", "theta")), [cast(gth)],
                            ("g_theta",)),
            "update_p": (step_in, [eqs.p1], ("p1",)),
            "step_partials": (step_in, [col(e) for e in parts], ("Fs", "Yz", "Ys"))}

@@ -71,6 +71,13 @@ class FamilyGroup(ProductGroup):
         super().__init__([group_from_spec(family.body) for _ in range(family.count)])
         self.family = family
 
+    def momentum_map(self, g, p):
+        """Ad*_{g^{-1}} p body by body (the product's Ad is block-diagonal; building it from
+        the product's d basis vectors would cost O(N^2))."""
+        import casadi as ca
+        return ca.vertcat(*[f.momentum_map(gk, pk) for f, gk, pk in
+                            zip(self.parts, self._split_g(g), self._split_v(p))])
+
 
 def family_of(group) -> BodyFamily | None:
     """The BodyFamily of a FamilyGroup, None for any other group."""

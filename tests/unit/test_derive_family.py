@@ -122,18 +122,19 @@ def test_state_kernels_match_the_expansion(steps, n):
             assert np.abs(a - b).max() <= 1e-13 * (1.0 + np.abs(b).max()), name
 
 
-def test_kernels_call_the_body_and_joint_functions_once_each():
-    """The residual of N = 6 holds one call per body and per joint, not N unrolled copies:
-    its instruction count is that of N = 3 plus a few per extra body."""
-    counts = {}
+def test_step_kernels_do_not_grow_with_the_bodies():
+    """The chain's step kernels call each body and joint function through one mapped call:
+    their instruction lists are the same for N = 3 and N = 6, and the residual holds no
+    unrolled copy of a body's equations."""
+    sizes = {}
     for n in (3, 6):
-        f = derive(chain(n), resolve_tableau("stormer-verlet"), "cay",
-                   "truncated").kernel("residual").function
-        ops = [f.instruction_id(k) for k in range(f.n_instructions())]
-        counts[n] = (len(ops), ops.count(ca.OP_CALL))
-    assert counts[6][1] == 2 * counts[3][1]          # calls: linear in the bodies
-    per_body = (counts[6][0] - counts[3][0]) / 3
-    assert per_body < 200                           # the expansion: thousands per body
+        s = derive(chain(n), resolve_tableau("stormer-verlet"), "cay", "truncated")
+        sizes[n] = {k.name: k.function.n_instructions() for k in s.kernels
+                    if k.name in ("residual", "residual_jacobian", "update", "step_partials")}
+        names = [f.name() for f in s.kernel("residual").function.find_functions()]
+        assert f"map{n}_body0_residual" in names
+    assert sizes[3] == sizes[6]
+    assert sizes[3]["residual"] < 200
 
 
 def run(step, P, g, p, h, steps):

@@ -1,0 +1,106 @@
+"""A family's step kernels composed with mapped calls: a fixed number of MX operations
+whatever N (hpgen.derive.family derives the functions; this module wires them).
+
+Layout: the bodies' blocks of g are gathered into G (nb^2 x N, column k = vec(g_k)), the
+momenta into P (db x N), body k's unknowns are column k of Z (nzb x N, the first nzb N
+entries of z); each body function is called once through ``Function.map`` over the columns,
+each joint function once per row-block text over its instances (the slot bodies' columns
+gathered by one indexing operation each). The impulses sum_j Phi_{j,k}^T lambda_j reach the
+bodies by products with constant selection matrices. The result is the StepEquations of
+hpgen.derive.family.family_step (same unknowns, rows and outputs), used when every body
+shares one Lagrangian and the node velocity is explicit; else None.
+"""
+from __future__ import annotations
+
+import casadi as ca
+import numpy as np
+
+from .action import StepEquations
+
+CALL = {"never_inline": True, "jac_penalty": 0}
+
+
+def _joint_maps(fun, K: int, rows: int):
+    """The joint's rows as three functions of its slots' vec(g) and its index i: impulses
+    Phi_s^T l, (phi, Phi_s(g1)^T nu), and sum_s Phi_s(g1) v_s."""
+    nbb = fun.size1_in(0)
+    gs = [ca.SX.sym(f"g{s}", nbb) for s in range(K)]
+    i, lam = ca.SX.sym("i"), ca.SX.sym("l", rows)
+    vs = [ca.SX.sym(f"v{s}", fun.size2_out(1)) for s in range(K)]
+    out = fun(*gs, i)
+    kicks = [ca.mtimes(out[1 + s].T, lam) for s in range(K)]
+    hidden = ca.SX.zeros(rows)
+    for s in range(K):
+        hidden = hidden + ca.mtimes(out[1 + s], vs[s])
+    name = fun.name()
+    return (ca.Function(f"{name}_impulse", [*gs, i, lam], kicks, CALL),
+            ca.Function(f"{name}_end", [*gs, i, lam], [out[0], *kicks], CALL),
+            ca.Function(f"{name}_hidden", [*gs, i, *vs], [hidden], CALL))
+
+
+def _selection(count: int, cols, N: int):
+    """count x N constant: row r has a 1 in column cols[r]."""
+    return ca.DM(ca.Sparsity.triplet(count, N, list(range(count)), list(cols)), 1.0)
+
+
+def mapped_step(model, funcs, G, P, h, z, xi_hat) -> StepEquations | None:
+    """The family step over MX with mapped calls; funcs: hpgen.derive.family._functions;
+    G (nb^2 x N), P (db x N), h (1), z (nz) and xi_hat (d) MX."""
+    body, lags, keys, steps, jfun, vel_funs = funcs
+    N, db = model.family.count, body.d
+    if len(steps) != 1 or any(f is None for f in vel_funs.values()):
+        return None
+    (cls, st), = steps.items()
+    nzb, I = st["nz"], ca.DM(np.arange(N)).T
+    Z = ca.reshape(z[:nzb * N], nzb, N)
+    joints = model.family.local.joints
+    m = sum(len(j.rows) for j in joints)
+    rowoff = np.cumsum([0] + [len(j.rows) for j in joints])
+    groups: dict = {}
+    for j, jt in enumerate(joints):
+        groups.setdefault((jt.text, jt.index), []).append(j)
+    L, K_ = ca.MX.zeros(db, N), ca.MX.zeros(db, N)
+    plan = []
+    for key, js in groups.items():
+        first = joints[js[0]]
+        k, rows = len(first.bodies), len(first.rows)
+        fns = _joint_maps(jfun[key], k, rows)
+        cols = [[joints[j].bodies[s] for j in js] for s in range(k)]
+        sel = [_selection(len(js), c, N) for c in cols]
+        Ij = ca.DM([joints[j].value for j in js]).T
+        lam_idx = [int(z.numel() - 2 * m + rowoff[j] + r) for j in js for r in range(rows)]
+        lam = ca.reshape(z[lam_idx], rows, len(js))
+        nu = ca.reshape(z[[q + m for q in lam_idx]], rows, len(js))
+        imp = fns[0].map(len(js))(*[G[:, c] for c in cols], Ij, lam)
+        imp = [imp] if k == 1 else imp
+        for s in range(k):
+            L = L + ca.mtimes(imp[s], sel[s])
+        plan.append((js, fns, cols, sel, Ij, nu, rows))
+    Q = P - L
+    Fr = st["F"].map(N)(Z, G, Q, h, I)
+    G1, P1m = st["U"].map(N)(Z, G, Q, h, I)
+    phis, rows_of = [], []
+    for js, fns, cols, sel, Ij, nu, rows in plan:
+        out = fns[1].map(len(js))(*[G1[:, c] for c in cols], Ij, nu)
+        phis.append(out[0] / h)
+        for s in range(len(cols)):
+            K_ = K_ + ca.mtimes(out[1 + s], sel[s])
+        rows_of.append((js, rows))
+    P1 = P1m - K_
+    vel_fn, hess_fn = vel_funs[cls]
+    Hinv = ca.DM(np.hstack([np.linalg.inv(np.array(hess_fn(k), dtype=float)).reshape(
+        -1, 1, order="F") for k in range(N)]))
+    V = vel_fn.map(N)(G1, P1, I, Hinv)
+    hidden = [fns[2].map(len(js))(*[G1[:, c] for c in cols], Ij, *[V[:, c] for c in cols])
+              for js, fns, cols, sel, Ij, nu, rows in plan]
+    # joint rows back in file order
+    order = [(j, r) for js, rows in rows_of for j in js for r in range(rows)]
+    perm = np.argsort([rowoff[j] + r for j, r in order], kind="stable")
+    phi = ca.vertcat(*[ca.vec(x) for x in phis])[perm.tolist()]
+    hid = ca.vertcat(*[ca.vec(x) for x in hidden])[perm.tolist()]
+    margins = st["M"].map(N)(Z, h)
+    charts = st["C"].map(N)(Z, h)
+    guess = st["Z"].map(N)(ca.reshape(xi_hat, db, N), G, P, h)
+    return StepEquations(z, (), ca.vertcat(ca.vec(Fr), phi, hid), G1, ca.vec(P1),
+                         ca.vertcat(ca.vec(guess), ca.MX.zeros(2 * m)), xi_hat,
+                         ca.mmin(margins), ca.vec(charts))
