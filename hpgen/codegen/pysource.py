@@ -303,7 +303,8 @@ def fast_lines(kernel, bound: bool = False, nonzeros: bool = False) -> tuple[lis
     for a in range(f.n_in() if not bound else 0):
         used = {pos: i for (arg, pos), i in inputs.items() if arg == a and vals[i].uses}
         if used:
-            targets = [f"@{used[p]}@" if p in used else "_" for p in range(f.numel_in(a))]
+            targets = [f"@{used[p]}@" if p in used else "_"
+                       for p in range(_numel(f, a, False, nonzeros))]
             stmts.append((list(used.values()),
                           ", ".join(targets) + ("," if len(targets) == 1 else ""),
                           kernel.inputs[a]))
