@@ -339,7 +339,11 @@ def mx_step_kernels(model, tableau, tau: str, rkmk: str) -> dict:
     gv, p, h = ca.MX.sym("g", n * n), ca.MX.sym("p", d), ca.MX.sym("h")
     mapped = _mapped_kernels(model, tableau, tau, rkmk, gv, p, h)
     if mapped is not None:
-        return mapped
+        from .family_map import mapped_state_kernels
+        from .record_kernel import record_names
+        _, lags, keys, _, _, _ = _functions(model, tableau, tau, rkmk)
+        state = mapped_state_kernels(model, lags, keys, body, record_names(model))
+        return {**mapped, **(state or {})}
     g = ca.reshape(gv, n, n)
     eqs = family_step(model, tableau, tau, rkmk, g, p, h).eqs
     z, col = eqs.z, (lambda M: ca.reshape(M, M.numel(), 1))  # noqa: E731

@@ -104,3 +104,58 @@ def mapped_step(model, funcs, G, P, h, z, xi_hat) -> StepEquations | None:
     return StepEquations(z, (), ca.vertcat(ca.vec(Fr), phi, hid), G1, ca.vec(P1),
                          ca.vertcat(ca.vec(guess), ca.MX.zeros(2 * m)), xi_hat,
                          ca.mmin(margins), ca.vec(charts))
+
+
+def mapped_state_kernels(model, lags, keys, body, record_names) -> dict | None:
+    """{kernel name: (Function over MX, input names, output names)} for legendre, hessian,
+    energy, momentum, defect, observe, velocity_step and (when the scene records only g, mu,
+    xi, energy, momentum, defect) record: one mapped call of a per-body function each, the
+    sums and maxima over the bodies as reductions. None when the bodies do not share one
+    Lagrangian."""
+    if len(lags) != 1:
+        return None
+    (lag_in, _), = lags.values()
+    n, d, N = model.group.n, model.group.d, model.family.count
+    nb, db = body.n, body.d
+    Gs, X, Ps, I = ca.SX.sym("g", nb, nb), ca.SX.sym("xi", db), ca.SX.sym("p", db), \
+        ca.SX.sym("i")
+    lval = lag_in(Gs, X, I)
+    mu = ca.gradient(lval, X)
+    H = ca.jacobian(mu, X)
+    vstep = X - ca.solve(H, mu - Ps)
+    at0 = lambda e: ca.substitute(e, X, ca.SX.zeros(db))  # noqa: E731
+    x0 = at0(vstep)
+    gvec = ca.vec(Gs)
+    fa = ca.Function("body_legendre", [gvec, X, I],
+                     [mu, ca.densify(ca.vec(H)), ca.dot(mu, X) - lval], CALL)
+    fb = ca.Function("body_observe", [gvec, Ps, I], [
+        body.momentum_map(Gs, Ps), x0, ca.substitute(ca.dot(mu, X) - lval, X, x0)], CALL)
+    fd = ca.Function("body_defect", [gvec], [body.group_defect(Gs)], CALL)
+    fv = ca.Function("body_velocity_step", [gvec, Ps, X, I], [vstep], CALL)
+    gv, xi, p = ca.MX.sym("g", n * n), ca.MX.sym("xi", d), ca.MX.sym("p", d)
+    gcol = ca.reshape(ca.DM(ca.diagcat(*[ca.DM.ones(nb, nb)] * N).sparsity(), 1.0), n * n, 1)
+    idx = [int(k) for k in gcol.sparsity().row()]
+    hcol = ca.reshape(ca.DM(ca.diagcat(*[ca.DM.ones(db, db)] * N).sparsity(), 1.0), d * d, 1)
+    G = ca.reshape(gv[idx], nb * nb, N)
+    Xm, Pm, Im = ca.reshape(xi, db, N), ca.reshape(p, db, N), ca.DM(np.arange(N)).T
+    mu_, H_, E_ = fa.map(N)(G, Xm, Im)
+    m_, x0_, E0_ = fb.map(N)(G, Pm, Im)
+    e_ = fd.map(N)(G)
+    v_ = fv.map(N)(G, Pm, Xm, Im)
+    energy, defect = ca.sum2(E_), ca.mmax(e_)
+    items = {"g": gv, "mu": p, "xi": xi, "energy": energy, "momentum": ca.vec(m_),
+             "defect": defect}
+    res = {"legendre": ([gv, xi], ("g", "xi"), [ca.vec(mu_)], ("mu",)),
+           "hessian": ([gv, xi], ("g", "xi"),
+                       [ca.sparsity_cast(ca.vec(H_), hcol.sparsity())], ("H",)),
+           "energy": ([gv, xi], ("g", "xi"), [energy], ("E",)),
+           "momentum": ([gv, p], ("g", "p"), [ca.vec(m_)], ("m",)),
+           "defect": ([gv], ("g",), [defect], ("e",)),
+           "observe": ([gv, p], ("g", "p"), [ca.vec(x0_), ca.sum2(E0_), ca.vec(m_), defect],
+                       ("xi", "E", "m", "e")),
+           "velocity_step": ([gv, p, xi], ("g", "p", "xi"), [ca.vec(v_)], ("xi1",))}
+    if all(nm in items for nm in record_names):
+        res["record"] = ([gv, p, xi], ("g", "p", "xi"),
+                         [ca.vertcat(*[items[nm] for nm in record_names])], ("row",))
+    return {name: (ca.Function(name, ins, outs, list(nin), list(nout)), nin, nout)
+            for name, (ins, nin, outs, nout) in res.items()}
