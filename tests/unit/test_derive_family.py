@@ -123,14 +123,15 @@ def test_state_kernels_match_the_expansion(steps, n):
 
 
 def test_step_kernels_do_not_grow_with_the_bodies():
-    """The chain's step kernels call each body and joint function through one mapped call:
-    their instruction lists are the same for N = 3 and N = 6, and the residual holds no
-    unrolled copy of a body's equations."""
+    """The chain's step and state kernels call each body and joint function through one
+    mapped call: their instruction lists are the same for N = 3 and N = 6, and the residual
+    holds no unrolled copy of a body's equations."""
     sizes = {}
     for n in (3, 6):
         s = derive(chain(n), resolve_tableau("stormer-verlet"), "cay", "truncated")
         sizes[n] = {k.name: k.function.n_instructions() for k in s.kernels
-                    if k.name in ("residual", "residual_jacobian", "update", "step_partials")}
+                    if k.name in ("residual", "residual_jacobian", "update", "step_partials",
+                                  "hessian", "observe", "record")}
         names = [f.name() for f in s.kernel("residual").function.find_functions()]
         assert f"map{n}_body0_residual" in names
     assert sizes[3] == sizes[6]
