@@ -384,7 +384,7 @@ def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
     """mx_step_kernels' dict from mapped calls (hpgen.derive.family_map), or None when the
     family does not qualify (several Lagrangian classes, a node velocity that is not
     explicit)."""
-    from .family_map import mapped_step
+    from .family_map import mapped, mapped_step
     funcs = _functions(model, tableau, tau, rkmk)
     body, lags, keys, steps, jfun, vel_funs = funcs
     if len(steps) != 1 or any(f is None for f in vel_funs.values()):
@@ -407,12 +407,12 @@ def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
     J = col(ca.jacobian(eqs.residual, z))
     chart_fn, perturb, chart_of = _body_maps(body, tau)
     theta = ca.MX.sym("theta")
-    gth = chart_fn.map(N)(G, ca.reshape(eqs.chart_step, db, N), theta)
+    gth = mapped(chart_fn, N)(G, ca.reshape(eqs.chart_step, db, N), theta)
     eta, dp = ca.MX.sym("eta", d), ca.MX.sym("dp", d)
-    G_s = perturb.map(N)(G, ca.reshape(eta, db, N))
+    G_s = mapped(perturb, N)(G, ca.reshape(eta, db, N))
     pert = mapped_step(model, funcs, G_s, P + ca.reshape(dp, db, N), h, z, xi_hat)
     G1ref = ca.MX.sym("g1ref", nb * nb, N)
-    Y = ca.vertcat(ca.vec(chart_of.map(N)(G1ref, pert.g1)), pert.p1)
+    Y = ca.vertcat(ca.vec(mapped(chart_of, N)(G1ref, pert.g1)), pert.p1)
     s = ca.vertcat(eta, dp)
     parts = [ca.jacobian(pert.residual, s), ca.jacobian(Y, z), ca.jacobian(Y, s)]
     parts = ca.substitute(parts, [s, G1ref], [ca.MX.zeros(2 * d), eqs.g1])

@@ -20,6 +20,24 @@ from .action import StepEquations
 CALL = {"never_inline": True, "jac_penalty": 0}
 
 
+_WRAPPED: dict = {}
+
+
+def mapped(f, count: int):
+    """``f`` (an SX function) called through an MX wrapper and mapped over ``count`` columns.
+    The wrapper's directional derivatives are products with the callee's Jacobian
+    (``jac_penalty`` 0), so the map's derivatives reuse one Jacobian function instead of
+    an SX forward sweep per number of directions."""
+    hit = _WRAPPED.get(id(f))
+    if hit is None or hit[0] is not f:
+        args = [ca.MX.sym(f.name_in(i), f.sparsity_in(i)) for i in range(f.n_in())]
+        w = ca.Function(f.name() + "_w", args, f.call(args), f.name_in(), f.name_out(), CALL)
+        if len(_WRAPPED) > 256:
+            _WRAPPED.clear()
+        hit = _WRAPPED[id(f)] = (f, w)
+    return hit[1].map(count)
+
+
 def _joint_maps(fun, K: int, rows: int):
     """The joint's rows as three functions of its slots' vec(g) and its index i: impulses
     Phi_s^T l, (phi, Phi_s(g1)^T nu), and sum_s Phi_s(g1) v_s."""
@@ -71,17 +89,17 @@ def mapped_step(model, funcs, G, P, h, z, xi_hat) -> StepEquations | None:
         lam_idx = [int(z.numel() - 2 * m + rowoff[j] + r) for j in js for r in range(rows)]
         lam = ca.reshape(z[lam_idx], rows, len(js))
         nu = ca.reshape(z[[q + m for q in lam_idx]], rows, len(js))
-        imp = fns[0].map(len(js))(*[G[:, c] for c in cols], Ij, lam)
+        imp = mapped(fns[0], len(js))(*[G[:, c] for c in cols], Ij, lam)
         imp = [imp] if k == 1 else imp
         for s in range(k):
             L = L + ca.mtimes(imp[s], sel[s])
         plan.append((js, fns, cols, sel, Ij, nu, rows))
     Q = P - L
-    Fr = st["F"].map(N)(Z, G, Q, h, I)
-    G1, P1m = st["U"].map(N)(Z, G, Q, h, I)
+    Fr = mapped(st["F"], N)(Z, G, Q, h, I)
+    G1, P1m = mapped(st["U"], N)(Z, G, Q, h, I)
     phis, rows_of = [], []
     for js, fns, cols, sel, Ij, nu, rows in plan:
-        out = fns[1].map(len(js))(*[G1[:, c] for c in cols], Ij, nu)
+        out = mapped(fns[1], len(js))(*[G1[:, c] for c in cols], Ij, nu)
         phis.append(out[0] / h)
         for s in range(len(cols)):
             K_ = K_ + ca.mtimes(out[1 + s], sel[s])
@@ -90,17 +108,17 @@ def mapped_step(model, funcs, G, P, h, z, xi_hat) -> StepEquations | None:
     vel_fn, hess_fn = vel_funs[cls]
     Hinv = ca.DM(np.hstack([np.linalg.inv(np.array(hess_fn(k), dtype=float)).reshape(
         -1, 1, order="F") for k in range(N)]))
-    V = vel_fn.map(N)(G1, P1, I, Hinv)
-    hidden = [fns[2].map(len(js))(*[G1[:, c] for c in cols], Ij, *[V[:, c] for c in cols])
+    V = mapped(vel_fn, N)(G1, P1, I, Hinv)
+    hidden = [mapped(fns[2], len(js))(*[G1[:, c] for c in cols], Ij, *[V[:, c] for c in cols])
               for js, fns, cols, sel, Ij, nu, rows in plan]
     # joint rows back in file order
     order = [(j, r) for js, rows in rows_of for j in js for r in range(rows)]
     perm = np.argsort([rowoff[j] + r for j, r in order], kind="stable")
     phi = ca.vertcat(*[ca.vec(x) for x in phis])[perm.tolist()]
     hid = ca.vertcat(*[ca.vec(x) for x in hidden])[perm.tolist()]
-    margins = st["M"].map(N)(Z, h)
-    charts = st["C"].map(N)(Z, h)
-    guess = st["Z"].map(N)(ca.reshape(xi_hat, db, N), G, P, h)
+    margins = mapped(st["M"], N)(Z, h)
+    charts = mapped(st["C"], N)(Z, h)
+    guess = mapped(st["Z"], N)(ca.reshape(xi_hat, db, N), G, P, h)
     return StepEquations(z, (), ca.vertcat(ca.vec(Fr), phi, hid), G1, ca.vec(P1),
                          ca.vertcat(ca.vec(guess), ca.MX.zeros(2 * m)), xi_hat,
                          ca.mmin(margins), ca.vec(charts))
@@ -138,10 +156,10 @@ def mapped_state_kernels(model, lags, keys, body, record_names) -> dict | None:
     hcol = ca.reshape(ca.DM(ca.diagcat(*[ca.DM.ones(db, db)] * N).sparsity(), 1.0), d * d, 1)
     G = ca.reshape(gv[idx], nb * nb, N)
     Xm, Pm, Im = ca.reshape(xi, db, N), ca.reshape(p, db, N), ca.DM(np.arange(N)).T
-    mu_, H_, E_ = fa.map(N)(G, Xm, Im)
-    m_, x0_, E0_ = fb.map(N)(G, Pm, Im)
-    e_ = fd.map(N)(G)
-    v_ = fv.map(N)(G, Pm, Xm, Im)
+    mu_, H_, E_ = mapped(fa, N)(G, Xm, Im)
+    m_, x0_, E0_ = mapped(fb, N)(G, Pm, Im)
+    e_ = mapped(fd, N)(G)
+    v_ = mapped(fv, N)(G, Pm, Xm, Im)
     energy, defect = ca.sum2(E_), ca.mmax(e_)
     items = {"g": gv, "mu": p, "xi": xi, "energy": energy, "momentum": ca.vec(m_),
              "defect": defect}

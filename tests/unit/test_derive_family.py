@@ -133,7 +133,7 @@ def test_step_kernels_do_not_grow_with_the_bodies():
                     if k.name in ("residual", "residual_jacobian", "update", "step_partials",
                                   "hessian", "observe", "record")}
         names = [f.name() for f in s.kernel("residual").function.find_functions()]
-        assert f"map{n}_body0_residual" in names
+        assert f"map{n}_body0_residual_w" in names
     assert sizes[3] == sizes[6]
     assert sizes[3]["residual"] < 200
 
