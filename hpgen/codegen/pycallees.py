@@ -15,8 +15,8 @@ from .pysource import _callees, callee_name, kernel_lines
 class _Callee:
     """A called function printed like a kernel whose arguments are their nonzeros."""
 
-    def __init__(self, fn):
-        self.function, self.name = fn, callee_name(fn)
+    def __init__(self, fn, name: str):
+        self.function, self.name = fn, name
         self.inputs = tuple(f"x{i}" for i in range(fn.n_in()))
         self.outputs = tuple(f"y{i}" for i in range(fn.n_out()))
 
@@ -49,7 +49,8 @@ def as_sx(kernel):
 
 def callee_functions(kernels) -> list:
     """The functions that ``kernels`` call (OP_CALL), directly or through other callees, in
-    order of first use (CasADi names the functions of one derivation uniquely)."""
+    order of first use (CasADi names the functions of one derivation uniquely), as
+    (Python name, SX function) pairs."""
     seen: dict = {}
     stack = [as_sx(k).function for k in reversed(list(kernels))]
     order = []
@@ -59,9 +60,12 @@ def callee_functions(kernels) -> list:
             name = fn.name()
             if name in seen:
                 continue
-            seen[name] = fn
-            order.append(fn)
-            stack.append(fn)
+            # a callee over MX (a wrapper) is printed from its SX expansion, whose calls of
+            # never_inline functions stay calls
+            sx = fn.expand() if fn.is_a("MXFunction") else fn
+            seen[name] = sx
+            order.append((callee_name(fn), sx))
+            stack.append(sx)
     return order
 
 
@@ -70,8 +74,8 @@ def callee_lines(kernels) -> list[str]:
     nonzeros of its inputs in order, the result the nonzeros of its outputs in order (what an
     OP_CALL instruction passes and receives); the same statements as a kernel body."""
     lines: list[str] = []
-    for fn in callee_functions(kernels):
-        c = _Callee(fn)
+    for pyname, fn in callee_functions(kernels):
+        c = _Callee(fn, pyname)
         lines += ["", "", f"def {c.name}(*a):",
                   f'    """{fn.name()}: the nonzeros of ({", ".join(fn.name_in())}) -> the '
                   f'nonzeros of ({", ".join(fn.name_out())})"""']

@@ -31,7 +31,10 @@ def mapped(f, count: int):
     hit = _WRAPPED.get(id(f))
     if hit is None or hit[0] is not f:
         args = [ca.MX.sym(f.name_in(i), f.sparsity_in(i)) for i in range(f.n_in())]
-        w = ca.Function(f.name() + "_w", args, f.call(args), f.name_in(), f.name_out(), CALL)
+        # jac_penalty only: a never_inline wrapper would expand (the Python backend's SX
+        # form) into a call of itself
+        w = ca.Function(f.name() + "_w", args, f.call(args), f.name_in(), f.name_out(),
+                        {"jac_penalty": 0})
         if len(_WRAPPED) > 256:
             _WRAPPED.clear()
         hit = _WRAPPED[id(f)] = (f, w)
