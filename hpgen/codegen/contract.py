@@ -50,8 +50,8 @@ def check_step(step) -> None:
     seen_fn = set()
     for k in step.kernels:
         f = k.function
-        if not hasattr(f, "is_a") or not f.is_a("SXFunction"):
-            raise CodegenError(f"kernel {k.name}: expected a casadi.Function over SX")
+        if not hasattr(f, "is_a") or not (f.is_a("SXFunction") or f.is_a("MXFunction")):
+            raise CodegenError(f"kernel {k.name}: expected a casadi.Function over SX or MX")
         if f.has_free():
             raise CodegenError(f"kernel {k.name}: the function has free variables")
         fname = f.name()

@@ -35,6 +35,7 @@ from .csource import c_kernel_context, casadi_c_code, work_sizes
 from . import pyiterate, pylinear
 from .sparse import meta_entry, sparse_context
 from .lanes import lanes_context
+from .pycallees import callee_lines
 from .pysource import py_kernel_context
 
 META_FORMAT = abi.META_FORMAT
@@ -137,8 +138,12 @@ def header_lines(info: dict) -> list[str]:
 
 
 def _step_instructions(step) -> int:
-    """CasADi instructions of the kernels one C step calls."""
-    return sum(step.kernel(k).function.n_instructions() for k in STEP_KERNELS)
+    """CasADi instructions of the kernels one C step calls; a kernel over MX (a family's,
+    whose calls stand for every body's code) counts as more than any limit."""
+    fs = [step.kernel(k).function for k in STEP_KERNELS]
+    if any(f.is_a("MXFunction") for f in fs):
+        return 10 ** 9
+    return sum(f.n_instructions() for f in fs)
 
 
 def _python_linear(step) -> dict:
@@ -184,7 +189,8 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
         "kernels.py.j2": dict(common, nz=step.nz, module=info["module"],
                               **_python_linear(step),
                               safe_unary=[list(p) for p in SAFE_UNARY],
-                              kernels=[py_kernel_context(k) for k in step.kernels]),
+                              kernels=[py_kernel_context(k) for k in step.kernels],
+                              callees=callee_lines(step.kernels)),
         "__init__.py.j2": dict(common, module=info["module"], hash=info["hash"],
                                backend=info["backend"], model_label=_safe(info["model_name"]),
                                record_note=" (" + ", ".join(

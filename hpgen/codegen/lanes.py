@@ -12,14 +12,15 @@ the math functions), so each lane's outputs are bitwise those of the scalar kern
 vectorises the fixed-count lane loop (SSE2 at the portable ``-O3``: two lanes a vector).
 
 ``lane_kernel_source`` returns None for a kernel with an operation it does not print (a side
-effect, an op without a C99 equivalent): the module then gets no lane code and ensembles run
-the scalar kernels.
+effect, an op without a C99 equivalent) and raises CodegenError for a kernel over MX or with
+calls (a family model's); ``lanes_context`` then gives no lane code and ensembles run the
+scalar kernels.
 """
 from __future__ import annotations
 
 import casadi
 
-from .contract import dense_positions
+from .contract import CodegenError, dense_positions
 
 #: bodies evaluated per call (8: as fast as 4 with SSE2, the portable build; faster with AVX)
 LANES = 8
@@ -74,6 +75,9 @@ def lane_kernel_source(kernel, lanes: int = LANES) -> str | None:
     evaluating ``kernel`` on ``lanes`` lanes (see the module docstring), or None when the
     kernel has an operation this printer does not support."""
     f = kernel.function
+    if _calls(f):
+        raise CodegenError(f"kernel {kernel.name}: lane code is printed from SX algorithms "
+                           "without calls (a family model's kernels call per-body functions)")
     ins = [dense_positions(f.sparsity_in(i)) for i in range(f.n_in())]
     outs = [dense_positions(f.sparsity_out(i)) for i in range(f.n_out())]
     L = lanes
@@ -118,6 +122,11 @@ def lane_kernel_source(kernel, lanes: int = LANES) -> str | None:
     return "\n".join(line for line in lines if line) + "\n"
 
 
+def _calls(f) -> bool:
+    return f.is_a("MXFunction") or any(f.instruction_id(k) == casadi.OP_CALL
+                                       for k in range(f.n_instructions()))
+
+
 def lanes_context(step, step_instructions: int) -> dict | None:
     """kernels.c.j2's ``lanes`` entry: {"L": lanes, "code": the lane kernels' C} when lane code
     pays and can be printed (a closed model, nz <= LANES_MAX_NZ, step kernels of at most
@@ -125,6 +134,8 @@ def lanes_context(step, step_instructions: int) -> dict | None:
     if (step.open_spec is not None or step.nz > LANES_MAX_NZ
             or step_instructions > LANES_MAX_INSTRUCTIONS):
         return None
+    if any(_calls(step.kernel(name).function) for name in LANE_KERNELS):
+        return None                   # scalar kernels with calls: ensembles run those
     parts = [lane_kernel_source(step.kernel(name)) for name in LANE_KERNELS]
     if any(p is None for p in parts):
         return None

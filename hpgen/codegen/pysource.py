@@ -113,21 +113,52 @@ def _unsupported(kernel, k, op):
                         f"({name}) which the Python code generator cannot print")
 
 
-def _io_positions(f):
+def _io_positions(f, nonzeros: bool = False):
+    """Where each argument's nonzeros sit: dense column-major positions, or (a callee's
+    arguments, ``nonzeros``) their own index among the nonzeros."""
+    if nonzeros:
+        return ([list(range(f.nnz_in(i))) for i in range(f.n_in())],
+                [list(range(f.nnz_out(i))) for i in range(f.n_out())])
     ins = [dense_positions(f.sparsity_in(i)) for i in range(f.n_in())]
     outs = [dense_positions(f.sparsity_out(i)) for i in range(f.n_out())]
     return ins, outs
 
 
-def safe_lines(kernel) -> list[str]:
-    """The safe body: one statement per instruction, outputs into ``r<i> = [0.0] * numel``."""
+def _numel(f, i: int, out: bool, nonzeros: bool) -> int:
+    if nonzeros:
+        return f.nnz_out(i) if out else f.nnz_in(i)
+    return f.numel_out(i) if out else f.numel_in(i)
+
+
+def callee_name(fn) -> str:
+    """The Python name of a called CasADi function (CasADi names are identifiers)."""
+    return "_call_" + fn.name()
+
+
+def _callees(f) -> dict:
+    """{instruction index: called casadi.Function} of f's OP_CALL instructions."""
+    ks = [k for k in range(f.n_instructions()) if f.instruction_id(k) == casadi.OP_CALL]
+    if not ks:
+        return {}
+    nodes = f.instructions_sx()
+    return {k: nodes[k].which_function() for k in ks}
+
+
+def safe_lines(kernel, nonzeros: bool = False) -> list[str]:
+    """The safe body: one statement per instruction, outputs into ``r<i> = [0.0] * numel``
+    (a callee's, ``nonzeros``: its arguments are their nonzeros)."""
     f = kernel.function
-    ins, outs = _io_positions(f)
-    lines = [f"r{i} = [0.0] * {f.numel_out(i)}" for i in range(f.n_out())]
+    ins, outs = _io_positions(f, nonzeros)
+    calls = _callees(f)
+    lines = [f"r{i} = [0.0] * {_numel(f, i, True, nonzeros)}" for i in range(f.n_out())]
     for k in range(f.n_instructions()):
         op = f.instruction_id(k)
         i_in, i_out = f.instruction_input(k), f.instruction_output(k)
-        if op == casadi.OP_INPUT:
+        if op == casadi.OP_CALL:
+            targets = [f"w{o}" if o >= 0 else "_" for o in i_out]
+            lines.append(", ".join(targets) + ("," if len(targets) == 1 else "") + " = "
+                         + callee_name(calls[k]) + "(" + ", ".join(f"w{a}" for a in i_in) + ")")
+        elif op == casadi.OP_INPUT:
             arg, nz = i_in[0], i_in[1]
             lines.append(f"w{i_out[0]} = {kernel.inputs[arg]}[{ins[arg][nz]}]")
         elif op == casadi.OP_OUTPUT:
@@ -168,15 +199,18 @@ def exact_reciprocal(c) -> float | None:
     return r if abs(r) >= 2.2250738585072014e-308 and math.isfinite(r) else None
 
 
-def fast_lines(kernel, bound: bool = False) -> tuple[list[str], bool]:
+def fast_lines(kernel, bound: bool = False, nonzeros: bool = False) -> tuple[list[str], bool]:
     """The fast body and whether it contains an operation that may raise.
 
     bound: the body of a loop (hpgen.codegen.pyiterate) instead of a function: the inputs
     are locals bound before it, element j of input ``x`` named ``x<j>`` (no unpacking,
     never reused as work variables, see bound_inputs), and output ``y``'s element j is
-    left in the local ``y<j>`` instead of a list."""
+    left in the local ``y<j>`` instead of a list. nonzeros: a callee's body (its arguments
+    are their nonzeros). A call (OP_CALL) is one statement unpacking the callee's outputs;
+    it may raise (the callee's own safe body runs then, inside the call)."""
     f = kernel.function
-    ins, outs = _io_positions(f)
+    ins, outs = _io_positions(f, nonzeros)
+    calls = _callees(f)
     vals: list[_Value] = []
     slot: dict[int, int] = {}                 # CasADi work slot -> its current value
     inputs: dict[tuple[int, int], int] = {}   # (argument, dense position) -> value
@@ -208,6 +242,18 @@ def fast_lines(kernel, bound: bool = False) -> tuple[list[str], bool]:
             slot[i_out[0]] = consts[lit]
         elif op == casadi.OP_ASSIGN:
             slot[i_out[0]] = slot[i_in[0]]
+        elif op == casadi.OP_CALL:
+            args = tuple(slot[a] for a in i_in)
+            for a in args:
+                vals[a].uses += 1
+            results = []
+            for o in i_out:
+                if o >= 0:
+                    slot[o] = new(_Value("result"))
+                    results.append(slot[o])
+                else:
+                    results.append(None)
+            order.append(("call", callee_name(calls[k]), args, results))
         elif op in FAST_UNARY or op in FAST_BINARY:
             unary = op in FAST_UNARY
             fmt = FAST_UNARY[op] if unary else FAST_BINARY[op]
@@ -239,7 +285,7 @@ def fast_lines(kernel, bound: bool = False) -> tuple[list[str], bool]:
 
     def text(i, wrap=True):
         v = vals[i]
-        if v.kind == "input" or (v.kind == "op" and not v.inline):
+        if v.kind in ("input", "result") or (v.kind == "op" and not v.inline):
             return f"@{i}@"
         t = v.text if v.kind == "const" else expr(v)
         return _wrap(t) if wrap else t
@@ -257,14 +303,21 @@ def fast_lines(kernel, bound: bool = False) -> tuple[list[str], bool]:
     for a in range(f.n_in() if not bound else 0):
         used = {pos: i for (arg, pos), i in inputs.items() if arg == a and vals[i].uses}
         if used:
-            targets = [f"@{used[p]}@" if p in used else "_" for p in range(f.numel_in(a))]
+            targets = [f"@{used[p]}@" if p in used else "_"
+                       for p in range(_numel(f, a, False, nonzeros))]
             stmts.append((list(used.values()),
                           ", ".join(targets) + ("," if len(targets) == 1 else ""),
                           kernel.inputs[a]))
     for r in range(f.n_out() if not bound else 0):
-        stmts.append(([], f"r{r}", f"[0.0] * {f.numel_out(r)}"))
+        stmts.append(([], f"r{r}", f"[0.0] * {_numel(f, r, True, nonzeros)}"))
     for item in order:
-        if item[0] == "op":
+        if item[0] == "call":
+            _, fname, args, results = item
+            lhs = ", ".join("_" if v is None else f"@{v}@" for v in results)
+            stmts.append(([v for v in results if v is not None],
+                          lhs + ("," if len(results) == 1 else ""),
+                          f"{fname}({', '.join(text(a, wrap=False) for a in args)})"))
+        elif item[0] == "op":
             if not vals[item[1]].inline:
                 stmts.append(([item[1]], f"@{item[1]}@", expr(vals[item[1]])))
         elif bound:
@@ -295,23 +348,25 @@ def fast_lines(kernel, bound: bool = False) -> tuple[list[str], bool]:
     return lines, raising
 
 
-def kernel_lines(kernel) -> list[str]:
+def kernel_lines(kernel, nonzeros: bool = False) -> list[str]:
     """Body statements (unindented) of the Python function for one kernel, after the input
     conversion that the template prints; they leave the outputs in lists ``r<i>``."""
     f = kernel.function
     if any(f.instruction_id(k) == casadi.OP_PRINTME for k in range(f.n_instructions())):
-        return safe_lines(kernel)             # a side effect: run once, in order
-    fast, raising = fast_lines(kernel)
+        return safe_lines(kernel, nonzeros)   # a side effect: run once, in order
+    fast, raising = fast_lines(kernel, nonzeros=nonzeros)
     if not raising:
         return fast
     return (["try:"] + ["    " + s for s in fast]
             + ["except (ArithmeticError, ValueError):",
                "    # a zero divisor or a math domain/range error: recompute with C semantics"]
-            + ["    " + s for s in safe_lines(kernel)])
+            + ["    " + s for s in safe_lines(kernel, nonzeros)])
 
 
 def py_kernel_context(kernel) -> dict:
-    """What kernels.py.j2 needs for one kernel."""
+    """What kernels.py.j2 needs for one kernel (an MX kernel through its SX expansion)."""
+    from .pycallees import as_sx
+    kernel = as_sx(kernel)
     f = kernel.function
     return {"name": kernel.name,
             "inputs": [{"name": kernel.inputs[i], "numel": f.numel_in(i)}

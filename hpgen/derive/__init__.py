@@ -20,6 +20,13 @@ A model with ``constraints:`` wraps the step in RATTLE-type node multipliers
 (hpgen.derive.constraints, docs/numerics.md sec. 14): the unknowns gain the blocks ``lambda``
 and ``nu`` (impulses h lambda_k, h nu_(k+1)) and, when d2l/dxi2 is not constant, ``v1``; the
 reduced Euler-Poincare step is not used.
+
+A closed family model (group G^N) whose Lagrangian sums and joints are local to their bodies
+(hpgen.model.bodyterms) is derived once per body and per joint (hpgen.derive.family): g is
+block-diagonal, the step kernels are composed over MX from per-body and per-joint call
+nodes, the other kernels over SX with calls, and every kernel keeps its outputs' structural
+sparsity (the wrappers scatter them into the contract's dense arrays). ``expand=True``
+derives such a model on the product group instead (the reference for comparisons).
 """
 from __future__ import annotations
 
@@ -29,6 +36,7 @@ from ..schemes import RKMK
 from ..splitting import is_splitting, splitting_step
 from .action import step_equations
 from .constraints import constrain_step, constraint_function
+from .family import block_diagonal_symbol, family_local, family_step, mx_step_kernels
 from .lagrangian import lagrangian_function, open_functions, to_casadi
 from .linearize import step_partials
 from .record_kernel import record_row, velocity_step
@@ -38,7 +46,7 @@ from .step import KERNEL_NAMES, DiscreteStep, Kernel, OpenSpec
 __all__ = ["derive", "DiscreteStep", "Kernel", "KERNEL_NAMES"]
 
 
-def _flat(M):
+def _dense_flat(M):
     """Column-major flattening of an SX matrix into a dense column."""
     return ca.densify(ca.reshape(M, M.numel(), 1))
 
@@ -61,6 +69,11 @@ def sparse_jacobian(J, jacobian) -> bool:
     return nz >= SPARSE_MIN_NZ and J.nnz() <= SPARSE_MAX_DENSITY * nz * nz
 
 
+def _column(M):
+    """Column-major flattening of an SX matrix, its structural zeros kept."""
+    return ca.reshape(M, M.numel(), 1)
+
+
 def section_function(model, g, p):
     """SX of the scene's Poincare section s(g, mu) at (g, p) (p the node momentum), or the
     constant 1 (never crosses) when the model's scene has no ``section``."""
@@ -74,13 +87,21 @@ def section_function(model, g, p):
     return to_casadi(spec.expr, mapping)
 
 
-def derive(model, tableau, tau: str, rkmk: str, jacobian=None) -> DiscreteStep:
-    """The step of ``model``; jacobian: None, "sparse" or "dense" (sparse_jacobian)."""
+def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
+           expand: bool = False) -> DiscreteStep:
+    """The step of ``model``. jacobian: None, "sparse" or "dense" (sparse_jacobian; a family's
+    mapped step kernels follow codegen's rule, hpgen.codegen.sparse). expand: derive a family
+    model (group G^N) as one expression on the product group instead of once per body and
+    joint (hpgen.derive.family); for comparisons."""
     group = model.group
+    fam = None
     group.require_chart(tau)
     RKMK.check(rkmk, field="integrator.rkmk")
     n, d = group.n, group.d
-    g = ca.SX.sym("g", n, n)
+    local = not expand and family_local(model)
+    # a family's g is block-diagonal: its off-diagonal entries are structural zeros, so
+    # products with g stay block by block (the kernels still take all n*n entries)
+    g = block_diagonal_symbol(group) if local else ca.SX.sym("g", n, n)
     p = ca.SX.sym("p", d)
     is_open = model.open_system
     if is_open:
@@ -102,44 +123,68 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None) -> DiscreteStep:
         extra = [("h", hv)]
     else:
         h = hv = ca.SX.sym("h", 1)
-        lag = lag1 = lagrangian_function(model)
-        reduced = model.left_invariant and not model.constraints
-        if is_splitting(tableau):
-            reduced = False
-            eqs, chart = splitting_step(model, tableau, lag, g, p, h)
-        else:
-            eqs = step_equations(group, lag, tableau, tau, rkmk, reduced, g, p, h)
         extra = []
-    if model.constraints:
+        fam = family_step(model, tableau, tau, rkmk, g, p, h) if local else None
+        if fam is not None:          # derived once per body and per joint (call nodes)
+            eqs, lag = fam.eqs, fam.lag
+            reduced = model.left_invariant and not model.constraints
+        else:
+            lag = lag1 = lagrangian_function(model)
+            reduced = model.left_invariant and not model.constraints
+            if is_splitting(tableau):
+                reduced = False
+                eqs, chart = splitting_step(model, tableau, lag, g, p, h)
+            else:
+                eqs = step_equations(group, lag, tableau, tau, rkmk, reduced, g, p, h)
+    if model.constraints and fam is None:
         eqs = constrain_step(eqs, group, constraint_function(model), lag1, g, p, h)
     z = eqs.z
     nz = z.numel()
-    gf = _flat(g)
+    gcol = ca.reshape(g, n * n, 1)
+    gf = ca.vertcat(*[gcol[k] for k in gcol.sparsity().row()]) if local else _dense_flat(g)
     gvec = ca.SX.sym("g", n * n)
-    to_mat = lambda e: ca.substitute(e, gf, gvec)  # noqa: E731  (kernels take g flattened)
+    gsub = gvec[gcol.sparsity().row()] if local else gvec
+    to_mat = lambda e: ca.substitute(e, gf, gsub)  # noqa: E731  (kernels take g flattened)
 
     xi = ca.SX.sym("xi", d)
     lval = lag(g, xi)
     mu = ca.gradient(lval, xi)
     hess = ca.jacobian(mu, xi)
 
+    mx = mx_step_kernels(model, tableau, tau, rkmk) if local else {}
+
     def kernel(name, inputs, outputs):
+        if name in mx:               # a family's step kernels, composed over MX
+            f, names_in, names_out = mx[name]
+            return Kernel(name, f, tuple(names_in), tuple(names_out))
+        outputs = outputs() if callable(outputs) else outputs
         if extra and name in OPEN_EXTRA:
             inputs = list(inputs) + extra
         names_in = tuple(nm for nm, _ in inputs)
         names_out = tuple(nm for nm, _ in outputs)
-        outs = ca.cse([to_mat(e) if nm == "J" and sparse else ca.densify(to_mat(e))
+        # a J kept sparse (j_out) is the nz x nz matrix: codegen writes its CCS nonzeros
+        outs = ca.cse([to_mat(e) if nm == "J" and e.size2() > 1 else dense(to_mat(e))
                        for nm, e in outputs])  # merge repeated subtrees
         f = ca.Function(name, [v for _, v in inputs], outs, list(names_in), list(names_out))
         return Kernel(name, f, names_in, names_out)
 
-    J = ca.jacobian(eqs.residual, z)
-    sparse = sparse_jacobian(J, jacobian)
-    J_out = J if sparse else _flat(J)   # sparse: the nz x nz matrix, its CCS nonzeros
+    # a family's kernels keep their outputs' structural sparsity (the C and Python wrappers
+    # scatter the nonzeros into the dense arrays of the contract): block-diagonal Hessians
+    # and banded Jacobians of N bodies are not written out entry by entry
+    dense = ca.densify if fam is None else (lambda e: e)  # noqa: E731
+    flat = _dense_flat if fam is None else _column
+
+    def j_out(J):
+        """J as the kernels return it: the nz x nz matrix of its structural nonzeros when it
+        stays sparse (sparse_jacobian), else flattened column-major."""
+        return J if sparse_jacobian(J, jacobian) else flat(J)
+
+    vstep = fam.velocity if fam is not None else (
+        lambda G, P, X: velocity_step(G, P, X, lag))  # noqa: E731
     # the Legendre inverse at a record: one Newton step from xi = 0, exact when l is quadratic
     # in xi (hessian free of xi: legendre_quadratic), the runtime's start otherwise
     at0 = lambda e: ca.substitute(e, xi, ca.SX.zeros(d))  # noqa: E731
-    xi_obs = at0(velocity_step(g, p, xi, lag))
+    xi_obs = at0(vstep(g, p, xi))
     quadratic = not ca.depends_on(hess, xi)
     power = None
     if is_open and model.forced:     # the forces' power at a record (t = t_k, u of hv)
@@ -148,36 +193,40 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None) -> DiscreteStep:
     # what the loop may skip: g_{k+1} is not computed when neither the step nor the row use g
     step_uses_g = bool(ca.depends_on(eqs.residual, gf) or ca.depends_on(eqs.p1, gf))
     theta = ca.SX.sym("theta", 1)
-    chart_point = chart(theta) if eqs.chart_step is None else \
-        ca.mtimes(g, group.tau(tau, theta * eqs.chart_step))
+    if eqs.chart_step is None:       # a splitting's own curve (hpgen.splitting)
+        chart_point = lambda: chart(theta)  # noqa: E731
+    else:
+        chart_point = lambda: ca.mtimes(g, group.tau(tau, theta * eqs.chart_step))  # noqa: E731
     kernels = (
         kernel("residual", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("F", eqs.residual)]),
-        kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("J", J_out)]),
+        kernel("jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
+               lambda: [("J", j_out(ca.jacobian(eqs.residual, z)))]),
         # F and J in one pass (shared subexpressions): full Newton's iteration
         kernel("residual_jacobian", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
-               [("F", eqs.residual), ("J", J_out)]),
+               lambda: [("F", eqs.residual), ("J", j_out(ca.jacobian(eqs.residual, z)))]),
         kernel("update", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
-               [("g1", _flat(eqs.g1)), ("p1", eqs.p1)]),
+               [("g1", flat(eqs.g1)), ("p1", eqs.p1)]),
         kernel("guess", [("xi", eqs.xi_hat), ("g", gvec), ("p", p), ("h", hv)], [("z0", eqs.guess)]),
         kernel("legendre", [("g", gvec), ("xi", xi)], [("mu", mu)]),
-        kernel("hessian", [("g", gvec), ("xi", xi)], [("H", _flat(hess))]),
+        kernel("hessian", [("g", gvec), ("xi", xi)], [("H", flat(hess))]),
         kernel("energy", [("g", gvec), ("xi", xi)], [("E", ca.dot(mu, xi) - lval)]),
         kernel("momentum", [("g", gvec), ("p", p)], [("m", group.momentum_map(g, p))]),
         kernel("defect", [("g", gvec)], [("e", group.group_defect(g))]),
         kernel("margin", [("z", z), ("h", hv)], [("m", eqs.margin)]),
         kernel("section", [("g", gvec), ("p", p)], [("s", section_function(model, g, p))]),
         kernel("chart_point", [("z", z), ("g", gvec), ("h", hv), ("theta", theta)],
-               [("g_theta", _flat(chart_point))]),
+               lambda: [("g_theta", flat(chart_point()))]),
         kernel("observe", [("g", gvec), ("p", p)],
                [("xi", xi_obs), ("E", ca.substitute(ca.dot(mu, xi) - lval, xi, xi_obs)),
                 ("m", group.momentum_map(g, p)), ("e", group.group_defect(g))]),
         kernel("update_p", [("z", z), ("g", gvec), ("p", p), ("h", hv)], [("p1", eqs.p1)]),
         kernel("velocity_step", [("g", gvec), ("p", p), ("xi", xi)],
-               [("xi1", velocity_step(g, p, xi, lag))]),
+               [("xi1", vstep(g, p, xi))]),
         kernel("record", [("g", gvec), ("p", p), ("xi", xi)], [("row", row)]),
         kernel("step_partials", [("z", z), ("g", gvec), ("p", p), ("h", hv)],
-               [(nm, _flat(e)) for nm, e in zip(("Fs", "Yz", "Ys", "FH", "YH"), step_partials(
-                   group, g, p, z, eqs.residual, eqs.g1, eqs.p1, hv if is_open else None))]),
+               lambda: [(nm, flat(e)) for nm, e in zip(("Fs", "Yz", "Ys", "FH", "YH"),
+                   step_partials(group, g, p, z, eqs.residual, eqs.g1, eqs.p1,
+                                 hv if is_open else None))]),
     )
     assert tuple(k.name for k in kernels) == KERNEL_NAMES
     return DiscreteStep(

@@ -49,4 +49,5 @@ def step_partials(group, g, p, z, residual, g1, p1, hv=None):
     if hv is not None:
         outs += [ca.jacobian(F_s, hv), ca.jacobian(Y, hv)]
     outs = ca.substitute(outs, [s], [ca.SX.zeros(2 * d)])
-    return tuple(ca.substitute(outs, [ca.reshape(g1ref, n * n, 1)], [ca.reshape(g1, n * n, 1)]))
+    return tuple(ca.substitute(outs, [ca.reshape(g1ref, n * n, 1)],
+                               [ca.densify(ca.reshape(g1, n * n, 1))]))

@@ -44,6 +44,8 @@ class ConstraintSpec:
     text: str
     rows: tuple
     label: str = ""                 #: how messages name it; "" -> constraints[i]
+    #: ((loop variable, value),) of a row block repeated by ``for:`` (hpgen.model.joints)
+    bound: tuple = ()
 
 
 def parse_constraints(doc, raw, group, exact: dict, runtime_names, g_symbols,
@@ -82,7 +84,7 @@ def parse_constraints(doc, raw, group, exact: dict, runtime_names, g_symbols,
                     message = f"{b.label.removeprefix(field).strip()}: {message}"
                 e = ModelError(message, field=e.field)
                 raise e.located(doc.file, field, doc.line(("constraints", i))) from None
-            out.append(ConstraintSpec(b.text, rows, b.label))
+            out.append(ConstraintSpec(b.text, rows, b.label, tuple(b.bound.items())))
     if sum(len(c.rows) for c in out) >= group.d:
         raise doc.error(("constraints",), f"{sum(len(c.rows) for c in out)} constraint rows "
                         f"leave no freedom on {group.name} (d = {group.d}); expected fewer than d")
@@ -156,11 +158,20 @@ def _check_rank(doc, constraints, g_symbols, group, g, where: str) -> None:
 
 
 def _numeric_hats(group) -> list:
-    """hat(e_a) as numpy n x n arrays, a = 0..d-1."""
+    """((layout, [hat(e_a) as numpy n_f x n_f arrays of the factor, a = 0..d_f-1]), ...) per
+    factor of the group (one entry for a single group)."""
     import casadi as ca
-    eye = np.eye(group.d)
-    return [np.array(ca.evalf(ca.SX(group.hat(ca.SX(eye[:, a])))), dtype=float)
-            for a in range(group.d)]
+    from ..groups import group_from_spec
+    out, cache = [], {}
+    factors = group.factors
+    for lay in factors:
+        if lay.name not in cache:
+            fg = group_from_spec(lay.name) if len(factors) > 1 else group
+            eye = np.eye(lay.d)
+            cache[lay.name] = [np.array(ca.evalf(ca.SX(fg.hat(ca.SX(eye[:, a])))), dtype=float)
+                               for a in range(lay.d)]
+        out.append((lay, cache[lay.name]))
+    return out
 
 
 def constraint_values(constraints, g_symbols, group, g0):
@@ -169,22 +180,29 @@ def constraint_values(constraints, g_symbols, group, g0):
     import sympy as sp
     g0 = np.asarray(g0, dtype=float)
     n = g0.shape[0]
+    where = {g_symbols[i][j]: (i, j) for i in range(n) for j in range(n)}
     subs = {g_symbols[i][j]: sp.Float(float(g0[i, j])) for i in range(n) for j in range(n)}
     hats = _numeric_hats(group)
-    dirs = [g0 @ E for E in hats]                 # d/de g0 exp(e E) at 0
+    # d/de g0 exp(e E_a) at 0 = g0 E_a: nonzero in the columns of E_a's factor only
+    dirs = [(lay, [g0[:, lay.row:lay.row + lay.n] @ E for E in Es]) for lay, Es in hats]
     vals, jac, labels = [], [], []
     for i, c in enumerate(constraints):
         for j, row in enumerate(c.rows):
             labels.append((c.label or f"constraints[{i}]")
                           + (f" row {j}" if len(c.rows) > 1 else ""))
-            vals.append(float(row.xreplace(subs)))
+            free = row.free_symbols
+            vals.append(float(row.xreplace({s: subs[s] for s in free if s in subs})))
             grad = np.zeros((n, n))
-            for s in row.free_symbols:
-                for a in range(n):
-                    for b in range(n):
-                        if g_symbols[a][b] == s:
-                            grad[a, b] = float(sp.diff(row, s).xreplace(subs))
-            jac.append([float(np.sum(grad * D)) for D in dirs])
+            point = {s: subs[s] for s in free if s in subs}
+            for s in free:
+                if s in where:
+                    grad[where[s]] = float(sp.diff(row, s).xreplace(point))
+            out = np.zeros(group.d)
+            for lay, Ds in dirs:
+                cols = grad[:, lay.row:lay.row + lay.n]
+                if cols.any():
+                    out[lay.off:lay.off + lay.d] = [float(np.sum(cols * D)) for D in Ds]
+            jac.append(out)
     return np.array(vals), np.array(jac).reshape(len(labels), group.d), labels
 
 

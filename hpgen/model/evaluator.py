@@ -13,6 +13,7 @@ double range (exact rationals within MAX_EXACT_BITS bits).
 from __future__ import annotations
 
 import ast
+import functools
 import math
 import re
 
@@ -64,6 +65,21 @@ def _as_sympy(v):
     return sp.Integer(v) if type(v) is int else sp.Float(v)
 
 
+@functools.lru_cache(maxsize=16)
+def _symbol_list(prefix: str, rows: int, cols: int | None) -> tuple:
+    if cols is None:
+        return tuple(sp.Symbol(f"{prefix}_{k}", real=True) for k in range(rows))
+    return tuple(sp.Symbol(f"{prefix}_{i}_{j}", real=True) for i in range(rows)
+                 for j in range(cols))
+
+
+def _symbols(prefix: str, rows: int, cols: int | None = None) -> np.ndarray:
+    """A fresh object array of the real symbols ``<prefix>_k`` (rows,) or ``<prefix>_i_j``
+    (rows x cols); the symbols are created once per size (a family's g has n*n of them)."""
+    return _to_array(list(_symbol_list(prefix, rows, cols)),
+                     (rows,) if cols is None else (rows, cols))
+
+
 class _Evaluator:
     """Evaluates a checked tree. ``variables``: the algebra-length vectors the expression may use
     (("xi",) for the Lagrangian, ("mu",) for the section, ("xi", "mu") for a recorded
@@ -76,10 +92,8 @@ class _Evaluator:
                  extra=None, refused=None):
         from ..groups import group_from_spec
         n, d = group.n, group.d
-        self.vars = {v: _to_array([sp.Symbol(f"{v}_{k}", real=True) for k in range(d)], (d,))
-                     for v in variables}
-        self.g = _to_array([sp.Symbol(f"g_{i}_{j}", real=True) for i in range(n)
-                            for j in range(n)], (n, n))
+        self.vars = {v: _symbols(v, d) for v in variables}
+        self.g = _symbols("g", n, n)
         self.params, self.cache, self.work = parameters, {}, 0
         self.forbidden = forbidden
         self.refused = dict(refused or {})

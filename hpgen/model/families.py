@@ -58,6 +58,9 @@ class BodyFamily:
     count_name: str | None = None
     sums: tuple = ()
     rest: str | None = None
+    #: the sums and joints evaluated once for a generic body (hpgen.model.bodyterms.LocalTerms),
+    #: None when some term couples bodies (the model is then compiled expanded)
+    local: object = None
 
 
 class FamilyGroup(ProductGroup):
@@ -67,6 +70,13 @@ class FamilyGroup(ProductGroup):
     def __init__(self, family: BodyFamily):
         super().__init__([group_from_spec(family.body) for _ in range(family.count)])
         self.family = family
+
+    def momentum_map(self, g, p):
+        """Ad*_{g^{-1}} p body by body (the product's Ad is block-diagonal; building it from
+        the product's d basis vectors would cost O(N^2))."""
+        import casadi as ca
+        return ca.vertcat(*[f.momentum_map(gk, pk) for f, gk, pk in
+                            zip(self.parts, self._split_g(g), self._split_v(p))])
 
 
 def family_of(group) -> BodyFamily | None:

@@ -26,6 +26,8 @@ from .types import RESERVED_NAMES, IntegratorChoice, Model
 from .yamldoc import MAX_FILE_BYTES, Doc, compose_document, describe, is_number
 
 MAX_MATRIX_SIZE = 64                # n and d of the group (g has n*n symbols)
+#: n and d of a family G^N (hpgen.model.families): derived body by body, not as one matrix
+MAX_FAMILY_MATRIX_SIZE = 1024
 
 TOP_KEYS = ("schema", "name", "group", "parameters", "lagrangian", "integrator", "scene",
             "runtime_parameters", "inputs", "forces", "constraints")
@@ -76,15 +78,16 @@ def _parameters(doc: Doc, raw) -> tuple[tuple, dict]:
 
 
 def _group(doc: Doc, spec, params: dict):
-    from .families import group_of_spec
+    from .families import family_of, group_of_spec
     try:
         group = group_of_spec(spec, params)
     except ModelError as e:
         path = tuple(e.field.split(".")) if e.field and e.field != "group" else ("group",)
         raise e.located(doc.file, "group", doc.line(path)) from None
-    if group.n > MAX_MATRIX_SIZE or group.d > MAX_MATRIX_SIZE:
+    limit = MAX_MATRIX_SIZE if family_of(group) is None else MAX_FAMILY_MATRIX_SIZE
+    if group.n > limit or group.d > limit:
         raise doc.error(("group",), f"group too large: matrix size {group.n}, dimension "
-                                    f"{group.d} (limit {MAX_MATRIX_SIZE} each)")
+                                    f"{group.d} (limit {limit} each)")
     return group
 
 
@@ -200,6 +203,10 @@ def build_model(doc: Doc, text: str) -> Model:
         from .constraints import check_initial
         scene = check_initial(doc, constraints, g_syms, group, scene,
                               (lag, xi_syms, dict(zip(rsyms, rdefaults))))
+    if family is not None:
+        from dataclasses import replace
+        from .bodyterms import local_terms
+        family = replace(family, local=local_terms(family, constraints, lag_params))
     return Model(name=name, path=doc.file, source=text, group_spec=data["group"], group=group,
                  parameters=stored, lagrangian_text=data["lagrangian"], lagrangian=lag,
                  xi_symbols=xi_syms, g_symbols=g_syms, integrator=integrator, scene=scene,

@@ -228,7 +228,7 @@ def test_overridden_n_is_validated_like_the_file():
     ("norm2(xi[0])", "SE3^N", "{N: -2}", "must be a positive integer"),
     ("norm2(xi[0])", "SE3^N", "{M: 2}", "the body count 'N' of 'SE3^N' is not a parameter"),
     ("norm2(xi[0])", "SE3^N", "{N: 5000}", "too many bodies: 5000 (limit 4096)"),
-    ("norm2(xi[0])", "SE3^N", "{N: 11}", "group too large"),
+    ("norm2(xi[0])", "SE3^N", "{N: 257}", "group too large: matrix size 1028, dimension 1542 (limit 1024 each)"),
     ("norm2(xi[0])", "SE4^N", None, "unknown group 'SE4'"),
     ("norm2(xi[0])", "SE3^", None, "malformed family 'SE3^'"),
     ("norm2(xi[0])", "SE3^N^2", None, "malformed family"),

@@ -1,0 +1,431 @@
+"""The step of a family model (group G^N) derived once per body and once per joint, composed
+with CasADi call nodes.
+
+For a body-separable Lagrangian l = sum_i l_i(g_i, xi_i; i) (hpgen.model.bodyterms: every sum
+term local to its body, the body index i a numeric input) the unconstrained step of the
+product group is N independent steps: body i's stage equations involve its own unknowns z_i,
+(g_i, p_i) and h only (the chart maps and the action sum of a product split factor by
+factor). Each is derived once as a SX Function of (z_i, g_i, p_i, h, i) with the options
+``never_inline`` (a call node where it is used) and ``jac_penalty`` 0 (CasADi differentiates
+a call through the callee's own Jacobian function, derived once, instead of one directional
+derivative per seed). The step kernels (mx_step_kernels) compose the calls over MX, where a
+call passes whole vectors; family_step composes them over SX as well (the SX kernels' and
+the tests' form). Bodies whose Lagrangians differ (sums over different ranges) get one
+function per distinct set of sums ("class").
+
+Constraints (hpgen.derive.constraints, docs/numerics.md sec. 14) decompose by joint: with
+joint j's rows phi_j(g_a, g_b, ...; i_j) and body-frame Jacobians Phi_{j,a},
+    p_i^+ = p_i - sum_{j touching i} Phi_{j,i}(g)^T h lambda_j
+    (body i's unconstrained step from (g_i, p_i^+))
+    phi_j(g_{k+1}) / h = 0
+    p_{i,k+1} = p_{i,k+1}^- - sum_{j touching i} Phi_{j,i}(g_{k+1})^T h nu_j
+    Phi_j(g_{k+1}) v_{k+1} = 0,  v_{k+1} = xi(g_{k+1}, p_{k+1}) per body
+where each joint's (phi_j, Phi_{j,a}, ...) is one call of the function of its row block's
+text (rows with the loop variable i as a numeric input).
+
+Unknowns, in this order: every body's step unknowns (body 0's blocks, body 1's, ...; the
+block labels of the expanded step with the body as a suffix, "Xi1[3]"), then ``lambda`` and
+``nu`` (all constraint rows, file order: the expanded step's blocks, so the multipliers'
+readers work unchanged) and, when d2l/dxi2 depends on g or xi, ``v1`` (d, body by body; when
+it is constant per body, possibly depending on i, the node velocity is explicit, its inverse
+taken numerically per body as the expanded step does). The rows follow the same order. For a
+chain the Jacobian is an arrow of blocks: block-diagonal in the bodies, each joint's rows
+and columns touching two neighbouring bodies (all bodies first, then all joints: the
+multiplier blocks stay contiguous in file order); a fill-reducing order keeps its sparse
+factors O(N).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import casadi as ca
+import numpy as np
+
+from ..groups import group_from_spec
+from .action import StepEquations, step_equations
+from .lagrangian import to_casadi
+
+CALL = {"never_inline": True, "jac_penalty": 0}
+
+
+@dataclass(frozen=True)
+class FamilyParts:
+    """A family model's step (``eqs``, in the symbols g, p, h given to family_step) and the
+    Lagrangian as a sum of per-body calls: lag(G, X) -> SX scalar for the product's G, X."""
+    eqs: StepEquations
+    lag: object
+    velocity: object     # (g, p, xi) -> SX d: one Newton step of dl/dxi = p, body by body
+
+
+def _body_lagrangians(model, body):
+    """{class key: (inline Function l(G, X, i), call Function)}, and the key of each body."""
+    terms = model.family.local.bodies
+    N = model.family.count
+    keys = [tuple(j for j, t in enumerate(terms) if t.start <= k < t.stop) for k in range(N)]
+    G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i")
+    funs = {}
+    for c, key in enumerate(sorted(set(keys))):
+        expr = ca.SX(0)
+        for j in key:
+            t = terms[j]
+            mapping = {sp_sym: X[int(str(sp_sym)[3:])] for sp_sym in t.expr.free_symbols
+                       if str(sp_sym).startswith("xi_")}
+            for s in t.expr.free_symbols:
+                name = str(s)
+                if name.startswith("g_"):
+                    a, b = map(int, name[2:].split("_"))
+                    mapping[s] = G[a, b]
+            mapping[t.index] = I
+            expr = expr + to_casadi(t.expr, mapping)
+        funs[key] = (ca.Function(f"l_body{c}", [G, X, I], [expr]),
+                     ca.Function(f"l_body{c}_call", [G, X, I], [expr], CALL))
+    return funs, keys
+
+
+def _joint_functions(model, body):
+    """{(text, index symbol): Function(g_slot0, ..., i) -> (phi, Phi_0, ...)} (call nodes)."""
+    out = {}
+    nb, db = body.n, body.d
+    for jt in model.family.local.joints:
+        key = (jt.text, jt.index)
+        if key in out:
+            continue
+        K = len(jt.bodies)
+        Gs = [ca.SX.sym(f"g{s}", nb, nb) for s in range(K)]
+        I = ca.SX.sym("i")
+        mapping = {}
+        for r in jt.rows:
+            for sym in r.free_symbols:
+                name = str(sym)
+                if name.startswith("g_"):
+                    a, b = map(int, name[2:].split("_"))
+                    mapping[sym] = Gs[a // nb][a % nb, b - (a // nb) * nb]
+        if jt.index is not None:
+            mapping[jt.index] = I
+        phi = ca.vertcat(*[to_casadi(r, mapping) for r in jt.rows])
+        etas = [ca.SX.sym(f"eta{s}", db) for s in range(K)]
+        varied = ca.substitute(phi, ca.vertcat(*[ca.vec(G) for G in Gs]), ca.vertcat(*[
+            ca.vec(ca.mtimes(G, ca.SX.eye(nb) + body.hat(e))) for G, e in zip(Gs, etas)]))
+        Phis = [ca.substitute(ca.jacobian(varied, e), ca.vertcat(*etas), ca.SX.zeros(K * db))
+                for e in etas]
+        out[key] = ca.Function(f"joint{len(out)}", [*[ca.vec(G) for G in Gs], I],
+                               [phi, *Phis], CALL)
+    return out
+
+
+def family_local(model) -> bool:
+    """True when ``model`` is derived body by body: a closed family model whose Lagrangian
+    sums and joints are local (hpgen.model.bodyterms); otherwise it is expanded."""
+    family = getattr(model, "family", None)
+    return family is not None and family.local is not None and not model.open_system
+
+
+def block_diagonal_symbol(group):
+    """An n x n SX of a product group's element: a symbol in each factor's diagonal block,
+    structural zeros elsewhere."""
+    blocks = [ca.SX.sym(f"g{k}", lay.n, lay.n) for k, lay in enumerate(group.factors)]
+    return ca.diagcat(*blocks)
+
+
+_LAST: list = []
+
+
+def _functions(model, tableau, tau: str, rkmk: str):
+    """(body group, lags, keys, steps, joint functions, node velocity functions): the
+    per-body and per-joint functions, built once per (model, scheme) and shared by every
+    kernel (one CasADi function each, so the generated code has each once)."""
+    key = (tableau.name, tuple(map(tuple, tableau.A)), tau, rkmk)
+    if _LAST and _LAST[0] is model and _LAST[1] == key:
+        return _LAST[2]
+    family = model.family
+    body = group_from_spec(family.body)
+    nb, db = body.n, body.d
+    lags, keys = _body_lagrangians(model, body)
+    reduced = model.left_invariant and not model.constraints
+
+    # one body's step per class, derived once
+    gb, pb, hb, ib = ca.SX.sym("g", nb, nb), ca.SX.sym("p", db), ca.SX.sym("h"), ca.SX.sym("i")
+    gbv = ca.vec(gb)
+    steps = {}
+    for c, (cls, (lag_in, _)) in enumerate(sorted(lags.items())):
+        e = step_equations(body, lambda G, X, f=lag_in: f(G, X, ib), tableau, tau, rkmk,
+                           reduced, gb, pb, hb)
+        args = [e.z, gbv, pb, hb, ib]
+        steps[cls] = dict(
+            nz=e.z.numel(), blocks=e.blocks,
+            F=ca.Function(f"body{c}_residual", args, [e.residual], CALL),
+            U=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1], CALL),
+            M=ca.Function(f"body{c}_margin", [e.z, hb], [e.margin], CALL),
+            C=ca.Function(f"body{c}_chart", [e.z, hb], [e.chart_step], CALL),
+            Z=ca.Function(f"body{c}_guess", [e.xi_hat, gbv, pb, hb], [e.guess], CALL))
+
+    joints = family.local.joints
+    jfun = _joint_functions(model, body) if joints else {}
+    vel_funs = _node_velocity(lags, body) if joints else {}
+    out = (body, lags, keys, steps, jfun, vel_funs)
+    _LAST[:] = [model, key, out]
+    return out
+
+
+def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyParts:
+    """The family step (module docstring) in g (n x n: SX, block-diagonal, or MX), p (d), h
+    (1), for a model with family_local(model); z: the unknowns' symbol to use (else a new
+    one, of the class of g)."""
+    S = ca.MX if isinstance(g, ca.MX) else ca.SX      # the composition's symbol class
+    body, lags, keys, steps, jfun, vel_funs = _functions(model, tableau, tau, rkmk)
+    nb, db, N = body.n, body.d, model.family.count
+
+    Gk = [g[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb] for k in range(N)]
+    pk = [p[k * db:(k + 1) * db] for k in range(N)]
+    xi_hat = S.sym("xi_hat", N * db)
+    joints = model.family.local.joints
+    m = sum(len(j.rows) for j in joints)
+    explicit = all(f is not None for f in vel_funs.values())
+    nzb = sum(steps[keys[k]]["nz"] for k in range(N))
+    # one symbol for all unknowns (an MX function's input must be a whole symbol)
+    if z is None:
+        z = S.sym("z", nzb + (2 * m + (0 if explicit else N * db) if joints else 0))
+    zs, blocks, off = [], [], 0
+    for k in range(N):
+        st = steps[keys[k]]
+        zs.append(z[off:off + st["nz"]])
+        blocks += [(f"{lab}[{k}]", off + a, off + b) for lab, a, b in st["blocks"]]
+        off += st["nz"]
+    lam, nu = z[nzb:nzb + m], z[nzb + m:nzb + 2 * m]
+    rows = np.cumsum([0] + [len(j.rows) for j in joints])
+    impulse = [S.zeros(db) for _ in range(N)]        # sum_j Phi_{j,k}^T lambda_j
+    for j, jt in enumerate(joints):
+        out = jfun[(jt.text, jt.index)](*[ca.vec(Gk[b]) for b in jt.bodies], jt.value)
+        for s, b in enumerate(jt.bodies):
+            impulse[b] = impulse[b] + ca.mtimes(out[1 + s].T, lam[rows[j]:rows[j + 1]])
+    res, g1s, p1s, margins, charts, guesses = [], [], [], [], [], []
+    for k in range(N):
+        st = steps[keys[k]]
+        args = [zs[k], ca.vec(Gk[k]), pk[k] - impulse[k], h, k]
+        res.append(st["F"](*args))
+        g1v, p1 = st["U"](*args)
+        g1s.append(ca.reshape(g1v, nb, nb))
+        p1s.append(p1)
+        margins.append(st["M"](zs[k], h))
+        charts.append(st["C"](zs[k], h))
+        guesses.append(st["Z"](xi_hat[k * db:(k + 1) * db], ca.vec(Gk[k]), pk[k], h))
+    margin = margins[0]
+    for mk in margins[1:]:
+        margin = ca.fmin(margin, mk)
+    g1 = ca.diagcat(*g1s)
+    lag, velocity = _product_lagrangian(lags, keys, body, N)
+    if not joints:
+        eqs = StepEquations(z, tuple(blocks), ca.vertcat(*res), g1, ca.vertcat(*p1s),
+                            ca.vertcat(*guesses), xi_hat, margin, ca.vertcat(*charts))
+        return FamilyParts(eqs, lag, velocity)
+
+    nz = nzb
+    blocks += [("lambda", nz, nz + m), ("nu", nz + m, nz + 2 * m)]
+    phis, Phi1 = [], []
+    kick = [S.zeros(db) for _ in range(N)]           # sum_j Phi_{j,k}(g1)^T nu_j
+    for j, jt in enumerate(joints):
+        out = jfun[(jt.text, jt.index)](*[ca.vec(g1s[b]) for b in jt.bodies], jt.value)
+        phis.append(out[0] / h)
+        Phi1.append(out[1:])
+        for s, b in enumerate(jt.bodies):
+            kick[b] = kick[b] + ca.mtimes(out[1 + s].T, nu[rows[j]:rows[j + 1]])
+    p1s = [p1s[k] - kick[k] for k in range(N)]
+    if explicit:
+        vel = [vel_funs[keys[k]][0](ca.vec(g1s[k]), p1s[k], k,
+                                    _inverse_hessian(vel_funs[keys[k]][1], k)) for k in range(N)]
+        extra_rows, extra_guess = [], []
+    else:
+        v1 = z[nz + 2 * m:]
+        vel = [v1[k * db:(k + 1) * db] for k in range(N)]
+        dl = _momentum(lags, body)
+        extra_rows = [dl[keys[k]](g1s[k], vel[k], k) - p1s[k] for k in range(N)]
+        extra_guess = [xi_hat]
+        blocks.append(("v1", nz + 2 * m, nz + 2 * m + N * db))
+    hidden = []
+    for j, jt in enumerate(joints):
+        hidden.append(sum((ca.mtimes(Phi1[j][s], vel[b]) for s, b in enumerate(jt.bodies)),
+                          S.zeros(len(jt.rows))))
+    residual = ca.vertcat(*res, *phis, *hidden, *extra_rows)
+    eqs = StepEquations(z, tuple(blocks), residual, g1,
+                        ca.vertcat(*p1s), ca.vertcat(*guesses, S.zeros(2 * m), *extra_guess),
+                        xi_hat, margin, ca.vertcat(*charts))
+    return FamilyParts(eqs, lag, velocity)
+
+
+def _momentum(lags, body):
+    """{class key: Function(g, xi, i) -> dl/dxi} (call nodes)."""
+    G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i")
+    return {key: ca.Function(f"body{c}_momentum", [G, X, I],
+                             [ca.gradient(lag_in(G, X, I), X)], CALL)
+            for c, (key, (lag_in, _)) in enumerate(sorted(lags.items()))}
+
+
+def _node_velocity(lags, body):
+    """{class key: (Function(g (vec), p, i, Hinv (d*d, column-major)) -> Hinv (p - dl/dxi(g, 0)),
+    Function(i) -> d2l/dxi2)}, or None for a class whose d2l/dxi2 depends on g or xi (it may
+    depend on i: its inverse is taken numerically per body, as the expanded step does)."""
+    G, X, I, P = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i"), \
+        ca.SX.sym("p", body.d)
+    Hinv = ca.SX.sym("Hinv", body.d, body.d)
+    out = {}
+    for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
+        dl = ca.gradient(lag_in(G, X, I), X)
+        hess = ca.jacobian(dl, X)
+        if ca.depends_on(hess, ca.vertcat(ca.vec(G), X)):
+            out[key] = None
+            continue
+        vel = ca.mtimes(Hinv, P - ca.substitute(dl, X, ca.SX.zeros(body.d)))
+        out[key] = (ca.Function(f"body{c}_velocity", [ca.vec(G), P, I, ca.vec(Hinv)], [vel],
+                                CALL), ca.Function(f"body{c}_hessian", [I], [hess]))
+    return out
+
+
+def _inverse_hessian(fun, k: int):
+    """d2l/dxi2 of body k inverted numerically, column-major (a DM)."""
+    H = np.array(fun(k), dtype=float)
+    return ca.DM(np.linalg.inv(H).ravel(order="F"))
+
+
+def _product_lagrangian(lags, keys, body, N):
+    """(lag, velocity): l(G, X) of the product as a sum of per-body calls, and one Newton step
+    of dl/dxi = p from xi body by body (the Hessian of a separable l is block-diagonal)."""
+    nb, db = body.n, body.d
+    G, X, I, P = ca.SX.sym("g", nb, nb), ca.SX.sym("xi", db), ca.SX.sym("i"), ca.SX.sym("p", db)
+    steps = {}
+    for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
+        mu = ca.gradient(lag_in(G, X, I), X)
+        steps[key] = ca.Function(f"body{c}_velocity_step", [ca.vec(G), P, X, I],
+                                 [X - ca.solve(ca.jacobian(mu, X), mu - P)], CALL)
+
+    def lag(Gp, Xp):
+        terms = [lags[keys[k]][1](Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb],
+                                  Xp[k * db:(k + 1) * db], k) for k in range(N)]
+        return ca.sum1(ca.vertcat(*terms))
+
+    def velocity(Gp, Pp, Xp):
+        return ca.vertcat(*[steps[keys[k]](ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]),
+                                           Pp[k * db:(k + 1) * db], Xp[k * db:(k + 1) * db], k)
+                            for k in range(N)])
+    return lag, velocity
+
+
+def _body_maps(body, tau: str):
+    """Per-body SX functions (call nodes) for the MX kernels: the chart point
+    g tau(theta x), the perturbed element g (I + eta^), and vee(g_ref^{-1} g)."""
+    G, R = ca.SX.sym("g", body.n, body.n), ca.SX.sym("gref", body.n, body.n)
+    x, th, eta = ca.SX.sym("x", body.d), ca.SX.sym("theta"), ca.SX.sym("eta", body.d)
+    return (ca.Function("body_chart_point", [ca.vec(G), x, th],
+                        [ca.vec(ca.mtimes(G, body.tau(tau, th * x)))], CALL),
+            ca.Function("body_perturbed", [ca.vec(G), eta],
+                        [ca.vec(ca.mtimes(G, ca.SX.eye(body.n) + body.hat(eta)))], CALL),
+            ca.Function("body_chart_of", [ca.vec(R), ca.vec(G)],
+                        [body.vee(ca.mtimes(body.inverse(R), G))], CALL))
+
+
+def _blocks(M, nb, N):
+    return [ca.vec(M[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]) for k in range(N)]
+
+
+def mx_step_kernels(model, tableau, tau: str, rkmk: str) -> dict:
+    """{kernel name: (Function over MX, input names, output names)} for the step kernels of
+    a family model (residual, jacobian, residual_jacobian, update, guess, margin,
+    chart_point, update_p, step_partials; hpgen.abi's signatures, closed models). Composed
+    over MX, the calls pass whole vectors and CasADi differentiates them through the
+    callees' own Jacobians (``jac_penalty`` 0): the generated C has the per-body functions
+    once and a few lines per call. Outputs keep their structural sparsity."""
+    n, d = model.group.n, model.group.d
+    body = group_from_spec(model.family.body)
+    nb, N = body.n, model.family.count
+    gv, p, h = ca.MX.sym("g", n * n), ca.MX.sym("p", d), ca.MX.sym("h")
+    mapped = _mapped_kernels(model, tableau, tau, rkmk, gv, p, h)
+    if mapped is not None:
+        from .family_map import mapped_state_kernels
+        from .record_kernel import record_names
+        _, lags, keys, _, _, _ = _functions(model, tableau, tau, rkmk)
+        state = mapped_state_kernels(model, lags, keys, body, record_names(model))
+        return {**mapped, **(state or {})}
+    g = ca.reshape(gv, n, n)
+    eqs = family_step(model, tableau, tau, rkmk, g, p, h).eqs
+    z, col = eqs.z, (lambda M: ca.reshape(M, M.numel(), 1))  # noqa: E731
+    J = col(ca.jacobian(eqs.residual, z))
+    g1 = col(eqs.g1)
+    chart_fn, perturb, chart_of = _body_maps(body, tau)
+    theta = ca.MX.sym("theta")
+    db = body.d
+    gth = ca.diagcat(*[ca.reshape(chart_fn(G, eqs.chart_step[k * db:(k + 1) * db], theta),
+                                  nb, nb) for k, G in enumerate(_blocks(g, nb, N))])
+    # step partials (hpgen.derive.linearize): s = (eta, dp), g -> g (I + eta^), p -> p + dp
+    eta, dp = ca.MX.sym("eta", d), ca.MX.sym("dp", d)
+    g_s = ca.diagcat(*[ca.reshape(perturb(G, eta[k * db:(k + 1) * db]), nb, nb)
+                       for k, G in enumerate(_blocks(g, nb, N))])
+    pert = family_step(model, tableau, tau, rkmk, g_s, p + dp, h, z=z).eqs
+    g1ref = ca.MX.sym("g1ref", n * n)
+    Y = ca.vertcat(*[chart_of(R, G) for R, G in zip(_blocks(ca.reshape(g1ref, n, n), nb, N),
+                                                    _blocks(pert.g1, nb, N))], pert.p1)
+    s = ca.vertcat(eta, dp)
+    parts = [ca.jacobian(pert.residual, s), ca.jacobian(Y, z), ca.jacobian(Y, s)]
+    parts = ca.substitute(parts, [s, g1ref], [ca.MX.zeros(2 * d), ca.densify(g1)])
+    step_in = ([z, gv, p, h], ("z", "g", "p", "h"))
+    out = {"residual": (step_in, [eqs.residual], ("F",)),
+           "jacobian": (step_in, [J], ("J",)),
+           "residual_jacobian": (step_in, [eqs.residual, J], ("F", "J")),
+           "update": (step_in, [g1, eqs.p1], ("g1", "p1")),
+           "guess": (([eqs.xi_hat, gv, p, h], ("xi", "g", "p", "h")), [eqs.guess], ("z0",)),
+           "margin": (([z, h], ("z", "h")), [eqs.margin], ("m",)),
+           "chart_point": (([z, gv, h, theta], ("z", "g", "h", "theta")), [col(gth)],
+                           ("g_theta",)),
+           "update_p": (step_in, [eqs.p1], ("p1",)),
+           "step_partials": (step_in, [col(e) for e in parts], ("Fs", "Yz", "Ys"))}
+    return {name: (ca.Function(name, list(ins), outs, list(nin), list(nout)), nin, nout)
+            for name, ((ins, nin), outs, nout) in out.items()}
+
+
+def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
+    """mx_step_kernels' dict from mapped calls (hpgen.derive.family_map), or None when the
+    family does not qualify (several Lagrangian classes, a node velocity that is not
+    explicit)."""
+    from .family_map import mapped, mapped_step
+    funcs = _functions(model, tableau, tau, rkmk)
+    body, lags, keys, steps, jfun, vel_funs = funcs
+    if len(steps) != 1 or any(f is None for f in vel_funs.values()):
+        return None
+    n, d, N = model.group.n, model.group.d, model.family.count
+    nb, db = body.n, body.d
+    gcol = ca.reshape(ca.DM(block_diagonal_symbol(model.group).sparsity(), 1.0), n * n, 1)
+    spcol = gcol.sparsity()
+    idx = [int(k) for k in spcol.row()]
+    G, P = ca.reshape(gv[idx], nb * nb, N), ca.reshape(p, db, N)
+    m = sum(len(j.rows) for j in model.family.local.joints)
+    nzb = next(iter(steps.values()))["nz"]
+    z = ca.MX.sym("z", nzb * N + (2 * m if m else 0))
+    xi_hat = ca.MX.sym("xi_hat", d)
+    eqs = mapped_step(model, funcs, G, P, h, z, xi_hat)
+    if eqs is None:
+        return None
+    col = lambda M: ca.reshape(M, M.numel(), 1)  # noqa: E731
+    cast = lambda M: ca.sparsity_cast(ca.vec(M), spcol)  # noqa: E731  (nb^2 x N -> g's)
+    J = col(ca.jacobian(eqs.residual, z))
+    chart_fn, perturb, chart_of = _body_maps(body, tau)
+    theta = ca.MX.sym("theta")
+    gth = mapped(chart_fn, N)(G, ca.reshape(eqs.chart_step, db, N), theta)
+    eta, dp = ca.MX.sym("eta", d), ca.MX.sym("dp", d)
+    G_s = mapped(perturb, N)(G, ca.reshape(eta, db, N))
+    pert = mapped_step(model, funcs, G_s, P + ca.reshape(dp, db, N), h, z, xi_hat)
+    G1ref = ca.MX.sym("g1ref", nb * nb, N)
+    Y = ca.vertcat(ca.vec(mapped(chart_of, N)(G1ref, pert.g1)), pert.p1)
+    s = ca.vertcat(eta, dp)
+    parts = [ca.jacobian(pert.residual, s), ca.jacobian(Y, z), ca.jacobian(Y, s)]
+    parts = ca.substitute(parts, [s, G1ref], [ca.MX.zeros(2 * d), eqs.g1])
+    step_in = ([z, gv, p, h], ("z", "g", "p", "h"))
+    out = {"residual": (step_in, [eqs.residual], ("F",)),
+           "jacobian": (step_in, [J], ("J",)),
+           "residual_jacobian": (step_in, [eqs.residual, J], ("F", "J")),
+           "update": (step_in, [cast(eqs.g1), eqs.p1], ("g1", "p1")),
+           "guess": (([xi_hat, gv, p, h], ("xi", "g", "p", "h")), [eqs.guess], ("z0",)),
+           "margin": (([z, h], ("z", "h")), [eqs.margin], ("m",)),
+           "chart_point": (([z, gv, h, theta], ("z", "g", "h", "theta")), [cast(gth)],
+                           ("g_theta",)),
+           "update_p": (step_in, [eqs.p1], ("p1",)),
+           "step_partials": (step_in, [col(e) for e in parts], ("Fs", "Yz", "Ys"))}
+    return {name: (ca.Function(name, list(ins), outs, list(nin), list(nout)), nin, nout)
+            for name, ((ins, nin), outs, nout) in out.items()}

@@ -1,0 +1,182 @@
+"""A family's step kernels composed with mapped calls: a fixed number of MX operations
+whatever N (hpgen.derive.family derives the functions; this module wires them).
+
+Layout: the bodies' blocks of g are gathered into G (nb^2 x N, column k = vec(g_k)), the
+momenta into P (db x N), body k's unknowns are column k of Z (nzb x N, the first nzb N
+entries of z); each body function is called once through ``Function.map`` over the columns,
+each joint function once per row-block text over its instances (the slot bodies' columns
+gathered by one indexing operation each). The impulses sum_j Phi_{j,k}^T lambda_j reach the
+bodies by products with constant selection matrices. The result is the StepEquations of
+hpgen.derive.family.family_step (same unknowns, rows and outputs), used when every body
+shares one Lagrangian and the node velocity is explicit; else None.
+"""
+from __future__ import annotations
+
+import casadi as ca
+import numpy as np
+
+from .action import StepEquations
+
+CALL = {"never_inline": True, "jac_penalty": 0}
+
+
+_WRAPPED: dict = {}
+
+
+def mapped(f, count: int):
+    """``f`` (an SX function) called through an MX wrapper and mapped over ``count`` columns.
+    The wrapper's directional derivatives are products with the callee's Jacobian
+    (``jac_penalty`` 0), so the map's derivatives reuse one Jacobian function instead of
+    an SX forward sweep per number of directions."""
+    hit = _WRAPPED.get(id(f))
+    if hit is None or hit[0] is not f:
+        args = [ca.MX.sym(f.name_in(i), f.sparsity_in(i)) for i in range(f.n_in())]
+        # jac_penalty only: a never_inline wrapper would expand (the Python backend's SX
+        # form) into a call of itself
+        w = ca.Function(f.name() + "_w", args, f.call(args), f.name_in(), f.name_out(),
+                        {"jac_penalty": 0})
+        if len(_WRAPPED) > 256:
+            _WRAPPED.clear()
+        hit = _WRAPPED[id(f)] = (f, w)
+    return hit[1].map(count)
+
+
+def _joint_maps(fun, K: int, rows: int):
+    """The joint's rows as three functions of its slots' vec(g) and its index i: impulses
+    Phi_s^T l, (phi, Phi_s(g1)^T nu), and sum_s Phi_s(g1) v_s."""
+    nbb = fun.size1_in(0)
+    gs = [ca.SX.sym(f"g{s}", nbb) for s in range(K)]
+    i, lam = ca.SX.sym("i"), ca.SX.sym("l", rows)
+    vs = [ca.SX.sym(f"v{s}", fun.size2_out(1)) for s in range(K)]
+    out = fun(*gs, i)
+    kicks = [ca.mtimes(out[1 + s].T, lam) for s in range(K)]
+    hidden = ca.SX.zeros(rows)
+    for s in range(K):
+        hidden = hidden + ca.mtimes(out[1 + s], vs[s])
+    name = fun.name()
+    return (ca.Function(f"{name}_impulse", [*gs, i, lam], kicks, CALL),
+            ca.Function(f"{name}_end", [*gs, i, lam], [out[0], *kicks], CALL),
+            ca.Function(f"{name}_hidden", [*gs, i, *vs], [hidden], CALL))
+
+
+def _selection(count: int, cols, N: int):
+    """count x N constant: row r has a 1 in column cols[r]."""
+    return ca.DM(ca.Sparsity.triplet(count, N, list(range(count)), list(cols)), 1.0)
+
+
+def mapped_step(model, funcs, G, P, h, z, xi_hat) -> StepEquations | None:
+    """The family step over MX with mapped calls; funcs: hpgen.derive.family._functions;
+    G (nb^2 x N), P (db x N), h (1), z (nz) and xi_hat (d) MX."""
+    body, lags, keys, steps, jfun, vel_funs = funcs
+    N, db = model.family.count, body.d
+    if len(steps) != 1 or any(f is None for f in vel_funs.values()):
+        return None
+    (cls, st), = steps.items()
+    nzb, I = st["nz"], ca.DM(np.arange(N)).T
+    Z = ca.reshape(z[:nzb * N], nzb, N)
+    joints = model.family.local.joints
+    m = sum(len(j.rows) for j in joints)
+    rowoff = np.cumsum([0] + [len(j.rows) for j in joints])
+    groups: dict = {}
+    for j, jt in enumerate(joints):
+        groups.setdefault((jt.text, jt.index), []).append(j)
+    L, K_ = ca.MX.zeros(db, N), ca.MX.zeros(db, N)
+    plan = []
+    for key, js in groups.items():
+        first = joints[js[0]]
+        k, rows = len(first.bodies), len(first.rows)
+        fns = _joint_maps(jfun[key], k, rows)
+        cols = [[joints[j].bodies[s] for j in js] for s in range(k)]
+        sel = [_selection(len(js), c, N) for c in cols]
+        Ij = ca.DM([joints[j].value for j in js]).T
+        lam_idx = [int(z.numel() - 2 * m + rowoff[j] + r) for j in js for r in range(rows)]
+        lam = ca.reshape(z[lam_idx], rows, len(js))
+        nu = ca.reshape(z[[q + m for q in lam_idx]], rows, len(js))
+        imp = mapped(fns[0], len(js))(*[G[:, c] for c in cols], Ij, lam)
+        imp = [imp] if k == 1 else imp
+        for s in range(k):
+            L = L + ca.mtimes(imp[s], sel[s])
+        plan.append((js, fns, cols, sel, Ij, nu, rows))
+    Q = P - L
+    Fr = mapped(st["F"], N)(Z, G, Q, h, I)
+    G1, P1m = mapped(st["U"], N)(Z, G, Q, h, I)
+    phis, rows_of = [], []
+    for js, fns, cols, sel, Ij, nu, rows in plan:
+        out = mapped(fns[1], len(js))(*[G1[:, c] for c in cols], Ij, nu)
+        phis.append(out[0] / h)
+        for s in range(len(cols)):
+            K_ = K_ + ca.mtimes(out[1 + s], sel[s])
+        rows_of.append((js, rows))
+    P1 = P1m - K_
+    vel_fn, hess_fn = vel_funs[cls]
+    Hinv = ca.DM(np.hstack([np.linalg.inv(np.array(hess_fn(k), dtype=float)).reshape(
+        -1, 1, order="F") for k in range(N)]))
+    V = mapped(vel_fn, N)(G1, P1, I, Hinv)
+    hidden = [mapped(fns[2], len(js))(*[G1[:, c] for c in cols], Ij, *[V[:, c] for c in cols])
+              for js, fns, cols, sel, Ij, nu, rows in plan]
+    # joint rows back in file order
+    order = [(j, r) for js, rows in rows_of for j in js for r in range(rows)]
+    perm = np.argsort([rowoff[j] + r for j, r in order], kind="stable")
+    phi = ca.vertcat(*[ca.vec(x) for x in phis])[perm.tolist()]
+    hid = ca.vertcat(*[ca.vec(x) for x in hidden])[perm.tolist()]
+    margins = mapped(st["M"], N)(Z, h)
+    charts = mapped(st["C"], N)(Z, h)
+    guess = mapped(st["Z"], N)(ca.reshape(xi_hat, db, N), G, P, h)
+    return StepEquations(z, (), ca.vertcat(ca.vec(Fr), phi, hid), G1, ca.vec(P1),
+                         ca.vertcat(ca.vec(guess), ca.MX.zeros(2 * m)), xi_hat,
+                         ca.mmin(margins), ca.vec(charts))
+
+
+def mapped_state_kernels(model, lags, keys, body, record_names) -> dict | None:
+    """{kernel name: (Function over MX, input names, output names)} for legendre, hessian,
+    energy, momentum, defect, observe, velocity_step and (when the scene records only g, mu,
+    xi, energy, momentum, defect) record: one mapped call of a per-body function each, the
+    sums and maxima over the bodies as reductions. None when the bodies do not share one
+    Lagrangian."""
+    if len(lags) != 1:
+        return None
+    (lag_in, _), = lags.values()
+    n, d, N = model.group.n, model.group.d, model.family.count
+    nb, db = body.n, body.d
+    Gs, X, Ps, I = ca.SX.sym("g", nb, nb), ca.SX.sym("xi", db), ca.SX.sym("p", db), \
+        ca.SX.sym("i")
+    lval = lag_in(Gs, X, I)
+    mu = ca.gradient(lval, X)
+    H = ca.jacobian(mu, X)
+    vstep = X - ca.solve(H, mu - Ps)
+    at0 = lambda e: ca.substitute(e, X, ca.SX.zeros(db))  # noqa: E731
+    x0 = at0(vstep)
+    gvec = ca.vec(Gs)
+    fa = ca.Function("body_legendre", [gvec, X, I],
+                     [mu, ca.densify(ca.vec(H)), ca.dot(mu, X) - lval], CALL)
+    fb = ca.Function("body_observe", [gvec, Ps, I], [
+        body.momentum_map(Gs, Ps), x0, ca.substitute(ca.dot(mu, X) - lval, X, x0)], CALL)
+    fd = ca.Function("body_defect", [gvec], [body.group_defect(Gs)], CALL)
+    fv = ca.Function("body_velocity_step", [gvec, Ps, X, I], [vstep], CALL)
+    gv, xi, p = ca.MX.sym("g", n * n), ca.MX.sym("xi", d), ca.MX.sym("p", d)
+    gcol = ca.reshape(ca.DM(ca.diagcat(*[ca.DM.ones(nb, nb)] * N).sparsity(), 1.0), n * n, 1)
+    idx = [int(k) for k in gcol.sparsity().row()]
+    hcol = ca.reshape(ca.DM(ca.diagcat(*[ca.DM.ones(db, db)] * N).sparsity(), 1.0), d * d, 1)
+    G = ca.reshape(gv[idx], nb * nb, N)
+    Xm, Pm, Im = ca.reshape(xi, db, N), ca.reshape(p, db, N), ca.DM(np.arange(N)).T
+    mu_, H_, E_ = mapped(fa, N)(G, Xm, Im)
+    m_, x0_, E0_ = mapped(fb, N)(G, Pm, Im)
+    e_ = mapped(fd, N)(G)
+    v_ = mapped(fv, N)(G, Pm, Xm, Im)
+    energy, defect = ca.sum2(E_), ca.mmax(e_)
+    items = {"g": gv, "mu": p, "xi": xi, "energy": energy, "momentum": ca.vec(m_),
+             "defect": defect}
+    res = {"legendre": ([gv, xi], ("g", "xi"), [ca.vec(mu_)], ("mu",)),
+           "hessian": ([gv, xi], ("g", "xi"),
+                       [ca.sparsity_cast(ca.vec(H_), hcol.sparsity())], ("H",)),
+           "energy": ([gv, xi], ("g", "xi"), [energy], ("E",)),
+           "momentum": ([gv, p], ("g", "p"), [ca.vec(m_)], ("m",)),
+           "defect": ([gv], ("g",), [defect], ("e",)),
+           "observe": ([gv, p], ("g", "p"), [ca.vec(x0_), ca.sum2(E0_), ca.vec(m_), defect],
+                       ("xi", "E", "m", "e")),
+           "velocity_step": ([gv, p, xi], ("g", "p", "xi"), [ca.vec(v_)], ("xi1",))}
+    if all(nm in items for nm in record_names):
+        res["record"] = ([gv, p, xi], ("g", "p", "xi"),
+                         [ca.vertcat(*[items[nm] for nm in record_names])], ("row",))
+    return {name: (ca.Function(name, ins, outs, list(nin), list(nout)), nin, nout)
+            for name, (ins, nin, outs, nout) in res.items()}
