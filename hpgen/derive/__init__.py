@@ -74,6 +74,15 @@ def _column(M):
     return ca.reshape(M, M.numel(), 1)
 
 
+def _forced_storage(f, k, nz, jacobian):
+    """f (an MX kernel) with its output k, J as a column with structural zeros, returned as
+    the nz x nz matrix of its nonzeros (jacobian "sparse") or densified ("dense")."""
+    args = f.mx_in()
+    outs = f.call(args)
+    outs[k] = ca.reshape(outs[k], nz, nz) if jacobian == "sparse" else ca.densify(outs[k])
+    return ca.Function(f.name(), args, outs, f.name_in(), f.name_out())
+
+
 def section_function(model, g, p):
     """SX of the scene's Poincare section s(g, mu) at (g, p) (p the node momentum), or the
     constant 1 (never crosses) when the model's scene has no ``section``."""
@@ -156,6 +165,8 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
     def kernel(name, inputs, outputs):
         if name in mx:               # a family's step kernels, composed over MX
             f, names_in, names_out = mx[name]
+            if jacobian is not None and "J" in names_out:
+                f = _forced_storage(f, names_out.index("J"), nz, jacobian)
             return Kernel(name, f, tuple(names_in), tuple(names_out))
         outputs = outputs() if callable(outputs) else outputs
         if extra and name in OPEN_EXTRA:
