@@ -44,8 +44,7 @@ def add_parser(sub):
 
 def add_recommend_parser(sub):
     """Add ``recommend`` (hpgen.bench.recommend) to hpgen's subparsers."""
-    r = sub.add_parser("recommend", help="which scheme reaches an error over a horizon "
-                       "fastest (a short measured run)",
+    r = sub.add_parser("recommend", help="the scheme that reaches an error over T fastest",
                        description="rank hpgen's schemes that apply to the model by the "
                        "predicted time to reach --error over --T, from a short measured run")
     r.add_argument("model", help="model file with a scene")
