@@ -19,18 +19,22 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
                                        double* z, const hpgen_options* o, double* A,
                                        double* B, double* dev, hpgen_status* st) {
     enum { S = 2 * HPGEN_D };
-    double g1[HPGEN_NN], p1[HPGEN_D], J[HPGEN_LU_SIZE], Fs[HPGEN_NZ * S],
-        Yz[S * HPGEN_NZ], Ys[S * S], FH[HPGEN_NZ * HPGEN_H], YH[S * HPGEN_H],
-        zlast[HPGEN_NZ], zprev[HPGEN_NZ] = {0.0}, zprev2[HPGEN_NZ] = {0.0}, res;
+    double g1[HPGEN_NN], p1[HPGEN_D], J[HPGEN_LU_SIZE], FH[HPGEN_NZ * HPGEN_H],
+        YH[S * HPGEN_H], zlast[HPGEN_NZ], zprev[HPGEN_NZ] = {0.0},
+        zprev2[HPGEN_NZ] = {0.0}, res;
 #else
 HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const double* p_rec,
                                        double h, double* z, const hpgen_options* o,
                                        double* A, double* dev, hpgen_status* st) {
     enum { S = 2 * HPGEN_D };
-    double hv[1], g1[HPGEN_NN], p1[HPGEN_D], J[HPGEN_LU_SIZE], Fs[HPGEN_NZ * S],
-        Yz[S * HPGEN_NZ], Ys[S * S], zlast[HPGEN_NZ], zprev[HPGEN_NZ] = {0.0},
-        zprev2[HPGEN_NZ] = {0.0}, res;
+    double hv[1], g1[HPGEN_NN], p1[HPGEN_D], J[HPGEN_LU_SIZE], zlast[HPGEN_NZ],
+        zprev[HPGEN_NZ] = {0.0}, zprev2[HPGEN_NZ] = {0.0}, res;
 #endif
+    /* the step's partials on the heap: S x nz three times is megabytes for many bodies,
+       beyond a thread's stack */
+    double *Fs = malloc(sizeof(double) * (size_t)S * HPGEN_NZ * 2 + sizeof(double) * S * S),
+           *Yz = Fs ? Fs + (size_t)S * HPGEN_NZ : NULL, *Ys = Fs ? Yz + (size_t)S * HPGEN_NZ : NULL;
+    long long done;
     int piv[HPGEN_NZ];
     long long k, it, valid = 0;
     int i, j, l, code;
@@ -38,12 +42,13 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
     hpgen_status_init(st);
 #if HPGEN_OPEN
     if (K < 0 || c0 < 2 || nc < 0 || c0 + nc > HPGEN_H || !hpgen_options_ok(o)) {
-        st->code = HPGEN_INVALID; return 0;
+        st->code = HPGEN_INVALID; free(Fs); return 0;
     }
 #else
-    if (K < 0 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
+    if (K < 0 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; free(Fs); return 0; }
     hv[0] = h;
 #endif
+    if (!Fs) { st->code = HPGEN_INVALID; return 0; }
     full = *o;
     full.simplified = 0;
     for (k = 0; k < K; ++k) {
@@ -65,7 +70,7 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
         code = hpgen_step_core(g, p, hv, z, k == 0 ? &full : o, J, piv, &valid, g1, p1, &it,
                                &st->jacobians, &res, k == 0, 1);
         st->iterations = it; st->total_iterations += it; st->residual = res;
-        if (code != HPGEN_OK) { st->code = code; st->step = k; return k; }
+        if (code != HPGEN_OK) { st->code = code; st->step = k; done = k; goto out; }
         for (i = 0; i < HPGEN_NN; ++i) m = fmax(m, fabs(g1[i] - g[HPGEN_NN + i]));
         for (i = 0; i < HPGEN_D; ++i) m = fmax(m, fabs(p1[i] - p[HPGEN_D + i]));
         dev[k] = m;
@@ -78,7 +83,7 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
             || hpgen_k_step_partials(z, g, p, hv, Fs, Yz, Ys)
 #endif
             || hpgen_lu_factor_solve(J, piv, Fs, 1)) {
-            st->code = HPGEN_NONFINITE; st->step = k; return k;
+            st->code = HPGEN_NONFINITE; st->step = k; done = k; goto out;
         }
         valid = o->simplified ? 1 : 0;    /* J holds J^{-1} at z_k: the next Newton matrix */
         /* Fs's first column is solved, the others by J^{-1} */
@@ -89,7 +94,7 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
                 for (l = 0; l < HPGEN_NZ; ++l) a -= Yz[i + l * S] * Fs[l + j * HPGEN_NZ];
                 Ak[i + j * S] = a;
             }
-        if (!hpgen_all_finite(Ak, S * S)) { st->code = HPGEN_NONFINITE; st->step = k; return k; }
+        if (!hpgen_all_finite(Ak, S * S)) { st->code = HPGEN_NONFINITE; st->step = k; done = k; goto out; }
 #if HPGEN_OPEN
         for (j = 0; j < nc; ++j) {
             double* f = FH + (c0 + j) * HPGEN_NZ;
@@ -100,11 +105,14 @@ HPGEN_EXPORT long long hpgen_linearize(long long K, const double* g_rec, const d
                 Bk[i + j * S] = a;
             }
         }
-        if (!hpgen_all_finite(Bk, S * nc)) { st->code = HPGEN_NONFINITE; st->step = k; return k; }
+        if (!hpgen_all_finite(Bk, S * nc)) { st->code = HPGEN_NONFINITE; st->step = k; done = k; goto out; }
 #endif
         memcpy(zprev2, zprev, sizeof zprev);
         memcpy(zprev, zlast, sizeof zprev);
     }
     st->step = K;
-    return K;
+    done = K;
+out:
+    free(Fs);
+    return done;
 }
