@@ -107,7 +107,7 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
     group.require_chart(tau)
     RKMK.check(rkmk, field="integrator.rkmk")
     n, d = group.n, group.d
-    local = not expand and family_local(model)
+    local = not expand and not is_splitting(tableau) and family_local(model)
     # a family's g is block-diagonal: its off-diagonal entries are structural zeros, so
     # products with g stay block by block (the kernels still take all n*n entries)
     g = block_diagonal_symbol(group) if local else ca.SX.sym("g", n, n)
