@@ -22,13 +22,11 @@ import numpy as np
 import pytest
 
 from conftest import ROOT
-from hpgen.bench.multibody import chain as ch
+from hpgen.bench.multibody import chain as ch, hpgen_chain
 from hpgen.bench.multibody.reference import solve
 
 MODEL = ROOT / "examples" / "pendulum_chain.yaml"
 SPEC = ch.ChainSpec(2)
-B = np.array([0.0, 0.0, -SPEC.length])
-P = np.array([(i + 0.5) * B for i in range(SPEC.n)])     # centre in the example's frame
 
 
 def _rotvec(w):
@@ -43,24 +41,12 @@ def _initial() -> ch.ChainState:
 
 
 def to_hpgen(s: ch.ChainState):
-    """(g (8 x 8), xi (12,)) of a chain state."""
-    n = SPEC.n
-    g, xi = np.eye(4 * n), np.zeros(6 * n)
-    for i in range(n):
-        g[4 * i:4 * i + 3, 4 * i:4 * i + 3] = s.R[i]
-        g[4 * i:4 * i + 3, 4 * i + 3] = s.x[i] - s.R[i] @ P[i]
-        xi[6 * i:6 * i + 3] = s.omega[i]
-        xi[6 * i + 3:6 * i + 6] = s.R[i].T @ s.v[i] - np.cross(s.omega[i], P[i])
-    return g, xi
+    """(g (8 x 8), xi (12,)) of a chain state (the benchmark's conversion)."""
+    return hpgen_chain.to_hpgen(SPEC, s)
 
 
 def from_hpgen(g, xi) -> ch.ChainState:
-    n = SPEC.n
-    R = np.array([g[4 * i:4 * i + 3, 4 * i:4 * i + 3] for i in range(n)])
-    w = np.array([xi[6 * i:6 * i + 3] for i in range(n)])
-    x = np.array([g[4 * i:4 * i + 3, 4 * i + 3] + R[i] @ P[i] for i in range(n)])
-    v = np.array([R[i] @ (xi[6 * i + 3:6 * i + 6] + np.cross(w[i], P[i])) for i in range(n)])
-    return ch.ChainState(R, x, w, v)
+    return hpgen_chain.from_hpgen(SPEC, np.asarray(g)[None], np.asarray(xi)[None])[0]
 
 
 def _distance(a: ch.ChainState, b: ch.ChainState) -> float:
