@@ -36,7 +36,8 @@ from ..schemes import RKMK
 from ..splitting import is_splitting, splitting_step
 from .action import step_equations
 from .constraints import constrain_step, constraint_function
-from .family import block_diagonal_symbol, family_local, family_step, mx_step_kernels
+from .family import block_diagonal_symbol, family_local, family_step
+from .family_kernels import mx_step_kernels
 from .lagrangian import lagrangian_function, open_functions, to_casadi
 from .linearize import step_partials
 from .record_kernel import record_row, velocity_step
