@@ -68,19 +68,8 @@ def mx_step_kernels(model, tableau, tau: str, rkmk: str) -> dict:
     s = ca.vertcat(eta, dp)
     parts = [ca.jacobian(pert.residual, s), ca.jacobian(Y, z), ca.jacobian(Y, s)]
     parts = ca.substitute(parts, [s, g1ref], [ca.MX.zeros(2 * d), ca.densify(g1)])
-    step_in = ([z, gv, p, h], ("z", "g", "p", "h"))
-    out = {"residual": (step_in, [eqs.residual], ("F",)),
-           "jacobian": (step_in, [J], ("J",)),
-           "residual_jacobian": (step_in, [eqs.residual, J], ("F", "J")),
-           "update": (step_in, [g1, eqs.p1], ("g1", "p1")),
-           "guess": (([eqs.xi_hat, gv, p, h], ("xi", "g", "p", "h")), [eqs.guess], ("z0",)),
-           "margin": (([z, h], ("z", "h")), [eqs.margin], ("m",)),
-           "chart_point": (([z, gv, h, theta], ("z", "g", "h", "theta")), [col(gth)],
-                           ("g_theta",)),
-           "update_p": (step_in, [eqs.p1], ("p1",)),
-           "step_partials": (step_in, [col(e) for e in parts], ("Fs", "Yz", "Ys"))}
-    return {name: (ca.Function(name, list(ins), outs, list(nin), list(nout)), nin, nout)
-            for name, ((ins, nin), outs, nout) in out.items()}
+    return _step_kernels(eqs, z, gv, p, h, eqs.xi_hat, theta, J, g1, col(gth),
+                         [col(e) for e in parts])
 
 
 def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
@@ -119,16 +108,24 @@ def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
     s = ca.vertcat(eta, dp)
     parts = [ca.jacobian(pert.residual, s), ca.jacobian(Y, z), ca.jacobian(Y, s)]
     parts = ca.substitute(parts, [s, G1ref], [ca.MX.zeros(2 * d), eqs.g1])
+    return _step_kernels(eqs, z, gv, p, h, xi_hat, theta, J, cast(eqs.g1), cast(gth),
+                         [col(e) for e in parts])
+
+
+def _step_kernels(eqs, z, gv, p, h, xi_hat, theta, J, g1, g_theta, partials) -> dict:
+    """{kernel name: (Function, input names, output names)} of the step kernels from the
+    family's step equations over MX (hpgen.abi's signatures; g1, g_theta as the contract's
+    flattened g, partials the step_partials outputs Fs, Yz, Ys)."""
     step_in = ([z, gv, p, h], ("z", "g", "p", "h"))
     out = {"residual": (step_in, [eqs.residual], ("F",)),
            "jacobian": (step_in, [J], ("J",)),
            "residual_jacobian": (step_in, [eqs.residual, J], ("F", "J")),
-           "update": (step_in, [cast(eqs.g1), eqs.p1], ("g1", "p1")),
+           "update": (step_in, [g1, eqs.p1], ("g1", "p1")),
            "guess": (([xi_hat, gv, p, h], ("xi", "g", "p", "h")), [eqs.guess], ("z0",)),
            "margin": (([z, h], ("z", "h")), [eqs.margin], ("m",)),
-           "chart_point": (([z, gv, h, theta], ("z", "g", "h", "theta")), [cast(gth)],
+           "chart_point": (([z, gv, h, theta], ("z", "g", "h", "theta")), [g_theta],
                            ("g_theta",)),
            "update_p": (step_in, [eqs.p1], ("p1",)),
-           "step_partials": (step_in, [col(e) for e in parts], ("Fs", "Yz", "Ys"))}
+           "step_partials": (step_in, partials, ("Fs", "Yz", "Ys"))}
     return {name: (ca.Function(name, list(ins), outs, list(nin), list(nout)), nin, nout)
             for name, ((ins, nin), outs, nout) in out.items()}
