@@ -2,6 +2,8 @@
 from __future__ import annotations
 
 import hashlib
+import subprocess
+from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
@@ -68,3 +70,17 @@ def model_error(text, filename="m.yaml") -> str:
     msg = str(e.value)
     assert "\n" not in msg
     return msg
+
+
+@contextmanager
+def child_process(argv, **kwargs):
+    """A child process with text pipes for stdout and stderr, killed and reaped on the way out
+    if it is still running (a failed assertion while waiting for it leaves no orphan)."""
+    proc = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            **kwargs)
+    try:
+        yield proc
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate()

@@ -11,7 +11,7 @@ import time
 
 import numpy as np
 
-from conftest import EXAMPLES
+from conftest import EXAMPLES, child_process
 from hpgen.runtime.chunked_output import partial_dir
 
 STEPS, CHUNK = 300_000, 2000
@@ -29,9 +29,7 @@ def test_sigterm_on_a_work_run_offers_a_resume_that_gives_the_uninterrupted_file
                          timeout=600)
     assert ref.returncode == 0, ref.stderr[-3000:]
     out = tmp_path / "run.npz"
-    proc = subprocess.Popen(_argv(out, cache), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            text=True)
-    try:
+    with child_process(_argv(out, cache)) as proc:
         parts, t0 = partial_dir(out), time.monotonic()
         while len(list(parts.glob("chunk_*.npz"))) < 3:
             assert proc.poll() is None, f"the run ended before 3 chunks: {proc.communicate()}"
@@ -39,10 +37,6 @@ def test_sigterm_on_a_work_run_offers_a_resume_that_gives_the_uninterrupted_file
             time.sleep(0.005)
         proc.send_signal(signal.SIGTERM)
         _, err = proc.communicate(timeout=120)
-    finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.communicate()
     assert proc.returncode == 143, err[-3000:]
     line, = err.strip().splitlines()
     assert "for --resume: " in line, line

@@ -7,7 +7,6 @@ from __future__ import annotations
 import json
 import os
 import signal
-import subprocess
 import sys
 import textwrap
 import time
@@ -16,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from conftest import EXAMPLES
+from conftest import EXAMPLES, child_process
 ROOT = Path(__file__).resolve().parents[2]
 
 SCRIPT = textwrap.dedent("""
@@ -51,20 +50,13 @@ def test_sigint_stops_a_long_run_promptly_with_the_partial_result(compile_model,
                                                                   method):
     compile_model(EXAMPLES / "free_rigid_body.yaml")          # compiled: the child loads it
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
-    child = subprocess.Popen([sys.executable, "-c", SCRIPT,
-                              str(EXAMPLES / "free_rigid_body.yaml"), str(cache_dir), method],
-                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                             env=env, cwd=ROOT)
-    try:
+    with child_process([sys.executable, "-c", SCRIPT, str(EXAMPLES / "free_rigid_body.yaml"),
+                        str(cache_dir), method], env=env, cwd=ROOT) as child:
         assert child.stdout.readline().strip() == "ready"
         time.sleep(1.0)
         assert child.poll() is None              # still running the long run
         child.send_signal(signal.SIGINT)
         out, err = child.communicate(timeout=60)
-    finally:
-        if child.poll() is None:
-            child.kill()
-            child.communicate()
     assert child.returncode == 0, err
     res = json.loads(out.strip().splitlines()[-1])
     assert res["interrupted"] and res["partial"]
