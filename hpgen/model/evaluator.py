@@ -13,7 +13,6 @@ double range (exact rationals within MAX_EXACT_BITS bits).
 from __future__ import annotations
 
 import ast
-import functools
 import math
 import re
 
@@ -25,6 +24,7 @@ from . import bodies
 from .bodies import BodyIndexed
 from .families import family_of
 from .syntax import fail
+from .values import _as_sympy, _shape, _shape_text, _symbols, _to_array
 
 MAX_WORK = 50_000
 MAX_EXACT_BITS = 4096
@@ -36,48 +36,6 @@ MAX_SUM_TERMS = 10_000
 MAX_INDEX = 10**9
 _FACTOR_ALIAS = re.compile(r"(R|x)_([0-9]+)")
 _NONFINITE = (sp.S.NaN, sp.S.ComplexInfinity, sp.S.Infinity, sp.S.NegativeInfinity)
-
-
-def _shape(v):
-    return v.shape if isinstance(v, np.ndarray) else ()
-
-
-def _shape_text(shape) -> str:
-    return {0: "scalar", 1: "vector of length {}", 2: "{} x {} matrix"}[len(shape)].format(*shape)
-
-
-def _to_array(values: list, shape) -> np.ndarray:
-    out = np.empty(len(values), dtype=object)
-    out[:] = values
-    return out.reshape(shape)
-
-
-def _as_sympy(v):
-    """A parameter value (int, float, list, list of lists) as a sympy scalar / object array;
-    a runtime parameter's symbol (sympy scalar or object array of them) is returned as is."""
-    if isinstance(v, (np.ndarray, sp.Basic)):
-        return v
-    if isinstance(v, list):
-        items = [_as_sympy(x) for x in v]
-        if items and isinstance(items[0], np.ndarray):
-            return _to_array([e for row in items for e in row], (len(items), len(items[0])))
-        return _to_array(items, (len(items),))
-    return sp.Integer(v) if type(v) is int else sp.Float(v)
-
-
-@functools.lru_cache(maxsize=16)
-def _symbol_list(prefix: str, rows: int, cols: int | None) -> tuple:
-    if cols is None:
-        return tuple(sp.Symbol(f"{prefix}_{k}", real=True) for k in range(rows))
-    return tuple(sp.Symbol(f"{prefix}_{i}_{j}", real=True) for i in range(rows)
-                 for j in range(cols))
-
-
-def _symbols(prefix: str, rows: int, cols: int | None = None) -> np.ndarray:
-    """A fresh object array of the real symbols ``<prefix>_k`` (rows,) or ``<prefix>_i_j``
-    (rows x cols); the symbols are created once per size (a family's g has n*n of them)."""
-    return _to_array(list(_symbol_list(prefix, rows, cols)),
-                     (rows,) if cols is None else (rows, cols))
 
 
 class _Evaluator:

@@ -1,0 +1,51 @@
+"""Values of the whitelist evaluator (hpgen.model.evaluator): sympy scalars, or numpy object
+arrays of sympy scalars (1-D vectors, 2-D matrices); shapes, their wording in messages, and
+fresh arrays of real symbols."""
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+import sympy as sp
+
+
+def _shape(v):
+    return v.shape if isinstance(v, np.ndarray) else ()
+
+
+def _shape_text(shape) -> str:
+    return {0: "scalar", 1: "vector of length {}", 2: "{} x {} matrix"}[len(shape)].format(*shape)
+
+
+def _to_array(values: list, shape) -> np.ndarray:
+    out = np.empty(len(values), dtype=object)
+    out[:] = values
+    return out.reshape(shape)
+
+
+def _as_sympy(v):
+    """A parameter value (int, float, list, list of lists) as a sympy scalar / object array;
+    a runtime parameter's symbol (sympy scalar or object array of them) is returned as is."""
+    if isinstance(v, (np.ndarray, sp.Basic)):
+        return v
+    if isinstance(v, list):
+        items = [_as_sympy(x) for x in v]
+        if items and isinstance(items[0], np.ndarray):
+            return _to_array([e for row in items for e in row], (len(items), len(items[0])))
+        return _to_array(items, (len(items),))
+    return sp.Integer(v) if type(v) is int else sp.Float(v)
+
+
+@functools.lru_cache(maxsize=16)
+def _symbol_list(prefix: str, rows: int, cols: int | None) -> tuple:
+    if cols is None:
+        return tuple(sp.Symbol(f"{prefix}_{k}", real=True) for k in range(rows))
+    return tuple(sp.Symbol(f"{prefix}_{i}_{j}", real=True) for i in range(rows)
+                 for j in range(cols))
+
+
+def _symbols(prefix: str, rows: int, cols: int | None = None) -> np.ndarray:
+    """A fresh object array of the real symbols ``<prefix>_k`` (rows,) or ``<prefix>_i_j``
+    (rows x cols); the symbols are created once per size (a family's g has n*n of them)."""
+    return _to_array(list(_symbol_list(prefix, rows, cols)),
+                     (rows,) if cols is None else (rows, cols))
