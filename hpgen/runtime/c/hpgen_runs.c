@@ -129,6 +129,68 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     return HPGEN_OK;
 }
 
+/* Make run r's steps composed steps of cs substeps with fractions gammas[0..cs-1]
+   (hpgen.tableaus.composition; cs = 0: the plain step). Returns 0, or -1 for cs outside
+   0..HPGEN_CS_MAX. */
+HPGEN_EXPORT int hpgen_run_set_compose(hpgen_run* r, long long cs, const double* gammas) {
+    long long i;
+    if (cs < 0 || cs > HPGEN_CS_MAX) return -1;
+    r->cs = cs;
+    r->c_have = 0;
+    for (i = 0; i < cs; ++i) r->cg[i] = gammas[i];
+    return 0;
+}
+
+/* One step of run r: hpgen_run_step, or for a composed run (r->cs > 0) the composed step
+   S(cg[cs-1] h) o ... o S(cg[0] h), substep i being hpgen_run_step with hv[0] = cg[i] h at
+   the same k. Substep i's Newton starts from the predictor G + cdz[i] (its offset z - G at
+   the previous step; G itself at the first step); J^{-1} is kept only from a substep of the
+   same fraction (the last substep for the first). An open model's substep i has time
+   t0 + (k + cg[0] + ... + cg[i-1]) h and input row k. st->iterations: summed over the
+   substeps. On failure the run is back at its state before the step. */
+static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* o,
+                           const hpgen_options* full, hpgen_status* st, int with_g) {
+    double hs[1], g0[HPGEN_NN], p0[HPGEN_D], z0[HPGEN_NZ], c = 0.0;
+    const long long k = r->k;
+    long long it = 0, i;
+    int code;
+#if HPGEN_OPEN
+    const double t0 = r->t0;
+#endif
+    if (r->cs == 0) return hpgen_run_step(r, hv, o, full, st, with_g);
+    memcpy(g0, r->g, sizeof g0);
+    memcpy(p0, r->p, sizeof p0);
+    memcpy(z0, r->z, sizeof z0);
+    for (i = 0; i < r->cs; ++i) {
+        hs[0] = r->cg[i] * hv[0];
+        r->k = k;
+        r->have_prev = 1;
+        if (i < r->c_have) memcpy(r->dz[0], r->cdz[i], sizeof r->dz[0]);
+        else memset(r->dz[0], 0, sizeof r->dz[0]);
+        if (r->cg[i] != r->cg[i == 0 ? r->cs - 1 : i - 1]) r->lu_valid = 0;
+#if HPGEN_OPEN
+        r->t0 = t0 + ((double)k + c) * hv[0] - (double)k * hs[0];
+#endif
+        code = hpgen_run_step(r, hs, o, full, st, with_g);
+#if HPGEN_OPEN
+        r->t0 = t0;
+#endif
+        it += st->iterations;
+        if (code != HPGEN_OK) {
+            memcpy(r->g, g0, sizeof g0);
+            memcpy(r->p, p0, sizeof p0);
+            memcpy(r->z, z0, sizeof z0);
+            r->k = k;
+            return code;
+        }
+        memcpy(r->cdz[i], r->dz[0], sizeof r->dz[0]);
+        c += r->cg[i];
+    }
+    r->c_have = r->cs;
+    st->iterations = it;
+    return HPGEN_OK;
+}
+
 /* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
    solution, or from the predictor of hpgen_run_step). The state after global step k is
    recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
@@ -148,7 +210,7 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
     full = *o;
     full.simplified = 0;
     for (n = 0; n < steps; ++n) {
-        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
+        if (hpgen_run_cstep(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
         if (r->k % every == 0) {
             memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof r->g);
             memcpy(p_rec + rec * HPGEN_D, r->p, sizeof r->p);
@@ -195,7 +257,7 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
         const long long k = r->k;
         memcpy(g0, r->g, sizeof g0);
         memcpy(p0, r->p, sizeof p0);
-        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
+        if (hpgen_run_cstep(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
         if (hpgen_k_section(r->g, r->p, s1) || !isfinite(s1[0])) {
             st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
         }
@@ -293,7 +355,7 @@ HPGEN_EXPORT long long hpgen_advance_record(hpgen_run* r, double h, long long st
     full.simplified = 0;
     if (HPGEN_SKIP_G) r->g_stale = 1;
     for (n = 0; n < steps; ++n) {
-        if (hpgen_run_step(r, hv, o, &full, st, !HPGEN_SKIP_G) != HPGEN_OK) return n;
+        if (hpgen_run_cstep(r, hv, o, &full, st, !HPGEN_SKIP_G) != HPGEN_OK) return n;
         if (r->k % every == 0) {
             double* row = rows + *n_rec * HPGEN_W;
             *n_rec += 1;
