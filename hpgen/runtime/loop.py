@@ -328,7 +328,15 @@ def advance_sections(kern: Kernels, section, chart_point, run: Run, h, steps, ca
             theta = s0 / (s0 - s1)
             p_c = [(1.0 - theta) * a + theta * b for a, b in zip(p0, run.p)]
             hv_k = hv if run.inputs is None else run.inputs.hv(hv[0], k)   # step k's
-            g_c = chart_point(run.z, g0, hv_k, [theta])[0]
+            if run.compose:     # hpgen_composed_section_point: one plain step S(theta h)
+                hv_t = [theta * hv[0]] + hv_k[1:]
+                G = predictor_base(kern, g0, p0, hv_t, run.inputs is not None)
+                code, g_c, *_ = step_lists(kern, g0, p0, hv_t, G, full, NewtonMemory())
+                if code != OK:
+                    st.update(code=code, step=run.k)
+                    return n, recs, st
+            else:
+                g_c = chart_point(run.z, g0, hv_k, [theta])[0]
             recs.append((k, (float(k) + theta) * float(h), g_c, p_c))
     st["step"] = run.k
     return n, recs, st

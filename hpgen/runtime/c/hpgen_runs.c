@@ -221,12 +221,37 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
     return steps;
 }
 
+/* A composed run's group element at a section crossing theta h into step k from
+   (g0, p0): one plain step S(theta h) (full Newton from the predictor base G), whose g
+   carries the same O(h^2) accuracy as the crossing's linear p; the run is untouched.
+   Returns the status code. */
+static int hpgen_composed_section_point(const hpgen_run* r, const double* g0, const double* p0,
+                                        double th, long long k, double h,
+                                        const hpgen_options* full, double* g_out) {
+    double z[HPGEN_NZ], p1[HPGEN_D], lu[1], res;
+    long long it, jacs = 0, valid = 0;
+    int piv[1];
+#if HPGEN_OPEN
+    double hv[HPGEN_H];
+    memcpy(hv, r->hv, sizeof hv);
+    hv[1] = r->t0 + (double)k * h;
+#else
+    double hv[1];
+    (void)r; (void)k; (void)h;
+#endif
+    hv[0] = th;
+    hpgen_predictor_base(g0, p0, hv, z);
+    return hpgen_step_core(g0, p0, hv, z, full, lu, piv, &valid, g_out, p1, &it, &jacs, &res,
+                           1, 1);
+}
+
 /* Advance a run by up to `steps` steps of size h, recording the upward crossings of the
    scene's Poincare section s(g, p) = 0 (kernel section): when s_k < 0 <= s_{k+1}, with
    theta = s_k / (s_k - s_{k+1}) in (0, 1], record j holds
      k_rec[j] = k,  t_rec[j] = (k + theta) h,
      p_rec[j * D] = (1 - theta) p_k + theta p_{k+1}      (linear in the step: O(h^2)),
-     g_rec[j * NN] = g_k tau(theta h xi_{k+1})            (kernel chart_point: on the group).
+     g_rec[j * NN] = g_k tau(theta h xi_{k+1})            (kernel chart_point: on the group;
+                                                           a composed run: S(theta h) of g_k).
    s of the run's current state is kept in the run, so calls chain (a crossing between two
    calls is found). Stops after `cap` records (the crossing step included), at a failed step,
    or after `steps` steps; *n_rec: the records written. Returns the steps done in this call. */
@@ -237,7 +262,7 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
                                               hpgen_status* st) {
     double hv[1], g0[HPGEN_NN], p0[HPGEN_D], s1[1], th[1];
     long long n;
-    int i;
+    int i, code;
     hpgen_options full;
     hpgen_status_init(st);
     *n_rec = 0;
@@ -270,7 +295,12 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
             t_rec[j] = ((double)k + theta) * h;
             for (i = 0; i < HPGEN_D; ++i)
                 p_rec[j * HPGEN_D + i] = (1.0 - theta) * p0[i] + theta * r->p[i];
-            if (hpgen_k_chart_point(r->z, g0, HPGEN_RUN_HV(r, hv), th, g_rec + j * HPGEN_NN)) {
+            if (r->cs > 0) {
+                code = hpgen_composed_section_point(r, g0, p0, theta * h, k, h, &full,
+                                                    g_rec + j * HPGEN_NN);
+                if (code != HPGEN_OK) { st->code = code; st->step = r->k; return n + 1; }
+            } else if (hpgen_k_chart_point(r->z, g0, HPGEN_RUN_HV(r, hv), th,
+                                           g_rec + j * HPGEN_NN)) {
                 st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
             }
             *n_rec = j + 1;
