@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import ArgumentError
 from . import linearize as _linearize, records, sections, states
 from .engine import Engine, RunArgs
 from .initial import GroupElements
@@ -166,11 +165,8 @@ class Integrator:
         and t0 (default: the trajectory's first time) and returns (A, B), B (K, 2d, m) =
         d(eta_{k+1}, dp_{k+1}) / d u_k, or with wrt="params" P (K, 2d, n_runtime_params).
         A closed module takes none of u, params, t0, wrt."""
-        if self.composition is not None:
-            raise ArgumentError(f"linearize of a composed step ({self.composition.name}) is "
-                                "not available: load the module without compose",
-                                field="compose")
-        return _linearize.along(self.engine, traj, newton, u, params, t0, wrt)
+        return _linearize.along(self.engine, traj, newton, u, params, t0, wrt,
+                                () if self.composition is None else self.composition.gammas)
 
     def casadi_step(self):
         """casadi.Function step(g, p, h, z) -> (F, g1, p1) (an open module's:
