@@ -15,6 +15,11 @@ from .newton import (_INF, _NAN, Kernels, NewtonMemory, NewtonOptions, _floats, 
                      all_finite, norm_inf, step_lists)
 
 
+#: the offsets z - G each substep of a composed step keeps for its predictor (HPGEN_CH in
+#: hpgen_runtime.h)
+COMPOSE_HISTORY = 3
+
+
 class Run:
     """A run in progress (the C backend's ``hpgen_run``): state (g_k, p_k) flat, the last
     solution z, the predictor's offsets dz = [dz_{k-1}, dz_{k-2}, ...] (newest first,
@@ -32,7 +37,8 @@ class Run:
         self.s = None            # section(g_k, p_k) once evaluated (advance_sections)
         self.g_stale = False     # g is g_0, not g_k (advance_record without g)
         # a composed step (_composed_step): the substep fractions (() for the plain step),
-        # substep i's offset z - G at the previous step cdz[i], valid once c_have = s
+        # substep i's offsets z - G at the previous steps cdz[i] (newest first; the first
+        # c_have <= COMPOSE_HISTORY valid)
         self.compose: tuple = ()
         self.cdz: list = []
         self.c_have = 0
@@ -44,9 +50,12 @@ class Run:
         lu = self.memory.lu
         flags = [self.k, self.have_prev, int(self.g_stale), -1 if lu is None else np.ndim(lu),
                  int(self.s is not None)]
+        nz, ch = len(self.z), COMPOSE_HISTORY
+        cdz = np.zeros((len(self.cdz), ch, nz))
+        for i, rows in enumerate(self.cdz):
+            cdz[i, :len(rows[:ch])] = rows[:ch]
         comp = {"compose": np.array(self.compose, dtype=np.float64),
-                "c_have": np.array([self.c_have], dtype=np.int64),
-                "cdz": np.array(self.cdz, dtype=np.float64).reshape(len(self.cdz), len(self.z))
+                "c_have": np.array([self.c_have], dtype=np.int64), "cdz": cdz
                 } if self.compose else {}
         return {**comp,
                 "g": np.array(self.g, dtype=np.float64), "p": np.array(self.p, dtype=np.float64),
@@ -174,13 +183,16 @@ def _composed_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: Newto
                    with_g=True):
     """One step of ``run`` like ``hpgen_run_cstep`` in C: _run_step, or for a composed run
     (run.compose = (gamma_1, .., gamma_s)) the substeps _run_step with h_i = gamma_i h at the
-    same k, each started from G + cdz[i] (G at the first step), J^{-1} kept only from a
+    same k, each started from its own predictor (G at the first step), J^{-1} kept only from a
     substep of the same fraction, an open model's substep at time t0 + (k + gamma_1 + ... +
     gamma_{i-1}) h; st["iterations"] summed over the substeps; on failure the run is back
-    at its state before the step. Returns the status code."""
+    at its state before the step. Substep i's predictor extrapolates its own offsets at the
+    last c_have steps. Returns the status code."""
     gam = run.compose
     if not gam:
         return _run_step(kern, run, hv, opts, full, st, with_g)
+    if not run.cdz:
+        run.cdz = [[] for _ in gam]
     h, k, s = hv[0], run.k, len(gam)
     g0, p0, z0 = run.g, run.p, run.z
     inputs = run.inputs
@@ -189,8 +201,8 @@ def _composed_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: Newto
     for i, gi in enumerate(gam):
         hs = gi * h
         run.k = k
-        run.dz = [run.cdz[i] if i < run.c_have else zero]
-        run.have_prev = 1
+        run.dz = run.cdz[i][:run.c_have] if run.c_have else [zero]
+        run.have_prev = len(run.dz)
         if gi != gam[i - 1 if i else s - 1]:
             run.memory.lu = None
         if inputs is not None:
@@ -204,12 +216,9 @@ def _composed_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: Newto
         if code != OK:
             run.g, run.p, run.z, run.k = g0, p0, z0, k
             return code
-        if i < len(run.cdz):
-            run.cdz[i] = run.dz[0]
-        else:
-            run.cdz.append(run.dz[0])
+        run.cdz[i] = run.dz[:COMPOSE_HISTORY]
         c += gi
-    run.c_have = s
+    run.c_have = min(run.c_have + 1, COMPOSE_HISTORY)
     st["iterations"] = it
     return OK
 

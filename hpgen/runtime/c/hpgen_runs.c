@@ -143,9 +143,9 @@ HPGEN_EXPORT int hpgen_run_set_compose(hpgen_run* r, long long cs, const double*
 
 /* One step of run r: hpgen_run_step, or for a composed run (r->cs > 0) the composed step
    S(cg[cs-1] h) o ... o S(cg[0] h), substep i being hpgen_run_step with hv[0] = cg[i] h at
-   the same k. Substep i's Newton starts from the predictor G + cdz[i] (its offset z - G at
-   the previous step; G itself at the first step); J^{-1} is kept only from a substep of the
-   same fraction (the last substep for the first). An open model's substep i has time
+   the same k. Substep i's Newton starts from hpgen_run_step's predictor through substep i's
+   own offsets z - G at the last min(k, HPGEN_CH) steps (G itself at the first step); J^{-1}
+   is kept only from a substep of the same fraction (the last substep for the first). An open model's substep i has time
    t0 + (k + cg[0] + ... + cg[i-1]) h and input row k. st->iterations: summed over the
    substeps. On failure the run is back at its state before the step. */
 static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* o,
@@ -164,9 +164,13 @@ static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* 
     for (i = 0; i < r->cs; ++i) {
         hs[0] = r->cg[i] * hv[0];
         r->k = k;
-        r->have_prev = 1;
-        if (i < r->c_have) memcpy(r->dz[0], r->cdz[i], sizeof r->dz[0]);
-        else memset(r->dz[0], 0, sizeof r->dz[0]);
+        if (r->c_have > 0) {
+            r->have_prev = r->c_have;
+            memcpy(r->dz[0], r->cdz[i][0], r->c_have * sizeof r->dz[0]);
+        } else {
+            r->have_prev = 1;
+            memset(r->dz[0], 0, sizeof r->dz[0]);
+        }
         if (r->cg[i] != r->cg[i == 0 ? r->cs - 1 : i - 1]) r->lu_valid = 0;
 #if HPGEN_OPEN
         r->t0 = t0 + ((double)k + c) * hv[0] - (double)k * hs[0];
@@ -183,10 +187,10 @@ static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* 
             r->k = k;
             return code;
         }
-        memcpy(r->cdz[i], r->dz[0], sizeof r->dz[0]);
+        memcpy(r->cdz[i][0], r->dz[0], HPGEN_CH * sizeof r->dz[0]);
         c += r->cg[i];
     }
-    r->c_have = r->cs;
+    if (r->c_have < HPGEN_CH) r->c_have += 1;
     st->iterations = it;
     return HPGEN_OK;
 }
