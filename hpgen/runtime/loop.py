@@ -17,7 +17,7 @@ from .newton import (_INF, _NAN, Kernels, NewtonMemory, NewtonOptions, _floats, 
 
 #: the offsets z - G each substep of a composed step keeps for its predictor (HPGEN_CH in
 #: hpgen_runtime.h)
-COMPOSE_HISTORY = 3
+COMPOSE_HISTORY = 6
 
 
 class Run:
@@ -39,8 +39,8 @@ class Run:
         # a composed step (_composed_step): the substep fractions (() for the plain step),
         # substep i's offsets z - G at the previous steps cdz[i] (newest first; the first
         # c_have <= COMPOSE_HISTORY valid)
-        self.compose: tuple = ()
-        self.cdz: list = []
+        self.compose = ()
+        self.cdz = []
         self.c_have = 0
 
     def to_arrays(self) -> dict:
@@ -183,8 +183,8 @@ def _composed_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: Newto
                    with_g=True):
     """One step of ``run`` like ``hpgen_run_cstep`` in C: _run_step, or for a composed run
     (run.compose = (gamma_1, .., gamma_s)) the substeps _run_step with h_i = gamma_i h at the
-    same k, each started from its own predictor (G at the first step), J^{-1} kept only from a
-    substep of the same fraction, an open model's substep at time t0 + (k + gamma_1 + ... +
+    same k, each started from its own predictor (G at the first step), J^{-1} kept across
+    substeps as across steps, an open model's substep at time t0 + (k + gamma_1 + ... +
     gamma_{i-1}) h; st["iterations"] summed over the substeps; on failure the run is back
     at its state before the step. Substep i's predictor extrapolates its own offsets at the
     last c_have steps. Returns the status code."""
@@ -193,7 +193,7 @@ def _composed_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: Newto
         return _run_step(kern, run, hv, opts, full, st, with_g)
     if not run.cdz:
         run.cdz = [[] for _ in gam]
-    h, k, s = hv[0], run.k, len(gam)
+    h, k = hv[0], run.k
     g0, p0, z0 = run.g, run.p, run.z
     inputs = run.inputs
     t0 = inputs.t0 if inputs is not None else 0.0
@@ -203,8 +203,6 @@ def _composed_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: Newto
         run.k = k
         run.dz = run.cdz[i][:run.c_have] if run.c_have else [zero]
         run.have_prev = len(run.dz)
-        if gi != gam[i - 1 if i else s - 1]:
-            run.memory.lu = None
         if inputs is not None:
             inputs.t0 = t0 + (k + c) * h - k * hs
         try:

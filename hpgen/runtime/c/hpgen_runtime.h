@@ -120,7 +120,7 @@
 /* the most substeps of a composed step (hpgen.tableaus.composition.MAX_STAGES), and the
    offsets each substep's predictor keeps (hpgen.runtime.loop.COMPOSE_HISTORY) */
 #define HPGEN_CS_MAX 9
-#define HPGEN_CH 3
+#define HPGEN_CH 6
 #define HPGEN_PH 6
 static const double hpgen_pc[HPGEN_PH][HPGEN_PH] = {
     { 1.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
