@@ -144,6 +144,9 @@ class Integrator:
         ------
         ConvergenceError, DomainError
             Newton failed, or the solution left the chart's domain (step 0, t = 0).
+
+        A composed integrator (``composition``) takes its substeps S(gamma_i h) one after the
+        other, each Newton from its own start (``z`` is not used).
         """
         if self.composition is None:
             return self.engine.step(g, p, h, z, newton, u, params, t)
