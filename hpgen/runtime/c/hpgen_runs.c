@@ -146,8 +146,8 @@ HPGEN_EXPORT int hpgen_run_set_compose(hpgen_run* r, long long cs, const double*
    the same k. Substep i's Newton starts from hpgen_run_step's predictor through substep i's
    own offsets z - G at the last min(k, HPGEN_CH) steps (G itself at the first step).
    Simplified Newton keeps J^{-1} across substeps as across steps: its contraction test
-   refreshes it when the fraction changed too much (forcing a fresh J at every change of
-   fraction cost twice the time on the 8-link chain). An open model's substep i has time
+   refreshes it when the fraction changed too much (a fresh J at every change of fraction
+   would cost more J evaluations than the test asks for). An open model's substep i has time
    t0 + (k + cg[0] + ... + cg[i-1]) h and input row k. st->iterations: summed over the
    substeps. On failure the run is back at its state before the step. */
 static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* o,
