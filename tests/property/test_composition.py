@@ -226,3 +226,23 @@ def test_cli_compose_and_list(tmp_path, cache_dir):
     assert main(["run", str(ROOT / "examples" / "heavy_top.yaml"), "--tableau", "euler-forward",
                  "--compose", "yoshida4", "--steps", "4", "--out", str(out),
                  "--cache-dir", str(cache_dir)]) == 2
+
+
+def test_composed_run_snapshot_continues_bitwise(top):
+    """A composed run's checkpoint (the C run's bytes; the Python run's arrays) holds the
+    fractions and every substep's predictor history: restored, it continues bitwise."""
+    from hpgen.runtime.newton import NewtonOptions
+    g0, xi0 = _top_start()
+    for b, integ in top.items():
+        be = integ.engine.backend
+        p0 = np.asarray(integ.legendre(g0, xi0))
+        z0 = integ.kernel("guess", xi0, g0.ravel(order="F"), p0, [0.05])[0]
+        opts = NewtonOptions(simplified=True)
+        gf = g0.ravel(order="F")
+        whole = be.start(gf, p0, z0)
+        _, g_all, p_all, _ = be.advance(whole, 0.05, 60, 5, opts)
+        part = be.start(gf, p0, z0)
+        be.advance(part, 0.05, 25, 5, opts)
+        resumed = be.restore(be.snapshot(part))
+        _, g_end, p_end, _ = be.advance(resumed, 0.05, 35, 5, opts)
+        assert np.array_equal(g_end[-1], g_all[-1]) and np.array_equal(p_end[-1], p_all[-1]), b
