@@ -246,3 +246,26 @@ def test_composed_run_snapshot_continues_bitwise(top):
         resumed = be.restore(be.snapshot(part))
         _, g_end, p_end, _ = be.advance(resumed, 0.05, 35, 5, opts)
         assert np.array_equal(g_end[-1], g_all[-1]) and np.array_equal(p_end[-1], p_all[-1]), b
+
+
+@pytest.mark.parametrize("name, order", [("suzuki4", 4), ("kahan-li6", 6)])
+def test_composed_pendulum_chain_order(compile_model, name, order):
+    """examples/pendulum_chain.yaml at N = 3 (the family model, the benchmark's start:
+    hanging down, random joint rates) against the reference at T = 1, h = 0.01, 0.005,
+    0.0025; the joints' position and velocity gaps at round-off at every node."""
+    from hpgen.bench.multibody import hpgen_chain
+    spec = chain.ChainSpec(3)
+    qpos, qvel = chain.initial_joint_state(spec)
+    g0, xi0 = hpgen_chain.to_hpgen(spec, chain.from_joint(spec, qpos, qvel))
+    ref = reference.solve(spec, qpos, qvel, [1.0]).final
+    integ = compile_model(hpgen_chain.MODEL, parameters={"N": 3}, compose=name)
+    errs = []
+    for h in (0.01, 0.005, 0.0025):
+        tr = integ.simulate(g0, h, int(round(1 / h)), xi0=xi0, every=1)
+        states = hpgen_chain.from_hpgen(spec, tr.g, tr.xi())
+        errs.append(chain.trajectory_error(states[-1], ref))
+        gaps = np.max([chain.constraint_residual(spec, s) for s in states], axis=0)
+        assert gaps[0] < 1e-13 and gaps[1] < 1e-12, gaps
+    rates = np.log2(np.array(errs[:-1]) / np.array(errs[1:]))
+    print(name, "pendulum_chain N = 3 errors", errs, "rates", rates)
+    assert abs(rates[-1] - order) < 0.2 and rates[0] > order - 0.5
