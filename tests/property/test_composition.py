@@ -248,6 +248,7 @@ def test_composed_run_snapshot_continues_bitwise(top):
         assert np.array_equal(g_end[-1], g_all[-1]) and np.array_equal(p_end[-1], p_all[-1]), b
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name, order", [("suzuki4", 4), ("kahan-li6", 6)])
 def test_composed_pendulum_chain_order(compile_model, name, order):
     """examples/pendulum_chain.yaml at N = 3 (the family model, the benchmark's start:
