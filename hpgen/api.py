@@ -60,11 +60,21 @@ class CompileOptions:
     parameters: tuple | None = None
     #: the Newton matrix's storage: None (hpgen.derive.sparse_jacobian's rule), "sparse", "dense"
     jacobian: str | None = None
+    #: a composition of the step (hpgen.tableaus.composition; None: the model's
+    #: integrator.compose, else the plain step). Not in the cache key: the kernels are the
+    #: plain step's; the loaded runtime composes them.
+    compose: str | None = None
 
     def validate(self):
         for option, value in ((TAU, self.tau), (RKMK, self.rkmk), (BACKEND, self.backend)):
             if value is not None:
                 option.check(value, field=f"option {option.name}")
+        if self.compose is not None:
+            from .tableaus.composition import get_composition
+            try:
+                get_composition(self.compose)
+            except ModelError as e:
+                raise ModelError(e.message, field="option compose") from None
         if self.jacobian not in (None, "sparse", "dense"):
             raise ModelError(f"expected sparse or dense, got {self.jacobian!r}",
                              field="option jacobian")
@@ -137,6 +147,8 @@ class CompiledModule:
     cached: bool
     built: bool = False
     derived: Derivation | None = None
+    #: the composition the module is loaded with (the option's, else the model file's)
+    compose: str | None = None
 
     @cached_property
     def derivation(self) -> Derivation:
@@ -148,11 +160,12 @@ class CompiledModule:
         from .runtime import load
         o = self.options
         return load(self.module_dir, backend=o.backend if backend is None else backend,
-                    cc=o.cc, cflags=o.cflags)
+                    cc=o.cc, cflags=o.cflags, compose=self.compose)
 
 
 def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
-            cache_dir=None, cc=None, cflags=None, parameters=None, jacobian=None):
+            cache_dir=None, cc=None, cflags=None, parameters=None, jacobian=None,
+            compose=None):
     """Compile a model (a model file, or one declared in Python) into an integrator and load it.
 
     The module is generated (or taken from the build cache), built (C backend) and loaded.
@@ -194,6 +207,11 @@ def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
         How Newton stores and factors the step's Jacobian: dense LU, or a sparse QR on its
         structural nonzeros. None (default): sparse for large, sparse systems
         (hpgen.derive.sparse_jacobian).
+    compose : str or None, optional
+        A composition of the module's symmetric step (``yoshida4``, ``suzuki4``,
+        ``yoshida6``, ``kahan-li6``; ``hpgen list``): every step is S(gamma_s h) o ... o
+        S(gamma_1 h) of the same compiled kernels (docs/numerics.md). None: the model's
+        ``integrator.compose``, else the plain step. Refused for a non-symmetric scheme.
 
     Returns
     -------
@@ -210,17 +228,17 @@ def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
     """
     return build(model, tableau=tableau, tau=tau, rkmk=rkmk, backend=backend, out=out,
                  cache_dir=cache_dir, cc=cc, cflags=cflags, parameters=parameters,
-                 jacobian=jacobian).load()
+                 jacobian=jacobian, compose=compose).load()
 
 
 def build(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
           cache_dir=None, cc=None, cflags=None, parameters=None,
-          jacobian=None) -> CompiledModule:
+          jacobian=None, compose=None) -> CompiledModule:
     """Compile ``model`` like ``compile`` and return the CompiledModule (not loaded)."""
     return build_compiled(model, CompileOptions(tableau, tau, rkmk, backend, out, cache_dir,
                                                 cc, tuple(cflags) if cflags else None,
                                                 tuple(dict(parameters).items())
-                                                if parameters else None, jacobian))
+                                                if parameters else None, jacobian, compose))
 
 
 #: what produces the generated code, besides the model and options (hashed into the key)
@@ -250,6 +268,8 @@ def content_hash(text: str, opts: CompileOptions) -> str:
     from .model.fingerprint import normalized_model
     from .model.types import IntegratorChoice
     norm, written = normalized_model(text)
+    if isinstance(written, dict) and "compose" in written:   # runtime only: not in the key
+        written = {k: v for k, v in written.items() if k != "compose"} or None
     written_opts = written if isinstance(written, dict) else {}
     effective = {k: next((v for v in (getattr(opts, k), written_opts.get(k),
                                       getattr(IntegratorChoice(), k)) if v is not None))
@@ -297,6 +317,7 @@ def build_compiled(model, opts: CompileOptions) -> CompiledModule:
         print(f"hpgen: warning: the cache directory {cache_dir} cannot be written "
               f"({exc.reason}); building in {tmp}", file=sys.stderr)
         result, library = _cached_module(source, text, opts, tmp)
+    result = dataclasses.replace(result, compose=_compose_of(text, opts))
     if opts.out is None:
         return result
     entry = result.module_dir
@@ -314,6 +335,16 @@ def build_compiled(model, opts: CompileOptions) -> CompiledModule:
             raise ModelError(f"cannot write the module to {dest} ({exc.strerror or exc})",
                              field="option out") from None
     return dataclasses.replace(result, module_dir=dest)
+
+
+def _compose_of(text: str, opts: CompileOptions) -> str | None:
+    """The composition in effect: the option's, else the model file's integrator.compose
+    (checked by the model loader when the module was derived)."""
+    if opts.compose is not None:
+        return opts.compose
+    from .model.fingerprint import normalized_model
+    written = normalized_model(text)[1]
+    return written.get("compose") if isinstance(written, dict) else None
 
 
 def _cached_module(path: str, text: str, opts: CompileOptions, cache_dir: Path):

@@ -32,6 +32,13 @@ def _add_options(p):
                    "else ~/.cache/hpgen)")
 
 
+def _add_compose(p):
+    from .tableaus.composition import COMPOSITION_NAMES
+    p.add_argument("--compose", choices=COMPOSITION_NAMES,
+                   help="compose the symmetric step into a higher-order step (see `hpgen "
+                   "list`; the same compiled kernels); default: the model's")
+
+
 def _add_u_options(p):
     """--u and --u-interpolation: the control inputs of a model with ``inputs:``, given on
     the command line (they replace the scene's u; hpgen.model.controls)."""
@@ -55,11 +62,13 @@ def _parser():
     sub = ap.add_subparsers(dest="command", required=True)
     c = sub.add_parser("compile", help="generate (and build) the integrator module of a model")
     _add_options(c)
+    _add_compose(c)
     _add_set(c)
     c.add_argument("-o", "--out", help="directory receiving <module>/ (default: none, the "
                    "module stays in the build cache, whose path is printed)")
     r = sub.add_parser("run", help="simulate the model's scene, save its records (.npz)")
     _add_options(r)
+    _add_compose(r)
     _add_set(r)
     r.add_argument("--out", help="output .npz file (default <model name>.npz)")
     r.add_argument("--h", type=float, help="override scene.h")
@@ -109,7 +118,7 @@ def _options(args, out=None):
     from .api import CompileOptions
     return CompileOptions(tableau=args.tableau, tau=args.tau, rkmk=args.rkmk,
                           backend=args.backend, out=out, cache_dir=args.cache_dir,
-                          parameters=_overrides(args))
+                          parameters=_overrides(args), compose=getattr(args, "compose", None))
 
 
 def _overrides(args):
@@ -157,6 +166,13 @@ def _scheme_line(module_dir, args) -> str:
     from .schemes import is_splitting
     if is_splitting(o["tableau"]):     # an explicit composition: no chart map, no RKMK
         return f"scheme: splitting {o['tableau']} (explicit; tau and rkmk unused)"
+    compose = getattr(args, "compose", None) or section.get("compose")
+    if compose is not None:
+        from .tableaus.composition import check_base, get_composition
+        c = get_composition(compose)
+        check_base(o["tableau"])
+        src.append(f"composed {c.name}: {c.stages} substeps, order {c.order}"
+                   f"{' (--compose)' if getattr(args, 'compose', None) else ' (the model)'}")
     return (f"scheme: tableau {o['tableau']}, tau {o['tau']}, rkmk {o['rkmk']} "
             f"({'; '.join(src)})")
 
@@ -176,7 +192,13 @@ def cmd_run(args) -> int:
     controls = controls_for(model, args.u, args.u_interpolation, args.model)
     u = None if controls is None else controls.rows(h, steps)
     module_dir = build_module(args.model, _options(args))
-    integ = load(module_dir, backend=args.backend)
+    try:
+        integ = load(module_dir, backend=args.backend,
+                     compose=args.compose or model.integrator.compose)
+    except ModelError as e:
+        if e.field != "integrator.compose":
+            raise
+        raise ModelError(e.message, file=args.model, field=e.field) from None
     print(_scheme_line(module_dir, args))
     if sc.projection is not None:
         print(f"  {sc.projection.note}")
@@ -386,7 +408,7 @@ def cmd_check(args) -> int:
 def cmd_list(args) -> int:
     """``hpgen list``: the groups and every registered option value (hpgen.schemes)."""
     from .groups import GROUP_NAMES
-    from .schemes import BACKEND, RKMK, TAU, splittings, tableaus
+    from .schemes import BACKEND, RKMK, TAU, compositions, splittings, tableaus
     from .tableaus import tableau_summary
     print("groups: " + ", ".join(GROUP_NAMES) + " and lists of them (direct products)")
     print("tau (chart maps):")
@@ -406,6 +428,10 @@ def cmd_list(args) -> int:
           " SO2, R<n> and products; chosen as the tableau; tau and rkmk unused):")
     for s in splittings():
         print(f"  {s.name:17s} stages {s.stages:2d}  order {s.order}  {s.summary}")
+    print("compositions (integrator.compose / --compose: S(gamma_s h) o ... o S(gamma_1 h) of "
+          "a symmetric tableau's step; the order with an order-2 step):")
+    for c in compositions():
+        print(f"  {c.name:17s} stages {c.stages:2d}  order {c.order}  {c.summary}")
     return 0
 
 

@@ -16,7 +16,10 @@ compile-time stack); the implementations stay with their stage:
   reads that catalog (it imports mpmath, not sympy/casadi/jinja2);
 - a splitting scheme (explicit, for l = 1/2 xi.M xi - V(g); chosen where a tableau is): one
   entry in ``hpgen.splitting.coefficients`` (composition coefficients, order, summary);
-  ``splittings()`` reads that catalog, ``is_splitting(name)`` tells them from tableaus.
+  ``splittings()`` reads that catalog, ``is_splitting(name)`` tells them from tableaus;
+- a composition of a symmetric step (``integrator.compose``): one entry in
+  ``hpgen.tableaus.composition`` (a name of the splitting catalog's coefficients, summary);
+  ``compositions()`` reads that catalog. The runtime composes the compiled step.
 
 Choices are listed in registration order, which is the order of CLI choices and messages.
 """
@@ -150,6 +153,13 @@ def splittings():
     """The catalog splitting schemes (``hpgen.splitting.SplittingScheme``), in catalog order."""
     from .splitting import SPLITTING_NAMES, get_splitting
     return tuple(get_splitting(name) for name in SPLITTING_NAMES)
+
+
+def compositions():
+    """The catalog compositions of a symmetric step (``hpgen.tableaus.composition``), in
+    catalog order."""
+    from .tableaus.composition import COMPOSITION_NAMES, get_composition
+    return tuple(get_composition(name) for name in COMPOSITION_NAMES)
 
 
 def is_splitting(spec) -> bool:

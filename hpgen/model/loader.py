@@ -31,7 +31,7 @@ MAX_FAMILY_MATRIX_SIZE = 1024
 
 TOP_KEYS = ("schema", "name", "group", "parameters", "lagrangian", "integrator", "scene",
             "runtime_parameters", "inputs", "forces", "constraints")
-INTEGRATOR_KEYS = ("tableau", "tau", "rkmk")
+INTEGRATOR_KEYS = ("tableau", "tau", "rkmk", "compose")
 
 _FACTOR_NAME = re.compile(r"(xi|g|R|x)_[0-9]+")
 
@@ -133,6 +133,12 @@ def _integrator(doc: Doc, raw) -> IntegratorChoice:
                 raise doc.error(("integrator", key), e.message) from None
     if raw.get("tableau") is not None:
         kw["tableau"] = _tableau(doc, raw["tableau"])
+    if raw.get("compose") is not None:
+        from ..tableaus.composition import get_composition
+        try:
+            kw["compose"] = get_composition(raw["compose"]).name
+        except ModelError as e:
+            raise doc.error(("integrator", "compose"), e.message) from None
     return IntegratorChoice(**kw)
 
 

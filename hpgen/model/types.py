@@ -19,6 +19,8 @@ class IntegratorChoice:
     tableau: Any = "stormer-verlet"
     tau: str = "cay"
     rkmk: str = "exact"
+    #: a composition of the step (hpgen.tableaus.composition), None: the plain step
+    compose: str | None = None
 
 
 @dataclass(frozen=True)

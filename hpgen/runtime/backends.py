@@ -49,6 +49,9 @@ class _Backend:
         self.skip_g = not (meta["step_uses_g"] or meta["record_uses_g"])
         self._sig = {k: ([s for _, s in v["inputs"]], [s for _, s in v["outputs"]])
                      for k, v in meta["kernels"].items()}
+        #: the substep fractions of a composed step (hpgen.tableaus.composition), () for the
+        #: plain step; every run this backend starts takes them
+        self.compose: tuple = ()
 
     def records_in(self, k0: int, steps: int, every: int) -> int:
         """Number of global steps k in (k0, k0 + steps] with k % every == 0."""
@@ -118,7 +121,9 @@ class PythonBackend(_Backend):
         return code, g1, p1, z, it, r
 
     def start(self, g0, p0, z0, inputs=None):
-        return loop.Run(*self._lists(g0, p0, z0), inputs)
+        run = loop.Run(*self._lists(g0, p0, z0), inputs)
+        run.compose = self.compose
+        return run
 
     def advance(self, run, h, steps, every, opts):
         """(steps done, g_rec (K, nn), p_rec (K, d), status); K records of this call."""

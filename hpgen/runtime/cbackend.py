@@ -67,6 +67,7 @@ class CBackend(_Backend):
                 ("hpgen_advance_record", [P, D, LL, LL, P, P, P, P], LL),
                 ("hpgen_advance_record_batch", [P, LL, D, LL, LL, P, LL, P, P, P], LL),
                 ("hpgen_run_set_inputs", [P, D, P, LL, P], None),
+                ("hpgen_run_set_compose", [P, LL, P], ctypes.c_int),
                 ("hpgen_linearize", [LL, P, P, P, LL, LL, P, P, P, P, P, P] if self.open
                  else [LL, P, P, D, P, P, P, P, P], LL)):
             if (self.open and name in closed_only) or (
@@ -203,6 +204,11 @@ class CBackend(_Backend):
         st = self._staging(_RUN)
         st.ins[0][...], st.ins[1][...], st.ins[2][...] = g0, p0, z0
         self._lib.hpgen_run_init(run, *st.ptrs[:3])
+        if self.compose:
+            gam = np.array(self.compose, dtype=np.float64)
+            if self._lib.hpgen_run_set_compose(run, len(gam), gam.ctypes.data) != 0:
+                raise ValueError(f"a composed step of {len(gam)} substeps: this library "
+                                 "takes at most HPGEN_CS_MAX")
 
     def simulate(self, g0, p0, h, z0, steps, every, opts, inputs=None):
         """_Backend.simulate in one pair of record arrays: step 0 in row 0, hpgen_advance

@@ -74,7 +74,7 @@ def simulate_batch(cb, g0s, p0s, h, z0s, steps, every, opts, threads, inputs=Non
     p_rec[:, 0] = np.asarray(p0s, dtype=np.float64).reshape(B, d)
     sts, o = (_Status * B)(), _Options.of(opts)
 
-    use_lanes = bool(lanes and cb.lanes)
+    use_lanes = bool(lanes and cb.lanes and not cb.compose)   # lanes step the plain scheme
     advance = (cb.lib.hpgen_advance_batch_lanes if use_lanes
                else cb.lib.hpgen_advance_batch)
 

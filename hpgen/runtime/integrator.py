@@ -31,18 +31,23 @@ class Integrator:
     run engine behind every run method, hpgen.runtime.engine: the declared interface of the
     modules built on it), fast_path (simulate's fast path on the C backend, else None)."""
 
-    def __init__(self, meta: dict, backend, module_dir=None):
+    def __init__(self, meta: dict, backend, module_dir=None, composition=None):
         self.meta, self.module_dir = meta, module_dir
+        #: the composition (hpgen.tableaus.composition.Composition) whose composed step every
+        #: run takes (the backend's runs carry its fractions), None for the plain step
+        self.composition = composition
         self.backend = backend.name
         self.n, self.d, self.nz = meta["n"], meta["d"], meta["nz"]
         #: an open module's step vector (meta.json "open"), None when closed
         self.open = meta.get("open")
         self.engine = Engine(backend, meta, owner=self)
         #: simulate's fast path (the C backend; hpgen.runtime.prologue)
-        self.fast_path = Prologue(self.engine) if self.backend == "c" else None
+        self.fast_path = (Prologue(self.engine) if self.backend == "c" and composition is None
+                          else None)
 
     def __repr__(self):
-        return f"<hpgen Integrator {self.meta['module']} backend={self.backend}>"
+        comp = "" if self.composition is None else f" compose={self.composition.name}"
+        return f"<hpgen Integrator {self.meta['module']} backend={self.backend}{comp}>"
 
     @property
     def group(self) -> GroupElements:
@@ -139,8 +144,18 @@ class Integrator:
         ------
         ConvergenceError, DomainError
             Newton failed, or the solution left the chart's domain (step 0, t = 0).
+
+        A composed integrator (``composition``) takes its substeps S(gamma_i h) one after the
+        other, each Newton from its own start (``z`` is not used).
         """
-        return self.engine.step(g, p, h, z, newton, u, params, t)
+        if self.composition is None:
+            return self.engine.step(g, p, h, z, newton, u, params, t)
+        # the composed step: its substeps one after the other, each from its own start
+        c = 0.0
+        for gi in self.composition.gammas:
+            g, p = self.engine.step(g, p, gi * h, None, newton, u, params, t + c * h)
+            c += gi
+        return g, p
 
     def linearize(self, traj, *, u=None, params=None, t0=None, wrt=None,
                   newton: NewtonOptions | None = None):
@@ -153,7 +168,8 @@ class Integrator:
         and t0 (default: the trajectory's first time) and returns (A, B), B (K, 2d, m) =
         d(eta_{k+1}, dp_{k+1}) / d u_k, or with wrt="params" P (K, 2d, n_runtime_params).
         A closed module takes none of u, params, t0, wrt."""
-        return _linearize.along(self.engine, traj, newton, u, params, t0, wrt)
+        return _linearize.along(self.engine, traj, newton, u, params, t0, wrt,
+                                () if self.composition is None else self.composition.gammas)
 
     def casadi_step(self):
         """casadi.Function step(g, p, h, z) -> (F, g1, p1) (an open module's:

@@ -58,18 +58,81 @@ from .args import _error
 RECORD_RTOL = 1e-9
 
 
-def along(engine, traj, newton=None, u=None, params=None, t0=None, wrt=None):
+def along(engine, traj, newton=None, u=None, params=None, t0=None, wrt=None, compose=()):
     """Integrator.linearize: ``linearize`` for a closed module (which takes none of u,
     params, t0, wrt: ArgumentError naming the one given), ``linearize_open`` for an open
-    one; newton: the Newton settings (Engine.options resolves them)."""
+    one, ``linearize_composed`` for a composed step (compose: its substep fractions);
+    newton: the Newton settings (Engine.options resolves them)."""
     if engine.open is None:
         for name, v in (("u", u), ("params", params), ("t0", t0), ("wrt", wrt)):
             if v is not None:
                 raise ArgumentError("this model has no forces, inputs, runtime "
                                     f"parameters or t: linearize takes no {name}",
                                     field=name)
+        if compose:
+            return linearize_composed(engine, traj, engine.options(newton), compose)
         return linearize(engine, traj, engine.options(newton))
+    if compose:
+        return linearize_composed(engine, traj, engine.options(newton), compose, u, params,
+                                  t0, wrt)
     return linearize_open(engine, traj, engine.options(newton), u, params, t0, wrt)
+
+
+def linearize_composed(engine, traj, opts, gammas, u=None, params=None, t0=None, wrt=None):
+    """linearize / linearize_open of a composed step Phi(h) = S(gamma_s h) o ... o
+    S(gamma_1 h): per step k the substeps from record k (each by Newton from the guess
+    kernel, on either backend's step), and the chain rule over them,
+    A = A_s ... A_1 and B = sum_i A_s ... A_(i+1) B_i (P likewise), A_i, B_i the implicit
+    derivatives of substep i at its own state and h_i = gamma_i h (an open substep at time
+    t_k + (gamma_1 + ... + gamma_(i-1)) h with input u_k). Raises as linearize."""
+    from .inputs import step_inputs
+    if wrt not in WRT:
+        raise ArgumentError(f"expected wrt=None, 'u' or 'params', got {wrt!r}", field="wrt")
+    gf, p, h = _check_traj(engine, traj)
+    K, s = len(gf) - 1, 2 * engine.d
+    inputs, cols, lv = None, slice(0, 0), None
+    if engine.open is not None:
+        m = len(engine.open["inputs"])
+        if t0 is None:
+            t0 = float(np.asarray(traj.t, dtype=np.float64)[0]) if len(traj.t) else 0.0
+        inputs = step_inputs(engine.open, K, u, params, t0)
+        H = 2 + m + len(inputs.params)
+        cols = slice(2, 2 + m) if wrt != "params" else slice(2 + m, H)
+        if wrt == "params" and H == 2 + m:
+            raise ArgumentError("this model has no runtime parameters", field="wrt")
+        lv = engine.maps.lv(t0, inputs.params)
+    A, B = np.zeros((K, s, s)), np.zeros((K, s, cols.stop - cols.start))
+    dev = np.zeros(K)
+    for k in range(K):
+        g, pk = gf[k], p[k]
+        c = 0.0
+        for i, gi in enumerate(gammas):
+            if inputs is None:
+                hv = np.array([gi * h])
+            else:
+                hv = np.array(inputs.hv(h, k), dtype=np.float64)
+                hv[0], hv[1] = gi * h, inputs.t0 + (k + c) * h
+            xi = (engine.maps.velocity_flat(g, pk) if lv is None
+                  else engine.maps.velocity_flat(g, pk, lv=lv))
+            z = engine.kernel("guess", xi, g, pk, hv)[0]
+            code, g1, p1, z, it, r = engine.backend.step(g, pk, hv, z, opts)
+            if code != abi.OK:
+                raise _error(code, k, k * h, r, it)
+            if inputs is None:
+                Ai = implicit_derivative(*partials_at(engine, z, g, pk, hv))
+            else:
+                J, Fs, Yz, Ys, FH, YH = open_partials_at(engine, z, g, pk, hv)
+                D = implicit_derivative(J, np.hstack([Fs, FH[:, cols]]), Yz,
+                                        np.hstack([Ys, YH[:, cols]]))
+                Ai = D[:, :s]
+                B[k] = Ai @ B[k] + D[:, s:]
+            A[k] = Ai if i == 0 else Ai @ A[k]
+            g, pk, c = np.asarray(g1).reshape(-1), np.asarray(p1).reshape(-1), c + gi
+        dev[k] = max(np.abs(g - gf[k + 1]).max(), np.abs(pk - p[k + 1]).max())
+    _check_dev(engine, gf, p, h, dev)
+    if inputs is None:
+        return A
+    return B if wrt == "params" else (A, B)
 
 
 def implicit_derivative(J, Fs, Yz, Ys):

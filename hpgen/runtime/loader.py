@@ -127,12 +127,14 @@ def _open_entry(meta: dict, bad):
     return op
 
 
-def load(path, backend=None, *, cc=None, cflags=None) -> Integrator:
+def load(path, backend=None, *, cc=None, cflags=None, compose=None) -> Integrator:
     """The Integrator of the generated module directory ``path``.
 
     backend: "c" (compile kernels.c once, load with ctypes) or "python" (import kernels.py
     from the directory); None = the module's default from meta.json. cc/cflags: see
-    hpgen.runtime.build.build_library. A directory with a MANIFEST.json (``hpgen compile -o``
+    hpgen.runtime.build.build_library. compose: a composition's name
+    (hpgen.tableaus.composition; None: the plain step) making every step the composed step of
+    the module's symmetric scheme (the same kernels). A directory with a MANIFEST.json (``hpgen compile -o``
     output) is checked against it first. Raises ModelError (bad directory or backend, sources
     that differ from their recorded digests) and
     BuildError (compiler missing or failing; backend="python" needs no compiler).
@@ -150,4 +152,10 @@ def load(path, backend=None, *, cc=None, cflags=None) -> Integrator:
     else:
         raise ModelError(f"unknown backend {backend!r}; expected one of {BACKENDS}",
                          field="backend")
-    return Integrator(meta, impl, module_dir)
+    composition = None
+    if compose is not None:
+        from ..tableaus.composition import check_base, get_composition
+        composition = get_composition(compose)
+        check_base(meta["options"]["tableau"])
+        impl.compose = composition.gammas
+    return Integrator(meta, impl, module_dir, composition)

@@ -15,6 +15,11 @@ from .newton import (_INF, _NAN, Kernels, NewtonMemory, NewtonOptions, _floats, 
                      all_finite, norm_inf, step_lists)
 
 
+#: the offsets z - G each substep of a composed step keeps for its predictor (HPGEN_CH in
+#: hpgen_runtime.h)
+COMPOSE_HISTORY = 6
+
+
 class Run:
     """A run in progress (the C backend's ``hpgen_run``): state (g_k, p_k) flat, the last
     solution z, the predictor's offsets dz = [dz_{k-1}, dz_{k-2}, ...] (newest first,
@@ -31,6 +36,12 @@ class Run:
         self.k = 0
         self.s = None            # section(g_k, p_k) once evaluated (advance_sections)
         self.g_stale = False     # g is g_0, not g_k (advance_record without g)
+        # a composed step (_composed_step): the substep fractions (() for the plain step),
+        # substep i's offsets z - G at the previous steps cdz[i] (newest first; the first
+        # c_have <= COMPOSE_HISTORY valid)
+        self.compose = ()
+        self.cdz = []
+        self.c_have = 0
 
     def to_arrays(self) -> dict:
         """Every field as float64 / int64 arrays (a checkpoint: from_arrays of them continues
@@ -39,7 +50,15 @@ class Run:
         lu = self.memory.lu
         flags = [self.k, self.have_prev, int(self.g_stale), -1 if lu is None else np.ndim(lu),
                  int(self.s is not None)]
-        return {"g": np.array(self.g, dtype=np.float64), "p": np.array(self.p, dtype=np.float64),
+        nz, ch = len(self.z), COMPOSE_HISTORY
+        cdz = np.zeros((len(self.cdz), ch, nz))
+        for i, rows in enumerate(self.cdz):
+            cdz[i, :len(rows[:ch])] = rows[:ch]
+        comp = {"compose": np.array(self.compose, dtype=np.float64),
+                "c_have": np.array([self.c_have], dtype=np.int64), "cdz": cdz
+                } if self.compose else {}
+        return {**comp,
+                "g": np.array(self.g, dtype=np.float64), "p": np.array(self.p, dtype=np.float64),
                 "z": np.array(self.z, dtype=np.float64),
                 "dz": np.array(self.dz, dtype=np.float64).reshape(len(self.dz), len(self.z)),
                 "s": np.array([self.s or 0.0], dtype=np.float64),
@@ -52,6 +71,9 @@ class Run:
         k, have_prev, g_stale, lu_dim, has_s = (int(v) for v in a["flags"])
         run = cls(a["g"].tolist(), a["p"].tolist(), a["z"].tolist())
         run.dz = a["dz"].tolist()
+        if "compose" in a:
+            run.compose, run.cdz = tuple(a["compose"].tolist()), a["cdz"].tolist()
+            run.c_have = int(a["c_have"][0])
         run.s = float(a["s"][0]) if has_s else None
         run.k, run.have_prev, run.g_stale = k, have_prev, bool(g_stale)
         lu = a["lu"]
@@ -157,6 +179,48 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
     return OK
 
 
+def _composed_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOptions, st,
+                   with_g=True):
+    """One step of ``run`` like ``hpgen_run_cstep`` in C: _run_step, or for a composed run
+    (run.compose = (gamma_1, .., gamma_s)) the substeps _run_step with h_i = gamma_i h at the
+    same k, each started from its own predictor (G at the first step), J^{-1} kept across
+    substeps as across steps, an open model's substep at time t0 + (k + gamma_1 + ... +
+    gamma_{i-1}) h; st["iterations"] summed over the substeps; on failure the run is back
+    at its state before the step. Substep i's predictor extrapolates its own offsets at the
+    last c_have steps. Returns the status code."""
+    gam = run.compose
+    if not gam:
+        return _run_step(kern, run, hv, opts, full, st, with_g)
+    if not run.cdz:
+        run.cdz = [[] for _ in gam]
+    h, k = hv[0], run.k
+    g0, p0, z0 = run.g, run.p, run.z
+    inputs = run.inputs
+    t0 = inputs.t0 if inputs is not None else 0.0
+    c, it, zero = 0.0, 0, [0.0] * len(run.z)
+    for i, gi in enumerate(gam):
+        hs = gi * h
+        run.k = k
+        run.dz = run.cdz[i][:run.c_have] if run.c_have else [zero]
+        run.have_prev = len(run.dz)
+        if inputs is not None:
+            inputs.t0 = t0 + (k + c) * h - k * hs
+        try:
+            code = _run_step(kern, run, [hs], opts, full, st, with_g)
+        finally:
+            if inputs is not None:
+                inputs.t0 = t0
+        it += st["iterations"]
+        if code != OK:
+            run.g, run.p, run.z, run.k = g0, p0, z0, k
+            return code
+        run.cdz[i] = run.dz[:COMPOSE_HISTORY]
+        c += gi
+    run.c_have = min(run.c_have + 1, COMPOSE_HISTORY)
+    st["iterations"] = it
+    return OK
+
+
 def _loop_start(run: Run, h, opts: NewtonOptions, what: str, with_g: bool):
     """(hv, a new status, the full-Newton options of the first step) for a run loop; a loop
     that needs g refuses a run advanced without it (g_stale, like the C loops)."""
@@ -175,7 +239,7 @@ def advance(kern: Kernels, run: Run, h, steps, every, opts: NewtonOptions):
     hv, st, full = _loop_start(run, h, opts, "advance", with_g=True)
     recs: list[tuple] = []
     for n in range(steps):
-        if _run_step(kern, run, hv, opts, full, st) != OK:
+        if _composed_step(kern, run, hv, opts, full, st) != OK:
             return n, recs, st
         if run.k % every == 0:
             recs.append((run.g, run.p))
@@ -234,7 +298,7 @@ def advance_record(kern: Kernels, row_of, run: Run, h, steps, every, opts: Newto
     if skip_g:
         run.g_stale = True
     for n in range(steps):
-        if _run_step(kern, run, hv, opts, full, st, not skip_g) != OK:
+        if _composed_step(kern, run, hv, opts, full, st, not skip_g) != OK:
             return n, rows, st
         if run.k % every == 0:
             code, row = row_of(run.g, run.p, run.k, h)
@@ -259,7 +323,7 @@ def advance_sections(kern: Kernels, section, chart_point, run: Run, h, steps, ca
     n = 0
     while n < steps and len(recs) < cap:
         s0, k, g0, p0 = run.s, run.k, run.g, run.p
-        if _run_step(kern, run, hv, opts, full, st) != OK:
+        if _composed_step(kern, run, hv, opts, full, st) != OK:
             return n, recs, st
         n += 1
         s1 = section(run.g, run.p)[0][0]
@@ -271,7 +335,15 @@ def advance_sections(kern: Kernels, section, chart_point, run: Run, h, steps, ca
             theta = s0 / (s0 - s1)
             p_c = [(1.0 - theta) * a + theta * b for a, b in zip(p0, run.p)]
             hv_k = hv if run.inputs is None else run.inputs.hv(hv[0], k)   # step k's
-            g_c = chart_point(run.z, g0, hv_k, [theta])[0]
+            if run.compose:     # hpgen_composed_section_point: one plain step S(theta h)
+                hv_t = [theta * hv[0]] + hv_k[1:]
+                G = predictor_base(kern, g0, p0, hv_t, run.inputs is not None)
+                code, g_c, *_ = step_lists(kern, g0, p0, hv_t, G, full, NewtonMemory())
+                if code != OK:
+                    st.update(code=code, step=run.k)
+                    return n, recs, st
+            else:
+                g_c = chart_point(run.z, g0, hv_k, [theta])[0]
             recs.append((k, (float(k) + theta) * float(h), g_c, p_c))
     st["step"] = run.k
     return n, recs, st

@@ -23,7 +23,8 @@ def test_list():
     assert out.returncode == 0, out.stderr
     lines = out.stdout.splitlines()
     listed = {ln.split()[0] for ln in lines if ln.startswith("  ")}
-    registered = {t.name for t in schemes.tableaus()} | {s.name for s in schemes.splittings()}
+    registered = ({t.name for t in schemes.tableaus()} | {s.name for s in schemes.splittings()}
+                  | {c.name for c in schemes.compositions()})
     for option in (schemes.TAU, schemes.RKMK, schemes.BACKEND):
         registered |= set(option.names)
     assert listed == registered

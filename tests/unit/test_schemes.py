@@ -83,7 +83,8 @@ def test_cli_choices_and_list_come_from_the_registry():
     compile_parser = _parser()._subparsers._group_actions[0].choices["compile"]
     choices = {a.dest: tuple(a.choices) for a in compile_parser._actions if a.choices}
     assert choices == {"tau": schemes.TAU.names, "rkmk": schemes.RKMK.names,
-                       "backend": schemes.BACKEND.names}
+                       "backend": schemes.BACKEND.names,
+                       "compose": tuple(c.name for c in schemes.compositions())}
 
 
 def test_registry_and_runtime_loader_import_no_compile_time_stack():

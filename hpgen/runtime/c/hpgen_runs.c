@@ -129,6 +129,73 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     return HPGEN_OK;
 }
 
+/* Make run r's steps composed steps of cs substeps with fractions gammas[0..cs-1]
+   (hpgen.tableaus.composition; cs = 0: the plain step). Returns 0, or -1 for cs outside
+   0..HPGEN_CS_MAX. */
+HPGEN_EXPORT int hpgen_run_set_compose(hpgen_run* r, long long cs, const double* gammas) {
+    long long i;
+    if (cs < 0 || cs > HPGEN_CS_MAX) return -1;
+    r->cs = cs;
+    r->c_have = 0;
+    for (i = 0; i < cs; ++i) r->cg[i] = gammas[i];
+    return 0;
+}
+
+/* One step of run r: hpgen_run_step, or for a composed run (r->cs > 0) the composed step
+   S(cg[cs-1] h) o ... o S(cg[0] h), substep i being hpgen_run_step with hv[0] = cg[i] h at
+   the same k. Substep i's Newton starts from hpgen_run_step's predictor through substep i's
+   own offsets z - G at the last min(k, HPGEN_CH) steps (G itself at the first step).
+   Simplified Newton keeps J^{-1} across substeps as across steps: its contraction test
+   refreshes it when the fraction changed too much (a fresh J at every change of fraction
+   would cost more J evaluations than the test asks for). An open model's substep i has time
+   t0 + (k + cg[0] + ... + cg[i-1]) h and input row k. st->iterations: summed over the
+   substeps. On failure the run is back at its state before the step. */
+static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* o,
+                           const hpgen_options* full, hpgen_status* st, int with_g) {
+    double hs[1], g0[HPGEN_NN], p0[HPGEN_D], z0[HPGEN_NZ], c = 0.0;
+    const long long k = r->k;
+    long long it = 0, i;
+    int code;
+#if HPGEN_OPEN
+    const double t0 = r->t0;
+#endif
+    if (r->cs == 0) return hpgen_run_step(r, hv, o, full, st, with_g);
+    memcpy(g0, r->g, sizeof g0);
+    memcpy(p0, r->p, sizeof p0);
+    memcpy(z0, r->z, sizeof z0);
+    for (i = 0; i < r->cs; ++i) {
+        hs[0] = r->cg[i] * hv[0];
+        r->k = k;
+        if (r->c_have > 0) {
+            r->have_prev = r->c_have;
+            memcpy(r->dz[0], r->cdz[i][0], r->c_have * sizeof r->dz[0]);
+        } else {
+            r->have_prev = 1;
+            memset(r->dz[0], 0, sizeof r->dz[0]);
+        }
+#if HPGEN_OPEN
+        r->t0 = t0 + ((double)k + c) * hv[0] - (double)k * hs[0];
+#endif
+        code = hpgen_run_step(r, hs, o, full, st, with_g);
+#if HPGEN_OPEN
+        r->t0 = t0;
+#endif
+        it += st->iterations;
+        if (code != HPGEN_OK) {
+            memcpy(r->g, g0, sizeof g0);
+            memcpy(r->p, p0, sizeof p0);
+            memcpy(r->z, z0, sizeof z0);
+            r->k = k;
+            return code;
+        }
+        memcpy(r->cdz[i][0], r->dz[0], HPGEN_CH * sizeof r->dz[0]);
+        c += r->cg[i];
+    }
+    if (r->c_have < HPGEN_CH) r->c_have += 1;
+    st->iterations = it;
+    return HPGEN_OK;
+}
+
 /* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
    solution, or from the predictor of hpgen_run_step). The state after global step k is
    recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
@@ -148,7 +215,7 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
     full = *o;
     full.simplified = 0;
     for (n = 0; n < steps; ++n) {
-        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
+        if (hpgen_run_cstep(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
         if (r->k % every == 0) {
             memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof r->g);
             memcpy(p_rec + rec * HPGEN_D, r->p, sizeof r->p);
@@ -159,12 +226,37 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
     return steps;
 }
 
+/* A composed run's group element at a section crossing theta h into step k from
+   (g0, p0): one plain step S(theta h) (full Newton from the predictor base G), whose g
+   carries the same O(h^2) accuracy as the crossing's linear p; the run is untouched.
+   Returns the status code. */
+static int hpgen_composed_section_point(const hpgen_run* r, const double* g0, const double* p0,
+                                        double th, long long k, double h,
+                                        const hpgen_options* full, double* g_out) {
+    double z[HPGEN_NZ], p1[HPGEN_D], lu[1], res;
+    long long it, jacs = 0, valid = 0;
+    int piv[1];
+#if HPGEN_OPEN
+    double hv[HPGEN_H];
+    memcpy(hv, r->hv, sizeof hv);
+    hv[1] = r->t0 + (double)k * h;
+#else
+    double hv[1];
+    (void)r; (void)k; (void)h;
+#endif
+    hv[0] = th;
+    hpgen_predictor_base(g0, p0, hv, z);
+    return hpgen_step_core(g0, p0, hv, z, full, lu, piv, &valid, g_out, p1, &it, &jacs, &res,
+                           1, 1);
+}
+
 /* Advance a run by up to `steps` steps of size h, recording the upward crossings of the
    scene's Poincare section s(g, p) = 0 (kernel section): when s_k < 0 <= s_{k+1}, with
    theta = s_k / (s_k - s_{k+1}) in (0, 1], record j holds
      k_rec[j] = k,  t_rec[j] = (k + theta) h,
      p_rec[j * D] = (1 - theta) p_k + theta p_{k+1}      (linear in the step: O(h^2)),
-     g_rec[j * NN] = g_k tau(theta h xi_{k+1})            (kernel chart_point: on the group).
+     g_rec[j * NN] = g_k tau(theta h xi_{k+1})            (kernel chart_point: on the group;
+                                                           a composed run: S(theta h) of g_k).
    s of the run's current state is kept in the run, so calls chain (a crossing between two
    calls is found). Stops after `cap` records (the crossing step included), at a failed step,
    or after `steps` steps; *n_rec: the records written. Returns the steps done in this call. */
@@ -175,7 +267,7 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
                                               hpgen_status* st) {
     double hv[1], g0[HPGEN_NN], p0[HPGEN_D], s1[1], th[1];
     long long n;
-    int i;
+    int i, code;
     hpgen_options full;
     hpgen_status_init(st);
     *n_rec = 0;
@@ -195,7 +287,7 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
         const long long k = r->k;
         memcpy(g0, r->g, sizeof g0);
         memcpy(p0, r->p, sizeof p0);
-        if (hpgen_run_step(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
+        if (hpgen_run_cstep(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
         if (hpgen_k_section(r->g, r->p, s1) || !isfinite(s1[0])) {
             st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
         }
@@ -208,7 +300,12 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
             t_rec[j] = ((double)k + theta) * h;
             for (i = 0; i < HPGEN_D; ++i)
                 p_rec[j * HPGEN_D + i] = (1.0 - theta) * p0[i] + theta * r->p[i];
-            if (hpgen_k_chart_point(r->z, g0, HPGEN_RUN_HV(r, hv), th, g_rec + j * HPGEN_NN)) {
+            if (r->cs > 0) {
+                code = hpgen_composed_section_point(r, g0, p0, theta * h, k, h, &full,
+                                                    g_rec + j * HPGEN_NN);
+                if (code != HPGEN_OK) { st->code = code; st->step = r->k; return n + 1; }
+            } else if (hpgen_k_chart_point(r->z, g0, HPGEN_RUN_HV(r, hv), th,
+                                           g_rec + j * HPGEN_NN)) {
                 st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
             }
             *n_rec = j + 1;
@@ -293,7 +390,7 @@ HPGEN_EXPORT long long hpgen_advance_record(hpgen_run* r, double h, long long st
     full.simplified = 0;
     if (HPGEN_SKIP_G) r->g_stale = 1;
     for (n = 0; n < steps; ++n) {
-        if (hpgen_run_step(r, hv, o, &full, st, !HPGEN_SKIP_G) != HPGEN_OK) return n;
+        if (hpgen_run_cstep(r, hv, o, &full, st, !HPGEN_SKIP_G) != HPGEN_OK) return n;
         if (r->k % every == 0) {
             double* row = rows + *n_rec * HPGEN_W;
             *n_rec += 1;

@@ -117,6 +117,10 @@
 #endif
 /* the predictor keeps the offsets of this many past steps; row m - 1 of hpgen_pc weighs the
    m newest in the extrapolation through m of them (hpgen.abi.PREDICTOR_COEFFICIENTS) */
+/* the most substeps of a composed step (hpgen.tableaus.composition.MAX_STAGES), and the
+   offsets each substep's predictor keeps (hpgen.runtime.loop.COMPOSE_HISTORY) */
+#define HPGEN_CS_MAX 9
+#define HPGEN_CH 6
 #define HPGEN_PH 6
 static const double hpgen_pc[HPGEN_PH][HPGEN_PH] = {
     { 1.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
@@ -185,6 +189,12 @@ typedef struct hpgen_run {
     double s;                        /* section(g_k, p_k), when s_valid */
     long long s_valid;
     long long g_stale;               /* g is g_0, not g_k (hpgen_advance_record, HPGEN_SKIP_G) */
+    /* a composed step (hpgen_run_set_compose; cs = 0: the plain step): cs substeps of
+       fractions cg, substep i predicted from its own offsets z - G at the previous steps,
+       cdz[i][0], cdz[i][1], ... (newest first; c_have of them valid) */
+    long long cs, c_have;
+    double cg[HPGEN_CS_MAX];
+    double cdz[HPGEN_CS_MAX][HPGEN_CH][HPGEN_NZ];
 #if HPGEN_OPEN
     double hv[HPGEN_H];              /* the step vector of the current step */
     double t0;                       /* the time of step 0 */
