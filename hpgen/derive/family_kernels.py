@@ -76,7 +76,8 @@ def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
     """mx_step_kernels' dict from mapped calls (hpgen.derive.family_map), or None when the
     family does not qualify (several Lagrangian classes, a node velocity that is not
     explicit)."""
-    from .family_map import mapped, mapped_step
+    from .family_jacobian import assembled_jacobian
+    from .family_map import mapped, mapped_step, mapped_step_parts
     funcs = _functions(model, tableau, tau, rkmk)
     body, lags, keys, steps, jfun, vel_funs = funcs
     if len(steps) != 1 or any(f is None for f in vel_funs.values()):
@@ -91,12 +92,13 @@ def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
     nzb = next(iter(steps.values()))["nz"]
     z = ca.MX.sym("z", nzb * N + (2 * m if m else 0))
     xi_hat = ca.MX.sym("xi_hat", d)
-    eqs = mapped_step(model, funcs, G, P, h, z, xi_hat)
-    if eqs is None:
+    out = mapped_step_parts(model, funcs, G, P, h, z, xi_hat)
+    if out is None:
         return None
+    eqs = out[0]
     col = lambda M: ca.reshape(M, M.numel(), 1)  # noqa: E731
     cast = lambda M: ca.sparsity_cast(ca.vec(M), spcol)  # noqa: E731  (nb^2 x N -> g's)
-    J = col(ca.jacobian(eqs.residual, z))
+    J = col(assembled_jacobian(model, funcs, out[1]))
     chart_fn, perturb, chart_of = _body_maps(body, tau)
     theta = ca.MX.sym("theta")
     gth = mapped(chart_fn, N)(G, ca.reshape(eqs.chart_step, db, N), theta)
