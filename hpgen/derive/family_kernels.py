@@ -35,7 +35,9 @@ def mx_step_kernels(model, tableau, tau: str, rkmk: str) -> dict:
     chart_point, update_p, step_partials; hpgen.abi's signatures, closed models). Composed
     over MX, the calls pass whole vectors and CasADi differentiates them through the
     callees' own Jacobians (``jac_penalty`` 0): the generated C has the per-body functions
-    once and a few lines per call. Outputs keep their structural sparsity."""
+    once and a few lines per call. Outputs keep their structural sparsity. On the mapped
+    path J (jacobian, residual_jacobian) is assembled from per-body and per-joint blocks
+    (hpgen.derive.family_jacobian), O(N) work."""
     n, d = model.group.n, model.group.d
     body = group_from_spec(model.family.body)
     nb, N = body.n, model.family.count
@@ -86,8 +88,12 @@ def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
     nb, db = body.n, body.d
     gcol = ca.reshape(ca.DM(block_diagonal_symbol(model.group).sparsity(), 1.0), n * n, 1)
     spcol = gcol.sparsity()
-    idx = [int(k) for k in spcol.row()]
-    G, P = ca.reshape(gv[idx], nb * nb, N), ca.reshape(p, db, N)
+    # g as its block-diagonal nonzeros (the kernels gather them from the contract's dense
+    # n*n input): no kernel copies or reads g's N^2 zeros. Column-major, body k's vec(g_k)
+    # are the nonzeros k nb^2 .. (k + 1) nb^2 - 1.
+    gv = ca.MX.sym("g", spcol)
+    G = ca.reshape(ca.sparsity_cast(gv, ca.Sparsity.dense(spcol.nnz(), 1)), nb * nb, N)
+    P = ca.reshape(p, db, N)
     m = sum(len(j.rows) for j in model.family.local.joints)
     nzb = next(iter(steps.values()))["nz"]
     z = ca.MX.sym("z", nzb * N + (2 * m if m else 0))

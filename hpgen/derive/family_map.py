@@ -166,11 +166,11 @@ def mapped_state_kernels(model, lags, keys, body, record_names) -> dict | None:
         body.momentum_map(Gs, Ps), x0, ca.substitute(ca.dot(mu, X) - lval, X, x0)], CALL)
     fd = ca.Function("body_defect", [gvec], [body.group_defect(Gs)], CALL)
     fv = ca.Function("body_velocity_step", [gvec, Ps, X, I], [vstep], CALL)
-    gv, xi, p = ca.MX.sym("g", n * n), ca.MX.sym("xi", d), ca.MX.sym("p", d)
+    xi, p = ca.MX.sym("xi", d), ca.MX.sym("p", d)
     gcol = ca.reshape(ca.DM(ca.diagcat(*[ca.DM.ones(nb, nb)] * N).sparsity(), 1.0), n * n, 1)
-    idx = [int(k) for k in gcol.sparsity().row()]
+    gv = ca.MX.sym("g", gcol.sparsity())      # g's block-diagonal nonzeros, body by body
     hcol = ca.reshape(ca.DM(ca.diagcat(*[ca.DM.ones(db, db)] * N).sparsity(), 1.0), d * d, 1)
-    G = ca.reshape(gv[idx], nb * nb, N)
+    G = ca.reshape(ca.sparsity_cast(gv, ca.Sparsity.dense(gv.nnz(), 1)), nb * nb, N)
     Xm, Pm, Im = ca.reshape(xi, db, N), ca.reshape(p, db, N), ca.DM(np.arange(N)).T
     mu_, H_, E_ = mapped(fa, N)(G, Xm, Im)
     m_, x0_, E0_ = mapped(fb, N)(G, Pm, Im)
