@@ -12,9 +12,9 @@ z <- z - J^{-1} F, inf-norms, theta = ||dz_k|| / ||dz_{k-1}||.
   stop leaves.
 - Both stop when ||dz|| stopped decreasing while ||dz|| <= ROUNDOFF_FLOOR (1 + ||z||) (round-off
   floor). The constants and status codes are hpgen.abi's, as are the C runtime's.
-- A module whose Newton matrix is sparse (many bodies) also stops when ||dz|| is at the
-  round-off floor and the error left, estimated from the rate (quadratic after a fresh J,
-  linear else), is <= tol (1 + ||z||) (sparse_converged).
+- A module whose Newton matrix is sparse (many bodies) also stops when the error left,
+  estimated from the rate (quadratic after a fresh J, linear else), is <= tol (1 + ||z||)
+  (sparse_converged).
 - An iterate that needs J takes F and J from one ``residual_jacobian`` evaluation when the
   module has that kernel (else ``residual`` then ``jacobian``), the others ``residual`` only.
 Non-finite F, J or z, or an exactly singular J, give code NONFINITE. A first step whose start
@@ -212,18 +212,21 @@ class Kernels:
 def sparse_converged(it: int, dn: float, dprev: float, zn: float, tol: float,
                      fresh_j: bool) -> bool:
     """The extra stop of a module whose Newton matrix is sparse (many bodies), hpgen_newton.c's
-    hpgen_sparse_converged: |dz| <= ROUNDOFF_FLOOR (1 + |z|) and the error left, estimated
-    from theta = |dz| / |dz_prev|, is <= tol (1 + |z|): theta^2 |dz| after an iterate with
-    a fresh J (quadratic convergence), else te/(1 - te) |dz|, te = max(theta, THETA_FLOOR).
+    hpgen_sparse_converged: the error left, estimated from theta = |dz| / |dz_prev|, is
+    <= tol (1 + |z|): after an iterate with a fresh J theta^2 |dz| (quadratic convergence),
+    with theta |dz| <= ROUNDOFF_FLOOR (1 + |z|); with a kept J te/(1 - te) |dz|,
+    te = max(theta, THETA_FLOOR), with |dz| <= ROUNDOFF_FLOOR (1 + |z|).
     The round-off in dz of a many-body step is itself about tol (1 + |z|) and grows with the
     number of bodies: the dense modules' tests end there only when |dz| stagnates."""
-    if it < 2 or not dn <= ROUNDOFF_FLOOR * (1.0 + zn):
+    if it < 2:
         return False
     th = dn / dprev
-    if th >= 1.0:
+    if not th < 1.0:
         return False
     if fresh_j:
-        return th * th * dn <= tol * (1.0 + zn)
+        return th * dn <= ROUNDOFF_FLOOR * (1.0 + zn) and th * th * dn <= tol * (1.0 + zn)
+    if not dn <= ROUNDOFF_FLOOR * (1.0 + zn):
+        return False
     te = th if th > THETA_FLOOR else THETA_FLOOR
     return te / (1.0 - te) * dn <= tol * (1.0 + zn)
 

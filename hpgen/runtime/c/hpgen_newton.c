@@ -4,12 +4,13 @@
    after hpgen_linalg.c. */
 
 #if HPGEN_SPARSE
-/* The extra stop of a module with a sparse Newton matrix (many bodies): |dz| <=
-   HPGEN_ROUNDOFF_FLOOR (1 + |z|) and the error left after the iterate, estimated from the
-   rate theta = |dz| / |dz_prev|, is <= tol (1 + |z|): theta^2 |dz| after an iterate with a
-   fresh J (quadratic convergence: C |dz|^2 with C = |dz| / |dz_prev|^2, an overestimate
-   once |dz| is round-off), else te/(1 - te) |dz| with te = max(theta, HPGEN_THETA_FLOOR)
-   (a linear rate). The round-off in dz of a many-body step is itself about tol (1 + |z|)
+/* The extra stop of a module with a sparse Newton matrix (many bodies): the error left
+   after the iterate, estimated from the rate theta = |dz| / |dz_prev|, is <= tol (1 + |z|).
+   After an iterate with a fresh J: theta^2 |dz| (quadratic convergence: C |dz|^2 with
+   C = |dz| / |dz_prev|^2, an overestimate once |dz| is round-off), and theta |dz| (the
+   error were the convergence only linear) <= HPGEN_ROUNDOFF_FLOOR (1 + |z|). With a kept J:
+   |dz| <= HPGEN_ROUNDOFF_FLOOR (1 + |z|) and te/(1 - te) |dz| with te = max(theta,
+   HPGEN_THETA_FLOOR) (a linear rate). The round-off in dz of a many-body step is itself about tol (1 + |z|)
    and grows with the number of bodies, so the dense modules' tests (|dz| <= tol (1 + |z|);
    a simplified bound HPGEN_SIMPLIFIED_TOL times smaller) end there only when |dz|
    stagnates, and the stagnation of a stale J looks like a poor contraction that refreshes
@@ -17,10 +18,12 @@
 static int hpgen_sparse_converged(long long it, double dn, double dprev, double zn,
                                   double tol, int fresh_j) {
     double th, te;
-    if (it < 2 || !(dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn))) return 0;
+    if (it < 2) return 0;
     th = dn / dprev;
-    if (th >= 1.0) return 0;
-    if (fresh_j) return th * th * dn <= tol * (1.0 + zn);
+    if (!(th < 1.0)) return 0;
+    if (fresh_j)
+        return th * dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn) && th * th * dn <= tol * (1.0 + zn);
+    if (!(dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn))) return 0;
     te = th > HPGEN_THETA_FLOOR ? th : HPGEN_THETA_FLOOR;
     return te / (1.0 - te) * dn <= tol * (1.0 + zn);
 }
