@@ -103,14 +103,15 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
     sps = [bf.sparsity_out(0), bf.sparsity_out(1), *[bu.sparsity_out(k) for k in range(4)]]
 
     def diag(k, a, b):
-        return _place(outs[k], sps[k], [(t * a, t * b) for t in range(N)], (a * N, b * N))
+        # block t at (t a, t b): the map's nonzeros are already in the CCS order
+        return ca.sparsity_cast(outs[k], ca.diagcat(*[sps[k]] * N))
     FZ, FQ = diag(0, nzb, nzb), diag(1, nzb, db)
     GZ, GQ = diag(2, nb2, nzb), diag(3, nb2, db)
     PZ, PQ = diag(4, db, nzb), diag(5, db, db)
     vj = _jacobian_function(parts["velocity"], [(0, 0), (0, 1)], "body_velocity_blocks")
     VG, VP = vj.map(N)(G1, P1, I, Hinv)
-    VG = _place(VG, vj.sparsity_out(0), [(t * db, t * nb2) for t in range(N)], (db * N, nb2 * N))
-    VP = _place(VP, vj.sparsity_out(1), [(t * db, t * db) for t in range(N)], (db * N, db * N))
+    VG = ca.sparsity_cast(VG, ca.diagcat(*[vj.sparsity_out(0)] * N))
+    VP = ca.sparsity_cast(VP, ca.diagcat(*[vj.sparsity_out(1)] * N))
 
     A, B = ca.MX(db * N, m), ca.MX(db * N, m)
     Kg = ca.MX(db * N, nb2 * N)
