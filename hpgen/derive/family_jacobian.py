@@ -4,8 +4,9 @@ from per-body and per-joint Jacobian blocks, with O(N) work and memory.
 Each block is one SX function (derived once, its Jacobians by CasADi's SX AD) mapped over
 the bodies or a joint group's instances; its outputs are placed into sparse N-sized matrices
 by static nonzero indexing, and the chain rule through the step's intermediates is a few
-sparse matrix products whose patterns CasADi fixes when the kernel is built. With z = (Z, lambda, nu)
-(body unknowns, joint multipliers at the start and at the end of the step), per body k
+sparse matrix products whose patterns CasADi fixes when the kernel is built. With
+z = (Z, lambda, nu) (body unknowns, joint multipliers at the start and at the end of the
+step), per body k
 
     Q_k = P_k - sum_j Phi_{j,k}(g)^T lambda_j                      (impulses)
     F_k, g1_k, P1m_k = body step(Z_k, g_k, Q_k)
@@ -21,7 +22,8 @@ Phi_{j,k}(g1)^T nu_j)/d g1,
     J = [F_Z, F_Q dQ/dz; dphi/dg1 dg1/dz / h; dhid/dg1 dg1/dz + dhid/dV dV/dz]
 
 (Z-blocks block-diagonal over the bodies). The result equals casadi.jacobian of the mapped
-residual to round-off; its work array is a few hundred doubles per body.
+residual to round-off, with work and memory proportional to the blocks' nonzeros instead of
+CasADi's directional derivatives of the whole mapped step.
 """
 from __future__ import annotations
 
@@ -41,19 +43,30 @@ def _jacobian_function(f, pairs, name):
 
 
 def _place(M, sp_blk, places, shape):
-    """Sparse MX of ``shape`` with block t of M (M = [B_0, B_1, ...], each B_t of pattern
-    sp_blk, as a map's output) at offset places[t] = (row, col); places must not overlap."""
+    """Sparse MX of ``shape``: the sum of the blocks B_t of M (M = [B_0, B_1, ...], each of
+    pattern sp_blk, as a map's output) at the offsets places[t] = (row, col). Blocks at the
+    same offset (a body in the same slot of two joints of one group) go to separate layers,
+    each a static gather and a sparsity cast."""
     e = sp_blk.nnz()
     br, bc = np.asarray(sp_blk.row()), np.asarray(sp_blk.get_col())
-    rows = np.concatenate([r0 + br for r0, _ in places])
-    cols = np.concatenate([c0 + bc for _, c0 in places])
-    src = np.arange(e * len(places))
-    sp = ca.Sparsity.triplet(shape[0], shape[1], rows.tolist(), cols.tolist())
-    if sp.nnz() != len(src):
-        raise ValueError("overlapping blocks")
-    # sp's nonzeros in CCS order: sort by (col, row)
-    order = np.lexsort((rows, cols))
-    return ca.sparsity_cast(M.nz[src[order].tolist()], sp)
+    layers: list = []
+    for t, at in enumerate(places):
+        for layer in layers:
+            if at not in layer:
+                layer[at] = t
+                break
+        else:
+            layers.append({at: t})
+    out = ca.MX(*shape)
+    for layer in layers:
+        ts = list(layer.values())
+        rows = np.concatenate([places[t][0] + br for t in ts])
+        cols = np.concatenate([places[t][1] + bc for t in ts])
+        src = np.concatenate([np.arange(t * e, (t + 1) * e) for t in ts])
+        order = np.lexsort((rows, cols))            # the pattern's nonzeros in CCS order
+        sp = ca.Sparsity.triplet(shape[0], shape[1], rows.tolist(), cols.tolist())
+        out = out + ca.sparsity_cast(M.nz[src[order].tolist()], sp)
+    return out
 
 
 def _joint_jacobians(fun, K: int, rows: int):

@@ -62,3 +62,18 @@ def test_assembled_jacobian_equals_casadi_jacobian(tab, rk):
 def test_assembled_jacobian_does_not_grow_with_the_bodies():
     sizes = [functions(n, "stormer-verlet", "truncated")[0].n_instructions() for n in (3, 6)]
     assert sizes[0] == sizes[1]
+
+
+def test_blocks_at_the_same_place_add_up():
+    from hpgen.derive.family_jacobian import _place
+    sp = ca.Sparsity.lower(2)
+    vals = np.arange(1.0, 1.0 + 3 * sp.nnz())
+    M = ca.MX.sym("M", ca.horzcat(*[ca.DM(sp, 1.0)] * 3).sparsity())
+    places = [(0, 0), (2, 1), (0, 0)]
+    f = ca.Function("f", [M], [_place(M, sp, places, (4, 3))])
+    got = np.array(ca.densify(f(ca.DM(M.sparsity(), vals))))
+    want = np.zeros((4, 3))
+    for t, (r, c) in enumerate(places):
+        block = np.array(ca.densify(ca.DM(sp, vals[3 * t:3 * t + 3])))
+        want[r:r + 2, c:c + 2] += block
+    assert np.array_equal(got, want)
