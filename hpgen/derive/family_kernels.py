@@ -35,7 +35,9 @@ def mx_step_kernels(model, tableau, tau: str, rkmk: str) -> dict:
     chart_point, update_p, step_partials; hpgen.abi's signatures, closed models). Composed
     over MX, the calls pass whole vectors and CasADi differentiates them through the
     callees' own Jacobians (``jac_penalty`` 0): the generated C has the per-body functions
-    once and a few lines per call. Outputs keep their structural sparsity."""
+    once and a few lines per call. Outputs keep their structural sparsity. On the mapped
+    path J (jacobian, residual_jacobian) is assembled from per-body and per-joint blocks
+    (hpgen.derive.family_jacobian), O(N) work."""
     n, d = model.group.n, model.group.d
     body = group_from_spec(model.family.body)
     nb, N = body.n, model.family.count
@@ -76,7 +78,8 @@ def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
     """mx_step_kernels' dict from mapped calls (hpgen.derive.family_map), or None when the
     family does not qualify (several Lagrangian classes, a node velocity that is not
     explicit)."""
-    from .family_map import mapped, mapped_step
+    from .family_jacobian import assembled_jacobian
+    from .family_map import mapped, mapped_step, mapped_step_parts
     funcs = _functions(model, tableau, tau, rkmk)
     body, lags, keys, steps, jfun, vel_funs = funcs
     if len(steps) != 1 or any(f is None for f in vel_funs.values()):
@@ -85,18 +88,23 @@ def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
     nb, db = body.n, body.d
     gcol = ca.reshape(ca.DM(block_diagonal_symbol(model.group).sparsity(), 1.0), n * n, 1)
     spcol = gcol.sparsity()
-    idx = [int(k) for k in spcol.row()]
-    G, P = ca.reshape(gv[idx], nb * nb, N), ca.reshape(p, db, N)
+    # g as its block-diagonal nonzeros (the kernels gather them from the contract's dense
+    # n*n input): no kernel copies or reads g's N^2 zeros. Column-major, body k's vec(g_k)
+    # are the nonzeros k nb^2 .. (k + 1) nb^2 - 1.
+    gv = ca.MX.sym("g", spcol)
+    G = ca.reshape(ca.sparsity_cast(gv, ca.Sparsity.dense(spcol.nnz(), 1)), nb * nb, N)
+    P = ca.reshape(p, db, N)
     m = sum(len(j.rows) for j in model.family.local.joints)
     nzb = next(iter(steps.values()))["nz"]
     z = ca.MX.sym("z", nzb * N + (2 * m if m else 0))
     xi_hat = ca.MX.sym("xi_hat", d)
-    eqs = mapped_step(model, funcs, G, P, h, z, xi_hat)
-    if eqs is None:
+    out = mapped_step_parts(model, funcs, G, P, h, z, xi_hat)
+    if out is None:
         return None
+    eqs = out[0]
     col = lambda M: ca.reshape(M, M.numel(), 1)  # noqa: E731
     cast = lambda M: ca.sparsity_cast(ca.vec(M), spcol)  # noqa: E731  (nb^2 x N -> g's)
-    J = col(ca.jacobian(eqs.residual, z))
+    J = col(assembled_jacobian(model, funcs, out[1]))
     chart_fn, perturb, chart_of = _body_maps(body, tau)
     theta = ca.MX.sym("theta")
     gth = mapped(chart_fn, N)(G, ca.reshape(eqs.chart_step, db, N), theta)

@@ -67,6 +67,14 @@ def _selection(count: int, cols, N: int):
 def mapped_step(model, funcs, G, P, h, z, xi_hat) -> StepEquations | None:
     """The family step over MX with mapped calls; funcs: hpgen.derive.family._functions;
     G (nb^2 x N), P (db x N), h (1), z (nz) and xi_hat (d) MX."""
+    out = mapped_step_parts(model, funcs, G, P, h, z, xi_hat)
+    return None if out is None else out[0]
+
+
+def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
+    """(mapped_step's StepEquations, its intermediates for the block-assembled Jacobian
+    (hpgen.derive.family_jacobian): a dict of MX Z, Q, G1, P1, V (columns per body), the
+    joint groups, the constants I, Hinv and the joint rows' order), or None."""
     body, lags, keys, steps, jfun, vel_funs = funcs
     N, db = model.family.count, body.d
     if len(steps) != 1 or any(f is None for f in vel_funs.values()):
@@ -122,9 +130,14 @@ def mapped_step(model, funcs, G, P, h, z, xi_hat) -> StepEquations | None:
     margins = mapped(st["M"], N)(Z, h)
     charts = mapped(st["C"], N)(Z, h)
     guess = mapped(st["Z"], N)(ca.reshape(xi_hat, db, N), G, P, h)
-    return StepEquations(z, (), ca.vertcat(ca.vec(Fr), phi, hid), G1, ca.vec(P1),
-                         ca.vertcat(ca.vec(guess), ca.MX.zeros(2 * m)), xi_hat,
-                         ca.mmin(margins), ca.vec(charts))
+    eqs = StepEquations(z, (), ca.vertcat(ca.vec(Fr), phi, hid), G1, ca.vec(P1),
+                        ca.vertcat(ca.vec(guess), ca.MX.zeros(2 * m)), xi_hat,
+                        ca.mmin(margins), ca.vec(charts))
+    groups_out = [(key, js) for key, js in groups.items()]
+    parts = {"z": z, "Z": Z, "G": G, "Q": Q, "G1": G1, "P1": P1, "V": V, "h": h, "I": I,
+             "Hinv": Hinv, "groups": groups_out, "rowoff": rowoff, "perm": perm, "m": m,
+             "step": st, "velocity": vel_fn}
+    return eqs, parts
 
 
 def mapped_state_kernels(model, lags, keys, body, record_names) -> dict | None:
@@ -153,11 +166,11 @@ def mapped_state_kernels(model, lags, keys, body, record_names) -> dict | None:
         body.momentum_map(Gs, Ps), x0, ca.substitute(ca.dot(mu, X) - lval, X, x0)], CALL)
     fd = ca.Function("body_defect", [gvec], [body.group_defect(Gs)], CALL)
     fv = ca.Function("body_velocity_step", [gvec, Ps, X, I], [vstep], CALL)
-    gv, xi, p = ca.MX.sym("g", n * n), ca.MX.sym("xi", d), ca.MX.sym("p", d)
+    xi, p = ca.MX.sym("xi", d), ca.MX.sym("p", d)
     gcol = ca.reshape(ca.DM(ca.diagcat(*[ca.DM.ones(nb, nb)] * N).sparsity(), 1.0), n * n, 1)
-    idx = [int(k) for k in gcol.sparsity().row()]
+    gv = ca.MX.sym("g", gcol.sparsity())      # g's block-diagonal nonzeros, body by body
     hcol = ca.reshape(ca.DM(ca.diagcat(*[ca.DM.ones(db, db)] * N).sparsity(), 1.0), d * d, 1)
-    G = ca.reshape(gv[idx], nb * nb, N)
+    G = ca.reshape(ca.sparsity_cast(gv, ca.Sparsity.dense(gv.nnz(), 1)), nb * nb, N)
     Xm, Pm, Im = ca.reshape(xi, db, N), ca.reshape(p, db, N), ca.DM(np.arange(N)).T
     mu_, H_, E_ = mapped(fa, N)(G, Xm, Im)
     m_, x0_, E0_ = mapped(fb, N)(G, Pm, Im)

@@ -12,6 +12,9 @@ z <- z - J^{-1} F, inf-norms, theta = ||dz_k|| / ||dz_{k-1}||.
   stop leaves.
 - Both stop when ||dz|| stopped decreasing while ||dz|| <= ROUNDOFF_FLOOR (1 + ||z||) (round-off
   floor). The constants and status codes are hpgen.abi's, as are the C runtime's.
+- A module whose Newton matrix is sparse (many bodies) also stops when the error left,
+  estimated from the rate (quadratic after a fresh J, linear else), is <= tol (1 + ||z||)
+  (sparse_converged).
 - An iterate that needs J takes F and J from one ``residual_jacobian`` evaluation when the
   module has that kernel (else ``residual`` then ``jacobian``), the others ``residual`` only.
 Non-finite F, J or z, or an exactly singular J, give code NONFINITE. A first step whose start
@@ -170,7 +173,8 @@ class Kernels:
     with a kept J^{-1}, residual and linear algebra fused: solve's arithmetic, printed by
     hpgen.codegen.pyiterate; it needs the printed linear solver)."""
     __slots__ = ("residual", "jacobian", "residual_jacobian", "update", "margin", "linear",
-                 "nz", "update_p", "iterate", "iterate_full", "guess", "velocity_step")
+                 "nz", "update_p", "iterate", "iterate_full", "guess", "velocity_step",
+                 "sparse")
 
     def __init__(self, nz, residual, jacobian, residual_jacobian=None, update=None,
                  margin=None, linear=None, update_p=None, iterate=None, iterate_full=None,
@@ -180,6 +184,7 @@ class Kernels:
         self.residual_jacobian = residual_jacobian
         self.update, self.margin, self.update_p = update, margin, update_p
         self.guess, self.velocity_step = guess, velocity_step
+        self.sparse = pattern is not None
         if pattern is not None:       # a sparse Newton matrix: no printed dense solver
             from .sparse import sparse_solver
             linear = None
@@ -204,6 +209,28 @@ class Kernels:
                    pattern)
 
 
+def sparse_converged(it: int, dn: float, dprev: float, zn: float, tol: float,
+                     fresh_j: bool) -> bool:
+    """The extra stop of a module whose Newton matrix is sparse (many bodies), hpgen_newton.c's
+    hpgen_sparse_converged: the error left, estimated from theta = |dz| / |dz_prev|, is
+    <= tol (1 + |z|): after an iterate with a fresh J theta^2 |dz| (quadratic convergence),
+    with theta |dz| <= ROUNDOFF_FLOOR (1 + |z|); with a kept J te/(1 - te) |dz|,
+    te = max(theta, THETA_FLOOR), with |dz| <= ROUNDOFF_FLOOR (1 + |z|).
+    The round-off in dz of a many-body step is itself about tol (1 + |z|) and grows with the
+    number of bodies: the dense modules' tests end there only when |dz| stagnates."""
+    if it < 2:
+        return False
+    th = dn / dprev
+    if not th < 1.0:
+        return False
+    if fresh_j:
+        return th * dn <= ROUNDOFF_FLOOR * (1.0 + zn) and th * th * dn <= tol * (1.0 + zn)
+    if not dn <= ROUNDOFF_FLOOR * (1.0 + zn):
+        return False
+    te = th if th > THETA_FLOOR else THETA_FLOOR
+    return te / (1.0 - te) * dn <= tol * (1.0 + zn)
+
+
 def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory):
     """Newton (full or simplified, see the module docstring) from z (a list of floats) on
     kern.residual(z, g, p, hv) = 0: the C runtime's hpgen_newton.
@@ -214,7 +241,7 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
     lin, iterate = kern.linear, kern.iterate
     factor_solve, apply, update, finish = lin.factor_solve, lin.apply, lin.update, lin.finish
     tol, keep, maxit = opts.tol, opts.simplified, opts.maxit
-    stol = SIMPLIFIED_TOL * tol
+    stol, sparse = SIMPLIFIED_TOL * tol, kern.sparse
     dprev, jacs, F = _INF, 0, None
     full, fresh = not opts.simplified, False
     if full and kern.iterate_full is not None:
@@ -282,6 +309,8 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
             if not (dn < _INF and zn < _INF):
                 return NONFINITE, z, it, rnorm, jacs
         if it > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + zn):
+            return OK, z, it, norm_inf(F), jacs
+        if sparse and sparse_converged(it, dn, dprev, zn, tol, full):
             return OK, z, it, norm_inf(F), jacs
         if full:
             # quadratic convergence: the error left after dn <= tol is about C tol^2

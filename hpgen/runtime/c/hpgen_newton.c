@@ -3,13 +3,40 @@
    hpgen.runtime.newton (the same iteration, tests and results). Included by hpgen_runtime.c
    after hpgen_linalg.c. */
 
+#if HPGEN_SPARSE
+/* The extra stop of a module with a sparse Newton matrix (many bodies): the error left
+   after the iterate, estimated from the rate theta = |dz| / |dz_prev|, is <= tol (1 + |z|).
+   After an iterate with a fresh J: theta^2 |dz| (quadratic convergence: C |dz|^2 with
+   C = |dz| / |dz_prev|^2, an overestimate once |dz| is round-off), and theta |dz| (the
+   error were the convergence only linear) <= HPGEN_ROUNDOFF_FLOOR (1 + |z|). With a kept J:
+   |dz| <= HPGEN_ROUNDOFF_FLOOR (1 + |z|) and te/(1 - te) |dz| with te = max(theta,
+   HPGEN_THETA_FLOOR) (a linear rate). The round-off in dz of a many-body step is itself about tol (1 + |z|)
+   and grows with the number of bodies, so the dense modules' tests (|dz| <= tol (1 + |z|);
+   a simplified bound HPGEN_SIMPLIFIED_TOL times smaller) end there only when |dz|
+   stagnates, and the stagnation of a stale J looks like a poor contraction that refreshes
+   J. Mirrored in hpgen.runtime.newton.sparse_converged. */
+static int hpgen_sparse_converged(long long it, double dn, double dprev, double zn,
+                                  double tol, int fresh_j) {
+    double th, te;
+    if (it < 2) return 0;
+    th = dn / dprev;
+    if (!(th < 1.0)) return 0;
+    if (fresh_j)
+        return th * dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn) && th * th * dn <= tol * (1.0 + zn);
+    if (!(dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn))) return 0;
+    te = th > HPGEN_THETA_FLOOR ? th : HPGEN_THETA_FLOOR;
+    return te / (1.0 - te) * dn <= tol * (1.0 + zn);
+}
+#endif
+
 /* Newton on residual(z, g, p, h) = 0 from z (in/out): z <- z - J^{-1} F.
    Full Newton evaluates J at every iterate. Simplified Newton (o->simplified) keeps the last
    J^{-1} in (lu, *lu_valid), across steps too, and refreshes it when the contraction
    rate theta = |dz_k| / |dz_{k-1}| exceeds HPGEN_THETA_MAX; if J was already evaluated in
    this step the rest of the step is full Newton (the fallback).
    Converged when |dz| <= tol (1 + |z|), or when |dz| stopped decreasing while
-   |dz| <= HPGEN_ROUNDOFF_FLOOR (1 + |z|) (round-off floor); inf-norms. Returns a status code. */
+   |dz| <= HPGEN_ROUNDOFF_FLOOR (1 + |z|) (round-off floor); inf-norms; with HPGEN_SPARSE also
+   by hpgen_sparse_converged. Returns a status code. */
 static int hpgen_newton(const double* g, const double* p, const double* hv, double* z,
                         const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
                         long long* iters, long long* jacs, double* rnorm) {
@@ -44,6 +71,9 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
         zn = hpgen_norm_inf(z, HPGEN_NZ);
         if (!isfinite(dn) || !isfinite(zn)) return HPGEN_NONFINITE;
         if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)) return HPGEN_OK;
+#if HPGEN_SPARSE
+        if (hpgen_sparse_converged(it, dn, dprev, zn, o->tol, full)) return HPGEN_OK;
+#endif
         if (full) {
             /* quadratic convergence: the error left after dn <= tol is about C tol^2 */
             if (dn <= o->tol * (1.0 + zn)) return HPGEN_OK;
@@ -96,6 +126,9 @@ static int hpgen_newton_full(const double* g, const double* p, const double* hv,
             code = HPGEN_OK; break;
         }
         if (dn <= tol * (1.0 + zn)) { code = HPGEN_OK; break; }
+#if HPGEN_SPARSE
+        if (hpgen_sparse_converged(it, dn, dprev, zn, tol, 1)) { code = HPGEN_OK; break; }
+#endif
         dprev = dn;
     }
     if (it > maxit) it = maxit;

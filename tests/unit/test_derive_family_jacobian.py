@@ -1,0 +1,79 @@
+"""The family step's Newton matrix assembled from per-body and per-joint blocks
+(hpgen.derive.family_jacobian) against casadi.jacobian of the same mapped residual
+(hpgen.derive.family_map): equal pattern, equal values to round-off at a random point, for
+interior bodies too (N = 5), and an MX function whose size does not grow with N."""
+from __future__ import annotations
+
+import casadi as ca
+import numpy as np
+import pytest
+
+from hpgen.derive.family import _functions
+from hpgen.derive.family_jacobian import assembled_jacobian
+from hpgen.derive.family_map import mapped_step_parts
+from hpgen.model import load_model_text
+from hpgen.tableaus import resolve_tableau
+from tests.conftest import EXAMPLES
+
+CHAIN = (EXAMPLES / "pendulum_chain.yaml").read_text()
+
+
+def functions(n: int, tab: str, rk: str):
+    """(J assembled, J by casadi.jacobian) as Functions of (z, G, P, h)."""
+    model = load_model_text(CHAIN.replace("{N: 2,", "{N: %d," % n))
+    funcs = _functions(model, resolve_tableau(tab), "cay", rk)
+    body, steps = funcs[0], funcs[3]
+    nzb = next(iter(steps.values()))["nz"]
+    m = sum(len(j.rows) for j in model.family.local.joints)
+    G, P = ca.MX.sym("G", body.n * body.n, n), ca.MX.sym("P", body.d, n)
+    h, z = ca.MX.sym("h"), ca.MX.sym("z", nzb * n + 2 * m)
+    eqs, parts = mapped_step_parts(model, funcs, G, P, h, z, ca.MX.sym("xi", body.d * n))
+    args = [z, G, P, h]
+    return (ca.Function("assembled", args, [assembled_jacobian(model, funcs, parts)]),
+            ca.Function("reference", args, [ca.jacobian(eqs.residual, z)]))
+
+
+def point(n: int, nz: int, seed: int):
+    rng = np.random.default_rng(seed)
+    G = np.zeros((16, n))
+    for k in range(n):
+        w = rng.uniform(-0.5, 0.5, 3)
+        W = np.array([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
+        g = np.eye(4)
+        g[:3, :3] = np.linalg.solve(np.eye(3) - W / 2, np.eye(3) + W / 2)
+        g[:3, 3] = rng.uniform(-0.3, 0.3, 3)
+        G[:, k] = g.ravel(order="F")
+    return [0.3 * rng.standard_normal(nz), G, rng.standard_normal((6, n)), 0.01]
+
+
+@pytest.mark.parametrize("tab,rk", [("stormer-verlet", "truncated"), ("gauss2", "exact")])
+def test_assembled_jacobian_equals_casadi_jacobian(tab, rk):
+    n = 5
+    fa, fr = functions(n, tab, rk)
+    assert fa.sparsity_out(0) == fr.sparsity_out(0)
+    args = point(n, fa.size1_in(0), 11)
+    A = np.array(ca.densify(fa(*args)))
+    R = np.array(ca.densify(fr(*args)))
+    assert np.abs(A - R).max() <= 1e-13 * (1.0 + np.abs(R).max())
+    # the assembly's work array is a fraction of the directional sweeps'
+    assert fa.sz_w() < 0.5 * fr.sz_w()
+
+
+def test_assembled_jacobian_does_not_grow_with_the_bodies():
+    sizes = [functions(n, "stormer-verlet", "truncated")[0].n_instructions() for n in (3, 6)]
+    assert sizes[0] == sizes[1]
+
+
+def test_blocks_at_the_same_place_add_up():
+    from hpgen.derive.family_jacobian import _place
+    sp = ca.Sparsity.lower(2)
+    vals = np.arange(1.0, 1.0 + 3 * sp.nnz())
+    M = ca.MX.sym("M", ca.horzcat(*[ca.DM(sp, 1.0)] * 3).sparsity())
+    places = [(0, 0), (2, 1), (0, 0)]
+    f = ca.Function("f", [M], [_place(M, sp, places, (4, 3))])
+    got = np.array(ca.densify(f(ca.DM(M.sparsity(), vals))))
+    want = np.zeros((4, 3))
+    for t, (r, c) in enumerate(places):
+        block = np.array(ca.densify(ca.DM(sp, vals[3 * t:3 * t + 3])))
+        want[r:r + 2, c:c + 2] += block
+    assert np.array_equal(got, want)
