@@ -88,6 +88,43 @@ def is_valid(entry: Path) -> bool:
     return _bad_files(entry) == []
 
 
+def has_files(entry: Path, names) -> bool:
+    """True when the entry is valid (is_valid) and its manifest lists every one of ``names``
+    (a backend's source that a compile for the other backend did not write is not listed)."""
+    try:
+        listed = json.loads((Path(entry) / MANIFEST).read_text())["files"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return False
+    return isinstance(listed, dict) and all(n in listed for n in names) and is_valid(entry)
+
+
+def add_files(entry: Path, files: dict[str, bytes | str]) -> None:
+    """Add ``files`` to a valid entry: each written to a temporary file and renamed into
+    place, then the manifest, extended by their digests, replaced the same way. Until the
+    manifest lists a file, readers treat it as missing (has_files), so a write cut short
+    leaves at most an unlisted file that the next add replaces. The caller holds the entry's
+    lock (``locked``)."""
+    entry = Path(entry)
+    manifest = json.loads((entry / MANIFEST).read_text())
+    for name, data in sorted(files.items()):
+        _replace(entry / name, data.encode() if isinstance(data, str) else data)
+        manifest["files"][name] = _digest(entry / name)
+    _replace(entry / MANIFEST, (json.dumps(manifest, indent=1, sort_keys=True) + "\n").encode())
+
+
+def _replace(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` atomically (a temporary file beside it, renamed)."""
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.tmp-", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data)
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise
+
+
 def check_sources(module_dir) -> None:
     """Raise ModelError when ``module_dir`` has a MANIFEST.json and a file it lists is
     missing or differs from its recorded sha256 (e.g. kernels.c edited by hand); a directory

@@ -8,10 +8,12 @@ not dense) so that every exported ``hpgen_kernel_<name>`` follows the DiscreteSt
 """
 from __future__ import annotations
 
+import re
+
 import casadi
 
 from .contract import CodegenError, dense_positions
-from .sparse import aux_function, jacobian_sparsity
+from .sparse import AUX_FUNCTION, aux_function, jacobian_sparsity
 
 #: CasADi CodeGenerator options. with_mem False: no memory objects, no static mutable state.
 CG_OPTIONS = {"casadi_real": "double", "casadi_int": "long long int", "with_mem": False,
@@ -28,15 +30,24 @@ _INLINE_MINMAX = {"  return fmin(x, y);\n": "  return (x < y || y != y) ? x : y;
 #: the (largest) Jacobian code in kernels.c halves gcc's time on big steps.
 C_FROM_FUSED = {"jacobian": ("residual_jacobian", 1)}
 
+#: kernels no run calls per step or per record: linearize's partials and the kernels Python
+#: calls one point at a time. Their CasADi functions, and the functions only they call, are
+#: compiled at COLD_OPTIMIZE (gcc spends most of a family module's compile on -O3 of CasADi's
+#: code; -O1 keeps IEEE semantics, so their results are unchanged)
+COLD_KERNELS = ("legendre", "hessian", "energy", "momentum", "defect", "step_partials")
+COLD_OPTIMIZE = "O1"
+
 #: op codes whose CasADi C output does not compile as C99 (no erfinv in <math.h>)
 _C_UNSUPPORTED = {casadi.OP_ERFINV: "erfinv"}
 
 
-def casadi_c_code(step, module: str) -> str:
+def casadi_c_code(step, module: str, mark_cold: bool = False) -> str:
     """CasADi's C for all kernels of ``step`` in one translation unit (a string).
 
     Internal CasADi symbols get the prefix ``hpgen_<module>_``; the kernels.c template hides
-    all of CasADi's symbols (GCC visibility) and exports only ``hpgen_*``.
+    all of CasADi's symbols (GCC visibility) and exports only ``hpgen_*``. Functions printed
+    twice are merged (merge_duplicate_functions); ``mark_cold``: the functions of
+    COLD_KERNELS only are marked for COLD_OPTIMIZE (mark_cold_functions).
     """
     for k in step.kernels:
         f = k.function
@@ -53,7 +64,12 @@ def casadi_c_code(step, module: str) -> str:
     sp = jacobian_sparsity(step)
     if sp is not None:       # a sparse J: casadi_qr, casadi_qr_solve for the runtime's Newton
         cg.add(aux_function(sp))
-    code = cg.dump()
+    code = merge_duplicate_functions(cg.dump())
+    if mark_cold:
+        cold = [k.function.name() for k in step.kernels if k.name in COLD_KERNELS]
+        if sp is not None:       # printed for the casadi_qr helpers it brings; never called
+            cold.append(AUX_FUNCTION)
+        code = mark_cold_functions(code, cold)
     for call, inline in _INLINE_MINMAX.items():
         code = code.replace(call, inline)
     if not code.endswith("\n"):
@@ -87,3 +103,105 @@ def c_kernel_context(kernel, nz_variant: bool = False) -> dict:
             "inputs": [_arg(f, i, False, kernel.inputs[i]) for i in range(f.n_in())],
             "outputs": [_arg(f, i, True, kernel.outputs[i]) for i in range(f.n_out())],
             "work": work_sizes(f)}
+
+
+_FUNCTION = re.compile(r"static int (casadi_f[0-9]+)\(")
+_CALLEE = re.compile(r"\bcasadi_f[0-9]+\b")
+
+
+def merge_duplicate_functions(code: str) -> str:
+    """CasADi's C with every internal function (``static int casadi_f<k>``) whose body is
+    the same text as an earlier one's removed, and its calls made to the earlier one.
+
+    A family's step kernels call the same per-body and per-joint functions (their derivatives
+    too) from several kernels, each call site from its own casadi.Function object, so the
+    code generator prints each body once per object. Bodies are compared after the merges
+    made so far (CasADi prints a callee before its callers), so duplicated call trees merge
+    whole. Code without duplicates is returned unchanged."""
+    lines = code.split("\n")
+    keep = [True] * len(lines)
+    rename: dict[str, str] = {}
+    first: dict[str, str] = {}
+
+    def renamed(text: str) -> str:
+        return _CALLEE.sub(lambda m: rename.get(m.group(0), m.group(0)), text)
+
+    i = 0
+    while i < len(lines):
+        m = _FUNCTION.match(lines[i])
+        if m is None:
+            i += 1
+            continue
+        end = lines.index("}", i)
+        body = renamed("\n".join(lines[i + 1:end]))
+        name = m.group(1)
+        if body in first:
+            rename[name] = first[body]
+            start = i - 1 if i > 0 and lines[i - 1].startswith("/* ") and \
+                lines[i - 1].endswith(" */") else i
+            keep[start:end + 1] = [False] * (end + 1 - start)
+        else:
+            first[body] = name
+        i = end + 1
+    if not rename:
+        return code
+    for j, line in enumerate(lines):    # the merged functions' name macros
+        if line.startswith("#define casadi_f") and line.split()[1] in rename:
+            keep[j] = False
+    return "\n".join(renamed(line) for line, k in zip(lines, keep) if k)
+
+
+_EXPORT = re.compile(r"CASADI_SYMBOL_EXPORT int ([A-Za-z0-9_]+)\(const casadi_real\*\* arg")
+
+
+def mark_cold_functions(code: str, cold_roots) -> str:
+    """CasADi's C with each internal function that only the functions ``cold_roots`` (casadi
+    names of top-level functions) reach wrapped in HPGEN_COLD_BEGIN / HPGEN_COLD_END (GCC:
+    compiled at COLD_OPTIMIZE; kernels.c.j2 defines them). Code that no cold root reaches
+    alone is returned unchanged."""
+    lines = code.split("\n")
+    blocks: dict[str, tuple[int, int]] = {}
+    calls: dict[str, set[str]] = {}
+    roots: dict[str, str] = {}
+    i = 0
+    while i < len(lines):
+        m = _FUNCTION.match(lines[i])
+        e = _EXPORT.match(lines[i])
+        if m is not None:
+            end = lines.index("}", i)
+            blocks[m.group(1)] = (i, end)
+            calls[m.group(1)] = set(_CALLEE.findall("\n".join(lines[i + 1:end])))
+            i = end + 1
+            continue
+        if e is not None and i + 1 < len(lines):
+            target = _CALLEE.search(lines[i + 1])
+            if target is not None:
+                roots[e.group(1)] = target.group(0)
+        i += 1
+    cold_roots = set(cold_roots)
+    hot: set[str] = set()
+    stack = [f for name, f in roots.items() if name not in cold_roots]
+    stack += [f for f in blocks if f not in roots.values()
+              and not any(f in c for c in calls.values())]      # reached by the runtime only
+    while stack:
+        f = stack.pop()
+        if f not in hot:
+            hot.add(f)
+            stack.extend(calls.get(f, ()))
+    cold = [f for f in blocks if f not in hot]
+    if not cold:
+        return code
+    begin, end = {}, {}
+    for f in cold:
+        first, last = blocks[f]
+        if first > 0 and lines[first - 1].startswith("/* ") and lines[first - 1].endswith(" */"):
+            first -= 1
+        begin[first], end[last] = True, True
+    out = []
+    for j, line in enumerate(lines):
+        if j in begin:
+            out.append("HPGEN_COLD_BEGIN")
+        out.append(line)
+        if j in end:
+            out.append("HPGEN_COLD_END")
+    return "\n".join(out)
