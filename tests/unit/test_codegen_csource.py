@@ -1,0 +1,91 @@
+"""kernels.c's CasADi part: functions printed twice are merged, the functions of the cold
+kernels only are marked for -O1, and kernels with a large CasADi work array share a
+per-thread heap buffer; each leaves the results bitwise unchanged."""
+from __future__ import annotations
+
+import shutil
+
+import numpy as np
+import pytest
+
+import hpgen
+from importlib import import_module
+from hpgen.codegen.csource import mark_cold_functions, merge_duplicate_functions
+
+from conftest import FREE_BODY
+from _toy_step import emitted
+
+emit_module = import_module("hpgen.codegen.emit")
+SIG = "(const casadi_real** arg, casadi_real** res, casadi_int* iw, casadi_real* w, int mem) {"
+
+
+def _fn(k: int, body: str, comment: str | None = None) -> str:
+    head = f"/* {comment} */\n" if comment else ""
+    return f"{head}static int casadi_f{k}{SIG}\n{body}\n}}\n"
+
+
+def _export(name: str, k: int) -> str:
+    return (f"CASADI_SYMBOL_EXPORT int {name}(const casadi_real** arg, casadi_real** res, "
+            f"casadi_int* iw, casadi_real* w, int mem){{\n  return casadi_f{k}(arg, res, iw, w, "
+            "mem);\n}\n")
+
+
+DEFINES = "".join(f"#define casadi_f{k} CASADI_PREFIX(f{k})\n" for k in range(6))
+CODE = DEFINES + "".join([
+    _fn(0, "  res[0][0]=arg[0][0];", "body:(i0)->(o0)"),
+    _fn(1, "  res[0][0]=arg[0][0];", "body_again:(i0)->(o0)"),       # = f0
+    _fn(2, "  if (casadi_f0(arg, res, iw, w, 0)) return 1;", "uses f0"),
+    _fn(3, "  if (casadi_f1(arg, res, iw, w, 0)) return 1;", "uses f1"),  # = f2 after f1 -> f0
+    _fn(4, "  if (casadi_f3(arg, res, iw, w, 0)) return 1;\n  res[0][1]=2.;", "partials"),
+    _fn(5, "  res[0][0]=3.;", "analysis"),
+    _export("step", 2), _export("partials", 4), _export("energy", 5)])
+
+
+def test_duplicate_functions_merge_with_their_callers():
+    merged = merge_duplicate_functions(CODE)
+    assert "casadi_f1" not in merged and "casadi_f3" not in merged
+    assert "body_again" not in merged and "uses f1" not in merged
+    assert merged.count(SIG) == 4
+    assert "if (casadi_f2(arg, res, iw, w, 0)) return 1;\n  res[0][1]=2.;" in merged
+    assert merge_duplicate_functions(merged) == merged       # nothing left to merge
+    single = _fn(0, "  res[0][0]=1.;") + _fn(1, "  res[0][0]=2.;")
+    assert merge_duplicate_functions(single) == single
+
+
+def test_only_functions_no_hot_kernel_reaches_are_marked_cold():
+    merged = merge_duplicate_functions(CODE)
+    marked = mark_cold_functions(merged, ["partials", "energy"])
+    blocks = marked.split("HPGEN_COLD_BEGIN\n")[1:]
+    assert len(blocks) == 2 and all("HPGEN_COLD_END" in b for b in blocks)
+    cold = [b.split("HPGEN_COLD_END")[0] for b in blocks]
+    assert cold[0].startswith("/* partials */\nstatic int casadi_f4(")
+    assert cold[1].startswith("/* analysis */\nstatic int casadi_f5(")
+    # f0, f2 are the step's (partials calls them too): left to the module's -O
+    assert mark_cold_functions(merged, []) == merged
+    assert mark_cold_functions(merged, ["step", "partials", "energy"]).count("BEGIN") == 4
+
+
+def test_small_modules_print_no_cold_marks_and_no_shared_work():
+    c = emitted()[1].file("kernels.c")
+    assert "HPGEN_COLD" not in c and "hpgen_big_work" not in c and "pthread" not in c
+
+
+@pytest.mark.skipif(shutil.which("cc") is None, reason="no C compiler")
+def test_the_per_thread_work_buffer_gives_the_same_runs(tmp_path, model_file, monkeypatch):
+    path = model_file(FREE_BODY.replace("name: body", "name: body_big_work"))
+    ref = hpgen.compile(path, cache_dir=tmp_path / "stack", backend="c")
+    monkeypatch.setattr(emit_module, "BIG_WORK_MIN", 0)        # every kernel on the buffer
+    big = hpgen.build(path, cache_dir=tmp_path / "heap", backend="c")
+    source = (big.module_dir / "kernels.c").read_text()
+    assert "casadi_real* w = hpgen_big_work();" in source
+    assert source.count("free(") == 2          # hpgen_big_work's and the unload's only
+    integ = big.load()
+    g0, mu0 = np.eye(3), np.array([0.4, 0.1, 0.8])
+    a = ref.simulate(g0, 0.05, 40, mu0=mu0)
+    b = integ.simulate(g0, 0.05, 40, mu0=mu0)
+    assert np.array_equal(a.g, b.g) and np.array_equal(a.mu, b.mu)
+    batch = np.stack([mu0 * (1 + 0.1 * k) for k in range(6)])
+    ra = ref.simulate_batch(g0, 0.05, 40, mu0=batch, threads=2)
+    rb = integ.simulate_batch(g0, 0.05, 40, mu0=batch, threads=2)
+    assert all(np.array_equal(x.g, y.g) and np.array_equal(x.mu, y.mu) for x, y in zip(ra, rb))
+    assert np.array_equal(ref.linearize(a), integ.linearize(b))
