@@ -41,13 +41,14 @@ COLD_OPTIMIZE = "O1"
 _C_UNSUPPORTED = {casadi.OP_ERFINV: "erfinv"}
 
 
-def casadi_c_code(step, module: str, mark_cold: bool = False) -> str:
+def casadi_c_code(step, module: str, family: bool = False) -> str:
     """CasADi's C for all kernels of ``step`` in one translation unit (a string).
 
     Internal CasADi symbols get the prefix ``hpgen_<module>_``; the kernels.c template hides
-    all of CasADi's symbols (GCC visibility) and exports only ``hpgen_*``. Functions printed
-    twice are merged (merge_duplicate_functions); ``mark_cold``: the functions of
-    COLD_KERNELS only are marked for COLD_OPTIMIZE (mark_cold_functions).
+    all of CasADi's symbols (GCC visibility) and exports only ``hpgen_*``. ``family``: the
+    kernels are a family's (MX, calling per-body and per-joint functions): the functions
+    printed twice are merged (merge_duplicate_functions) and those of COLD_KERNELS only
+    marked for COLD_OPTIMIZE (mark_cold_functions); other modules' code is CasADi's as is.
     """
     for k in step.kernels:
         f = k.function
@@ -64,8 +65,9 @@ def casadi_c_code(step, module: str, mark_cold: bool = False) -> str:
     sp = jacobian_sparsity(step)
     if sp is not None:       # a sparse J: casadi_qr, casadi_qr_solve for the runtime's Newton
         cg.add(aux_function(sp))
-    code = merge_duplicate_functions(cg.dump())
-    if mark_cold:
+    code = cg.dump()
+    if family:
+        code = merge_duplicate_functions(code)
         cold = [k.function.name() for k in step.kernels if k.name in COLD_KERNELS]
         if sp is not None:       # printed for the casadi_qr helpers it brings; never called
             cold.append(AUX_FUNCTION)

@@ -52,6 +52,8 @@ SAFE_UNARY = (("exp", "exp"), ("log", "log"), ("sqrt", "sqrt"), ("sin", "sin"),
 #: FLATTEN_MAX_INSTRUCTIONS they are inlined into the step (faster, compile time stays small)
 STEP_KERNELS = ("residual", "residual_jacobian", "update", "margin")
 FLATTEN_MAX_INSTRUCTIONS = 2000
+#: what _step_instructions counts for a step over MX (more than any limit)
+MX_INSTRUCTIONS = 10 ** 9
 #: a kernel whose CasADi work array has more doubles than this takes it from a per-thread
 #: heap buffer (kernels.c.j2's hpgen_big_work), not from the stack
 BIG_WORK_MIN = 65536
@@ -147,7 +149,7 @@ def _step_instructions(step) -> int:
     whose calls stand for every body's code) counts as more than any limit."""
     fs = [step.kernel(k).function for k in STEP_KERNELS]
     if any(f.is_a("MXFunction") for f in fs):
-        return 10 ** 9
+        return MX_INSTRUCTIONS
     return sum(f.n_instructions() for f in fs)
 
 
@@ -197,8 +199,10 @@ def _c_context(step, info: dict, common: dict) -> dict:
     big = [k.function.sz_w() + 1 for k in step.kernels
            if k.name not in C_FROM_FUSED and k.function.sz_w() > BIG_WORK_MIN]
     return dict(common, nz=step.nz, hash=info["hash"],
-                # a flattened step's module is small: its cold kernels compile in no time
-                casadi_code=casadi_c_code(step, info["module"], mark_cold=not flatten),
+                # a family's (MX) module: duplicated callees and the cold kernels take most
+                # of gcc's time; an SX module's kernels.c stays CasADi's as is
+                casadi_code=casadi_c_code(step, info["module"],
+                                          family=instructions >= MX_INSTRUCTIONS),
                 cold_optimize=COLD_OPTIMIZE,
                 big_work=max(big, default=0), big_work_min=BIG_WORK_MIN,
                 kernels=[c_kernel_context(k, sparse is not None and

@@ -89,3 +89,25 @@ def test_the_per_thread_work_buffer_gives_the_same_runs(tmp_path, model_file, mo
     rb = integ.simulate_batch(g0, 0.05, 40, mu0=batch, threads=2)
     assert all(np.array_equal(x.g, y.g) and np.array_equal(x.mu, y.mu) for x, y in zip(ra, rb))
     assert np.array_equal(ref.linearize(a), integ.linearize(b))
+
+
+@pytest.mark.skipif(shutil.which("cc") is None, reason="no C compiler")
+def test_a_family_module_merges_and_marks_with_bitwise_the_same_runs(tmp_path, monkeypatch):
+    from conftest import EXAMPLES
+    from hpgen.model import load_model
+    chain = EXAMPLES / "pendulum_chain.yaml"
+    new = hpgen.build(chain, cache_dir=tmp_path / "new", backend="c")
+    source = (new.module_dir / "kernels.c").read_text()
+    assert "HPGEN_COLD_BEGIN\n/* step_partials:" in source
+    bodies = [b.split("\n}\n")[0] for b in source.split(SIG)[1:]]
+    assert len(bodies) == len(set(bodies)), "a CasADi function is printed twice"
+    csource = import_module("hpgen.codegen.csource")
+    monkeypatch.setattr(csource, "merge_duplicate_functions", lambda code: code)
+    monkeypatch.setattr(csource, "mark_cold_functions", lambda code, roots: code)
+    old = hpgen.build(chain, cache_dir=tmp_path / "old", backend="c")
+    assert "HPGEN_COLD" not in (old.module_dir / "kernels.c").read_text()
+    sc = load_model(chain).scene
+    a = old.load().simulate(sc.g0, sc.h, 30, xi0=sc.xi0)
+    b = new.load().simulate(sc.g0, sc.h, 30, xi0=sc.xi0)
+    assert np.array_equal(a.g, b.g) and np.array_equal(a.mu, b.mu)
+    assert np.array_equal(old.load().linearize(a), new.load().linearize(b))
