@@ -19,6 +19,10 @@ The cache has two levels (content-addressed, as pystencils and FFCx do):
   (hpgen.runtime.build), so a derivation that emits the same C reuses the built library.
 A cache hit imports nothing of the compile-time stack (sympy, casadi, jinja2).
 
+An entry holds the sources of the backends compiled so far (BACKEND_SOURCES): a C compile
+writes kernels.c, not kernels.py; the first compile for the other backend derives again and
+adds its source to the entry (hpgen.cache.add_files); ``out`` copies get both.
+
 ``build`` is the same compile returning what it produced (a CompiledModule: the module
 directory, its meta.json, whether the cache served it, and the derivation: model, resolved
 tableau/tau/rkmk and DiscreteStep), so that consumers (hpgen check, hpgen bench) reuse it

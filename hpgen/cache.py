@@ -7,7 +7,8 @@ Layout (see hpgen.api for the keys):
                                   and flags, each with a record of its own sha256
 Entries are written into a temporary directory and renamed into place (atomic); a lock
 file per key (fcntl.flock) makes concurrent compiles of the same input share one entry.
-A corrupted entry (a file missing or changed) is detected and rebuilt. A module directory
+A corrupted entry (a file missing or changed) is detected and rebuilt; a file added to a valid
+entry later (the other backend's source, ``add_files``) counts once its manifest lists it. A module directory
 with a MANIFEST.json (a cache entry, ``hpgen compile -o`` output) is checked against it
 before it is built or loaded (``check_sources``). A cache directory that cannot be written
 raises CacheUnwritable; the caller then builds in a private temporary directory.

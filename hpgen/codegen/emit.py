@@ -5,6 +5,8 @@ Generated files (relative paths):
                compiled with the static C runtime it includes (hpgen/runtime/c: Newton, the
                step, the runs; the contract hpgen.abi as C)
   kernels.py   the Python backend printed from the same SX algorithms (templates/kernels.py.j2)
+               (emit(sources=...) prints either backend's source alone: a compile writes
+               the one its backend needs, hpgen.api)
   __init__.py  lazy wrapper: integrator(backend=None), step(g, p, h), simulate(**kw),
                record(**kw)
   meta.json    dimensions, options, kernel signatures, CasADi work sizes (sorted keys)
