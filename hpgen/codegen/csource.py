@@ -47,8 +47,8 @@ def casadi_c_code(step, module: str, family: bool = False) -> str:
     Internal CasADi symbols get the prefix ``hpgen_<module>_``; the kernels.c template hides
     all of CasADi's symbols (GCC visibility) and exports only ``hpgen_*``. ``family``: the
     kernels are a family's (MX, calling per-body and per-joint functions): the functions
-    printed twice are merged (merge_duplicate_functions) and those of COLD_KERNELS only
-    marked for COLD_OPTIMIZE (mark_cold_functions); other modules' code is CasADi's as is.
+    only COLD_KERNELS reach are marked for COLD_OPTIMIZE (mark_cold_functions); the code is
+    otherwise CasADi's as is.
     """
     for k in step.kernels:
         f = k.function
@@ -67,11 +67,12 @@ def casadi_c_code(step, module: str, family: bool = False) -> str:
         cg.add(aux_function(sp))
     code = cg.dump()
     if family:
-        code = merge_duplicate_functions(code)
-        cold = [k.function.name() for k in step.kernels if k.name in COLD_KERNELS]
+        roots = [k.function.name() for k in step.kernels if k.name in COLD_KERNELS]
         if sp is not None:       # printed for the casadi_qr helpers it brings; never called
-            cold.append(AUX_FUNCTION)
-        code = mark_cold_functions(code, cold)
+            roots.append(AUX_FUNCTION)
+        # the step's functions stay as CasADi prints them; step_partials' copies of the
+        # per-body derivatives (printed once per calling kernel) go to the cold level
+        code = mark_cold_functions(code, roots)
     for call, inline in _INLINE_MINMAX.items():
         code = code.replace(call, inline)
     if not code.endswith("\n"):
@@ -109,59 +110,13 @@ def c_kernel_context(kernel, nz_variant: bool = False) -> dict:
 
 _FUNCTION = re.compile(r"static int (casadi_f[0-9]+)\(")
 _CALLEE = re.compile(r"\bcasadi_f[0-9]+\b")
-
-
-def merge_duplicate_functions(code: str) -> str:
-    """CasADi's C with every internal function (``static int casadi_f<k>``) whose body is
-    the same text as an earlier one's removed, and its calls made to the earlier one.
-
-    A family's step kernels call the same per-body and per-joint functions (their derivatives
-    too) from several kernels, each call site from its own casadi.Function object, so the
-    code generator prints each body once per object. Bodies are compared after the merges
-    made so far (CasADi prints a callee before its callers), so duplicated call trees merge
-    whole. Code without duplicates is returned unchanged."""
-    lines = code.split("\n")
-    keep = [True] * len(lines)
-    rename: dict[str, str] = {}
-    first: dict[str, str] = {}
-
-    def renamed(text: str) -> str:
-        return _CALLEE.sub(lambda m: rename.get(m.group(0), m.group(0)), text)
-
-    i = 0
-    while i < len(lines):
-        m = _FUNCTION.match(lines[i])
-        if m is None:
-            i += 1
-            continue
-        end = lines.index("}", i)
-        body = renamed("\n".join(lines[i + 1:end]))
-        name = m.group(1)
-        if body in first:
-            rename[name] = first[body]
-            start = i - 1 if i > 0 and lines[i - 1].startswith("/* ") and \
-                lines[i - 1].endswith(" */") else i
-            keep[start:end + 1] = [False] * (end + 1 - start)
-        else:
-            first[body] = name
-        i = end + 1
-    if not rename:
-        return code
-    for j, line in enumerate(lines):    # the merged functions' name macros
-        if line.startswith("#define casadi_f") and line.split()[1] in rename:
-            keep[j] = False
-    return "\n".join(renamed(line) for line, k in zip(lines, keep) if k)
-
-
 _EXPORT = re.compile(r"CASADI_SYMBOL_EXPORT int ([A-Za-z0-9_]+)\(const casadi_real\*\* arg")
 
 
-def mark_cold_functions(code: str, cold_roots) -> str:
-    """CasADi's C with each internal function that only the functions ``cold_roots`` (casadi
-    names of top-level functions) reach wrapped in HPGEN_COLD_BEGIN / HPGEN_COLD_END (GCC:
-    compiled at COLD_OPTIMIZE; kernels.c.j2 defines them). Code that no cold root reaches
-    alone is returned unchanged."""
-    lines = code.split("\n")
+def _functions(lines: list[str]):
+    """(blocks, calls, roots) of CasADi's C as lines: each internal function's (first line,
+    closing line), the internal functions each calls, and the internal function each
+    exported top-level function (by name) calls."""
     blocks: dict[str, tuple[int, int]] = {}
     calls: dict[str, set[str]] = {}
     roots: dict[str, str] = {}
@@ -180,25 +135,44 @@ def mark_cold_functions(code: str, cold_roots) -> str:
             if target is not None:
                 roots[e.group(1)] = target.group(0)
         i += 1
+    return blocks, calls, roots
+
+
+def cold_functions(code: str, cold_roots) -> set[str]:
+    """The internal functions (``casadi_f<k>``) of CasADi's C that only the top-level
+    functions named in ``cold_roots`` reach (not another top-level function, nor the runtime:
+    a function nobody in the code calls counts as the runtime's)."""
+    blocks, calls, roots = _functions(code.split("\n"))
     cold_roots = set(cold_roots)
+    called = set().union(*calls.values()) if calls else set()
     hot: set[str] = set()
     stack = [f for name, f in roots.items() if name not in cold_roots]
-    stack += [f for f in blocks if f not in roots.values()
-              and not any(f in c for c in calls.values())]      # reached by the runtime only
+    stack += [f for f in blocks if f not in roots.values() and f not in called]
     while stack:
         f = stack.pop()
         if f not in hot:
             hot.add(f)
             stack.extend(calls.get(f, ()))
-    cold = [f for f in blocks if f not in hot]
+    return {f for f in blocks if f not in hot}
+
+
+def mark_cold_functions(code: str, cold_roots) -> str:
+    """CasADi's C with each internal function that only the functions ``cold_roots`` (casadi
+    names of top-level functions) reach (cold_functions) wrapped in HPGEN_COLD_BEGIN /
+    HPGEN_COLD_END (GCC: compiled at COLD_OPTIMIZE; kernels.c.j2 defines them). Code that no
+    cold root reaches alone is returned unchanged."""
+    cold = cold_functions(code, cold_roots)
     if not cold:
         return code
-    begin, end = {}, {}
+    lines = code.split("\n")
+    blocks = _functions(lines)[0]
+    begin, end = set(), set()
     for f in cold:
         first, last = blocks[f]
         if first > 0 and lines[first - 1].startswith("/* ") and lines[first - 1].endswith(" */"):
             first -= 1
-        begin[first], end[last] = True, True
+        begin.add(first)
+        end.add(last)
     out = []
     for j, line in enumerate(lines):
         if j in begin:
