@@ -33,7 +33,7 @@ from .. import abi
 from ..version import __version__
 from ..schemes import BACKENDS, OPTION_KEYS
 from .contract import HASH_RE, MODULE_RE, CodegenError, check_step
-from .csource import C_FROM_FUSED, COLD_OPTIMIZE, c_kernel_context, casadi_c_code, work_sizes
+from .csource import COLD_OPTIMIZE, c_kernel_context, casadi_c_code, work_sizes
 from . import pyiterate, pylinear
 from .sparse import meta_entry, sparse_context
 from .lanes import lanes_context
@@ -56,9 +56,6 @@ STEP_KERNELS = ("residual", "residual_jacobian", "update", "margin")
 FLATTEN_MAX_INSTRUCTIONS = 2000
 #: what _step_instructions counts for a step over MX (more than any limit)
 MX_INSTRUCTIONS = 10 ** 9
-#: a kernel whose CasADi work array has more doubles than this takes it from a per-thread
-#: heap buffer (kernels.c.j2's hpgen_big_work), not from the stack
-BIG_WORK_MIN = 65536
 _SAFE_CHARS = re.compile(r"[^A-Za-z0-9 _.,:;=+\-()\[\]{}<>#@%&!?'|^~$]")
 
 
@@ -198,15 +195,12 @@ def _c_context(step, info: dict, common: dict) -> dict:
     instructions = _step_instructions(step)
     sparse = sparse_context(step)
     flatten = instructions <= FLATTEN_MAX_INSTRUCTIONS
-    big = [k.function.sz_w() + 1 for k in step.kernels
-           if k.name not in C_FROM_FUSED and k.function.sz_w() > BIG_WORK_MIN]
     return dict(common, nz=step.nz, hash=info["hash"],
                 # a family's (MX) module: duplicated callees and the cold kernels take most
                 # of gcc's time; an SX module's kernels.c stays CasADi's as is
                 casadi_code=casadi_c_code(step, info["module"],
                                           family=instructions >= MX_INSTRUCTIONS),
                 cold_optimize=COLD_OPTIMIZE,
-                big_work=max(big, default=0), big_work_min=BIG_WORK_MIN,
                 kernels=[c_kernel_context(k, sparse is not None and
                                           k.name == "residual_jacobian")
                          for k in step.kernels],
