@@ -19,6 +19,10 @@ The cache has two levels (content-addressed, as pystencils and FFCx do):
   (hpgen.runtime.build), so a derivation that emits the same C reuses the built library.
 A cache hit imports nothing of the compile-time stack (sympy, casadi, jinja2).
 
+An entry holds the sources of the backends compiled so far (BACKEND_SOURCES): a C compile
+writes kernels.c, not kernels.py; the first compile for the other backend derives again and
+adds its source to the entry (hpgen.cache.add_files); ``out`` copies get both.
+
 ``build`` is the same compile returning what it produced (a CompiledModule: the module
 directory, its meta.json, whether the cache served it, and the derivation: model, resolved
 tableau/tau/rkmk and DiscreteStep), so that consumers (hpgen check, hpgen bench) reuse it
@@ -31,6 +35,7 @@ import hashlib
 import json
 import os
 import sys
+import time
 from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
@@ -149,6 +154,9 @@ class CompiledModule:
     derived: Derivation | None = None
     #: the composition the module is loaded with (the option's, else the model file's)
     compose: str | None = None
+    #: seconds this compile spent per stage ("derive", "emit", "write", "cc"; a stage that
+    #: did not run is absent)
+    timings: Mapping[str, float] = dataclasses.field(default_factory=dict)
 
     @cached_property
     def derivation(self) -> Derivation:
@@ -156,11 +164,19 @@ class CompiledModule:
             self.source, self.text, self.options)
 
     def load(self, backend=None):
-        """The runtime Integrator of the module (backend None: the compile's backend)."""
+        """The runtime Integrator of the module (backend None: the compile's backend). A
+        cache entry compiled for one backend gets the other's source on first use."""
         from .runtime import load
         o = self.options
-        return load(self.module_dir, backend=o.backend if backend is None else backend,
-                    cc=o.cc, cflags=o.cflags, compose=self.compose)
+        backend = o.backend if backend is None else backend
+        if backend != o.backend and not cache.has_files(self.module_dir,
+                                                        (BACKEND_SOURCES[backend],)):
+            cache_dir = self.module_dir.parent
+            with cache.locked(cache_dir, self.module_dir.name):
+                _add_sources(self.module_dir, self.source, self.text, self.options,
+                             (BACKEND_SOURCES[backend],), {})
+        return load(self.module_dir, backend=backend, cc=o.cc, cflags=o.cflags,
+                    compose=self.compose)
 
 
 def compile(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
@@ -347,6 +363,19 @@ def _compose_of(text: str, opts: CompileOptions) -> str | None:
     return written.get("compose") if isinstance(written, dict) else None
 
 
+#: the source each backend builds from: a cache entry holds those of the backends asked for
+#: so far (the other is generated on first use: a C compile writes no kernels.py)
+BACKEND_SOURCES = {"c": "kernels.c", "python": "kernels.py"}
+
+
+def _needed_sources(opts: CompileOptions) -> tuple[str, ...]:
+    """The backend sources a compile needs: its backend's, both when it copies the module
+    out (``-o``: a module directory loadable with either backend)."""
+    if opts.out is not None:
+        return tuple(BACKEND_SOURCES.values())
+    return (BACKEND_SOURCES[opts.backend],)
+
+
 def _cached_module(path: str, text: str, opts: CompileOptions, cache_dir: Path):
     """(CompiledModule of the cache entry, built library or None) of one compile;
     CacheUnwritable when the cache directory cannot be written and something is missing
@@ -355,23 +384,56 @@ def _cached_module(path: str, text: str, opts: CompileOptions, cache_dir: Path):
     key = _derivation_key(chash)
     entry = cache_dir / key
     derived = None
-    if not cache.is_valid(entry):
+    timings: dict[str, float] = {}
+    need = _needed_sources(opts)
+    if not cache.has_files(entry, need):
         with cache.locked(cache_dir, key):
             if not cache.is_valid(entry):
-                derived = derive_module(path, text, opts)
+                derived = _timed(timings, "derive", derive_module, path, text, opts)
+                files = _timed(timings, "emit", emit_files, derived, text, opts, chash,
+                               sources=need)
                 try:
-                    cache.write_tree(entry, emit_files(derived, text, opts, chash))
+                    _timed(timings, "write", cache.write_tree, entry, files)
                 except OSError as exc:
                     raise cache.CacheUnwritable(cache_dir, exc) from None
+            elif not cache.has_files(entry, need):
+                derived = _add_sources(entry, path, text, opts, need, timings)
     meta = json.loads((entry / "meta.json").read_text())
     library, built = None, False
     if opts.backend == "c":
         from .runtime.build import build_library, find_library
         built = find_library(entry, cc=opts.cc, cflags=opts.cflags) is None
-        library = build_library(entry, cc=opts.cc, cflags=opts.cflags,
-                                store=cache.library_store(cache_dir))
+        library = _timed(timings, "cc", build_library, entry, cc=opts.cc, cflags=opts.cflags,
+                         store=cache.library_store(cache_dir))
+        if not built:
+            del timings["cc"]
     return CompiledModule(path, text, opts, entry, meta, cached=derived is None,
-                          built=built, derived=derived), library
+                          built=built, derived=derived, timings=timings), library
+
+
+def _add_sources(entry: Path, path: str, text: str, opts: CompileOptions, need, timings):
+    """Derive again and add the backend sources ``need`` that the valid entry lacks (each
+    file atomically, listed in its manifest last); the caller holds the entry's lock.
+    Returns the Derivation."""
+    missing = tuple(name for name in need if not cache.has_files(entry, (name,)))
+    derived = _timed(timings, "derive", derive_module, path, text, opts)
+    files = _timed(timings, "emit", emit_files, derived, text, opts,
+                   content_hash(text, opts), sources=missing)
+    try:
+        _timed(timings, "write", cache.add_files, entry,
+               {name: files[name] for name in missing})
+    except OSError as exc:
+        raise cache.CacheUnwritable(entry.parent, exc) from None
+    return derived
+
+
+def _timed(timings: dict, stage: str, fn, *args, **kw):
+    """fn(*args, **kw), its wall time added to timings[stage]."""
+    t0 = time.perf_counter()
+    try:
+        return fn(*args, **kw)
+    finally:
+        timings[stage] = timings.get(stage, 0.0) + time.perf_counter() - t0
 
 
 def _same_tree(dest: Path, files: dict) -> bool:
@@ -397,7 +459,8 @@ def resolve(model_obj, opts: CompileOptions):
 
 
 def generate_files(path: str, text: str, opts: CompileOptions, key: str) -> dict[str, str]:
-    """Run the pipeline model -> derive -> codegen; the files of the generated module."""
+    """Run the pipeline model -> derive -> codegen; the files of the generated module (both
+    backends' sources)."""
     return emit_files(derive_module(path, text, opts), text, opts, key)
 
 
@@ -421,21 +484,13 @@ def derive_module(path: str, text: str, opts: CompileOptions) -> Derivation:
     return Derivation(model_obj, tab, tau, rkmk, step)
 
 
-def emit_files(d: Derivation, text: str, opts: CompileOptions, key: str) -> dict[str, str]:
-    """The files of the generated module of a derivation (codegen)."""
+def emit_files(d: Derivation, text: str, opts: CompileOptions, key: str,
+               sources=tuple(BACKEND_SOURCES.values())) -> dict[str, str]:
+    """The files of the generated module of a derivation (codegen): meta.json, __init__.py,
+    model.yaml and the backend sources named in ``sources`` (kernels.c, kernels.py)."""
     from .codegen import emit, module_name
     name = module_name(d.model.name, d.tableau.name, d.tau, d.rkmk)
     gm = emit(d.step, {"module": name, "model_name": d.model.name, "model_source": text,
                        "options": {"tableau": d.tableau.name, "tau": d.tau, "rkmk": d.rkmk},
-                       "hash": key, "backend": opts.backend})
+                       "hash": key, "backend": opts.backend}, sources=sources)
     return dict(gm.files)
-
-
-def casadi_step(integ):
-    """The step of a loaded Integrator as a casadi.Function (g, p, h, z) -> (F, g1, p1), an
-    open module's (g, p, u, params, h, z, t) -> (F, g1, p1): Integrator.casadi_step
-    (hpgen.derive.export.module_casadi_step). Imports casadi: never called on the runtime
-    path."""
-    from .derive.export import module_casadi_step
-    return module_casadi_step(getattr(integ, "module_dir", None), integ.meta,
-                              lambda *a: integ.kernel("residual", *a))

@@ -7,7 +7,8 @@ Layout (see hpgen.api for the keys):
                                   and flags, each with a record of its own sha256
 Entries are written into a temporary directory and renamed into place (atomic); a lock
 file per key (fcntl.flock) makes concurrent compiles of the same input share one entry.
-A corrupted entry (a file missing or changed) is detected and rebuilt. A module directory
+A corrupted entry (a file missing or changed) is detected and rebuilt; a file added to a valid
+entry later (the other backend's source, ``add_files``) counts once its manifest lists it. A module directory
 with a MANIFEST.json (a cache entry, ``hpgen compile -o`` output) is checked against it
 before it is built or loaded (``check_sources``). A cache directory that cannot be written
 raises CacheUnwritable; the caller then builds in a private temporary directory.
@@ -86,6 +87,43 @@ def _bad_files(module_dir: Path) -> list[str] | None:
 def is_valid(entry: Path) -> bool:
     """True when the entry exists and every file listed in its manifest is intact."""
     return _bad_files(entry) == []
+
+
+def has_files(entry: Path, names) -> bool:
+    """True when the entry is valid (is_valid) and its manifest lists every one of ``names``
+    (a backend's source that a compile for the other backend did not write is not listed)."""
+    try:
+        listed = json.loads((Path(entry) / MANIFEST).read_text())["files"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return False
+    return isinstance(listed, dict) and all(n in listed for n in names) and is_valid(entry)
+
+
+def add_files(entry: Path, files: dict[str, bytes | str]) -> None:
+    """Add ``files`` to a valid entry: each written to a temporary file and renamed into
+    place, then the manifest, extended by their digests, replaced the same way. Until the
+    manifest lists a file, readers treat it as missing (has_files), so a write cut short
+    leaves at most an unlisted file that the next add replaces. The caller holds the entry's
+    lock (``locked``)."""
+    entry = Path(entry)
+    manifest = json.loads((entry / MANIFEST).read_text())
+    for name, data in sorted(files.items()):
+        _replace(entry / name, data.encode() if isinstance(data, str) else data)
+        manifest["files"][name] = _digest(entry / name)
+    _replace(entry / MANIFEST, (json.dumps(manifest, indent=1, sort_keys=True) + "\n").encode())
+
+
+def _replace(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` atomically (a temporary file beside it, renamed)."""
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.tmp-", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data)
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise
 
 
 def check_sources(module_dir) -> None:

@@ -129,11 +129,14 @@ def _overrides(args):
 
 
 def cmd_compile(args) -> int:
-    from .api import build_module
+    from .api import build_compiled
     t0 = time.perf_counter()
-    path = build_module(args.model, _options(args, out=args.out))
+    compiled = build_compiled(args.model, _options(args, out=args.out))
+    path = compiled.module_dir
     where = "" if args.out else " (in the build cache; -o DIR writes the module there)"
-    print(f"{path}{where} ({args.backend} backend, {time.perf_counter() - t0:.2f} s)")
+    stages = ", ".join(f"{k} {v:.2f} s" for k, v in compiled.timings.items())
+    print(f"{path}{where} ({args.backend} backend, {time.perf_counter() - t0:.2f} s"
+          + (f": {stages})" if stages else ")"))
     print(_scheme_line(path, args))
     return 0
 

@@ -8,10 +8,12 @@ not dense) so that every exported ``hpgen_kernel_<name>`` follows the DiscreteSt
 """
 from __future__ import annotations
 
+import re
+
 import casadi
 
 from .contract import CodegenError, dense_positions
-from .sparse import aux_function, jacobian_sparsity
+from .sparse import AUX_FUNCTION, aux_function, jacobian_sparsity
 
 #: CasADi CodeGenerator options. with_mem False: no memory objects, no static mutable state.
 CG_OPTIONS = {"casadi_real": "double", "casadi_int": "long long int", "with_mem": False,
@@ -28,15 +30,25 @@ _INLINE_MINMAX = {"  return fmin(x, y);\n": "  return (x < y || y != y) ? x : y;
 #: the (largest) Jacobian code in kernels.c halves gcc's time on big steps.
 C_FROM_FUSED = {"jacobian": ("residual_jacobian", 1)}
 
+#: kernels no run calls per step or per record: linearize's partials and the kernels Python
+#: calls one point at a time. Their CasADi functions, and the functions only they call, are
+#: compiled at COLD_OPTIMIZE (gcc spends most of a family module's compile on -O3 of CasADi's
+#: code; -O1 keeps IEEE semantics, so their results are unchanged)
+COLD_KERNELS = ("legendre", "hessian", "energy", "momentum", "defect", "step_partials")
+COLD_OPTIMIZE = "O1"
+
 #: op codes whose CasADi C output does not compile as C99 (no erfinv in <math.h>)
 _C_UNSUPPORTED = {casadi.OP_ERFINV: "erfinv"}
 
 
-def casadi_c_code(step, module: str) -> str:
+def casadi_c_code(step, module: str, family: bool = False) -> str:
     """CasADi's C for all kernels of ``step`` in one translation unit (a string).
 
     Internal CasADi symbols get the prefix ``hpgen_<module>_``; the kernels.c template hides
-    all of CasADi's symbols (GCC visibility) and exports only ``hpgen_*``.
+    all of CasADi's symbols (GCC visibility) and exports only ``hpgen_*``. ``family``: the
+    kernels are a family's (MX, calling per-body and per-joint functions): the functions
+    only COLD_KERNELS reach are marked for COLD_OPTIMIZE (mark_cold_functions); the code is
+    otherwise CasADi's as is.
     """
     for k in step.kernels:
         f = k.function
@@ -54,6 +66,13 @@ def casadi_c_code(step, module: str) -> str:
     if sp is not None:       # a sparse J: casadi_qr, casadi_qr_solve for the runtime's Newton
         cg.add(aux_function(sp))
     code = cg.dump()
+    if family:
+        roots = [k.function.name() for k in step.kernels if k.name in COLD_KERNELS]
+        if sp is not None:       # printed for the casadi_qr helpers it brings; never called
+            roots.append(AUX_FUNCTION)
+        # the step's functions stay as CasADi prints them; step_partials' copies of the
+        # per-body derivatives (printed once per calling kernel) go to the cold level
+        code = mark_cold_functions(code, roots)
     for call, inline in _INLINE_MINMAX.items():
         code = code.replace(call, inline)
     if not code.endswith("\n"):
@@ -87,3 +106,78 @@ def c_kernel_context(kernel, nz_variant: bool = False) -> dict:
             "inputs": [_arg(f, i, False, kernel.inputs[i]) for i in range(f.n_in())],
             "outputs": [_arg(f, i, True, kernel.outputs[i]) for i in range(f.n_out())],
             "work": work_sizes(f)}
+
+
+_FUNCTION = re.compile(r"static int (casadi_f[0-9]+)\(")
+_CALLEE = re.compile(r"\bcasadi_f[0-9]+\b")
+_EXPORT = re.compile(r"CASADI_SYMBOL_EXPORT int ([A-Za-z0-9_]+)\(const casadi_real\*\* arg")
+
+
+def _functions(lines: list[str]):
+    """(blocks, calls, roots) of CasADi's C as lines: each internal function's (first line,
+    closing line), the internal functions each calls, and the internal function each
+    exported top-level function (by name) calls."""
+    blocks: dict[str, tuple[int, int]] = {}
+    calls: dict[str, set[str]] = {}
+    roots: dict[str, str] = {}
+    i = 0
+    while i < len(lines):
+        m = _FUNCTION.match(lines[i])
+        e = _EXPORT.match(lines[i])
+        if m is not None:
+            end = lines.index("}", i)
+            blocks[m.group(1)] = (i, end)
+            calls[m.group(1)] = set(_CALLEE.findall("\n".join(lines[i + 1:end])))
+            i = end + 1
+            continue
+        if e is not None and i + 1 < len(lines):
+            target = _CALLEE.search(lines[i + 1])
+            if target is not None:
+                roots[e.group(1)] = target.group(0)
+        i += 1
+    return blocks, calls, roots
+
+
+def cold_functions(code: str, cold_roots) -> set[str]:
+    """The internal functions (``casadi_f<k>``) of CasADi's C that only the top-level
+    functions named in ``cold_roots`` reach (not another top-level function, nor the runtime:
+    a function nobody in the code calls counts as the runtime's)."""
+    blocks, calls, roots = _functions(code.split("\n"))
+    cold_roots = set(cold_roots)
+    called = set().union(*calls.values()) if calls else set()
+    hot: set[str] = set()
+    stack = [f for name, f in roots.items() if name not in cold_roots]
+    stack += [f for f in blocks if f not in roots.values() and f not in called]
+    while stack:
+        f = stack.pop()
+        if f not in hot:
+            hot.add(f)
+            stack.extend(calls.get(f, ()))
+    return {f for f in blocks if f not in hot}
+
+
+def mark_cold_functions(code: str, cold_roots) -> str:
+    """CasADi's C with each internal function that only the functions ``cold_roots`` (casadi
+    names of top-level functions) reach (cold_functions) wrapped in HPGEN_COLD_BEGIN /
+    HPGEN_COLD_END (GCC: compiled at COLD_OPTIMIZE; kernels.c.j2 defines them). Code that no
+    cold root reaches alone is returned unchanged."""
+    cold = cold_functions(code, cold_roots)
+    if not cold:
+        return code
+    lines = code.split("\n")
+    blocks = _functions(lines)[0]
+    begin, end = set(), set()
+    for f in cold:
+        first, last = blocks[f]
+        if first > 0 and lines[first - 1].startswith("/* ") and lines[first - 1].endswith(" */"):
+            first -= 1
+        begin.add(first)
+        end.add(last)
+    out = []
+    for j, line in enumerate(lines):
+        if j in begin:
+            out.append("HPGEN_COLD_BEGIN")
+        out.append(line)
+        if j in end:
+            out.append("HPGEN_COLD_END")
+    return "\n".join(out)

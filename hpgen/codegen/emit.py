@@ -5,6 +5,8 @@ Generated files (relative paths):
                compiled with the static C runtime it includes (hpgen/runtime/c: Newton, the
                step, the runs; the contract hpgen.abi as C)
   kernels.py   the Python backend printed from the same SX algorithms (templates/kernels.py.j2)
+               (emit(sources=...) prints either backend's source alone: a compile writes
+               the one its backend needs, hpgen.api)
   __init__.py  lazy wrapper: integrator(backend=None), step(g, p, h), simulate(**kw),
                record(**kw)
   meta.json    dimensions, options, kernel signatures, CasADi work sizes (sorted keys)
@@ -31,7 +33,7 @@ from .. import abi
 from ..version import __version__
 from ..schemes import BACKENDS, OPTION_KEYS
 from .contract import HASH_RE, MODULE_RE, CodegenError, check_step
-from .csource import c_kernel_context, casadi_c_code, work_sizes
+from .csource import COLD_OPTIMIZE, c_kernel_context, casadi_c_code, work_sizes
 from . import pyiterate, pylinear
 from .sparse import meta_entry, sparse_context
 from .lanes import lanes_context
@@ -41,6 +43,8 @@ from .pysource import py_kernel_context
 META_FORMAT = abi.META_FORMAT
 TEMPLATES = {"kernels.c": "kernels.c.j2", "kernels.py": "kernels.py.j2",
              "__init__.py": "__init__.py.j2"}
+#: the files only one backend builds from (emit(sources=...) chooses among them)
+BACKEND_SOURCES = ("kernels.c", "kernels.py")
 #: math functions the Python backend wraps: (math name, numpy name of the IEEE fallback)
 SAFE_UNARY = (("exp", "exp"), ("log", "log"), ("sqrt", "sqrt"), ("sin", "sin"),
               ("cos", "cos"), ("tan", "tan"), ("asin", "arcsin"), ("acos", "arccos"),
@@ -50,6 +54,8 @@ SAFE_UNARY = (("exp", "exp"), ("log", "log"), ("sqrt", "sqrt"), ("sin", "sin"),
 #: FLATTEN_MAX_INSTRUCTIONS they are inlined into the step (faster, compile time stays small)
 STEP_KERNELS = ("residual", "residual_jacobian", "update", "margin")
 FLATTEN_MAX_INSTRUCTIONS = 2000
+#: what _step_instructions counts for a step over MX (more than any limit)
+MX_INSTRUCTIONS = 10 ** 9
 _SAFE_CHARS = re.compile(r"[^A-Za-z0-9 _.,:;=+\-()\[\]{}<>#@%&!?'|^~$]")
 
 
@@ -142,7 +148,7 @@ def _step_instructions(step) -> int:
     whose calls stand for every body's code) counts as more than any limit."""
     fs = [step.kernel(k).function for k in STEP_KERNELS]
     if any(f.is_a("MXFunction") for f in fs):
-        return 10 ** 9
+        return MX_INSTRUCTIONS
     return sum(f.n_instructions() for f in fs)
 
 
@@ -162,40 +168,52 @@ def _python_linear(step) -> dict:
             "iterate_function": pyiterate.FUNCTION, "full_function": pyiterate.FULL}
 
 
-def template_contexts(step, info: dict) -> dict[str, dict]:
-    """The context passed to each template, keyed by template file name."""
+def template_contexts(step, info: dict, templates=tuple(TEMPLATES.values())) -> dict[str, dict]:
+    """The context passed to each template of ``templates``, keyed by template file name
+    (a template not asked for costs nothing: kernels.py's context prints every kernel)."""
     check_step(step)
     info = _check_info(info)
     head = header_lines(info)
+    common = {"header_lines": head, "n": step.n, "d": step.d}
+    build = {"kernels.c.j2": lambda: _c_context(step, info, common),
+             "kernels.py.j2": lambda: dict(common, nz=step.nz, module=info["module"],
+                                           **_python_linear(step),
+                                           safe_unary=[list(p) for p in SAFE_UNARY],
+                                           kernels=[py_kernel_context(k)
+                                                    for k in step.kernels],
+                                           callees=callee_lines(step.kernels)),
+             "__init__.py.j2": lambda: dict(common, module=info["module"], hash=info["hash"],
+                                            backend=info["backend"],
+                                            model_label=_safe(info["model_name"]),
+                                            record_note=" (" + ", ".join(
+                                                name for name, _, _ in step.record_layout)
+                                            + ")")}
+    return {t: build[t]() for t in templates}
+
+
+def _c_context(step, info: dict, common: dict) -> dict:
     instructions = _step_instructions(step)
     sparse = sparse_context(step)
-    common = {"header_lines": head, "n": step.n, "d": step.d}
-    return {
-        "kernels.c.j2": dict(common, nz=step.nz, hash=info["hash"],
-                             casadi_code=casadi_c_code(step, info["module"]),
-                             kernels=[c_kernel_context(k, sparse is not None and
-                                                       k.name == "residual_jacobian")
-                                      for k in step.kernels],
-                             flatten=instructions <= FLATTEN_MAX_INSTRUCTIONS,
-                             sparse=sparse,
-                             lanes=lanes_context(step, instructions),
-                             record_width=step.record_width,
-                             open=None if step.open_spec is None else {
-                                 "m": step.open_spec.m, "P": step.open_spec.P},
-                             record_uses_xi=bool(step.record_uses_xi),
-                             legendre_quadratic=bool(step.legendre_quadratic),
-                             step_uses_g=bool(step.step_uses_g),
-                             record_uses_g=bool(step.record_uses_g)),
-        "kernels.py.j2": dict(common, nz=step.nz, module=info["module"],
-                              **_python_linear(step),
-                              safe_unary=[list(p) for p in SAFE_UNARY],
-                              kernels=[py_kernel_context(k) for k in step.kernels],
-                              callees=callee_lines(step.kernels)),
-        "__init__.py.j2": dict(common, module=info["module"], hash=info["hash"],
-                               backend=info["backend"], model_label=_safe(info["model_name"]),
-                               record_note=" (" + ", ".join(
-                                   name for name, _, _ in step.record_layout) + ")"),
-    }
+    flatten = instructions <= FLATTEN_MAX_INSTRUCTIONS
+    return dict(common, nz=step.nz, hash=info["hash"],
+                # a family's (MX) module: duplicated callees and the cold kernels take most
+                # of gcc's time; an SX module's kernels.c stays CasADi's as is
+                casadi_code=casadi_c_code(step, info["module"],
+                                          family=instructions >= MX_INSTRUCTIONS),
+                cold_optimize=COLD_OPTIMIZE,
+                kernels=[c_kernel_context(k, sparse is not None and
+                                          k.name == "residual_jacobian")
+                         for k in step.kernels],
+                flatten=flatten,
+                sparse=sparse,
+                lanes=lanes_context(step, instructions),
+                record_width=step.record_width,
+                open=None if step.open_spec is None else {
+                    "m": step.open_spec.m, "P": step.open_spec.P},
+                record_uses_xi=bool(step.record_uses_xi),
+                legendre_quadratic=bool(step.legendre_quadratic),
+                step_uses_g=bool(step.step_uses_g),
+                record_uses_g=bool(step.record_uses_g))
 
 
 def meta(step, info: dict) -> dict:
@@ -238,14 +256,21 @@ def _open_meta(step) -> dict:
                      "forced": bool(spec.forced), "time_dependent": bool(spec.time_dependent)}}
 
 
-def emit(step, info: dict) -> GeneratedModule:
-    """Generate all files of one module; see the module docstring. Raises CodegenError."""
+def emit(step, info: dict, sources=BACKEND_SOURCES) -> GeneratedModule:
+    """Generate the files of one module (see the module docstring): __init__.py, meta.json,
+    model.yaml and the backend sources named in ``sources`` (default both, kernels.c and
+    kernels.py; each is the same text whichever others are asked for). Raises CodegenError."""
     checked = _check_info(info)
+    unknown = set(sources) - set(BACKEND_SOURCES)
+    if unknown:
+        raise CodegenError(f"sources must be among {BACKEND_SOURCES}, got {sorted(unknown)}")
+    outputs = [out for out in TEMPLATES if out not in BACKEND_SOURCES or out in sources]
     env = environment()
-    contexts = template_contexts(step, checked)
-    rendered = {out: env.get_template(t).render(**contexts[t]) for out, t in TEMPLATES.items()}
+    contexts = template_contexts(step, checked, tuple(TEMPLATES[out] for out in outputs))
+    rendered = {out: env.get_template(TEMPLATES[out]).render(**contexts[TEMPLATES[out]])
+                for out in outputs}
     meta_text = json.dumps(meta(step, checked), sort_keys=True, indent=2) + "\n"
-    files = (("__init__.py", rendered["__init__.py"]), ("kernels.c", rendered["kernels.c"]),
-             ("kernels.py", rendered["kernels.py"]), ("meta.json", meta_text),
-             ("model.yaml", checked["model_source"]))
+    files = tuple((path, rendered[path]) for path in ("__init__.py", "kernels.c", "kernels.py")
+                  if path in rendered) + (("meta.json", meta_text),
+                                          ("model.yaml", checked["model_source"]))
     return GeneratedModule(name=checked["module"], files=files)

@@ -142,7 +142,8 @@ def _source(module_dir: Path) -> tuple[Path, bytes]:
     try:
         return source, source.read_bytes()
     except OSError:
-        raise BuildError(f"{source} is missing") from None
+        raise BuildError(f"{source} is missing (a module compiled for the Python backend only "
+                         "gets it from a compile with backend='c')") from None
 
 
 def find_library(module_dir, cc=None, cflags=None) -> Path | None:

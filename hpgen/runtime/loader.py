@@ -144,6 +144,10 @@ def load(path, backend=None, *, cc=None, cflags=None, compose=None) -> Integrato
     backend = meta["backend"] if backend is None else backend
     if backend == "python":
         check_sources(module_dir)     # the C backend's build_library checks them too
+        if not (module_dir / "kernels.py").is_file():
+            raise ModelError("the module has no kernels.py (it was compiled for the C backend "
+                             "only); compile it with backend='python' (hpgen compile "
+                             "--backend python), which writes it", file=str(module_dir))
     impl: CBackend | PythonBackend
     if backend == "c":
         impl = CBackend(module_dir, meta, cc=cc, cflags=cflags)
