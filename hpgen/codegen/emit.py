@@ -185,7 +185,8 @@ def template_contexts(step, info: dict) -> dict[str, dict]:
                              record_uses_xi=bool(step.record_uses_xi),
                              legendre_quadratic=bool(step.legendre_quadratic),
                              step_uses_g=bool(step.step_uses_g),
-                             record_uses_g=bool(step.record_uses_g)),
+                             record_uses_g=bool(step.record_uses_g),
+                             explicit=bool(getattr(step, "explicit", False))),
         "kernels.py.j2": dict(common, nz=step.nz, module=info["module"],
                               **_python_linear(step),
                               safe_unary=[list(p) for p in SAFE_UNARY],
@@ -222,6 +223,8 @@ def meta(step, info: dict) -> dict:
             "jacobian": meta_entry(step),
             "kernels": kernels,
             "c_work": {k.name: work_sizes(k.function) for k in step.kernels},
+            # (only where true: an explicit step, hpgen.runtime.loop's explicit_step)
+            **({"explicit": True} if getattr(step, "explicit", False) else {}),
             **_open_meta(step)}
 
 

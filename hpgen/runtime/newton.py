@@ -170,7 +170,8 @@ class Kernels:
     with a kept J^{-1}, residual and linear algebra fused: solve's arithmetic, printed by
     hpgen.codegen.pyiterate; it needs the printed linear solver)."""
     __slots__ = ("residual", "jacobian", "residual_jacobian", "update", "margin", "linear",
-                 "nz", "update_p", "iterate", "iterate_full", "guess", "velocity_step")
+                 "nz", "update_p", "iterate", "iterate_full", "guess", "velocity_step",
+                 "explicit")
 
     def __init__(self, nz, residual, jacobian, residual_jacobian=None, update=None,
                  margin=None, linear=None, update_p=None, iterate=None, iterate_full=None,
@@ -180,6 +181,7 @@ class Kernels:
         self.residual_jacobian = residual_jacobian
         self.update, self.margin, self.update_p = update, margin, update_p
         self.guess, self.velocity_step = guess, velocity_step
+        self.explicit = False         # an explicit step (meta "explicit"): no Newton in runs
         if pattern is not None:       # a sparse Newton matrix: no printed dense solver
             from .sparse import sparse_solver
             linear = None
