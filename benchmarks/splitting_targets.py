@@ -96,6 +96,7 @@ def free_body(quick):
             reps.append(time.perf_counter() - t0)
         return err, min(reps), steps
 
+    h_at = {}
     sv = hpgen.compile(path, tableau="stormer-verlet", tau="cay", rkmk="truncated")
     e_sv, t_sv, n_sv = error_time(sv, 0.01)
     print(f"\n## Free rigid body, T = 10: Stormer-Verlet (cay, truncated) at h = 0.01: error "
@@ -114,6 +115,51 @@ def free_body(quick):
         e, t, steps = error_time(integ, h_eq)
         print(f"| {name} | {T / steps:.4g} | {e:.3g} | {steps / t / 1e6:.3g} | "
               f"{t / steps * 1e9:.0f} | {n_sv / t / 1e6:.3g} | {t / t_sv:.3g} |")
+        h_at[name] = T / steps
+    return h_at, e_sv
+
+
+def ensembles(quick, h_at, e_sv):
+    """Free-body ensembles (simulate_batch, B bodies around the benchmark's state, records
+    only at the end): ns per body-step and per Stormer-Verlet-equivalent body-step (T / 0.01
+    steps a body) of split2 and split4-suzuki at the h reaching SV's error, on 1 and 2
+    threads, with and without lanes: the whole call, and the stepping alone (the call's time
+    less that of the same call with 0 steps: the per-member start and Trajectory)."""
+    import hpgen
+    path = ROOT / "examples" / "free_rigid_body.yaml"
+    T, B = 10.0, 512 if quick else 2048
+    rng = np.random.default_rng(1)
+    pi0 = np.array([0.4535961214255773, 0.0, 0.8912073600614354])
+    mu0 = pi0 * (1.0 + 0.01 * rng.standard_normal((B, 3)))
+    print(f"\n## Free-body ensembles, B = {B}, T = 10, at SV(h = 0.01)'s error {e_sv:.3g}\n")
+    print("| scheme | h | lanes | threads | ns / body-step | ns / SV-eq. body-step | "
+          "stepping alone: ns / body-step | ns / SV-eq. body-step |")
+    print("|---|---|---|---|---|---|---|---|")
+    for name in ("split2", "split4-suzuki"):
+        if name not in h_at:
+            continue
+        integ = hpgen.compile(path, tableau=name)
+        steps = round(T / h_at[name])
+        h = T / steps
+        for lanes in (True, False):
+            for threads in (1, 2):
+                t, t_0 = (_batch_time(integ, h, n, mu0, threads, lanes, 3 if quick else 5)
+                          for n in (steps, 0))
+                ts = t - t_0
+                print(f"| {name} | {h:.4g} | {'yes' if lanes else 'no'} | {threads} | "
+                      f"{t / (B * steps) * 1e9:.1f} | {t / (B * T / 0.01) * 1e9:.2f} | "
+                      f"{ts / (B * steps) * 1e9:.1f} | {ts / (B * T / 0.01) * 1e9:.2f} |")
+
+
+def _batch_time(integ, h, steps, mu0, threads, lanes, reps):
+    """The least wall time of ``reps`` simulate_batch calls."""
+    out = math.inf
+    for _ in range(reps):
+        t0 = time.perf_counter()
+        integ.simulate_batch(np.eye(3), h, steps, mu0=mu0, every=max(steps, 1),
+                             threads=threads, lanes=lanes)
+        out = min(out, time.perf_counter() - t0)
+    return out
 
 
 def _h_at(pts, e):
@@ -131,7 +177,8 @@ def main():
     ap.add_argument("--quick", action="store_true")
     args = ap.parse_args()
     heavy_top(args.quick)
-    free_body(args.quick)
+    h_at, e_sv = free_body(args.quick)
+    ensembles(args.quick, h_at, e_sv)
 
 
 if __name__ == "__main__":

@@ -214,7 +214,8 @@ class Engine:
             mu0 = self.backend.call("legendre", gf, xi0, *lv)[0]
         else:
             mu0 = self.maps.vector(mu0, "mu0")
-            xi0 = self.maps.velocity_flat(gf, mu0, lv=lv)
+            # (an explicit step's start needs no velocity: FirstStep.start)
+            xi0 = None if self.first_step.explicit else self.maps.velocity_flat(gf, mu0, lv=lv)
         return gf, mu0, xi0
 
     def start(self, g0, xi0, mu0, h, steps, every, opts, inputs=None) -> RunStart:

@@ -16,7 +16,8 @@ refusals, and the guarantees of a generated step.
   ``hpgen check``) keeps the canonical form to 1e-12 relative; ``linearize`` agrees with
   central differences of ``step`` (1e-7 relative, as tests/unit/test_linearize.py).
 - Run kinds: record rows, sections (the crossing on the group, between the two step states),
-  simulate_batch (lane-wise and body by body) bitwise equal to simulate.
+  simulate_batch (lane-wise and body by body) bitwise equal to simulate; the step is explicit
+  (no Newton iteration, no Jacobian) and its lanes take any number of unknowns.
 - Models without the structure are refused with one line naming what breaks it.
 """
 from __future__ import annotations
@@ -211,6 +212,28 @@ def test_records_sections_and_batches(compile_model):
         for b, x in enumerate(xs):
             one = integ.simulate(g0, 0.02, 300, xi0=x, every=30)
             assert np.array_equal(batch[b].g, one.g) and np.array_equal(batch[b].mu, one.mu)
+
+
+@pytest.mark.parametrize("path,name,h", [(HEAVY_TOP, "split4-yoshida", 0.05),
+                                         (TWO_BODIES, "split2", 0.002)])
+def test_explicit_step_lanes_bitwise(compile_model, path, name, h):
+    """The explicit step: no Newton (0 iterations, 0 Jacobians), and its lane-wise ensembles
+    (11 bodies: a group of 8 lanes and 3 stepped alone; the two-body chain has nz = 6, more
+    than the Newton lanes allow) bitwise equal to simulate, C and Python."""
+    integ = compile_model(path, tableau=name)
+    assert integ.engine.backend.lanes > 0
+    g0, xi0, mu0 = _start(path)
+    mu = integ.legendre(g0, xi0) if mu0 is None else np.asarray(mu0, dtype=float)
+    mus = np.array([mu * (1.0 + 0.01 * k) for k in range(11)])
+    py = compile_model(path, tableau=name, backend="python")
+    for threads in (1, 2):
+        batch = integ.simulate_batch(g0, h, 60, mu0=mus, every=7, threads=threads)
+        for b in (0, 5, 10):
+            one = integ.simulate(g0, h, 60, mu0=mus[b], every=7)
+            assert one.newton_iterations == 0 == one.jacobians
+            assert np.array_equal(batch[b].g, one.g) and np.array_equal(batch[b].mu, one.mu)
+    other = py.simulate(g0, h, 60, mu0=mus[10], every=7)
+    assert np.array_equal(other.g, batch[10].g) and np.array_equal(other.mu, batch[10].mu)
 
 
 # ---- refusals ------------------------------------------------------------------------------
