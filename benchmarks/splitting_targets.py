@@ -12,6 +12,9 @@
    splitting scheme the step h reaching that error (log-log interpolation over a ladder of
    h), its time per step and the simulated time per second as Stormer-Verlet steps of 0.01
    ("SV-equivalent steps/s" = (T / 0.01) / wall time at that h).
+3. Free-body ensembles (simulate_batch): ns per body-step, lanes or not, 1 and 2 threads.
+4. Heavy top, T = 10 .. 1000: RK4-C's time / the best generated splitting's at equal
+   final-state error (DOP853 reference at 1e-13) and the break-even T per error.
 """
 from __future__ import annotations
 
@@ -57,6 +60,52 @@ def heavy_top(quick):
         cells.append("-" if th is None or tg is None else f"{th / tg:.3g}x")
         cells.append("-" if th is None or tg is None else f"{tg / th:.3g}")
         print("| " + " | ".join(cells) + " |")
+
+
+def long_runs(quick):
+    """Heavy top over T = 10 .. 1000: the final-state error against a DOP853 reference at
+    rtol = atol = 1e-13 (hpgen bench's), the time at equal error of the best generated
+    splitting (split6-kahan-li, split8-kahan-li) and of RK4-C; their ratio per T and the
+    break-even T (log-log interpolation between the T where the ratio crosses 1) per error."""
+    from hpgen.bench import run_bench
+    from hpgen.bench.report import time_at_error
+    Ts = (10, 100, 1000) if quick else (10, 30, 100, 300, 1000)
+    errors = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8)
+    ratio = {}
+    for T in Ts:
+        res = run_bench(ROOT / "examples" / "heavy_top.yaml", T=T, schemes=[
+            (s, "cay", "exact") for s in ("split6-kahan-li", "split8-kahan-li")],
+            h=[0.4 * 2.0 ** -k for k in range(8 if T <= 100 else 7)],
+            rk4_h=[0.05 * 2.0 ** -k for k in range(6 if T <= 100 else 5)],
+            peers=["RK4-C"], reference="dop853", write=False, min_time=0.02,
+            min_repeats=1 if quick else 2, log=lambda s: None)
+        gen = [p for p in res.points if p.kind == "hpgen"]
+        rk4 = [p for p in res.points if p.family == "RK4-C"]
+        for e in errors:
+            tg, tr = _best(gen, e, time_at_error), time_at_error(rk4, e)
+            ratio[T, e] = None if tg is None or tr is None else tr / tg
+    print("\n## Heavy top, T = 10 .. 1000: RK4-C time / best generated splitting's time at "
+          "equal final-state error (> 1: hpgen cheaper)\n")
+    print("| error | " + " | ".join(f"T = {T}" for T in Ts) + " | break-even T |")
+    print("|---|" + "---|" * (len(Ts) + 1))
+    for e in errors:
+        cells = ["-" if ratio[T, e] is None else f"{ratio[T, e]:.3g}x" for T in Ts]
+        print(f"| {e:g} | " + " | ".join(cells) + f" | {_break_even(Ts, [ratio[T, e] for T in Ts])} |")
+
+
+def _break_even(Ts, ratios) -> str:
+    """The T where the ratio first reaches 1 (log-log interpolation), '<= T0' when it is
+    >= 1 from the first T on, '> T_last' when it never is."""
+    pts = [(T, r) for T, r in zip(Ts, ratios) if r is not None]
+    if not pts:
+        return "-"
+    if pts[0][1] >= 1.0:
+        return f"<= {pts[0][0]}"
+    for (T0, r0), (T1, r1) in zip(pts, pts[1:]):
+        if r0 < 1.0 <= r1:
+            s = -math.log(r0) / (math.log(r1) - math.log(r0))
+            return f"{math.exp(math.log(T0) + s * (math.log(T1) - math.log(T0))):.3g}"
+    return f"> {pts[-1][0]}"
 
 
 def _best(points, e, time_at_error):
@@ -179,6 +228,7 @@ def main():
     heavy_top(args.quick)
     h_at, e_sv = free_body(args.quick)
     ensembles(args.quick, h_at, e_sv)
+    long_runs(args.quick)
 
 
 if __name__ == "__main__":
