@@ -32,6 +32,8 @@ sys.path.insert(0, str(ROOT))
 SPLITS = ("split2", "split4-yoshida", "split4-suzuki", "split6-yoshida", "split6-kahan-li",
           "split8-mclachlan", "split8-kahan-li")
 HAND = ("splitting-2", "splitting-4", "splitting-6")
+#: the ensembles' stepping alone is timed over this many times the steps of T = 10
+LONG = 20
 
 
 def heavy_top(quick):
@@ -172,8 +174,9 @@ def ensembles(quick, h_at, e_sv):
     """Free-body ensembles (simulate_batch, B bodies around the benchmark's state, records
     only at the end): ns per body-step and per Stormer-Verlet-equivalent body-step (T / 0.01
     steps a body) of split2 and split4-suzuki at the h reaching SV's error, on 1 and 2
-    threads, with and without lanes: the whole call, and the stepping alone (the call's time
-    less that of the same call with 0 steps: the per-member start and Trajectory)."""
+    threads, with and without lanes: the whole call, and the stepping alone (a call of LONG
+    times the steps less the same call with 0 steps, the per-member start and Trajectory,
+    over LONG times the body-steps)."""
     import hpgen
     path = ROOT / "examples" / "free_rigid_body.yaml"
     T, B = 10.0, 512 if quick else 2048
@@ -192,9 +195,10 @@ def ensembles(quick, h_at, e_sv):
         h = T / steps
         for lanes in (True, False):
             for threads in (1, 2):
-                t, t_0 = (_batch_time(integ, h, n, mu0, threads, lanes, 3 if quick else 5)
-                          for n in (steps, 0))
-                ts = t - t_0
+                reps = 3 if quick else 5
+                t, t_0, t_l = (_batch_time(integ, h, n, mu0, threads, lanes, reps)
+                               for n in (steps, 0, LONG * steps))
+                ts = (t_l - t_0) / LONG
                 print(f"| {name} | {h:.4g} | {'yes' if lanes else 'no'} | {threads} | "
                       f"{t / (B * steps) * 1e9:.1f} | {t / (B * T / 0.01) * 1e9:.2f} | "
                       f"{ts / (B * steps) * 1e9:.1f} | {ts / (B * T / 0.01) * 1e9:.2f} |")

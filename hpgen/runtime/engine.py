@@ -341,7 +341,9 @@ class Engine:
         hv = np.array([h] if inputs is None else inputs.hv(h, 0))
         opts = self.options(newton, full=True)
         xi = None
-        if z is None:
+        if z is None and self.first_step.explicit:      # its unknown is p (FirstStep.start)
+            z = p.copy()
+        elif z is None:
             if inputs is None:
                 xi = self.maps.velocity_flat(gf, p)
                 z = self.first_step.closed_start(gf, p, xi, h, opts)
