@@ -31,7 +31,7 @@ from conftest import EXAMPLES
 from hpgen.analysis.exact import free_rigid_body_attitude
 from hpgen.analysis.symplectic import GeneratedMap, ad_matrices, omega_matrix, \
     symplectic_defect
-from hpgen.errors import ModelError
+from hpgen.errors import ArgumentError, ModelError
 from hpgen.splitting import SPLITTING_NAMES, get_splitting
 
 HEAVY_TOP, FREE_BODY = EXAMPLES / "heavy_top.yaml", EXAMPLES / "free_rigid_body.yaml"
@@ -234,6 +234,25 @@ def test_explicit_step_lanes_bitwise(compile_model, path, name, h):
             assert np.array_equal(batch[b].g, one.g) and np.array_equal(batch[b].mu, one.mu)
     other = py.simulate(g0, h, 60, mu0=mus[10], every=7)
     assert np.array_equal(other.g, batch[10].g) and np.array_equal(other.mu, batch[10].mu)
+
+
+def test_explicit_batch_start_checks_like_simulate(compile_model):
+    """An explicit module's ensemble start (one shared g0, mu0 rows: checked at once) gives
+    each member simulate's start and the one-line errors of a member checked alone."""
+    integ = compile_model(HEAVY_TOP, tableau="split2")
+    g0, mus = _g0(), np.array([[0.2, 5.0, 18.0], [0.3, 4.0, 17.0]])
+    batch = integ.simulate_batch(g0, 0.05, 20, mu0=mus, every=5, threads=1)
+    for b in range(2):
+        one = integ.simulate(g0, 0.05, 20, mu0=mus[b], every=5)
+        assert np.array_equal(batch[b].g, one.g) and np.array_equal(batch[b].mu, one.mu)
+    bad = mus.copy()
+    bad[1, 2] = np.nan
+    with pytest.raises(ArgumentError) as e:
+        integ.simulate_batch(g0, 0.05, 20, mu0=bad, threads=1)
+    assert e.value.field == "mu0" and "non-finite" in str(e.value)
+    with pytest.raises(ArgumentError) as e:
+        integ.simulate_batch(1.01 * g0, 0.05, 20, mu0=mus, threads=1)
+    assert "not on the group" in str(e.value)
 
 
 # ---- refusals ------------------------------------------------------------------------------
