@@ -12,6 +12,9 @@
    splitting scheme the step h reaching that error (log-log interpolation over a ladder of
    h), its time per step and the simulated time per second as Stormer-Verlet steps of 0.01
    ("SV-equivalent steps/s" = (T / 0.01) / wall time at that h).
+3. Free-body ensembles (simulate_batch): ns per body-step, lanes or not, 1 and 2 threads.
+4. Heavy top, T = 10 .. 1000: RK4-C's time / the best generated splitting's at equal
+   final-state error (DOP853 reference at 1e-13) and the break-even T per error.
 """
 from __future__ import annotations
 
@@ -29,6 +32,8 @@ sys.path.insert(0, str(ROOT))
 SPLITS = ("split2", "split4-yoshida", "split4-suzuki", "split6-yoshida", "split6-kahan-li",
           "split8-mclachlan", "split8-kahan-li")
 HAND = ("splitting-2", "splitting-4", "splitting-6")
+#: the ensembles' stepping alone is timed over this many times the steps of T = 10
+LONG = 20
 
 
 def heavy_top(quick):
@@ -57,6 +62,52 @@ def heavy_top(quick):
         cells.append("-" if th is None or tg is None else f"{th / tg:.3g}x")
         cells.append("-" if th is None or tg is None else f"{tg / th:.3g}")
         print("| " + " | ".join(cells) + " |")
+
+
+def long_runs(quick):
+    """Heavy top over T = 10 .. 1000: the final-state error against a DOP853 reference at
+    rtol = atol = 1e-13 (hpgen bench's), the time at equal error of the best generated
+    splitting (split6-kahan-li, split8-kahan-li) and of RK4-C; their ratio per T and the
+    break-even T (log-log interpolation between the T where the ratio crosses 1) per error."""
+    from hpgen.bench import run_bench
+    from hpgen.bench.report import time_at_error
+    Ts = (10, 100, 1000) if quick else (10, 30, 100, 300, 1000)
+    errors = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8)
+    ratio = {}
+    for T in Ts:
+        res = run_bench(ROOT / "examples" / "heavy_top.yaml", T=T, schemes=[
+            (s, "cay", "exact") for s in ("split6-kahan-li", "split8-kahan-li")],
+            h=[0.4 * 2.0 ** -k for k in range(8 if T <= 100 else 7)],
+            rk4_h=[0.05 * 2.0 ** -k for k in range(6 if T <= 100 else 5)],
+            peers=["RK4-C"], reference="dop853", write=False, min_time=0.02,
+            min_repeats=1 if quick else 2, log=lambda s: None)
+        gen = [p for p in res.points if p.kind == "hpgen"]
+        rk4 = [p for p in res.points if p.family == "RK4-C"]
+        for e in errors:
+            tg, tr = _best(gen, e, time_at_error), time_at_error(rk4, e)
+            ratio[T, e] = None if tg is None or tr is None else tr / tg
+    print("\n## Heavy top, T = 10 .. 1000: RK4-C time / best generated splitting's time at "
+          "equal final-state error (> 1: hpgen cheaper)\n")
+    print("| error | " + " | ".join(f"T = {T}" for T in Ts) + " | break-even T |")
+    print("|---|" + "---|" * (len(Ts) + 1))
+    for e in errors:
+        cells = ["-" if ratio[T, e] is None else f"{ratio[T, e]:.3g}x" for T in Ts]
+        print(f"| {e:g} | " + " | ".join(cells) + f" | {_break_even(Ts, [ratio[T, e] for T in Ts])} |")
+
+
+def _break_even(Ts, ratios) -> str:
+    """The T where the ratio first reaches 1 (log-log interpolation), '<= T0' when it is
+    >= 1 from the first T on, '> T_last' when it never is."""
+    pts = [(T, r) for T, r in zip(Ts, ratios) if r is not None]
+    if not pts:
+        return "-"
+    if pts[0][1] >= 1.0:
+        return f"<= {pts[0][0]}"
+    for (T0, r0), (T1, r1) in zip(pts, pts[1:]):
+        if r0 < 1.0 <= r1:
+            s = -math.log(r0) / (math.log(r1) - math.log(r0))
+            return f"{math.exp(math.log(T0) + s * (math.log(T1) - math.log(T0))):.3g}"
+    return f"> {pts[-1][0]}"
 
 
 def _best(points, e, time_at_error):
@@ -96,6 +147,7 @@ def free_body(quick):
             reps.append(time.perf_counter() - t0)
         return err, min(reps), steps
 
+    h_at = {}
     sv = hpgen.compile(path, tableau="stormer-verlet", tau="cay", rkmk="truncated")
     e_sv, t_sv, n_sv = error_time(sv, 0.01)
     print(f"\n## Free rigid body, T = 10: Stormer-Verlet (cay, truncated) at h = 0.01: error "
@@ -114,6 +166,59 @@ def free_body(quick):
         e, t, steps = error_time(integ, h_eq)
         print(f"| {name} | {T / steps:.4g} | {e:.3g} | {steps / t / 1e6:.3g} | "
               f"{t / steps * 1e9:.0f} | {n_sv / t / 1e6:.3g} | {t / t_sv:.3g} |")
+        h_at[name] = T / steps
+    return h_at, e_sv
+
+
+def ensembles(quick, h_at, e_sv):
+    """Free-body ensembles (simulate_batch, B bodies around the benchmark's state, records
+    only at the end): ns per body-step and per Stormer-Verlet-equivalent body-step (T / 0.01
+    steps a body) of split2 and split4-suzuki at the h reaching SV's error, on 1 and 2
+    threads, with and without lanes: the whole call, and the stepping alone (a call of LONG
+    times the steps less the same call with 0 steps, the per-member start and Trajectory,
+    over LONG times the body-steps; also in process CPU time, all threads summed: the
+    wall time on free cores is about that over the threads)."""
+    import hpgen
+    path = ROOT / "examples" / "free_rigid_body.yaml"
+    T, B = 10.0, 512 if quick else 2048
+    rng = np.random.default_rng(1)
+    pi0 = np.array([0.4535961214255773, 0.0, 0.8912073600614354])
+    mu0 = pi0 * (1.0 + 0.01 * rng.standard_normal((B, 3)))
+    print(f"\n## Free-body ensembles, B = {B}, T = 10, at SV(h = 0.01)'s error {e_sv:.3g}\n")
+    print("| scheme | h | lanes | threads | ns / body-step | ns / SV-eq. body-step | "
+          "stepping alone: ns / body-step | ns / SV-eq. body-step | its CPU ns / SV-eq. "
+          "body-step |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for name in ("split2", "split4-suzuki"):
+        if name not in h_at:
+            continue
+        integ = hpgen.compile(path, tableau=name)
+        steps = round(T / h_at[name])
+        h = T / steps
+        for lanes in (True, False):
+            for threads in (1, 2):
+                reps = 3 if quick else 5
+                (t, _), (t_0, c_0), (t_l, c_l) = (
+                    _batch_time(integ, h, n, mu0, threads, lanes, reps)
+                    for n in (steps, 0, LONG * steps))
+                ts, cs = (t_l - t_0) / LONG, (c_l - c_0) / LONG
+                print(f"| {name} | {h:.4g} | {'yes' if lanes else 'no'} | {threads} | "
+                      f"{t / (B * steps) * 1e9:.1f} | {t / (B * T / 0.01) * 1e9:.2f} | "
+                      f"{ts / (B * steps) * 1e9:.1f} | {ts / (B * T / 0.01) * 1e9:.2f} | "
+                      f"{cs / (B * T / 0.01) * 1e9:.2f} |")
+
+
+def _batch_time(integ, h, steps, mu0, threads, lanes, reps):
+    """(the least wall time, the least process CPU time) of ``reps`` simulate_batch
+    calls."""
+    wall = cpu = math.inf
+    for _ in range(reps):
+        t0, c0 = time.perf_counter(), time.process_time()
+        integ.simulate_batch(np.eye(3), h, steps, mu0=mu0, every=max(steps, 1),
+                             threads=threads, lanes=lanes)
+        wall = min(wall, time.perf_counter() - t0)
+        cpu = min(cpu, time.process_time() - c0)
+    return wall, cpu
 
 
 def _h_at(pts, e):
@@ -131,7 +236,9 @@ def main():
     ap.add_argument("--quick", action="store_true")
     args = ap.parse_args()
     heavy_top(args.quick)
-    free_body(args.quick)
+    h_at, e_sv = free_body(args.quick)
+    ensembles(args.quick, h_at, e_sv)
+    long_runs(args.quick)
 
 
 if __name__ == "__main__":

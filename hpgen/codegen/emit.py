@@ -213,7 +213,8 @@ def _c_context(step, info: dict, common: dict) -> dict:
                 record_uses_xi=bool(step.record_uses_xi),
                 legendre_quadratic=bool(step.legendre_quadratic),
                 step_uses_g=bool(step.step_uses_g),
-                record_uses_g=bool(step.record_uses_g))
+                record_uses_g=bool(step.record_uses_g),
+                explicit=bool(getattr(step, "explicit", False)))
 
 
 def meta(step, info: dict) -> dict:
@@ -240,6 +241,8 @@ def meta(step, info: dict) -> dict:
             "jacobian": meta_entry(step),
             "kernels": kernels,
             "c_work": {k.name: work_sizes(k.function) for k in step.kernels},
+            # (only where true: an explicit step, hpgen.runtime.loop's explicit_step)
+            **({"explicit": True} if getattr(step, "explicit", False) else {}),
             **_open_meta(step)}
 
 

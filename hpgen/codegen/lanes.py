@@ -31,6 +31,10 @@ LANES_MAX_NZ = 3
 LANES_MAX_INSTRUCTIONS = 2000
 #: the kernels the lane-wise step calls
 LANE_KERNELS = ("residual_jacobian", "margin", "update")
+#: ... an explicit step's (meta "explicit": one update a step, no Newton, any nz)
+EXPLICIT_LANE_KERNELS = ("update",)
+#: an explicit step gets lane code when its update has at most this many instructions
+EXPLICIT_MAX_INSTRUCTIONS = 20000
 
 # CasADi op -> C expression over x, y, with CasADi's C semantics (casadi_sq, casadi_sign, the
 # inlined fmin/fmax of hpgen.codegen.csource, comparisons as 0/1)
@@ -130,13 +134,22 @@ def _calls(f) -> bool:
 def lanes_context(step, step_instructions: int) -> dict | None:
     """kernels.c.j2's ``lanes`` entry: {"L": lanes, "code": the lane kernels' C} when lane code
     pays and can be printed (a closed model, nz <= LANES_MAX_NZ, step kernels of at most
-    LANES_MAX_INSTRUCTIONS instructions, every op printable), else None."""
-    if (step.open_spec is not None or step.nz > LANES_MAX_NZ
-            or step_instructions > LANES_MAX_INSTRUCTIONS):
+    LANES_MAX_INSTRUCTIONS instructions, every op printable; an explicit step: its update of
+    at most EXPLICIT_MAX_INSTRUCTIONS instructions, any nz), else None."""
+    explicit = bool(getattr(step, "explicit", False))
+    if step.open_spec is not None:
         return None
-    if any(_calls(step.kernel(name).function) for name in LANE_KERNELS):
+    if explicit:
+        names = EXPLICIT_LANE_KERNELS
+        if step.kernel("update").function.n_instructions() > EXPLICIT_MAX_INSTRUCTIONS:
+            return None
+    else:
+        names = LANE_KERNELS
+        if step.nz > LANES_MAX_NZ or step_instructions > LANES_MAX_INSTRUCTIONS:
+            return None
+    if any(_calls(step.kernel(name).function) for name in names):
         return None                   # scalar kernels with calls: ensembles run those
-    parts = [lane_kernel_source(step.kernel(name)) for name in LANE_KERNELS]
+    parts = [lane_kernel_source(step.kernel(name)) for name in names]
     if any(p is None for p in parts):
         return None
     return {"L": LANES, "code": "\n".join(parts)}

@@ -249,4 +249,5 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
         open_spec=OpenSpec(model.inputs, model.runtime_parameters, model.runtime_defaults,
                            model.forced, model.time_dependent) if is_open else None,
         legendre_quadratic=quadratic, record_layout=layout, step_uses_g=step_uses_g,
-        record_uses_g=bool(ca.depends_on(row, gf)), record_uses_xi=bool(ca.depends_on(row, xi)))
+        record_uses_g=bool(ca.depends_on(row, gf)), record_uses_xi=bool(ca.depends_on(row, xi)),
+        explicit=is_splitting(tableau))

@@ -79,6 +79,7 @@ class DiscreteStep:
     record_uses_g: bool = True   # the record row depends on g
     record_uses_xi: bool = True  # the record row depends on xi (velocity_step needed)
     open_spec: OpenSpec | None = None  # an open model's step vector, else None (closed)
+    explicit: bool = False       # (g1, p1) = update(z = p, g, p, h) needs no Newton (a splitting)
 
     @property
     def record_width(self) -> int:

@@ -91,6 +91,7 @@ class PythonBackend(_Backend):
                                                getattr(mod, "ITERATE", None),
                                                getattr(mod, "ITERATE_FULL", None),
                                                meta.get("jacobian"))
+        self._newton.explicit = meta.get("explicit") is True
 
     def call(self, name, *args):
         return self._kernels[name](*args)

@@ -83,7 +83,7 @@ class RunStart:
     opts: NewtonOptions
     g0: np.ndarray
     mu0: np.ndarray
-    xi0: np.ndarray
+    xi0: np.ndarray | None       # None: an explicit module's mu0 start (no velocity)
     z0: np.ndarray
     inputs: StepInputs | None = None
 
@@ -214,7 +214,8 @@ class Engine:
             mu0 = self.backend.call("legendre", gf, xi0, *lv)[0]
         else:
             mu0 = self.maps.vector(mu0, "mu0")
-            xi0 = self.maps.velocity_flat(gf, mu0, lv=lv)
+            # (an explicit step's start needs no velocity: FirstStep.start)
+            xi0 = None if self.first_step.explicit else self.maps.velocity_flat(gf, mu0, lv=lv)
         return gf, mu0, xi0
 
     def start(self, g0, xi0, mu0, h, steps, every, opts, inputs=None) -> RunStart:
@@ -244,6 +245,9 @@ class Engine:
 
     def member_starts(self, a: RunArgs, h, steps, every, opts) -> list:
         """prepare_batch's members, h, steps, every and the options checked already."""
+        fast = self._explicit_starts(a, h, steps, every, opts)
+        if fast is not None:
+            return fast
         xi0, mu0 = a.xi0, a.mu0
         init = xi0 if xi0 is not None else mu0
         B = len(init) if hasattr(init, "__len__") else None
@@ -252,6 +256,25 @@ class Engine:
         return [self.start(G0[b], None if xi0 is None else xi0[b],
                            None if mu0 is None else mu0[b], h, steps, every, opts,
                            None if inputs is None else inputs[b]) for b in range(len(G0))]
+
+    def _explicit_starts(self, a: RunArgs, h, steps, every, opts) -> list | None:
+        """member_starts of an explicit closed module in the common case, a (B, d) float64
+        mu0 of finite rows and one shared (n, n) float64 g0 on the group: g0 checked once,
+        each start (g0, mu0 row, z0 = the row) as ``start`` makes it; None for anything else
+        (member_starts then checks every member and raises what it finds)."""
+        if not self.first_step.explicit or self.open is not None or a.xi0 is not None:
+            return None
+        mu, g = a.mu0, a.g0
+        if not (type(mu) is np.ndarray and type(g) is np.ndarray and mu.dtype == np.float64
+                and g.dtype == np.float64 and mu.ndim == 2 and mu.shape[1] == self.d
+                and g.shape == (self.n, self.n) and len(mu) >= 1
+                and np.isfinite(mu).all() and np.isfinite(g).all()):
+            return None
+        gf = np.array(g, dtype=np.float64).ravel(order="F")
+        if not float(self.backend.call("defect", gf)[0][0]) <= DEFECT_MAX:
+            return None
+        return [RunStart(h, steps, every, opts, gf, row, None, row.copy())
+                for row in np.array(mu, dtype=np.float64)]
 
     def _batch_g0(self, g0, xi0, mu0) -> np.ndarray:
         """g0 as (B, n, n), B the length of xi0 / mu0, checked."""
@@ -340,7 +363,9 @@ class Engine:
         hv = np.array([h] if inputs is None else inputs.hv(h, 0))
         opts = self.options(newton, full=True)
         xi = None
-        if z is None:
+        if z is None and self.first_step.explicit:      # its unknown is p (FirstStep.start)
+            z = p.copy()
+        elif z is None:
             if inputs is None:
                 xi = self.maps.velocity_flat(gf, p)
                 z = self.first_step.closed_start(gf, p, xi, h, opts)

@@ -10,7 +10,9 @@ step exists inside it (the discrete |h xi| is smaller than the continuous one), 
 step is solved by continuation in h; a run whose first step failed from its start is retried
 from there (``restart``). When no start is found, ``domain_hint`` names the chart's limit
 and the largest |h| whose first step solves. Continuation is for closed modules only (an
-open module's step vector carries t, u, params).
+open module's step vector carries t, u, params). An explicit step (meta "explicit", a
+splitting scheme) has no Newton start: its unknown is p_k, the start is mu0 (the value of its
+guess kernel) and there is nothing to retry.
 """
 from __future__ import annotations
 
@@ -34,11 +36,14 @@ class FirstStep:
     def __init__(self, backend, meta: dict, velocity):
         self.backend, self.meta, self.velocity = backend, meta, velocity
         self.open = meta.get("open")
+        self.explicit = meta.get("explicit") is True
 
     def start(self, gf, mu0, xi0, h, opts=None, inputs=None):
         """The Newton start of a run's first step from (g0 flat, mu0, xi0): a closed
         module's by ``closed_start``, an open module's the guess kernel at step 0's step
-        vector (``inputs``: its StepInputs)."""
+        vector (``inputs``: its StepInputs); an explicit step's mu0."""
+        if self.explicit:
+            return np.array(mu0, dtype=np.float64)
         if inputs is None:
             return self.closed_start(gf, mu0, xi0, h, opts)
         return self.backend.call("guess", xi0, gf, mu0, np.array(inputs.hv(h, 0)))[0]
@@ -108,7 +113,8 @@ class FirstStep:
         """The start of a second try when the run's first step failed from z0 (Newton
         diverged, or converged outside the chart): the first step solved by continuation in
         h (_continued), or None when that does not reach h or gives z0 again."""
-        if st["code"] in (abi.OK, abi.RECORD) or st["step"] != 0 or self.open:
+        if (st["code"] in (abi.OK, abi.RECORD) or st["step"] != 0 or self.open
+                or self.explicit):
             return None
         try:
             xi0 = self.velocity(gf, mu0)

@@ -139,6 +139,27 @@ def predict(G, dz) -> list:
     return _PREDICTORS[len(dz) - 1](G, dz)
 
 
+def explicit_step(kern: Kernels, run: Run, hv, st, with_g=True):
+    """One explicit step of ``run`` (a splitting scheme, meta "explicit") like
+    ``hpgen_explicit_step`` in C: z = p_k, (g1, p1) = update(z, g_k, p_k, hv) once (with_g
+    False: update_p, g kept); no Newton: iterations 0, residual 0.0, no Jacobian; NONFINITE
+    when the update is not finite (the run keeps its state). Returns the status code."""
+    run.z = run.p
+    if with_g:
+        g1, p1 = kern.update(run.z, run.g, run.p, hv)
+        bad = not (all_finite(g1) and all_finite(p1))
+    else:
+        g1, p1 = run.g, kern.update_p(run.z, run.g, run.p, hv)[0]
+        bad = not all_finite(p1)
+    st["iterations"], st["residual"] = 0, 0.0
+    if bad:
+        st.update(code=NONFINITE, step=run.k)
+        return NONFINITE
+    run.g, run.p = g1, p1
+    run.k += 1
+    return OK
+
+
 def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOptions, st,
               with_g=True):
     """One step of ``run`` like ``hpgen_run_step`` in C: predictor, step, run moved on success
@@ -150,6 +171,8 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
     extrapolated one step (predict)."""
     if run.inputs is not None:           # an open module: hv = [h, t_k, u_k, params]
         hv = run.inputs.hv(hv[0], run.k)
+    if kern.explicit:
+        return explicit_step(kern, run, hv, st, with_g)
     G = predictor_base(kern, run.g, run.p, hv, run.inputs is not None)
     dz = run.dz
     zs = predict(G, dz) if opts.predictor and dz else run.z

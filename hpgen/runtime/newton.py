@@ -174,7 +174,7 @@ class Kernels:
     hpgen.codegen.pyiterate; it needs the printed linear solver)."""
     __slots__ = ("residual", "jacobian", "residual_jacobian", "update", "margin", "linear",
                  "nz", "update_p", "iterate", "iterate_full", "guess", "velocity_step",
-                 "sparse")
+                 "sparse", "explicit")
 
     def __init__(self, nz, residual, jacobian, residual_jacobian=None, update=None,
                  margin=None, linear=None, update_p=None, iterate=None, iterate_full=None,
@@ -185,6 +185,7 @@ class Kernels:
         self.update, self.margin, self.update_p = update, margin, update_p
         self.guess, self.velocity_step = guess, velocity_step
         self.sparse = pattern is not None
+        self.explicit = False         # an explicit step (meta "explicit"): no Newton in runs
         if pattern is not None:       # a sparse Newton matrix: no printed dense solver
             from .sparse import sparse_solver
             linear = None

@@ -16,6 +16,7 @@ per call, done here with what can be kept across calls kept:
   kernel calls in place (defect, legendre, guess, and margin for a closed module), the run
   one hpgen_run_init (and hpgen_run_set_inputs) and one hpgen_advance writing the records
   after row 0; the Trajectory copies them out;
+- an explicit step (a splitting scheme) starts from z = mu0: no velocity, guess nor margin;
 - a mu0 start's velocity (StateMaps.velocity_flat: Newton with numpy's solve, ~30 us) is kept for
   the last (g0, mu0, lv) by their bytes (a function of those bytes alone).
 An open module's u, params and t0 are checked by the generic step_inputs at every call (u is
@@ -137,6 +138,8 @@ class Prologue:
         self.engine, self.lib = engine, b.lib
         self.n, self.d, self.nz = engine.n, engine.d, engine.nz
         self.open = engine.open
+        #: an explicit step (meta "explicit"): the start needs no velocity, guess nor margin
+        self.explicit = engine.meta.get("explicit") is True
         self.H = 1 if self.open is None else self.open["H"]
         #: the zeros of an open module's lv standing for the inputs (l takes no u)
         self.lv_u = [0.0] * (0 if self.open is None else len(self.open["inputs"]))
@@ -238,22 +241,26 @@ class Prologue:
             views["hv"][...] = inputs.hv(plan.h, 0)
             views["lv"][...] = [0.0, inputs.t0] + self.lv_u + inputs.params
             lv = (ptr["lv"],)
+        z = ptr["z"]
         if mu0 is None:
             fns["legendre"](ptr["g"], ptr["xi"], *lv, ptr["mu"])
-        elif not self._velocity(s, inputs is not None):
+        if self.explicit:                   # no Newton start: z = mu0 (FirstStep.start)
+            z = ptr["mu"]
+        elif mu0 is not None and not self._velocity(s, inputs is not None):
             return None
-        fns["guess"](ptr["xi"], ptr["g"], ptr["mu"], ptr["hv"], ptr["z"])
-        if inputs is None:
-            fns["margin"](ptr["z"], ptr["hv"], ptr["m"])
-            if not views["m"][0] > 0.0:             # the first step by continuation
-                return None
+        if not self.explicit:
+            fns["guess"](ptr["xi"], ptr["g"], ptr["mu"], ptr["hv"], z)
+            if inputs is None:
+                fns["margin"](z, ptr["hv"], ptr["m"])
+                if not views["m"][0] > 0.0:             # the first step by continuation
+                    return None
         if K <= ROWS_MAX:
             G, P, ga, pa = s.G, s.P, ptr["g"], ptr["mu"]
         else:
             G, P = np.empty((K, nn)), np.empty((K, d))
             G[0], P[0] = views["g"], views["mu"]
             ga, pa = _addr(G), _addr(P)
-        self.run_init(s.run_addr, ptr["g"], ptr["mu"], ptr["z"])
+        self.run_init(s.run_addr, ptr["g"], ptr["mu"], z)
         # (an open run points into its input rows and parameters: kept alive over the call)
         keep = None if inputs is None else self.engine.backend.set_inputs(s.run_addr, inputs)
         done = self.lib.hpgen_advance(s.run_addr, plan.h, plan.steps, plan.every,

@@ -63,10 +63,11 @@ def records(engine: Engine, g_rec, p_rec, st, h, every, t0, inputs=None) -> Traj
     # t0 + (k every) h; arange(0, K every, every) is arange(K) * every, and adding
     # t0 = 0.0 to these non-negative numbers changes no bit
     t = np.arange(0, K * every, every) * h
-    traj = Trajectory(t=t0 + t if t0 else t, g=g, mu=np.array(p_rec), h=h,
-                      every=every, partial=err is not None, error=err,
-                      newton_iterations=int(st["total_iterations"]),
-                      jacobians=int(st["jacobians"]), integrator=engine.owner, inputs=inputs)
+    traj = Trajectory.made(t=t0 + t if t0 else t, g=g, mu=np.array(p_rec), h=h,
+                           every=every, partial=err is not None, error=err,
+                           newton_iterations=int(st["total_iterations"]),
+                           jacobians=int(st["jacobians"]), integrator=engine.owner,
+                           inputs=inputs)
     if err is not None:
         err.partial = traj
     return traj

@@ -16,7 +16,8 @@ refusals, and the guarantees of a generated step.
   ``hpgen check``) keeps the canonical form to 1e-12 relative; ``linearize`` agrees with
   central differences of ``step`` (1e-7 relative, as tests/unit/test_linearize.py).
 - Run kinds: record rows, sections (the crossing on the group, between the two step states),
-  simulate_batch (lane-wise and body by body) bitwise equal to simulate.
+  simulate_batch (lane-wise and body by body) bitwise equal to simulate; the step is explicit
+  (no Newton iteration, no Jacobian) and its lanes take any number of unknowns.
 - Models without the structure are refused with one line naming what breaks it.
 """
 from __future__ import annotations
@@ -30,7 +31,7 @@ from conftest import EXAMPLES
 from hpgen.analysis.exact import free_rigid_body_attitude
 from hpgen.analysis.symplectic import GeneratedMap, ad_matrices, omega_matrix, \
     symplectic_defect
-from hpgen.errors import ModelError
+from hpgen.errors import ArgumentError, ModelError
 from hpgen.splitting import SPLITTING_NAMES, get_splitting
 
 HEAVY_TOP, FREE_BODY = EXAMPLES / "heavy_top.yaml", EXAMPLES / "free_rigid_body.yaml"
@@ -84,7 +85,7 @@ def test_split2_is_the_hand_written_dlm_splitting(compile_model):
     peer = RigidPeers(inertia, np.array([0.0, 0.0, 1.0]))
     _, y, done, _ = peer.run("splitting-2", np.concatenate([_g0().ravel(), inertia * XI0]),
                              0.01, 1000)
-    assert done == 1000 and tr.newton_iterations == 1000      # one trivial iterate per step
+    assert done == 1000 and tr.newton_iterations == 0 == tr.jacobians   # explicit: no Newton
     assert np.abs(tr.g[-1].ravel() - y[:9]).max() <= 1e-12
     assert np.abs(tr.mu[-1] - y[9:]).max() <= 1e-12 * np.abs(y[9:]).max()
 
@@ -211,6 +212,47 @@ def test_records_sections_and_batches(compile_model):
         for b, x in enumerate(xs):
             one = integ.simulate(g0, 0.02, 300, xi0=x, every=30)
             assert np.array_equal(batch[b].g, one.g) and np.array_equal(batch[b].mu, one.mu)
+
+
+@pytest.mark.parametrize("path,name,h", [(HEAVY_TOP, "split4-yoshida", 0.05),
+                                         (TWO_BODIES, "split2", 0.002)])
+def test_explicit_step_lanes_bitwise(compile_model, path, name, h):
+    """The explicit step: no Newton (0 iterations, 0 Jacobians), and its lane-wise ensembles
+    (11 bodies: a group of 8 lanes and 3 stepped alone; the two-body chain has nz = 6, more
+    than the Newton lanes allow) bitwise equal to simulate, C and Python."""
+    integ = compile_model(path, tableau=name)
+    assert integ.engine.backend.lanes > 0
+    g0, xi0, mu0 = _start(path)
+    mu = integ.legendre(g0, xi0) if mu0 is None else np.asarray(mu0, dtype=float)
+    mus = np.array([mu * (1.0 + 0.01 * k) for k in range(11)])
+    py = compile_model(path, tableau=name, backend="python")
+    for threads in (1, 2):
+        batch = integ.simulate_batch(g0, h, 60, mu0=mus, every=7, threads=threads)
+        for b in (0, 5, 10):
+            one = integ.simulate(g0, h, 60, mu0=mus[b], every=7)
+            assert one.newton_iterations == 0 == one.jacobians
+            assert np.array_equal(batch[b].g, one.g) and np.array_equal(batch[b].mu, one.mu)
+    other = py.simulate(g0, h, 60, mu0=mus[10], every=7)
+    assert np.array_equal(other.g, batch[10].g) and np.array_equal(other.mu, batch[10].mu)
+
+
+def test_explicit_batch_start_checks_like_simulate(compile_model):
+    """An explicit module's ensemble start (one shared g0, mu0 rows: checked at once) gives
+    each member simulate's start and the one-line errors of a member checked alone."""
+    integ = compile_model(HEAVY_TOP, tableau="split2")
+    g0, mus = _g0(), np.array([[0.2, 5.0, 18.0], [0.3, 4.0, 17.0]])
+    batch = integ.simulate_batch(g0, 0.05, 20, mu0=mus, every=5, threads=1)
+    for b in range(2):
+        one = integ.simulate(g0, 0.05, 20, mu0=mus[b], every=5)
+        assert np.array_equal(batch[b].g, one.g) and np.array_equal(batch[b].mu, one.mu)
+    bad = mus.copy()
+    bad[1, 2] = np.nan
+    with pytest.raises(ArgumentError) as e:
+        integ.simulate_batch(g0, 0.05, 20, mu0=bad, threads=1)
+    assert e.value.field == "mu0" and "non-finite" in str(e.value)
+    with pytest.raises(ArgumentError) as e:
+        integ.simulate_batch(1.01 * g0, 0.05, 20, mu0=mus, threads=1)
+    assert "not on the group" in str(e.value)
 
 
 # ---- refusals ------------------------------------------------------------------------------

@@ -12,9 +12,11 @@
    with the scalar hpgen_run_step from its state before the step, which then retries or
    reports exactly as a scalar run; a lane that fails there stops (its status set) and the
    other lanes continue. The model's lane kernels (hpgen_lane_residual_jacobian,
-   hpgen_lane_margin, hpgen_lane_update) come from kernels.c, as its HPGEN_L. */
+   hpgen_lane_margin, hpgen_lane_update) come from kernels.c, as its HPGEN_L. An explicit
+   step (HPGEN_EXPLICIT) has no Newton: one lane-wise update a step (hpgen_lane_update
+   alone), any number of unknowns. */
 #if defined(HPGEN_L)
-#if HPGEN_NZ > 3
+#if HPGEN_NZ > 3 && !HPGEN_EXPLICIT
 #error "lane code is written for at most 3 unknowns (the adjugate solve)"
 #endif
 
@@ -44,6 +46,7 @@
             zw[i * HPGEN_L + l] = a != 0.0 ? zt##i : zo##i;
 
 HPGEN_LANES_BEGIN
+#if !HPGEN_EXPLICIT
 /* Full Newton (hpgen_newton with o->simplified = 0) on L lanes from z (in/out): ok[l] = 1
    where lane l converged (z its solution, iters[l] its iterations, rnorm[l] its last
    residual norm), 0 where hpgen_newton would return a failure (z then undefined). One lane
@@ -137,6 +140,8 @@ static void hpgen_lane_newton(const double* g, const double* p, const double* hv
     }
 }
 
+#endif /* !HPGEN_EXPLICIT */
+
 /* lane l <-> run r: the state hpgen_run_step reads and writes */
 static void hpgen_lane_gather(const hpgen_run* r, int l, double* g, double* p, double* z,
                               double (*dz)[HPGEN_NZ * HPGEN_L], long long* hp,
@@ -166,6 +171,79 @@ static void hpgen_lane_scatter(hpgen_run* r, int l, const double* g, const doubl
     r->k = k[l];
 }
 
+#if HPGEN_EXPLICIT
+/* L runs (runs[0..L-1], the same k, g not stale) of an explicit step advanced like L calls
+   of hpgen_advance (records of lane l at g_rec + l per_run NN, p_rec + l per_run D): per step
+   z = p_k and one lane-wise update (hpgen_explicit_step's operations on every lane); a lane
+   whose g1 or p1 sum is not finite redoes the step by hpgen_run_step, which reports it (or
+   steps, when only the sum overflowed). */
+static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long long every,
+                                const hpgen_options* o, long long per_run, double* g_rec,
+                                double* p_rec, hpgen_status* st) {
+    double g[HPGEN_NN * HPGEN_L], p[HPGEN_D * HPGEN_L], z[HPGEN_NZ * HPGEN_L],
+        dz[HPGEN_PH][HPGEN_NZ * HPGEN_L], g1[HPGEN_NN * HPGEN_L], p1[HPGEN_D * HPGEN_L],
+        hv[HPGEN_L], hv1[1];
+    long long hp[HPGEN_L], k[HPGEN_L], rec[HPGEN_L], ok[HPGEN_L], alive[HPGEN_L], n,
+        nalive = HPGEN_L;
+    int i, l;
+    hpgen_options full = *o;
+    full.simplified = 0;
+    hv1[0] = h;
+    for (l = 0; l < HPGEN_L; ++l) {
+        hpgen_status_init(st + l);
+        hpgen_lane_gather(runs + l, l, g, p, z, dz, hp, k);
+        hv[l] = h;
+        alive[l] = 1;
+        rec[l] = 0;
+    }
+    for (n = 0; n < steps && nalive > 0; ++n) {
+        long long all = 1;
+        memcpy(z, p, sizeof z);
+        hpgen_lane_update(z, g, p, hv, g1, p1);
+        for (l = 0; l < HPGEN_L; ++l) {
+            double sg = 0.0, sp = 0.0;
+            for (i = 0; i < HPGEN_NN; ++i) sg += g1[i * HPGEN_L + l];
+            for (i = 0; i < HPGEN_D; ++i) sp += p1[i * HPGEN_L + l];
+            ok[l] = alive[l] & (sg - sg == 0.0) & (sp - sp == 0.0);
+            all &= ok[l];
+        }
+        if (all) {
+            memcpy(g, g1, sizeof g);
+            memcpy(p, p1, sizeof p);
+        } else {
+            for (l = 0; l < HPGEN_L; ++l) {
+                if (!ok[l]) continue;
+                for (i = 0; i < HPGEN_NN; ++i) g[i * HPGEN_L + l] = g1[i * HPGEN_L + l];
+                for (i = 0; i < HPGEN_D; ++i) p[i * HPGEN_L + l] = p1[i * HPGEN_L + l];
+            }
+        }
+        for (l = 0; l < HPGEN_L; ++l) k[l] += ok[l];
+        for (l = 0; l < HPGEN_L; ++l) {
+            if (!alive[l] || ok[l]) continue;
+            hpgen_lane_scatter(runs + l, l, g, p, z, dz, hp, k);
+            if (hpgen_run_step(runs + l, hv1, o, &full, st + l, 1) != HPGEN_OK) {
+                alive[l] = 0;
+                --nalive;
+                continue;
+            }
+            hpgen_lane_gather(runs + l, l, g, p, z, dz, hp, k);
+        }
+        for (l = 0; l < HPGEN_L; ++l) {
+            if (!alive[l] || k[l] % every != 0) continue;
+            for (i = 0; i < HPGEN_NN; ++i)
+                g_rec[(l * per_run + rec[l]) * HPGEN_NN + i] = g[i * HPGEN_L + l];
+            for (i = 0; i < HPGEN_D; ++i)
+                p_rec[(l * per_run + rec[l]) * HPGEN_D + i] = p[i * HPGEN_L + l];
+            ++rec[l];
+        }
+    }
+    for (l = 0; l < HPGEN_L; ++l) {
+        if (!alive[l]) continue;
+        hpgen_lane_scatter(runs + l, l, g, p, z, dz, hp, k);
+        st[l].step = k[l];
+    }
+}
+#else
 /* L runs (runs[0..L-1], the same k, full Newton, g not stale) advanced like L calls of
    hpgen_advance (records of lane l at g_rec + l per_run NN, p_rec + l per_run D). */
 static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long long every,
@@ -287,11 +365,12 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
         st[l].step = k[l];
     }
 }
+#endif /* HPGEN_EXPLICIT */
 
 HPGEN_LANES_END
 
 /* hpgen_advance_batch with lanes: groups of L consecutive runs at the same step, with full
-   Newton (o->simplified = 0), advance together (hpgen_advance_lanes); the other runs (the
+   Newton (o->simplified = 0; an explicit step: any options), advance together (hpgen_advance_lanes); the other runs (the
    remainder of B / L, simplified Newton, invalid arguments) by hpgen_advance, one after the
    other. The same records, statuses and return value as hpgen_advance_batch. */
 HPGEN_EXPORT long long hpgen_advance_batch_lanes(hpgen_run* runs, long long B, double h,
@@ -300,7 +379,8 @@ HPGEN_EXPORT long long hpgen_advance_batch_lanes(hpgen_run* runs, long long B, d
                                                  double* g_rec, double* p_rec,
                                                  hpgen_status* st) {
     long long b = 0, failed = 0, j;
-    if (steps >= 0 && every >= 1 && hpgen_options_ok(o) && !o->simplified) {
+    if (steps >= 0 && every >= 1 && hpgen_options_ok(o)
+        && (HPGEN_EXPLICIT || !o->simplified)) {
         for (; b + HPGEN_L <= B; b += HPGEN_L) {
             int same = 1, l;
             for (l = 0; l < HPGEN_L; ++l)

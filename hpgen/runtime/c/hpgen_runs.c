@@ -71,6 +71,31 @@ static inline void hpgen_predict(const double* G, const double* d, int es, int o
     }
 }
 
+#if HPGEN_EXPLICIT
+/* One explicit step of run r (hv the step's vector): z = p_k (the step's unknown, which the
+   sections' chart curve reads), (g_{k+1}, p_{k+1}) = update(z, g_k, p_k, hv) (with_g = 0:
+   update_p) once; no Newton: iterations and Jacobians 0, residual 0 (F = z - p_k = 0); the
+   predictor's offsets stay unused. Returns the status code (HPGEN_NONFINITE: the update is
+   not finite; the run keeps (g_k, p_k)). */
+static int hpgen_explicit_step(hpgen_run* r, const double* hv, hpgen_status* st, int with_g) {
+    double g1[HPGEN_NN], p1[HPGEN_D];
+    int bad;
+    memcpy(r->z, r->p, sizeof r->p);
+    if (with_g)
+        bad = hpgen_k_update(r->z, r->g, r->p, hv, g1, p1) || !hpgen_all_finite(g1, HPGEN_NN)
+              || !hpgen_all_finite(p1, HPGEN_D);
+    else
+        bad = hpgen_k_update_p(r->z, r->g, r->p, hv, p1) || !hpgen_all_finite(p1, HPGEN_D);
+    st->iterations = 0;
+    st->residual = 0.0;
+    if (bad) { st->code = HPGEN_NONFINITE; st->step = r->k; return HPGEN_NONFINITE; }
+    if (with_g) memcpy(r->g, g1, sizeof g1);
+    memcpy(r->p, p1, sizeof p1);
+    r->k += 1;
+    return HPGEN_OK;
+}
+#endif
+
 /* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
    success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for the steps
    after the first, full (o with full Newton) for the first. Updates the counters of st;
@@ -95,6 +120,10 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     r->hv[1] = r->t0 + (double)r->k * hv[0];
     for (i = 0; i < HPGEN_M; ++i) r->hv[2 + i] = r->U[(r->u_rows == 1 ? 0 : r->k) * HPGEN_M + i];
     hv = r->hv;
+#endif
+#if HPGEN_EXPLICIT
+    (void)o; (void)full; (void)G; (void)zs; (void)res; (void)it; (void)code; (void)predicted;
+    return hpgen_explicit_step(r, hv, st, with_g);
 #endif
     /* (G is kept up to date with or without o->predictor) */
     hpgen_predictor_base(r->g, r->p, hv, G);

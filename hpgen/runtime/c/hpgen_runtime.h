@@ -30,6 +30,8 @@
  *                                   hpgen_sp_pc (hpgen.codegen.sparse)
  *   HPGEN_HASH                      the content hash (a string literal)
  *   HPGEN_L                         (optional) lanes of the lane-wise kernels hpgen_lane_*
+ *   HPGEN_EXPLICIT                  (optional, default 0) 1: the step is explicit (a splitting
+ *                                   scheme, NZ = D): update(z = p_k, g_k, p_k, h) once, no Newton
  *
  * Conventions: all arrays are double, matrices column-major (g[i + j*n]), h is a scalar at
  * the API and a 1-vector for the kernels. No static mutable state: every function is
@@ -53,6 +55,12 @@
     || !defined(HPGEN_LEGENDRE_QUADRATIC) || !defined(HPGEN_SKIP_G) \
     || !defined(HPGEN_FLATTEN) || !defined(HPGEN_HASH) || !defined(HPGEN_SPARSE)
 #error "define the model (HPGEN_N, HPGEN_D, HPGEN_NZ, HPGEN_OPEN, ...) before hpgen_runtime.h"
+#endif
+#ifndef HPGEN_EXPLICIT
+#define HPGEN_EXPLICIT 0
+#endif
+#if HPGEN_EXPLICIT && HPGEN_NZ != HPGEN_D
+#error "an explicit step's unknown is p_k: HPGEN_NZ == HPGEN_D"
 #endif
 #if HPGEN_OPEN && (!defined(HPGEN_M) || !defined(HPGEN_P))
 #error "an open model defines HPGEN_M and HPGEN_P"
