@@ -29,11 +29,14 @@ from dataclasses import dataclass
 #: (5: hpgen_run holds the predictor offsets dz0..dz2 instead of zprev, zprev2)
 #: (6: hpgen_run holds PREDICTOR_HISTORY offsets dz[0..5], the predictor is quintic)
 #: (7: a sparse module's hpgen_run.lu holds the sparse QR of J, HPGEN_LU_SIZE doubles)
-ABI_VERSION = 7
+#: (8: hpgen_run holds the composition's substeps and their predictor histories;
+#:  hpgen_run_set_compose)
+ABI_VERSION = 8
 #: version of meta.json's layout; the loader refuses any other (recompile the module)
 #: (3: "group", the group's name, e.g. "SO3" or "[SO3, R3]")
 #: (4: "jacobian", the Newton matrix's storage: dense, or sparse with J's CCS pattern)
-META_FORMAT = 4
+#: (5: "explicit", true for a step that is one explicit update: the splitting schemes)
+META_FORMAT = 5
 
 
 # ---- kernels -----------------------------------------------------------------------------
