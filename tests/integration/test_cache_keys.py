@@ -187,10 +187,11 @@ sys.exit(main(["compile", sys.argv[1], "--cache-dir", sys.argv[2], "-o", sys.arg
 
 def test_cli_compile_of_a_scene_edit_is_a_hit_without_compile_stack(tmp_path):
     """From the command line too: a changed h is served from the cache (no sympy, casadi,
-    jinja2 imported), and the -o copy carries the edited model file."""
+    jinja2 imported), and the -o copy carries the edited model file. (The first compile
+    copies out too, so that the entry holds both backends' sources, as -o needs.)"""
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     (tmp_path / "m.yaml").write_text(BODY)
-    hpgen.compile(tmp_path / "m.yaml", cache_dir=tmp_path / "cache")
+    hpgen.compile(tmp_path / "m.yaml", cache_dir=tmp_path / "cache", out=tmp_path / "first")
     edited = SAME_CODE["scene h, steps, every"]
     (tmp_path / "m.yaml").write_text(edited)
     out = subprocess.run([sys.executable, "-c", CLI_HIT, str(tmp_path / "m.yaml"),

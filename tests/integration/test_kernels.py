@@ -74,7 +74,8 @@ def test_generated_c_compiles_with_strict_warnings(tmp_path, cache_dir, example)
     is generated into the session's build cache (backend python: sources only)."""
     import hpgen
     from hpgen.runtime.build import DEFAULT_CFLAGS, include_flags
-    module = hpgen.build(EXAMPLES / f"{example}.yaml", backend="python", cache_dir=cache_dir)
+    module = hpgen.build(EXAMPLES / f"{example}.yaml", backend="python", cache_dir=cache_dir,
+                          out=tmp_path / "module")           # out: both backends' sources
     src = module.module_dir / "kernels.c"
     flags = [f for f in DEFAULT_CFLAGS if f not in ("-shared", "-fPIC")]
     proc = subprocess.run(["cc", *flags, "-Wall", "-Werror", "-fPIC", "-shared",
