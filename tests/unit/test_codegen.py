@@ -60,7 +60,7 @@ def test_meta_json():
     text = gm.file("meta.json")
     meta = json.loads(text)
     assert text.endswith("\n") and text == json.dumps(meta, sort_keys=True, indent=2) + "\n"
-    assert meta["format"] == META_FORMAT == 4 and meta["module"] == "toy_plain"
+    assert meta["format"] == META_FORMAT == 5 and meta["module"] == "toy_plain"
     assert meta["jacobian"] == {"storage": "dense"}
     assert meta["backend"] == "c" and meta["group"] == "SO3"
     assert (meta["n"], meta["d"], meta["nz"], meta["reduced"]) == (3, 3, 3, True)
