@@ -55,3 +55,11 @@ def _symbols(prefix: str, rows: int, cols: int | None = None) -> np.ndarray:
     (rows x cols); the symbols and their array are created once per size (a family's g has
     n*n of them), each call returns a copy."""
     return _symbol_array(prefix, rows, cols).copy()
+
+
+@functools.lru_cache(maxsize=16)
+def symbol_rows(prefix: str, rows: int, cols: int) -> tuple:
+    """The symbols of _symbols(prefix, rows, cols) as a tuple of row tuples (Model.g_symbols),
+    built once per size."""
+    flat = _symbol_list(prefix, rows, cols)
+    return tuple(flat[i * cols:(i + 1) * cols] for i in range(rows))
