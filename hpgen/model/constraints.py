@@ -171,14 +171,14 @@ def _generic_point(group):
 def _check_rank(doc, constraints, g_symbols, group, g, where: str) -> None:
     _, Phi, labels = constraint_values(constraints, g_symbols, group, g)
     scale = max(np.abs(Phi).max(), 1e-300)
-    basis = np.zeros((0, group.d))
+    basis = np.zeros(Phi.shape)      # orthonormal rows spanning Phi[:r]
     for r in range(len(Phi)):
-        rest = Phi[r] - basis.T @ (basis @ Phi[r])
+        rest = Phi[r] - basis[:r].T @ (basis[:r] @ Phi[r])
         if np.linalg.norm(rest) <= RANK_TOL * scale:
             raise doc.error(("constraints",), f"{labels[r]} is redundant {where}: its Jacobian "
                             "row is a combination of the previous rows' (singular constraint "
                             "Jacobian); remove it or the rows it repeats")
-        basis = np.vstack([basis, rest / np.linalg.norm(rest)])
+        basis[r] = rest / np.linalg.norm(rest)
 
 
 def _numeric_hats(group) -> list:
