@@ -45,16 +45,13 @@ def _symbol_list(prefix: str, rows: int, cols: int | None) -> tuple:
 
 
 @functools.lru_cache(maxsize=16)
-def _symbol_array(prefix: str, rows: int, cols: int | None) -> np.ndarray:
-    return _to_array(list(_symbol_list(prefix, rows, cols)),
-                     (rows,) if cols is None else (rows, cols))
-
-
 def _symbols(prefix: str, rows: int, cols: int | None = None) -> np.ndarray:
-    """A fresh object array of the real symbols ``<prefix>_k`` (rows,) or ``<prefix>_i_j``
-    (rows x cols); the symbols and their array are created once per size (a family's g has
-    n*n of them), each call returns a copy."""
-    return _symbol_array(prefix, rows, cols).copy()
+    """The read-only object array of the real symbols ``<prefix>_k`` (rows,) or
+    ``<prefix>_i_j`` (rows x cols), created once per size (a family's g has n*n of them)."""
+    out = _to_array(list(_symbol_list(prefix, rows, cols)),
+                    (rows,) if cols is None else (rows, cols))
+    out.flags.writeable = False
+    return out
 
 
 @functools.lru_cache(maxsize=16)
