@@ -154,8 +154,9 @@ def test_reactions_of_a_hanging_pendulum(tmp_path):
 def _reference_values(model, g0):
     """phi(g0) and Phi(g0) by sympy: Phi[r, a] = sum_ij dphi_r/dg_ij (g0 hat(e_a))_ij."""
     import casadi as ca
-    n, d = model.group.n, model.group.d
-    subs = {s: float(g0[i, j]) for i, row in enumerate(model.g_symbols) for j, s in enumerate(row)}
+    d = model.group.d
+    subs = {s: float(g0[i, j]) for i, row in enumerate(model.g_symbols)
+            for j, s in enumerate(row)}
     rows = [r for c in model.constraints for r in c.rows]
     phi = np.array([float(r.xreplace(subs)) for r in rows])
     Phi = np.zeros((len(rows), d))
