@@ -36,6 +36,8 @@ RANK_TOL = 1e-9
 #: a Legendre map whose smallest singular value is below this fraction of its largest is
 #: singular (derive.checks' limit on the condition number, 1e12)
 LEGENDRE_TOL = 1e-12
+#: a symmetric matrix of at most this many rows gets one dense eigenvalue solve
+DENSE_EIGEN_SIZE = 200
 
 
 @dataclass(frozen=True)
@@ -130,11 +132,14 @@ def _singular_values(a):
     magnitudes (symmetrized first, so round-off asymmetry does not matter), computed per
     connected block of its nonzero pattern and, for a block that is banded after a
     reverse Cuthill-McKee ordering (a family's body-local terms and joints), by the banded
-    solver; a permutation leaves the eigenvalues unchanged."""
+    solver; a permutation leaves the eigenvalues unchanged. Up to DENSE_EIGEN_SIZE rows,
+    one dense eigvalsh."""
+    a = (a + a.T) / 2
+    if len(a) <= DENSE_EIGEN_SIZE:
+        return np.sort(np.abs(np.linalg.eigvalsh(a)))[::-1]
     from scipy.linalg import eig_banded
     from scipy.sparse import csr_matrix
     from scipy.sparse.csgraph import connected_components, reverse_cuthill_mckee
-    a = (a + a.T) / 2
     count, block_of = connected_components(csr_matrix(a != 0), directed=False)
     values = []
     for b in range(count):

@@ -189,3 +189,27 @@ def test_constraint_values_match_sympy_derivatives(text):
     assert np.abs(phi).min() > 1e-3                   # a generic point violates every row
     assert np.abs(phi - ref_phi).max() <= 1e-14 * (1 + np.abs(ref_phi).max())
     assert np.abs(Phi - ref_Phi).max() <= 1e-14 * (1 + np.abs(ref_Phi).max())
+
+
+@pytest.mark.parametrize("kind", ["chain", "scattered", "singular"])
+def test_singular_values_by_blocks_match_svd(kind):
+    """The blockwise / banded singular values of a symmetric matrix above the dense size
+    equal numpy's SVD to round-off (a chain of overlapping blocks, a scattered pattern,
+    and a chain with an exactly zero row: a zero singular value)."""
+    from hpgen.model.constraints import DENSE_EIGEN_SIZE, LEGENDRE_TOL, _singular_values
+    rng = np.random.default_rng(7)
+    n = DENSE_EIGEN_SIZE + 57
+    a = np.zeros((n, n))
+    if kind == "scattered":
+        a = rng.standard_normal((n, n)) * (rng.random((n, n)) < 0.01)
+    else:
+        for i in range(0, n - 6, 4):
+            a[i:i + 6, i:i + 6] += rng.standard_normal((6, 6))
+    a = a + a.T + np.diag(rng.uniform(5.0, 6.0, n) * rng.choice([-1, 1], n))
+    if kind == "singular":
+        a[n // 2, :] = a[:, n // 2] = 0.0
+    ref = np.linalg.svd(a, compute_uv=False)
+    s = _singular_values(a)
+    assert s.shape == ref.shape
+    assert np.abs(s - ref).max() <= 1e-12 * ref[0]
+    assert (s[-1] <= LEGENDRE_TOL * s[0]) == (kind == "singular")
