@@ -19,6 +19,7 @@ refused only when that fails.
 """
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
 
@@ -35,6 +36,8 @@ RANK_TOL = 1e-9
 #: a Legendre map whose smallest singular value is below this fraction of its largest is
 #: singular (derive.checks' limit on the condition number, 1e12)
 LEGENDRE_TOL = 1e-12
+#: a symmetric matrix of at most this many rows gets one dense eigenvalue solve
+DENSE_EIGEN_SIZE = 200
 
 
 @dataclass(frozen=True)
@@ -101,31 +104,80 @@ def check_legendre(doc, constraints, g_symbols, group, g, lagrangian) -> None:
     a constrained Legendre map [[H, Phi^T], [Phi, 0]] that is singular (l flat along a
     velocity the constraints leave free: naming it), and a singular H whose flat direction
     the constraints remove (a massless constrained direction, not supported)."""
-    from .projection import casadi_maps
-    from .symbols import TIME_SYMBOL
-    lag, xi_symbols, runtime = lagrangian
-    fun = casadi_maps(constraints, g_symbols, group, lag, xi_symbols,
-                      {TIME_SYMBOL: 0, **runtime})
-    _, Phi, H = (np.array(v, dtype=float) for v in fun(g, np.zeros(group.d)))
+    _, Phi, _ = constraint_values(constraints, g_symbols, group, g)
+    H = _legendre_map(lagrangian, g_symbols, group, g)
     if not np.all(np.isfinite(H)):
         return                      # the Legendre check of the derived step reports it
     m, d = Phi.shape
     scale = max(np.abs(H).max(), 1e-300)
     kkt = np.block([[H / scale, Phi.T], [Phi, np.zeros((m, m))]])
-    s = np.linalg.svd(kkt, compute_uv=False)
+    s = _singular_values(kkt)
     if s[-1] <= LEGENDRE_TOL * s[0]:
         v = np.linalg.svd(kkt)[2][-1][:d]
         raise doc.error(("lagrangian",), "the constrained Legendre map is singular at a "
                         "generic g: l has no second derivative along the velocity "
                         f"{_direction(v)}, which the constraints leave free; the Lagrangian "
                         "must be nondegenerate in xi on the constraints")
-    sh = np.linalg.svd(H / scale, compute_uv=False)
+    sh = _singular_values(H / scale)
     if sh[-1] <= LEGENDRE_TOL * sh[0]:
         v = np.linalg.svd(H)[2][-1]
         raise doc.error(("lagrangian",), "d2l/dxi2 is singular at a generic g (l is flat "
                         f"along the velocity {_direction(v)}); the constraints fix that "
                         "velocity, but the constrained step needs d2l/dxi2 invertible: give "
                         "that direction an inertia")
+
+
+def _singular_values(a):
+    """The singular values of the symmetric matrix ``a``, decreasing: its eigenvalues'
+    magnitudes (symmetrized first, so round-off asymmetry does not matter), computed per
+    connected block of its nonzero pattern and, for a block that is banded after a
+    reverse Cuthill-McKee ordering (a family's body-local terms and joints), by the banded
+    solver; a permutation leaves the eigenvalues unchanged. Up to DENSE_EIGEN_SIZE rows,
+    one dense eigvalsh."""
+    a = (a + a.T) / 2
+    if len(a) <= DENSE_EIGEN_SIZE:
+        return np.sort(np.abs(np.linalg.eigvalsh(a)))[::-1]
+    from scipy.linalg import eig_banded
+    from scipy.sparse import csr_matrix
+    from scipy.sparse.csgraph import connected_components, reverse_cuthill_mckee
+    count, block_of = connected_components(csr_matrix(a != 0), directed=False)
+    values = []
+    for b in range(count):
+        idx = np.flatnonzero(block_of == b)
+        block = a[np.ix_(idx, idx)]
+        order = reverse_cuthill_mckee(csr_matrix(block != 0), symmetric_mode=True)
+        block = block[np.ix_(order, order)]
+        rows, cols = np.nonzero(block)
+        width = int(np.abs(rows - cols).max()) if rows.size else 0
+        if 4 * width < len(idx):
+            bands = np.zeros((width + 1, len(idx)))      # lower band storage
+            for k in range(width + 1):
+                bands[k, :len(idx) - k] = np.diagonal(block, -k)
+            values.append(eig_banded(bands, lower=True, eigvals_only=True))
+        else:
+            values.append(np.linalg.eigvalsh(block))
+    return np.sort(np.abs(np.concatenate(values)))[::-1]
+
+
+def _legendre_map(lagrangian, g_symbols, group, g):
+    """H = d2l/dxi2 (d x d) at numeric g and xi = 0, t = 0, runtime parameters at their
+    defaults; lagrangian: (l, xi_symbols, {runtime symbol: default}). Only the entries of g
+    that l uses become CasADi symbols."""
+    import casadi as ca
+
+    from ..derive.lagrangian import to_casadi
+    from .symbols import TIME_SYMBOL
+    lag, xi_symbols, runtime = lagrangian
+    expr = lag.xreplace({TIME_SYMBOL: 0, **runtime})
+    where = {s: (i, j) for i, row in enumerate(g_symbols) for j, s in enumerate(row)}
+    used = sorted(where[s] for s in expr.free_symbols if s in where)
+    v, X = ca.SX.sym("v", len(used)), ca.SX.sym("xi", group.d)
+    mapping = {**{g_symbols[i][j]: v[k] for k, (i, j) in enumerate(used)},
+               **{s: X[k] for k, s in enumerate(xi_symbols)}}
+    H = ca.hessian(to_casadi(expr, mapping), X)[0]
+    fun = ca.Function("legendre_map", [v, X], [H])
+    values = [float(g[i][j]) for i, j in used]
+    return np.array(fun(values, np.zeros(group.d)), dtype=float)
 
 
 def _direction(v) -> str:
@@ -147,14 +199,14 @@ def _generic_point(group):
 def _check_rank(doc, constraints, g_symbols, group, g, where: str) -> None:
     _, Phi, labels = constraint_values(constraints, g_symbols, group, g)
     scale = max(np.abs(Phi).max(), 1e-300)
-    basis = np.zeros((0, group.d))
+    basis = np.zeros(Phi.shape)      # orthonormal rows spanning Phi[:r]
     for r in range(len(Phi)):
-        rest = Phi[r] - basis.T @ (basis @ Phi[r])
+        rest = Phi[r] - basis[:r].T @ (basis[:r] @ Phi[r])
         if np.linalg.norm(rest) <= RANK_TOL * scale:
             raise doc.error(("constraints",), f"{labels[r]} is redundant {where}: its Jacobian "
                             "row is a combination of the previous rows' (singular constraint "
                             "Jacobian); remove it or the rows it repeats")
-        basis = np.vstack([basis, rest / np.linalg.norm(rest)])
+        basis[r] = rest / np.linalg.norm(rest)
 
 
 def _numeric_hats(group) -> list:
@@ -176,34 +228,47 @@ def _numeric_hats(group) -> list:
 
 def constraint_values(constraints, g_symbols, group, g0):
     """(phi(g0) (m,), Phi(g0) (m x d), labels) for numeric g0 (n x n); labels[r] names row r
-    (``constraints[i]`` or ``constraints[i] row j``)."""
-    import sympy as sp
+    (``constraints[i]`` or ``constraints[i] row j``). The rows and their gradient in the
+    entries of g they use are evaluated by one CasADi function (_row_function); Phi follows
+    from d/de g0 exp(e E_a) at 0 = g0 E_a."""
+    fun, used, labels = _row_function(tuple(constraints), tuple(map(tuple, g_symbols)))
     g0 = np.asarray(g0, dtype=float)
-    n = g0.shape[0]
-    where = {g_symbols[i][j]: (i, j) for i in range(n) for j in range(n)}
-    subs = {g_symbols[i][j]: sp.Float(float(g0[i, j])) for i in range(n) for j in range(n)}
-    hats = _numeric_hats(group)
-    # d/de g0 exp(e E_a) at 0 = g0 E_a: nonzero in the columns of E_a's factor only
-    dirs = [(lay, [g0[:, lay.row:lay.row + lay.n] @ E for E in Es]) for lay, Es in hats]
-    vals, jac, labels = [], [], []
+    where = np.array(used, dtype=int).reshape(len(used), 2)
+    phi, grad = fun(g0[where[:, 0], where[:, 1]])
+    phi = np.array(phi, dtype=float).reshape(len(labels))
+    grad = np.array(grad, dtype=float).reshape(len(labels), len(used))
+    Phi = np.zeros((len(labels), group.d))
+    for lay, Es in _numeric_hats(group):
+        # the used entries (i, j) in the factor's columns: dphi/de_a = sum grad * (g0 E_a)[i, j]
+        ks = np.flatnonzero((where[:, 1] >= lay.row) & (where[:, 1] < lay.row + lay.n))
+        if not len(ks):
+            continue
+        cols = g0[:, lay.row:lay.row + lay.n]
+        D = np.stack([(cols @ E)[where[ks, 0], where[ks, 1] - lay.row] for E in Es], axis=1)
+        Phi[:, lay.off:lay.off + lay.d] = grad[:, ks] @ D
+    return phi, Phi, labels
+
+
+@functools.lru_cache(maxsize=8)
+def _row_function(constraints: tuple, g_symbols: tuple):
+    """(casadi.Function v -> (phi, dphi/dv), ((i, j) of v's entries in g, ...), labels) for
+    the rows of ``constraints``: v the entries of g the rows use, in row-major order."""
+    import casadi as ca
+
+    from ..derive.lagrangian import to_casadi
+    where = {s: (i, j) for i, row in enumerate(g_symbols) for j, s in enumerate(row)}
+    rows, labels = [], []
     for i, c in enumerate(constraints):
         for j, row in enumerate(c.rows):
             labels.append((c.label or f"constraints[{i}]")
                           + (f" row {j}" if len(c.rows) > 1 else ""))
-            free = row.free_symbols
-            vals.append(float(row.xreplace({s: subs[s] for s in free if s in subs})))
-            grad = np.zeros((n, n))
-            point = {s: subs[s] for s in free if s in subs}
-            for s in free:
-                if s in where:
-                    grad[where[s]] = float(sp.diff(row, s).xreplace(point))
-            out = np.zeros(group.d)
-            for lay, Ds in dirs:
-                cols = grad[:, lay.row:lay.row + lay.n]
-                if cols.any():
-                    out[lay.off:lay.off + lay.d] = [float(np.sum(cols * D)) for D in Ds]
-            jac.append(out)
-    return np.array(vals), np.array(jac).reshape(len(labels), group.d), labels
+            rows.append(row)
+    used = sorted({where[s] for r in rows for s in r.free_symbols})
+    v = ca.SX.sym("v", len(used))
+    symbol = {g_symbols[i][j]: v[k] for k, (i, j) in enumerate(used)}
+    phi = ca.vertcat(*[to_casadi(r, symbol) for r in rows])
+    fun = ca.Function("constraint_rows", [v], [phi, ca.jacobian(phi, v)])
+    return fun, tuple(used), tuple(labels)
 
 
 def check_initial(doc, constraints, g_symbols, group, scene, lagrangian=None):

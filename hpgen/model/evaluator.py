@@ -13,6 +13,7 @@ double range (exact rationals within MAX_EXACT_BITS bits).
 from __future__ import annotations
 
 import ast
+import functools
 import math
 import re
 
@@ -38,6 +39,44 @@ _FACTOR_ALIAS = re.compile(r"(R|x)_([0-9]+)")
 _NONFINITE = (sp.S.NaN, sp.S.ComplexInfinity, sp.S.Infinity, sp.S.NegativeInfinity)
 
 
+@functools.lru_cache(maxsize=8)
+def _group_names(group, variables: tuple):
+    """(vars, g, names, varying entries of g, factor layouts, family, body names) of the
+    evaluators on ``group`` with the algebra-length ``variables``: built once per group (a
+    family's g has n*n entries); the arrays are read-only, so evaluators share them."""
+    from ..groups import group_from_spec
+    n, d = group.n, group.d
+    vars_ = {v: _symbols(v, d) for v in variables}
+    g = _symbols("g", n, n)
+    names = {**vars_, "g": g, "pi": sp.pi}
+    factors = group.factors
+    product = len(factors) > 1
+    varying = set()                     # entries of g that vary on the group
+    for k, lay in enumerate(factors):
+        fg = group_from_spec(lay.name) if product else group
+        blk = g[lay.row:lay.row + lay.n, lay.row:lay.row + lay.n]
+        sfx = f"_{k}" if product else ""
+        if product:
+            for v, arr in vars_.items():
+                names[v + sfx] = arr[lay.off:lay.off + lay.d]
+            names["g" + sfx] = blk
+        if fg.rotation_block:
+            a, b = fg.rotation_block
+            names["R" + sfx] = blk[a:b, a:b]
+            varying.update(blk[a:b, a:b].flat)
+        if fg.translation_block:
+            a, b = fg.translation_block
+            names["x" + sfx] = blk[a:b, lay.n - 1]
+            varying.update(blk[a:b, lay.n - 1].flat)
+    family = family_of(group)
+    body: dict = {}
+    if family is not None:
+        fgroups = [group_from_spec(lay.name) for lay in factors]
+        body = bodies.body_names(factors, fgroups, vars_, g)
+        names.update(body)
+    return vars_, g, names, frozenset(varying), factors, family, body
+
+
 class _Evaluator:
     """Evaluates a checked tree. ``variables``: the algebra-length vectors the expression may use
     (("xi",) for the Lagrangian, ("mu",) for the section, ("xi", "mu") for a recorded
@@ -48,43 +87,19 @@ class _Evaluator:
 
     def __init__(self, group, parameters: dict, variables=("xi",), forbidden=None,
                  extra=None, refused=None):
-        from ..groups import group_from_spec
-        n, d = group.n, group.d
-        self.vars = {v: _symbols(v, d) for v in variables}
-        self.g = _symbols("g", n, n)
+        self.vars, self.g, names, varying, self.layouts, self.family, body = \
+            _group_names(group, tuple(variables))
         self.params, self.cache, self.work = parameters, {}, 0
         self.forbidden = forbidden
         self.refused = dict(refused or {})
-        names = {**self.vars, "g": self.g, "pi": sp.pi}
-        factors = self.layouts = group.factors
-        self.product = len(factors) > 1
-        varying = set()                     # entries of g that vary on the group
-        for k, lay in enumerate(factors):
-            fg = group_from_spec(lay.name) if self.product else group
-            blk = self.g[lay.row:lay.row + lay.n, lay.row:lay.row + lay.n]
-            sfx = f"_{k}" if self.product else ""
-            if self.product:
-                for v, arr in self.vars.items():
-                    names[v + sfx] = arr[lay.off:lay.off + lay.d]
-                names["g" + sfx] = blk
-            if fg.rotation_block:
-                a, b = fg.rotation_block
-                names["R" + sfx] = blk[a:b, a:b]
-                varying.update(blk[a:b, a:b].flat)
-            if fg.translation_block:
-                a, b = fg.translation_block
-                names["x" + sfx] = blk[a:b, lay.n - 1]
-                varying.update(blk[a:b, lay.n - 1].flat)
-        self.family = family_of(group)
+        self.product = len(self.layouts) > 1
         if self.family is not None:
-            fgroups = [group_from_spec(lay.name) for lay in factors]
-            body = bodies.body_names(factors, fgroups, self.vars, self.g)
             clash = sorted(set(body) & set(parameters))
             if clash:
                 raise ModelError(f"the parameter {clash[0]!r} has the name of a body-indexed "
                                  f"name of a family model ({', '.join(sorted(body))}); rename "
                                  "the parameter", field="lagrangian")
-            names.update(body)
+        names = dict(names)
         names.update(extra or {})
         self.names, self.varying_g = names, varying
         self.bound: dict = {}              # sum variables in scope -> their current int value

@@ -54,6 +54,7 @@ import sympy as sp
 from ..errors import ModelError
 from .evaluator import _NONFINITE, _Evaluator, _shape_text
 from .syntax import MAX_DEPTH, parse_checked
+from .values import symbol_rows
 
 MAX_TREE = 1_000_000
 SECTION_FIELD = "scene.section"
@@ -120,7 +121,7 @@ def parse_lagrangian(text: str, group, parameters: dict, extra=None, refused=Non
         raise ModelError(f"the Lagrangian must be a scalar, got shape {result.shape} "
                          f"(a {_shape_text(result.shape)})", field="lagrangian")
     xi_syms = tuple(ev.vars["xi"].tolist())
-    g_syms = tuple(tuple(row) for row in ev.g.tolist())
+    g_syms = symbol_rows("g", *ev.g.shape)
     try:
         depends = _final_checks(result, xi_syms)
     except RecursionError:
@@ -192,7 +193,7 @@ def parse_force(text: str, group, parameters: dict, extra: dict, field: str):
     result, ev, _ = _parse_scalar(text, group, parameters, ("xi",), None, field,
                                   "a force component", extra=extra)
     return (result, tuple(ev.vars["xi"].tolist()),
-            tuple(tuple(row) for row in ev.g.tolist()))
+            symbol_rows("g", *ev.g.shape))
 
 
 def parse_section(text: str, group, parameters: dict):
@@ -215,7 +216,7 @@ def parse_section(text: str, group, parameters: dict):
                          "expression in mu and/or g, e.g. mu[0] or R[2, 2] - 0.5",
                          field=SECTION_FIELD)
     mu_syms = tuple(ev.vars["mu"].tolist())
-    g_syms = tuple(tuple(row) for row in ev.g.tolist())
+    g_syms = symbol_rows("g", *ev.g.shape)
     return result, mu_syms, g_syms
 
 
@@ -237,7 +238,7 @@ def parse_record(text: str, group, parameters: dict, field: str = RECORD_FIELD):
                          "mu and/or g, e.g. xi[0], mu[0] or R[2, 2]", field=field)
     xi_syms = tuple(ev.vars["xi"].tolist())
     mu_syms = tuple(ev.vars["mu"].tolist())
-    g_syms = tuple(tuple(row) for row in ev.g.tolist())
+    g_syms = symbol_rows("g", *ev.g.shape)
     return result, xi_syms, mu_syms, g_syms
 
 
@@ -275,4 +276,4 @@ def parse_constraint(text: str, group, parameters: dict, field: str, refused=Non
                                  "admissible configurations, e.g. x - dot(R, c)", field=field)
     except ModelError as e:
         raise _relabel(e, field) from None
-    return rows, tuple(tuple(row) for row in ev.g.tolist())
+    return rows, symbol_rows("g", *ev.g.shape)

@@ -44,8 +44,19 @@ def _symbol_list(prefix: str, rows: int, cols: int | None) -> tuple:
                  for j in range(cols))
 
 
+@functools.lru_cache(maxsize=16)
 def _symbols(prefix: str, rows: int, cols: int | None = None) -> np.ndarray:
-    """A fresh object array of the real symbols ``<prefix>_k`` (rows,) or ``<prefix>_i_j``
-    (rows x cols); the symbols are created once per size (a family's g has n*n of them)."""
-    return _to_array(list(_symbol_list(prefix, rows, cols)),
-                     (rows,) if cols is None else (rows, cols))
+    """The read-only object array of the real symbols ``<prefix>_k`` (rows,) or
+    ``<prefix>_i_j`` (rows x cols), created once per size (a family's g has n*n of them)."""
+    out = _to_array(list(_symbol_list(prefix, rows, cols)),
+                    (rows,) if cols is None else (rows, cols))
+    out.flags.writeable = False
+    return out
+
+
+@functools.lru_cache(maxsize=16)
+def symbol_rows(prefix: str, rows: int, cols: int) -> tuple:
+    """The symbols of _symbols(prefix, rows, cols) as a tuple of row tuples (Model.g_symbols),
+    built once per size."""
+    flat = _symbol_list(prefix, rows, cols)
+    return tuple(flat[i * cols:(i + 1) * cols] for i in range(rows))

@@ -149,3 +149,67 @@ def test_reactions_of_a_hanging_pendulum(tmp_path):
     lam, nu = reactions(integ, tr.g, tr.mu, 0.01)
     assert lam.shape == nu.shape == (4, 3)
     np.testing.assert_allclose(lam[1:] + nu[:-1], [[0.0, 0.0, -9.81]] * 3, atol=1e-12)
+
+
+def _reference_values(model, g0):
+    """phi(g0) and Phi(g0) by sympy: Phi[r, a] = sum_ij dphi_r/dg_ij (g0 hat(e_a))_ij."""
+    import casadi as ca
+    d = model.group.d
+    subs = {s: float(g0[i, j]) for i, row in enumerate(model.g_symbols)
+            for j, s in enumerate(row)}
+    rows = [r for c in model.constraints for r in c.rows]
+    phi = np.array([float(r.xreplace(subs)) for r in rows])
+    Phi = np.zeros((len(rows), d))
+    for a in range(d):
+        E = np.array(ca.evalf(model.group.hat(ca.SX(np.eye(d)[:, a]))), dtype=float)
+        D = g0 @ E
+        for k, r in enumerate(rows):
+            Phi[k, a] = sum(float(sp.diff(r, s).xreplace(subs)) * D[i, j]
+                            for i, row in enumerate(model.g_symbols)
+                            for j, s in enumerate(row) if s in r.free_symbols)
+    return phi, Phi
+
+
+@pytest.mark.parametrize("text", [PLANAR, "chain"])
+def test_constraint_values_match_sympy_derivatives(text):
+    """The CasADi row function (values and the body-frame Jacobian at a generic g) agrees
+    with sympy's derivatives of the rows to round-off, on a product and a family."""
+    from pathlib import Path
+
+    from hpgen.model.constraints import _generic_point, constraint_values
+    from hpgen.model.overrides import apply_overrides
+    if text == "chain":
+        path = Path(__file__).resolve().parents[2] / "examples" / "pendulum_chain.yaml"
+        text = apply_overrides(path.read_text(), {"N": 3})
+    model = load_model_text(text)
+    g0 = _generic_point(model.group)
+    phi, Phi, labels = constraint_values(model.constraints, model.g_symbols, model.group, g0)
+    ref_phi, ref_Phi = _reference_values(model, g0)
+    assert len(labels) == len(ref_phi) and Phi.shape == ref_Phi.shape
+    assert np.abs(phi).min() > 1e-3                   # a generic point violates every row
+    assert np.abs(phi - ref_phi).max() <= 1e-14 * (1 + np.abs(ref_phi).max())
+    assert np.abs(Phi - ref_Phi).max() <= 1e-14 * (1 + np.abs(ref_Phi).max())
+
+
+@pytest.mark.parametrize("kind", ["chain", "scattered", "singular"])
+def test_singular_values_by_blocks_match_svd(kind):
+    """The blockwise / banded singular values of a symmetric matrix above the dense size
+    equal numpy's SVD to round-off (a chain of overlapping blocks, a scattered pattern,
+    and a chain with an exactly zero row: a zero singular value)."""
+    from hpgen.model.constraints import DENSE_EIGEN_SIZE, LEGENDRE_TOL, _singular_values
+    rng = np.random.default_rng(7)
+    n = DENSE_EIGEN_SIZE + 57
+    a = np.zeros((n, n))
+    if kind == "scattered":
+        a = rng.standard_normal((n, n)) * (rng.random((n, n)) < 0.01)
+    else:
+        for i in range(0, n - 6, 4):
+            a[i:i + 6, i:i + 6] += rng.standard_normal((6, 6))
+    a = a + a.T + np.diag(rng.uniform(5.0, 6.0, n) * rng.choice([-1, 1], n))
+    if kind == "singular":
+        a[n // 2, :] = a[:, n // 2] = 0.0
+    ref = np.linalg.svd(a, compute_uv=False)
+    s = _singular_values(a)
+    assert s.shape == ref.shape
+    assert np.abs(s - ref).max() <= 1e-12 * ref[0]
+    assert (s[-1] <= LEGENDRE_TOL * s[0]) == (kind == "singular")
