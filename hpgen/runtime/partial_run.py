@@ -11,7 +11,10 @@ from __future__ import annotations
 
 import json
 import shutil
+import signal
+import threading
 import zipfile
+from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -26,6 +29,28 @@ PARTIAL_FORMAT = 1
 MANIFEST = "manifest.json"
 STATE = "state."          # key prefix of the run state in a chunk file
 OPEN_MAX = 256            # chunk files held open at once while assembling the output
+
+
+@contextmanager
+def interrupts_deferred():
+    """Within: SIGINT and SIGTERM are recorded, not acted on, and the first is raised again
+    on exit to the handler in place before, so a file being written is complete before the
+    interrupt's KeyboardInterrupt (raised inside zipfile's writer it left a half-closed
+    archive and a ValueError instead). Python handlers run in the main thread whichever
+    thread the signal reaches; elsewhere this changes nothing."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    pending: list = []
+    old = {s: signal.signal(s, lambda signum, frame: pending.append(signum))
+           for s in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        yield
+    finally:
+        for s, handler in old.items():
+            signal.signal(s, signal.SIG_DFL if handler is None else handler)
+        if pending:
+            signal.raise_signal(pending[0])
 
 
 class Progress:
@@ -180,7 +205,8 @@ class PartialFolder:
         return prog
 
     def write_chunk(self, i, rec, extra=None):
-        write_npz(self.parts / _chunk_name(i), {"t": rec.t, **rec.arrays, **(extra or {})})
+        with interrupts_deferred():
+            write_npz(self.parts / _chunk_name(i), {"t": rec.t, **rec.arrays, **(extra or {})})
 
     def commit(self, prog: Progress, rec, snapshot: dict, work: dict | None = None):
         """Chunk prog.chunks - 1, ``rec`` (folded into prog), is complete: write it with the
@@ -192,9 +218,10 @@ class PartialFolder:
         self.keep = True
 
     def assemble(self, path: Path, prog: Progress, meta: dict):
-        """Stream the chunk files 0 .. prog.chunks - 1 into the .npz ``path`` (atomically)."""
+        """Stream the chunk files 0 .. prog.chunks - 1 into the .npz ``path`` (atomically;
+        an interrupt meanwhile is delivered once the file is complete)."""
         files = [self.parts / _chunk_name(i) for i in range(prog.chunks)]
-        with atomic_output(path, directory=self.parts) as fh:
+        with interrupts_deferred(), atomic_output(path, directory=self.parts) as fh:
             with zipfile.ZipFile(fh, "w", zipfile.ZIP_STORED, allowZip64=True) as zf:
                 with np.load(files[0]) as first:
                     names = [k for k in first.files if not k.startswith(STATE)]
