@@ -85,21 +85,13 @@ def linearize_composed(engine, traj, opts, gammas, u=None, params=None, t0=None,
     A = A_s ... A_1 and B = sum_i A_s ... A_(i+1) B_i (P likewise), A_i, B_i the implicit
     derivatives of substep i at its own state and h_i = gamma_i h (an open substep at time
     t_k + (gamma_1 + ... + gamma_(i-1)) h with input u_k). Raises as linearize."""
-    from .inputs import step_inputs
     if wrt not in WRT:
         raise ArgumentError(f"expected wrt=None, 'u' or 'params', got {wrt!r}", field="wrt")
     gf, p, h = _check_traj(engine, traj)
     K, s = len(gf) - 1, 2 * engine.d
     inputs, cols, lv = None, slice(0, 0), None
     if engine.open is not None:
-        m = len(engine.open["inputs"])
-        if t0 is None:
-            t0 = float(np.asarray(traj.t, dtype=np.float64)[0]) if len(traj.t) else 0.0
-        inputs = step_inputs(engine.open, K, u, params, t0)
-        H = 2 + m + len(inputs.params)
-        cols = slice(2, 2 + m) if wrt != "params" else slice(2 + m, H)
-        if wrt == "params" and H == 2 + m:
-            raise ArgumentError("this model has no runtime parameters", field="wrt")
+        t0, inputs, cols = _open_inputs(engine, traj, K, u, params, t0, wrt)
         lv = engine.maps.lv(t0, inputs.params)
     A, B = np.zeros((K, s, s)), np.zeros((K, s, cols.stop - cols.start))
     dev = np.zeros(K)
@@ -241,18 +233,12 @@ def linearize_open(engine, traj, opts, u=None, params=None, t0=None, wrt=None):
     """Open module: (A, B) (wrt None or "u") or P (wrt "params") along ``traj``; see the
     module docstring. Raises ArgumentError for a bad trajectory, u, params, t0 or wrt,
     ConvergenceError if a step's Newton fails."""
-    from .inputs import step_inputs
     if wrt not in WRT:
         raise ArgumentError(f"expected wrt=None, 'u' or 'params', got {wrt!r}", field="wrt")
     gf, p, h = _check_traj(engine, traj)
-    K, m = len(gf) - 1, len(engine.open["inputs"])
-    if t0 is None:
-        t0 = float(np.asarray(traj.t, dtype=np.float64)[0]) if len(traj.t) else 0.0
-    inputs = step_inputs(engine.open, K, u, params, t0)
-    H = 2 + m + len(inputs.params)
-    cols = slice(2, 2 + m) if wrt != "params" else slice(2 + m, H)
-    if wrt == "params" and H == 2 + m:
-        raise ArgumentError("this model has no runtime parameters", field="wrt")
+    K = len(gf) - 1
+    t0, inputs, cols = _open_inputs(engine, traj, K, u, params, t0, wrt)
+    H = 2 + len(engine.open["inputs"]) + len(inputs.params)
     hv = np.array([inputs.hv(h, k) for k in range(K)], dtype=np.float64).reshape(K, H)
     z = engine.kernel("guess", engine.maps.velocity_flat(gf[0], p[0],
                                                        lv=engine.maps.lv(t0, inputs.params)),
@@ -267,6 +253,20 @@ def linearize_open(engine, traj, opts, u=None, params=None, t0=None, wrt=None):
         raise _error(code, done, done * h, r, it)
     _check_dev(engine, gf, p, h, dev)
     return B if wrt == "params" else (A, B)
+
+
+def _open_inputs(engine, traj, K, u, params, t0, wrt):
+    """(t0, the K steps' inputs, the columns of the step vector hv that B differentiates)
+    of an open module: u's for wrt None or "u", the runtime parameters' for "params"."""
+    from .inputs import step_inputs
+    m = len(engine.open["inputs"])
+    if t0 is None:
+        t0 = float(np.asarray(traj.t, dtype=np.float64)[0]) if len(traj.t) else 0.0
+    inputs = step_inputs(engine.open, K, u, params, t0)
+    H = 2 + m + len(inputs.params)
+    if wrt == "params" and H == 2 + m:
+        raise ArgumentError("this model has no runtime parameters", field="wrt")
+    return t0, inputs, (slice(2, 2 + m) if wrt != "params" else slice(2 + m, H))
 
 
 def _python_open_loop(engine, gf, p, hv, cols, z, opts):
