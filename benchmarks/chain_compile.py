@@ -9,9 +9,10 @@ nothing imported beforehand), through ``hpgen.build`` (the path ``hpgen compile`
     PYTHONPATH=/other/tree python benchmarks/chain_compile.py ...   # another revision
       (a revision without CompiledModule.timings reports the total only)
 
-Prints one Markdown row per N: the stages in seconds, the sizes of kernels.c and (if the
-compile wrote it) kernels.py. The machine's load changes the figures: compare revisions in
-the same session, alternating.
+Prints one Markdown row per N: the stages in seconds (wall), the CPU time (user + sys) of
+the C compiler processes (all translation units, hpgen.codegen.cparts), the sizes of
+kernels.c and (if the compile wrote it) kernels.py. The machine's load changes the wall
+figures: compare revisions in the same session, alternating.
 """
 from __future__ import annotations
 
@@ -27,7 +28,7 @@ ROOT = Path(__file__).resolve().parent.parent
 MODEL = ROOT / "examples" / "pendulum_chain.yaml"
 
 CHILD = """
-import json, sys, time
+import json, resource, sys, time
 import hpgen
 print(hpgen.__file__, file=sys.stderr)
 t0 = time.perf_counter()
@@ -38,8 +39,9 @@ sizes = {}
 for name in ("kernels.c", "kernels.py"):
     p = c.module_dir / name
     sizes[name] = p.stat().st_size if p.exists() else 0
-print(json.dumps({"total": total, "timings": dict(getattr(c, "timings", {}) or {}),
-                  "sizes": sizes}))
+ru = resource.getrusage(resource.RUSAGE_CHILDREN)
+print(json.dumps({"total": total, "cc_cpu": ru.ru_utime + ru.ru_stime,
+                  "timings": dict(getattr(c, "timings", {}) or {}), "sizes": sizes}))
 """
 
 
@@ -65,15 +67,16 @@ def main() -> int:
     ap.add_argument("--tableau", default="stormer-verlet")
     args = ap.parse_args()
     print(f"tableau {args.tableau}")
-    print("| N | derive | emit | write | cc | cold total | kernels.c | kernels.py | hpgen |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| N | derive | emit | write | cc | cold total | cc CPU | kernels.c | kernels.py | hpgen |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for n in args.n:
         r = cold_compile(n, args.tableau)
         t = r["timings"]
         cells = [f"{t[k]:.1f} s" if k in t else "-" for k in ("derive", "emit", "write", "cc")]
         kb = [f"{r['sizes'][f] / 1e6:.2f} MB" if r["sizes"][f] else "-"
               for f in ("kernels.c", "kernels.py")]
-        print(f"| {n} | " + " | ".join(cells) + f" | {r['total']:.1f} s | " + " | ".join(kb)
+        print(f"| {n} | " + " | ".join(cells) + f" | {r['total']:.1f} s | {r['cc_cpu']:.1f} s | "
+              + " | ".join(kb)
               + f" | {Path(r['hpgen']).parent} |", flush=True)
     return 0
 

@@ -34,6 +34,7 @@ from ..version import __version__
 from ..schemes import BACKENDS, OPTION_KEYS
 from .contract import HASH_RE, MODULE_RE, CodegenError, check_step
 from .csource import COLD_OPTIMIZE, c_kernel_context, casadi_c_code, work_sizes
+from .cparts import split_casadi_code
 from . import pyiterate, pylinear
 from .sparse import meta_entry, sparse_context
 from .lanes import lanes_context
@@ -191,6 +192,13 @@ def template_contexts(step, info: dict, templates=tuple(TEMPLATES.values())) -> 
     return {t: build[t]() for t in templates}
 
 
+def _casadi_code(step, module: str, family: bool) -> str:
+    """CasADi's C of the step; a family's split into translation units compiled in
+    parallel (hpgen.codegen.cparts)."""
+    code = casadi_c_code(step, module, family=family)
+    return split_casadi_code(code) if family else code
+
+
 def _c_context(step, info: dict, common: dict) -> dict:
     instructions = _step_instructions(step)
     sparse = sparse_context(step)
@@ -198,8 +206,8 @@ def _c_context(step, info: dict, common: dict) -> dict:
     return dict(common, nz=step.nz, hash=info["hash"],
                 # a family's (MX) module: duplicated callees and the cold kernels take most
                 # of gcc's time; an SX module's kernels.c stays CasADi's as is
-                casadi_code=casadi_c_code(step, info["module"],
-                                          family=instructions >= MX_INSTRUCTIONS),
+                casadi_code=_casadi_code(step, info["module"],
+                                         family=instructions >= MX_INSTRUCTIONS),
                 cold_optimize=COLD_OPTIMIZE,
                 kernels=[c_kernel_context(k, sparse is not None and
                                           k.name == "residual_jacobian")

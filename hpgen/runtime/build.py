@@ -28,6 +28,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import re
 import shlex
 import shutil
 import subprocess
@@ -59,6 +60,7 @@ RUNTIME_LINKING = "include"
 LIBS = ("-lm",)
 _TIMEOUT = 600
 RECORD_SUFFIX = ".json"
+_PARTS = re.compile(rb"^#define HPGEN_PARTS ([0-9]+)$", re.M)
 
 
 def compiler_command(cc=None) -> list[str]:
@@ -214,25 +216,78 @@ def _compile(source: Path, target: Path, digest: str, argv, extra) -> Path:
         except OSError as exc:
             raise cache.CacheUnwritable(target.parent, exc) from None
         os.close(fd)
-        cmd = (argv + list(DEFAULT_CFLAGS) + list(extra) + include_flags()
-               + ["-o", tmp, str(source)] + list(LIBS))
+        parts = translation_units(source.read_bytes())
         try:
-            try:
-                proc = subprocess.run(cmd, capture_output=True, text=True, timeout=_TIMEOUT)
-            except FileNotFoundError:
-                raise BuildError("C compiler not found", command=cmd) from None
-            except (OSError, subprocess.TimeoutExpired) as exc:
-                raise BuildError(f"C compiler could not run ({exc})", command=cmd) from None
-            if proc.returncode != 0:
-                raise BuildError(f"C compilation failed (exit status {proc.returncode})",
-                                 command=cmd, stderr=proc.stderr)
+            if parts == 1:
+                _run([argv + list(DEFAULT_CFLAGS) + list(extra) + include_flags()
+                      + ["-o", tmp, str(source)] + list(LIBS)])
+            else:
+                _compile_parts(source, tmp, parts, argv, extra)
             record = {"sha256": hashlib.sha256(Path(tmp).read_bytes()).hexdigest(),
                       "source_sha256": digest, "runtime_sha256": runtime_digest(),
                       "compiler": list(argv),
-                      "cflags": list(DEFAULT_CFLAGS) + list(extra) + list(LIBS)}
+                      "cflags": list(DEFAULT_CFLAGS) + list(extra) + list(LIBS),
+                      "translation_units": parts}
             write_file(_record_path(target), json.dumps(record, indent=1) + "\n")
             os.replace(tmp, target)
         finally:
             if os.path.exists(tmp):
                 os.unlink(tmp)
     return target
+
+
+def translation_units(source: bytes) -> int:
+    """HPGEN_PARTS of a kernels.c split by hpgen.codegen.cparts, else 1."""
+    m = _PARTS.search(source)
+    return int(m.group(1)) if m else 1
+
+
+def _compile_parts(source: Path, out: str, parts: int, argv, extra) -> None:
+    """kernels.c compiled as its ``parts`` translation units (-DHPGEN_PART=k), at most
+    os.cpu_count() compilers at a time, and the objects linked into ``out``."""
+    objs = []
+    try:
+        for _ in range(parts):
+            fd, obj = tempfile.mkstemp(prefix=".tmp_kernels_", suffix=".o",
+                                       dir=Path(out).parent)
+            os.close(fd)
+            objs.append(obj)
+        flags = argv + list(DEFAULT_CFLAGS) + list(extra) + include_flags()
+        _run([flags + [f"-DHPGEN_PART={k}", "-c", "-o", objs[k], str(source)]
+              for k in range(parts)], jobs=max(1, os.cpu_count() or 1))
+        _run([argv + list(DEFAULT_CFLAGS) + list(extra) + ["-o", out] + objs + list(LIBS)])
+    finally:
+        for obj in objs:
+            if os.path.exists(obj):
+                os.unlink(obj)
+
+
+def _run(cmds, jobs: int = 1) -> None:
+    """Run the compiler commands ``cmds``, ``jobs`` at a time; BuildError (the command and
+    its stderr) for the first that fails."""
+    pending = list(cmds)
+    running: list[tuple[list[str], subprocess.Popen]] = []
+    try:
+        while pending or running:
+            while pending and len(running) < jobs:
+                cmd = pending.pop(0)
+                try:
+                    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE,
+                                            stderr=subprocess.PIPE, text=True)
+                except FileNotFoundError:
+                    raise BuildError("C compiler not found", command=cmd) from None
+                except OSError as exc:
+                    raise BuildError(f"C compiler could not run ({exc})", command=cmd) from None
+                running.append((cmd, proc))
+            cmd, proc = running.pop(0)
+            try:
+                _, err = proc.communicate(timeout=_TIMEOUT)
+            except subprocess.TimeoutExpired:
+                raise BuildError(f"C compiler timed out after {_TIMEOUT} s", command=cmd) from None
+            if proc.returncode != 0:
+                raise BuildError(f"C compilation failed (exit status {proc.returncode})",
+                                 command=cmd, stderr=err)
+    finally:
+        for _, proc in running:
+            proc.kill()
+            proc.wait()

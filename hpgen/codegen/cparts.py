@@ -1,0 +1,159 @@
+"""A family module's CasADi C split into translation units that the C compiler runs in parallel.
+
+kernels.c stays one file. Compiled as it is, it is one translation unit, exactly as without
+the split (the macros below then keep every function static). Compiled with
+``-DHPGEN_PART=k`` for k < HPGEN_PARTS (hpgen.runtime.build does so when kernels.c defines
+HPGEN_PARTS), the preprocessor keeps part k only, and the parts' objects are linked into one
+library:
+
+- part 0: everything outside CasADi's code (the model's sizes, the kernel wrappers, the C
+  runtime), CasADi's exported functions and every CasADi function not moved;
+- part k >= 1: the large CasADi functions (at least MIN_LINES lines) assigned to it, most
+  expensive first onto the least loaded part, with the constant arrays they read.
+
+CasADi's helper functions (casadi_sq, casadi_mtimes, ...) are compiled into every part as
+static copies (HPGEN_PRIVATE); a function called from another part is extern with hidden
+visibility (HPGEN_SHARED), declared before the first function. The arithmetic is the same
+in every layout (no -ffast-math, no FP contraction in ISO C99 mode): only which calls the
+compiler may inline changes.
+"""
+from __future__ import annotations
+
+import re
+
+from .csource import _functions
+
+#: translation units of a family module (the machines hpgen targets have 2 or more cores)
+PARTS = 2
+#: CasADi functions shorter than this stay in part 0 (inlinable into their callers)
+MIN_LINES = 100
+#: compile cost model (gcc 12, in units of one line of CasADi's straight-line SX code at
+#: -O3): a loop or a call to a CasADi helper (MX code) costs LOOP_COST lines, a function at
+#: the cold level (HPGEN_COLD_BEGIN) COLD_WEIGHT of the same at -O3, and part 0's fixed
+#: content (the C runtime, the kernel wrappers, the tables) BASE_COST
+LOOP_COST = 8
+COLD_WEIGHT = 0.65
+BASE_COST = 15000
+_LOOP = re.compile(r"\bfor \(|\bcasadi_[a-z_]+\(")
+
+_ARRAY = re.compile(r"static const casadi_(?:int|real) (casadi_[sc][0-9]+)\[")
+_ARRAY_USE = re.compile(r"\bcasadi_[sc][0-9]+\b")
+_HELPER = re.compile(r"(?:casadi_real|casadi_int|void|int|const casadi_int\*) casadi_\w+\(")
+_EXPORTED = "CASADI_SYMBOL_EXPORT "
+
+MACROS = """/* translation units (hpgen.codegen.cparts): one without HPGEN_PART, else part HPGEN_PART */
+#define HPGEN_PARTS {parts}
+#ifdef HPGEN_PART
+#define HPGEN_IN_PART(k) ((k) == HPGEN_PART)
+#define HPGEN_SHARED
+#define HPGEN_PRIVATE static
+#else
+#define HPGEN_IN_PART(k) 1
+#define HPGEN_SHARED static
+#define HPGEN_PRIVATE
+#endif
+"""
+
+
+def _extent(lines: list[str], first: int, last: int) -> tuple[int, int]:
+    """A function's lines with its leading comment and cold-level markers."""
+    if first > 0 and lines[first - 1].startswith("/* ") and lines[first - 1].endswith(" */"):
+        first -= 1
+    if first > 0 and lines[first - 1] == "HPGEN_COLD_BEGIN":
+        first -= 1
+    if last + 1 < len(lines) and lines[last + 1] == "HPGEN_COLD_END":
+        last += 1
+    return first, last
+
+
+def assign_parts(costs: dict[str, float], parts: int, base: float) -> dict[str, int]:
+    """Functions -> part (1..parts-1, or 0 for those not listed): longest processing time
+    first, part 0 starting at ``base``."""
+    load = [base] + [0.0] * (parts - 1)
+    out = {}
+    for f in sorted(costs, key=lambda f: (-costs[f], f)):
+        k = min(range(parts), key=lambda k: (load[k], k))
+        out[f] = k
+        load[k] += costs[f]
+    return out
+
+
+def split_casadi_code(code: str, parts: int = PARTS) -> str:
+    """CasADi's C (after csource.mark_cold_functions) guarded into ``parts`` translation
+    units; the code unchanged when no function reaches MIN_LINES."""
+    lines = code.split("\n")
+    blocks, calls, roots = _functions(lines)
+    extents = {f: _extent(lines, *blocks[f]) for f in blocks}
+    costs, fixed = {}, 0.0
+    for f, (first, last) in extents.items():
+        a, b = blocks[f]
+        cost = (b - a + LOOP_COST * len(_LOOP.findall("\n".join(lines[a + 1:b])))) * (
+            COLD_WEIGHT if lines[first] == "HPGEN_COLD_BEGIN" else 1.0)
+        if b - a >= MIN_LINES:
+            costs[f] = cost
+        else:
+            fixed += cost
+    part_of = dict.fromkeys(blocks, 0)
+    part_of.update(assign_parts(costs, parts, BASE_COST + fixed))
+    if all(k == 0 for k in part_of.values()):
+        return code
+    shared = {c for f, cs in calls.items() for c in cs if part_of[c] != part_of[f]}
+    shared |= {f for f in roots.values() if part_of[f] != 0}
+    # owner[j]: the parts that keep line j (None: all)
+    owner: list[frozenset | None] = [None] * len(lines)
+    users: dict[str, set[int]] = {}
+    for f, (first, last) in extents.items():
+        for j in range(first, last + 1):
+            owner[j] = frozenset({part_of[f]})
+        for name in _ARRAY_USE.findall("\n".join(lines[first:last + 1])):
+            users.setdefault(name, set()).add(part_of[f])
+    everyone = frozenset(range(parts))
+    j = 0
+    while j < len(lines):
+        line = lines[j]
+        if owner[j] is not None:
+            j += 1
+            continue
+        m = _ARRAY.match(line)
+        if line.startswith(_EXPORTED) or m is not None:
+            end = j
+            if m is not None:
+                while not lines[end].rstrip().endswith(";"):
+                    end += 1
+            elif line.count("{") != line.count("}"):
+                end = lines.index("}", j)
+            kept = frozenset({0} | users.get(m.group(1), set())) if m else frozenset({0})
+            for i in range(j, end + 1):
+                owner[i] = None if kept == everyone else kept
+            j = end + 1
+            continue
+        if _HELPER.match(line):
+            lines[j] = "HPGEN_PRIVATE " + line
+        j += 1
+    for f in shared:
+        first = blocks[f][0]
+        lines[first] = "HPGEN_SHARED " + lines[first][len("static "):]
+    start = min(a for a, _ in extents.values())
+    protos = [lines[blocks[f][0]].rstrip(" {") + ";"
+              for f in sorted(shared, key=lambda f: blocks[f][0])]
+    out = [MACROS.format(parts=parts).rstrip("\n")]
+    current: frozenset | None = None
+    for j, line in enumerate(lines):
+        if j == start:
+            out, current = _close(out, current), None
+            out.append("/* functions called across translation units */")
+            out.extend(protos)
+        keep = owner[j]
+        if keep != current:
+            out = _close(out, current)
+            if keep is not None:
+                out.append("#if " + " || ".join(f"HPGEN_IN_PART({k})" for k in sorted(keep)))
+            current = keep
+        out.append(line)
+    return "\n".join(_close(out, current))
+
+
+def _close(out: list[str], current) -> list[str]:
+    if current is not None:
+        out.append("#endif")
+    return out
