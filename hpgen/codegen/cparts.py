@@ -11,9 +11,9 @@ library:
 - part k >= 1: the large CasADi functions (at least MIN_LINES lines) assigned to it, most
   expensive first onto the least loaded part, with the constant arrays they read.
 
-CasADi's helper functions (casadi_sq, casadi_mtimes, ...) are compiled into every part as
-static copies (HPGEN_PRIVATE); a function called from another part is extern with hidden
-visibility (HPGEN_SHARED), declared before the first function. The arithmetic is the same
+CasADi's helper functions (casadi_sq, casadi_mtimes, ...) keep their linkage in part 0 and
+are static copies in the other parts (HPGEN_PRIVATE); a function called from another part is
+extern with hidden visibility (HPGEN_SHARED), declared before the first function. The arithmetic is the same
 in every layout (no -ffast-math, no FP contraction in ISO C99 mode): only which calls the
 compiler may inline changes.
 """
@@ -46,10 +46,13 @@ MACROS = """/* translation units (hpgen.codegen.cparts): one without HPGEN_PART,
 #ifdef HPGEN_PART
 #define HPGEN_IN_PART(k) ((k) == HPGEN_PART)
 #define HPGEN_SHARED
-#define HPGEN_PRIVATE static
 #else
 #define HPGEN_IN_PART(k) 1
 #define HPGEN_SHARED static
+#endif
+#if defined(HPGEN_PART) && HPGEN_PART > 0
+#define HPGEN_PRIVATE static
+#else
 #define HPGEN_PRIVATE
 #endif
 """
