@@ -9,7 +9,10 @@ library:
 - part 0: everything outside CasADi's code (the model's sizes, the kernel wrappers, the C
   runtime), CasADi's exported functions and every CasADi function not moved;
 - part k >= 1: the large CasADi functions (at least MIN_LINES lines) assigned to it, most
-  expensive first onto the least loaded part, with the constant arrays they read.
+  expensive first onto the least loaded part, with the constant arrays they read. The step's
+  MX functions (loops over the bodies, calls of CasADi's helpers) stay in part 0 with the
+  helpers and the runtime, compiled as in one unit; of the step, only straight-line (SX)
+  functions such as the per-body Jacobian blocks move.
 
 CasADi's helper functions (casadi_sq, casadi_mtimes, ...) keep their linkage in part 0 and
 are static copies in the other parts (HPGEN_PRIVATE); a function called from another part is
@@ -90,9 +93,9 @@ def split_casadi_code(code: str, parts: int = PARTS) -> str:
     costs, fixed = {}, 0.0
     for f, (first, last) in extents.items():
         a, b = blocks[f]
-        cost = (b - a + LOOP_COST * len(_LOOP.findall("\n".join(lines[a + 1:b])))) * (
-            COLD_WEIGHT if lines[first] == "HPGEN_COLD_BEGIN" else 1.0)
-        if b - a >= MIN_LINES:
+        body, cold = "\n".join(lines[a + 1:b]), lines[first] == "HPGEN_COLD_BEGIN"
+        cost = (b - a + LOOP_COST * len(_LOOP.findall(body))) * (COLD_WEIGHT if cold else 1.0)
+        if b - a >= MIN_LINES and (cold or "for (" not in body):
             costs[f] = cost
         else:
             fixed += cost

@@ -1,7 +1,10 @@
 """Compile a generated module's kernels.c into a shared library (C backend), content-addressed.
 
 kernels.c includes hpgen's static C runtime (the plain C files in RUNTIME_DIR, found by
-``-I RUNTIME_DIR``): one translation unit per module (see RUNTIME_LINKING).
+``-I RUNTIME_DIR``): one translation unit per module (see RUNTIME_LINKING). A kernels.c that
+defines HPGEN_PARTS (a family module's, hpgen.codegen.cparts) is compiled as that many
+translation units (``-DHPGEN_PART=k -c``, at most one compiler per CPU at a time) whose
+objects are linked into the one library.
 
 The library is ``_kernels_<key[:16]>.so`` in the module directory, where ``key`` is the sha256
 of kernels.c's bytes, the runtime's sources (``runtime_digest``), the compiler command (with
