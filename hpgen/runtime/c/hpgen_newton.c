@@ -27,6 +27,7 @@ static int hpgen_sparse_converged(long long it, double dn, double dprev, double 
     te = th > HPGEN_THETA_FLOOR ? th : HPGEN_THETA_FLOOR;
     return te / (1.0 - te) * dn <= tol * (1.0 + zn);
 }
+
 #endif
 
 /* Newton on residual(z, g, p, h) = 0 from z (in/out): z <- z - J^{-1} F.
@@ -138,18 +139,56 @@ static int hpgen_newton_full(const double* g, const double* p, const double* hv,
     return code;
 }
 
-/* One step of a run: margin(z, h) > 0 at the start (check_start), Newton from z (in/out),
-   margin(z, h) > 0 at the solution, then update -> (g1, p1); with_g = 0: update_p -> p1
-   only (g1 untouched). */
-/* HPGEN_FLATTEN (small kernels): inline them and the Newton loop into one body (GCC/Clang),
-   so the compiler schedules the kernels' arithmetic together with the solve */
-#if HPGEN_FLATTEN && defined(__GNUC__)
-__attribute__((flatten))
+/* A family module (HPGEN_G_PACKED): g is block-diagonal and the update kernel's variant
+   hpgen_k_update_nz writes g_{k+1} as its HPGEN_GNZ structural nonzeros, whose positions in
+   the dense n x n g (column-major) are hpgen_update_out0_pos. A run keeps g dense (the API's
+   form) but its steps read and write only those positions: no step zeroes, copies or checks
+   the n^2 - HPGEN_GNZ structural zeros (its kernels gather g's nonzeros themselves). Other
+   modules: HPGEN_GNZ = HPGEN_NN, the positions the identity. */
+#if HPGEN_SPARSE && defined(HPGEN_UPDATE_NZ_VARIANT) && defined(HPGEN_UPDATE_OUT0_NNZ) \
+    && !defined(HPGEN_UPDATE_OUT1_NNZ)
+#define HPGEN_G_PACKED 1
+#define HPGEN_GNZ HPGEN_UPDATE_OUT0_NNZ
+#else
+#define HPGEN_G_PACKED 0
+#define HPGEN_GNZ HPGEN_NN
 #endif
-static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
-                           const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
-                           double* g1, double* p1, long long* iters, long long* jacs,
-                           double* rnorm, int check_start, int with_g) {
+
+/* gp <- g's HPGEN_GNZ stored entries (dense g: all of it) */
+static void hpgen_g_pack(const double* g, double* gp) {
+#if HPGEN_G_PACKED
+    int i;
+    for (i = 0; i < HPGEN_GNZ; ++i) gp[i] = g[hpgen_update_out0_pos[i]];
+#else
+    memcpy(gp, g, HPGEN_NN * sizeof(double));
+#endif
+}
+
+/* g's stored entries <- gp (the structural zeros of a packed g untouched) */
+static void hpgen_g_unpack(const double* gp, double* g) {
+#if HPGEN_G_PACKED
+    int i;
+    for (i = 0; i < HPGEN_GNZ; ++i) g[hpgen_update_out0_pos[i]] = gp[i];
+#else
+    memcpy(g, gp, HPGEN_NN * sizeof(double));
+#endif
+}
+
+/* g's stored entries <- those of src (dense both; a packed g's structural zeros untouched) */
+static void hpgen_g_copy(const double* src, double* g) {
+#if HPGEN_G_PACKED
+    int i;
+    for (i = 0; i < HPGEN_GNZ; ++i) g[hpgen_update_out0_pos[i]] = src[hpgen_update_out0_pos[i]];
+#else
+    memcpy(g, src, HPGEN_NN * sizeof(double));
+#endif
+}
+
+/* The Newton solve of one step: margin(z, h) > 0 at the start (check_start), Newton from z
+   (in/out), margin(z, h) > 0 at the solution. Returns the status code. */
+static int hpgen_step_solve(const double* g, const double* p, const double* hv, double* z,
+                            const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
+                            long long* iters, long long* jacs, double* rnorm, int check_start) {
     double m[1];
     int code;
     /* a start outside tau's domain means h is too large for the chart: do not let Newton
@@ -170,6 +209,23 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
     if (code != HPGEN_OK) { *lu_valid = 0; return code; }
     if (hpgen_k_margin(z, hv, m)) return HPGEN_NONFINITE;
     if (!(m[0] > 0.0)) { *lu_valid = 0; return HPGEN_DOMAIN; }
+    return HPGEN_OK;
+}
+
+/* One step: hpgen_step_solve, then update -> (g1, p1), g1 dense (n x n); with_g = 0:
+   update_p -> p1 only (g1 untouched). */
+/* HPGEN_FLATTEN (small kernels): inline them and the Newton loop into one body (GCC/Clang),
+   so the compiler schedules the kernels' arithmetic together with the solve */
+#if HPGEN_FLATTEN && defined(__GNUC__)
+__attribute__((flatten))
+#endif
+static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
+                           const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
+                           double* g1, double* p1, long long* iters, long long* jacs,
+                           double* rnorm, int check_start, int with_g) {
+    int code = hpgen_step_solve(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm,
+                                check_start);
+    if (code != HPGEN_OK) return code;
     if (!with_g) {
         if (hpgen_k_update_p(z, g, p, hv, p1) || !hpgen_all_finite(p1, HPGEN_D))
             return HPGEN_NONFINITE;
@@ -180,6 +236,29 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
         return HPGEN_NONFINITE;
     return HPGEN_OK;
 }
+
+#if HPGEN_G_PACKED
+/* hpgen_step_core with g1 as g_{k+1}'s HPGEN_GNZ stored entries (a run's step) */
+static int hpgen_step_core_packed(const double* g, const double* p, const double* hv, double* z,
+                                  const hpgen_options* o, double* lu, int* piv,
+                                  long long* lu_valid, double* g1, double* p1, long long* iters,
+                                  long long* jacs, double* rnorm, int check_start, int with_g) {
+    int code = hpgen_step_solve(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm,
+                                check_start);
+    if (code != HPGEN_OK) return code;
+    if (!with_g) {
+        if (hpgen_k_update_p(z, g, p, hv, p1) || !hpgen_all_finite(p1, HPGEN_D))
+            return HPGEN_NONFINITE;
+        return HPGEN_OK;
+    }
+    if (hpgen_k_update_nz(z, g, p, hv, g1, p1)) return HPGEN_NONFINITE;
+    if (!hpgen_all_finite(g1, HPGEN_GNZ) || !hpgen_all_finite(p1, HPGEN_D))
+        return HPGEN_NONFINITE;
+    return HPGEN_OK;
+}
+#else
+#define hpgen_step_core_packed hpgen_step_core
+#endif
 
 static void hpgen_status_init(hpgen_status* st) {
     st->code = HPGEN_OK; st->step = 0; st->iterations = 0; st->total_iterations = 0;
