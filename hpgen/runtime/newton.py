@@ -232,6 +232,16 @@ def sparse_converged(it: int, dn: float, dprev: float, zn: float, tol: float,
     return te / (1.0 - te) * dn <= tol * (1.0 + zn)
 
 
+def at_floor(dn: float, zn: float) -> bool:
+    """hpgen_newton.c's hpgen_at_floor: from a step's third iterate on, a sparse module's
+    simplified Newton keeps its J once |dz| <= ROUNDOFF_FLOOR (1 + |z|) (a rate above
+    THETA_MAX there neither refreshes J nor switches to full Newton; the iterates go on to a
+    stop test): a many-body step's corrections at that level are noise of ratio O(1), which
+    a fresh J cannot contract. The rate of the first two corrections, taken while the
+    start's error dominates, still decides on a refresh."""
+    return dn <= ROUNDOFF_FLOOR * (1.0 + zn)
+
+
 def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory):
     """Newton (full or simplified, see the module docstring) from z (a list of floats) on
     kern.residual(z, g, p, hv) = 0: the C runtime's hpgen_newton.
@@ -325,7 +335,8 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
                 return OK, z, it, norm_inf(F), jacs
             if it > 1 and te < 1.0 and te / (1.0 - te) * dn <= stol * (1.0 + zn):
                 return OK, z, it, norm_inf(F), jacs
-        if not full and it > 1 and dn > THETA_MAX * dprev:
+        if (not full and it > 1 and dn > THETA_MAX * dprev
+                and not (sparse and it > 2 and at_floor(dn, zn))):
             if fresh:
                 full = True          # a fresh J contracts poorly: full Newton
             else:

@@ -28,6 +28,22 @@ static int hpgen_sparse_converged(long long it, double dn, double dprev, double 
     return te / (1.0 - te) * dn <= tol * (1.0 + zn);
 }
 
+/* A sparse module's simplified Newton keeps its J at the round-off floor: from a step's
+   third iterate on, once |dz| <= HPGEN_ROUNDOFF_FLOOR (1 + |z|), a contraction rate above
+   HPGEN_THETA_MAX neither refreshes J nor switches to full Newton; the iterates go on with
+   the kept J until a stop test holds (the stagnation test, once |dz| stops decreasing, or
+   hpgen_sparse_converged). The round-off in dz of a many-body step is about tol (1 + |z|)
+   times a factor that grows with the bodies: corrections at that level are noise whose
+   ratio is a random number of order 1, and a fresh J (several residuals' cost, with its
+   factorization) cannot contract noise. The rate of the first two corrections, taken while
+   the start's error dominates, still refreshes an aged J: stopping on the noise of a slow
+   contraction would leave errors of the floor's size (1e-11 (1 + |z|)), which the joints'
+   velocity form shows. Mirrored in hpgen.runtime.newton.at_floor. */
+static int hpgen_at_floor(double dn, double zn) {
+    return dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn);
+}
+#else
+#define hpgen_at_floor(dn, zn) 0
 #endif
 
 /* Newton on residual(z, g, p, h) = 0 from z (in/out): z <- z - J^{-1} F.
@@ -88,7 +104,8 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
                 && te / (1.0 - te) * dn <= HPGEN_SIMPLIFIED_TOL * o->tol * (1.0 + zn))
                 return HPGEN_OK;
         }
-        if (!full && it > 1 && dn > HPGEN_THETA_MAX * dprev) {
+        if (!full && it > 1 && dn > HPGEN_THETA_MAX * dprev
+            && !(it > 2 && hpgen_at_floor(dn, zn))) {
             if (fresh) full = 1;           /* a fresh J contracts poorly: full Newton */
             else *lu_valid = 0;            /* a stale J: refresh it at the next iterate */
         }
