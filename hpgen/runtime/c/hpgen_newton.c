@@ -28,22 +28,29 @@ static int hpgen_sparse_converged(long long it, double dn, double dprev, double 
     return te / (1.0 - te) * dn <= tol * (1.0 + zn);
 }
 
-/* A sparse module's simplified Newton keeps its J at the round-off floor: from a step's
-   third iterate on, once |dz| <= HPGEN_ROUNDOFF_FLOOR (1 + |z|), a contraction rate above
+/* A sparse module's simplified Newton keeps its J at the round-off noise: from a step's
+   third iterate on, once |dz| <= HPGEN_KEEP_J_FLOOR (1 + |z|), a contraction rate above
    HPGEN_THETA_MAX neither refreshes J nor switches to full Newton; the iterates go on with
    the kept J until a stop test holds (the stagnation test, once |dz| stops decreasing, or
    hpgen_sparse_converged). The round-off in dz of a many-body step is about tol (1 + |z|)
    times a factor that grows with the bodies: corrections at that level are noise whose
    ratio is a random number of order 1, and a fresh J (several residuals' cost, with its
    factorization) cannot contract noise. The rate of the first two corrections, taken while
-   the start's error dominates, still refreshes an aged J: stopping on the noise of a slow
-   contraction would leave errors of the floor's size (1e-11 (1 + |z|)), which the joints'
-   velocity form shows. Mirrored in hpgen.runtime.newton.at_floor. */
+   the start's error dominates, still refreshes an aged J. HPGEN_KEEP_J_FLOOR is 10 times
+   below HPGEN_ROUNDOFF_FLOOR: above it the slow rate of an aged J can pass for noise, and
+   the stagnation test then stops with errors of that size, which the joints' velocity
+   form shows (hpgen.abi.KEEP_J_FLOOR). Mirrored in hpgen.runtime.newton.at_floor. */
 static int hpgen_at_floor(double dn, double zn) {
-    return dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn);
+    return dn <= HPGEN_KEEP_J_FLOOR * (1.0 + zn);
 }
+
+/* ... and a kept J whose second correction is no smaller than its first does not stop on
+   the stagnation test (the first correction being at the floor): that J may not contract
+   at all, and the error left would be of the floor's size; the rate test refreshes it. */
+#define hpgen_kept_j_diverges(it, fresh) ((it) == 2 && !(fresh))
 #else
 #define hpgen_at_floor(dn, zn) 0
+#define hpgen_kept_j_diverges(it, fresh) 0
 #endif
 
 /* Newton on residual(z, g, p, h) = 0 from z (in/out): z <- z - J^{-1} F.
@@ -87,7 +94,8 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
         dn = hpgen_norm_inf(F, HPGEN_NZ);
         zn = hpgen_norm_inf(z, HPGEN_NZ);
         if (!isfinite(dn) || !isfinite(zn)) return HPGEN_NONFINITE;
-        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)) return HPGEN_OK;
+        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)
+            && !hpgen_kept_j_diverges(it, fresh)) return HPGEN_OK;
 #if HPGEN_SPARSE
         if (hpgen_sparse_converged(it, dn, dprev, zn, o->tol, full)) return HPGEN_OK;
 #endif
