@@ -186,6 +186,12 @@ DEFAULT_TOL = 1e-14
 DEFAULT_MAXIT = 50
 #: round-off floor: stop when |dz| stopped decreasing while |dz| <= ROUNDOFF_FLOOR (1 + |z|)
 ROUNDOFF_FLOOR = 1e-11
+#: a sparse module's simplified Newton keeps its J, from a step's third iterate on, while
+#: |dz| <= KEEP_J_FLOOR (1 + |z|) (the many-body step's round-off noise in dz, 2e-12..1e-11 at
+#: |z| = 13 on the 10-link chain): a rate above THETA_MAX there is the noise's. At
+#: ROUNDOFF_FLOOR an aged J's slow rate passed for noise (joint velocity gaps 6.5e-11 over
+#: 1e5 steps); at 1e-13 noise refreshed J at every step (hpgen_newton.c, hpgen_at_floor)
+KEEP_J_FLOOR = 1e-12
 #: simplified Newton: a contraction rate |dz_k| / |dz_{k-1}| above this refreshes J (or,
 #: with a J fresh from this step, switches the step to full Newton). A refresh (J and its
 #: inverse) costs 15-25 simplified iterations (residual + J^{-1} F) on the shipped Gauss
@@ -234,6 +240,7 @@ PREDICTOR_COEFFICIENTS = tuple(tuple(float((-1) ** i * math.comb(m, i + 1)) for 
 #: the contract's values the C runtime defines (hpgen/runtime/c/hpgen_runtime.h: macro ->
 #: value, written there as c_literal(value); tests/unit/test_abi.py reads them back)
 C_CONSTANTS = {"HPGEN_ABI": ABI_VERSION, "HPGEN_ROUNDOFF_FLOOR": ROUNDOFF_FLOOR,
+               "HPGEN_KEEP_J_FLOOR": KEEP_J_FLOOR,
                "HPGEN_THETA_MAX": THETA_MAX, "HPGEN_SIMPLIFIED_TOL": SIMPLIFIED_TOL,
                "HPGEN_THETA_FLOOR": THETA_FLOOR, "HPGEN_VELOCITY_TOL": VELOCITY_TOL,
                "HPGEN_VELOCITY_MAXIT": VELOCITY_MAXIT, "HPGEN_PH": PREDICTOR_HISTORY,

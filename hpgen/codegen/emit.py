@@ -210,7 +210,7 @@ def _c_context(step, info: dict, common: dict) -> dict:
                                          family=instructions >= MX_INSTRUCTIONS),
                 cold_optimize=COLD_OPTIMIZE,
                 kernels=[c_kernel_context(k, sparse is not None and
-                                          k.name == "residual_jacobian")
+                                          k.name in ("residual_jacobian", "update"))
                          for k in step.kernels],
                 flatten=flatten,
                 sparse=sparse,

@@ -186,7 +186,10 @@ class Engine:
 
     @property
     def simplified_default(self) -> bool:
-        """True when simplified Newton pays: J costs > SIMPLIFIED_RATIO residuals."""
+        """True when simplified Newton pays: J costs > SIMPLIFIED_RATIO residuals, or J is
+        sparse (many bodies: its assembly and factorization cost several residuals)."""
+        if self.meta.get("jacobian", {}).get("storage") == "sparse":
+            return True
         k = self.meta["kernels"]
         cost = [k[n].get("instructions", 0) for n in ("jacobian", "residual")]
         return cost[0] > SIMPLIFIED_RATIO * cost[1]

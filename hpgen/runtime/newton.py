@@ -51,8 +51,8 @@ import numpy as np
 
 # status codes and Newton constants: the generated-module contract (hpgen_runtime.h defines
 # the same values)
-from ..abi import (DEFAULT_MAXIT, DEFAULT_TOL, DOMAIN, NO_CONVERGENCE, NONFINITE, OK, REFRESH,
-                   ROUNDOFF_FLOOR, SIMPLIFIED_TOL, THETA_FLOOR, THETA_MAX)
+from ..abi import (DEFAULT_MAXIT, DEFAULT_TOL, DOMAIN, KEEP_J_FLOOR, NO_CONVERGENCE, NONFINITE,
+                   OK, REFRESH, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, THETA_FLOOR, THETA_MAX)
 
 _INF, _NAN = math.inf, math.nan
 _isfinite = math.isfinite
@@ -232,6 +232,16 @@ def sparse_converged(it: int, dn: float, dprev: float, zn: float, tol: float,
     return te / (1.0 - te) * dn <= tol * (1.0 + zn)
 
 
+def at_floor(dn: float, zn: float) -> bool:
+    """hpgen_newton.c's hpgen_at_floor: from a step's third iterate on, a sparse module's
+    simplified Newton keeps its J once |dz| <= KEEP_J_FLOOR (1 + |z|) (a rate above
+    THETA_MAX there neither refreshes J nor switches to full Newton; the iterates go on to a
+    stop test): a many-body step's corrections at that level are noise of ratio O(1), which
+    a fresh J cannot contract. The rate of the first two corrections, taken while the
+    start's error dominates, still decides on a refresh."""
+    return dn <= KEEP_J_FLOOR * (1.0 + zn)
+
+
 def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory):
     """Newton (full or simplified, see the module docstring) from z (a list of floats) on
     kern.residual(z, g, p, hv) = 0: the C runtime's hpgen_newton.
@@ -309,7 +319,10 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
             dn, zn = norm_inf(dz), norm_inf(z)
             if not (dn < _INF and zn < _INF):
                 return NONFINITE, z, it, rnorm, jacs
-        if it > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + zn):
+        # (a sparse module's kept J whose second correction is no smaller than its first:
+        # the rate test below refreshes it, hpgen_kept_j_diverges)
+        if (it > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + zn)
+                and not (sparse and keep and it == 2 and not fresh)):
             return OK, z, it, norm_inf(F), jacs
         if sparse and sparse_converged(it, dn, dprev, zn, tol, full):
             return OK, z, it, norm_inf(F), jacs
@@ -325,7 +338,8 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
                 return OK, z, it, norm_inf(F), jacs
             if it > 1 and te < 1.0 and te / (1.0 - te) * dn <= stol * (1.0 + zn):
                 return OK, z, it, norm_inf(F), jacs
-        if not full and it > 1 and dn > THETA_MAX * dprev:
+        if (not full and it > 1 and dn > THETA_MAX * dprev
+                and not (sparse and it > 2 and at_floor(dn, zn))):
             if fresh:
                 full = True          # a fresh J contracts poorly: full Newton
             else:

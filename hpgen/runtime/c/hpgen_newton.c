@@ -27,6 +27,30 @@ static int hpgen_sparse_converged(long long it, double dn, double dprev, double 
     te = th > HPGEN_THETA_FLOOR ? th : HPGEN_THETA_FLOOR;
     return te / (1.0 - te) * dn <= tol * (1.0 + zn);
 }
+
+/* A sparse module's simplified Newton keeps its J at the round-off noise: from a step's
+   third iterate on, once |dz| <= HPGEN_KEEP_J_FLOOR (1 + |z|), a contraction rate above
+   HPGEN_THETA_MAX neither refreshes J nor switches to full Newton; the iterates go on with
+   the kept J until a stop test holds (the stagnation test, once |dz| stops decreasing, or
+   hpgen_sparse_converged). The round-off in dz of a many-body step is about tol (1 + |z|)
+   times a factor that grows with the bodies: corrections at that level are noise whose
+   ratio is a random number of order 1, and a fresh J (several residuals' cost, with its
+   factorization) cannot contract noise. The rate of the first two corrections, taken while
+   the start's error dominates, still refreshes an aged J. HPGEN_KEEP_J_FLOOR is 10 times
+   below HPGEN_ROUNDOFF_FLOOR: above it the slow rate of an aged J can pass for noise, and
+   the stagnation test then stops with errors of that size, which the joints' velocity
+   form shows (hpgen.abi.KEEP_J_FLOOR). Mirrored in hpgen.runtime.newton.at_floor. */
+static int hpgen_at_floor(double dn, double zn) {
+    return dn <= HPGEN_KEEP_J_FLOOR * (1.0 + zn);
+}
+
+/* ... and a kept J whose second correction is no smaller than its first does not stop on
+   the stagnation test (the first correction being at the floor): that J may not contract
+   at all, and the error left would be of the floor's size; the rate test refreshes it. */
+#define hpgen_kept_j_diverges(it, fresh) ((it) == 2 && !(fresh))
+#else
+#define hpgen_at_floor(dn, zn) 0
+#define hpgen_kept_j_diverges(it, fresh) 0
 #endif
 
 /* Newton on residual(z, g, p, h) = 0 from z (in/out): z <- z - J^{-1} F.
@@ -70,7 +94,8 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
         dn = hpgen_norm_inf(F, HPGEN_NZ);
         zn = hpgen_norm_inf(z, HPGEN_NZ);
         if (!isfinite(dn) || !isfinite(zn)) return HPGEN_NONFINITE;
-        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)) return HPGEN_OK;
+        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)
+            && !hpgen_kept_j_diverges(it, fresh)) return HPGEN_OK;
 #if HPGEN_SPARSE
         if (hpgen_sparse_converged(it, dn, dprev, zn, o->tol, full)) return HPGEN_OK;
 #endif
@@ -87,7 +112,8 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
                 && te / (1.0 - te) * dn <= HPGEN_SIMPLIFIED_TOL * o->tol * (1.0 + zn))
                 return HPGEN_OK;
         }
-        if (!full && it > 1 && dn > HPGEN_THETA_MAX * dprev) {
+        if (!full && it > 1 && dn > HPGEN_THETA_MAX * dprev
+            && !(it > 2 && hpgen_at_floor(dn, zn))) {
             if (fresh) full = 1;           /* a fresh J contracts poorly: full Newton */
             else *lu_valid = 0;            /* a stale J: refresh it at the next iterate */
         }
@@ -138,18 +164,56 @@ static int hpgen_newton_full(const double* g, const double* p, const double* hv,
     return code;
 }
 
-/* One step of a run: margin(z, h) > 0 at the start (check_start), Newton from z (in/out),
-   margin(z, h) > 0 at the solution, then update -> (g1, p1); with_g = 0: update_p -> p1
-   only (g1 untouched). */
-/* HPGEN_FLATTEN (small kernels): inline them and the Newton loop into one body (GCC/Clang),
-   so the compiler schedules the kernels' arithmetic together with the solve */
-#if HPGEN_FLATTEN && defined(__GNUC__)
-__attribute__((flatten))
+/* A family module (HPGEN_G_PACKED): g is block-diagonal and the update kernel's variant
+   hpgen_k_update_nz writes g_{k+1} as its HPGEN_GNZ structural nonzeros, whose positions in
+   the dense n x n g (column-major) are hpgen_update_out0_pos. A run keeps g dense (the API's
+   form) but its steps read and write only those positions: no step zeroes, copies or checks
+   the n^2 - HPGEN_GNZ structural zeros (its kernels gather g's nonzeros themselves). Other
+   modules: HPGEN_GNZ = HPGEN_NN, the positions the identity. */
+#if HPGEN_SPARSE && defined(HPGEN_UPDATE_NZ_VARIANT) && defined(HPGEN_UPDATE_OUT0_NNZ) \
+    && !defined(HPGEN_UPDATE_OUT1_NNZ)
+#define HPGEN_G_PACKED 1
+#define HPGEN_GNZ HPGEN_UPDATE_OUT0_NNZ
+#else
+#define HPGEN_G_PACKED 0
+#define HPGEN_GNZ HPGEN_NN
 #endif
-static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
-                           const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
-                           double* g1, double* p1, long long* iters, long long* jacs,
-                           double* rnorm, int check_start, int with_g) {
+
+/* gp <- g's HPGEN_GNZ stored entries (dense g: all of it) */
+static void hpgen_g_pack(const double* g, double* gp) {
+#if HPGEN_G_PACKED
+    int i;
+    for (i = 0; i < HPGEN_GNZ; ++i) gp[i] = g[hpgen_update_out0_pos[i]];
+#else
+    memcpy(gp, g, HPGEN_NN * sizeof(double));
+#endif
+}
+
+/* g's stored entries <- gp (the structural zeros of a packed g untouched) */
+static void hpgen_g_unpack(const double* gp, double* g) {
+#if HPGEN_G_PACKED
+    int i;
+    for (i = 0; i < HPGEN_GNZ; ++i) g[hpgen_update_out0_pos[i]] = gp[i];
+#else
+    memcpy(g, gp, HPGEN_NN * sizeof(double));
+#endif
+}
+
+/* g's stored entries <- those of src (dense both; a packed g's structural zeros untouched) */
+static void hpgen_g_copy(const double* src, double* g) {
+#if HPGEN_G_PACKED
+    int i;
+    for (i = 0; i < HPGEN_GNZ; ++i) g[hpgen_update_out0_pos[i]] = src[hpgen_update_out0_pos[i]];
+#else
+    memcpy(g, src, HPGEN_NN * sizeof(double));
+#endif
+}
+
+/* The Newton solve of one step: margin(z, h) > 0 at the start (check_start), Newton from z
+   (in/out), margin(z, h) > 0 at the solution. Returns the status code. */
+static int hpgen_step_solve(const double* g, const double* p, const double* hv, double* z,
+                            const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
+                            long long* iters, long long* jacs, double* rnorm, int check_start) {
     double m[1];
     int code;
     /* a start outside tau's domain means h is too large for the chart: do not let Newton
@@ -170,6 +234,23 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
     if (code != HPGEN_OK) { *lu_valid = 0; return code; }
     if (hpgen_k_margin(z, hv, m)) return HPGEN_NONFINITE;
     if (!(m[0] > 0.0)) { *lu_valid = 0; return HPGEN_DOMAIN; }
+    return HPGEN_OK;
+}
+
+/* One step: hpgen_step_solve, then update -> (g1, p1), g1 dense (n x n); with_g = 0:
+   update_p -> p1 only (g1 untouched). */
+/* HPGEN_FLATTEN (small kernels): inline them and the Newton loop into one body (GCC/Clang),
+   so the compiler schedules the kernels' arithmetic together with the solve */
+#if HPGEN_FLATTEN && defined(__GNUC__)
+__attribute__((flatten))
+#endif
+static int hpgen_step_core(const double* g, const double* p, const double* hv, double* z,
+                           const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
+                           double* g1, double* p1, long long* iters, long long* jacs,
+                           double* rnorm, int check_start, int with_g) {
+    int code = hpgen_step_solve(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm,
+                                check_start);
+    if (code != HPGEN_OK) return code;
     if (!with_g) {
         if (hpgen_k_update_p(z, g, p, hv, p1) || !hpgen_all_finite(p1, HPGEN_D))
             return HPGEN_NONFINITE;
@@ -180,6 +261,29 @@ static int hpgen_step_core(const double* g, const double* p, const double* hv, d
         return HPGEN_NONFINITE;
     return HPGEN_OK;
 }
+
+#if HPGEN_G_PACKED
+/* hpgen_step_core with g1 as g_{k+1}'s HPGEN_GNZ stored entries (a run's step) */
+static int hpgen_step_core_packed(const double* g, const double* p, const double* hv, double* z,
+                                  const hpgen_options* o, double* lu, int* piv,
+                                  long long* lu_valid, double* g1, double* p1, long long* iters,
+                                  long long* jacs, double* rnorm, int check_start, int with_g) {
+    int code = hpgen_step_solve(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm,
+                                check_start);
+    if (code != HPGEN_OK) return code;
+    if (!with_g) {
+        if (hpgen_k_update_p(z, g, p, hv, p1) || !hpgen_all_finite(p1, HPGEN_D))
+            return HPGEN_NONFINITE;
+        return HPGEN_OK;
+    }
+    if (hpgen_k_update_nz(z, g, p, hv, g1, p1)) return HPGEN_NONFINITE;
+    if (!hpgen_all_finite(g1, HPGEN_GNZ) || !hpgen_all_finite(p1, HPGEN_D))
+        return HPGEN_NONFINITE;
+    return HPGEN_OK;
+}
+#else
+#define hpgen_step_core_packed hpgen_step_core
+#endif
 
 static void hpgen_status_init(hpgen_status* st) {
     st->code = HPGEN_OK; st->step = 0; st->iterations = 0; st->total_iterations = 0;

@@ -14,11 +14,20 @@
 /* sizeof(hpgen_run), for callers that allocate runs as byte buffers */
 HPGEN_EXPORT long long hpgen_run_size(void) { return (long long)sizeof(hpgen_run); }
 
-/* Start a run at (g0, p0) with Newton start z0 for the first step. */
+/* Start a run at (g0, p0) with Newton start z0 for the first step (a family module's g0
+   taken on g's block pattern: its steps never touch the structural zeros, HPGEN_G_PACKED). */
 HPGEN_EXPORT void hpgen_run_init(hpgen_run* r, const double* g0, const double* p0,
                                  const double* z0) {
     memset(r, 0, sizeof *r);
+#if HPGEN_G_PACKED
+    {
+        int i;
+        for (i = 0; i < HPGEN_GNZ; ++i)
+            r->g[hpgen_update_out0_pos[i]] = g0[hpgen_update_out0_pos[i]];
+    }
+#else
     memcpy(r->g, g0, sizeof r->g);
+#endif
     memcpy(r->p, p0, sizeof r->p);
     memcpy(r->z, z0, sizeof r->z);
 }
@@ -108,7 +117,7 @@ static int hpgen_explicit_step(hpgen_run* r, const double* hv, hpgen_status* st,
    start and stop"). */
 static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
                           const hpgen_options* full, hpgen_status* st, int with_g) {
-    double g1[HPGEN_NN], p1[HPGEN_D], zs[HPGEN_NZ], G[HPGEN_NZ], res;
+    double g1[HPGEN_GNZ], p1[HPGEN_D], zs[HPGEN_NZ], G[HPGEN_NZ], res;
     long long it;
     int i, code, predicted = o->predictor && r->have_prev >= 1;
 #if HPGEN_OPEN
@@ -134,15 +143,16 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     else
         for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
     /* the first step starts from the crude guess kernel: full Newton */
-    code = hpgen_step_core(r->g, r->p, hv, zs, r->k == 0 ? full : o, r->lu, r->piv,
-                           &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0, with_g);
+    code = hpgen_step_core_packed(r->g, r->p, hv, zs, r->k == 0 ? full : o, r->lu, r->piv,
+                                  &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0,
+                                  with_g);
     st->total_iterations += it;
     if (code != HPGEN_OK && predicted) {
         /* the extrapolated start failed (Newton diverged, or reached a root outside the
            chart): retry from the plain warm start z_k before reporting anything */
         memcpy(zs, r->z, sizeof zs);
-        code = hpgen_step_core(r->g, r->p, hv, zs, o, r->lu, r->piv, &r->lu_valid, g1, p1,
-                               &it, &st->jacobians, &res, 0, with_g);
+        code = hpgen_step_core_packed(r->g, r->p, hv, zs, o, r->lu, r->piv, &r->lu_valid, g1,
+                                      p1, &it, &st->jacobians, &res, 0, with_g);
         st->total_iterations += it;
     }
     st->iterations = it;
@@ -152,7 +162,7 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     for (i = 0; i < HPGEN_NZ; ++i) r->dz[0][i] = zs[i] - G[i];
     if (r->have_prev < HPGEN_PH) r->have_prev += 1;
     memcpy(r->z, zs, sizeof r->z);
-    if (with_g) memcpy(r->g, g1, sizeof g1);
+    if (with_g) hpgen_g_unpack(g1, r->g);
     memcpy(r->p, p1, sizeof p1);
     r->k += 1;
     return HPGEN_OK;
@@ -181,7 +191,7 @@ HPGEN_EXPORT int hpgen_run_set_compose(hpgen_run* r, long long cs, const double*
    substeps. On failure the run is back at its state before the step. */
 static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* o,
                            const hpgen_options* full, hpgen_status* st, int with_g) {
-    double hs[1], g0[HPGEN_NN], p0[HPGEN_D], z0[HPGEN_NZ], c = 0.0;
+    double hs[1], g0[HPGEN_GNZ], p0[HPGEN_D], z0[HPGEN_NZ], c = 0.0;
     const long long k = r->k;
     long long it = 0, i;
     int code;
@@ -189,7 +199,7 @@ static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* 
     const double t0 = r->t0;
 #endif
     if (r->cs == 0) return hpgen_run_step(r, hv, o, full, st, with_g);
-    memcpy(g0, r->g, sizeof g0);
+    hpgen_g_pack(r->g, g0);
     memcpy(p0, r->p, sizeof p0);
     memcpy(z0, r->z, sizeof z0);
     for (i = 0; i < r->cs; ++i) {
@@ -211,7 +221,7 @@ static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* 
 #endif
         it += st->iterations;
         if (code != HPGEN_OK) {
-            memcpy(r->g, g0, sizeof g0);
+            hpgen_g_unpack(g0, r->g);
             memcpy(r->p, p0, sizeof p0);
             memcpy(r->z, z0, sizeof z0);
             r->k = k;
@@ -311,10 +321,11 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
         r->s = s1[0];
         r->s_valid = 1;
     }
+    memcpy(g0, r->g, sizeof g0);
     for (n = 0; n < steps && *n_rec < cap; ++n) {
         const double s0 = r->s;
         const long long k = r->k;
-        memcpy(g0, r->g, sizeof g0);
+        hpgen_g_copy(r->g, g0);
         memcpy(p0, r->p, sizeof p0);
         if (hpgen_run_cstep(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
         if (hpgen_k_section(r->g, r->p, s1) || !isfinite(s1[0])) {

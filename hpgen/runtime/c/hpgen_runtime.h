@@ -108,6 +108,8 @@
 
 /* Newton stalls at round-off: stop when |dz| stopped decreasing while below this * (1+|z|) */
 #define HPGEN_ROUNDOFF_FLOOR 1e-11
+/* a sparse module's simplified Newton keeps J at |dz| <= this * (1 + |z|) (hpgen_at_floor) */
+#define HPGEN_KEEP_J_FLOOR 1e-12
 /* simplified Newton: a contraction rate |dz_k| / |dz_{k-1}| above this refreshes the Jacobian
    (or, with a Jacobian fresh from this step, switches the step to full Newton) */
 #define HPGEN_THETA_MAX 0.2
