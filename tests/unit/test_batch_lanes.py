@@ -1,7 +1,8 @@
 """Lane-wise ensemble kernels (hpgen.codegen.lanes, run by the C runtime's
 hpgen/runtime/c/hpgen_lanes.c): simulate_batch with lanes is bitwise simulate_batch without them
 (states, statuses, counters), on 1 and 2 threads, with a body count that is not a multiple
-of the lane count (the remainder runs the scalar code); a body that fails mid-run stops with
+of the lane count (the remainder runs the scalar code), for full and simplified Newton,
+3 and 6 unknowns, plain and composed steps; a body that fails mid-run stops with
 the error of a scalar run while the other lanes of its group continue; the lane printer
 gives CasADi's C bits on every op; the emitted lane code compiles without warnings; modules
 where lanes do not pay get none."""
@@ -114,13 +115,75 @@ def test_backend_outputs_and_statuses_equal(body):
         assert on[3] == off[3]
 
 
-def test_simplified_newton_runs_scalar(body):
-    """The lane Newton is full Newton: with simplified Newton the batch runs scalar code,
-    with the same results."""
-    mus = _momenta(lanes.LANES)
+@pytest.mark.parametrize("threads", [1, 2])
+def test_simplified_newton_lanes(body, monkeypatch, threads):
+    """Simplified Newton runs in lanes (each lane keeps its own J^{-1} across steps, the
+    scalar linear algebra lane by lane), bitwise the scalar ensemble, counters included
+    (fewer Jacobians than iterations)."""
+    B = lanes.LANES + 3
+    mus = _momenta(B, seed=9) * np.linspace(0.5, 3.0, B)[:, None]
     opts = NewtonOptions(simplified=True)
-    _assert_same(body.simulate_batch(np.eye(3), 0.1, 50, mu0=mus, newton=opts),
-                 body.simulate_batch(np.eye(3), 0.1, 50, mu0=mus, newton=opts, lanes=False))
+    on, names = _batch_with_spy(body, monkeypatch, np.eye(3), 0.1, 80, mu0=mus, newton=opts,
+                                every=3, threads=threads)
+    assert "hpgen_advance_batch_lanes" in names
+    off = body.simulate_batch(np.eye(3), 0.1, 80, mu0=mus, newton=opts, every=3,
+                              threads=threads, lanes=False)
+    _assert_same(on, off)
+    assert all(t.error is None and t.jacobians < t.newton_iterations for t in on)
+
+
+def test_simplified_one_lane_fails_the_others_continue(body):
+    """Simplified Newton with maxit = 8: a faster spin's lane redoes its step in scalar code
+    (from its J^{-1} before the step), which reports the failure at a later step; bitwise
+    the scalar ensemble."""
+    B = lanes.LANES + 3
+    mus = _momenta(B, seed=1)
+    mus[2] *= 5.0
+    opts = NewtonOptions(maxit=8, simplified=True)
+    on = body.simulate_batch(np.eye(3), 0.1, 200, mu0=mus, newton=opts)
+    off = body.simulate_batch(np.eye(3), 0.1, 200, mu0=mus, newton=opts, lanes=False)
+    _assert_same(on, off)
+    assert on[2].error is not None and 2 < len(on[2].mu) < 201
+    assert all(t.error is None for i, t in enumerate(on) if i != 2)
+
+
+@pytest.fixture(scope="module")
+def top_gauss2(compile_model):
+    """The heavy top, Gauss 2 cay truncated: 6 unknowns, simplified Newton by default."""
+    return compile_model(ROOT / "examples" / "heavy_top.yaml", tableau="gauss2", tau="cay",
+                         rkmk="truncated")
+
+
+@pytest.mark.parametrize("newton", [None, NewtonOptions(simplified=False),
+                                    NewtonOptions(simplified=True, predictor=False)])
+def test_more_unknowns_than_three(top_gauss2, monkeypatch, newton):
+    """nz = 6 (the LU with partial pivoting lane by lane): lanes emitted and used, bitwise
+    the scalar ensemble on 1 and 2 threads, simplified (the default) or full Newton."""
+    from scipy.spatial.transform import Rotation
+    top = top_gauss2
+    assert top.meta["nz"] == 6 and top.engine.backend.lanes == lanes.LANES
+    B = lanes.LANES + 5
+    xis = np.array([0.2, 1.0, 3.0]) + 0.3 * np.random.default_rng(11).normal(size=(B, 3))
+    g0 = Rotation.from_rotvec([0.3, 0.2, 0.0]).as_matrix()
+    for threads in (1, 2):
+        on, names = _batch_with_spy(top, monkeypatch, g0, 0.05, 60, xi0=xis, every=2,
+                                    threads=threads, newton=newton)
+        assert "hpgen_advance_batch_lanes" in names
+        _assert_same(on, top.simulate_batch(g0, 0.05, 60, xi0=xis, every=2, threads=threads,
+                                            newton=newton, lanes=False))
+        assert all(t.error is None for t in on)
+    one = top.simulate(g0, 0.05, 60, xi0=xis[B - 2], every=2, newton=newton)
+    assert np.array_equal(one.mu, on[B - 2].mu) and np.array_equal(one.g, on[B - 2].g)
+
+
+def test_composed_simplified_lanes(composed_body):
+    """A composed step with simplified Newton (J^{-1} kept across substeps and steps, per
+    lane): bitwise the scalar ensemble."""
+    mus = _momenta(lanes.LANES + 1, seed=12) * 2.0
+    opts = NewtonOptions(simplified=True)
+    _assert_same(composed_body.simulate_batch(np.eye(3), 0.05, 60, mu0=mus, newton=opts),
+                 composed_body.simulate_batch(np.eye(3), 0.05, 60, mu0=mus, newton=opts,
+                                              lanes=False))
 
 
 class _CallSpy:
@@ -270,7 +333,8 @@ def test_lane_code_compiles_without_warnings(body, tmp_path):
 
 def test_no_lanes_where_they_do_not_pay():
     """Open models and steps with more than LANES_MAX_NZ unknowns get no lane code."""
-    assert lanes.lanes_context(SimpleNamespace(open_spec=None, nz=9), 100) is None
+    assert lanes.lanes_context(SimpleNamespace(open_spec=None, nz=lanes.LANES_MAX_NZ + 1),
+                               100) is None
     assert lanes.lanes_context(SimpleNamespace(open_spec=object(), nz=3), 100) is None
     assert lanes.lanes_context(SimpleNamespace(open_spec=None, nz=3),
                                lanes.LANES_MAX_INSTRUCTIONS + 1) is None

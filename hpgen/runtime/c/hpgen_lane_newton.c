@@ -1,7 +1,10 @@
-/* hpgen's C runtime, part 6a: the lane-wise full Newton of hpgen_lanes.c (HPGEN_L lanes,
-   HPGEN_NZ <= 3 unknowns). Included by hpgen_lanes.c, inside its no-trapping-math region,
-   for a model with lane kernels and an implicit step. */
+/* hpgen's C runtime, part 6a: the lane-wise Newton of hpgen_lanes.c (HPGEN_L lanes, a dense
+   Newton matrix): full Newton vectorised across the lanes for HPGEN_NZ <= 3
+   (hpgen_lane_newton), and Newton of either kind with each lane's own kept J^{-1} for any
+   HPGEN_NZ (hpgen_lane_newton_lu). Included by hpgen_lanes.c, inside its no-trapping-math
+   region, for a model with lane kernels and an implicit step. */
 
+#if HPGEN_NZ <= 3
 /* the entries of a vector of HPGEN_NZ <= 3 unknowns, unrolled: X(0) X(1) ... */
 #if HPGEN_NZ == 1
 #define HPGEN_EACH_Z(X) X(0)
@@ -117,5 +120,95 @@ static void hpgen_lane_newton(const double* g, const double* p, const double* hv
         okio[l] = ok[l] != 0.0;
         itio[l] = (long long)iters[l];
         rnio[l] = rnorm[l];
+    }
+}
+#endif /* HPGEN_NZ <= 3 */
+
+/* Newton (hpgen_newton: full, or simplified with o->simplified) on L lanes from z (in/out),
+   the residual and Jacobian kernels lane-wise (F and J from residual_jacobian where a lane
+   needs a fresh J, F from residual where it applies its kept J^{-1}), the rest lane by lane
+   with the scalar code's own functions on the lane's F and J (hpgen_norm_inf,
+   hpgen_lu_factor_solve, hpgen_lu_apply) and hpgen_newton's tests in its order: a lane's z,
+   iterations, Jacobians and last residual norm are bitwise hpgen_newton's. Lane l keeps its
+   J^{-1} in lu[l], piv[l], valid[l] (in/out, a run's lu, piv and lu_valid; full Newton
+   leaves them as they were). Lanes with act[l] = 0 are left alone. ok[l] = 1 where lane l
+   converged, 0 where hpgen_newton would return a failure (z then undefined). */
+static void hpgen_lane_newton_lu(const double* g, const double* p, const double* hv, double* z,
+                                 const hpgen_options* o, double (*lu)[HPGEN_LU_SIZE],
+                                 int (*piv)[HPGEN_NZ], long long* valid, const long long* act,
+                                 long long* ok, long long* iters, long long* jacs,
+                                 double* rnorm) {
+    double F[HPGEN_NZ * HPGEN_L], Fr[HPGEN_NZ * HPGEN_L], J[HPGEN_NZ * HPGEN_NZ * HPGEN_L],
+        dprev[HPGEN_L];
+    const double tol = o->tol, stol = HPGEN_SIMPLIFIED_TOL * o->tol;
+    long long active[HPGEN_L], full[HPGEN_L], fresh[HPGEN_L], it;
+    int l, i;
+    for (l = 0; l < HPGEN_L; ++l) {
+        active[l] = act[l]; full[l] = !o->simplified; fresh[l] = 0; dprev[l] = HUGE_VAL;
+        ok[l] = 0; iters[l] = 0; jacs[l] = 0; rnorm[l] = NAN;
+    }
+    for (it = 1; it <= o->maxit; ++it) {
+        long long need_j = 0, need_r = 0, any = 0;
+        for (l = 0; l < HPGEN_L; ++l) {
+            const long long j = full[l] | !valid[l];
+            need_j |= active[l] & j;
+            need_r |= active[l] & !j;
+        }
+        if (need_j) hpgen_lane_residual_jacobian(z, g, p, hv, F, J);
+        if (need_r) hpgen_lane_residual(z, g, p, hv, Fr);
+        for (l = 0; l < HPGEN_L; ++l) {
+            double f[HPGEN_NZ], zl[HPGEN_NZ], dn, zn;
+            if (!active[l]) continue;
+            active[l] = 0;                       /* until the iterate asks for another */
+            iters[l] = it;
+            if (full[l] || !valid[l]) {
+                double A[HPGEN_LU_SIZE];
+                valid[l] = 0;
+                ++jacs[l];
+                for (i = 0; i < HPGEN_NZ; ++i) f[i] = F[i * HPGEN_L + l];
+                for (i = 0; i < HPGEN_NZ * HPGEN_NZ; ++i) A[i] = J[i * HPGEN_L + l];
+                rnorm[l] = hpgen_norm_inf(f, HPGEN_NZ);
+                if (!isfinite(rnorm[l]) || hpgen_lu_factor_solve(A, piv[l], f, o->simplified))
+                    continue;
+                if (o->simplified) {
+                    memcpy(lu[l], A, sizeof A);
+                    valid[l] = 1;
+                }
+                fresh[l] = 1;
+            } else {
+                for (i = 0; i < HPGEN_NZ; ++i) f[i] = Fr[i * HPGEN_L + l];
+                rnorm[l] = hpgen_norm_inf(f, HPGEN_NZ);
+                if (!isfinite(rnorm[l])) continue;
+                hpgen_lu_apply(lu[l], piv[l], f);
+            }
+            for (i = 0; i < HPGEN_NZ; ++i) zl[i] = z[i * HPGEN_L + l] - f[i];
+            for (i = 0; i < HPGEN_NZ; ++i) z[i * HPGEN_L + l] = zl[i];
+            dn = hpgen_norm_inf(f, HPGEN_NZ);
+            zn = hpgen_norm_inf(zl, HPGEN_NZ);
+            if (!isfinite(dn) || !isfinite(zn)) continue;
+            if (it > 1 && dn >= dprev[l] && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)) {
+                ok[l] = 1;
+                continue;
+            }
+            if (full[l]) {
+                if (dn <= tol * (1.0 + zn)) { ok[l] = 1; continue; }
+            } else {
+                const double th = dn / dprev[l],
+                             te = th > HPGEN_THETA_FLOOR ? th : HPGEN_THETA_FLOOR;
+                if (dn <= stol * (1.0 + zn)) { ok[l] = 1; continue; }
+                if (it > 1 && te < 1.0 && te / (1.0 - te) * dn <= stol * (1.0 + zn)) {
+                    ok[l] = 1;
+                    continue;
+                }
+            }
+            if (!full[l] && it > 1 && dn > HPGEN_THETA_MAX * dprev[l]) {
+                if (fresh[l]) full[l] = 1;
+                else valid[l] = 0;
+            }
+            dprev[l] = dn;
+            active[l] = 1;
+            any = 1;
+        }
+        if (!any) break;
     }
 }

@@ -2,9 +2,11 @@
    hpgen.codegen.lanes). Included by hpgen_runtime.c last.
 
    HPGEN_L bodies per call in structure-of-arrays form (entry i of lane l at x[i * L + l]):
-   the step's kernels printed lane-wise, full Newton with per-lane convergence masks
-   (hpgen_lane_newton.c: the adjugate solve, the norms and the tests as fixed-count lane
-   loops). Every lane performs the operations of hpgen_run_cstep in the same order: its
+   the step's kernels printed lane-wise; Newton in hpgen_lane_newton.c (full Newton with
+   HPGEN_NZ <= 3 vectorised across the lanes: per-lane convergence masks, the adjugate
+   solve, the norms and the tests as fixed-count lane loops; simplified Newton, and any
+   HPGEN_NZ, with each lane's own kept J^{-1} and the scalar linear algebra lane by lane).
+   Every lane performs the operations of hpgen_run_cstep in the same order: its
    states are bitwise those of hpgen_advance. A composed step (hpgen_run_set_compose) runs
    its substeps in lanes, each from its own predictor offsets. A lane whose step does not
    converge cleanly (Newton failure, singular J, margin <= 0, a non-finite update in any
@@ -13,12 +15,12 @@
    exactly as a scalar run; a lane that fails there stops (its status set) and the other
    lanes continue. A run's first step (the crude start: a margin check, then Newton from the
    guess) is always the scalar code's. The model's lane kernels (hpgen_lane_residual_jacobian,
-   hpgen_lane_margin, hpgen_lane_update) come from kernels.c, as its HPGEN_L. An explicit
+   hpgen_lane_residual, hpgen_lane_margin, hpgen_lane_update) come from kernels.c, as its HPGEN_L. An explicit
    step (HPGEN_EXPLICIT) has no Newton: one lane-wise update a (sub)step (hpgen_lane_update
    alone), any number of unknowns. */
 #if defined(HPGEN_L)
-#if HPGEN_NZ > 3 && !HPGEN_EXPLICIT
-#error "lane code is written for at most 3 unknowns (the adjugate solve)"
+#if HPGEN_SPARSE && !HPGEN_EXPLICIT
+#error "lane code is written for a dense Newton matrix"
 #endif
 #if HPGEN_CH != HPGEN_PH
 #error "the lanes shift a composed run's offsets as the plain ones (HPGEN_CH == HPGEN_PH)"
@@ -38,6 +40,9 @@ typedef struct hpgen_lane_set {
     double dz[HPGEN_PH][HPGEN_NZ * HPGEN_L];
     double cdz[HPGEN_CS_MAX][HPGEN_CH][HPGEN_NZ * HPGEN_L];
     long long hp[HPGEN_L], ch[HPGEN_L];
+    double lu[HPGEN_L][HPGEN_LU_SIZE];             /* each lane's kept J^{-1} */
+    int piv[HPGEN_L][HPGEN_NZ];
+    long long valid[HPGEN_L];
 #endif
     long long k[HPGEN_L], rec[HPGEN_L], alive[HPGEN_L], nalive;
 } hpgen_lane_set;
@@ -59,6 +64,9 @@ static void hpgen_lane_gather(hpgen_lane_set* s, const hpgen_run* r, int l) {
                 for (i = 0; i < HPGEN_NZ; ++i) s->cdz[c][j][i * HPGEN_L + l] = r->cdz[c][j][i];
         s->hp[l] = r->have_prev;
         s->ch[l] = r->c_have;
+        memcpy(s->lu[l], r->lu, sizeof r->lu);
+        memcpy(s->piv[l], r->piv, sizeof r->piv);
+        s->valid[l] = r->lu_valid;
     }
 #endif
     s->k[l] = r->k;
@@ -80,6 +88,9 @@ static void hpgen_lane_scatter(const hpgen_lane_set* s, hpgen_run* r, int l) {
                 for (i = 0; i < HPGEN_NZ; ++i) r->cdz[c][j][i] = s->cdz[c][j][i * HPGEN_L + l];
         r->have_prev = s->hp[l];
         r->c_have = s->ch[l];
+        memcpy(r->lu, s->lu[l], sizeof r->lu);
+        memcpy(r->piv, s->piv[l], sizeof r->piv);
+        r->lu_valid = s->valid[l];
     }
 #endif
     r->k = s->k[l];
@@ -219,12 +230,14 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
     hpgen_lanes_finish(&s, runs, st);
 }
 #else
-/* L runs (runs[0..L-1], the same k, the same composition, full Newton, g not stale)
+/* L runs (runs[0..L-1], the same k, the same composition, g not stale)
    advanced like L calls of hpgen_advance (records of lane l at g_rec + l per_run NN, p_rec
    + l per_run D). Substep i of a step (the plain step: i = 0 only) starts from
    hpgen_run_step's predictor through the lane's offsets (a composed run's substep i: its
    own, cdz[i]; without the predictor: the last solution), G by the scalar kernels lane by
-   lane (bitwise hpgen_run_step's); the lane-wise Newton, margin and update follow. A lane
+   lane (bitwise hpgen_run_step's); the lane-wise Newton (full Newton with HPGEN_NZ <= 3:
+   hpgen_lane_newton; else hpgen_lane_newton_lu, each lane's J^{-1} kept across substeps
+   and steps as a run keeps it), margin and update follow. A lane
    steps when every substep converged with margin > 0 and finite g1, p1. (A composed run's
    plain offsets dz, which hpgen_run_cstep overwrites before it reads them, are left as
    they were.) */
@@ -236,7 +249,10 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
         g1[HPGEN_NN * HPGEN_L], p1[HPGEN_D * HPGEN_L], gs[HPGEN_NN * HPGEN_L],
         ps[HPGEN_D * HPGEN_L], nd[HPGEN_CS_MAX][HPGEN_NZ * HPGEN_L], hv[HPGEN_L], m[HPGEN_L],
         res[HPGEN_L], hvs[1], hv1[1];
-    long long ok[HPGEN_L], okn[HPGEN_L], it[HPGEN_L], sit[HPGEN_L], n, i;
+    double wlu[HPGEN_L][HPGEN_LU_SIZE];           /* the lanes' J^{-1} during a step */
+    int wpiv[HPGEN_L][HPGEN_NZ];
+    long long ok[HPGEN_L], okn[HPGEN_L], it[HPGEN_L], jn[HPGEN_L], sit[HPGEN_L],
+        sjac[HPGEN_L], wvalid[HPGEN_L], n, i;
     const long long cs = runs[0].cs, ns = cs > 0 ? cs : 1;
     int l, q, j;
     hpgen_options full = *o;
@@ -250,7 +266,12 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
         for (l = 0; l < HPGEN_L; ++l) ok[l] = (!first) & s.alive[l] & ((cs == 0) | (s.ch[l] > 0));
         if (!first) {
             const double *g = s.g, *p = s.p, *zp = s.z;
-            for (l = 0; l < HPGEN_L; ++l) sit[l] = 0;
+            for (l = 0; l < HPGEN_L; ++l) sit[l] = sjac[l] = 0;
+            if (o->simplified) {
+                memcpy(wlu, s.lu, sizeof wlu);
+                memcpy(wpiv, s.piv, sizeof wpiv);
+            }
+            memcpy(wvalid, s.valid, sizeof wvalid);
             for (i = 0; i < ns; ++i) {
                 hvs[0] = HPGEN_LANE_SUBSTEP_H(runs, i, h);
                 for (l = 0; l < HPGEN_L; ++l) {
@@ -267,12 +288,23 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
                     else
                         for (q = 0; q < HPGEN_NZ; ++q) zs[q * HPGEN_L + l] = zp[q * HPGEN_L + l];
                 }
-                hpgen_lane_newton(g, p, hv, zs, o, okn, it, res);
+#if HPGEN_NZ <= 3
+                if (!o->simplified) {
+                    hpgen_lane_newton(g, p, hv, zs, o, okn, it, res);
+                    for (l = 0; l < HPGEN_L; ++l) {
+                        jn[l] = it[l];
+                        wvalid[l] = 0;                 /* full Newton keeps no J^{-1} */
+                    }
+                } else
+#endif
+                    hpgen_lane_newton_lu(g, p, hv, zs, o, wlu, wpiv, wvalid, ok, okn, it, jn,
+                                         res);
                 hpgen_lane_margin(zs, hv, m);
                 hpgen_lane_update(zs, g, p, hv, g1, p1);
                 for (l = 0; l < HPGEN_L; ++l) {
                     ok[l] &= okn[l] & (m[l] > 0.0);
                     sit[l] += it[l];
+                    sjac[l] += jn[l];
                 }
                 hpgen_lanes_finite(g1, p1, ok);
                 for (q = 0; q < HPGEN_NZ * HPGEN_L; ++q) nd[i][q] = zs[q] - G[q];
@@ -304,13 +336,18 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
             }
             for (l = 0; l < HPGEN_L; ++l) {
                 const long long c = ok[l];
+                if (c && o->simplified) {
+                    memcpy(s.lu[l], wlu[l], sizeof wlu[l]);
+                    memcpy(s.piv[l], wpiv[l], sizeof wpiv[l]);
+                }
+                s.valid[l] = c ? wvalid[l] : s.valid[l];
                 if (cs == 0)
                     s.hp[l] += c & (s.hp[l] < HPGEN_PH);
                 else
                     s.ch[l] += c & (s.ch[l] < HPGEN_CH);
                 s.k[l] += c;
                 st[l].total_iterations += c ? sit[l] : 0;
-                st[l].jacobians += c ? sit[l] : 0;
+                st[l].jacobians += c ? sjac[l] : 0;
                 st[l].iterations = c ? sit[l] : st[l].iterations;
                 st[l].residual = c ? res[l] : st[l].residual;
             }
@@ -324,17 +361,15 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
 HPGEN_LANES_END
 
 /* hpgen_advance_batch with lanes: groups of L consecutive runs at the same step with the
-   same composition, with full Newton (o->simplified = 0; an explicit step: any options),
-   advance together (hpgen_advance_lanes); the other runs (the remainder of B / L,
-   simplified Newton, invalid arguments) by hpgen_advance, one after the other. The same records, statuses and return value as hpgen_advance_batch. */
+   same composition advance together (hpgen_advance_lanes); the other runs (the remainder
+   of B / L, invalid arguments) by hpgen_advance, one after the other. The same records, statuses and return value as hpgen_advance_batch. */
 HPGEN_EXPORT long long hpgen_advance_batch_lanes(hpgen_run* runs, long long B, double h,
                                                  long long steps, long long every,
                                                  const hpgen_options* o, long long per_run,
                                                  double* g_rec, double* p_rec,
                                                  hpgen_status* st) {
     long long b = 0, failed = 0, j;
-    if (steps >= 0 && every >= 1 && hpgen_options_ok(o)
-        && (HPGEN_EXPLICIT || !o->simplified)) {
+    if (steps >= 0 && every >= 1 && hpgen_options_ok(o)) {
         for (; b + HPGEN_L <= B; b += HPGEN_L) {
             int same = 1, l;
             for (l = 0; l < HPGEN_L; ++l)
