@@ -29,8 +29,9 @@ LANES = 8
 #: run lane-wise and the LU of hpgen_linalg.c lane by lane) ...
 LANES_MAX_NZ = 12
 #: ... with a dense Newton matrix, and whose step kernels total at most this many CasADi
-#: instructions
-LANES_MAX_INSTRUCTIONS = 4000
+#: instructions (the lane kernels about double the C compile time of kernels.c: above this
+#: the ensembles' gain does not pay for it)
+LANES_MAX_INSTRUCTIONS = 2000
 #: the kernels the lane-wise step calls (residual: simplified Newton's iterates with a kept
 #: J^{-1})
 LANE_KERNELS = ("residual_jacobian", "residual", "margin", "update")
