@@ -160,4 +160,6 @@ def lanes_context(step, step_instructions: int) -> dict | None:
     parts = [lane_kernel_source(step.kernel(name)) for name in names]
     if any(p is None for p in parts):
         return None
+    if not explicit:                  # the runtime's sign that the residual is lane-wise
+        parts.insert(0, "#define HPGEN_LANE_RESIDUAL 1\n")
     return {"L": LANES, "code": "\n".join(parts)}

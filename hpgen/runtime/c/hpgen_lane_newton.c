@@ -124,6 +124,7 @@ static void hpgen_lane_newton(const double* g, const double* p, const double* hv
 }
 #endif /* HPGEN_NZ <= 3 */
 
+#if HPGEN_LANES_LU
 /* Newton (hpgen_newton: full, or simplified with o->simplified) on L lanes from z (in/out),
    the residual and Jacobian kernels lane-wise (F and J from residual_jacobian where a lane
    needs a fresh J, F from residual where it applies its kept J^{-1}), the rest lane by lane
@@ -212,3 +213,4 @@ static void hpgen_lane_newton_lu(const double* g, const double* p, const double*
         if (!any) break;
     }
 }
+#endif /* HPGEN_LANES_LU */

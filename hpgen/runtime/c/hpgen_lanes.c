@@ -22,6 +22,17 @@
 #if HPGEN_SPARSE && !HPGEN_EXPLICIT
 #error "lane code is written for a dense Newton matrix"
 #endif
+/* lane code with the residual kernel (hpgen.codegen.lanes defines HPGEN_LANE_RESIDUAL) runs
+   simplified Newton and HPGEN_NZ > 3 in lanes; lane code without it (a module generated
+   before) full Newton with HPGEN_NZ <= 3 only */
+#if defined(HPGEN_LANE_RESIDUAL) && !HPGEN_EXPLICIT
+#define HPGEN_LANES_LU 1
+#else
+#define HPGEN_LANES_LU 0
+#endif
+#if !HPGEN_EXPLICIT && !HPGEN_LANES_LU && HPGEN_NZ > 3
+#error "lane code without a lane-wise residual is for at most 3 unknowns"
+#endif
 #if HPGEN_CH != HPGEN_PH
 #error "the lanes shift a composed run's offsets as the plain ones (HPGEN_CH == HPGEN_PH)"
 #endif
@@ -289,7 +300,7 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
                         for (q = 0; q < HPGEN_NZ; ++q) zs[q * HPGEN_L + l] = zp[q * HPGEN_L + l];
                 }
 #if HPGEN_NZ <= 3
-                if (!o->simplified) {
+                if (!HPGEN_LANES_LU || !o->simplified) {
                     hpgen_lane_newton(g, p, hv, zs, o, okn, it, res);
                     for (l = 0; l < HPGEN_L; ++l) {
                         jn[l] = it[l];
@@ -297,8 +308,12 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
                     }
                 } else
 #endif
+                {
+#if HPGEN_LANES_LU
                     hpgen_lane_newton_lu(g, p, hv, zs, o, wlu, wpiv, wvalid, ok, okn, it, jn,
                                          res);
+#endif
+                }
                 hpgen_lane_margin(zs, hv, m);
                 hpgen_lane_update(zs, g, p, hv, g1, p1);
                 for (l = 0; l < HPGEN_L; ++l) {
@@ -362,14 +377,16 @@ HPGEN_LANES_END
 
 /* hpgen_advance_batch with lanes: groups of L consecutive runs at the same step with the
    same composition advance together (hpgen_advance_lanes); the other runs (the remainder
-   of B / L, invalid arguments) by hpgen_advance, one after the other. The same records, statuses and return value as hpgen_advance_batch. */
+   of B / L, invalid arguments, simplified Newton without HPGEN_LANES_LU) by hpgen_advance,
+   one after the other. The same records, statuses and return value as hpgen_advance_batch. */
 HPGEN_EXPORT long long hpgen_advance_batch_lanes(hpgen_run* runs, long long B, double h,
                                                  long long steps, long long every,
                                                  const hpgen_options* o, long long per_run,
                                                  double* g_rec, double* p_rec,
                                                  hpgen_status* st) {
     long long b = 0, failed = 0, j;
-    if (steps >= 0 && every >= 1 && hpgen_options_ok(o)) {
+    if (steps >= 0 && every >= 1 && hpgen_options_ok(o)
+        && (HPGEN_EXPLICIT || HPGEN_LANES_LU || !o->simplified)) {
         for (; b + HPGEN_L <= B; b += HPGEN_L) {
             int same = 1, l;
             for (l = 0; l < HPGEN_L; ++l)
