@@ -170,7 +170,8 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
                     sjac[l] += jn[l];
                 }
                 hpgen_lanes_finite(g1, p1, ok);
-                for (q = 0; q < HPGEN_NZ * HPGEN_L; ++q) nd[i][q] = zs[q] - G[q];
+                if (cs > 0)         /* (the plain step's offsets: zs - G at the commit) */
+                    for (q = 0; q < HPGEN_NZ * HPGEN_L; ++q) nd[i][q] = zs[q] - G[q];
                 if (i + 1 < ns) {
                     memcpy(gs, g1, sizeof gs);
                     memcpy(ps, p1, sizeof ps);
@@ -183,7 +184,7 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
             /* commit the lanes that stepped, their offsets shifted by one step */
             if (hpgen_lanes_commit(&s, ok, g1, p1, zs) && cs == 0) {
                 memmove(s.dz[1], s.dz[0], (HPGEN_PH - 1) * sizeof s.dz[0]);
-                memcpy(s.dz[0], nd[0], sizeof s.dz[0]);
+                for (q = 0; q < HPGEN_NZ * HPGEN_L; ++q) s.dz[0][q] = zs[q] - G[q];
             } else {
                 for (l = 0; l < HPGEN_L; ++l) {
                     if (!ok[l]) continue;
@@ -192,7 +193,7 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
                         for (q = 0; q < HPGEN_NZ; ++q) {
                             const int x = q * HPGEN_L + l;
                             for (j = HPGEN_PH - 1; j > 0; --j) d[j][x] = d[j - 1][x];
-                            d[0][x] = nd[i][x];
+                            d[0][x] = cs == 0 ? zs[x] - G[x] : nd[i][x];
                         }
                     }
                 }
