@@ -1,7 +1,7 @@
 """Lane-wise C kernels for ensembles: one CasADi SX function printed as a C function that
 evaluates it for L independent arguments at once (the C runtime's
-hpgen/runtime/c/hpgen_lanes.c runs the Newton loop of L bodies on them;
-hpgen.runtime's simulate_batch calls it).
+hpgen/runtime/c/hpgen_lanes.c runs the Newton loop of L bodies on them, full or simplified,
+hpgen_lane_newton.c; hpgen.runtime's simulate_batch calls it).
 
 Layout (structure of arrays): every argument, input or output, holds L lanes of a dense
 column-major vector, entry i of lane l at ``x[i * L + l]``. The printed function is one loop
@@ -24,13 +24,17 @@ from .contract import CodegenError, dense_positions
 
 #: bodies evaluated per call (8: as fast as 4 with SSE2, the portable build; faster with AVX)
 LANES = 8
-#: lane code is emitted only for steps this small (unknowns; the 3 x 3 adjugate solve is
-#: written lane-wise) ...
-LANES_MAX_NZ = 3
-#: ... and whose step kernels total at most this many CasADi instructions
+#: lane code is emitted only for steps this small (unknowns: up to 3 full Newton runs
+#: vectorised, the adjugate solve lane-wise; above, and for simplified Newton, the kernels
+#: run lane-wise and the LU of hpgen_linalg.c lane by lane) ...
+LANES_MAX_NZ = 12
+#: ... with a dense Newton matrix, and whose step kernels total at most this many CasADi
+#: instructions (the lane kernels about double the C compile time of kernels.c: above this
+#: the ensembles' gain does not pay for it)
 LANES_MAX_INSTRUCTIONS = 2000
-#: the kernels the lane-wise step calls
-LANE_KERNELS = ("residual_jacobian", "margin", "update")
+#: the kernels the lane-wise step calls (residual: simplified Newton's iterates with a kept
+#: J^{-1})
+LANE_KERNELS = ("residual_jacobian", "residual", "margin", "update")
 #: ... an explicit step's (meta "explicit": one update a step, no Newton, any nz)
 EXPLICIT_LANE_KERNELS = ("update",)
 #: an explicit step gets lane code when its update has at most this many instructions
@@ -133,9 +137,10 @@ def _calls(f) -> bool:
 
 def lanes_context(step, step_instructions: int) -> dict | None:
     """kernels.c.j2's ``lanes`` entry: {"L": lanes, "code": the lane kernels' C} when lane code
-    pays and can be printed (a closed model, nz <= LANES_MAX_NZ, step kernels of at most
-    LANES_MAX_INSTRUCTIONS instructions, every op printable; an explicit step: its update of
-    at most EXPLICIT_MAX_INSTRUCTIONS instructions, any nz), else None."""
+    pays and can be printed (a closed model, nz <= LANES_MAX_NZ, a dense Newton matrix, step
+    kernels of at most LANES_MAX_INSTRUCTIONS instructions, every op printable; an explicit
+    step: its update of at most EXPLICIT_MAX_INSTRUCTIONS instructions, any nz), else
+    None."""
     explicit = bool(getattr(step, "explicit", False))
     if step.open_spec is not None:
         return None
@@ -147,9 +152,14 @@ def lanes_context(step, step_instructions: int) -> dict | None:
         names = LANE_KERNELS
         if step.nz > LANES_MAX_NZ or step_instructions > LANES_MAX_INSTRUCTIONS:
             return None
+        from .sparse import jacobian_sparsity
+        if jacobian_sparsity(step) is not None:
+            return None               # a sparse J: the scalar loop's sparse LU / QR
     if any(_calls(step.kernel(name).function) for name in names):
         return None                   # scalar kernels with calls: ensembles run those
     parts = [lane_kernel_source(step.kernel(name)) for name in names]
     if any(p is None for p in parts):
         return None
+    if not explicit:                  # the runtime's sign that the residual is lane-wise
+        parts.insert(0, "#define HPGEN_LANE_RESIDUAL 1\n")
     return {"L": LANES, "code": "\n".join(parts)}

@@ -64,8 +64,8 @@ def simulate_batch(cb, g0s, p0s, h, z0s, steps, every, opts, threads, inputs=Non
     call (ctypes releases the GIL). Returns (done (B,), g_rec (B, K, nn), p_rec (B, K, d),
     statuses); K = steps // every + 1 including step 0; rows after a failure are 0.
     With ``lanes`` and a module that has lane code (``cb.lanes`` > 0), the C call is
-    hpgen_advance_batch_lanes (L bodies a call, bitwise the same results), else
-    hpgen_advance_batch."""
+    hpgen_advance_batch_lanes (L bodies a call, the plain or the composed step, bitwise the
+    same results), else hpgen_advance_batch."""
     nn, d, B = cb.n * cb.n, cb.d, len(g0s)
     K = steps // every + 1
     runs, base = batch_runs(cb, g0s, p0s, z0s, inputs)
@@ -74,7 +74,7 @@ def simulate_batch(cb, g0s, p0s, h, z0s, steps, every, opts, threads, inputs=Non
     p_rec[:, 0] = np.asarray(p0s, dtype=np.float64).reshape(B, d)
     sts, o = (_Status * B)(), _Options.of(opts)
 
-    use_lanes = bool(lanes and cb.lanes and not cb.compose)   # lanes step the plain scheme
+    use_lanes = bool(lanes and cb.lanes)
     advance = (cb.lib.hpgen_advance_batch_lanes if use_lanes
                else cb.lib.hpgen_advance_batch)
 

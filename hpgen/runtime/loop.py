@@ -177,12 +177,20 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
     dz = run.dz
     zs = predict(G, dz) if opts.predictor and dz else run.z
     first = run.k == 0
-    # the first step starts from the crude guess kernel: full Newton
-    code, g1, p1, zs, it, r, jacs = step_lists(kern, run.g, run.p, hv, zs,
-                                               full if first else opts, run.memory, first,
-                                               with_g)
+    # the first step (from the guess kernel: its start is checked) takes opts' Newton too,
+    # except with a sparse J (full Newton there, as in C); where simplified Newton fails,
+    # full Newton from the same start
+    o1 = full if first and kern.sparse else opts
+    code, g1, p1, z1, it, r, jacs = step_lists(kern, run.g, run.p, hv, zs, o1, run.memory,
+                                               first, with_g)
     st["total_iterations"] += it
     st["jacobians"] += jacs
+    if code != OK and first and o1.simplified:
+        code, g1, p1, z1, it, r, jacs = step_lists(kern, run.g, run.p, hv, zs, full,
+                                                   run.memory, True, with_g)
+        st["total_iterations"] += it
+        st["jacobians"] += jacs
+    zs = z1
     if code != OK and opts.predictor and run.have_prev >= 1:
         # the extrapolated start failed (Newton diverged, or reached a root outside the
         # chart): retry from the plain warm start z_k before reporting anything

@@ -1,7 +1,8 @@
 """Lane-wise ensemble kernels (hpgen.codegen.lanes, run by the C runtime's
 hpgen/runtime/c/hpgen_lanes.c): simulate_batch with lanes is bitwise simulate_batch without them
 (states, statuses, counters), on 1 and 2 threads, with a body count that is not a multiple
-of the lane count (the remainder runs the scalar code); a body that fails mid-run stops with
+of the lane count (the remainder runs the scalar code), for full and simplified Newton,
+3 and 6 unknowns, plain and composed steps; a body that fails mid-run stops with
 the error of a scalar run while the other lanes of its group continue; the lane printer
 gives CasADi's C bits on every op; the emitted lane code compiles without warnings; modules
 where lanes do not pay get none."""
@@ -114,13 +115,188 @@ def test_backend_outputs_and_statuses_equal(body):
         assert on[3] == off[3]
 
 
-def test_simplified_newton_runs_scalar(body):
-    """The lane Newton is full Newton: with simplified Newton the batch runs scalar code,
-    with the same results."""
-    mus = _momenta(lanes.LANES)
+@pytest.mark.parametrize("threads", [1, 2])
+def test_simplified_newton_lanes(body, monkeypatch, threads):
+    """Simplified Newton runs in lanes (each lane keeps its own J^{-1} across steps, the
+    scalar linear algebra lane by lane), bitwise the scalar ensemble, counters included
+    (fewer Jacobians than iterations)."""
+    B = lanes.LANES + 3
+    mus = _momenta(B, seed=9) * np.linspace(0.5, 3.0, B)[:, None]
     opts = NewtonOptions(simplified=True)
-    _assert_same(body.simulate_batch(np.eye(3), 0.1, 50, mu0=mus, newton=opts),
-                 body.simulate_batch(np.eye(3), 0.1, 50, mu0=mus, newton=opts, lanes=False))
+    on, names = _batch_with_spy(body, monkeypatch, np.eye(3), 0.1, 80, mu0=mus, newton=opts,
+                                every=3, threads=threads)
+    assert "hpgen_advance_batch_lanes" in names
+    off = body.simulate_batch(np.eye(3), 0.1, 80, mu0=mus, newton=opts, every=3,
+                              threads=threads, lanes=False)
+    _assert_same(on, off)
+    assert all(t.error is None and t.jacobians < t.newton_iterations for t in on)
+
+
+def test_simplified_one_lane_fails_the_others_continue(body):
+    """Simplified Newton with maxit = 8: a faster spin's lane redoes its step in scalar code
+    (from its J^{-1} before the step), which reports the failure at a later step; bitwise
+    the scalar ensemble."""
+    B = lanes.LANES + 3
+    mus = _momenta(B, seed=1)
+    mus[2] *= 5.0
+    opts = NewtonOptions(maxit=8, simplified=True)
+    on = body.simulate_batch(np.eye(3), 0.1, 200, mu0=mus, newton=opts)
+    off = body.simulate_batch(np.eye(3), 0.1, 200, mu0=mus, newton=opts, lanes=False)
+    _assert_same(on, off)
+    assert on[2].error is not None and 2 < len(on[2].mu) < 201
+    assert all(t.error is None for i, t in enumerate(on) if i != 2)
+
+
+@pytest.fixture(scope="module")
+def chain2(compile_model):
+    """Two bodies coupled by a spring (Stormer-Verlet cay truncated): 6 unknowns."""
+    return compile_model(ROOT / "examples" / "double_body_chain.yaml")
+
+
+@pytest.mark.parametrize("newton", [None, NewtonOptions(simplified=True),
+                                    NewtonOptions(simplified=True, predictor=False)])
+def test_more_unknowns_than_three(chain2, monkeypatch, newton):
+    """nz = 6 (the LU with partial pivoting lane by lane): lanes emitted and used, bitwise
+    the scalar ensemble on 1 and 2 threads, full (the default) or simplified Newton."""
+    from hpgen.model import load_model
+    sc = load_model(str(ROOT / "examples" / "double_body_chain.yaml")).scene
+    assert chain2.meta["nz"] == 6 and chain2.engine.backend.lanes == lanes.LANES
+    B = lanes.LANES + 5
+    xis = np.asarray(sc.xi0) * (1.0 + 0.2 * np.random.default_rng(11).normal(size=(B, 6)))
+    for threads in (1, 2):
+        on, names = _batch_with_spy(chain2, monkeypatch, sc.g0, sc.h, 80, xi0=xis, every=3,
+                                    threads=threads, newton=newton)
+        assert "hpgen_advance_batch_lanes" in names
+        _assert_same(on, chain2.simulate_batch(sc.g0, sc.h, 80, xi0=xis, every=3,
+                                               threads=threads, newton=newton, lanes=False))
+        assert all(t.error is None for t in on)
+    one = chain2.simulate(sc.g0, sc.h, 80, xi0=xis[B - 2], every=3, newton=newton)
+    assert np.array_equal(one.mu, on[B - 2].mu) and np.array_equal(one.g, on[B - 2].g)
+
+
+def test_composed_simplified_lanes(composed_body):
+    """A composed step with simplified Newton (J^{-1} kept across substeps and steps, per
+    lane): bitwise the scalar ensemble."""
+    mus = _momenta(lanes.LANES + 1, seed=12) * 2.0
+    opts = NewtonOptions(simplified=True)
+    _assert_same(composed_body.simulate_batch(np.eye(3), 0.05, 60, mu0=mus, newton=opts),
+                 composed_body.simulate_batch(np.eye(3), 0.05, 60, mu0=mus, newton=opts,
+                                              lanes=False))
+
+
+class _CallSpy:
+    """A module's library that notes which of its functions were looked up."""
+
+    def __init__(self, lib):
+        self._lib, self.names = lib, set()
+
+    def __getattr__(self, name):
+        self.names.add(name)
+        return getattr(self._lib, name)
+
+
+def _batch_with_spy(integ, monkeypatch, *args, **kwargs):
+    """(simulate_batch's trajectories, the names of the library functions it looked up)"""
+    cb = integ.engine.backend
+    spy = _CallSpy(cb.lib)
+    monkeypatch.setattr(cb, "_lib", spy)
+    try:
+        out = integ.simulate_batch(*args, **kwargs)
+    finally:
+        monkeypatch.setattr(cb, "_lib", spy._lib)
+    return out, spy.names
+
+
+@pytest.fixture(scope="module")
+def composed_body(compile_model):
+    return compile_model(FREE_BODY, tableau="stormer-verlet", tau="cay", rkmk="truncated",
+                         compose="suzuki4")
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_composed_lanes_bitwise_equal_scalar(composed_body, monkeypatch, threads):
+    """A composed step (Stormer-Verlet, suzuki4: 5 substeps, each from its own predictor
+    offsets) runs in lanes (hpgen_advance_batch_lanes is called), bitwise the scalar
+    ensemble and each body's own simulate; B not a multiple of L."""
+    integ = composed_body
+    assert integ.engine.backend.lanes == lanes.LANES
+    B = 2 * lanes.LANES + 3
+    mus = _momenta(B, seed=4) * np.linspace(0.5, 2.5, B)[:, None]
+    on, names = _batch_with_spy(integ, monkeypatch, np.eye(3), 0.05, 90, mu0=mus, every=4,
+                                threads=threads)
+    assert "hpgen_advance_batch_lanes" in names
+    off, names = _batch_with_spy(integ, monkeypatch, np.eye(3), 0.05, 90, mu0=mus, every=4,
+                                 threads=threads, lanes=False)
+    assert "hpgen_advance_batch_lanes" not in names
+    _assert_same(on, off)
+    assert all(t.error is None for t in on)
+    assert on[0].newton_iterations > 0
+    for b in (0, lanes.LANES + 2, B - 1):
+        one = integ.simulate(np.eye(3), 0.05, 90, mu0=mus[b], every=4)
+        assert np.array_equal(one.g, on[b].g) and np.array_equal(one.mu, on[b].mu)
+        assert one.newton_iterations == on[b].newton_iterations
+
+
+def test_composed_lanes_without_predictor(composed_body):
+    """Without the predictor each substep starts from the substep before's solution."""
+    mus = _momenta(lanes.LANES, seed=5) * 2.0
+    opts = NewtonOptions(predictor=False)
+    _assert_same(composed_body.simulate_batch(np.eye(3), 0.05, 60, mu0=mus, newton=opts),
+                 composed_body.simulate_batch(np.eye(3), 0.05, 60, mu0=mus, newton=opts,
+                                              lanes=False))
+
+
+def test_composed_one_lane_fails_the_others_continue(composed_body):
+    """Body 1 (a faster spin, h = 0.2) needs more than maxit = 4 iterations in some substep
+    of its third step: its lane redoes the composed step in scalar code (from the state
+    before the step), which reports NO_CONVERGENCE; the other lanes run to the end;
+    everything equals the scalar ensemble."""
+    B = lanes.LANES + 1
+    mus = _momenta(B, seed=6) * 0.5
+    mus[1] = [-4.909257111181791, -3.5734690654455825, -1.4241795057337374]
+    opts = NewtonOptions(maxit=4)
+    for threads in (1, 2):
+        on = composed_body.simulate_batch(np.eye(3), 0.2, 60, mu0=mus, newton=opts,
+                                          threads=threads)
+        off = composed_body.simulate_batch(np.eye(3), 0.2, 60, mu0=mus, newton=opts,
+                                           threads=threads, lanes=False)
+        _assert_same(on, off)
+        assert on[1].error is not None and "did not converge" in str(on[1].error)
+        assert len(on[1].mu) == 3                 # steps 0 and 1 done, step 2 failed
+        assert all(t.error is None and len(t.mu) == 61 for i, t in enumerate(on) if i != 1)
+
+
+def test_composed_heavy_top_lanes(compile_model):
+    """A composed step whose residual and update read g (the heavy top): bitwise the
+    scalar ensemble."""
+    from scipy.spatial.transform import Rotation
+    top = compile_model(ROOT / "examples" / "heavy_top.yaml", tableau="stormer-verlet",
+                        tau="cay", rkmk="truncated", compose="yoshida4")
+    B = lanes.LANES + 2
+    xis = np.array([0.2, 1.0, 3.0]) + 0.3 * np.random.default_rng(7).normal(size=(B, 3))
+    g0 = Rotation.from_rotvec([0.3, 0.2, 0.0]).as_matrix()
+    on = top.simulate_batch(g0, 0.05, 80, xi0=xis, every=3)
+    _assert_same(on, top.simulate_batch(g0, 0.05, 80, xi0=xis, every=3, lanes=False))
+    assert all(t.error is None for t in on)
+
+
+def test_explicit_composed_lanes(compile_model):
+    """The explicit lanes' composed path (hpgen_run_cstep's substeps of an explicit step;
+    the API refuses to compose a splitting scheme, so the runs are composed here directly):
+    bitwise the scalar runs."""
+    split = compile_model(FREE_BODY, tableau="split2")
+    cb = split.engine.backend
+    assert cb.lanes == lanes.LANES
+    mus = _momenta(lanes.LANES + 2, seed=8) * 2.0
+    cb.compose = (0.6, -0.2, 0.6)
+    try:
+        on = split.simulate_batch(np.eye(3), 0.05, 50, mu0=mus, every=5)
+        off = split.simulate_batch(np.eye(3), 0.05, 50, mu0=mus, every=5, lanes=False)
+    finally:
+        cb.compose = ()
+    _assert_same(on, off)
+    plain = split.simulate_batch(np.eye(3), 0.05, 50, mu0=mus, every=5)
+    assert not np.array_equal(plain[0].mu, on[0].mu)       # the composition took effect
 
 
 def _lane_region(source: str) -> tuple[int, int]:
@@ -155,7 +331,8 @@ def test_lane_code_compiles_without_warnings(body, tmp_path):
 
 def test_no_lanes_where_they_do_not_pay():
     """Open models and steps with more than LANES_MAX_NZ unknowns get no lane code."""
-    assert lanes.lanes_context(SimpleNamespace(open_spec=None, nz=9), 100) is None
+    assert lanes.lanes_context(SimpleNamespace(open_spec=None, nz=lanes.LANES_MAX_NZ + 1),
+                               100) is None
     assert lanes.lanes_context(SimpleNamespace(open_spec=object(), nz=3), 100) is None
     assert lanes.lanes_context(SimpleNamespace(open_spec=None, nz=3),
                                lanes.LANES_MAX_INSTRUCTIONS + 1) is None

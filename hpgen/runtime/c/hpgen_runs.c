@@ -106,9 +106,9 @@ static int hpgen_explicit_step(hpgen_run* r, const double* hv, hpgen_status* st,
 #endif
 
 /* One step of run r with hv = {h}: the Newton start from the predictor, the step, and on
-   success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for the steps
-   after the first, full (o with full Newton) for the first. Updates the counters of st;
-   returns the status code.
+   success the run moved to (g_{k+1}, p_{k+1}) (with_g = 0: p_{k+1} only); o for every
+   step (a sparse J's first step: full); full (o with full Newton) for the first step's
+   second try where simplified Newton failed there. Updates the counters of st; returns the status code.
    Predictor: z_k = G_k + dz_k with G_k = hpgen_predictor_base(g_k, p_k) (exact in p, O(1))
    and dz_k = z_k - G_k small (O(h)) and smooth in k; the start is G_k plus the polynomial
    through the last m = min(have_prev, HPGEN_PH) offsets extrapolated one step
@@ -117,8 +117,9 @@ static int hpgen_explicit_step(hpgen_run* r, const double* hv, hpgen_status* st,
    start and stop"). */
 static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
                           const hpgen_options* full, hpgen_status* st, int with_g) {
-    double g1[HPGEN_GNZ], p1[HPGEN_D], zs[HPGEN_NZ], G[HPGEN_NZ], res;
+    double g1[HPGEN_GNZ], p1[HPGEN_D], zs[HPGEN_NZ], z0[HPGEN_NZ], G[HPGEN_NZ], res;
     long long it;
+    const hpgen_options* o1 = o;
     int i, code, predicted = o->predictor && r->have_prev >= 1;
 #if HPGEN_OPEN
     /* the step vector of step k: [h, t0 + k h, u_k, params] */
@@ -131,7 +132,8 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     hv = r->hv;
 #endif
 #if HPGEN_EXPLICIT
-    (void)o; (void)full; (void)G; (void)zs; (void)res; (void)it; (void)code; (void)predicted;
+    (void)o; (void)full; (void)G; (void)zs; (void)z0; (void)res; (void)it; (void)code;
+    (void)predicted; (void)o1;
     return hpgen_explicit_step(r, hv, st, with_g);
 #endif
     /* (G is kept up to date with or without o->predictor) */
@@ -142,11 +144,21 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
         hpgen_predict(G, r->dz[0], 1, HPGEN_NZ, r->have_prev, zs);
     else
         for (i = 0; i < HPGEN_NZ; ++i) zs[i] = r->z[i];
-    /* the first step starts from the crude guess kernel: full Newton */
-    code = hpgen_step_core_packed(r->g, r->p, hv, zs, r->k == 0 ? full : o, r->lu, r->piv,
-                                  &r->lu_valid, g1, p1, &it, &st->jacobians, &res, r->k == 0,
-                                  with_g);
+    /* the first step (from the guess kernel: its start is checked) takes o's Newton too,
+       except with a sparse J, whose simplified stop is the looser rate-based one
+       (hpgen_sparse_converged): full Newton there, as the first step's error is carried
+       longest; where simplified Newton fails, full Newton from the same start */
+    o1 = r->k == 0 && HPGEN_SPARSE ? full : o;
+    if (r->k == 0) memcpy(z0, zs, sizeof z0);
+    code = hpgen_step_core_packed(r->g, r->p, hv, zs, o1, r->lu, r->piv, &r->lu_valid, g1, p1,
+                                  &it, &st->jacobians, &res, r->k == 0, with_g);
     st->total_iterations += it;
+    if (code != HPGEN_OK && r->k == 0 && o1->simplified) {
+        memcpy(zs, z0, sizeof zs);
+        code = hpgen_step_core_packed(r->g, r->p, hv, zs, full, r->lu, r->piv, &r->lu_valid,
+                                      g1, p1, &it, &st->jacobians, &res, 1, with_g);
+        st->total_iterations += it;
+    }
     if (code != HPGEN_OK && predicted) {
         /* the extrapolated start failed (Newton diverged, or reached a root outside the
            chart): retry from the plain warm start z_k before reporting anything */
