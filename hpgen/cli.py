@@ -89,6 +89,8 @@ def _parser():
                        "symplecticity defects of an integrator on the model's scene",
                        epilog="exit status 3 when a structure check fails")
     _add_options(k)
+    _add_compose(k)
+    _add_set(k)
     k.add_argument("--scheme", choices=("hpgen", "rkmk-rk4"), default="hpgen",
                    help="the compiled scheme (default) or the non-variational RKMK-RK4")
     k.add_argument("--h", type=float, help="override scene.h")
@@ -395,13 +397,14 @@ def cmd_check(args) -> int:
     from .analysis.check import run_check
     from .analysis.check_report import format_report, write_json
     from .model.controls import controls_for
-    model = _load_model(args.model)
+    model = _load_model(args.model, _overrides(args))
     controls = controls_for(model, args.u, args.u_interpolation, args.model) \
         if model.inputs or args.u else None
     report = run_check(args.model, scheme=args.scheme, tableau=args.tableau, tau=args.tau,
                        rkmk=args.rkmk, h=args.h, steps=args.steps, backend=args.backend,
                        cache_dir=args.cache_dir, order_horizon=args.order_horizon,
-                       n_states=args.states, controls=controls)
+                       n_states=args.states, controls=controls, compose=args.compose,
+                       parameters=_overrides(args))
     print(format_report(report))
     if args.json:
         print(f"  figures -> {write_json(report, args.json)}")

@@ -74,6 +74,7 @@ from .. import __version__
 from ..errors import ModelError
 from ..schemes import is_splitting
 from .rkmk import RKMK4, ContinuousEquations
+from .constrained import CONSTRAINT_TOL
 from .symplectic import GeneratedMap, ad_matrices, defect_along
 
 SYMPLECTIC_RTOL = 1e-12
@@ -90,21 +91,24 @@ SCHEMES = ("hpgen", "rkmk-rk4")
 FORM = "omega((eta_a,nu_a),(eta_b,nu_b)) = <nu_b,eta_a> - <nu_a,eta_b> + <p,[eta_a,eta_b]>"
 
 
-def _load(path):
+def _load(path, parameters=None):
     from ..api import read_model_text
     from ..model import load_model_text
-    return load_model_text(read_model_text(path), filename=str(path))
+    from ..model.overrides import apply_overrides
+    text = apply_overrides(read_model_text(path), dict(parameters or ()), file=str(path))
+    return load_model_text(text, filename=str(path))
 
 
 class _Hpgen:
     """The compiled scheme: simulate with the runtime, Jacobian by implicit differentiation."""
 
-    def __init__(self, path, model, tableau, tau, rkmk, backend, cache_dir):
+    def __init__(self, path, model, tableau, tau, rkmk, backend, cache_dir, compose=None,
+                 parameters=None):
         from ..api import build
         # the compile's own result: its resolved options and DiscreteStep (derived once,
         # on a cache hit only when asked for here)
         compiled = build(path, tableau=tableau, tau=tau, rkmk=rkmk, backend=backend,
-                         cache_dir=cache_dir)
+                         cache_dir=cache_dir, compose=compose, parameters=parameters)
         self.integ = compiled.load()
         d = compiled.derivation
         tab, self.tau, self.rkmk = d.tableau, d.tau, d.rkmk
@@ -113,8 +117,11 @@ class _Hpgen:
         self.splitting = is_splitting(tab)
         if self.splitting:            # explicit composition: its own order, no chart, no RKMK
             self.order = tab.order
+        #: the composition in effect (--compose, else the model's integrator.compose)
+        self.composition = self.integ.composition
         self.info = {"tableau": tab.name, "tau": self.tau, "rkmk": self.rkmk,
-                     "backend": backend, "module": self.integ.meta.get("module")}
+                     "backend": backend, "module": self.integ.meta.get("module"),
+                     "compose": None if self.composition is None else self.composition.name}
         op = self.integ.open          # an open model: the file's params, t0 = 0
         self.u = None if op is None or not op["inputs"] else np.zeros(len(op["inputs"]))
         self.defaults = [] if op is None else [float(v) for v in op["defaults"]]
@@ -125,11 +132,20 @@ class _Hpgen:
         return tr.g, tr.mu
 
     def map_jacobian(self, g, p, h, t=0.0):
-        hv = None if self.integ.open is None else \
-            [h, t, *([] if self.u is None else self.u), *self.defaults]
-        out = self.map.map_jacobian(g, p, h, hv=hv)
-        self.extra = {k: self.map.last[k] for k in ("cond_J", "kernel_mismatch")}
-        return out
+        """(Phi', g1, p1) of one step; a composed step's Phi' = Phi'_s ... Phi'_1 over its
+        substeps S(gamma_i h) (each at its own start and time), cond_J and
+        kernel_mismatch the largest over them."""
+        gammas = (1.0,) if self.composition is None else self.composition.gammas
+        Phi, c, extra = None, 0.0, {"cond_J": 0.0, "kernel_mismatch": 0.0}
+        for gi in gammas:
+            hv = None if self.integ.open is None else \
+                [gi * h, t + c * h, *([] if self.u is None else self.u), *self.defaults]
+            Pi, g, p = self.map.map_jacobian(g, p, gi * h, hv=hv)
+            Phi = Pi if Phi is None else Pi @ Phi
+            extra = {k: max(v, self.map.last[k]) for k, v in extra.items()}
+            c += gi
+        self.extra = extra
+        return Phi, g, p
 
 
 class _Rkmk:
@@ -215,23 +231,25 @@ def _positive(x, name):
 
 def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None, steps=None,
               backend="c", cache_dir=None, order_horizon=None, n_states=4,
-              controls=None) -> dict:
+              controls=None, compose=None, parameters=None) -> dict:
     """Run every check on the model file ``path``; returns the report (see module doc).
     ``controls``: the inputs u of a model with inputs (hpgen.model.controls.ControlSpec;
-    default the scene's u, else u = 0)."""
+    default the scene's u, else u = 0); ``compose``: a composition of the compiled step
+    (hpgen.tableaus.composition; default the model's integrator.compose); ``parameters``:
+    new values of the file's parameters ({"N": 3}: a family's body count), as compile's."""
     t_start = time.perf_counter()
     if scheme not in SCHEMES:
         raise ModelError(f"expected one of {', '.join(SCHEMES)}, got {scheme!r}",
                          field="option scheme")
-    model = _load(path)
+    model = _load(path, parameters)
     sc = model.scene
     if sc is None:
         raise ModelError("hpgen check needs the model's scene (initial state)", file=str(path),
                          field="scene")
-    if getattr(model, "constraints", ()):
-        raise ModelError("hpgen check does not handle constraints: yet (its reference solves "
-                         "the unconstrained equations); see docs/numerics.md sec. 14",
-                         file=str(path), field="constraints")
+    constrained = bool(getattr(model, "constraints", ()))
+    if scheme != "hpgen" and (constrained or compose is not None):
+        raise ModelError("the rkmk-rk4 scheme of hpgen check runs unconstrained, uncomposed "
+                         "models only", file=str(path), field="option scheme")
     if model.open_system and scheme != "hpgen":
         raise ModelError("the rkmk-rk4 scheme of hpgen check runs closed models only (no "
                          "forces, inputs, runtime parameters or t)", file=str(path),
@@ -245,8 +263,12 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     g0 = np.array(sc.g0, dtype=float)
     mu0 = (np.array(sc.mu0, dtype=float) if sc.mu0 is not None
            else eq.legendre(g0, np.array(sc.xi0, dtype=float)))
-    sch = (_Hpgen(path, model, tableau, tau, rkmk, backend, cache_dir) if scheme == "hpgen"
-           else _Rkmk(model, eq))
+    sch = (_Hpgen(path, model, tableau, tau, rkmk, backend, cache_dir, compose, parameters)
+           if scheme == "hpgen" else _Rkmk(model, eq))
+    manifold = None
+    if constrained:
+        from .constrained import ManifoldCheck
+        manifold = ManifoldCheck(model)
 
     # observed order against DOP853
     T = _positive(min(1.0, steps * h) if order_horizon is None else order_horizon,
@@ -261,18 +283,39 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     def u_of(k, N):
         return None if U is None else (U[0] if len(U) == 1 else
                                        np.repeat(U, 2 ** k, axis=0)[:N])
-    gT, muT = (a[0] for a in eq.reference(g0, mu0, [T], rtol=REFERENCE_RTOL, u_rows=U,
-                                          u_h=h))
-
-    def error_at(k):            # error at T of the run with step h / 2^k
+    def final(k):               # the state at T of the run with step h / 2^k
         N = n_o * 2 ** k
         g, mu = sch.simulate(g0, mu0, h / 2 ** k, N, every=N, u=u_of(k, N))
-        return float(max(np.abs(g[-1] - gT).max(), np.abs(mu[-1] - muT).max()))
+        return g[-1], mu[-1]
+
+    if constrained:
+        # no independent reference of the constrained equations: the differences of
+        # successive halvings (self-convergence), |x(h / 2^k) - x(h / 2^(k+1))| ~ C h^p
+        finals: dict = {}
+
+        def error_at(k):
+            for j in (k, k + 1):
+                if j not in finals:
+                    finals[j] = final(j)
+            (ga, ma), (gb, mb) = finals[k], finals[k + 1]
+            return float(max(np.abs(ga - gb).max(), np.abs(ma - mb).max()))
+        reference = "self-convergence: |x(h) - x(h/2)| at T (no constrained reference)"
+    else:
+        gT, muT = (a[0] for a in eq.reference(g0, mu0, [T], rtol=REFERENCE_RTOL, u_rows=U,
+                                              u_h=h))
+        reference = f"DOP853 rtol=atol={REFERENCE_RTOL:g}"
+
+        def error_at(k):            # error at T of the run with step h / 2^k
+            g, mu = final(k)
+            return float(max(np.abs(g - gT).max(), np.abs(mu - muT).max()))
 
     expected, why = expected_order(model.left_invariant, sch.order,
                                    sch.info.get("rkmk") if scheme == "hpgen" else None)
     if getattr(sch, "splitting", False):
         expected, why = sch.order, "the splitting scheme's composition order"
+    comp = getattr(sch, "composition", None)
+    if comp is not None and comp.order > expected:
+        expected, why = comp.order, f"the composition {comp.name} of a symmetric step"
     errs = [error_at(k) for k in range(3)]
     hs, observed = [h, h / 2, h / 4], _slopes(errs)
     refined = _refine(errs, expected, error_at, h, n_o)
@@ -303,6 +346,13 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     slope = float(np.polyfit(t, dE, 1)[0]) if len(t) > 1 else 0.0
     dm = np.abs(dm).max(axis=0)
     gdef = max(eq.defect(gk) for gk in g)
+    cons = None
+    if manifold is not None:
+        res = np.array([manifold.residuals(gk, eq.velocity(gk, mk, t=tk) if model.open_system
+                                           else eq.velocity(gk, mk))
+                        for gk, mk, tk in zip(g, mu, t)])
+        cons = {"position": float(res[:, 0].max()), "velocity": float(res[:, 1].max()),
+                "tolerance": CONSTRAINT_TOL, "count": manifold.m}
 
     # symplecticity defect at a few states of the run (a forced flow is not symplectic)
     states = []
@@ -310,8 +360,11 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
         idx = sorted(set(np.linspace(0, len(g) - 1, max(1, n_states)).round().astype(int)))
         ad = ad_matrices(model.group)
         for i in idx:
+            on_m = None if manifold is None else manifold.tangent_basis(
+                g[i], mu[i], eq.velocity(g[i], mu[i], t=float(t[i])) if model.open_system
+                else eq.velocity(g[i], mu[i]), t=float(t[i]))
             rec = defect_along(lambda G, P, H: sch.map_jacobian(G, P, H, t=float(t[i])), ad,
-                               [(g[i], mu[i])], h)[0]
+                               [(g[i], mu[i])], h, tangent=on_m)[0]
             rec.update(t=float(t[i]), **sch.extra)
             states.append(rec)
     sym_abs = max((s["absolute"] for s in states), default=None)
@@ -321,14 +374,17 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     checks = {"symplectic": None if model.forced else bool(sym_rel <= tol),
               "group": bool(gdef <= GROUP_TOL),
               "momentum": (bool(dm.max() <= MOMENTUM_RTOL * max(1.0, np.abs(m[0]).max()))
-                           if model.left_invariant and not model.forced else None)}
+                           if model.left_invariant and not model.forced and not constrained
+                           else None),
+              "constraints": None if cons is None else bool(
+                  max(cons["position"], cons["velocity"]) <= CONSTRAINT_TOL)}
     return {
         "hpgen_version": __version__, "model": model.name, "file": str(path),
         "group": model.group.name, "scheme": scheme, "integrator": sch.info,
         "h": h, "steps": steps, "duration": steps * h,
         "order": {"expected": expected, "why": why, "horizon": T, "h": hs, "error": errs,
                   "observed": observed, "floor": bool(errs[-1] < FLOOR),
-                  "reference": f"DOP853 rtol=atol={REFERENCE_RTOL:g}", **refined},
+                  "reference": reference, **refined},
         "energy": {"initial": float(E[0]), "max_error": float(np.abs(dE).max()),
                    "relative_max_error": float(np.abs(dE).max() / max(abs(E[0]), 1e-300)),
                    "drift_slope": slope, "balance": bool(model.forced)},
@@ -337,7 +393,8 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
                      "balance": bool(model.forced and model.left_invariant)},
         "group_defect": {"max": float(gdef)},
         "symplectic": {"defect": sym_abs, "relative": sym_rel, "tolerance": tol,
-                       "states": states, "form": FORM},
+                       "states": states, "form": FORM, "on_manifold": constrained},
+        "constraints": cons,
         "checks": checks,
         "inputs": None if not model.inputs else {
             "names": list(model.inputs),
