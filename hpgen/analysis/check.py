@@ -44,9 +44,21 @@ Figures (the keys of the JSON report):
   the scheme's order: informative, not a pass criterion); ``symplectic`` has no states
   (None: a forced flow is not symplectic). A model that is open without forces (t,
   runtime parameters) is checked as a closed one, the step vector at the state's time.
+- ``constraints`` (None unconstrained; hpgen.analysis.constrained): {position, velocity,
+  tolerance, count}: max_k |phi(g_k)| and max_k |Phi(g_k) xi_k| over the run of ``count``
+  constraint rows. A constrained model's order is measured by self-convergence (the
+  differences of successive halvings; ``order.reference`` says so), its symplecticity
+  defect on the tangent space of the constraint manifold (``symplectic.on_manifold``), its
+  momentum map not checked (constraints break the symmetry in general).
+- ``symmetry`` (None unless the step is composed, ``compose`` or integrator.compose):
+  {defect, tolerance}: the base step's max |S(-h_i) S(h_i) x - x| / (1 + |p|) over the
+  substep sizes h_i at the symplecticity states (hpgen.analysis.check_schemes); the
+  composed step's Jacobian is the product of the substeps', its expected order the
+  composition's.
 - ``inputs``: None without control inputs, else {names, kind (constant, expressions, table,
   zero), source (scene.u, --u, the default u = 0)}.
-- ``checks``: {symplectic, group, momentum (None unless l is left-invariant)} booleans;
+- ``checks``: {symplectic, group, momentum (None unless l is left-invariant), symmetric
+  (a composed step), constraints (a constrained model)} booleans;
   ``passed``: all of them that apply. Also model, file, group, scheme, integrator, h,
   steps, duration, hpgen_version, seconds.
 
@@ -61,6 +73,9 @@ Pass criteria and why:
   h = 0.1: 2.31e-6 relative on the heavy top).
 - group: max defect <= GROUP_TOL = 1e-10 (the runtime's bound for an initial g).
 - momentum (left-invariant l only): max change <= MOMENTUM_RTOL (1e-10) * max(1, |m_0|).
+- constraints: both residuals <= CONSTRAINT_TOL (1e-12); symmetric: defect <= SYMMETRY_TOL
+  (1e-12), round-off of two Newton solves at 1e-14 (a non-symmetric base, e.g. Stormer-Verlet
+  with the exact RKMK constraint on the heavy top, leaves O(h^4): 4e-6 at h = 0.05).
 Exit status of the CLI: 0 all pass, 3 a check failed (2 bad input, 1 other failures).
 """
 from __future__ import annotations
@@ -72,10 +87,10 @@ import numpy as np
 
 from .. import __version__
 from ..errors import ModelError
-from ..schemes import is_splitting
-from .rkmk import RKMK4, ContinuousEquations
+from .check_schemes import SYMMETRY_TOL, _Hpgen, _load, _Rkmk
 from .constrained import CONSTRAINT_TOL
-from .symplectic import GeneratedMap, ad_matrices, defect_along
+from .rkmk import ContinuousEquations
+from .symplectic import ad_matrices, defect_along
 
 SYMPLECTIC_RTOL = 1e-12
 GROUP_TOL = 1e-10
@@ -89,78 +104,6 @@ ORDER_TOL = 0.25
 REFINE_MAX_STEPS = 2 ** 17
 SCHEMES = ("hpgen", "rkmk-rk4")
 FORM = "omega((eta_a,nu_a),(eta_b,nu_b)) = <nu_b,eta_a> - <nu_a,eta_b> + <p,[eta_a,eta_b]>"
-
-
-def _load(path, parameters=None):
-    from ..api import read_model_text
-    from ..model import load_model_text
-    from ..model.overrides import apply_overrides
-    text = apply_overrides(read_model_text(path), dict(parameters or ()), file=str(path))
-    return load_model_text(text, filename=str(path))
-
-
-class _Hpgen:
-    """The compiled scheme: simulate with the runtime, Jacobian by implicit differentiation."""
-
-    def __init__(self, path, model, tableau, tau, rkmk, backend, cache_dir, compose=None,
-                 parameters=None):
-        from ..api import build
-        # the compile's own result: its resolved options and DiscreteStep (derived once,
-        # on a cache hit only when asked for here)
-        compiled = build(path, tableau=tableau, tau=tau, rkmk=rkmk, backend=backend,
-                         cache_dir=cache_dir, compose=compose, parameters=parameters)
-        self.integ = compiled.load()
-        d = compiled.derivation
-        tab, self.tau, self.rkmk = d.tableau, d.tau, d.rkmk
-        self.map = GeneratedMap(self.integ, d.step, model.group)
-        self.order = tab.order if self.rkmk == "exact" else min(tab.order, 2)
-        self.splitting = is_splitting(tab)
-        if self.splitting:            # explicit composition: its own order, no chart, no RKMK
-            self.order = tab.order
-        #: the composition in effect (--compose, else the model's integrator.compose)
-        self.composition = self.integ.composition
-        self.info = {"tableau": tab.name, "tau": self.tau, "rkmk": self.rkmk,
-                     "backend": backend, "module": self.integ.meta.get("module"),
-                     "compose": None if self.composition is None else self.composition.name}
-        op = self.integ.open          # an open model: the file's params, t0 = 0
-        self.u = None if op is None or not op["inputs"] else np.zeros(len(op["inputs"]))
-        self.defaults = [] if op is None else [float(v) for v in op["defaults"]]
-
-    def simulate(self, g0, mu0, h, steps, every=1, u=None):
-        u = self.u if u is None else u
-        tr = self.integ.simulate(g0=g0, mu0=mu0, h=h, steps=steps, every=every, u=u)
-        return tr.g, tr.mu
-
-    def map_jacobian(self, g, p, h, t=0.0):
-        """(Phi', g1, p1) of one step; a composed step's Phi' = Phi'_s ... Phi'_1 over its
-        substeps S(gamma_i h) (each at its own start and time), cond_J and
-        kernel_mismatch the largest over them."""
-        gammas = (1.0,) if self.composition is None else self.composition.gammas
-        Phi, c, extra = None, 0.0, {"cond_J": 0.0, "kernel_mismatch": 0.0}
-        for gi in gammas:
-            hv = None if self.integ.open is None else \
-                [gi * h, t + c * h, *([] if self.u is None else self.u), *self.defaults]
-            Pi, g, p = self.map.map_jacobian(g, p, gi * h, hv=hv)
-            Phi = Pi if Phi is None else Pi @ Phi
-            extra = {k: max(v, self.map.last[k]) for k, v in extra.items()}
-            c += gi
-        self.extra = extra
-        return Phi, g, p
-
-
-class _Rkmk:
-    def __init__(self, model, eq):
-        self.rk = RKMK4(model, eq)
-        self.order = RKMK4.order
-        self.info = {"name": "rkmk-rk4", "tau": "exp"}
-        self.extra = {"cond_J": 1.0, "kernel_mismatch": 0.0}
-
-    def simulate(self, g0, mu0, h, steps, every=1, u=None):
-        g, mu = self.rk.simulate(g0, mu0, h, steps)
-        return g[::every], mu[::every]
-
-    def map_jacobian(self, g, p, h, t=0.0):
-        return self.rk.map_jacobian(g, p, h)
 
 
 def expected_order(left_invariant: bool, scheme_order: int, rkmk) -> tuple[int, str]:
@@ -367,6 +310,13 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
                                [(g[i], mu[i])], h, tangent=on_m)[0]
             rec.update(t=float(t[i]), **sch.extra)
             states.append(rec)
+    # a composed step: its base step's symmetry S(-h) o S(h) = id, which the composition's
+    # order needs, at the same states
+    symmetry = None
+    if getattr(sch, "composition", None) is not None:
+        idx = sorted(set(np.linspace(0, len(g) - 1, max(1, n_states)).round().astype(int)))
+        symmetry = {"defect": max(sch.symmetry_defect(g[i], mu[i], h, t=float(t[i]))
+                                  for i in idx), "tolerance": SYMMETRY_TOL}
     sym_abs = max((s["absolute"] for s in states), default=None)
     sym_rel = max((s["relative"] for s in states), default=None)
     tol = SYMPLECTIC_RTOL * max(1.0, max((s["cond_J"] for s in states), default=0) / 100.0)
@@ -376,6 +326,8 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
               "momentum": (bool(dm.max() <= MOMENTUM_RTOL * max(1.0, np.abs(m[0]).max()))
                            if model.left_invariant and not model.forced and not constrained
                            else None),
+              "symmetric": None if symmetry is None else bool(
+                  symmetry["defect"] <= SYMMETRY_TOL),
               "constraints": None if cons is None else bool(
                   max(cons["position"], cons["velocity"]) <= CONSTRAINT_TOL)}
     return {
@@ -395,6 +347,7 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
         "symplectic": {"defect": sym_abs, "relative": sym_rel, "tolerance": tol,
                        "states": states, "form": FORM, "on_manifold": constrained},
         "constraints": cons,
+        "symmetry": symmetry,
         "checks": checks,
         "inputs": None if not model.inputs else {
             "names": list(model.inputs),

@@ -75,6 +75,11 @@ def format_report(r: dict) -> str:
          f"at {len(s['states'])} states"
          + (" (on the constraint manifold's tangent space)" if s.get("on_manifold") else "")),
     ]
+    y = r.get("symmetry")
+    if y is not None:
+        rows.append(("base step symmetry", f"{y['defect']:.1e}",
+                     f"{_verdict(c['symmetric'])}: max |S(-h) S(h) x - x| / (1 + |p|) "
+                     f"<= {y['tolerance']:g} (the composition's order needs it)"))
     k = r.get("constraints")
     if k is not None:
         rows.append(("constraint residual", f"{k['position']:.1e} {k['velocity']:.1e}",
