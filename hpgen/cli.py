@@ -9,14 +9,13 @@ and kept for ``--resume``). Errors are one line on stderr, never a traceback.
 from __future__ import annotations
 
 import argparse
-import shlex
-import signal
 import os
 import sys
 import time
 from pathlib import Path
 
 from . import __version__
+from .cli_interrupts import failed, interrupted, resume_command, sigterm_raises
 from .errors import ArgumentError, ConvergenceError, HpgenError, ModelError
 
 
@@ -84,21 +83,8 @@ def _parser():
                    help="do not write the PNGs of the run next to --out (see hpgen plot)")
     _add_u_options(r)
     sub.add_parser("list", help="groups, tableaus and chart maps")
-    k = sub.add_parser("check", help="order, energy, momentum, group, symplecticity checks",
-                       description="observed order, energy, momentum map, group and "
-                       "symplecticity defects of an integrator on the model's scene",
-                       epilog="exit status 3 when a structure check fails")
-    _add_options(k)
-    k.add_argument("--scheme", choices=("hpgen", "rkmk-rk4"), default="hpgen",
-                   help="the compiled scheme (default) or the non-variational RKMK-RK4")
-    k.add_argument("--h", type=float, help="override scene.h")
-    k.add_argument("--steps", type=int, help="override scene.steps")
-    k.add_argument("--order-horizon", type=float,
-                   help="time span of the order runs (default min(1, steps h))")
-    k.add_argument("--states", type=int, default=4,
-                   help="states along the run where the symplecticity defect is computed")
-    k.add_argument("--json", help="also write the figures to this JSON file")
-    _add_u_options(k)
+    from .analysis.cli import add_parser as _add_check_parser
+    _add_check_parser(sub, _add_options, _add_compose, _add_set, _add_u_options)
     from .bench.cli import add_parser as _add_bench_parser, add_recommend_parser
     _add_bench_parser(sub)
     add_recommend_parser(sub)
@@ -214,14 +200,14 @@ def cmd_run(args) -> int:
         directions = conserved_directions(model)
     t0 = time.perf_counter()
     try:
-        with _sigterm_raises():
+        with sigterm_raises():
             path, summary = record_to_npz(integ, out, g0=sc.g0, h=h, steps=steps, xi0=sc.xi0,
                                           mu0=sc.mu0, every=sc.every, chunk=args.chunk,
-                                          resume=args.resume, resume_hint=_resume_command(args),
+                                          resume=args.resume, resume_hint=resume_command(args),
                                           directions=directions, u=u,
                                           progress=False if args.no_progress else None)
     except ConvergenceError as e:
-        return _failed(e, "samples")
+        return failed(e, "samples")
     wall = time.perf_counter() - t0
     for old in summary["removed"]:
         print(f"removed {old}/: the memory maps of a run of {out} killed under an older hpgen "
@@ -290,73 +276,6 @@ def _momentum_line(model, change, directions, conserved_change) -> str:
                         for q, v in zip(describe(directions), conserved_change)))
 
 
-def _failed(e, what: str) -> int:
-    """A failed step: its one line, with where the samples before it were saved."""
-    saved = getattr(e, "saved", None)
-    note = (f"; the {saved[1]} {what} before the failure were saved to {saved[0]} with "
-            "partial=True" if saved and saved[1] else "")
-    print(f"hpgen: error: {e}{note}", file=sys.stderr)
-    return 1
-
-
-class _Terminated(KeyboardInterrupt):
-    """SIGTERM (what ``timeout`` and job schedulers send), raised like SIGINT's
-    KeyboardInterrupt so that ``hpgen run`` saves its completed chunks."""
-    signum = signal.SIGTERM
-
-
-class _sigterm_raises:
-    """Within: the first SIGTERM raises _Terminated, later ones are ignored (the save in
-    progress completes); the previous handler is restored on exit. Main thread only."""
-
-    def __enter__(self):
-        import threading
-        self.old = None
-        if threading.current_thread() is threading.main_thread():
-            self.old = signal.signal(signal.SIGTERM, self._raise)
-        return self
-
-    def __exit__(self, *exc):
-        if self.old is not None:
-            signal.signal(signal.SIGTERM, self.old)
-        return False
-
-    @staticmethod
-    def _raise(signum, frame):
-        signal.signal(signal.SIGTERM, signal.SIG_IGN)
-        raise _Terminated()
-
-
-def _resume_command(args) -> str:
-    argv = list(getattr(args, "argv", None) or [])
-    return shlex.join(["hpgen", *argv, *([] if "--resume" in argv else ["--resume"])])
-
-
-def _interrupted(e) -> int:
-    """One line for an interrupted command: what was saved and how to resume; 128 + signal."""
-    signum = getattr(e, "signum", signal.SIGINT)
-    line = f"hpgen: interrupted by {signal.Signals(signum).name}"
-    saved = getattr(e, "saved", None)
-    if saved is not None:
-        path, samples, k, parts = saved
-        if path is None:
-            line += "; no chunk had completed, nothing was saved"
-        else:
-            line += (f" after {k} steps; the {samples} samples of the completed chunks were "
-                     f"saved to {path} with partial=True, and kept in {parts}/ for "
-                     f"--resume: {_resume_hint(parts)}")
-    print(line, file=sys.stderr)
-    return 128 + signum
-
-
-def _resume_hint(parts) -> str:
-    import json
-    try:
-        return json.loads((Path(parts) / "manifest.json").read_text())["resume"]
-    except (OSError, ValueError, KeyError):
-        return "run the same command with --resume"
-
-
 def _run_sections(integ, model, sc, h, steps, out, args, u=None) -> int:
     """``hpgen run`` of a scene with a ``section``: only the crossings are kept (t, g, mu,
     step; see hpgen.runtime.trajectory.SectionCrossings), saved like a trajectory."""
@@ -369,7 +288,7 @@ def _run_sections(integ, model, sc, h, steps, out, args, u=None) -> int:
     t0 = time.perf_counter()
     path = npz_path(out)
     try:
-        with _sigterm_raises():
+        with sigterm_raises():
             cr = integ.sections(g0=sc.g0, h=h, steps=steps, xi0=sc.xi0, mu0=sc.mu0,
                                 chunk=args.chunk, every_t=sc.section_every_t, u=u)
     except ConvergenceError as e:
@@ -378,7 +297,7 @@ def _run_sections(integ, model, sc, h, steps, out, args, u=None) -> int:
             raise
         save(cr, e)
         e.saved = (path, len(cr))
-        return _failed(e, "section crossings")
+        return failed(e, "section crossings")
     wall = time.perf_counter() - t0
     save(cr, None)
     print(f"{model.name}: {steps} steps of h = {h:g} in {wall:.3f} s "
@@ -388,24 +307,6 @@ def _run_sections(integ, model, sc, h, steps, out, args, u=None) -> int:
           + f" -> {path}")
     _plot_run(path, args)
     return 0
-
-
-def cmd_check(args) -> int:
-    """``hpgen check``: print the table (hpgen.analysis.check); exit 3 if a check fails."""
-    from .analysis.check import run_check
-    from .analysis.check_report import format_report, write_json
-    from .model.controls import controls_for
-    model = _load_model(args.model)
-    controls = controls_for(model, args.u, args.u_interpolation, args.model) \
-        if model.inputs or args.u else None
-    report = run_check(args.model, scheme=args.scheme, tableau=args.tableau, tau=args.tau,
-                       rkmk=args.rkmk, h=args.h, steps=args.steps, backend=args.backend,
-                       cache_dir=args.cache_dir, order_horizon=args.order_horizon,
-                       n_states=args.states, controls=controls)
-    print(format_report(report))
-    if args.json:
-        print(f"  figures -> {write_json(report, args.json)}")
-    return 0 if report["passed"] else 3
 
 
 def cmd_list(args) -> int:
@@ -449,11 +350,14 @@ def main(argv=None) -> int:
         if args.command == "recommend":
             from .bench.recommend import cmd_recommend
             return cmd_recommend(args)
+        if args.command == "check":
+            from .analysis.cli import cmd_check
+            return cmd_check(args, _load_model, _overrides(args))
         if args.command == "sweep":
             from .ensemble.cli import cmd_sweep
             return cmd_sweep(args, _options)
         return {"compile": cmd_compile, "run": cmd_run, "list": cmd_list,
-                "check": cmd_check, "plot": cmd_plot}[args.command](args)
+                "plot": cmd_plot}[args.command](args)
     except (ModelError, ArgumentError) as e:
         print(f"hpgen: error: {e}", file=sys.stderr)
         return 2
@@ -461,7 +365,7 @@ def main(argv=None) -> int:
         print(f"hpgen: error: {e}", file=sys.stderr)
         return 1
     except KeyboardInterrupt as e:
-        return _interrupted(e)
+        return interrupted(e)
     except BrokenPipeError:
         # the reader of stdout went away (hpgen list | head): stop quietly, as cat does
         devnull = os.open(os.devnull, os.O_WRONLY)

@@ -44,9 +44,21 @@ Figures (the keys of the JSON report):
   the scheme's order: informative, not a pass criterion); ``symplectic`` has no states
   (None: a forced flow is not symplectic). A model that is open without forces (t,
   runtime parameters) is checked as a closed one, the step vector at the state's time.
+- ``constraints`` (None unconstrained; hpgen.analysis.constrained): {position, velocity,
+  tolerance, count}: max_k |phi(g_k)| and max_k |Phi(g_k) xi_k| over the run of ``count``
+  constraint rows. A constrained model's order is measured by self-convergence (the
+  differences of successive halvings; ``order.reference`` says so), its symplecticity
+  defect on the tangent space of the constraint manifold (``symplectic.on_manifold``), its
+  momentum map not checked (constraints break the symmetry in general).
+- ``symmetry`` (None unless the step is composed, ``compose`` or integrator.compose):
+  {defect, tolerance}: the base step's max |S(-h_i) S(h_i) x - x| / (1 + |p|) over the
+  substep sizes h_i at the symplecticity states (hpgen.analysis.check_schemes); the
+  composed step's Jacobian is the product of the substeps', its expected order the
+  composition's.
 - ``inputs``: None without control inputs, else {names, kind (constant, expressions, table,
   zero), source (scene.u, --u, the default u = 0)}.
-- ``checks``: {symplectic, group, momentum (None unless l is left-invariant)} booleans;
+- ``checks``: {symplectic, group, momentum (None unless l is left-invariant), symmetric
+  (a composed step), constraints (a constrained model)} booleans;
   ``passed``: all of them that apply. Also model, file, group, scheme, integrator, h,
   steps, duration, hpgen_version, seconds.
 
@@ -61,6 +73,9 @@ Pass criteria and why:
   h = 0.1: 2.31e-6 relative on the heavy top).
 - group: max defect <= GROUP_TOL = 1e-10 (the runtime's bound for an initial g).
 - momentum (left-invariant l only): max change <= MOMENTUM_RTOL (1e-10) * max(1, |m_0|).
+- constraints: both residuals <= CONSTRAINT_TOL (1e-12); symmetric: defect <= SYMMETRY_TOL
+  (1e-12), round-off of two Newton solves at 1e-14 (a non-symmetric base, e.g. Stormer-Verlet
+  with the exact RKMK constraint on the heavy top, leaves O(h^4): 4e-6 at h = 0.05).
 Exit status of the CLI: 0 all pass, 3 a check failed (2 bad input, 1 other failures).
 """
 from __future__ import annotations
@@ -72,9 +87,10 @@ import numpy as np
 
 from .. import __version__
 from ..errors import ModelError
-from ..schemes import is_splitting
-from .rkmk import RKMK4, ContinuousEquations
-from .symplectic import GeneratedMap, ad_matrices, defect_along
+from .check_schemes import SYMMETRY_TOL, _Hpgen, _load, _Rkmk
+from .constrained import CONSTRAINT_TOL
+from .rkmk import ContinuousEquations
+from .symplectic import ad_matrices, defect_along
 
 SYMPLECTIC_RTOL = 1e-12
 GROUP_TOL = 1e-10
@@ -88,63 +104,6 @@ ORDER_TOL = 0.25
 REFINE_MAX_STEPS = 2 ** 17
 SCHEMES = ("hpgen", "rkmk-rk4")
 FORM = "omega((eta_a,nu_a),(eta_b,nu_b)) = <nu_b,eta_a> - <nu_a,eta_b> + <p,[eta_a,eta_b]>"
-
-
-def _load(path):
-    from ..api import read_model_text
-    from ..model import load_model_text
-    return load_model_text(read_model_text(path), filename=str(path))
-
-
-class _Hpgen:
-    """The compiled scheme: simulate with the runtime, Jacobian by implicit differentiation."""
-
-    def __init__(self, path, model, tableau, tau, rkmk, backend, cache_dir):
-        from ..api import build
-        # the compile's own result: its resolved options and DiscreteStep (derived once,
-        # on a cache hit only when asked for here)
-        compiled = build(path, tableau=tableau, tau=tau, rkmk=rkmk, backend=backend,
-                         cache_dir=cache_dir)
-        self.integ = compiled.load()
-        d = compiled.derivation
-        tab, self.tau, self.rkmk = d.tableau, d.tau, d.rkmk
-        self.map = GeneratedMap(self.integ, d.step, model.group)
-        self.order = tab.order if self.rkmk == "exact" else min(tab.order, 2)
-        self.splitting = is_splitting(tab)
-        if self.splitting:            # explicit composition: its own order, no chart, no RKMK
-            self.order = tab.order
-        self.info = {"tableau": tab.name, "tau": self.tau, "rkmk": self.rkmk,
-                     "backend": backend, "module": self.integ.meta.get("module")}
-        op = self.integ.open          # an open model: the file's params, t0 = 0
-        self.u = None if op is None or not op["inputs"] else np.zeros(len(op["inputs"]))
-        self.defaults = [] if op is None else [float(v) for v in op["defaults"]]
-
-    def simulate(self, g0, mu0, h, steps, every=1, u=None):
-        u = self.u if u is None else u
-        tr = self.integ.simulate(g0=g0, mu0=mu0, h=h, steps=steps, every=every, u=u)
-        return tr.g, tr.mu
-
-    def map_jacobian(self, g, p, h, t=0.0):
-        hv = None if self.integ.open is None else \
-            [h, t, *([] if self.u is None else self.u), *self.defaults]
-        out = self.map.map_jacobian(g, p, h, hv=hv)
-        self.extra = {k: self.map.last[k] for k in ("cond_J", "kernel_mismatch")}
-        return out
-
-
-class _Rkmk:
-    def __init__(self, model, eq):
-        self.rk = RKMK4(model, eq)
-        self.order = RKMK4.order
-        self.info = {"name": "rkmk-rk4", "tau": "exp"}
-        self.extra = {"cond_J": 1.0, "kernel_mismatch": 0.0}
-
-    def simulate(self, g0, mu0, h, steps, every=1, u=None):
-        g, mu = self.rk.simulate(g0, mu0, h, steps)
-        return g[::every], mu[::every]
-
-    def map_jacobian(self, g, p, h, t=0.0):
-        return self.rk.map_jacobian(g, p, h)
 
 
 def expected_order(left_invariant: bool, scheme_order: int, rkmk) -> tuple[int, str]:
@@ -215,23 +174,25 @@ def _positive(x, name):
 
 def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None, steps=None,
               backend="c", cache_dir=None, order_horizon=None, n_states=4,
-              controls=None) -> dict:
+              controls=None, compose=None, parameters=None) -> dict:
     """Run every check on the model file ``path``; returns the report (see module doc).
     ``controls``: the inputs u of a model with inputs (hpgen.model.controls.ControlSpec;
-    default the scene's u, else u = 0)."""
+    default the scene's u, else u = 0); ``compose``: a composition of the compiled step
+    (hpgen.tableaus.composition; default the model's integrator.compose); ``parameters``:
+    new values of the file's parameters ({"N": 3}: a family's body count), as compile's."""
     t_start = time.perf_counter()
     if scheme not in SCHEMES:
         raise ModelError(f"expected one of {', '.join(SCHEMES)}, got {scheme!r}",
                          field="option scheme")
-    model = _load(path)
+    model = _load(path, parameters)
     sc = model.scene
     if sc is None:
         raise ModelError("hpgen check needs the model's scene (initial state)", file=str(path),
                          field="scene")
-    if getattr(model, "constraints", ()):
-        raise ModelError("hpgen check does not handle constraints: yet (its reference solves "
-                         "the unconstrained equations); see docs/numerics.md sec. 14",
-                         file=str(path), field="constraints")
+    constrained = bool(getattr(model, "constraints", ()))
+    if scheme != "hpgen" and (constrained or compose is not None):
+        raise ModelError("the rkmk-rk4 scheme of hpgen check runs unconstrained, uncomposed "
+                         "models only", file=str(path), field="option scheme")
     if model.open_system and scheme != "hpgen":
         raise ModelError("the rkmk-rk4 scheme of hpgen check runs closed models only (no "
                          "forces, inputs, runtime parameters or t)", file=str(path),
@@ -245,8 +206,12 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     g0 = np.array(sc.g0, dtype=float)
     mu0 = (np.array(sc.mu0, dtype=float) if sc.mu0 is not None
            else eq.legendre(g0, np.array(sc.xi0, dtype=float)))
-    sch = (_Hpgen(path, model, tableau, tau, rkmk, backend, cache_dir) if scheme == "hpgen"
-           else _Rkmk(model, eq))
+    sch = (_Hpgen(path, model, tableau, tau, rkmk, backend, cache_dir, compose, parameters)
+           if scheme == "hpgen" else _Rkmk(model, eq))
+    manifold = None
+    if constrained:
+        from .constrained import ManifoldCheck
+        manifold = ManifoldCheck(model)
 
     # observed order against DOP853
     T = _positive(min(1.0, steps * h) if order_horizon is None else order_horizon,
@@ -261,18 +226,39 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     def u_of(k, N):
         return None if U is None else (U[0] if len(U) == 1 else
                                        np.repeat(U, 2 ** k, axis=0)[:N])
-    gT, muT = (a[0] for a in eq.reference(g0, mu0, [T], rtol=REFERENCE_RTOL, u_rows=U,
-                                          u_h=h))
-
-    def error_at(k):            # error at T of the run with step h / 2^k
+    def final(k):               # the state at T of the run with step h / 2^k
         N = n_o * 2 ** k
         g, mu = sch.simulate(g0, mu0, h / 2 ** k, N, every=N, u=u_of(k, N))
-        return float(max(np.abs(g[-1] - gT).max(), np.abs(mu[-1] - muT).max()))
+        return g[-1], mu[-1]
+
+    if constrained:
+        # no independent reference of the constrained equations: the differences of
+        # successive halvings (self-convergence), |x(h / 2^k) - x(h / 2^(k+1))| ~ C h^p
+        finals: dict = {}
+
+        def error_at(k):
+            for j in (k, k + 1):
+                if j not in finals:
+                    finals[j] = final(j)
+            (ga, ma), (gb, mb) = finals[k], finals[k + 1]
+            return float(max(np.abs(ga - gb).max(), np.abs(ma - mb).max()))
+        reference = "self-convergence: |x(h) - x(h/2)| at T (no constrained reference)"
+    else:
+        gT, muT = (a[0] for a in eq.reference(g0, mu0, [T], rtol=REFERENCE_RTOL, u_rows=U,
+                                              u_h=h))
+        reference = f"DOP853 rtol=atol={REFERENCE_RTOL:g}"
+
+        def error_at(k):            # error at T of the run with step h / 2^k
+            g, mu = final(k)
+            return float(max(np.abs(g - gT).max(), np.abs(mu - muT).max()))
 
     expected, why = expected_order(model.left_invariant, sch.order,
                                    sch.info.get("rkmk") if scheme == "hpgen" else None)
     if getattr(sch, "splitting", False):
         expected, why = sch.order, "the splitting scheme's composition order"
+    comp = getattr(sch, "composition", None)
+    if comp is not None and comp.order > expected:
+        expected, why = comp.order, f"the composition {comp.name} of a symmetric step"
     errs = [error_at(k) for k in range(3)]
     hs, observed = [h, h / 2, h / 4], _slopes(errs)
     refined = _refine(errs, expected, error_at, h, n_o)
@@ -303,6 +289,13 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     slope = float(np.polyfit(t, dE, 1)[0]) if len(t) > 1 else 0.0
     dm = np.abs(dm).max(axis=0)
     gdef = max(eq.defect(gk) for gk in g)
+    cons = None
+    if manifold is not None:
+        res = np.array([manifold.residuals(gk, eq.velocity(gk, mk, t=tk) if model.open_system
+                                           else eq.velocity(gk, mk))
+                        for gk, mk, tk in zip(g, mu, t)])
+        cons = {"position": float(res[:, 0].max()), "velocity": float(res[:, 1].max()),
+                "tolerance": CONSTRAINT_TOL, "count": manifold.m}
 
     # symplecticity defect at a few states of the run (a forced flow is not symplectic)
     states = []
@@ -310,10 +303,20 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
         idx = sorted(set(np.linspace(0, len(g) - 1, max(1, n_states)).round().astype(int)))
         ad = ad_matrices(model.group)
         for i in idx:
+            on_m = None if manifold is None else manifold.tangent_basis(
+                g[i], mu[i], eq.velocity(g[i], mu[i], t=float(t[i])) if model.open_system
+                else eq.velocity(g[i], mu[i]), t=float(t[i]))
             rec = defect_along(lambda G, P, H: sch.map_jacobian(G, P, H, t=float(t[i])), ad,
-                               [(g[i], mu[i])], h)[0]
+                               [(g[i], mu[i])], h, tangent=on_m)[0]
             rec.update(t=float(t[i]), **sch.extra)
             states.append(rec)
+    # a composed step: its base step's symmetry S(-h) o S(h) = id, which the composition's
+    # order needs, at the same states
+    symmetry = None
+    if getattr(sch, "composition", None) is not None:
+        idx = sorted(set(np.linspace(0, len(g) - 1, max(1, n_states)).round().astype(int)))
+        symmetry = {"defect": max(sch.symmetry_defect(g[i], mu[i], h, t=float(t[i]))
+                                  for i in idx), "tolerance": SYMMETRY_TOL}
     sym_abs = max((s["absolute"] for s in states), default=None)
     sym_rel = max((s["relative"] for s in states), default=None)
     tol = SYMPLECTIC_RTOL * max(1.0, max((s["cond_J"] for s in states), default=0) / 100.0)
@@ -321,14 +324,19 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     checks = {"symplectic": None if model.forced else bool(sym_rel <= tol),
               "group": bool(gdef <= GROUP_TOL),
               "momentum": (bool(dm.max() <= MOMENTUM_RTOL * max(1.0, np.abs(m[0]).max()))
-                           if model.left_invariant and not model.forced else None)}
+                           if model.left_invariant and not model.forced and not constrained
+                           else None),
+              "symmetric": None if symmetry is None else bool(
+                  symmetry["defect"] <= SYMMETRY_TOL),
+              "constraints": None if cons is None else bool(
+                  max(cons["position"], cons["velocity"]) <= CONSTRAINT_TOL)}
     return {
         "hpgen_version": __version__, "model": model.name, "file": str(path),
         "group": model.group.name, "scheme": scheme, "integrator": sch.info,
         "h": h, "steps": steps, "duration": steps * h,
         "order": {"expected": expected, "why": why, "horizon": T, "h": hs, "error": errs,
                   "observed": observed, "floor": bool(errs[-1] < FLOOR),
-                  "reference": f"DOP853 rtol=atol={REFERENCE_RTOL:g}", **refined},
+                  "reference": reference, **refined},
         "energy": {"initial": float(E[0]), "max_error": float(np.abs(dE).max()),
                    "relative_max_error": float(np.abs(dE).max() / max(abs(E[0]), 1e-300)),
                    "drift_slope": slope, "balance": bool(model.forced)},
@@ -337,7 +345,9 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
                      "balance": bool(model.forced and model.left_invariant)},
         "group_defect": {"max": float(gdef)},
         "symplectic": {"defect": sym_abs, "relative": sym_rel, "tolerance": tol,
-                       "states": states, "form": FORM},
+                       "states": states, "form": FORM, "on_manifold": constrained},
+        "constraints": cons,
+        "symmetry": symmetry,
         "checks": checks,
         "inputs": None if not model.inputs else {
             "names": list(model.inputs),

@@ -42,6 +42,7 @@ def format_report(r: dict) -> str:
     """The report as a plain-text table."""
     it = r["integrator"]
     name = (f"{it['tableau']}/{it['tau']}/{it['rkmk']} ({it['backend']})"
+            + (f" composed {it['compose']}" if it.get("compose") else "")
             if r["scheme"] == "hpgen" else "RKMK-RK4 (exp, explicit, not variational)")
     o, e, mo, s, c = r["order"], r["energy"], r["momentum"], r["symplectic"], r["checks"]
     fmt = " ".join
@@ -71,8 +72,19 @@ def format_report(r: dict) -> str:
         ("symplecticity defect", f"{s['defect']:.2e}",
          f"{_verdict(c['symplectic'])}: relative {s['relative']:.2e} "
          f"{'<=' if c['symplectic'] else '>'} {s['tolerance']:.1e} "
-         f"at {len(s['states'])} states"),
+         f"at {len(s['states'])} states"
+         + (" (on the constraint manifold's tangent space)" if s.get("on_manifold") else "")),
     ]
+    y = r.get("symmetry")
+    if y is not None:
+        rows.append(("base step symmetry", f"{y['defect']:.1e}",
+                     f"{_verdict(c['symmetric'])}: max |S(-h) S(h) x - x| / (1 + |p|) "
+                     f"<= {y['tolerance']:g} (the composition's order needs it)"))
+    k = r.get("constraints")
+    if k is not None:
+        rows.append(("constraint residual", f"{k['position']:.1e} {k['velocity']:.1e}",
+                     f"{_verdict(c['constraints'])} (max |phi|, max |Phi xi| over the run, "
+                     f"{k['count']} rows; <= {k['tolerance']:g})"))
     w0 = max(len(a) for a, _, _ in rows)
     w1 = max(len(b) for _, b, _ in rows)
     head = (f"hpgen check: {r['model']} ({r['group']}), {name}, h = {r['h']:g}, "

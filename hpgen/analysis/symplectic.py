@@ -157,13 +157,20 @@ class GeneratedMap:
         return Phi, g1, p1
 
 
-def defect_along(scheme_map, ad_mats, states, h):
+def defect_along(scheme_map, ad_mats, states, h, tangent=None):
     """Symplecticity defects of ``scheme_map(g, p, h) -> (Phi', g1, p1)`` at each (g, p) in
-    ``states``; a list of dicts with absolute, relative, jacobian_norm."""
+    ``states``; a list of dicts with absolute, relative, jacobian_norm. tangent: a basis
+    (columns) of the constraint manifold's tangent space at the state (one state), the
+    defect restricted to it (hpgen.analysis.constrained.manifold_defect)."""
     out = []
     for g, p in states:
         Phi, g1, p1 = scheme_map(g, p, h)
-        a, r = symplectic_defect(Phi, omega_matrix(ad_mats, p), omega_matrix(ad_mats, p1))
+        if tangent is not None:
+            from .constrained import manifold_defect
+            a, r = manifold_defect(Phi, tangent, omega_matrix(ad_mats, p),
+                                   omega_matrix(ad_mats, p1))
+        else:
+            a, r = symplectic_defect(Phi, omega_matrix(ad_mats, p), omega_matrix(ad_mats, p1))
         out.append({"absolute": a, "relative": r,
                     "jacobian_norm": float(np.linalg.norm(Phi, 2))})
     return out

@@ -126,6 +126,12 @@ class PythonBackend(_Backend):
         run.compose = self.compose
         return run
 
+    def run_step(self, run, h, opts, st, after=None):
+        """One step of ``run`` as ``advance`` takes it (loop._composed_step; full Newton at
+        step 0), with after(i, hv) called after each substep (hpgen.runtime.linearize)."""
+        hv, _, full = loop._loop_start(run, h, opts, "linearize", with_g=True)
+        return loop._composed_step(self._newton, run, hv, opts, full, st, True, after)
+
     def advance(self, run, h, steps, every, opts):
         """(steps done, g_rec (K, nn), p_rec (K, d), status); K records of this call."""
         done, recs, st = loop.advance(self._newton, run, h, steps, every, opts)

@@ -12,7 +12,6 @@ import numpy as np
 
 from .. import abi
 from ..errors import BuildError
-from . import newton
 from .backends import _Backend, _flat
 from .build import build_library
 from . import cbatch
@@ -68,8 +67,7 @@ class CBackend(_Backend):
                 ("hpgen_advance_record_batch", [P, LL, D, LL, LL, P, LL, P, P, P], LL),
                 ("hpgen_run_set_inputs", [P, D, P, LL, P], None),
                 ("hpgen_run_set_compose", [P, LL, P], ctypes.c_int),
-                ("hpgen_linearize", [LL, P, P, P, LL, LL, P, P, P, P, P, P] if self.open
-                 else [LL, P, P, D, P, P, P, P, P], LL)):
+                ("hpgen_linearize", [P, LL, P, P, D, LL, LL, P, P, P, P, P], LL)):
             if (self.open and name in closed_only) or (
                     not self.open and name == "hpgen_run_set_inputs"):
                 continue
@@ -309,34 +307,21 @@ class CBackend(_Backend):
             raise ValueError("hpgen_advance_record rejected its arguments")
         return int(done), rows[:n_rec.value], st.as_dict()
 
-    def linearize(self, gf, p, h, z0, opts):
-        """hpgen_linearize over the records gf (K+1, n*n), p (K+1, d) (hpgen.runtime.linearize):
-        (A (K, 2d, 2d), dev (K,), None or (code, iterations, residual), steps done)."""
-        K, s = len(gf) - 1, 2 * self.d
-        gf, p = np.array(gf, dtype=_F64, order="C"), np.array(p, dtype=_F64, order="C")
-        z = np.array(z0, dtype=np.float64)
-        A, dev = np.zeros((K, s, s)), np.zeros(K)
-        st = _Status()
-        done = int(self._lib.hpgen_linearize(K, _addr(gf), _addr(p), float(h), _addr(z),
-                                             ctypes.byref(_Options.of(opts)), _addr(A),
-                                             _addr(dev), ctypes.byref(st)))
-        err = None if st.code == newton.OK else (st.code, st.iterations, st.residual)
-        # C's column-major 2d x 2d blocks are row-major transposes
-        return A.transpose(0, 2, 1).copy(), dev, err, done
-
-    def linearize_open(self, gf, p, hv, cols, z0, opts):
-        """An open module's hpgen_linearize: hv (K, H) the step vectors, cols the step
-        vector's columns of B (a slice): (A (K, 2d, 2d), B (K, 2d, nc), dev (K,), None or
-        (code, iterations, residual), steps done)."""
+    def linearize(self, run, gf, p, h, cols, opts):
+        """hpgen_linearize: ``run`` (this backend's start at record 0) stepped along the
+        records gf (K+1, n*n), p (K+1, d) as the run steps (hpgen.runtime.linearize); cols
+        the step vector's columns of B (a slice; empty for a closed module):
+        (A (K, 2d, 2d), B (K, 2d, nc), dev (K,), status dict, steps done)."""
         K, s, nc = len(gf) - 1, 2 * self.d, cols.stop - cols.start
         gf, p = np.array(gf, dtype=_F64, order="C"), np.array(p, dtype=_F64, order="C")
-        hv = np.array(hv, dtype=_F64, order="C")
-        z = np.array(z0, dtype=np.float64)
         A, B, dev = np.zeros((K, s, s)), np.zeros((K, nc, s)), np.zeros(K)
         st = _Status()
-        done = int(self._lib.hpgen_linearize(K, _addr(gf), _addr(p), _addr(hv), cols.start,
-                                             nc, _addr(z), ctypes.byref(_Options.of(opts)),
-                                             _addr(A), _addr(B), _addr(dev),
-                                             ctypes.byref(st)))
-        err = None if st.code == newton.OK else (st.code, st.iterations, st.residual)
-        return A.transpose(0, 2, 1).copy(), B.transpose(0, 2, 1).copy(), dev, err, done
+        done = int(self._lib.hpgen_linearize(run, K, _addr(gf), _addr(p), float(h),
+                                             cols.start if self.open else 0, nc,
+                                             ctypes.byref(_Options.of(opts)), _addr(A),
+                                             _addr(B), _addr(dev), ctypes.byref(st)))
+        if st.code < 0:
+            raise ValueError("hpgen_linearize rejected its arguments")
+        # C's column-major 2d x 2d blocks are row-major transposes
+        return (A.transpose(0, 2, 1).copy(), B.transpose(0, 2, 1).copy(), dev, st.as_dict(),
+                done)

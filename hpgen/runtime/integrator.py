@@ -168,8 +168,7 @@ class Integrator:
         and t0 (default: the trajectory's first time) and returns (A, B), B (K, 2d, m) =
         d(eta_{k+1}, dp_{k+1}) / d u_k, or with wrt="params" P (K, 2d, n_runtime_params).
         A closed module takes none of u, params, t0, wrt."""
-        return _linearize.along(self.engine, traj, newton, u, params, t0, wrt,
-                                () if self.composition is None else self.composition.gammas)
+        return _linearize.along(self.engine, traj, newton, u, params, t0, wrt)
 
     def casadi_step(self):
         """casadi.Function step(g, p, h, z) -> (F, g1, p1) (an open module's:

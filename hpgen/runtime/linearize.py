@@ -15,13 +15,23 @@ How: at each step k the converged z_k solves F(z; g_k, p_k, h) = 0. The generate
 once; the implicit function theorem gives A = Ys - Yz J^{-1} Fs
 (``implicit_derivative``). No finite differences, no perturbed solves.
 
-z_k is not stored in a Trajectory: each step's z_k is recovered by Newton from (g_k, p_k)
-(the ``newton=`` settings; step 0 by full Newton from the guess kernel, step k > 0 from the
-predictor through z_{k-1}, z_{k-2}, ... in C, from z_{k-1} in Python; C's simplified Newton
-reuses J^{-1} at z_{k-1}, evaluated for the derivative anyway), and the step's output is
-compared with the next record (``RECORD_RTOL``): a trajectory of another module, step size or
-model is refused. The C backend runs the whole loop in ``hpgen_linearize`` (kernels.c); the
-Python backend runs it here on the module's kernels.py. The two agree to round-off.
+z_k is not stored in a Trajectory: it is recovered by taking the steps again exactly as the
+run took them: the backend's run is started at record 0 with simulate's first Newton start,
+inputs and composition, and step k is taken from record k by the run's own step (the
+predictor through the previous solutions, the same Newton settings ``newton=``, full Newton
+at step 0; a composed step's substeps with their own predictors). Records of a run with the
+same settings are then reproduced bit for bit (C backend; the Python backend to the bits of
+its run), so Newton does no more iterations than the run did, and each z_k is the run's
+solution. The step's output is compared with the next record (``RECORD_RTOL``): a trajectory
+of another module, step size or model is refused. The C backend runs the whole loop in
+``hpgen_linearize`` (hpgen_linearize.c), the Python backend here on the module's kernels.py
+(``_python_loop``). The two agree to round-off.
+
+A composed step Phi(h) = S(gamma_s h) o ... o S(gamma_1 h) (integrator.compose) is
+differentiated by the chain rule over its substeps, A = A_s ... A_1 and
+B = sum_i A_s ... A_(i+1) B_i, A_i and B_i the implicit derivatives of substep i at its own
+start, solution and step vector (an open substep at time t_k + (gamma_1 + ... +
+gamma_(i-1)) h with input u_k), in the same C call.
 
 Open modules (forces, inputs, runtime parameters or t; the step vector
 H = [h, t_k, u_k, params], hpgen.runtime.inputs):
@@ -33,10 +43,7 @@ H = [h, t_k, u_k, params], hpgen.runtime.inputs):
 
 from the open kernel's partials in the step vector (FH = dF/dH, YH = dY/dH):
 B = YH_u - Yz J^{-1} FH_u, P = YH_par - Yz J^{-1} FH_par. u, params and t0 are simulate's
-(u required for a model with inputs; t0 defaults to the trajectory's first time). The C
-backend runs the loop in the open module's ``hpgen_linearize`` (the step vectors of all
-steps passed as rows), the Python backend here (step k by full Newton from step k-1's
-solution).
+(u required for a model with inputs; t0 defaults to the trajectory's first time).
 
 The functions take the module's run engine (hpgen.runtime.engine.Engine: its kernels,
 backend, state maps and meta), as Integrator.linearize passes it. Runtime path only: numpy
@@ -51,80 +58,97 @@ from ..errors import ArgumentError
 from .args import _error
 
 #: the step recomputed from record k must reproduce record k+1 to this relative accuracy
-#: (max-norm, relative to 1 + max|state|). simulate's own steps (simplified Newton, predictor
-#: starts) and full Newton here agree to the Newton tolerance, ~1e-14; another scheme, step
-#: size or model differs by its local error, orders of magnitude above 1e-9 for any step size
-#: whose results are meant to be accurate.
+#: (max-norm, relative to 1 + max|state|). Taken as the run took it, it reproduces the record
+#: exactly; another Newton setting (newton=) moves it by the Newton tolerance, ~1e-14;
+#: another scheme, step size or model differs by its local error, orders of magnitude above
+#: 1e-9 for any step size whose results are meant to be accurate.
 RECORD_RTOL = 1e-9
 
 
-def along(engine, traj, newton=None, u=None, params=None, t0=None, wrt=None, compose=()):
-    """Integrator.linearize: ``linearize`` for a closed module (which takes none of u,
-    params, t0, wrt: ArgumentError naming the one given), ``linearize_open`` for an open
-    one, ``linearize_composed`` for a composed step (compose: its substep fractions);
-    newton: the Newton settings (Engine.options resolves them)."""
+def along(engine, traj, newton=None, u=None, params=None, t0=None, wrt=None):
+    """Integrator.linearize: A for a closed module (which takes none of u, params, t0, wrt:
+    ArgumentError naming the one given), (A, B) or P for an open one (see the module
+    docstring); newton: the Newton settings (Engine.options resolves them)."""
+    return along_with_status(engine, traj, newton, u, params, t0, wrt)[0]
+
+
+def along_with_status(engine, traj, newton=None, u=None, params=None, t0=None, wrt=None):
+    """(along's result, the run's status dict over the K steps: Newton iterations,
+    Jacobians (one per substep for the derivative included), and ``deviation`` the largest
+    max-norm distance of a recomputed step from its record: 0.0 when the records are
+    reproduced bit for bit). Raises ArgumentError for a bad
+    trajectory, u, params, t0 or wrt, ConvergenceError if a step's Newton fails."""
     if engine.open is None:
         for name, v in (("u", u), ("params", params), ("t0", t0), ("wrt", wrt)):
             if v is not None:
                 raise ArgumentError("this model has no forces, inputs, runtime "
                                     f"parameters or t: linearize takes no {name}",
                                     field=name)
-        if compose:
-            return linearize_composed(engine, traj, engine.options(newton), compose)
-        return linearize(engine, traj, engine.options(newton))
-    if compose:
-        return linearize_composed(engine, traj, engine.options(newton), compose, u, params,
-                                  t0, wrt)
-    return linearize_open(engine, traj, engine.options(newton), u, params, t0, wrt)
-
-
-def linearize_composed(engine, traj, opts, gammas, u=None, params=None, t0=None, wrt=None):
-    """linearize / linearize_open of a composed step Phi(h) = S(gamma_s h) o ... o
-    S(gamma_1 h): per step k the substeps from record k (each by Newton from the guess
-    kernel, on either backend's step), and the chain rule over them,
-    A = A_s ... A_1 and B = sum_i A_s ... A_(i+1) B_i (P likewise), A_i, B_i the implicit
-    derivatives of substep i at its own state and h_i = gamma_i h (an open substep at time
-    t_k + (gamma_1 + ... + gamma_(i-1)) h with input u_k). Raises as linearize."""
     if wrt not in WRT:
         raise ArgumentError(f"expected wrt=None, 'u' or 'params', got {wrt!r}", field="wrt")
+    opts = engine.options(newton)
     gf, p, h = _check_traj(engine, traj)
-    K, s = len(gf) - 1, 2 * engine.d
-    inputs, cols, lv = None, slice(0, 0), None
+    K = len(gf) - 1
+    inputs, cols, lv = None, slice(0, 0), ()
     if engine.open is not None:
         t0, inputs, cols = _open_inputs(engine, traj, K, u, params, t0, wrt)
         lv = engine.maps.lv(t0, inputs.params)
-    A, B = np.zeros((K, s, s)), np.zeros((K, s, cols.stop - cols.start))
-    dev = np.zeros(K)
-    for k in range(K):
-        g, pk = gf[k], p[k]
-        c = 0.0
-        for i, gi in enumerate(gammas):
-            if inputs is None:
-                hv = np.array([gi * h])
-            else:
-                hv = np.array(inputs.hv(h, k), dtype=np.float64)
-                hv[0], hv[1] = gi * h, inputs.t0 + (k + c) * h
-            xi = (engine.maps.velocity_flat(g, pk) if lv is None
-                  else engine.maps.velocity_flat(g, pk, lv=lv))
-            z = engine.kernel("guess", xi, g, pk, hv)[0]
-            code, g1, p1, z, it, r = engine.backend.step(g, pk, hv, z, opts)
-            if code != abi.OK:
-                raise _error(code, k, k * h, r, it)
-            if inputs is None:
-                Ai = implicit_derivative(*partials_at(engine, z, g, pk, hv))
-            else:
-                J, Fs, Yz, Ys, FH, YH = open_partials_at(engine, z, g, pk, hv)
-                D = implicit_derivative(J, np.hstack([Fs, FH[:, cols]]), Yz,
-                                        np.hstack([Ys, YH[:, cols]]))
-                Ai = D[:, :s]
-                B[k] = Ai @ B[k] + D[:, s:]
-            A[k] = Ai if i == 0 else Ai @ A[k]
-            g, pk, c = np.asarray(g1).reshape(-1), np.asarray(p1).reshape(-1), c + gi
-        dev[k] = max(np.abs(g - gf[k + 1]).max(), np.abs(pk - p[k + 1]).max())
+    # the run's first Newton start, as simulate makes it (FirstStep.start)
+    g0 = gf[0].reshape(engine.n, engine.n, order="F")
+    gf0, mu0, xi0 = engine.initial(g0, None, p[0], lv)
+    z0 = engine.first_step.start(gf0, mu0, xi0, h, opts, inputs)
+    run = engine.backend.start(gf[0], p[0], z0, inputs)
+    if hasattr(engine.backend, "linearize"):
+        A, B, dev, st, done = engine.backend.linearize(run, gf, p, h, cols, opts)
+    else:
+        A, B, dev, st, done = _python_loop(engine, run, gf, p, h, cols, opts)
+    if st["code"] != abi.OK:
+        raise _error(st["code"], done, done * h, st["residual"], st["iterations"])
     _check_dev(engine, gf, p, h, dev)
+    st["deviation"] = float(dev.max(initial=0.0))
     if inputs is None:
-        return A
-    return B if wrt == "params" else (A, B)
+        return A, st
+    return (B if wrt == "params" else (A, B)), st
+
+
+def _python_loop(engine, run, gf, p, h, cols, opts):
+    """The Python backend's twin of hpgen_linearize: ``run`` (loop.Run at record 0) stepped
+    from each record k as the run steps, the substeps' derivatives chained (module
+    docstring): (A (K, 2d, 2d), B (K, 2d, nc), dev (K,), status, steps done)."""
+    from .loop import new_status
+    K, s, nc = len(gf) - 1, 2 * engine.d, cols.stop - cols.start
+    A, B, dev = np.zeros((K, s, s)), np.zeros((K, s, nc)), np.zeros(K)
+    st = new_status()
+    start = [gf[0], p[0]]
+    k = 0
+
+    def after(i, hv):
+        """The derivative of substep i at the run's solution, chained into A[k], B[k]."""
+        g, pk = start
+        z, hv = np.array(run.z, dtype=np.float64), np.array(hv, dtype=np.float64)
+        if engine.open is None:
+            Ai, Bi = implicit_derivative(*partials_at(engine, z, g, pk, hv)), B[k]
+        else:
+            J, Fs, Yz, Ys, FH, YH = open_partials_at(engine, z, g, pk, hv)
+            D = implicit_derivative(J, np.hstack([Fs, FH[:, cols]]), Yz,
+                                    np.hstack([Ys, YH[:, cols]]))
+            Ai, Bi = D[:, :s], D[:, s:]
+        st["jacobians"] += 1
+        if not (np.isfinite(Ai).all() and np.isfinite(Bi).all()):
+            return abi.NONFINITE
+        A[k], B[k] = (Ai, Bi) if i == 0 else (Ai @ A[k], Ai @ B[k] + Bi)
+        start[:] = np.array(run.g, dtype=np.float64), np.array(run.p, dtype=np.float64)
+        return abi.OK
+
+    for k in range(K):
+        run.g, run.p = gf[k].tolist(), p[k].tolist()
+        start[:] = gf[k], p[k]
+        if engine.backend.run_step(run, h, opts, st, after) != abi.OK:
+            return A, B, dev, st, k
+        dev[k] = max(np.abs(np.array(run.g) - gf[k + 1]).max(),
+                     np.abs(np.array(run.p) - p[k + 1]).max())
+    st["step"] = K
+    return A, B, dev, st, K
 
 
 def implicit_derivative(J, Fs, Yz, Ys):
@@ -178,40 +202,6 @@ def _check_traj(engine, traj):
     return gf, np.array(mu, order="C"), float(traj.h)
 
 
-def _python_loop(engine, gf, p, hv, z, opts):
-    """The Python backend's twin of hpgen_linearize: (A (K, 2d, 2d), dev (K,), code, k)."""
-    K, s = len(gf) - 1, 2 * engine.d
-    A, dev = np.zeros((K, s, s)), np.zeros(K)
-    for k in range(K):
-        code, g1, p1, z, it, r = engine.backend.step(gf[k], p[k], hv, z, opts)
-        if code != abi.OK:
-            return A, dev, (code, it, r), k
-        dev[k] = max(np.abs(g1 - gf[k + 1]).max(), np.abs(p1 - p[k + 1]).max())
-        A[k] = implicit_derivative(*partials_at(engine, z, gf[k], p[k], hv))
-    return A, dev, None, K
-
-
-def linearize(engine, traj, opts):
-    """A (K, 2d, 2d) along ``traj`` (K + 1 records of ``Integrator.simulate(..., every=1)``); see
-    the module docstring. opts: resolved NewtonOptions (Engine.options). Raises
-    ArgumentError (field traj) for a trajectory that is not this module's, ConvergenceError if a
-    step's Newton fails."""
-    gf, p, h = _check_traj(engine, traj)
-    hv = np.array([h])
-    g0 = gf[0].reshape(engine.n, engine.n, order="F")
-    z0 = engine.kernel("guess", engine.maps.velocity(g0, p[0]), gf[0], p[0], hv)[0]
-    loop = getattr(engine.backend, "linearize", None)
-    if loop is not None:
-        A, dev, err, done = loop(gf, p, hv[0], z0, opts)
-    else:
-        A, dev, err, done = _python_loop(engine, gf, p, hv, z0, opts)
-    if err is not None:
-        code, it, r = err
-        raise _error(code, done, done * h, r, it)
-    _check_dev(engine, gf, p, h, dev)
-    return A
-
-
 def _check_dev(engine, gf, p, h, dev):
     """Refuse records that are not this module's steps (dev[k]: step k's deviation)."""
     scale = 1.0 + max(np.abs(gf).max(), np.abs(p).max())
@@ -229,32 +219,6 @@ def _check_dev(engine, gf, p, h, dev):
 WRT = (None, "u", "params")
 
 
-def linearize_open(engine, traj, opts, u=None, params=None, t0=None, wrt=None):
-    """Open module: (A, B) (wrt None or "u") or P (wrt "params") along ``traj``; see the
-    module docstring. Raises ArgumentError for a bad trajectory, u, params, t0 or wrt,
-    ConvergenceError if a step's Newton fails."""
-    if wrt not in WRT:
-        raise ArgumentError(f"expected wrt=None, 'u' or 'params', got {wrt!r}", field="wrt")
-    gf, p, h = _check_traj(engine, traj)
-    K = len(gf) - 1
-    t0, inputs, cols = _open_inputs(engine, traj, K, u, params, t0, wrt)
-    H = 2 + len(engine.open["inputs"]) + len(inputs.params)
-    hv = np.array([inputs.hv(h, k) for k in range(K)], dtype=np.float64).reshape(K, H)
-    z = engine.kernel("guess", engine.maps.velocity_flat(gf[0], p[0],
-                                                       lv=engine.maps.lv(t0, inputs.params)),
-                     gf[0], p[0], hv[0])[0]
-    loop = getattr(engine.backend, "linearize_open", None)
-    if loop is not None:
-        A, B, dev, err, done = loop(gf, p, hv, cols, z, opts)
-    else:
-        A, B, dev, err, done = _python_open_loop(engine, gf, p, hv, cols, z, opts)
-    if err is not None:
-        code, it, r = err
-        raise _error(code, done, done * h, r, it)
-    _check_dev(engine, gf, p, h, dev)
-    return B if wrt == "params" else (A, B)
-
-
 def _open_inputs(engine, traj, K, u, params, t0, wrt):
     """(t0, the K steps' inputs, the columns of the step vector hv that B differentiates)
     of an open module: u's for wrt None or "u", the runtime parameters' for "params"."""
@@ -267,21 +231,3 @@ def _open_inputs(engine, traj, K, u, params, t0, wrt):
     if wrt == "params" and H == 2 + m:
         raise ArgumentError("this model has no runtime parameters", field="wrt")
     return t0, inputs, (slice(2, 2 + m) if wrt != "params" else slice(2 + m, H))
-
-
-def _python_open_loop(engine, gf, p, hv, cols, z, opts):
-    """The Python backend's twin of an open module's hpgen_linearize: (A, B, dev, err,
-    steps done)."""
-    K, s = len(gf) - 1, 2 * engine.d
-    A, B = np.zeros((K, s, s)), np.zeros((K, s, cols.stop - cols.start))
-    dev = np.zeros(K)
-    for k in range(K):
-        code, g1, p1, z, it, r = engine.backend.step(gf[k], p[k], hv[k], z, opts)
-        if code != abi.OK:
-            return A, B, dev, (code, it, r), k
-        dev[k] = max(np.abs(g1 - gf[k + 1]).max(), np.abs(p1 - p[k + 1]).max())
-        J, Fs, Yz, Ys, FH, YH = open_partials_at(engine, z, gf[k], p[k], hv[k])
-        D = implicit_derivative(J, np.hstack([Fs, FH[:, cols]]), Yz,
-                                np.hstack([Ys, YH[:, cols]]))
-        A[k], B[k] = D[:, :s], D[:, s:]
-    return A, B, dev, None, K

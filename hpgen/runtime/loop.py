@@ -211,17 +211,24 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
 
 
 def _composed_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOptions, st,
-                   with_g=True):
+                   with_g=True, after=None):
     """One step of ``run`` like ``hpgen_run_cstep`` in C: _run_step, or for a composed run
     (run.compose = (gamma_1, .., gamma_s)) the substeps _run_step with h_i = gamma_i h at the
     same k, each started from its own predictor (G at the first step), J^{-1} kept across
     substeps as across steps, an open model's substep at time t0 + (k + gamma_1 + ... +
     gamma_{i-1}) h; st["iterations"] summed over the substeps; on failure the run is back
     at its state before the step. Substep i's predictor extrapolates its own offsets at the
-    last c_have steps. Returns the status code."""
+    last c_have steps. after(i, hv) (None in the runs; hpgen.runtime.linearize's
+    per-substep derivative): called after each substep i that converged with the step vector
+    it took; a code other than OK fails the step with that code. Returns the status code."""
     gam = run.compose
     if not gam:
-        return _run_step(kern, run, hv, opts, full, st, with_g)
+        code = _run_step(kern, run, hv, opts, full, st, with_g)
+        if code == OK and after is not None:
+            hv1 = hv if run.inputs is None else run.inputs.hv(hv[0], run.k - 1)
+            if (code := after(0, hv1)) != OK:
+                st.update(code=code, step=run.k - 1)
+        return code
     if not run.cdz:
         run.cdz = [[] for _ in gam]
     h, k = hv[0], run.k
@@ -238,6 +245,9 @@ def _composed_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: Newto
             inputs.t0 = t0 + (k + c) * h - k * hs
         try:
             code = _run_step(kern, run, [hs], opts, full, st, with_g)
+            if code == OK and after is not None:
+                if (code := after(i, [hs] if inputs is None else inputs.hv(hs, k))) != OK:
+                    st.update(code=code, step=k)
         finally:
             if inputs is not None:
                 inputs.t0 = t0

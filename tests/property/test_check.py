@@ -87,7 +87,7 @@ def test_generated_schemes_are_symplectic_and_rkmk_is_not(compile_model, model_f
 
 DOC_KEYS = {"hpgen_version", "model", "file", "group", "scheme", "integrator", "h", "steps",
             "duration", "order", "energy", "momentum", "group_defect", "symplectic", "checks",
-            "passed", "seconds", "inputs"}
+            "passed", "seconds", "inputs", "constraints", "symmetry"}
 
 
 def test_cli_check_free_rigid_body_exits_0_and_writes_json(tmp_path, cache_dir):
@@ -103,8 +103,10 @@ def test_cli_check_free_rigid_body_exits_0_and_writes_json(tmp_path, cache_dir):
     assert set(r["energy"]) >= {"initial", "max_error", "relative_max_error", "drift_slope"}
     assert set(r["momentum"]) >= {"initial", "max_change", "left_invariant"}
     assert set(r["symplectic"]) >= {"defect", "relative", "tolerance", "states", "form"}
-    assert set(r["checks"]) == {"symplectic", "group", "momentum"}
-    assert r["passed"] and all(r["checks"].values())
+    assert set(r["checks"]) == {"symplectic", "group", "momentum", "symmetric", "constraints"}
+    assert r["checks"]["symmetric"] is None and r["checks"]["constraints"] is None
+    assert r["passed"] and all(v for k, v in r["checks"].items()
+                               if k not in ("symmetric", "constraints"))
     assert r["integrator"]["tableau"] == "stormer-verlet" and r["steps"] == 1000
     assert len(r["order"]["error"]) == 3 and abs(r["order"]["observed"][-1] - 2) < 0.1
     assert r["symplectic"]["relative"] <= SYMPLECTIC_RTOL and r["group_defect"]["max"] < 1e-12

@@ -200,9 +200,15 @@ HPGEN_EXPORT int hpgen_run_set_compose(hpgen_run* r, long long cs, const double*
    refreshes it when the fraction changed too much (a fresh J at every change of fraction
    would cost more J evaluations than the test asks for). An open model's substep i has time
    t0 + (k + cg[0] + ... + cg[i-1]) h and input row k. st->iterations: summed over the
-   substeps. On failure the run is back at its state before the step. */
-static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* o,
-                           const hpgen_options* full, hpgen_status* st, int with_g) {
+   substeps. On failure the run is back at its state before the step.
+   after (NULL in the runs; hpgen_linearize's per-substep derivative): called after each
+   substep i that converged (the plain step: i = 0) with the step vector it took; a code
+   other than HPGEN_OK fails the step with that code. */
+typedef int (*hpgen_substep_hook)(void* ctx, const hpgen_run* r, long long i,
+                                  const double* hv);
+static int hpgen_run_cstep_then(hpgen_run* r, const double* hv, const hpgen_options* o,
+                                const hpgen_options* full, hpgen_status* st, int with_g,
+                                hpgen_substep_hook after, void* ctx) {
     double hs[1], g0[HPGEN_GNZ], p0[HPGEN_D], z0[HPGEN_NZ], c = 0.0;
     const long long k = r->k;
     long long it = 0, i;
@@ -210,7 +216,13 @@ static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* 
 #if HPGEN_OPEN
     const double t0 = r->t0;
 #endif
-    if (r->cs == 0) return hpgen_run_step(r, hv, o, full, st, with_g);
+    if (r->cs == 0) {
+        code = hpgen_run_step(r, hv, o, full, st, with_g);
+        if (code == HPGEN_OK && after && (code = after(ctx, r, 0, HPGEN_RUN_HV(r, hv))) != HPGEN_OK) {
+            st->code = code; st->step = k;
+        }
+        return code;
+    }
     hpgen_g_pack(r->g, g0);
     memcpy(p0, r->p, sizeof p0);
     memcpy(z0, r->z, sizeof z0);
@@ -232,6 +244,9 @@ static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* 
         r->t0 = t0;
 #endif
         it += st->iterations;
+        if (code == HPGEN_OK && after && (code = after(ctx, r, i, HPGEN_RUN_HV(r, hs))) != HPGEN_OK) {
+            st->code = code; st->step = k;
+        }
         if (code != HPGEN_OK) {
             hpgen_g_unpack(g0, r->g);
             memcpy(r->p, p0, sizeof p0);
@@ -245,6 +260,11 @@ static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* 
     if (r->c_have < HPGEN_CH) r->c_have += 1;
     st->iterations = it;
     return HPGEN_OK;
+}
+
+static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* o,
+                           const hpgen_options* full, hpgen_status* st, int with_g) {
+    return hpgen_run_cstep_then(r, hv, o, full, st, with_g, NULL, NULL);
 }
 
 /* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
