@@ -174,7 +174,8 @@ with mp.workdps(50):
                          "0.432666402578175"]), 6,
             "Blanes-Moan PRK order 6, 10 stages", False),
     }
-    for _name, (_c, _order, _, _) in _HALVES.items():
+    for _name, _row in _HALVES.items():
+        _c = _row[0]
         if max(abs(x - y) for x, y in zip(_c, _c[::-1])) > mp.mpf("1e-40") or \
                 abs(mp.fsum(_c) - 1) > mp.mpf("1e-40"):
             raise AssertionError(f"splitting coefficients {_name}: not a symmetric consistent "
