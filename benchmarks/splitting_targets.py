@@ -29,8 +29,9 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-SPLITS = ("split2", "split4-yoshida", "split4-suzuki", "split6-yoshida", "split6-kahan-li",
-          "split8-mclachlan", "split8-kahan-li")
+SPLITS = ("split2", "split4-yoshida", "split4-suzuki", "split4-mclachlan", "split4-blanes-moan",
+          "split6-yoshida", "split6-kahan-li", "split6-blanes-moan", "split8-mclachlan",
+          "split8-kahan-li")
 HAND = ("splitting-2", "splitting-4", "splitting-6")
 #: the ensembles' stepping alone is timed over this many times the steps of T = 10
 LONG = 20

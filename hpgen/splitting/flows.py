@@ -45,8 +45,11 @@ def _force_function(group, lag, g):
     return ca.substitute(f, eta, ca.SX.zeros(d))
 
 
-def _elementary(fk: FactorKinetics, k: int, c: float) -> list:
-    """The sub-flows of factor k's free flow F(c h), as (kind, factor, axis, coefficient)."""
+def _first_order(fk: FactorKinetics, k: int, c: float) -> list:
+    """Factor k's kinetic sub-flows of phi(c h), in order, as (kind, factor, axis,
+    coefficient): SE3's drift, then the rotations about the principal axes 1, 2, 3 (the
+    largest moment last) or a symmetric body's exact free flow; R<n> its drift, SO2 its
+    rotation."""
     if fk.family == "R":
         return [("drift", k, 0, c)]
     if fk.family == "SO2":
@@ -54,24 +57,37 @@ def _elementary(fk: FactorKinetics, k: int, c: float) -> list:
     if fk.symmetric_axis is not None:
         rots = [("free", k, 0, c)]
     else:
-        rots = [("rot", k, 0, c / 2), ("rot", k, 1, c / 2), ("rot", k, 2, c),
-                ("rot", k, 1, c / 2), ("rot", k, 0, c / 2)]
-    if fk.family == "SE3":
-        return [("drift", k, 0, c / 2)] + rots + [("drift", k, 0, c / 2)]
-    return rots
+        rots = [("rot", k, 0, c), ("rot", k, 1, c), ("rot", k, 2, c)]
+    return ([("drift", k, 0, c)] if fk.family == "SE3" else []) + rots
 
 
-def schedule(structure: SplitStructure, gammas, kicks: bool) -> list:
-    """The scheme's sub-flows in order, adjacent ones of the same kind merged:
-    [(kind, factor, axis, coefficient of h)], kind in kick, rot, drift."""
+def schedule(structure: SplitStructure, scheme, kicks: bool) -> list:
+    """The sub-flows of ``scheme`` (SplittingScheme) in order, adjacent ones of the same
+    kind merged: [(kind, factor, axis, coefficient of h)], kind in kick, rot, free, drift.
+    phi(t) is the kick then every factor's first-order kinetic sub-flows, phi*(t) the same
+    in reverse order; the halves alternate phi, phi* (phi* first when adjoint_first). With
+    S(t) = phi(t/2) phi*(t/2) a symmetric composition's basic step is
+    K(t/2) [X1(t/2) X2(t/2) X3(t) X2(t/2) X1(t/2)] K(t/2) once merged."""
     ops: list = []
-    for gm in gammas:
-        if kicks:
-            ops.append(("kick", -1, 0, gm / 2))
-        for k, fk in enumerate(structure.factors):
-            ops.extend(_elementary(fk, k, gm))
-        if kicks:
-            ops.append(("kick", -1, 0, gm / 2))
+    kick = [("kick", -1, 0)] if kicks else []
+    for i, c in enumerate(scheme.halves):
+        adjoint = (i % 2 == 1) != scheme.adjoint_first
+        flows = [_first_order(fk, k, c) for k, fk in enumerate(structure.factors)]
+        half = [op + (c,) for op in kick] + [op for f in flows for op in f]
+        ops.extend(half[::-1] if adjoint else half)
+    # between two kicks the factors' kinetic flows commute (they move disjoint parts of the
+    # state): group them by factor, in order, so that a factor's flows about one axis meet
+    grouped: list = []
+    seg: list = []
+    for op in ops + [None]:
+        if op is None or op[0] == "kick":
+            grouped.extend(sorted(seg, key=lambda o: o[1]))
+            seg = []
+            if op is not None:
+                grouped.append(op)
+        else:
+            seg.append(op)
+    ops = grouped
     merged: list = []
     for op in ops:
         if merged and merged[-1][:3] == op[:3]:
@@ -243,7 +259,7 @@ def splitting_step(model, scheme, lag, g, p, h, params=None):
     force = _force_function(group, lag, g)
     moving = ca.vertcat(ca.vec(g), *([params] if params is not None else []))
     kicks = bool(ca.depends_on(force, moving)) or bool(ca.DM(ca.evalf(force)).full().any())
-    ops = schedule(structure, scheme.gammas, kicks)
+    ops = schedule(structure, scheme, kicks)
     g1, p1 = composition(structure, group, force, g, ops, g, p, h)
     z = ca.SX.sym("z", d)
     eqs = StepEquations(z=z, blocks=(("p", 0, d),), residual=z - p, g1=g1, p1=p1, guess=p,
