@@ -31,7 +31,9 @@ from dataclasses import dataclass
 #: (7: a sparse module's hpgen_run.lu holds the sparse QR of J, HPGEN_LU_SIZE doubles)
 #: (8: hpgen_run holds the composition's substeps and their predictor histories;
 #:  hpgen_run_set_compose)
-ABI_VERSION = 8
+#: (9: hpgen_linearize takes the run and steps it as simulate does, one signature for closed
+#:  and open modules; the first step may take simplified Newton)
+ABI_VERSION = 9
 #: version of meta.json's layout; the loader refuses any other (recompile the module)
 #: (3: "group", the group's name, e.g. "SO3" or "[SO3, R3]")
 #: (4: "jacobian", the Newton matrix's storage: dense, or sparse with J's CCS pattern)

@@ -81,9 +81,11 @@ def is_symmetric_tableau(A, b, tol: float = SYMMETRY_TOL) -> bool:
 
 def check_base(tableau: str) -> None:
     """ModelError (field integrator.compose) unless the module's tableau (a catalog name) is
-    symmetric: a composition of a non-symmetric step does not raise its order. (Both RKMK
-    variants keep a symmetric tableau's step symmetric: the chart maps satisfy
-    tau(-x) = tau(x)^-1; tests/property/test_composition.py checks step(-h) o step(h) = id.)"""
+    symmetric: a composition of a non-symmetric step does not raise its order. With
+    rkmk: truncated a symmetric tableau's step is symmetric (the chart maps satisfy
+    tau(-x) = tau(x)^-1; tests/property/test_composition.py checks step(-h) o step(h) = id);
+    with rkmk: exact it is not when l depends on g (docs/numerics.md, compositions), which
+    this check does not see: `hpgen check --compose` measures S(-h) S(h) - id."""
     from ..splitting import is_splitting
     from . import TABLEAU_NAMES, get_tableau
     if is_splitting(tableau):

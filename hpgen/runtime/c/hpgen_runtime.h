@@ -80,7 +80,7 @@
 #endif
 
 /* the version of the exported API (hpgen.abi.ABI_VERSION) */
-#define HPGEN_ABI 8
+#define HPGEN_ABI 9
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 /* the Newton matrix's storage (doubles): dense, J or J^{-1} column-major; sparse, the static
    LU's values (HPGEN_SP_NLU), the QR factors V | R | beta (HPGEN_NZ) from HPGEN_SP_QR, which
