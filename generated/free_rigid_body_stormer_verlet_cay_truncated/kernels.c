@@ -3605,6 +3605,8 @@ HPGEN_EXPORT int hpgen_kernel_step_partials(const double* in0, const double* in1
 /* ---- the step's kernels on HPGEN_L lanes (hpgen.codegen.lanes; hpgen_lanes.c runs them) */
 #define HPGEN_L 8
 HPGEN_LANES_BEGIN
+#define HPGEN_LANE_RESIDUAL 1
+
 /* residual_jacobian(z, g, p, h) -> (F, J), 8 lanes: x[i * 8 + lane] */
 static void hpgen_lane_residual_jacobian(const double* restrict in0, const double* restrict in1, const double* restrict in2, const double* restrict in3, double* restrict out0, double* restrict out1) {
     int l;
@@ -3718,6 +3720,65 @@ static void hpgen_lane_residual_jacobian(const double* restrict in0, const doubl
         a14 = (-a14);
         out1[64 + l] = a14;
         (void)a0, (void)a1, (void)a2, (void)a3, (void)a4, (void)a5, (void)a6, (void)a7, (void)a8, (void)a9, (void)a10, (void)a11, (void)a12, (void)a13, (void)a14, (void)a15, (void)a16, (void)a17, (void)a18;
+    }
+}
+
+/* residual(z, g, p, h) -> (F), 8 lanes: x[i * 8 + lane] */
+static void hpgen_lane_residual(const double* restrict in0, const double* restrict in1, const double* restrict in2, const double* restrict in3, double* restrict out0) {
+    int l;
+    (void)in0; (void)in1; (void)in2; (void)in3;
+    for (l = 0; l < 8; ++l) {
+        double a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11;
+        double a12, a13;
+        a0 = in2[0 + l];
+        a1 = in3[0 + l];
+        a2 = in0[16 + l];
+        a3 = (a1*a2);
+        a4 = 0.5;
+        a5 = in0[8 + l];
+        a4 = (a4*a5);
+        a6 = (a3*a4);
+        a7 = (a1*a5);
+        a8 = 0.3333333333333333;
+        a8 = (a8*a2);
+        a9 = (a7*a8);
+        a6 = (a6-a9);
+        a9 = in0[0 + l];
+        a1 = (a1*a9);
+        a10 = 0.25;
+        a11 = 0.6666666666666666;
+        a11 = (a11*a2);
+        a2 = (a3*a11);
+        a12 = (a7*a5);
+        a2 = (a2+a12);
+        a12 = (2.*a9);
+        a13 = (a1*a12);
+        a2 = (a2+a13);
+        a10 = (a10*a2);
+        a2 = (a1*a10);
+        a6 = (a6-a2);
+        a6 = (a6-a12);
+        a0 = (a0+a6);
+        out0[0 + l] = a0;
+        a0 = in2[8 + l];
+        a8 = (a1*a8);
+        a8 = (a8-a5);
+        a5 = (a7*a10);
+        a8 = (a8-a5);
+        a5 = (a3*a9);
+        a8 = (a8-a5);
+        a0 = (a0+a8);
+        out0[8 + l] = a0;
+        a0 = in2[16 + l];
+        a7 = (a7*a9);
+        a1 = (a1*a4);
+        a11 = (a11+a1);
+        a3 = (a3*a10);
+        a11 = (a11+a3);
+        a7 = (a7-a11);
+        a0 = (a0+a7);
+        out0[16 + l] = a0;
+        (void)a0, (void)a1, (void)a2, (void)a3, (void)a4, (void)a5, (void)a6, (void)a7, (void)a8, (void)a9, (void)a10, (void)a11, (void)a12, (void)a13;
     }
 }
 
