@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import re
 
-from .csource import _functions
+from .csource import LAZY_BEGIN, _functions
 
 #: translation units of a family module (the machines hpgen targets have 2 or more cores)
 PARTS = 2
@@ -72,10 +72,11 @@ def _extent(lines: list[str], first: int, last: int) -> tuple[int, int]:
     return first, last
 
 
-def assign_parts(costs: dict[str, float], parts: int, base: float) -> dict[str, int]:
+def assign_parts(costs: dict[str, float], parts: int, base: float,
+                 load: list[float] | None = None) -> dict[str, int]:
     """Functions -> part (1..parts-1, or 0 for those not listed): longest processing time
-    first, part 0 starting at ``base``."""
-    load = [base] + [0.0] * (parts - 1)
+    first, part 0 starting at ``base`` (or the parts at ``load``, updated in place)."""
+    load = [base] + [0.0] * (parts - 1) if load is None else load
     out = {}
     for f in sorted(costs, key=lambda f: (-costs[f], f)):
         k = min(range(parts), key=lambda k: (load[k], k))
@@ -90,17 +91,23 @@ def split_casadi_code(code: str, parts: int = PARTS) -> str:
     lines = code.split("\n")
     blocks, calls, roots = _functions(lines)
     extents = {f: _extent(lines, *blocks[f]) for f in blocks}
-    costs, fixed = {}, 0.0
+    # the step library's functions are balanced first, those of the lazily built library
+    # (between LAZY_BEGIN and its end, csource.guard_lazy_functions) onto the result
+    costs: dict[bool, dict[str, float]] = {False: {}, True: {}}
+    fixed = 0.0
     for f, (first, last) in extents.items():
         a, b = blocks[f]
         body, cold = "\n".join(lines[a + 1:b]), lines[first] == "HPGEN_COLD_BEGIN"
+        lazy = first > 0 and lines[first - 1] == LAZY_BEGIN
         cost = (b - a + LOOP_COST * len(_LOOP.findall(body))) * (COLD_WEIGHT if cold else 1.0)
         if b - a >= MIN_LINES and (cold or "for (" not in body):
-            costs[f] = cost
-        else:
+            costs[lazy][f] = cost
+        elif not lazy:
             fixed += cost
     part_of = dict.fromkeys(blocks, 0)
-    part_of.update(assign_parts(costs, parts, BASE_COST + fixed))
+    load = [BASE_COST + fixed] + [0.0] * (parts - 1)
+    part_of.update(assign_parts(costs[False], parts, 0.0, load))
+    part_of.update(assign_parts(costs[True], parts, 0.0, load))
     if all(k == 0 for k in part_of.values()):
         return code
     shared = {c for f, cs in calls.items() for c in cs if part_of[c] != part_of[f]}

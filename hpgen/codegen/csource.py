@@ -36,6 +36,14 @@ C_FROM_FUSED = {"jacobian": ("residual_jacobian", 1)}
 #: code; -O1 keeps IEEE semantics, so their results are unchanged)
 COLD_KERNELS = ("legendre", "hessian", "energy", "momentum", "defect", "step_partials")
 COLD_OPTIMIZE = "O1"
+#: cold kernels that only linearize calls: in a family module their CasADi functions (those
+#: only they reach), their wrappers and hpgen_linearize are compiled only into the lazily
+#: built second library (kernels.c with -DHPGEN_LAZY_LIBRARY, hpgen.runtime.build.LAZY_FLAG),
+#: between ``#if HPGEN_WITH_LAZY`` and ``#endif``. The other cold kernels stay in the step
+#: library: a run's start calls defect and legendre, and the state maps call the rest.
+LAZY_KERNELS = ("step_partials",)
+#: the guard around the lazily built library's code
+LAZY_BEGIN, LAZY_END = "#if HPGEN_WITH_LAZY", "#endif /* HPGEN_WITH_LAZY */"
 
 #: op codes whose CasADi C output does not compile as C99 (no erfinv in <math.h>)
 _C_UNSUPPORTED = {casadi.OP_ERFINV: "erfinv"}
@@ -73,6 +81,8 @@ def casadi_c_code(step, module: str, family: bool = False) -> str:
         # the step's functions stay as CasADi prints them; step_partials' copies of the
         # per-body derivatives (printed once per calling kernel) go to the cold level
         code = mark_cold_functions(code, roots)
+        code = guard_lazy_functions(code, [k.function.name() for k in step.kernels
+                                           if k.name in LAZY_KERNELS])
     for call, inline in _INLINE_MINMAX.items():
         code = code.replace(call, inline)
     if not code.endswith("\n"):
@@ -180,4 +190,40 @@ def mark_cold_functions(code: str, cold_roots) -> str:
         out.append(line)
         if j in end:
             out.append("HPGEN_COLD_END")
+    return "\n".join(out)
+
+
+def guard_lazy_functions(code: str, lazy_roots) -> str:
+    """CasADi's C (after mark_cold_functions) with the internal functions only the top-level
+    functions ``lazy_roots`` reach, and those top-level functions' entry points, each between
+    LAZY_BEGIN and LAZY_END (compiled only into the lazily built library). Unchanged when
+    nothing is lazy."""
+    lazy = cold_functions(code, lazy_roots)
+    if not lazy:
+        return code
+    lines = code.split("\n")
+    blocks = _functions(lines)[0]
+    begin, end = set(), set()
+    for f in lazy:
+        first, last = blocks[f]
+        if first > 0 and lines[first - 1].startswith("/* ") and lines[first - 1].endswith(" */"):
+            first -= 1
+        if first > 0 and lines[first - 1] == "HPGEN_COLD_BEGIN":
+            first -= 1
+        if last + 1 < len(lines) and lines[last + 1] == "HPGEN_COLD_END":
+            last += 1
+        begin.add(first)
+        end.add(last)
+    entries = {f"CASADI_SYMBOL_EXPORT int {name}(const casadi_real** arg" for name in lazy_roots}
+    for j, line in enumerate(lines):
+        if any(line.startswith(e) for e in entries):
+            begin.add(j)
+            end.add(j if line.count("{") == line.count("}") else lines.index("}", j))
+    out = []
+    for j, line in enumerate(lines):
+        if j in begin:
+            out.append(LAZY_BEGIN)
+        out.append(line)
+        if j in end:
+            out.append(LAZY_END)
     return "\n".join(out)

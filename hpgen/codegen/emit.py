@@ -33,7 +33,8 @@ from .. import abi
 from ..version import __version__
 from ..schemes import BACKENDS, OPTION_KEYS
 from .contract import HASH_RE, MODULE_RE, CodegenError, check_step
-from .csource import COLD_OPTIMIZE, c_kernel_context, casadi_c_code, work_sizes
+from .csource import (COLD_OPTIMIZE, LAZY_BEGIN, LAZY_KERNELS, c_kernel_context,
+                      casadi_c_code, work_sizes)
 from .cparts import split_casadi_code
 from . import pyiterate, pylinear
 from .sparse import meta_entry, sparse_context
@@ -203,11 +204,13 @@ def _c_context(step, info: dict, common: dict) -> dict:
     instructions = _step_instructions(step)
     sparse = sparse_context(step)
     flatten = instructions <= FLATTEN_MAX_INSTRUCTIONS
+    # a family's (MX) module: duplicated callees and the cold kernels take most of gcc's
+    # time; an SX module's kernels.c stays CasADi's as is
+    code = _casadi_code(step, info["module"], family=instructions >= MX_INSTRUCTIONS)
     return dict(common, nz=step.nz, hash=info["hash"],
-                # a family's (MX) module: duplicated callees and the cold kernels take most
-                # of gcc's time; an SX module's kernels.c stays CasADi's as is
-                casadi_code=_casadi_code(step, info["module"],
-                                         family=instructions >= MX_INSTRUCTIONS),
+                casadi_code=code,
+                # kernels compiled only into the lazily built library (a family's)
+                lazy_kernels=LAZY_KERNELS if LAZY_BEGIN in code else (),
                 cold_optimize=COLD_OPTIMIZE,
                 kernels=[c_kernel_context(k, sparse is not None and
                                           k.name in ("residual_jacobian", "update"))

@@ -22,6 +22,14 @@ Before anything is built or loaded, a module directory holding a MANIFEST.json (
 ``hpgen compile -o`` output) has its sources checked against it (hpgen.cache.check_sources):
 a hand-edited kernels.c is refused, never compiled or served from a stale library.
 
+A family module's kernels.c leaves step_partials and hpgen_linearize (the code only
+linearize calls, hpgen.codegen.csource.LAZY_KERNELS) out of this step library unless
+compiled with LAZY_FLAG: ``build_lazy_library`` builds that second, complete library from the
+same kernels.c on first use (the C compiler only), keyed, checked, locked and replaced in the
+same way. It holds its own static copies of the runtime and the step's kernels rather than
+linking against the step library: no exported internals, no load order, and the run state a
+step library initialises is the same struct in both (same kernels.c, same sizes).
+
 Race-free: an exclusive lock per library (hpgen.cache.locked) serialises builders; the compiler
 writes a temp file in the same directory and ``os.replace`` moves it in place atomically.
 Standard library only.
@@ -62,6 +70,8 @@ RUNTIME_LINKING = "include"
 #: link inputs placed after the source file
 LIBS = ("-lm",)
 _TIMEOUT = 600
+#: the flag that builds the lazily built library (kernels.c complete, HPGEN_WITH_LAZY 1)
+LAZY_FLAG = "-DHPGEN_LAZY_LIBRARY"
 RECORD_SUFFIX = ".json"
 _PARTS = re.compile(rb"^#define HPGEN_PARTS ([0-9]+)$", re.M)
 
@@ -237,6 +247,12 @@ def _compile(source: Path, target: Path, digest: str, argv, extra) -> Path:
             if os.path.exists(tmp):
                 os.unlink(tmp)
     return target
+
+
+def build_lazy_library(module_dir, cc=None, cflags=None) -> Path:
+    """Path of the module's lazily built library (kernels.c with LAZY_FLAG: every kernel and
+    hpgen_linearize), building it if needed; as build_library (the same errors)."""
+    return build_library(module_dir, cc=cc, cflags=tuple(cflags or ()) + (LAZY_FLAG,))
 
 
 def translation_units(source: bytes) -> int:

@@ -2,6 +2,11 @@
 ctypes (interface: hpgen.runtime.backends). Kernel calls go through per-thread staging
 buffers of fixed address (hpgen.runtime.cstructs); ensembles (simulate_batch, record_batch)
 run in hpgen.runtime.cbatch. Imports only the standard library and numpy.
+
+A family module's step library lacks step_partials and hpgen_linearize
+(hpgen.codegen.csource.LAZY_KERNELS): the first call of either builds and loads the lazily
+built library (hpgen.runtime.build.build_lazy_library), which takes the runs this library
+initialised (the same hpgen_run struct).
 """
 from __future__ import annotations
 
@@ -13,7 +18,7 @@ import numpy as np
 from .. import abi
 from ..errors import BuildError
 from .backends import _Backend, _flat
-from .build import build_library
+from .build import build_lazy_library, build_library
 from . import cbatch
 from .cstructs import _Options, _Staging, _Status, _addr
 
@@ -31,26 +36,14 @@ class CBackend(_Backend):
         #: inputs (hpgen_run_set_inputs), and the record/observe functions are not built
         self.open = meta.get("open")
         self.library = build_library(module_dir, cc=cc, cflags=cflags)
-        try:
-            lib = ctypes.CDLL(str(self.library))
-        except OSError as exc:
-            raise BuildError(f"cannot load {self.library.name}: {exc}") from None
-        lib.hpgen_hash.restype = ctypes.c_char_p
-        lib.hpgen_hash.argtypes = []
-        if lib.hpgen_hash().decode() != meta["hash"]:
-            raise BuildError(f"{self.library.name} was built from another kernels.c "
-                             "(hash mismatch); delete it to rebuild")
-        dims = (ctypes.c_longlong * 4)()
-        lib.hpgen_dims(dims)
-        if tuple(dims) != (abi.ABI_VERSION, self.n, self.d, self.nz):
-            raise BuildError(f"{self.library.name}: ABI/dimensions {tuple(dims)} do not "
-                             "match meta.json")
+        self._lazy_args = (module_dir, cc, cflags)
+        self._lazy_lib: ctypes.CDLL | None = None
+        self._lazy_lock = threading.Lock()
+        lib = self._open(self.library)
         self._fns = {}
-        for k, (ins, outs) in self._sig.items():
-            fn = getattr(lib, f"hpgen_kernel_{k}")
-            fn.argtypes = [ctypes.c_void_p] * (len(ins) + len(outs))
-            fn.restype = ctypes.c_int
-            self._fns[k] = fn
+        for k in self._sig:
+            if hasattr(lib, f"hpgen_kernel_{k}"):
+                self._fns[k] = self._kernel(lib, k)
         P, LL, D = ctypes.c_void_p, ctypes.c_longlong, ctypes.c_double
         closed_only = ("hpgen_observe",)
         for name, args, res in (
@@ -69,7 +62,8 @@ class CBackend(_Backend):
                 ("hpgen_run_set_compose", [P, LL, P], ctypes.c_int),
                 ("hpgen_linearize", [P, LL, P, P, D, LL, LL, P, P, P, P, P], LL)):
             if (self.open and name in closed_only) or (
-                    not self.open and name == "hpgen_run_set_inputs"):
+                    not self.open and name == "hpgen_run_set_inputs") or (
+                    not hasattr(lib, name) and name == "hpgen_linearize"):
                 continue
             fn = getattr(lib, name)
             fn.argtypes, fn.restype = args, res
@@ -84,14 +78,67 @@ class CBackend(_Backend):
         self._lib = lib
         self._tls = threading.local()    # per thread: {key: _Staging} (see _staging)
 
+    def _open(self, path) -> ctypes.CDLL:
+        """The library at ``path`` loaded, checked against meta.json (hash, ABI, sizes)."""
+        try:
+            lib = ctypes.CDLL(str(path))
+        except OSError as exc:
+            raise BuildError(f"cannot load {path.name}: {exc}") from None
+        lib.hpgen_hash.restype = ctypes.c_char_p
+        lib.hpgen_hash.argtypes = []
+        if lib.hpgen_hash().decode() != self.meta["hash"]:
+            raise BuildError(f"{path.name} was built from another kernels.c "
+                             "(hash mismatch); delete it to rebuild")
+        dims = (ctypes.c_longlong * 4)()
+        lib.hpgen_dims(dims)
+        if tuple(dims) != (abi.ABI_VERSION, self.n, self.d, self.nz):
+            raise BuildError(f"{path.name}: ABI/dimensions {tuple(dims)} do not "
+                             "match meta.json")
+        return lib
+
+    def _kernel(self, lib: ctypes.CDLL, name: str):
+        ins, outs = self._sig[name]
+        fn = getattr(lib, f"hpgen_kernel_{name}")
+        fn.argtypes = [ctypes.c_void_p] * (len(ins) + len(outs))
+        fn.restype = ctypes.c_int
+        return fn
+
     @property
     def lib(self) -> ctypes.CDLL:
-        """The loaded library (its C functions' argument types set)."""
+        """The loaded step library (its C functions' argument types set)."""
         return self._lib
 
+    @property
+    def lazy_lib(self) -> ctypes.CDLL:
+        """The library with hpgen_linearize and every kernel: the step library when it has
+        them, else the lazily built library (built and loaded on first access)."""
+        if hasattr(self._lib, "hpgen_linearize"):
+            return self._lib
+        with self._lazy_lock:
+            if self._lazy_lib is None:
+                module_dir, cc, cflags = self._lazy_args
+                path = build_lazy_library(module_dir, cc=cc, cflags=cflags)
+                lib = self._open(path)
+                lib.hpgen_run_size.restype = ctypes.c_longlong
+                lib.hpgen_run_size.argtypes = []
+                if lib.hpgen_run_size() != self.run_size:
+                    raise BuildError(f"{path.name}: its runs are {lib.hpgen_run_size()} "
+                                     f"bytes, the step library's {self.run_size}")
+                P, LL, D = ctypes.c_void_p, ctypes.c_longlong, ctypes.c_double
+                lib.hpgen_linearize.argtypes = [P, LL, P, P, D, LL, LL, P, P, P, P, P]
+                lib.hpgen_linearize.restype = LL
+                self._lazy_lib = lib
+            return self._lazy_lib
+
     def kernel_function(self, name):
-        """The ctypes function of kernel ``name`` (hpgen_kernel_<name>)."""
-        return self._fns[name]
+        """The ctypes function of kernel ``name`` (hpgen_kernel_<name>; one of the lazily
+        built library builds it)."""
+        fn = self._fns.get(name)
+        if fn is None:
+            if name not in self._sig:
+                raise KeyError(name)
+            fn = self._fns[name] = self._kernel(self.lazy_lib, name)
+        return fn
 
     def _staging(self, key) -> _Staging:
         """This thread's staging buffers for kernel ``key``, or for _RUN (g, p, z in and
@@ -150,7 +197,8 @@ class CBackend(_Backend):
             else:
                 buf[...] = _flat(x, len(buf), f"{name} input {i}")
         st.out_all.fill(0.0)
-        self._fns[name](*st.ptrs)
+        fn = self._fns.get(name)
+        (fn if fn is not None else self.kernel_function(name))(*st.ptrs)
         return [o.copy() for o in st.outs]
 
     def step(self, g, p, hv, z, opts):
@@ -316,7 +364,7 @@ class CBackend(_Backend):
         gf, p = np.array(gf, dtype=_F64, order="C"), np.array(p, dtype=_F64, order="C")
         A, B, dev = np.zeros((K, s, s)), np.zeros((K, nc, s)), np.zeros(K)
         st = _Status()
-        done = int(self._lib.hpgen_linearize(run, K, _addr(gf), _addr(p), float(h),
+        done = int(self.lazy_lib.hpgen_linearize(run, K, _addr(gf), _addr(p), float(h),
                                              cols.start if self.open else 0, nc,
                                              ctypes.byref(_Options.of(opts)), _addr(A),
                                              _addr(B), _addr(dev), ctypes.byref(st)))

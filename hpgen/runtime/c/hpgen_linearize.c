@@ -1,5 +1,8 @@
 /* hpgen's C runtime, part 5: the linearization of the step along recorded steps
-   (hpgen.runtime.linearize). Included by hpgen_runtime.c after hpgen_runs.c. */
+   (hpgen.runtime.linearize). Included by hpgen_runtime.c after hpgen_runs.c. A kernels.c
+   that defines HPGEN_WITH_LAZY 0 (a family module's step library) leaves it out: it is
+   compiled into the lazily built library with step_partials (hpgen.runtime.build). */
+#if !defined(HPGEN_WITH_LAZY) || HPGEN_WITH_LAZY
 
 /* the columns of the step vector B may differentiate (1 for a closed module: none used) */
 #if HPGEN_OPEN
@@ -168,3 +171,4 @@ out:
     free(c.Fs);
     return done;
 }
+#endif /* HPGEN_WITH_LAZY */
