@@ -10,8 +10,10 @@ nothing imported beforehand), through ``hpgen.build`` (the path ``hpgen compile`
       (a revision without CompiledModule.timings reports the total only)
 
 Prints one Markdown row per N: the stages in seconds (wall), the CPU time (user + sys) of
-the C compiler processes (all translation units, hpgen.codegen.cparts), the sizes of
-kernels.c and (if the compile wrote it) kernels.py. The machine's load changes the wall
+the C compiler processes (all translation units, hpgen.codegen.cparts), then the wall and
+CPU time of the build the first linearize runs (hpgen.runtime.build.build_lazy_library,
+after the compile; "-" for a revision without it), the sizes of kernels.c and (if the
+compile wrote it) kernels.py. The machine's load changes the wall
 figures: compare revisions in the same session, alternating.
 """
 from __future__ import annotations
@@ -40,7 +42,16 @@ for name in ("kernels.c", "kernels.py"):
     p = c.module_dir / name
     sizes[name] = p.stat().st_size if p.exists() else 0
 ru = resource.getrusage(resource.RUSAGE_CHILDREN)
-print(json.dumps({"total": total, "cc_cpu": ru.ru_utime + ru.ru_stime,
+cc_cpu = ru.ru_utime + ru.ru_stime
+lazy = lazy_cpu = None
+from hpgen.runtime import build
+if hasattr(build, "build_lazy_library"):    # the first linearize's build (C compiler only)
+    t0 = time.perf_counter()
+    build.build_lazy_library(c.module_dir)
+    lazy = time.perf_counter() - t0
+    ru = resource.getrusage(resource.RUSAGE_CHILDREN)
+    lazy_cpu = ru.ru_utime + ru.ru_stime - cc_cpu
+print(json.dumps({"total": total, "cc_cpu": cc_cpu, "lazy": lazy, "lazy_cpu": lazy_cpu,
                   "timings": dict(getattr(c, "timings", {}) or {}), "sizes": sizes}))
 """
 
@@ -67,16 +78,18 @@ def main() -> int:
     ap.add_argument("--tableau", default="stormer-verlet")
     args = ap.parse_args()
     print(f"tableau {args.tableau}")
-    print("| N | derive | emit | write | cc | cold total | cc CPU | kernels.c | kernels.py | hpgen |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    print("| N | derive | emit | write | cc | cold total | cc CPU | lazy lib | lazy CPU "
+          "| kernels.c | kernels.py | hpgen |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for n in args.n:
         r = cold_compile(n, args.tableau)
         t = r["timings"]
         cells = [f"{t[k]:.1f} s" if k in t else "-" for k in ("derive", "emit", "write", "cc")]
         kb = [f"{r['sizes'][f] / 1e6:.2f} MB" if r["sizes"][f] else "-"
               for f in ("kernels.c", "kernels.py")]
+        lazy = [f"{r[k]:.1f} s" if r.get(k) is not None else "-" for k in ("lazy", "lazy_cpu")]
         print(f"| {n} | " + " | ".join(cells) + f" | {r['total']:.1f} s | {r['cc_cpu']:.1f} s | "
-              + " | ".join(kb)
+              + " | ".join(lazy + kb)
               + f" | {Path(r['hpgen']).parent} |", flush=True)
     return 0
 

@@ -9,7 +9,9 @@ library:
 - part 0: everything outside CasADi's code (the model's sizes, the kernel wrappers, the C
   runtime), CasADi's exported functions and every CasADi function not moved;
 - part k >= 1: the large CasADi functions (at least MIN_LINES lines) assigned to it, most
-  expensive first onto the least loaded part, with the constant arrays they read. The step's
+  expensive first onto the least loaded part, with the constant arrays they read; those of
+  the step library first, then those only the lazily built library compiles
+  (csource.guard_lazy_functions), so that the step library's parts are balanced. The step's
   MX functions (loops over the bodies, calls of CasADi's helpers) stay in part 0 with the
   helpers and the runtime, compiled as in one unit; of the step, only straight-line (SX)
   functions such as the per-body Jacobian blocks move.
