@@ -142,7 +142,8 @@ def _scheme_line(module_dir, args) -> str:
     import json
     from .api import read_model_text
     from .model.yamldoc import compose_document
-    o = json.loads((Path(module_dir) / "meta.json").read_text())["options"]
+    meta = json.loads((Path(module_dir) / "meta.json").read_text())
+    o = meta["options"]
     section = compose_document(read_model_text(args.model), args.model).data.get("integrator")
     section = section if isinstance(section, dict) else {}
     parts = ("tableau", "tau", "rkmk")
@@ -159,7 +160,7 @@ def _scheme_line(module_dir, args) -> str:
     if compose is not None:
         from .tableaus.composition import check_base, get_composition
         c = get_composition(compose)
-        check_base(o["tableau"])
+        check_base(o["tableau"], rkmk=o["rkmk"], step_uses_g=meta["step_uses_g"])
         src.append(f"composed {c.name}: {c.stages} substeps, order {c.order}"
                    f"{' (--compose)' if getattr(args, 'compose', None) else ' (the model)'}")
     return (f"scheme: tableau {o['tableau']}, tau {o['tau']}, rkmk {o['rkmk']} "
