@@ -334,7 +334,8 @@ def cmd_list(args) -> int:
     for s in splittings():
         print(f"  {s.name:17s} stages {s.stages:2d}  order {s.order}  {s.summary}")
     print("compositions (integrator.compose / --compose: S(gamma_s h) o ... o S(gamma_1 h) of "
-          "a symmetric tableau's step; the order with an order-2 step):")
+          "a symmetric step: a symmetric tableau with rkmk truncated, stormer-verlet when the step "
+          "reads g; the order with an order-2 step):")
     for c in compositions():
         print(f"  {c.name:17s} stages {c.stages:2d}  order {c.order}  {c.summary}")
     return 0
