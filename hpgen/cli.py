@@ -142,7 +142,8 @@ def _scheme_line(module_dir, args) -> str:
     import json
     from .api import read_model_text
     from .model.yamldoc import compose_document
-    o = json.loads((Path(module_dir) / "meta.json").read_text())["options"]
+    meta = json.loads((Path(module_dir) / "meta.json").read_text())
+    o = meta["options"]
     section = compose_document(read_model_text(args.model), args.model).data.get("integrator")
     section = section if isinstance(section, dict) else {}
     parts = ("tableau", "tau", "rkmk")
@@ -159,7 +160,7 @@ def _scheme_line(module_dir, args) -> str:
     if compose is not None:
         from .tableaus.composition import check_base, get_composition
         c = get_composition(compose)
-        check_base(o["tableau"])
+        check_base(o["tableau"], rkmk=o["rkmk"], step_uses_g=meta["step_uses_g"])
         src.append(f"composed {c.name}: {c.stages} substeps, order {c.order}"
                    f"{' (--compose)' if getattr(args, 'compose', None) else ' (the model)'}")
     return (f"scheme: tableau {o['tableau']}, tau {o['tau']}, rkmk {o['rkmk']} "
@@ -333,7 +334,8 @@ def cmd_list(args) -> int:
     for s in splittings():
         print(f"  {s.name:17s} stages {s.stages:2d}  order {s.order}  {s.summary}")
     print("compositions (integrator.compose / --compose: S(gamma_s h) o ... o S(gamma_1 h) of "
-          "a symmetric tableau's step; the order with an order-2 step):")
+          "a symmetric step: a symmetric tableau with rkmk truncated, stormer-verlet when the step "
+          "reads g; the order with an order-2 step):")
     for c in compositions():
         print(f"  {c.name:17s} stages {c.stages:2d}  order {c.order}  {c.summary}")
     return 0

@@ -160,6 +160,7 @@ def load(path, backend=None, *, cc=None, cflags=None, compose=None) -> Integrato
     if compose is not None:
         from ..tableaus.composition import check_base, get_composition
         composition = get_composition(compose)
-        check_base(meta["options"]["tableau"])
+        check_base(meta["options"]["tableau"], rkmk=meta["options"]["rkmk"],
+                   step_uses_g=meta["step_uses_g"])
         impl.compose = composition.gammas
     return Integrator(meta, impl, module_dir, composition)

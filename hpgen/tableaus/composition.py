@@ -1,8 +1,8 @@
 """The catalog of compositions of a compiled symmetric step.
 
 A composition ``c`` with coefficients gamma_1 .. gamma_s (symmetric, summing to 1) turns the
-module's step S(h) (a symmetric implicit scheme: a symmetric tableau with exact RKMK steps)
-into the step
+module's step S(h) (a symmetric implicit scheme: a symmetric tableau with truncated RKMK
+steps, see check_base) into the step
 
     Phi(h) = S(gamma_s h) o ... o S(gamma_1 h),
 
@@ -12,9 +12,11 @@ given (Hairer, Lubich, Wanner, Geometric Numerical Integration, 2nd ed., sec. V.
 coefficients are those of the splitting catalog (hpgen.splitting.coefficients): one table.
 
 Refused with one line (field ``integrator.compose``): an unknown name, more than
-MAX_STAGES stages (the C run keeps one predictor offset per substep in a fixed array), a base
-scheme that is not symmetric (a non-symmetric tableau, an explicit splitting scheme). Standard library plus mpmath only (``hpgen list`` and the runtime's
-loader read it).
+MAX_STAGES stages (the C run keeps one predictor offset per substep in a fixed array), and a
+base step that is not symmetric (check_base): a non-symmetric tableau, an explicit splitting
+scheme, ``rkmk: exact``, and a tableau with a stage point inside the step when the step
+depends on g. Standard library plus mpmath only (``hpgen list`` and the runtime's loader read
+it).
 """
 from __future__ import annotations
 
@@ -79,13 +81,21 @@ def is_symmetric_tableau(A, b, tol: float = SYMMETRY_TOL) -> bool:
         for i in range(s) for j in range(s))
 
 
-def check_base(tableau: str) -> None:
-    """ModelError (field integrator.compose) unless the module's tableau (a catalog name) is
-    symmetric: a composition of a non-symmetric step does not raise its order. With
-    rkmk: truncated a symmetric tableau's step is symmetric (the chart maps satisfy
-    tau(-x) = tau(x)^-1; tests/property/test_composition.py checks step(-h) o step(h) = id);
-    with rkmk: exact it is not when l depends on g (docs/numerics.md, compositions), which
-    this check does not see: `hpgen check --compose` measures S(-h) S(h) - id."""
+def check_base(tableau: str, *, rkmk: str, step_uses_g: bool) -> None:
+    """ModelError (field integrator.compose) unless the module's step S(h) is symmetric,
+    S(-h) o S(h) = id: a composition of a non-symmetric step does not raise its order.
+    ``tableau`` is the module's catalog name, ``rkmk`` its RKMK constraint, ``step_uses_g``
+    meta.json's flag (the residual or the momentum update depends on g: l, a force or a
+    constraint depends on g).
+
+    Symmetric, and accepted: a symmetric tableau with rkmk: truncated (the chart maps
+    satisfy tau(-x) = tau(x)^-1), provided the stage points g_k tau(h sum_j a_ij Xi_j) seen
+    from the step's two ends coincide whenever the step evaluates them, i.e. the step does
+    not depend on g or every stage point is a node (c_i in {0, 1}: Stormer-Verlet).
+    Refused: rkmk: exact always (dtau^-1 of the stage chart points breaks the symmetry of
+    every tableau with two or more stages, even for a left-invariant l), and a symmetric
+    tableau with an interior stage point on a step that depends on g (docs/numerics.md,
+    compositions, for the defects measured)."""
     from ..splitting import is_splitting
     from . import TABLEAU_NAMES, get_tableau
     if is_splitting(tableau):
@@ -98,3 +108,12 @@ def check_base(tableau: str) -> None:
     if not is_symmetric_tableau(tab.A, tab.b):
         raise ModelError(f"the tableau {tableau} is not symmetric: a composition does not "
                          "raise its order", field=FIELD)
+    if rkmk != "truncated":
+        raise ModelError(f"rkmk {rkmk} does not keep the step of {tableau} symmetric "
+                         "(S(-h) S(h) != id), so a composition does not raise its order; "
+                         "use rkmk: truncated", field=FIELD)
+    if step_uses_g and any(0.0 < c < 1.0 for c in tab.c):
+        raise ModelError(f"the step of {tableau} is not symmetric on a model whose step "
+                         "depends on g (a stage point inside the step), so a composition "
+                         "does not raise its order; use tableau: stormer-verlet with rkmk: "
+                         "truncated", field=FIELD)

@@ -4,9 +4,10 @@
 - Composed: Stormer-Verlet (cay, truncated) composed by suzuki4 on the heavy top is order 4
   (observed slope within ORDER_TOL of 4 against DOP853), symplectic (the product of the
   substeps' Jacobians, relative defect within the check's round-off bound) and its base step
-  symmetric (S(-h) S(h) = id to round-off); with the exact RKMK constraint the base step is
-  not symmetric and the check fails on it. A non-symmetric tableau or a splitting base, or
-  the rkmk-rk4 scheme with a composition, is refused in one line (CLI exit 2).
+  symmetric (S(-h) S(h) = id to round-off). With the exact RKMK constraint the base step is
+  not symmetric (measured here on the plain step), so a composition of it is refused, as are
+  a non-symmetric tableau, a splitting base and the rkmk-rk4 scheme with a composition: in
+  one line (CLI exit 2).
 - Constrained (four-bar linkage, pendulum chain N = 3): the constraint residuals max|phi| and
   max|Phi xi| at round-off (<= CONSTRAINT_TOL = 1e-12), order 2 by self-convergence,
   symplectic on the tangent space of the constraint manifold; off the manifold (all of
@@ -36,17 +37,43 @@ def test_composed_check_is_order_four_symplectic_and_symmetric(cache_dir):
     assert r["symmetry"]["defect"] < 1e-14
 
 
-def test_composed_check_fails_on_a_non_symmetric_base(cache_dir):
-    """Stormer-Verlet with the exact RKMK constraint on the heavy top: S(-h) S(h) differs
-    from the identity by O(h^4) (4e-6 at h = 0.05), so suzuki4 of it is order 3, not 4: the
-    symmetry check fails (exit status 3 in the CLI) and the observed order shows it."""
+def _symmetry_defect(integ, h):
+    """max |S(-h) S(h) x - x| of the plain step from one heavy-top state."""
+    from scipy.spatial.transform import Rotation
+    g = Rotation.from_rotvec([0.3, 0.2, 0.1]).as_matrix()
+    p = np.asarray(integ.legendre(g, np.array([0.2, 1.0, 3.0])))
+    g1, p1 = integ.step(g, p, h)
+    g2, p2 = integ.step(g1, p1, -h)
+    return max(np.abs(g2 - g).max(), np.abs(p2 - p).max())
+
+
+def test_exact_rkmk_base_is_not_symmetric_and_is_refused(compile_model, cache_dir):
+    """The plain step S(h) at h = 0.05: Stormer-Verlet cay/exact on the heavy top misses
+    S(-h) S(h) = id by O(h^4) (4e-4 at h = 0.05, 2.6e-5 at 0.025), Gauss 2 exp/exact on the
+    free body (l left-invariant) by O(h^6) (2e-10); cay/truncated Stormer-Verlet on the
+    heavy top is symmetric to round-off. So compose refuses rkmk: exact, in one line."""
     from hpgen.analysis.check import run_check
-    r = run_check(EXAMPLES / "heavy_top.yaml", tableau="stormer-verlet", tau="cay",
-                  rkmk="exact", compose="suzuki4", h=0.05, steps=10, order_horizon=1.0,
-                  cache_dir=cache_dir, n_states=1)
-    assert r["checks"]["symmetric"] is False and not r["passed"]
-    assert r["symmetry"]["defect"] > 1e-7
-    assert r["order"]["refined"]["observed"][-1] < 3.2
+    from hpgen.cli import main
+    top = EXAMPLES / "heavy_top.yaml"
+    exact = compile_model(top, tableau="stormer-verlet", tau="cay", rkmk="exact",
+                          backend="python")
+    truncated = compile_model(top, tableau="stormer-verlet", tau="cay", rkmk="truncated",
+                              backend="python")
+    free = compile_model(EXAMPLES / "free_rigid_body.yaml", tableau="gauss2", tau="exp",
+                         rkmk="exact", backend="python")
+    d1, d2 = _symmetry_defect(exact, 0.05), _symmetry_defect(exact, 0.025)
+    assert d1 > 1e-6 and abs(np.log2(d1 / d2) - 4) < 0.5, (d1, d2)
+    assert _symmetry_defect(free, 0.05) > 1e-11
+    assert _symmetry_defect(truncated, 0.05) < 1e-14
+    with pytest.raises(ModelError, match="integrator.compose: rkmk exact does not keep the "
+                                         "step of stormer-verlet symmetric"):
+        run_check(top, tableau="stormer-verlet", tau="cay", rkmk="exact", compose="suzuki4",
+                  h=0.05, steps=10, cache_dir=cache_dir, n_states=1)
+    with pytest.raises(ModelError, match="use rkmk: truncated"):
+        compile_model(EXAMPLES / "free_rigid_body.yaml", tableau="gauss2", rkmk="exact",
+                      compose="suzuki4")
+    assert main(["run", str(top), "--compose", "suzuki4", "--steps", "4", "--out",
+                 str(cache_dir / "x.npz"), "--cache-dir", str(cache_dir)]) == 2
 
 
 def test_composed_check_refusals(cache_dir, capsys):

@@ -19,8 +19,9 @@ from hpgen.bench.multibody import chain, reference
 from hpgen.errors import ModelError
 from test_constraints import CHAIN, MODEL, _initial, _reference_state, constraint_residuals
 
-# the heavy top with a Poincare section (tests/integration/test_sections.py): nz = 9 <=
-# UNROLL_MAX, so the two backends agree bitwise
+# the heavy top with a Poincare section (tests/integration/test_sections.py), composed from
+# Stormer-Verlet cay/truncated (its step symmetric though l depends on g): nz <= UNROLL_MAX,
+# so the two backends agree bitwise
 HEAVY_TOP = """
 name: heavy_top_section
 group: SO3
@@ -115,7 +116,8 @@ def test_composed_energy_bounded(compile_model):
 
 @pytest.fixture(scope="module")
 def top(compile_model):
-    return {b: compile_model(HEAVY_TOP, backend=b, tableau="gauss2", compose="suzuki4")
+    return {b: compile_model(HEAVY_TOP, backend=b, tableau="stormer-verlet", tau="cay",
+                            rkmk="truncated", compose="suzuki4")
             for b in ("c", "python")}
 
 
@@ -203,11 +205,17 @@ def test_composed_linearize_is_the_product_of_the_substep_partials(top):
 
 def test_non_symmetric_or_unknown_bases_are_refused(compile_model):
     from hpgen.tableaus.composition import check_base
-    for tab, what in (("euler-backward", "not symmetric"), ("split4-yoshida", "already a "
-                                                                               "composition")):
+    for tab, rkmk, uses_g, what in (
+            ("euler-backward", "truncated", False, "not symmetric"),
+            ("split4-yoshida", "truncated", False, "already a composition"),
+            ("gauss2", "exact", False, "use rkmk: truncated"),
+            ("stormer-verlet", "exact", True, "use rkmk: truncated"),
+            ("midpoint", "truncated", True, "use tableau: stormer-verlet")):
         with pytest.raises(ModelError) as info:
-            check_base(tab)
+            check_base(tab, rkmk=rkmk, step_uses_g=uses_g)
         assert what in str(info.value) and "\n" not in str(info.value)
+    for tab, uses_g in (("stormer-verlet", True), ("gauss2", False), ("midpoint", False)):
+        check_base(tab, rkmk="truncated", step_uses_g=uses_g)
     with pytest.raises(ModelError, match="option compose: expected one of yoshida4"):
         compile_model(MODEL, compose="rk4")
     with pytest.raises(ModelError, match="integrator.compose: the tableau euler-forward is "
@@ -220,12 +228,15 @@ def test_cli_compose_and_list(tmp_path, cache_dir):
     from hpgen.cli import main
     out = tmp_path / "ht.npz"
     assert main(["run", str(ROOT / "examples" / "heavy_top.yaml"), "--compose", "yoshida4",
-                 "--steps", "40", "--out", str(out), "--cache-dir", str(cache_dir),
+                 "--tableau", "stormer-verlet", "--rkmk", "truncated", "--steps", "40", "--out", str(out), "--cache-dir", str(cache_dir),
                  "--no-progress"]) == 0
     assert out.exists()
     assert main(["run", str(ROOT / "examples" / "heavy_top.yaml"), "--tableau", "euler-forward",
                  "--compose", "yoshida4", "--steps", "4", "--out", str(out),
                  "--cache-dir", str(cache_dir)]) == 2
+    # the model's gauss2 / exp / exact: its step is not symmetric
+    assert main(["run", str(ROOT / "examples" / "heavy_top.yaml"), "--compose", "yoshida4",
+                 "--steps", "4", "--out", str(out), "--cache-dir", str(cache_dir)]) == 2
 
 
 def test_composed_run_snapshot_continues_bitwise(top):

@@ -1,11 +1,11 @@
 """Integrator.linearize on composed steps, and linearize's Newton starts
 (hpgen.runtime.linearize, hpgen/runtime/c/hpgen_linearize.c).
 
-- Composed step Phi(h) = S(gamma_s h) o ... o S(gamma_1 h) (suzuki4 on gauss2): the C call
+- Composed step Phi(h) = S(gamma_s h) o ... o S(gamma_1 h) (suzuki4 on Stormer-Verlet cay/truncated, a symmetric step): the C call
   (chain rule over the substeps inside hpgen_linearize) equals the product of the substep
   partials built here from the kernels (each substep by full Newton from the guess kernel:
   A = A_s ... A_1, B = sum_i A_s ... A_(i+1) B_i) and the Python backend's loop.
-  Tolerances: the runs' z agree bitwise between backends (nz = 9 <= UNROLL_MAX), so C and
+  Tolerances: the runs' z agree bitwise between backends (nz = 3 <= UNROLL_MAX), so C and
   Python differ by the solve's round-off, cond(J) ulp |A| ~ 1e-14: 1e-12 relative; the
   reference's z differs from the run's by the Newton tolerance (1e-14 (1 + |z|)), which moves
   A by |dA/dz| 1e-14: 1e-11 relative.
@@ -48,8 +48,8 @@ _INTEG = {}
 def _integ(compile_model, text, backend, compose="suzuki4"):
     key = (text, backend, compose)
     if key not in _INTEG:
-        _INTEG[key] = compile_model(text, backend=backend, tableau="gauss2", tau="cay",
-                                    rkmk="exact", compose=compose)
+        _INTEG[key] = compile_model(text, backend=backend, tableau="stormer-verlet",
+                                    tau="cay", rkmk="truncated", compose=compose)
     return _INTEG[key]
 
 
@@ -127,4 +127,4 @@ def test_linearize_takes_the_runs_steps_with_its_predictor(compile_model, compos
         cold = sum(_cold_product(integ, traj, k)[2] for k in range(STEPS))
         print(f"full Newton iterations over {STEPS} composed steps: from the predictor "
               f"{full_its['c']}, from the guess kernel {cold}")
-        assert full_its["c"] == full_its["python"] < 0.8 * cold
+        assert full_its["c"] == full_its["python"] < cold
