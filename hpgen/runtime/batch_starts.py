@@ -1,0 +1,36 @@
+"""The starts of an explicit closed module's ensemble with one shared g0 (the common case
+of ``Engine.prepare_batch``): held as arrays, g0 flat column-major (n*n,) and the members'
+momenta (B, d), each member's RunStart (hpgen.runtime.engine) made only when asked for.
+An ensemble call that takes the starts as arrays (hpgen.runtime.states.simulate_batch)
+reads ``arrays()`` and makes none. numpy and the standard library only.
+"""
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import replace
+from typing import Any
+
+import numpy as np
+
+
+class ExplicitStarts(Sequence):
+    """B RunStarts sharing h, steps, every, options and g0: member b is ``first`` with
+    mu0 = mu[b] and z0 a copy of it (an explicit step's Newton start is its momentum), as
+    Engine.start makes it; ``first`` is member 0's (its mu0 a row of ``mu``)."""
+
+    def __init__(self, first: Any, gf: np.ndarray, mu: np.ndarray):
+        self.first, self.gf, self.mu = first, gf, mu
+
+    def __len__(self) -> int:
+        return len(self.mu)
+
+    def __getitem__(self, b):  # type: ignore[override]
+        if isinstance(b, slice):
+            return [self[i] for i in range(*b.indices(len(self)))]
+        row = self.mu[b]
+        return replace(self.first, mu0=row, z0=row.copy())
+
+    def arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(g0s (B, n*n), mu0s (B, d), z0s (B, d)): the members' starts, one row each."""
+        B = len(self.mu)
+        return np.broadcast_to(self.gf, (B, len(self.gf))), self.mu, self.mu
