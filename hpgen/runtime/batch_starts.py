@@ -7,7 +7,6 @@ reads ``arrays()`` and makes none. numpy and the standard library only.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -20,15 +19,28 @@ class ExplicitStarts(Sequence):
 
     def __init__(self, first: Any, gf: np.ndarray, mu: np.ndarray):
         self.first, self.gf, self.mu = first, gf, mu
+        self._made: list | None = None
 
     def __len__(self) -> int:
         return len(self.mu)
 
     def __getitem__(self, b):  # type: ignore[override]
-        if isinstance(b, slice):
-            return [self[i] for i in range(*b.indices(len(self)))]
-        row = self.mu[b]
-        return replace(self.first, mu0=row, z0=row.copy())
+        return self._members()[b]
+
+    def __iter__(self):
+        return iter(self._members())
+
+    def _members(self) -> list:
+        """The B RunStarts, made on the first access (``first``'s fields, a frozen
+        dataclass's, copied without its per-field setattr)."""
+        if self._made is None:
+            cls, fields, new, made = type(self.first), self.first.__dict__, object.__new__, []
+            for row in self.mu:
+                s = new(cls)
+                s.__dict__.update(fields, mu0=row, z0=row.copy())
+                made.append(s)
+            self._made = made
+        return self._made
 
     def arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(g0s (B, n*n), mu0s (B, d), z0s (B, d)): the members' starts, one row each."""
