@@ -25,6 +25,11 @@ class ExplicitStarts(Sequence):
         return len(self.mu)
 
     def __getitem__(self, b):  # type: ignore[override]
+        if self._made is None and not isinstance(b, slice):
+            row = self.mu[b]            # one member (e.g. Ensemble.inputs' look at member 0)
+            s = object.__new__(type(self.first))
+            s.__dict__.update(self.first.__dict__, mu0=row, z0=row.copy())
+            return s
         return self._members()[b]
 
     def __iter__(self):
