@@ -8,6 +8,7 @@ library and numpy only.
 from __future__ import annotations
 
 import ctypes
+import weakref
 
 import numpy as np
 
@@ -53,6 +54,22 @@ def _rows(a, B: int, size: int, what: str) -> np.ndarray:
     return arr
 
 
+_RUN_INIT: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _run_init(cb):
+    """hpgen_run_init of cb's library through a PyDLL handle (made once per library): a
+    call of well under a microsecond that keeps the GIL, where a CDLL call releases and
+    takes it back (hpgen.runtime.prologue calls it the same way)."""
+    fn = _RUN_INIT.get(cb.lib)
+    if fn is None:
+        py = ctypes.PyDLL(str(cb.library), handle=cb.lib._handle)   # (no second dlopen)
+        fn = py.hpgen_run_init
+        fn.argtypes, fn.restype = [ctypes.c_void_p] * 4, None
+        _RUN_INIT[cb.lib] = fn
+    return fn
+
+
 def batch_runs(cb, g0s, p0s, z0s, inputs=None):
     """(buffer, its address): B C runs, run b started at (g0s[b], p0s[b]), z0s[b] (flat,
     g column-major), with inputs[b] (StepInputs) for an open module. The starts are read
@@ -63,7 +80,7 @@ def batch_runs(cb, g0s, p0s, z0s, inputs=None):
     runs = ctypes.create_string_buffer(rs * B)
     base = ctypes.addressof(runs)
     lib, keep = cb.lib, []
-    init, ga, pa, za = lib.hpgen_run_init, G.ctypes.data, P.ctypes.data, Z.ctypes.data
+    init, ga, pa, za = _run_init(cb), G.ctypes.data, P.ctypes.data, Z.ctypes.data
     for b in range(B):
         init(base + b * rs, ga + 8 * nn * b, pa + 8 * d * b, za + 8 * cb.nz * b)
     if cb.compose:
