@@ -178,7 +178,8 @@ def ensembles(quick, h_at, e_sv):
     threads, with and without lanes: the whole call, and the stepping alone (a call of LONG
     times the steps less the same call with 0 steps, the per-member start and Trajectory,
     over LONG times the body-steps; also in process CPU time, all threads summed: the
-    wall time on free cores is about that over the threads)."""
+    wall time on free cores is about that over the threads), the whole call's CPU time, and
+    the call of 0 steps per body (the per-member start and Trajectory alone; wall and CPU)."""
     import hpgen
     path = ROOT / "examples" / "free_rigid_body.yaml"
     T, B = 10.0, 512 if quick else 2048
@@ -188,8 +189,8 @@ def ensembles(quick, h_at, e_sv):
     print(f"\n## Free-body ensembles, B = {B}, T = 10, at SV(h = 0.01)'s error {e_sv:.3g}\n")
     print("| scheme | h | lanes | threads | ns / body-step | ns / SV-eq. body-step | "
           "stepping alone: ns / body-step | ns / SV-eq. body-step | its CPU ns / SV-eq. "
-          "body-step |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          "body-step | whole call: CPU ns / SV-eq. body-step | 0 steps: us / body (CPU) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for name in ("split2", "split4-suzuki"):
         if name not in h_at:
             continue
@@ -199,14 +200,15 @@ def ensembles(quick, h_at, e_sv):
         for lanes in (True, False):
             for threads in (1, 2):
                 reps = 3 if quick else 5
-                (t, _), (t_0, c_0), (t_l, c_l) = (
+                (t, c), (t_0, c_0), (t_l, c_l) = (
                     _batch_time(integ, h, n, mu0, threads, lanes, reps)
                     for n in (steps, 0, LONG * steps))
                 ts, cs = (t_l - t_0) / LONG, (c_l - c_0) / LONG
                 print(f"| {name} | {h:.4g} | {'yes' if lanes else 'no'} | {threads} | "
                       f"{t / (B * steps) * 1e9:.1f} | {t / (B * T / 0.01) * 1e9:.2f} | "
                       f"{ts / (B * steps) * 1e9:.1f} | {ts / (B * T / 0.01) * 1e9:.2f} | "
-                      f"{cs / (B * T / 0.01) * 1e9:.2f} |")
+                      f"{cs / (B * T / 0.01) * 1e9:.2f} | {c / (B * T / 0.01) * 1e9:.2f} | "
+                      f"{t_0 / B * 1e6:.2f} ({c_0 / B * 1e6:.2f}) |")
 
 
 def _batch_time(integ, h, steps, mu0, threads, lanes, reps):

@@ -8,12 +8,12 @@ library and numpy only.
 from __future__ import annotations
 
 import ctypes
+import weakref
 
 import numpy as np
 
 from .. import abi
 from . import loop
-from .backends import _flat
 from .cstructs import _Options, _Status
 
 
@@ -42,27 +42,79 @@ def _over_threads(B: int, threads: int, work, bar=None, align: int = 1) -> None:
         list(pool.map(run, slices))
 
 
+def _rows(a, B: int, size: int, what: str) -> np.ndarray:
+    """``a`` (B sequences or arrays of ``size`` values) as one C-contiguous (B, size) float64
+    array; ValueError naming ``what`` for another shape."""
+    arr = np.ascontiguousarray(a, dtype=np.float64)
+    if B == 0:
+        return np.zeros((0, size))
+    if arr.shape != (B, size):
+        raise ValueError(f"{what}: expected {B} flat arrays of {size} values, got shape "
+                         f"{arr.shape}")
+    return arr
+
+
+_RUN_INIT: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _run_init(cb):
+    """hpgen_run_init of cb's library through a PyDLL handle (made once per library): a
+    call of well under a microsecond that keeps the GIL, where a CDLL call releases and
+    takes it back (hpgen.runtime.prologue calls it the same way)."""
+    fn = _RUN_INIT.get(cb.lib)
+    if fn is None:
+        py = ctypes.PyDLL(str(cb.library), handle=cb.lib._handle)   # (no second dlopen)
+        fn = py.hpgen_run_init
+        fn.argtypes, fn.restype = [ctypes.c_void_p] * 4, None
+        _RUN_INIT[cb.lib] = fn
+    return fn
+
+
 def batch_runs(cb, g0s, p0s, z0s, inputs=None):
-    """(buffer, its address): B C runs, run b started at (g0s[b], p0s[b]), z0s[b], with
-    inputs[b] (StepInputs) for an open module."""
-    nn, d, B = cb.n * cb.n, cb.d, len(g0s)
-    runs = ctypes.create_string_buffer(cb.run_size * B)
+    """(buffer, its address): B C runs, run b started at (g0s[b], p0s[b]), z0s[b] (flat,
+    g column-major), with inputs[b] (StepInputs) for an open module. The starts are read
+    from three (B, size) arrays, one hpgen_run_init per run at fixed offsets (no staging
+    copies); a composed step's substep fractions are one array for all runs."""
+    nn, d, B, rs = cb.n * cb.n, cb.d, len(g0s), cb.run_size
+    G, P, Z = _rows(g0s, B, nn, "g0"), _rows(p0s, B, d, "p0"), _rows(z0s, B, cb.nz, "z0")
+    runs = ctypes.create_string_buffer(rs * B)
     base = ctypes.addressof(runs)
-    keep = []
+    lib, keep = cb.lib, []
+    init, ga, pa, za = _run_init(cb), G.ctypes.data, P.ctypes.data, Z.ctypes.data
     for b in range(B):
-        g0, p0 = _flat(g0s[b], nn, "g0"), _flat(p0s[b], d, "p0")
-        cb.init_run(base + b * cb.run_size, g0, p0, _flat(z0s[b], cb.nz, "z0"))
-        if cb.open:
-            keep.append(cb.set_inputs(base + b * cb.run_size, inputs[b]))
+        init(base + b * rs, ga + 8 * nn * b, pa + 8 * d * b, za + 8 * cb.nz * b)
+    if cb.compose:
+        gam = np.array(cb.compose, dtype=np.float64)
+        compose, cs, gp = lib.hpgen_run_set_compose, len(gam), gam.ctypes.data
+        for b in range(B):
+            if compose(base + b * rs, cs, gp) != 0:
+                raise ValueError(f"a composed step of {cs} substeps: this library takes at "
+                                 "most HPGEN_CS_MAX")
+    if cb.open:
+        keep = [cb.set_inputs(base + b * rs, inputs[b]) for b in range(B)]
     runs.keep = keep
+    runs.starts = (G, P)
     return runs, base
+
+
+def statuses(sts) -> np.ndarray:
+    """The ctypes array of B _Status as a (B,) structured numpy array (a copy), one field
+    per abi.STATUS_FIELDS; ``status(a, b)`` is member b's dict."""
+    return np.ctypeslib.as_array(sts).copy()
+
+
+def status(a: np.ndarray, b: int) -> dict:
+    """Member b's status dict (Python numbers, as _Status.as_dict) of ``statuses``' array."""
+    row = a[b]
+    return {name: row[name].item() for name, _ in abi.STATUS_FIELDS}
 
 
 def simulate_batch(cb, g0s, p0s, h, z0s, steps, every, opts, threads, inputs=None,
                    bar=None, lanes=True):
     """B independent runs; each thread advances a contiguous slice of them with one C
     call (ctypes releases the GIL). Returns (done (B,), g_rec (B, K, nn), p_rec (B, K, d),
-    statuses); K = steps // every + 1 including step 0; rows after a failure are 0.
+    statuses (B,) structured array, fields abi.STATUS_FIELDS: ``status(sts, b)`` is run b's
+    dict); K = steps // every + 1 including step 0; rows after a failure are 0.
     With ``lanes`` and a module that has lane code (``cb.lanes`` > 0), the C call is
     hpgen_advance_batch_lanes (L bodies a call, the plain or the composed step, bitwise the
     same results), else hpgen_advance_batch."""
@@ -70,8 +122,7 @@ def simulate_batch(cb, g0s, p0s, h, z0s, steps, every, opts, threads, inputs=Non
     K = steps // every + 1
     runs, base = batch_runs(cb, g0s, p0s, z0s, inputs)
     g_rec, p_rec = np.zeros((B, K, nn)), np.zeros((B, K, d))
-    g_rec[:, 0] = np.asarray(g0s, dtype=np.float64).reshape(B, nn)
-    p_rec[:, 0] = np.asarray(p0s, dtype=np.float64).reshape(B, d)
+    g_rec[:, 0], p_rec[:, 0] = runs.starts
     sts, o = (_Status * B)(), _Options.of(opts)
 
     use_lanes = bool(lanes and cb.lanes)
@@ -84,8 +135,8 @@ def simulate_batch(cb, g0s, p0s, h, z0s, steps, every, opts, threads, inputs=Non
                 ctypes.byref(sts, lo * ctypes.sizeof(_Status)))
 
     _over_threads(B, threads, work, bar, cb.lanes if use_lanes else 1)
-    done = np.array([s.step for s in sts])
-    return done, g_rec, p_rec, [s.as_dict() for s in sts]
+    out = statuses(sts)
+    return out["step"].copy(), g_rec, p_rec, out
 
 
 def record_batch(cb, g0s, p0s, h, z0s, steps, every, opts, threads, bar=None,

@@ -32,13 +32,14 @@ from __future__ import annotations
 import os
 import time
 from dataclasses import dataclass, replace
-from typing import Any, Iterator, Protocol
+from typing import Any, Iterator, Protocol, Sequence
 
 import numpy as np
 
 from .. import abi
 from ..errors import ArgumentError
 from .args import _array, _error, _int, _step_size, newton_options
+from .batch_starts import ExplicitStarts
 from .first_step import FirstStep
 from .inputs import StepInputs, batch_inputs, step_inputs
 from .newton import NewtonOptions
@@ -91,12 +92,13 @@ class RunStart:
 @dataclass(frozen=True, eq=False)
 class Ensemble:
     """The checked arguments of an ensemble and its members' RunStarts (each with the
-    shared h, steps, every and options)."""
+    shared h, steps, every and options; a list, or hpgen.runtime.batch_starts'
+    ExplicitStarts holding them as arrays)."""
     h: float
     steps: int
     every: int
     opts: NewtonOptions
-    members: list
+    members: Sequence
 
     @property
     def inputs(self) -> list | None:
@@ -244,13 +246,15 @@ class Engine:
         h = _step_size(a.h)
         steps, every = _int(a.steps, "steps", 0), _int(a.every, "every", 1)
         opts = self.options(a.newton)
-        return Ensemble(h, steps, every, opts, self.member_starts(a, h, steps, every, opts))
+        fast = self._explicit_starts(a, h, steps, every, opts)
+        return Ensemble(h, steps, every, opts, fast if fast is not None else
+                        self.member_starts(a, h, steps, every, opts))
 
     def member_starts(self, a: RunArgs, h, steps, every, opts) -> list:
         """prepare_batch's members, h, steps, every and the options checked already."""
         fast = self._explicit_starts(a, h, steps, every, opts)
         if fast is not None:
-            return fast
+            return list(fast)
         xi0, mu0 = a.xi0, a.mu0
         init = xi0 if xi0 is not None else mu0
         B = len(init) if hasattr(init, "__len__") else None
@@ -260,7 +264,7 @@ class Engine:
                            None if mu0 is None else mu0[b], h, steps, every, opts,
                            None if inputs is None else inputs[b]) for b in range(len(G0))]
 
-    def _explicit_starts(self, a: RunArgs, h, steps, every, opts) -> list | None:
+    def _explicit_starts(self, a: RunArgs, h, steps, every, opts) -> ExplicitStarts | None:
         """member_starts of an explicit closed module in the common case, a (B, d) float64
         mu0 of finite rows and one shared (n, n) float64 g0 on the group: g0 checked once,
         each start (g0, mu0 row, z0 = the row) as ``start`` makes it; None for anything else
@@ -276,8 +280,9 @@ class Engine:
         gf = np.array(g, dtype=np.float64).ravel(order="F")
         if not float(self.backend.call("defect", gf)[0][0]) <= DEFECT_MAX:
             return None
-        return [RunStart(h, steps, every, opts, gf, row, None, row.copy())
-                for row in np.array(mu, dtype=np.float64)]
+        mu = np.array(mu, dtype=np.float64)
+        return ExplicitStarts(RunStart(h, steps, every, opts, gf, mu[0], None, mu[0].copy()),
+                              gf, mu)
 
     def _batch_g0(self, g0, xi0, mu0) -> np.ndarray:
         """g0 as (B, n, n), B the length of xi0 / mu0, checked."""

@@ -13,6 +13,8 @@ import numpy as np
 from .. import abi
 from . import loop
 from .args import _error, _fits, _int
+from .batch_starts import ExplicitStarts
+from .cbatch import status as cbatch_status
 from .engine import SLICE_FIRST, Engine, Part, RunArgs, RunStart, Sliced
 from .inputs import check_t0
 from .progress import bar as progress_bar
@@ -141,11 +143,37 @@ def simulate_batch(engine: Engine, a: RunArgs, threads=None, progress=None,
     runs, inputs = e.members, e.inputs
     _fits(len(runs) * (e.steps // e.every + 1), engine.n * engine.n + engine.d,
           "simulate_batch")
+    g0s, p0s, z0s = (runs.arrays() if isinstance(runs, ExplicitStarts) else
+                     ([s.g0 for s in runs], [s.mu0 for s in runs], [s.z0 for s in runs]))
     with progress_bar(len(runs), "simulate_batch", "member", progress) as bar:
         done, g_rec, p_rec, sts = engine.backend.simulate_batch(
-            [s.g0 for s in runs], [s.mu0 for s in runs], e.h, [s.z0 for s in runs], e.steps,
-            e.every, e.opts, threads, inputs, bar, lanes=bool(lanes))
-    t0 = check_t0(a.t0)
-    return [trajectory(engine, int(done[b]), g_rec[b], p_rec[b], sts[b], e.h, e.every,
-                       None if inputs is None else inputs[b], t0)
-            for b in range(len(runs))]
+            g0s, p0s, e.h, z0s, e.steps, e.every, e.opts, threads, inputs, bar,
+            lanes=bool(lanes))
+    return batch_trajectories(engine, done, g_rec, p_rec, sts, e.h, e.every, inputs,
+                              check_t0(a.t0))
+
+
+def batch_trajectories(engine: Engine, done, g_rec, p_rec, sts, h, every, inputs=None,
+                       t0=0.0) -> list:
+    """The B Trajectories of a batch's records g_rec (B, K, n*n, column-major), p_rec
+    (B, K, d) (record 0 the start) and statuses ``sts`` (hpgen.runtime.cbatch.statuses).
+    A member that finished has all K records: its g, mu and t are read-only views of three
+    arrays made once (the batch's g transposed to row-major, p_rec itself, one time axis
+    shared by the members; a member's arrays keep the batch's alive). A failed member's
+    Trajectory is made by ``trajectory`` (its records up to the failure, error, .partial)."""
+    B, K = g_rec.shape[:2]
+    n = engine.n
+    g_all = np.ascontiguousarray(g_rec.reshape(B, K, n, n).transpose(0, 1, 3, 2))
+    for arr in (g_all, p_rec):
+        arr.setflags(write=False)
+    t = np.arange(0, K * every, every) * h
+    t = t0 + t if t0 else t
+    t.setflags(write=False)
+    codes = sts["code"]
+    out = Trajectory.many({"t": t, "h": h, "every": every, "integrator": engine.owner},
+                          list(g_all), list(p_rec), sts["total_iterations"].tolist(),
+                          sts["jacobians"].tolist(), [None] * B if inputs is None else inputs)
+    for b in np.flatnonzero(codes != abi.OK).tolist():
+        out[b] = trajectory(engine, int(done[b]), g_rec[b], p_rec[b], cbatch_status(sts, b),
+                            h, every, None if inputs is None else inputs[b], t0)
+    return out

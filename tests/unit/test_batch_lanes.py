@@ -112,7 +112,8 @@ def test_backend_outputs_and_statuses_equal(body):
                                           None, bar, lanes=use) for use in (True, False))
         assert np.array_equal(on[0], off[0])
         assert np.array_equal(on[1], off[1]) and np.array_equal(on[2], off[2])
-        assert on[3] == off[3]
+        assert on[3].dtype.names == off[3].dtype.names
+        assert on[3].tolist() == off[3].tolist()
 
 
 @pytest.mark.parametrize("threads", [1, 2])

@@ -33,6 +33,7 @@ from hpgen.analysis.exact import free_rigid_body_attitude
 from hpgen.analysis.symplectic import GeneratedMap, ad_matrices, omega_matrix, \
     symplectic_defect
 from hpgen.errors import ArgumentError, ModelError
+from hpgen.runtime.engine import RunArgs
 from hpgen.splitting import SPLITTING_NAMES, get_splitting
 
 HEAVY_TOP, FREE_BODY = EXAMPLES / "heavy_top.yaml", EXAMPLES / "free_rigid_body.yaml"
@@ -243,9 +244,21 @@ def test_explicit_batch_start_checks_like_simulate(compile_model):
     integ = compile_model(HEAVY_TOP, tableau="split2")
     g0, mus = _g0(), np.array([[0.2, 5.0, 18.0], [0.3, 4.0, 17.0]])
     batch = integ.simulate_batch(g0, 0.05, 20, mu0=mus, every=5, threads=1)
+    each = integ.simulate_batch(np.array([g0, g0]), 0.05, 20, mu0=mus, every=5, threads=1)
     for b in range(2):
         one = integ.simulate(g0, 0.05, 20, mu0=mus[b], every=5)
-        assert np.array_equal(batch[b].g, one.g) and np.array_equal(batch[b].mu, one.mu)
+        for got in (batch[b], each[b]):     # the starts as arrays, and member by member
+            assert np.array_equal(got.g, one.g) and np.array_equal(got.mu, one.mu)
+            assert np.array_equal(got.t, one.t) and got.error is None
+            assert not (got.g.flags.writeable or got.mu.flags.writeable
+                        or got.t.flags.writeable)
+    starts = integ.engine.prepare_batch(RunArgs(g0, 0.05, 20, mu0=mus, every=5)).members
+    listed = integ.engine.member_starts(RunArgs(g0, 0.05, 20, mu0=mus), 0.05, 20, 5,
+                                        integ.engine.options(None))
+    assert len(starts) == len(listed) == 2
+    for s, t in zip([*starts[:1], starts[1]], listed):
+        assert np.array_equal(s.mu0, t.mu0) and np.array_equal(s.z0, t.z0)
+        assert np.array_equal(s.g0, t.g0) and (s.h, s.steps, s.every) == (t.h, t.steps, 5)
     bad = mus.copy()
     bad[1, 2] = np.nan
     with pytest.raises(ArgumentError) as e:
