@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import re
 
-from .csource import LAZY_BEGIN, _functions
+from .csource import LAZY_BEGIN, LAZY_END, _functions
 
 #: translation units of a family module (the machines hpgen targets have 2 or more cores)
 PARTS = 2
@@ -97,10 +97,13 @@ def split_casadi_code(code: str, parts: int = PARTS) -> str:
     # (between LAZY_BEGIN and its end, csource.guard_lazy_functions) onto the result
     costs: dict[bool, dict[str, float]] = {False: {}, True: {}}
     fixed = 0.0
+    lazy_functions = set()
     for f, (first, last) in extents.items():
         a, b = blocks[f]
         body, cold = "\n".join(lines[a + 1:b]), lines[first] == "HPGEN_COLD_BEGIN"
         lazy = first > 0 and lines[first - 1] == LAZY_BEGIN
+        if lazy:
+            lazy_functions.add(f)
         cost = (b - a + LOOP_COST * len(_LOOP.findall(body))) * (COLD_WEIGHT if cold else 1.0)
         if b - a >= MIN_LINES and (cold or "for (" not in body):
             costs[lazy][f] = cost
@@ -149,8 +152,10 @@ def split_casadi_code(code: str, parts: int = PARTS) -> str:
         first = blocks[f][0]
         lines[first] = "HPGEN_SHARED " + lines[first][len("static "):]
     start = min(a for a, _ in extents.values())
-    protos = [lines[blocks[f][0]].rstrip(" {") + ";"
-              for f in sorted(shared, key=lambda f: blocks[f][0])]
+    # a lazily built library's functions are declared only where they are defined
+    protos = [line for f in sorted(shared, key=lambda f: blocks[f][0])
+              for line in ([LAZY_BEGIN, lines[blocks[f][0]].rstrip(" {") + ";", LAZY_END]
+                           if f in lazy_functions else [lines[blocks[f][0]].rstrip(" {") + ";"])]
     out = [MACROS.format(parts=parts).rstrip("\n")]
     current: frozenset | None = None
     for j, line in enumerate(lines):

@@ -109,12 +109,17 @@ def c_kernel_context(kernel, nz_variant: bool = False) -> dict:
     also a wrapper hpgen_k_<name>_nz writing every output's structural nonzeros."""
     f = kernel.function
     fused = C_FROM_FUSED.get(kernel.name)
+    outputs = [_arg(f, i, True, kernel.outputs[i]) for i in range(f.n_out())]
+    if nz_variant and kernel.name == "update":
+        # the runtime packs g only when g_{k+1} is sparse and p_{k+1} dense (HPGEN_G_PACKED
+        # in hpgen_newton.c); otherwise the variant would be an unused static function
+        nz_variant = not outputs[0]["dense"] and all(a["dense"] for a in outputs[1:])
     return {"name": kernel.name, "symbol": f.name(),
             # a sparse Newton matrix: hpgen_k_residual_jacobian_nz writes F and J's nonzeros
             "nz_variant": nz_variant,
             "fused": None if fused is None else {"name": fused[0], "output": fused[1]},
             "inputs": [_arg(f, i, False, kernel.inputs[i]) for i in range(f.n_in())],
-            "outputs": [_arg(f, i, True, kernel.outputs[i]) for i in range(f.n_out())],
+            "outputs": outputs,
             "work": work_sizes(f)}
 
 
@@ -219,6 +224,50 @@ def guard_lazy_functions(code: str, lazy_roots) -> str:
         if any(line.startswith(e) for e in entries):
             begin.add(j)
             end.add(j if line.count("{") == line.count("}") else lines.index("}", j))
+    out = []
+    for j, line in enumerate(lines):
+        if j in begin:
+            out.append(LAZY_BEGIN)
+        out.append(line)
+        if j in end:
+            out.append(LAZY_END)
+    return _guard_lazy_arrays(out)
+
+
+_ARRAY_DEF = re.compile(r"static const casadi_(?:int|real) (casadi_[sc][0-9]+)\[")
+_ARRAY_NAME = re.compile(r"\bcasadi_[sc][0-9]+\b")
+
+
+def _guard_lazy_arrays(lines: list[str]) -> str:
+    """The lines joined, with CasADi's constant arrays that only lazily built code uses
+    (between LAZY_BEGIN and LAZY_END) guarded as well: the step library would otherwise
+    carry them unused."""
+    outside: set[str] = set()
+    inside: set[str] = set()
+    defs: dict[str, tuple[int, int]] = {}
+    depth = 0
+    j = 0
+    while j < len(lines):
+        line = lines[j]
+        if line == LAZY_BEGIN:
+            depth += 1
+        elif line == LAZY_END:
+            depth -= 1
+        m = _ARRAY_DEF.match(line)
+        if m is not None and depth == 0:
+            end = j
+            while not lines[end].rstrip().endswith(";"):
+                end += 1
+            defs[m.group(1)] = (j, end)
+            j = end + 1
+            continue
+        if not line.startswith("#define "):         # the prefixing macros are not uses
+            (inside if depth else outside).update(_ARRAY_NAME.findall(line))
+        j += 1
+    lazy_only = {name: span for name, span in defs.items()
+                 if name in inside and name not in outside}
+    begin = {a for a, _ in lazy_only.values()}
+    end = {b for _, b in lazy_only.values()}
     out = []
     for j, line in enumerate(lines):
         if j in begin:

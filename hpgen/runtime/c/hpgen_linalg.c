@@ -47,11 +47,13 @@ static int hpgen_newton_fj(const double* z, const double* g, const double* p, co
     return hpgen_k_residual_jacobian_nz(z, g, p, hv, F, A + HPGEN_J_OFFSET);
 }
 
+#if !defined(HPGEN_WITH_LAZY) || HPGEN_WITH_LAZY   /* linearize only (hpgen_linearize.c) */
 static int hpgen_newton_j(const double* z, const double* g, const double* p, const double* hv,
                           double* A) {
     double F[HPGEN_NZ];
     return hpgen_k_residual_jacobian_nz(z, g, p, hv, F, A + HPGEN_J_OFFSET);
 }
+#endif
 
 #if HPGEN_SP_STATIC
 /* L U of J's nonzeros Jnz into X (the filled pattern), left-looking: column t of P J P^T,
@@ -164,10 +166,12 @@ static int hpgen_newton_fj(const double* z, const double* g, const double* p, co
     return hpgen_k_residual_jacobian(z, g, p, hv, F, A);
 }
 
+#if !defined(HPGEN_WITH_LAZY) || HPGEN_WITH_LAZY   /* linearize only (hpgen_linearize.c) */
 static int hpgen_newton_j(const double* z, const double* g, const double* p, const double* hv,
                           double* A) {
     return hpgen_kernel_jacobian(z, g, p, hv, A);
 }
+#endif
 
 /* The Newton matrix is kept as J^{-1} (explicit, column-major in A; piv is workspace): a
    simplified-Newton iteration then costs one matrix-vector product, NZ^2 independent
