@@ -74,11 +74,12 @@ def band(E, spec):
     return float(np.abs(E - E[0]).max() / (E[0] - chain.rest_potential(spec)))
 
 
-def hpgen_run(integ, spec, g0, xi0, h, steps, chunk=20_000):
+def hpgen_run(integ, spec, g0, xi0, h, steps, chunk=20_000, newton=None):
     """(seconds of stepping, energies at every node, (position, velocity) gaps, final
-    ChainState) of ``steps`` steps of h, streamed in chunks."""
+    ChainState) of ``steps`` steps of h, streamed in chunks (newton: NewtonOptions or None,
+    the module's default)."""
     energies, gaps, seconds = [], np.zeros(2), 0.0
-    stream = integ.stream(g0, h, steps, xi0=xi0, chunk=chunk)
+    stream = integ.stream(g0, h, steps, xi0=xi0, chunk=chunk, newton=newton)
     last = None
     while True:
         start = time.perf_counter()

@@ -35,17 +35,20 @@ sys.path.insert(0, str(ROOT / "benchmarks"))
 
 from chain_bench import band, hpgen_run  # noqa: E402
 from hpgen.bench.multibody import chain, hpgen_chain, reference  # noqa: E402
+from hpgen.runtime.newton import NewtonOptions  # noqa: E402
 
 
-def hpgen_rows(integ, label, spec, g0, xi0, hs, T, ref):
-    """Rows for ``integ`` at each h of ``hs``: runs to T (cost, band) and to 1 (error)."""
+def hpgen_rows(integ, label, spec, g0, xi0, hs, T, ref, newton=None):
+    """Rows for ``integ`` at each h of ``hs``: runs to T (cost, band) and to 1 (error);
+    newton: NewtonOptions or None (the module's default)."""
     rows = []
     for h in hs:
         steps = int(round(T / h))
-        sec, E, gaps, _ = hpgen_run(integ, spec, g0, xi0, h, steps)
-        its = integ.simulate(g0, h, min(steps, 200), xi0=xi0, every=200).newton_iterations
+        sec, E, gaps, _ = hpgen_run(integ, spec, g0, xi0, h, steps, newton=newton)
+        its = integ.simulate(g0, h, min(steps, 200), xi0=xi0, every=200,
+                              newton=newton).newton_iterations
         n1 = int(round(1.0 / h))
-        tr = integ.simulate(g0, 1.0 / n1, n1, xi0=xi0, every=n1)
+        tr = integ.simulate(g0, 1.0 / n1, n1, xi0=xi0, every=n1, newton=newton)
         last = hpgen_chain.from_hpgen(spec, tr.g[-1:], tr.xi()[-1:])[0]
         rows.append(dict(runner=label, h=h, cost=sec / T, band=band(E, spec),
                          error_T1=chain.trajectory_error(last, ref),
@@ -88,6 +91,8 @@ def main(argv=None):
     ap.add_argument("--long-h", type=float, default=1e-3)
     ap.add_argument("--long", default="suzuki4", help="the composition of the long run")
     ap.add_argument("--out", type=Path, default=Path("bench-chain-compose"))
+    ap.add_argument("--newton", choices=["default", "full", "simplified"], default="default",
+                    help="hpgen's Newton (default: the module's, full Newton for a sparse J)")
     args = ap.parse_args(argv)
     import hpgen
     try:
@@ -97,7 +102,9 @@ def main(argv=None):
         have_mujoco = False
         print("mujoco is not installed (pip install mujoco): MuJoCo RK4 skipped")
     args.out.mkdir(parents=True, exist_ok=True)
-    report = {"T": args.t, "N": []}
+    newton = None if args.newton == "default" else NewtonOptions(
+        simplified=args.newton == "simplified")
+    report = {"T": args.t, "N": [], "newton": args.newton}
     for n in args.n:
         spec = chain.ChainSpec(n)
         plain = hpgen.compile(hpgen_chain.MODEL, parameters={"N": n})
@@ -109,9 +116,9 @@ def main(argv=None):
         print(f"\nN = {n}, T = {args.t:g}\n\n| runner | h | ms of wall per simulated s | "
               "energy band / (E0 - V_rest) | error at T = 1 | Newton iterations / step |\n"
               "|---|---|---|---|---|---|", flush=True)
-        rows = hpgen_rows(plain, "hpgen SV", spec, g0, xi0, args.sv_h, args.t, ref)
-        rows += hpgen_rows(c4, f"hpgen SV o {args.c4}", spec, g0, xi0, args.c4_h, args.t, ref)
-        rows += hpgen_rows(c6, f"hpgen SV o {args.c6}", spec, g0, xi0, args.c6_h, args.t, ref)
+        rows = hpgen_rows(plain, "hpgen SV", spec, g0, xi0, args.sv_h, args.t, ref, newton)
+        rows += hpgen_rows(c4, f"hpgen SV o {args.c4}", spec, g0, xi0, args.c4_h, args.t, ref, newton)
+        rows += hpgen_rows(c6, f"hpgen SV o {args.c6}", spec, g0, xi0, args.c6_h, args.t, ref, newton)
         if have_mujoco:
             rows += mujoco_rows(spec, qpos, qvel, args.rk4_dt, args.t)
         entry = dict(N=n, rows=rows)
@@ -119,7 +126,8 @@ def main(argv=None):
             lc = c4 if args.long == args.c4 else hpgen.compile(
                 hpgen_chain.MODEL, parameters={"N": n}, compose=args.long)
             start = time.perf_counter()
-            sec, E, gaps, _ = hpgen_run(lc, spec, g0, xi0, args.long_h, args.long_steps)
+            sec, E, gaps, _ = hpgen_run(lc, spec, g0, xi0, args.long_h, args.long_steps,
+                                        newton=newton)
             entry["long"] = dict(runner=f"hpgen SV o {args.long}", h=args.long_h,
                                  steps=args.long_steps, band=band(E, spec), gaps=gaps.tolist(),
                                  us_per_step=1e6 * sec / args.long_steps,

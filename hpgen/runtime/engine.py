@@ -188,10 +188,13 @@ class Engine:
 
     @property
     def simplified_default(self) -> bool:
-        """True when simplified Newton pays: J costs > SIMPLIFIED_RATIO residuals, or J is
-        sparse (many bodies: its assembly and factorization cost several residuals)."""
+        """True when simplified Newton pays: J costs > SIMPLIFIED_RATIO residuals. A sparse J
+        (many bodies) defaults to full Newton: the kept J's rate-based stop leaves the joints'
+        velocity form at about KEEP_J_FLOOR instead of round-off, and from about 32 bodies the
+        predictor's start is far enough off that J is refreshed nearly every step anyway
+        (NewtonOptions(simplified=True) asks for it; docs/performance.md, many bodies)."""
         if self.meta.get("jacobian", {}).get("storage") == "sparse":
-            return True
+            return False
         k = self.meta["kernels"]
         cost = [k[n].get("instructions", 0) for n in ("jacobian", "residual")]
         return cost[0] > SIMPLIFIED_RATIO * cost[1]

@@ -264,8 +264,11 @@ def test_composed_run_snapshot_continues_bitwise(top):
 def test_composed_pendulum_chain_order(compile_model, name, order):
     """examples/pendulum_chain.yaml at N = 3 (the family model, the benchmark's start:
     hanging down, random joint rates) against the reference at T = 1, h = 0.01, 0.005,
-    0.0025; the joints' position and velocity gaps at round-off at every node."""
+    0.0025; the joints' position and velocity gaps at round-off at every node. Full Newton:
+    the sparse default (simplified, J kept) stops at KEEP_J_FLOOR (docs/numerics.md sec. 8),
+    which leaves the velocity form at ~1e-12 rather than round-off."""
     from hpgen.bench.multibody import hpgen_chain
+    from hpgen.runtime.newton import NewtonOptions
     spec = chain.ChainSpec(3)
     qpos, qvel = chain.initial_joint_state(spec)
     g0, xi0 = hpgen_chain.to_hpgen(spec, chain.from_joint(spec, qpos, qvel))
@@ -273,7 +276,8 @@ def test_composed_pendulum_chain_order(compile_model, name, order):
     integ = compile_model(hpgen_chain.MODEL, parameters={"N": 3}, compose=name)
     errs = []
     for h in (0.01, 0.005, 0.0025):
-        tr = integ.simulate(g0, h, int(round(1 / h)), xi0=xi0, every=1)
+        tr = integ.simulate(g0, h, int(round(1 / h)), xi0=xi0, every=1,
+                            newton=NewtonOptions(simplified=False))
         states = hpgen_chain.from_hpgen(spec, tr.g, tr.xi())
         errs.append(chain.trajectory_error(states[-1], ref))
         gaps = np.max([chain.constraint_residual(spec, s) for s in states], axis=0)
