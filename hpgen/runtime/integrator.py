@@ -70,7 +70,8 @@ class Integrator(RunOutputs):
 
     @property
     def simplified_default(self) -> bool:
-        """True when simplified Newton pays: J costs > SIMPLIFIED_RATIO residuals."""
+        """True when simplified Newton pays: J costs > SIMPLIFIED_RATIO residuals (a sparse J:
+        False, see Engine.simplified_default)."""
         return self.engine.simplified_default
 
     # ---- state maps (hpgen.runtime.state_maps) ------------------------------------------
