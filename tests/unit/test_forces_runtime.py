@@ -199,8 +199,10 @@ def test_c_and_python_agree(modules):
     b = modules["vehicle_c"].simulate(np.eye(4), 0.05, 300, **kw)
     assert np.abs(a.mu - b.mu).max() <= 1e-12 * np.abs(a.mu).max()
     assert np.abs(a.g - b.g).max() <= 1e-12 * np.abs(a.g).max()
+    # step solves with full Newton from the guess; a run's first step takes the run's Newton
+    # (simplified here): the two roots agree to the Newton tolerance (1e-14 (1 + |z|))
     g1, p1 = modules["vehicle_c"].step(np.eye(4), kw["mu0"], 0.05, u=U[0], t=0.1)
-    assert np.array_equal(p1, b.mu[1])
+    assert np.abs(p1 - b.mu[1]).max() <= 1e-13 * (1.0 + np.abs(p1).max())
 
 
 def test_parameter_sweep_in_one_batch(modules):
