@@ -6,7 +6,6 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from hpgen.errors import ModelError
 from hpgen.model import load_model_text
 from hpgen.model.fingerprint import normalized_model
 from conftest import model_error
