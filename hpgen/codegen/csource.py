@@ -171,6 +171,20 @@ def cold_functions(code: str, cold_roots) -> set[str]:
     return {f for f in blocks if f not in hot}
 
 
+def _wrapped(lines: list[str], begin: set[int], end: set[int], opening: str,
+             closing: str) -> list[str]:
+    """lines with ``opening`` before each line index in begin and ``closing`` after each in
+    end."""
+    out = []
+    for j, line in enumerate(lines):
+        if j in begin:
+            out.append(opening)
+        out.append(line)
+        if j in end:
+            out.append(closing)
+    return out
+
+
 def mark_cold_functions(code: str, cold_roots) -> str:
     """CasADi's C with each internal function that only the functions ``cold_roots`` (casadi
     names of top-level functions) reach (cold_functions) wrapped in HPGEN_COLD_BEGIN /
@@ -188,14 +202,7 @@ def mark_cold_functions(code: str, cold_roots) -> str:
             first -= 1
         begin.add(first)
         end.add(last)
-    out = []
-    for j, line in enumerate(lines):
-        if j in begin:
-            out.append("HPGEN_COLD_BEGIN")
-        out.append(line)
-        if j in end:
-            out.append("HPGEN_COLD_END")
-    return "\n".join(out)
+    return "\n".join(_wrapped(lines, begin, end, "HPGEN_COLD_BEGIN", "HPGEN_COLD_END"))
 
 
 def guard_lazy_functions(code: str, lazy_roots) -> str:
@@ -224,14 +231,7 @@ def guard_lazy_functions(code: str, lazy_roots) -> str:
         if any(line.startswith(e) for e in entries):
             begin.add(j)
             end.add(j if line.count("{") == line.count("}") else lines.index("}", j))
-    out = []
-    for j, line in enumerate(lines):
-        if j in begin:
-            out.append(LAZY_BEGIN)
-        out.append(line)
-        if j in end:
-            out.append(LAZY_END)
-    return _guard_lazy_arrays(out)
+    return _guard_lazy_arrays(_wrapped(lines, begin, end, LAZY_BEGIN, LAZY_END))
 
 
 _ARRAY_DEF = re.compile(r"static const casadi_(?:int|real) (casadi_[sc][0-9]+)\[")
@@ -268,11 +268,4 @@ def _guard_lazy_arrays(lines: list[str]) -> str:
                  if name in inside and name not in outside}
     begin = {a for a, _ in lazy_only.values()}
     end = {b for _, b in lazy_only.values()}
-    out = []
-    for j, line in enumerate(lines):
-        if j in begin:
-            out.append(LAZY_BEGIN)
-        out.append(line)
-        if j in end:
-            out.append(LAZY_END)
-    return "\n".join(out)
+    return "\n".join(_wrapped(lines, begin, end, LAZY_BEGIN, LAZY_END))
