@@ -12,6 +12,8 @@ shares one Lagrangian and the node velocity is explicit; else None.
 """
 from __future__ import annotations
 
+import weakref
+
 import casadi as ca
 import numpy as np
 
@@ -20,7 +22,9 @@ from .action import StepEquations
 CALL = {"never_inline": True, "jac_penalty": 0}
 
 
-_WRAPPED: dict = {}
+# f -> its MX wrapper, alive as long as f: every mapped call of one function object in a
+# derivation shares one wrapper (and so its derivative functions), whatever was built before
+_WRAPPED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
 def mapped(f, count: int):
@@ -28,17 +32,14 @@ def mapped(f, count: int):
     The wrapper's directional derivatives are products with the callee's Jacobian
     (``jac_penalty`` 0), so the map's derivatives reuse one Jacobian function instead of
     an SX forward sweep per number of directions."""
-    hit = _WRAPPED.get(id(f))
-    if hit is None or hit[0] is not f:
+    w = _WRAPPED.get(f)
+    if w is None:
         args = [ca.MX.sym(f.name_in(i), f.sparsity_in(i)) for i in range(f.n_in())]
         # jac_penalty only: a never_inline wrapper would expand (the Python backend's SX
         # form) into a call of itself
-        w = ca.Function(f.name() + "_w", args, f.call(args), f.name_in(), f.name_out(),
-                        {"jac_penalty": 0})
-        if len(_WRAPPED) > 256:
-            _WRAPPED.clear()
-        hit = _WRAPPED[id(f)] = (f, w)
-    return hit[1].map(count)
+        w = _WRAPPED[f] = ca.Function(f.name() + "_w", args, f.call(args), f.name_in(),
+                                      f.name_out(), {"jac_penalty": 0})
+    return w.map(count)
 
 
 def _joint_maps(fun, K: int, rows: int):
