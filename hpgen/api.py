@@ -31,107 +31,24 @@ instead of resolving, deriving or locating cache entries again.
 from __future__ import annotations
 
 import dataclasses
-import hashlib
 import json
-import os
 import sys
 import time
 from collections.abc import Mapping
 from dataclasses import dataclass
-from functools import cached_property, lru_cache
+from functools import cached_property
 from pathlib import Path
-from typing import Any
 
-from . import __version__, cache
+from . import cache
+from .compile_options import CompileOptions, model_source, read_model_text, resolve
 from .errors import ModelError
-from .schemes import BACKEND, RKMK, TAU
+from .module_hash import CODE_FORMAT, content_hash, generator_digest
+from .pipeline import BACKEND_SOURCES, Derivation, derive_module, emit_files, generate_files
 
-#: bump when the generated layout changes, so stale cache entries are not reused
-CODE_FORMAT = "1"
-
-
-@dataclass(frozen=True)
-class CompileOptions:
-    """Explicit options of one compile (no global configuration)."""
-    tableau: object = None        # catalog name, {"A": ..., "b": ...}, ButcherTableau or None
-    tau: str | None = None
-    rkmk: str | None = None
-    backend: str = "c"
-    out: str | Path | None = None  # directory receiving <module>/; None: use the cache entry
-    cache_dir: str | Path | None = None
-    cc: str | None = None
-    cflags: tuple[str, ...] | None = None
-    #: parameter overrides ((name, value), ...) applied to the model text (model.overrides)
-    parameters: tuple | None = None
-    #: the Newton matrix's storage: None (hpgen.derive.sparse_jacobian's rule), "sparse", "dense"
-    jacobian: str | None = None
-    #: a composition of the step (hpgen.tableaus.composition; None: the model's
-    #: integrator.compose, else the plain step). Not in the cache key: the kernels are the
-    #: plain step's; the loaded runtime composes them.
-    compose: str | None = None
-
-    def validate(self):
-        for option, value in ((TAU, self.tau), (RKMK, self.rkmk), (BACKEND, self.backend)):
-            if value is not None:
-                option.check(value, field=f"option {option.name}")
-        if self.compose is not None:
-            from .tableaus.composition import get_composition
-            try:
-                get_composition(self.compose)
-            except ModelError as e:
-                raise ModelError(e.message, field="option compose") from None
-        if self.jacobian not in (None, "sparse", "dense"):
-            raise ModelError(f"expected sparse or dense, got {self.jacobian!r}",
-                             field="option jacobian")
-        if self.tableau is not None and not isinstance(self.tableau, (str, dict)) \
-                and not hasattr(self.tableau, "A"):
-            raise ModelError("expected a catalog name or {A: [[...]], b: [...]}",
-                             field="option tableau")
-
-    def key(self) -> str:
-        """The part of the cache key that the options contribute (code-changing only)."""
-        tab = self.tableau
-        if tab is not None and not isinstance(tab, (str, dict)):
-            tab = {"A": [list(r) for r in tab.A], "b": list(tab.b), "name": tab.name}
-        key = {"tableau": tab, "tau": self.tau, "rkmk": self.rkmk}
-        if self.jacobian is not None:
-            key["jacobian"] = self.jacobian
-        return json.dumps(key, sort_keys=True, default=repr)
-
-
-def read_model_text(path) -> str:
-    """The text of a model file (hpgen.model.loader.read_model_bytes: a regular file of at
-    most 2 MB, never read past that), decoded as UTF-8."""
-    from .model.loader import read_model_bytes
-    data = read_model_bytes(path)
-    try:
-        return data.decode("utf-8")
-    except UnicodeDecodeError:
-        raise ModelError("expected a UTF-8 text file", file=str(path)) from None
-
-
-def model_source(model) -> tuple[str, str]:
-    """(name, text) of a model given as a model file's path, a mapping with the model file's
-    keys or a hpgen.model.builder.ModelBuilder (name ``<mapping>``; hpgen.model.builder)."""
-    if isinstance(model, (str, os.PathLike)):
-        return os.fspath(model), read_model_text(model)
-    if isinstance(model, Mapping) or hasattr(model, "to_mapping"):
-        from .model.builder import MAPPING_SOURCE, model_text
-        return MAPPING_SOURCE, model_text(model)
-    raise ModelError("expected the path of a model file, a mapping with the model file's keys "
-                     f"or a hpgen.model.builder.ModelBuilder, got {type(model).__name__}",
-                     field="model")
-
-
-@dataclass(frozen=True)
-class Derivation:
-    """The derive stage's result for one compile: the parsed model, the resolved tableau
-    (a ButcherTableau), tau and rkmk, and the DiscreteStep."""
-    model: Any
-    tableau: Any
-    tau: str
-    rkmk: str
-    step: Any
+__all__ = ["BACKEND_SOURCES", "CODE_FORMAT", "CompileOptions", "CompiledModule", "Derivation",
+           "build", "build_compiled", "build_module", "compile", "content_hash",
+           "derive_module", "emit_files", "generate_files", "generator_digest",
+           "model_source", "module_key", "read_model_text", "resolve"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -257,45 +174,6 @@ def build(model, *, tableau=None, tau=None, rkmk=None, backend="c", out=None,
                                                 if parameters else None, jacobian, compose))
 
 
-#: what produces the generated code, besides the model and options (hashed into the key)
-_GENERATOR_SOURCES = ("hpgen/abi.py", "hpgen/model", "hpgen/groups", "hpgen/tableaus",
-                      "hpgen/derive", "hpgen/splitting", "hpgen/codegen", "templates")
-
-
-@lru_cache(maxsize=1)
-def generator_digest() -> str:
-    """sha256 over hpgen's code-generating sources (stages and templates), so that a
-    changed generator never serves a stale cache entry."""
-    root = Path(__file__).resolve().parents[1]
-    h = hashlib.sha256()
-    for source in _GENERATOR_SOURCES:
-        path = root / source
-        if source == "templates" and (root / "hpgen" / "templates").is_dir():
-            path = root / "hpgen" / "templates"      # a wheel ships them inside the package
-        for f in [path] if path.is_file() else sorted(path.glob("*")):
-            if f.is_file() and f.suffix in (".py", ".j2"):
-                h.update(f.relative_to(root).as_posix().encode() + b"\0" + f.read_bytes())
-    return h.hexdigest()
-
-
-def content_hash(text: str, opts: CompileOptions) -> str:
-    """The content hash of a module (see the module docstring): normalized model, options
-    in effect, CODE_FORMAT and hpgen version; never the generator's sources."""
-    from .model.fingerprint import normalized_model
-    from .model.types import IntegratorChoice
-    norm, written = normalized_model(text)
-    if isinstance(written, dict) and "compose" in written:   # runtime only: not in the key
-        written = {k: v for k, v in written.items() if k != "compose"} or None
-    written_opts = written if isinstance(written, dict) else {}
-    effective = {k: next((v for v in (getattr(opts, k), written_opts.get(k),
-                                      getattr(IntegratorChoice(), k)) if v is not None))
-                 for k in ("tableau", "tau", "rkmk")}
-    effective["jacobian"] = opts.jacobian
-    model = json.dumps({"model": norm, "integrator": written}, sort_keys=True, default=repr)
-    return cache.cache_key(CODE_FORMAT, __version__, model,
-                           CompileOptions(**effective).key())
-
-
 def module_key(text: str, opts: CompileOptions) -> str:
     """The derivation key (the cache entry's name): the content hash and the digest of the
     generator's sources."""
@@ -337,7 +215,7 @@ def build_compiled(model, opts: CompileOptions) -> CompiledModule:
     if opts.out is None:
         return result
     entry = result.module_dir
-    files = cache.read_tree(entry)
+    files: dict[str, bytes | str] = dict(cache.read_tree(entry))
     files["model.yaml"] = text.encode()      # this request's file (the entry keeps the first)
     unlisted = {}
     if library is not None:
@@ -361,11 +239,6 @@ def _compose_of(text: str, opts: CompileOptions) -> str | None:
     from .model.fingerprint import normalized_model
     written = normalized_model(text)[1]
     return written.get("compose") if isinstance(written, dict) else None
-
-
-#: the source each backend builds from: a cache entry holds those of the backends asked for
-#: so far (the other is generated on first use: a C compile writes no kernels.py)
-BACKEND_SOURCES = {"c": "kernels.c", "python": "kernels.py"}
 
 
 def _needed_sources(opts: CompileOptions) -> tuple[str, ...]:
@@ -441,56 +314,3 @@ def _same_tree(dest: Path, files: dict) -> bool:
         return all((dest / name).read_bytes() == data for name, data in files.items())
     except OSError:
         return False
-
-
-def resolve(model_obj, opts: CompileOptions):
-    """The (ButcherTableau, tau, rkmk) a compile uses: explicit options over model defaults."""
-    from .tableaus import ButcherTableau, resolve_tableau
-    spec = opts.tableau if opts.tableau is not None else model_obj.integrator.tableau
-    if isinstance(spec, dict):
-        if set(spec) - {"A", "b", "c"} or not {"A", "b"} <= set(spec):
-            raise ModelError("expected {A: [[...]], b: [...]} with an optional c",
-                             field="option tableau")
-        tag = hashlib.sha256(json.dumps(spec, sort_keys=True, default=repr).encode()).hexdigest()
-        tab = ButcherTableau.from_user(spec["A"], spec["b"], spec.get("c"), name=f"user{tag[:8]}")
-    else:
-        tab = resolve_tableau(spec)
-    return tab, opts.tau or model_obj.integrator.tau, opts.rkmk or model_obj.integrator.rkmk
-
-
-def generate_files(path: str, text: str, opts: CompileOptions, key: str) -> dict[str, str]:
-    """Run the pipeline model -> derive -> codegen; the files of the generated module (both
-    backends' sources)."""
-    return emit_files(derive_module(path, text, opts), text, opts, key)
-
-
-def derive_module(path: str, text: str, opts: CompileOptions) -> Derivation:
-    """The model (text of the file ``path``) parsed, its options resolved and its step
-    derived and checked. Raises ModelError naming the file."""
-    from .model import load_model_text
-    from .model.builder import without_line
-    try:
-        model_obj = load_model_text(text, filename=path)   # bad input fails before casadi
-    except ModelError as e:
-        raise without_line(e, path) from None
-    from .derive import derive
-    from .derive.checks import check_legendre
-    try:
-        tab, tau, rkmk = resolve(model_obj, opts)
-        step = derive(model_obj, tab, tau, rkmk, opts.jacobian)
-        check_legendre(step, model_obj)
-    except ModelError as e:          # errors of the options and the derivation name the file too
-        raise without_line(e.located(file=path), path) from None
-    return Derivation(model_obj, tab, tau, rkmk, step)
-
-
-def emit_files(d: Derivation, text: str, opts: CompileOptions, key: str,
-               sources=tuple(BACKEND_SOURCES.values())) -> dict[str, str]:
-    """The files of the generated module of a derivation (codegen): meta.json, __init__.py,
-    model.yaml and the backend sources named in ``sources`` (kernels.c, kernels.py)."""
-    from .codegen import emit, module_name
-    name = module_name(d.model.name, d.tableau.name, d.tau, d.rkmk)
-    gm = emit(d.step, {"module": name, "model_name": d.model.name, "model_source": text,
-                       "options": {"tableau": d.tableau.name, "tau": d.tau, "rkmk": d.rkmk},
-                       "hash": key, "backend": opts.backend}, sources=sources)
-    return dict(gm.files)
