@@ -17,8 +17,8 @@ Figures (the keys of the JSON report):
   successive error ratios, the last is the estimate. T = ``order_horizon`` (default
   min(1, steps h)) rounded to whole steps of h. floor: the finest error is below 1e-10, where
   the reference's own error (about 1e-12) may spoil the estimate. expected: see
-  ``expected_order`` (it depends on the model: a left-invariant l makes every q = 0 and every
-  variational Euler step order 2). When the observed orders do not yet agree with it (within
+  ``expected_order`` (hpgen.analysis.check_order; it depends on the model: a left-invariant
+  l makes every q = 0 and every variational Euler step order 2). When the observed orders do not yet agree with it (within
   ORDER_TOL), h keeps being halved (``refined``: every level, from h) until two successive
   orders agree, the errors reach the floor or a run would exceed REFINE_MAX_STEPS steps;
   asymptotic_h is the largest h from which they agree (None if not reached) and status
@@ -87,6 +87,7 @@ import numpy as np
 
 from .. import __version__
 from ..errors import ModelError
+from .check_order import order_study, scheme_order
 from .check_schemes import SYMMETRY_TOL, _Hpgen, _load, _Rkmk
 from .constrained import CONSTRAINT_TOL
 from .rkmk import ContinuousEquations
@@ -95,75 +96,8 @@ from .symplectic import ad_matrices, defect_along
 SYMPLECTIC_RTOL = 1e-12
 GROUP_TOL = 1e-10
 MOMENTUM_RTOL = 1e-10
-REFERENCE_RTOL = 1e-12
-FLOOR = 1e-10
-#: an observed order within this of the expected one agrees (the slope of three halvings
-#: of a clean h^p error is p to about 0.05; 0.25 leaves room for the next term)
-ORDER_TOL = 0.25
-#: the step budget of one refinement run of the order study (T / h_finest steps)
-REFINE_MAX_STEPS = 2 ** 17
 SCHEMES = ("hpgen", "rkmk-rk4")
 FORM = "omega((eta_a,nu_a),(eta_b,nu_b)) = <nu_b,eta_a> - <nu_a,eta_b> + <p,[eta_a,eta_b]>"
-
-
-def expected_order(left_invariant: bool, scheme_order: int, rkmk) -> tuple[int, str]:
-    """(order, why) that a scheme shows on a model (docs/numerics.md sec. 7).
-
-    scheme_order: the tableau's order with the exact RKMK constraint, min(order, 2) with
-    ``truncated`` (q = 0), 4 for RKMK-RK4; rkmk: 'exact' | 'truncated', None for a scheme
-    that is not one of hpgen's (RKMK-RK4). A left-invariant l (no g in l) turns every
-    q = 0 step into the reduced Euler-Poincare step of eq. ``dlp``, which is order 2 whatever
-    the tableau; the variational Euler tableaus (order 1) are order 2 there with either
-    constraint (measured: free rigid body, euler-forward and euler-backward, exp and cay).
-    When l depends on g (heavy top) they are order 1, which shows only at small h: 2.1 is
-    observed on h = 0.1 .. 0.0125, 1.19 between h = 7.8e-4 and 3.9e-4 (see ``_refine``).
-    """
-    if rkmk is None:
-        return scheme_order, "explicit RKMK-RK4"
-    if left_invariant and rkmk == "truncated":
-        return 2, "l left-invariant: a q = 0 step is the reduced step of eq. dlp"
-    if left_invariant and scheme_order == 1:
-        return 2, "l left-invariant: variational Euler is order 2"
-    if rkmk == "truncated":
-        return scheme_order, ("l depends on g: variational Euler is order 1" if scheme_order == 1
-                              else "the truncated constraint (q = 0) caps the order at 2")
-    return scheme_order, "the tableau's order, exact RKMK constraint"
-
-
-def _slopes(errs):
-    """log2 of successive error ratios (None where an error is 0)."""
-    return [float(np.log2(a / b)) if a > 0 and b > 0 else None
-            for a, b in zip(errs[:-1], errs[1:])]
-
-
-def _agreeing(errs, expected):
-    """The first k from which the slopes k and k + 1 agree with ``expected`` (within
-    ORDER_TOL), the errors down to h / 2^(k+2) above FLOOR; None if there is none. Two
-    slopes, not one: an error that changes sign between two h gives one accidental slope
-    (heavy top, euler-backward: 0.97 then 0.10 near h = 2e-3)."""
-    obs = _slopes(errs)
-    for k in range(len(obs) - 1):
-        pair = obs[k:k + 2]
-        if (errs[k + 2] >= FLOOR and None not in pair
-                and all(abs(o - expected) <= ORDER_TOL for o in pair)):
-            return k
-    return None
-
-
-def _refine(errs, expected, error_at, h, n_o) -> dict:
-    """Halve h beyond h/4 (appending to ``errs``) until the observed order agrees with the
-    expected one, the finest error falls below FLOOR or a run would exceed REFINE_MAX_STEPS
-    steps; ``error_at(k)`` is the error with step h / 2^k. Returns the report's ``refined``
-    ({h, error, observed} over every level), ``asymptotic_h`` and ``status``."""
-    errs = list(errs)
-    k = _agreeing(errs, expected)
-    while (k is None and errs[-1] >= FLOOR and n_o * 2 ** len(errs) <= REFINE_MAX_STEPS):
-        errs.append(error_at(len(errs)))
-        k = _agreeing(errs, expected)
-    status = "asymptotic" if k is not None else ("floor" if errs[-1] < FLOOR else "not reached")
-    return {"refined": {"h": [h / 2 ** i for i in range(len(errs))], "error": errs,
-                        "observed": _slopes(errs)},
-            "asymptotic_h": None if k is None else h / 2 ** k, "status": status}
 
 
 def _positive(x, name):
@@ -217,7 +151,6 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     T = _positive(min(1.0, steps * h) if order_horizon is None else order_horizon,
                   "order_horizon")
     n_o = max(1, round(T / h))
-    T = n_o * h
     # u held over the steps of h (rows U); a run with h / 2^k holds row j over its steps
     # j 2^k .. (j + 1) 2^k - 1: the same piecewise-constant u(t), jumps on every grid
     U = None if controls is None or not model.inputs else \
@@ -226,42 +159,9 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
     def u_of(k, N):
         return None if U is None else (U[0] if len(U) == 1 else
                                        np.repeat(U, 2 ** k, axis=0)[:N])
-    def final(k):               # the state at T of the run with step h / 2^k
-        N = n_o * 2 ** k
-        g, mu = sch.simulate(g0, mu0, h / 2 ** k, N, every=N, u=u_of(k, N))
-        return g[-1], mu[-1]
-
-    if constrained:
-        # no independent reference of the constrained equations: the differences of
-        # successive halvings (self-convergence), |x(h / 2^k) - x(h / 2^(k+1))| ~ C h^p
-        finals: dict = {}
-
-        def error_at(k):
-            for j in (k, k + 1):
-                if j not in finals:
-                    finals[j] = final(j)
-            (ga, ma), (gb, mb) = finals[k], finals[k + 1]
-            return float(max(np.abs(ga - gb).max(), np.abs(ma - mb).max()))
-        reference = "self-convergence: |x(h) - x(h/2)| at T (no constrained reference)"
-    else:
-        gT, muT = (a[0] for a in eq.reference(g0, mu0, [T], rtol=REFERENCE_RTOL, u_rows=U,
-                                              u_h=h))
-        reference = f"DOP853 rtol=atol={REFERENCE_RTOL:g}"
-
-        def error_at(k):            # error at T of the run with step h / 2^k
-            g, mu = final(k)
-            return float(max(np.abs(g - gT).max(), np.abs(mu - muT).max()))
-
-    expected, why = expected_order(model.left_invariant, sch.order,
-                                   sch.info.get("rkmk") if scheme == "hpgen" else None)
-    if getattr(sch, "splitting", False):
-        expected, why = sch.order, "the splitting scheme's composition order"
-    comp = getattr(sch, "composition", None)
-    if comp is not None and comp.order > expected:
-        expected, why = comp.order, f"the composition {comp.name} of a symmetric step"
-    errs = [error_at(k) for k in range(3)]
-    hs, observed = [h, h / 2, h / 4], _slopes(errs)
-    refined = _refine(errs, expected, error_at, h, n_o)
+    expected, why = scheme_order(sch, model, scheme)
+    order = order_study(sch, eq, g0, mu0, h, n_o, u_of, U, constrained=constrained,
+                        expected=expected, why=why)
 
     # the run at h: energy (a forced model: E - W), momentum map (forced: its balance with
     # the spatial impulse), group defect
@@ -334,9 +234,7 @@ def run_check(path, *, scheme="hpgen", tableau=None, tau=None, rkmk=None, h=None
         "hpgen_version": __version__, "model": model.name, "file": str(path),
         "group": model.group.name, "scheme": scheme, "integrator": sch.info,
         "h": h, "steps": steps, "duration": steps * h,
-        "order": {"expected": expected, "why": why, "horizon": T, "h": hs, "error": errs,
-                  "observed": observed, "floor": bool(errs[-1] < FLOOR),
-                  "reference": reference, **refined},
+        "order": order,
         "energy": {"initial": float(E[0]), "max_error": float(np.abs(dE).max()),
                    "relative_max_error": float(np.abs(dE).max() / max(abs(E[0]), 1e-300)),
                    "drift_slope": slope, "balance": bool(model.forced)},

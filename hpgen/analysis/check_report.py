@@ -8,7 +8,8 @@ from pathlib import Path
 
 from ..errors import ModelError
 from ..files import write_file
-from .check import FLOOR, GROUP_TOL, ORDER_TOL, REFINE_MAX_STEPS
+from .check import GROUP_TOL
+from .check_order import FLOOR, ORDER_TOL, REFINE_MAX_STEPS
 
 
 def _verdict(ok):

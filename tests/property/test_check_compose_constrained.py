@@ -25,7 +25,8 @@ EXAMPLES = ROOT / "examples"
 
 
 def test_composed_check_is_order_four_symplectic_and_symmetric(cache_dir):
-    from hpgen.analysis.check import ORDER_TOL, run_check
+    from hpgen.analysis.check import run_check
+    from hpgen.analysis.check_order import ORDER_TOL
     r = run_check(EXAMPLES / "heavy_top.yaml", tableau="stormer-verlet", tau="cay",
                   rkmk="truncated", compose="suzuki4", h=0.05, steps=40, order_horizon=1.0,
                   cache_dir=cache_dir, n_states=2)
@@ -94,7 +95,8 @@ def test_composed_check_refusals(cache_dir, capsys):
 @pytest.mark.parametrize("name, parameters, rows", [("four_bar", None, 8),
                                                     ("pendulum_chain", {"N": 3}, 9)])
 def test_constrained_check(cache_dir, name, parameters, rows):
-    from hpgen.analysis.check import ORDER_TOL, run_check
+    from hpgen.analysis.check import run_check
+    from hpgen.analysis.check_order import ORDER_TOL
     from hpgen.analysis.constrained import CONSTRAINT_TOL
     r = run_check(EXAMPLES / f"{name}.yaml", steps=60, cache_dir=cache_dir, n_states=2,
                   parameters=parameters)

@@ -1,5 +1,5 @@
 """The expected order of ``hpgen check`` depends on the model, and the report says where the
-asymptotic regime starts (hpgen.analysis.check.expected_order / _refine).
+asymptotic regime starts (hpgen.analysis.check_order.expected_order / _refine).
 
 Facts behind the expectations (docs/numerics.md, "Orders"): with a left-invariant l every
 q = 0 step is the reduced step of eq. dlp (order 2) and variational Euler is order 2; with l
@@ -14,8 +14,9 @@ import math
 import pytest
 
 from conftest import EXAMPLES
-from hpgen.analysis.check import (FLOOR, ORDER_TOL, REFINE_MAX_STEPS, _refine,
-                                  expected_order, run_check)
+from hpgen.analysis.check import run_check
+from hpgen.analysis.check_order import (FLOOR, ORDER_TOL, REFINE_MAX_STEPS, _refine,
+                                        expected_order)
 from hpgen.analysis.check_report import format_report
 
 
