@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import re
 
-from .csource import LAZY_BEGIN, LAZY_END, _functions
+from .csource import LAZY_BEGIN, LAZY_END, _extent, _functions
 
 #: translation units of a family module (the machines hpgen targets have 2 or more cores)
 PARTS = 2
@@ -61,17 +61,6 @@ MACROS = """/* translation units (hpgen.codegen.cparts): one without HPGEN_PART,
 #define HPGEN_PRIVATE
 #endif
 """
-
-
-def _extent(lines: list[str], first: int, last: int) -> tuple[int, int]:
-    """A function's lines with its leading comment and cold-level markers."""
-    if first > 0 and lines[first - 1].startswith("/* ") and lines[first - 1].endswith(" */"):
-        first -= 1
-    if first > 0 and lines[first - 1] == "HPGEN_COLD_BEGIN":
-        first -= 1
-    if last + 1 < len(lines) and lines[last + 1] == "HPGEN_COLD_END":
-        last += 1
-    return first, last
 
 
 def assign_parts(costs: dict[str, float], parts: int, base: float,

@@ -185,24 +185,39 @@ def _wrapped(lines: list[str], begin: set[int], end: set[int], opening: str,
     return out
 
 
+def _extent(lines: list[str], first: int, last: int) -> tuple[int, int]:
+    """A function's lines with its leading comment and cold-level markers."""
+    if first > 0 and lines[first - 1].startswith("/* ") and lines[first - 1].endswith(" */"):
+        first -= 1
+    if first > 0 and lines[first - 1] == "HPGEN_COLD_BEGIN":
+        first -= 1
+    if last + 1 < len(lines) and lines[last + 1] == "HPGEN_COLD_END":
+        last += 1
+    return first, last
+
+
+def _reached_only(code: str, roots):
+    """(code's lines, first lines, last lines) of the internal functions that only the
+    top-level functions ``roots`` reach (cold_functions), each with its leading comment and
+    cold markers; None when there are none."""
+    found = cold_functions(code, roots)
+    if not found:
+        return None
+    lines = code.split("\n")
+    blocks = _functions(lines)[0]
+    spans = [_extent(lines, *blocks[f]) for f in found]
+    return lines, {first for first, _ in spans}, {last for _, last in spans}
+
+
 def mark_cold_functions(code: str, cold_roots) -> str:
     """CasADi's C with each internal function that only the functions ``cold_roots`` (casadi
     names of top-level functions) reach (cold_functions) wrapped in HPGEN_COLD_BEGIN /
     HPGEN_COLD_END (GCC: compiled at COLD_OPTIMIZE; kernels.c.j2 defines them). Code that no
     cold root reaches alone is returned unchanged."""
-    cold = cold_functions(code, cold_roots)
-    if not cold:
+    found = _reached_only(code, cold_roots)
+    if found is None:
         return code
-    lines = code.split("\n")
-    blocks = _functions(lines)[0]
-    begin, end = set(), set()
-    for f in cold:
-        first, last = blocks[f]
-        if first > 0 and lines[first - 1].startswith("/* ") and lines[first - 1].endswith(" */"):
-            first -= 1
-        begin.add(first)
-        end.add(last)
-    return "\n".join(_wrapped(lines, begin, end, "HPGEN_COLD_BEGIN", "HPGEN_COLD_END"))
+    return "\n".join(_wrapped(*found, "HPGEN_COLD_BEGIN", "HPGEN_COLD_END"))
 
 
 def guard_lazy_functions(code: str, lazy_roots) -> str:
@@ -210,22 +225,10 @@ def guard_lazy_functions(code: str, lazy_roots) -> str:
     functions ``lazy_roots`` reach, and those top-level functions' entry points, each between
     LAZY_BEGIN and LAZY_END (compiled only into the lazily built library). Unchanged when
     nothing is lazy."""
-    lazy = cold_functions(code, lazy_roots)
-    if not lazy:
+    found = _reached_only(code, lazy_roots)
+    if found is None:
         return code
-    lines = code.split("\n")
-    blocks = _functions(lines)[0]
-    begin, end = set(), set()
-    for f in lazy:
-        first, last = blocks[f]
-        if first > 0 and lines[first - 1].startswith("/* ") and lines[first - 1].endswith(" */"):
-            first -= 1
-        if first > 0 and lines[first - 1] == "HPGEN_COLD_BEGIN":
-            first -= 1
-        if last + 1 < len(lines) and lines[last + 1] == "HPGEN_COLD_END":
-            last += 1
-        begin.add(first)
-        end.add(last)
+    lines, begin, end = found
     entries = {f"CASADI_SYMBOL_EXPORT int {name}(const casadi_real** arg" for name in lazy_roots}
     for j, line in enumerate(lines):
         if any(line.startswith(e) for e in entries):

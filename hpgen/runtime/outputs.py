@@ -83,15 +83,12 @@ class RunOutputs:
 
         Parameters
         ----------
-        g0, h, steps, xi0, mu0
+        g0, h, steps, xi0, mu0, newton, u, params, t0
             As for ``simulate``: g0 (n, n) on the group, h != 0 in the model's time unit,
-            steps >= 0, exactly one of xi0 / mu0 (d,).
+            steps >= 0, exactly one of xi0 / mu0 (d,); Newton settings; an open module's
+            inputs, runtime parameters and start time.
         every : int, optional
             Record interval in steps, >= 1 (default 1); record 0 is the initial state.
-        newton : NewtonOptions or None, optional
-            Newton settings, as for ``simulate``.
-        u, params, t0
-            As for ``simulate`` (an open module's inputs, runtime parameters, start time).
 
         Returns
         -------
