@@ -8,7 +8,8 @@ kernels.c (static functions are not exported, so ctypes cannot call them).
 Each N: examples/pendulum_chain.yaml compiled (C, sparse J), 50 steps of h = 1e-3 from the
 benchmark's start (hpgen.bench.multibody.chain) give the state; the harness (built with the
 runtime's flags) then advances 20 more steps and times each part at that state, best of 5
-rounds, us per call. Read the parts against each other: the machine's load moves them all.
+rounds, us of CPU time per call (the process's CPU clock: a loaded machine's preemptions
+leave it, its cache contention does not). Read the parts against each other: the machine's load moves them all.
 The harness is built twice, with a sparse module's full Newton as the chord iteration within
 the step (HPGEN_SPARSE_CHORD=1, the default) and with J at every iterate (=0); the two run
 in turn, two rounds.
@@ -32,7 +33,7 @@ HARNESS = r"""
 #define _POSIX_C_SOURCE 199309L
 #include <time.h>
 #include "kernels.c"
-static double now(void) { struct timespec t; clock_gettime(CLOCK_MONOTONIC, &t); return t.tv_sec + 1e-9 * t.tv_nsec; }
+static double now(void) { struct timespec t; clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t); return t.tv_sec + 1e-9 * t.tv_nsec; }
 #define TIME(label, reps, stmt) do { double best = 1e30; int rr, q; for (rr = 0; rr < 5; ++rr) { double t0 = now(); for (q = 0; q < (reps); ++q) { stmt; } double t1 = (now() - t0) / (reps); if (t1 < best) best = t1; } printf("%-28s %9.2f us\n", label, best * 1e6); } while (0)
 static hpgen_run R;
 int main(int argc, char** argv) {

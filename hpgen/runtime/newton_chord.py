@@ -7,12 +7,13 @@ factors (one residual and one solve each) while they contract, and a kept J whos
 theta = |dz| / |dz_prev| exceeds THETA_MAX is refreshed at the next iterate, unless |dz| is
 at the round-off noise (at_floor) from the third iterate on. Nothing is kept across steps.
 Stops: after a fresh J full Newton's (|dz| <= tol (1 + |z|), sparse_converged with a fresh
-J); after a kept J sparse_converged's linear-rate bound; either, |dz| stopped decreasing at
+J); after a kept J sparse_converged's linear-rate bound asked of SIMPLIFIED_TOL tol, as
+simplified Newton's (the error full Newton's stop leaves); either, |dz| stopped decreasing at
 the round-off floor (ROUNDOFF_FLOOR (1 + |z|)). Inf-norms throughout.
 """
 from __future__ import annotations
 
-from ..abi import NO_CONVERGENCE, NONFINITE, OK, ROUNDOFF_FLOOR, THETA_MAX
+from ..abi import NO_CONVERGENCE, NONFINITE, OK, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, THETA_MAX
 from .newton_linalg import all_finite, norm_inf
 
 _INF, _NAN = float("inf"), float("nan")
@@ -55,7 +56,7 @@ def solve_chord(kern, z, g, p, hv, tol: float, maxit: int):
             return OK, z, it, norm_inf(F), jacs
         if fresh and dn <= tol * (1.0 + zn):
             return OK, z, it, norm_inf(F), jacs
-        if sparse_converged(it, dn, dprev, zn, tol, fresh):
+        if sparse_converged(it, dn, dprev, zn, tol if fresh else SIMPLIFIED_TOL * tol, fresh):
             return OK, z, it, norm_inf(F), jacs
         if not fresh and dn > THETA_MAX * dprev and not (it > 2 and at_floor(dn, zn)):
             need_j = True

@@ -176,7 +176,9 @@ static int hpgen_newton_full(const double* g, const double* p, const double* hv,
    hpgen_at_floor, from the third iterate on). Nothing is kept across steps.
    Stop tests: after a fresh J those of full Newton (|dz| <= tol (1 + |z|),
    hpgen_sparse_converged with a fresh J); after a kept J the linear-rate bound of
-   hpgen_sparse_converged (te/(1 - te) |dz| <= tol (1 + |z|), |dz| at the round-off floor);
+   hpgen_sparse_converged asked of HPGEN_SIMPLIFIED_TOL tol, as simplified Newton's
+   (te/(1 - te) |dz| <= HPGEN_SIMPLIFIED_TOL tol (1 + |z|), |dz| at the round-off floor: the
+   error full Newton's stop leaves, not tol (1 + |z|) itself);
    either, the stagnation test (|dz| stopped decreasing at the round-off floor: the kept J
    was factored in this step, so it contracts). The results are those of a Newton with
    a linear rate theta (about |z_0 - z*| cond(J) times a curvature), not full Newton's
@@ -214,7 +216,8 @@ static int hpgen_newton_chord(const double* g, const double* p, const double* hv
             code = HPGEN_OK; break;
         }
         if (fresh && dn <= tol * (1.0 + zn)) { code = HPGEN_OK; break; }
-        if (hpgen_sparse_converged(it, dn, dprev, zn, tol, fresh)) { code = HPGEN_OK; break; }
+        if (hpgen_sparse_converged(it, dn, dprev, zn, fresh ? tol : HPGEN_SIMPLIFIED_TOL * tol,
+                                   fresh)) { code = HPGEN_OK; break; }
         if (!fresh && dn > HPGEN_THETA_MAX * dprev && !(it > 2 && hpgen_at_floor(dn, zn)))
             need_j = 1;
         dprev = dn;
