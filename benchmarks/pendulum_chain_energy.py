@@ -83,7 +83,7 @@ def main(argv=None):
         T = args.steps * args.h
         print(f"| {n} | hpgen SV (compile {compile_s:.1f} s) | {args.h:g} | {args.steps} | "
               f"{1e6 * c_hp:.2f} | {1e3 * c_hp / args.h:.1f} | {band(E, spec):.2e} | "
-              f"{gaps[0]:.1e} / {gaps[1]:.1e} |")
+              f"{gaps[0]:.2e} / {gaps[1]:.2e} |")
         probe = mujoco_peer.run(spec, qpos, qvel, args.h, 2000, "RK4")
         c_mj = probe.seconds / 2000
         for label, dt in (("equal dt", args.h), ("equal cost", args.h * c_mj / c_hp)):
