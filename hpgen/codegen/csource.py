@@ -157,7 +157,12 @@ def cold_functions(code: str, cold_roots) -> set[str]:
     """The internal functions (``casadi_f<k>``) of CasADi's C that only the top-level
     functions named in ``cold_roots`` reach (not another top-level function, nor the runtime:
     a function nobody in the code calls counts as the runtime's)."""
-    blocks, calls, roots = _functions(code.split("\n"))
+    return _cold(_functions(code.split("\n")), cold_roots)
+
+
+def _cold(parsed, cold_roots) -> set[str]:
+    """cold_functions of the code whose _functions are ``parsed``."""
+    blocks, calls, roots = parsed
     cold_roots = set(cold_roots)
     called = set().union(*calls.values()) if calls else set()
     hot: set[str] = set()
@@ -190,11 +195,12 @@ def mark_cold_functions(code: str, cold_roots) -> str:
     names of top-level functions) reach (cold_functions) wrapped in HPGEN_COLD_BEGIN /
     HPGEN_COLD_END (GCC: compiled at COLD_OPTIMIZE; kernels.c.j2 defines them). Code that no
     cold root reaches alone is returned unchanged."""
-    cold = cold_functions(code, cold_roots)
+    lines = code.split("\n")
+    parsed = _functions(lines)
+    cold = _cold(parsed, cold_roots)
     if not cold:
         return code
-    lines = code.split("\n")
-    blocks = _functions(lines)[0]
+    blocks = parsed[0]
     begin, end = set(), set()
     for f in cold:
         first, last = blocks[f]
@@ -210,11 +216,12 @@ def guard_lazy_functions(code: str, lazy_roots) -> str:
     functions ``lazy_roots`` reach, and those top-level functions' entry points, each between
     LAZY_BEGIN and LAZY_END (compiled only into the lazily built library). Unchanged when
     nothing is lazy."""
-    lazy = cold_functions(code, lazy_roots)
+    lines = code.split("\n")
+    parsed = _functions(lines)
+    lazy = _cold(parsed, lazy_roots)
     if not lazy:
         return code
-    lines = code.split("\n")
-    blocks = _functions(lines)[0]
+    blocks = parsed[0]
     begin, end = set(), set()
     for f in lazy:
         first, last = blocks[f]
