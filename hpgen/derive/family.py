@@ -155,10 +155,6 @@ def _functions(model, tableau, tau: str, rkmk: str):
             nz=e.z.numel(), blocks=e.blocks,
             F=ca.Function(f"body{c}_residual", args, [e.residual], CALL),
             U=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1], CALL),
-            # the same functions inlinable: their Jacobian blocks' expressions
-            # (hpgen.derive.family_jacobian) can then be deduplicated
-            F_inline=ca.Function(f"body{c}_residual", args, [e.residual]),
-            U_inline=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1]),
             M=ca.Function(f"body{c}_margin", [e.z, hb], [e.margin], CALL),
             C=ca.Function(f"body{c}_chart", [e.z, hb], [e.chart_step], CALL),
             Z=ca.Function(f"body{c}_guess", [e.xi_hat, gbv, pb, hb], [e.guess], CALL))

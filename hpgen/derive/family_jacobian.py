@@ -33,25 +33,12 @@ import numpy as np
 CALL = {"never_inline": True, "jac_penalty": 0}
 
 
-def _jacobian_function(f, pairs, name, inline=None):
+def _jacobian_function(f, pairs, name):
     """SX Function of f's inputs -> [d out_o / d in_i for (o, i) in pairs] (CasADi's SX AD
-    on f's own expression graph, one factory per block, inlined into one function).
-
-    ``inline``: f as an inlinable function (f without never_inline). Each block is then its
-    factory's expression put into a function with common subexpressions merged (CasADi's
-    ``cse``): the same operations on the same operands once, so the same values, in less
-    code (the Jacobian blocks of a body's implicit Runge-Kutta step repeat many terms)."""
+    on f's own expression graph, one factory per block, inlined into one function)."""
     args = [ca.SX.sym(f"a{i}", f.sparsity_in(i)) for i in range(f.n_in())]
-    if inline is None:
-        outs = [f.factory(f"{name}_{o}_{i}", f.name_in(),
-                          [f"jac:{f.name_out(o)}:{f.name_in(i)}"])(*args) for o, i in pairs]
-        return ca.Function(name, args, outs, CALL)
-    outs = []
-    for o, i in pairs:
-        block = inline.factory(f"{name}_{o}_{i}", inline.name_in(),
-                               [f"jac:{inline.name_out(o)}:{inline.name_in(i)}"])
-        merged = ca.Function(block.name(), args, [block(*args)], dict(CALL, cse=True))
-        outs.append(merged(*args))
+    outs = [f.factory(f"{name}_{o}_{i}", f.name_in(),
+                      [f"jac:{f.name_out(o)}:{f.name_in(i)}"])(*args) for o, i in pairs]
     return ca.Function(name, args, outs, CALL)
 
 
@@ -122,10 +109,9 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
     st = parts["step"]
     nzb = st["nz"]
     zc = nzb * N
-    bf = _jacobian_function(st["F"], [(0, 0), (0, 2)], f"{st['F'].name()}_blocks",
-                            st["F_inline"])
+    bf = _jacobian_function(st["F"], [(0, 0), (0, 2)], f"{st['F'].name()}_blocks")
     bu = _jacobian_function(st["U"], [(0, 0), (0, 2), (1, 0), (1, 2)],
-                            f"{st['U'].name()}_blocks", st["U_inline"])
+                            f"{st['U'].name()}_blocks")
     outs = [*bf.map(N)(Z, G, Q, h, I), *bu.map(N)(Z, G, Q, h, I)]
     sps = [bf.sparsity_out(0), bf.sparsity_out(1), *[bu.sparsity_out(k) for k in range(4)]]
 
