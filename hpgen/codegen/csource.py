@@ -157,7 +157,12 @@ def cold_functions(code: str, cold_roots) -> set[str]:
     """The internal functions (``casadi_f<k>``) of CasADi's C that only the top-level
     functions named in ``cold_roots`` reach (not another top-level function, nor the runtime:
     a function nobody in the code calls counts as the runtime's)."""
-    blocks, calls, roots = _functions(code.split("\n"))
+    return _cold(_functions(code.split("\n")), cold_roots)
+
+
+def _cold(parsed, cold_roots) -> set[str]:
+    """cold_functions of the code whose _functions are ``parsed``."""
+    blocks, calls, roots = parsed
     cold_roots = set(cold_roots)
     called = set().union(*calls.values()) if calls else set()
     hot: set[str] = set()
@@ -200,11 +205,12 @@ def _reached_only(code: str, roots):
     """(code's lines, first lines, last lines) of the internal functions that only the
     top-level functions ``roots`` reach (cold_functions), each with its leading comment and
     cold markers; None when there are none."""
-    found = cold_functions(code, roots)
+    lines = code.split("\n")
+    parsed = _functions(lines)
+    found = _cold(parsed, roots)
     if not found:
         return None
-    lines = code.split("\n")
-    blocks = _functions(lines)[0]
+    blocks = parsed[0]
     spans = [_extent(lines, *blocks[f]) for f in found]
     return lines, {first for first, _ in spans}, {last for _, last in spans}
 

@@ -83,10 +83,33 @@ def template_dir() -> Path:
     return inside if (inside / TEMPLATES["kernels.c"]).is_file() else package.parent / "templates"
 
 
+def wrapped_ints(values, width: int = 90) -> str:
+    """The integers joined by ", " in lines of at most ``width`` characters, filled greedily
+    (the text of jinja2's ``join(", ") | wordwrap(width)``, without textwrap's cost on the
+    sparsity tables of a large family)."""
+    lines: list[str] = []
+    line = ""
+    items = [str(int(v)) for v in values]
+    for k, item in enumerate(items):
+        token = item if k == len(items) - 1 else item + ","
+        if not line:
+            line = token
+        elif len(line) + 1 + len(token) <= width:
+            line += " " + token
+        else:
+            lines.append(line)
+            line = token
+    if line:
+        lines.append(line)
+    return "\n".join(lines)
+
+
 def environment() -> jinja2.Environment:
-    return jinja2.Environment(loader=jinja2.FileSystemLoader(str(template_dir())),
-                              undefined=jinja2.StrictUndefined, keep_trailing_newline=True,
-                              trim_blocks=True, lstrip_blocks=True, autoescape=False)
+    env = jinja2.Environment(loader=jinja2.FileSystemLoader(str(template_dir())),
+                             undefined=jinja2.StrictUndefined, keep_trailing_newline=True,
+                             trim_blocks=True, lstrip_blocks=True, autoescape=False)
+    env.filters["wrapped_ints"] = wrapped_ints
+    return env
 
 
 def module_name(model_name: str, tableau: str, tau: str, rkmk: str) -> str:

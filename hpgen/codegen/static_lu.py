@@ -18,6 +18,7 @@ the fallback to the QR for a J on which a static pivot fails are the runtime's.
 """
 from __future__ import annotations
 
+import heapq
 from dataclasses import dataclass
 
 
@@ -49,12 +50,25 @@ def static_lu(n: int, colind, row) -> StaticLU | None:
             cols[c].add(r)
             entries.append((r, c))
     waits = {k: (rows[k] | cols[k]) - {k} for k in range(n) if k not in rows[k]}
-    alive, perm, steps = set(range(n)), [], []
-    while alive:
-        ready = [k for k in alive if k in rows[k] and not (waits.get(k, set()) & alive)]
-        if not ready:
-            return None
-        k = min(ready, key=lambda v: ((len(rows[v]) - 1) * (len(cols[v]) - 1), v))
+    waiting = [0] * n                          # of unknown k: its waits not yet eliminated
+    waiters: list[list[int]] = [[] for _ in range(n)]
+    for k, ws in waits.items():
+        waiting[k] = len(ws)
+        for w in ws:
+            waiters[w].append(k)
+
+    def cost(v):
+        return (len(rows[v]) - 1) * (len(cols[v]) - 1)
+
+    # the ready unknowns by (cost, index); an entry whose cost has changed since it was
+    # pushed (its newer entry is in the heap too) or whose unknown is gone is skipped
+    heap = [(cost(k), k) for k in range(n) if k in rows[k] and not waiting[k]]
+    heapq.heapify(heap)
+    alive, perm, steps = [True] * n, [], []
+    while heap:
+        c, k = heapq.heappop(heap)
+        if not alive[k] or c != cost(k):
+            continue
         lower, upper = cols[k] - {k}, rows[k] - {k}
         perm.append(k)
         steps.append((lower, upper))
@@ -64,7 +78,14 @@ def static_lu(n: int, colind, row) -> StaticLU | None:
         for j in upper:
             cols[j] |= lower
             cols[j].discard(k)
-        alive.discard(k)
+        alive[k] = False
+        for w in waiters[k]:
+            waiting[w] -= 1
+        for v in lower | upper | set(waiters[k]):
+            if alive[v] and v in rows[v] and not waiting[v]:
+                heapq.heappush(heap, (cost(v), v))
+    if len(perm) < n:
+        return None
     pos = {v: t for t, v in enumerate(perm)}
     columns = [[t] for t in range(n)]                  # rows of column t, new numbering
     for t, (lower, upper) in enumerate(steps):

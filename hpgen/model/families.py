@@ -73,10 +73,17 @@ class FamilyGroup(ProductGroup):
 
     def momentum_map(self, g, p):
         """Ad*_{g^{-1}} p body by body (the product's Ad is block-diagonal; building it from
-        the product's d basis vectors would cost O(N^2))."""
+        the product's d basis vectors would cost O(N^2)). For SX, one body's map is built
+        once as a function and its expression replayed on every body's (g, p)."""
         import casadi as ca
-        return ca.vertcat(*[f.momentum_map(gk, pk) for f, gk, pk in
-                            zip(self.parts, self._split_g(g), self._split_v(p))])
+        gs, ps = self._split_g(g), self._split_v(p)
+        if not isinstance(g, ca.SX):
+            return ca.vertcat(*[f.momentum_map(gk, pk) for f, gk, pk in
+                                zip(self.parts, gs, ps)])
+        body = self.parts[0]
+        G, P = ca.SX.sym("g", body.n, body.n), ca.SX.sym("p", body.d)
+        one = ca.Function("body_momentum_map", [G, P], [body.momentum_map(G, P)])
+        return ca.vertcat(*[one(gk, pk) for gk, pk in zip(gs, ps)])
 
 
 def family_of(group) -> BodyFamily | None:

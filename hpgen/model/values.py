@@ -36,12 +36,34 @@ def _as_sympy(v):
     return sp.Integer(v) if type(v) is int else sp.Float(v)
 
 
+def _real_symbols(names: list[str]) -> tuple:
+    """sp.Symbol(name, real=True) for each name. Symbols of the same assumptions share their
+    assumption tables (sympy caches them), so past the first symbol each is that symbol with
+    another name, made without sympy's per-symbol canonicalisation (a family's g has
+    16 N^2 entries); equal and of equal hash to sp.Symbol(name, real=True), else (another
+    sympy) every symbol is made by sp.Symbol."""
+    first = sp.Symbol(names[0], real=True)
+    out = [first]
+    for name in names[1:]:
+        s = sp.Expr.__new__(sp.Symbol)
+        s.name = name
+        s._assumptions = first._assumptions
+        s._assumptions_orig = first._assumptions_orig
+        s._assumptions0 = first._assumptions0
+        out.append(s)
+    if len(out) > 1:
+        probe = sp.Symbol(names[-1], real=True)
+        if not (out[-1] == probe and hash(out[-1]) == hash(probe)
+                and out[-1].assumptions0 == probe.assumptions0):
+            return tuple(sp.Symbol(name, real=True) for name in names)
+    return tuple(out)
+
+
 @functools.lru_cache(maxsize=16)
 def _symbol_list(prefix: str, rows: int, cols: int | None) -> tuple:
     if cols is None:
-        return tuple(sp.Symbol(f"{prefix}_{k}", real=True) for k in range(rows))
-    return tuple(sp.Symbol(f"{prefix}_{i}_{j}", real=True) for i in range(rows)
-                 for j in range(cols))
+        return _real_symbols([f"{prefix}_{k}" for k in range(rows)])
+    return _real_symbols([f"{prefix}_{i}_{j}" for i in range(rows) for j in range(cols)])
 
 
 @functools.lru_cache(maxsize=16)
