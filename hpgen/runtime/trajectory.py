@@ -51,18 +51,16 @@ class Trajectory:
         return traj
 
     @classmethod
-    def many(cls, shared: dict, g, mu, newton_iterations, jacobians, inputs) -> list:
-        """Trajectories j = 0, 1, ... with the fields ``shared`` (t, h, every, integrator)
-        and g[j], mu[j], newton_iterations[j], jacobians[j], inputs[j], as ``made`` makes
-        them; t, g and mu read-only already (an ensemble's views,
-        hpgen.runtime.states.batch_trajectories): no flags set per member."""
-        base, new, out = {**_DEFAULTS, **shared}, object.__new__, []
-        for gj, mj, it, jac, inp in zip(g, mu, newton_iterations, jacobians, inputs):
-            traj = new(cls)
-            traj.__dict__.update(base, g=gj, mu=mj, newton_iterations=it, jacobians=jac,
-                                 inputs=inp, _obs={})
-            out.append(traj)
-        return out
+    def member(cls, shared: dict, g, mu, newton_iterations, jacobians, inputs) -> "Trajectory":
+        """An ensemble member's Trajectory: the fields ``shared`` (t, h, every, integrator),
+        g, mu, newton_iterations, jacobians and inputs, as ``made`` makes it; t, g and mu
+        read-only already (views of the ensemble's arrays,
+        hpgen.runtime.states.batch_trajectories): no flags set."""
+        traj = object.__new__(cls)
+        traj.__dict__.update(_DEFAULTS, **shared, g=g, mu=mu,
+                             newton_iterations=newton_iterations, jacobians=jacobians,
+                             inputs=inputs, _obs={})
+        return traj
 
     def __len__(self) -> int:
         return len(self.t)
