@@ -15,6 +15,7 @@ import numpy as np
 from .. import abi
 from . import loop
 from .cstructs import _Options, _Status
+from .workers import run_slices
 
 
 #: slices per thread of an ensemble without a progress bar: a thread that finishes early
@@ -27,8 +28,8 @@ def _over_threads(B: int, threads: int, work, bar=None, align: int = 1) -> None:
     slices a thread taken in turn (the C calls inside release the GIL through ctypes). With
     a progress ``bar`` (hpgen.runtime.progress) the slices are about 20 per thread, the bar
     advancing by each slice's members as it completes (runs are independent: the states do
-    not change). Inner slice bounds are multiples of ``align`` (lane groups stay whole)."""
-    from concurrent.futures import ThreadPoolExecutor
+    not change). Inner slice bounds are multiples of ``align`` (lane groups stay whole).
+    The threads are the process's pool's (hpgen.runtime.workers)."""
     threads = max(1, min(int(threads), B))
     per = 20 if bar is not None else SLICES_PER_THREAD if threads > 1 else 1
     parts = min(B, per * threads)
@@ -40,12 +41,7 @@ def _over_threads(B: int, threads: int, work, bar=None, align: int = 1) -> None:
         if bar is not None:
             bar.update(s[1] - s[0])
 
-    if threads <= 1 or len(slices) <= 1:
-        for s in slices:
-            run(s)
-        return
-    with ThreadPoolExecutor(threads) as pool:
-        list(pool.map(run, slices))
+    run_slices(slices, threads, run)
 
 
 def _rows(a, B: int, size: int, what: str) -> np.ndarray:
