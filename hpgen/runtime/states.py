@@ -174,19 +174,32 @@ def batch_trajectories(engine: Engine, done, g_rec, p_rec, sts, h, every, inputs
     t = t0 + t if t0 else t
     t.setflags(write=False)
     codes, its, jacs = sts["code"], sts["total_iterations"], sts["jacobians"]
-    shared = {"t": t, "h": h, "every": every, "integrator": engine.owner}
-    g_all: list = []
+    base = Trajectory.shared_fields(t=t, h=h, every=every, integrator=engine.owner)
+    g_made: list = []
 
-    def member(b: int) -> Trajectory:
-        inp = None if inputs is None else inputs[b]
-        if codes[b] != abi.OK:
-            return trajectory(engine, int(done[b]), g_rec[b], p_rec[b],
-                              cbatch_status(sts, b), h, every, inp, t0)
-        if not g_all:
+    def g_all() -> np.ndarray:
+        """The batch's g (B, K, n, n) row-major, read-only, made once."""
+        if not g_made:
             g = np.ascontiguousarray(g_rec.reshape(B, K, n, n).transpose(0, 1, 3, 2))
             g.setflags(write=False)
-            g_all.append(g)
-        return Trajectory.member(shared, g_all[0][b], p_rec[b], int(its[b]), int(jacs[b]),
-                                 inp)
+            g_made.append(g)
+        return g_made[0]
 
-    return LazyList(B, member)
+    def failed(b: int) -> Trajectory:
+        return trajectory(engine, int(done[b]), g_rec[b], p_rec[b], cbatch_status(sts, b), h,
+                          every, None if inputs is None else inputs[b], t0)
+
+    def member(b: int) -> Trajectory:
+        if codes[b] != abi.OK:
+            return failed(b)
+        return Trajectory.member(base, g_all()[b], p_rec[b], int(its[b]), int(jacs[b]),
+                                 None if inputs is None else inputs[b])
+
+    def every_member() -> list:
+        out = Trajectory.members(base, list(g_all()), list(p_rec), its.tolist(),
+                                 jacs.tolist(), [None] * B if inputs is None else inputs)
+        for b in np.flatnonzero(codes != abi.OK).tolist():
+            out[b] = failed(b)
+        return out
+
+    return LazyList(B, member, every_member)

@@ -4,8 +4,8 @@ them, and looking at one makes that one only.
 
 A ``LazyList`` is a ``list`` (isinstance, len, indexing, slicing, iteration, comparison,
 ``+``, copying and pickling behave as on the list of all items; copies and pickles are plain
-lists). Item i is ``make(i)``, made once and kept (the same object on every access). A method
-other than indexing, slicing and iteration (a comparison, ``in``, repr, any mutation) makes
+lists). Item i is ``make(i)``, made once and kept (the same object on every access). Any use
+other than indexing and slicing (iteration, a comparison, ``in``, repr, any mutation) makes
 all items first. C code that reads a list's storage directly without iterating it (numpy's
 ``np.array(a_list)``) sees None for an item not made yet: ``list(x)`` first. Standard library
 only.
@@ -17,12 +17,16 @@ from typing import Any, Callable
 
 
 class LazyList(list):
-    """n items, item i made by ``make(i)`` on its first access (None marks one not made)."""
+    """n items, item i made by ``make(i)`` on its first access (None marks one not made);
+    ``make_all()``, when given, makes the list of all n at once (the same items as ``make``,
+    cheaper a piece), for iteration and the methods that need every item."""
 
-    def __init__(self, n: int, make: Callable[[int], Any]):
+    def __init__(self, n: int, make: Callable[[int], Any],
+                 make_all: Callable[[], list] | None = None):
         super().__init__()
         list.extend(self, [None] * n)
         self._make: Callable[[int], Any] | None = make
+        self._make_all = make_all
 
     def __getitem__(self, i):
         if isinstance(i, slice):
@@ -36,16 +40,20 @@ class LazyList(list):
         return x
 
     def __iter__(self):
-        if self._make is None:
-            return list.__iter__(self)
-        return (self[i] for i in range(len(self)))
+        return list.__iter__(self.made())
 
     def made(self) -> "LazyList":
-        """Self with every item made (then it is a plain list in all but its type)."""
+        """Self with every item made (then it is a plain list in all but its type); an item
+        made already stays the same object."""
         if self._make is not None:
-            for i in range(len(self)):
-                self[i]
-            self._make = None
+            if self._make_all is not None:
+                fresh = self._make_all()
+                list.__setitem__(self, slice(None), [
+                    x if x is not None else y for x, y in zip(list.__iter__(self), fresh)])
+            else:
+                for i in range(len(self)):
+                    self[i]
+            self._make = self._make_all = None
         return self
 
     def __reduce_ex__(self, protocol):

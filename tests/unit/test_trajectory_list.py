@@ -67,6 +67,15 @@ def test_copies_and_pickles_are_plain_lists():
         assert type(clone) is list and clone == full
 
 
+def test_make_all_for_every_item_keeps_items_made():
+    calls = []
+    a = LazyList(4, lambda i: ["one", i], lambda: calls.append("all") or [["all", i]
+                                                                          for i in range(4)])
+    x = a[2]
+    assert list(a) == [["all", 0], ["all", 1], ["one", 2], ["all", 3]] and calls == ["all"]
+    assert a[2] is x and list(a) == list(a) and calls == ["all"]
+
+
 def test_empty():
     a, calls = _lazy(0)
     assert a == [] and list(a) == [] and not a and calls == []
