@@ -54,3 +54,20 @@ def test_error_reraised_and_no_further_slices():
         workers.run_slices(list(range(200)), 2, run)
     time.sleep(0.05)
     assert len(started) < 200
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_batch_start_refuses_too_many_substeps(compile_model, monkeypatch, threads):
+    """A composed step of more substeps than the library takes (HPGEN_CS_MAX = 9) is refused
+    by the batch start, on one thread and from a worker thread."""
+    from pathlib import Path
+
+    import numpy as np
+
+    body = compile_model(Path(__file__).resolve().parents[2] / "examples"
+                         / "free_rigid_body.yaml")
+    cb = body.engine.backend
+    monkeypatch.setattr(cb, "compose", (0.1,) * 10)
+    with pytest.raises(ValueError, match="10 substeps"):
+        cb.simulate_batch(np.broadcast_to(np.eye(3).ravel(), (20, 9)), np.ones((20, 3)), 0.1,
+                          np.ones((20, 3)), 5, 1, body.engine.options(None), threads)
