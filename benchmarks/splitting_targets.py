@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import sys
 import time
 from pathlib import Path
@@ -186,7 +187,8 @@ def ensembles(quick, h_at, e_sv):
     rng = np.random.default_rng(1)
     pi0 = np.array([0.4535961214255773, 0.0, 0.8912073600614354])
     mu0 = pi0 * (1.0 + 0.01 * rng.standard_normal((B, 3)))
-    print(f"\n## Free-body ensembles, B = {B}, T = 10, at SV(h = 0.01)'s error {e_sv:.3g}\n")
+    print(f"\n## Free-body ensembles, B = {B}, T = 10, at SV(h = 0.01)'s error {e_sv:.3g} "
+          f"(load average {os.getloadavg()[0]:.1f})\n")
     print("| scheme | h | lanes | threads | ns / body-step | ns / SV-eq. body-step | "
           "stepping alone: ns / body-step | ns / SV-eq. body-step | its CPU ns / SV-eq. "
           "body-step | whole call: CPU ns / SV-eq. body-step | 0 steps: us / body (CPU) |")
@@ -209,6 +211,7 @@ def ensembles(quick, h_at, e_sv):
                       f"{ts / (B * steps) * 1e9:.1f} | {ts / (B * T / 0.01) * 1e9:.2f} | "
                       f"{cs / (B * T / 0.01) * 1e9:.2f} | {c / (B * T / 0.01) * 1e9:.2f} | "
                       f"{t_0 / B * 1e6:.2f} ({c_0 / B * 1e6:.2f}) |")
+    print(f"\nload average after the ensembles: {os.getloadavg()[0]:.1f}")
 
 
 def _batch_time(integ, h, steps, mu0, threads, lanes, reps):

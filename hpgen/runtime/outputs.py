@@ -62,7 +62,8 @@ class RunOutputs:
         -------
         list of Trajectory
             B trajectories; a failed run's is partial with ``.error`` set (nothing is
-            raised for a failed run).
+            raised for a failed run). Each is made when first looked at
+            (hpgen.runtime.trajectory_list.LazyList, a list).
 
         Raises
         ------

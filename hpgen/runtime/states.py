@@ -18,7 +18,9 @@ from .cbatch import status as cbatch_status
 from .engine import SLICE_FIRST, Engine, Part, RunArgs, RunStart, Sliced
 from .inputs import check_t0
 from .progress import bar as progress_bar
+from .progress import _NoBar as NoBar
 from .trajectory import Trajectory
+from .trajectory_list import LazyList
 
 
 class States:
@@ -136,7 +138,8 @@ def _joined(engine: Engine, s: RunStart, got: list, t0: float,
 
 def simulate_batch(engine: Engine, a: RunArgs, threads=None, progress=None,
                    lanes=True) -> list:
-    """Integrator.simulate_batch: B Trajectories from one backend call per thread slice."""
+    """Integrator.simulate_batch: B Trajectories (made on access: batch_trajectories) from
+    one backend call per thread slice."""
     engine.require_c("simulate_batch")
     e = engine.prepare_batch(a)
     threads = engine.threads(threads)
@@ -147,8 +150,8 @@ def simulate_batch(engine: Engine, a: RunArgs, threads=None, progress=None,
                      ([s.g0 for s in runs], [s.mu0 for s in runs], [s.z0 for s in runs]))
     with progress_bar(len(runs), "simulate_batch", "member", progress) as bar:
         done, g_rec, p_rec, sts = engine.backend.simulate_batch(
-            g0s, p0s, e.h, z0s, e.steps, e.every, e.opts, threads, inputs, bar,
-            lanes=bool(lanes))
+            g0s, p0s, e.h, z0s, e.steps, e.every, e.opts, threads, inputs,
+            None if type(bar) is NoBar else bar, lanes=bool(lanes))   # (no bar: few slices)
     return batch_trajectories(engine, done, g_rec, p_rec, sts, e.h, e.every, inputs,
                               check_t0(a.t0))
 
@@ -156,24 +159,47 @@ def simulate_batch(engine: Engine, a: RunArgs, threads=None, progress=None,
 def batch_trajectories(engine: Engine, done, g_rec, p_rec, sts, h, every, inputs=None,
                        t0=0.0) -> list:
     """The B Trajectories of a batch's records g_rec (B, K, n*n, column-major), p_rec
-    (B, K, d) (record 0 the start) and statuses ``sts`` (hpgen.runtime.cbatch.statuses).
-    A member that finished has all K records: its g, mu and t are read-only views of three
-    arrays made once (the batch's g transposed to row-major, p_rec itself, one time axis
-    shared by the members; a member's arrays keep the batch's alive). A failed member's
-    Trajectory is made by ``trajectory`` (its records up to the failure, error, .partial)."""
+    (B, K, d) (record 0 the start) and statuses ``sts`` (a structured array,
+    hpgen.runtime.cbatch.simulate_batch),
+    as a LazyList (hpgen.runtime.trajectory_list): member b's Trajectory is made when first
+    looked at. A member that finished has all K records: its g, mu and t are read-only views
+    of three arrays shared by the members (the batch's g transposed to row-major, made at
+    the first member's access; p_rec itself; one time axis); a member's arrays keep the
+    batch's alive. A failed member's Trajectory is made by ``trajectory`` (its records up to
+    the failure, error, .partial)."""
     B, K = g_rec.shape[:2]
     n = engine.n
-    g_all = np.ascontiguousarray(g_rec.reshape(B, K, n, n).transpose(0, 1, 3, 2))
-    for arr in (g_all, p_rec):
-        arr.setflags(write=False)
+    p_rec.setflags(write=False)
     t = np.arange(0, K * every, every) * h
     t = t0 + t if t0 else t
     t.setflags(write=False)
-    codes = sts["code"]
-    out = Trajectory.many({"t": t, "h": h, "every": every, "integrator": engine.owner},
-                          list(g_all), list(p_rec), sts["total_iterations"].tolist(),
-                          sts["jacobians"].tolist(), [None] * B if inputs is None else inputs)
-    for b in np.flatnonzero(codes != abi.OK).tolist():
-        out[b] = trajectory(engine, int(done[b]), g_rec[b], p_rec[b], cbatch_status(sts, b),
-                            h, every, None if inputs is None else inputs[b], t0)
-    return out
+    codes, its, jacs = sts["code"], sts["total_iterations"], sts["jacobians"]
+    base = Trajectory.shared_fields(t=t, h=h, every=every, integrator=engine.owner)
+    g_made: list = []
+
+    def g_all() -> np.ndarray:
+        """The batch's g (B, K, n, n) row-major, read-only, made once."""
+        if not g_made:
+            g = np.ascontiguousarray(g_rec.reshape(B, K, n, n).transpose(0, 1, 3, 2))
+            g.setflags(write=False)
+            g_made.append(g)
+        return g_made[0]
+
+    def failed(b: int) -> Trajectory:
+        return trajectory(engine, int(done[b]), g_rec[b], p_rec[b], cbatch_status(sts, b), h,
+                          every, None if inputs is None else inputs[b], t0)
+
+    def member(b: int) -> Trajectory:
+        if codes[b] != abi.OK:
+            return failed(b)
+        return Trajectory.member(base, g_all()[b], p_rec[b], int(its[b]), int(jacs[b]),
+                                 None if inputs is None else inputs[b])
+
+    def every_member() -> list:
+        out = Trajectory.members(base, list(g_all()), list(p_rec), its.tolist(),
+                                 jacs.tolist(), [None] * B if inputs is None else inputs)
+        for b in np.flatnonzero(codes != abi.OK).tolist():
+            out[b] = failed(b)
+        return out
+
+    return LazyList(B, member, every_member)

@@ -50,17 +50,35 @@ class Trajectory:
         traj.__post_init__()
         return traj
 
+    @staticmethod
+    def shared_fields(**shared) -> dict:
+        """The fields an ensemble's members share (t, h, every, integrator), with the other
+        fields' defaults: the ``base`` of ``member`` and ``members``."""
+        return {**_DEFAULTS, **shared}
+
     @classmethod
-    def many(cls, shared: dict, g, mu, newton_iterations, jacobians, inputs) -> list:
-        """Trajectories j = 0, 1, ... with the fields ``shared`` (t, h, every, integrator)
-        and g[j], mu[j], newton_iterations[j], jacobians[j], inputs[j], as ``made`` makes
-        them; t, g and mu read-only already (an ensemble's views,
-        hpgen.runtime.states.batch_trajectories): no flags set per member."""
-        base, new, out = {**_DEFAULTS, **shared}, object.__new__, []
+    def member(cls, base: dict, g, mu, newton_iterations, jacobians, inputs) -> "Trajectory":
+        """An ensemble member's Trajectory: the fields ``base`` (``shared_fields``), g, mu,
+        newton_iterations, jacobians and inputs, as ``made`` makes it; t, g and mu read-only
+        already (views of the ensemble's arrays, hpgen.runtime.states.batch_trajectories):
+        no flags set."""
+        traj = object.__new__(cls)
+        d = traj.__dict__
+        d.update(base)
+        d.update(g=g, mu=mu, newton_iterations=newton_iterations, jacobians=jacobians,
+                 inputs=inputs, _obs={})
+        return traj
+
+    @classmethod
+    def members(cls, base: dict, g, mu, newton_iterations, jacobians, inputs) -> list:
+        """``member`` j = 0, 1, ... of the sequences g, mu, newton_iterations, jacobians,
+        inputs (all members at once: one loop, no call per member)."""
+        new, out = object.__new__, []
         for gj, mj, it, jac, inp in zip(g, mu, newton_iterations, jacobians, inputs):
             traj = new(cls)
-            traj.__dict__.update(base, g=gj, mu=mj, newton_iterations=it, jacobians=jac,
-                                 inputs=inp, _obs={})
+            d = traj.__dict__
+            d.update(base)
+            d.update(g=gj, mu=mj, newton_iterations=it, jacobians=jac, inputs=inp, _obs={})
             out.append(traj)
         return out
 

@@ -34,3 +34,21 @@ HPGEN_EXPORT long long hpgen_advance_record_batch(hpgen_run* runs, long long B, 
     }
     return failed;
 }
+
+
+/* Start B runs (runs[0..B-1]) as B calls of hpgen_run_init and, when cs > 0, of
+   hpgen_run_set_compose with the same gammas: run b from g0 + b * g_stride (g_stride 0: one
+   g0 shared by the runs; flat column-major), p0 + b * HPGEN_D and z0 + b * HPGEN_NZ.
+   Returns -1 (no run touched) when cs is outside 0..HPGEN_CS_MAX, else 0. Callers split a
+   batch across threads. */
+HPGEN_EXPORT int hpgen_run_init_batch(hpgen_run* runs, long long B, const double* g0,
+                                      long long g_stride, const double* p0, const double* z0,
+                                      long long cs, const double* gammas) {
+    long long b;
+    if (cs < 0 || cs > HPGEN_CS_MAX) return -1;
+    for (b = 0; b < B; ++b) {
+        hpgen_run_init(runs + b, g0 + b * g_stride, p0 + b * HPGEN_D, z0 + b * HPGEN_NZ);
+        if (cs > 0) hpgen_run_set_compose(runs + b, cs, gammas);
+    }
+    return 0;
+}
