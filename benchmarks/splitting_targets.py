@@ -31,7 +31,11 @@ sys.path.insert(0, str(ROOT))
 
 SPLITS = ("split2", "split4-yoshida", "split4-suzuki", "split4-mclachlan", "split4-blanes-moan",
           "split6-yoshida", "split6-kahan-li", "split6-blanes-moan", "split8-mclachlan",
-          "split8-kahan-li")
+          "split8-kahan-li", "split2-fasso", "split4-suzuki-fasso", "split4-blanes-moan-fasso",
+          "split6-kahan-li-fasso", "split6-blanes-moan-fasso", "split8-kahan-li-fasso")
+#: the generated schemes of the long runs: the best DLM tables and the best Fasso variants
+LONG_SPLITS = ("split6-kahan-li", "split8-kahan-li", "split4-blanes-moan-fasso",
+               "split6-blanes-moan-fasso", "split8-kahan-li-fasso")
 HAND = ("splitting-2", "splitting-4", "splitting-6")
 #: the ensembles' stepping alone is timed over this many times the steps of T = 10
 LONG = 20
@@ -68,7 +72,7 @@ def heavy_top(quick):
 def long_runs(quick):
     """Heavy top over T = 10 .. 1000: the final-state error against a DOP853 reference at
     rtol = atol = 1e-13 (hpgen bench's), the time at equal error of the best generated
-    splitting (split6-kahan-li, split8-kahan-li) and of RK4-C; their ratio per T and the
+    splitting (LONG_SPLITS) and of RK4-C; their ratio per T and the
     break-even T (log-log interpolation between the T where the ratio crosses 1) per error."""
     from hpgen.bench import run_bench
     from hpgen.bench.report import time_at_error
@@ -77,7 +81,7 @@ def long_runs(quick):
     ratio = {}
     for T in Ts:
         res = run_bench(ROOT / "examples" / "heavy_top.yaml", T=T, schemes=[
-            (s, "cay", "exact") for s in ("split6-kahan-li", "split8-kahan-li")],
+            (s, "cay", "exact") for s in LONG_SPLITS],
             h=[0.4 * 2.0 ** -k for k in range(8 if T <= 100 else 7)],
             rk4_h=[0.05 * 2.0 ** -k for k in range(6 if T <= 100 else 5)],
             peers=["RK4-C"], reference="dop853", write=False, min_time=0.02,
@@ -237,11 +241,17 @@ def _h_at(pts, e):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--part", choices=("all", "heavy", "free", "long"), default="all",
+                    help="one part only: heavy top T = 10, free body (and its ensembles), "
+                         "heavy top T = 10 .. 1000")
     args = ap.parse_args()
-    heavy_top(args.quick)
-    h_at, e_sv = free_body(args.quick)
-    ensembles(args.quick, h_at, e_sv)
-    long_runs(args.quick)
+    if args.part in ("all", "heavy"):
+        heavy_top(args.quick)
+    if args.part in ("all", "free"):
+        h_at, e_sv = free_body(args.quick)
+        ensembles(args.quick, h_at, e_sv)
+    if args.part in ("all", "long"):
+        long_runs(args.quick)
 
 
 if __name__ == "__main__":
