@@ -41,12 +41,12 @@ HAND = ("splitting-2", "splitting-4", "splitting-6")
 LONG = 20
 
 
-def heavy_top(quick):
+def heavy_top(quick, splits=SPLITS):
     from hpgen.bench import run_bench
     from hpgen.bench.report import time_at_error
     hs = [0.4, 0.3, 0.2, 0.1, 0.05, 0.025, 0.0125, 0.00625, 0.003125]
     res = run_bench(ROOT / "examples" / "heavy_top.yaml", T=10, schemes=[
-        (s, "cay", "exact") for s in SPLITS], h=hs, rtol=[1e-4, 1e-6, 1e-8, 1e-10, 1e-12],
+        (s, "cay", "exact") for s in splits], h=hs, rtol=[1e-4, 1e-6, 1e-8, 1e-10, 1e-12],
         peers=["DOP853", "RK4-C", *HAND], write=False, min_time=0.05 if quick else 0.2,
         log=lambda s: None)
     gen = [p for p in res.points if p.kind == "hpgen"]
@@ -241,12 +241,14 @@ def _h_at(pts, e):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--splits", help="comma-separated generated schemes of the heavy top "
+                    "T = 10 part (default: SPLITS)")
     ap.add_argument("--part", choices=("all", "heavy", "free", "long"), default="all",
                     help="one part only: heavy top T = 10, free body (and its ensembles), "
                          "heavy top T = 10 .. 1000")
     args = ap.parse_args()
     if args.part in ("all", "heavy"):
-        heavy_top(args.quick)
+        heavy_top(args.quick, tuple(args.splits.split(",")) if args.splits else SPLITS)
     if args.part in ("all", "free"):
         h_at, e_sv = free_body(args.quick)
         ensembles(args.quick, h_at, e_sv)
