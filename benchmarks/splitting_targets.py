@@ -58,9 +58,9 @@ def heavy_top(quick, splits=SPLITS):
           "gen | gen / hand |")
     print("|---|---|---|---|---|---|")
     for e in (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10):
-        tg = _best(gen, e, time_at_error)
+        tg, best = _best(gen, e, time_at_error, which=True)
         th = _best(hand, e, time_at_error)
-        cells = [f"{e:g}", _f(tg)]
+        cells = [f"{e:g}", _f(tg) + f" ({best})"]
         for name in ("DOP853", "RK4-C"):
             t = time_at_error(fam[name], e)
             cells.append("-" if t is None or tg is None else f"{t / tg:.3g}x")
@@ -115,14 +115,15 @@ def _break_even(Ts, ratios) -> str:
     return f"> {pts[-1][0]}"
 
 
-def _best(points, e, time_at_error):
-    """The least time at error e over the families of ``points``."""
-    out = None
+def _best(points, e, time_at_error, which=False):
+    """The least time at error e over the families of ``points`` (with ``which``: and the
+    family reaching it)."""
+    out, name = None, None
     for f in sorted({p.family for p in points}):
         t = time_at_error([p for p in points if p.family == f], e)
         if t is not None and (out is None or t < out):
-            out = t
-    return out
+            out, name = t, f
+    return (out, name) if which else out
 
 
 def _f(x):
