@@ -130,7 +130,7 @@ def _f(x):
     return "-" if x is None else f"{x:.3g}"
 
 
-def free_body(quick):
+def free_body(quick, splits=SPLITS):
     import hpgen
     from hpgen.analysis.exact import free_rigid_body_attitude
     path = ROOT / "examples" / "free_rigid_body.yaml"
@@ -161,7 +161,7 @@ def free_body(quick):
     print("| scheme | h at SV's error | error | steps/s (M) | ns/step | SV-equivalent "
           "steps/s (M) | time / SV's |")
     print("|---|---|---|---|---|---|---|")
-    for name in SPLITS:
+    for name in splits:
         integ = hpgen.compile(path, tableau=name)
         ladder = [2.0 ** -k for k in range(-1, 9)]
         pts = [(h, *error_time(integ, h)) for h in ladder]
@@ -243,16 +243,18 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--splits", help="comma-separated generated schemes of the heavy top "
-                    "T = 10 part (default: SPLITS)")
-    ap.add_argument("--part", choices=("all", "heavy", "free", "long"), default="all",
-                    help="one part only: heavy top T = 10, free body (and its ensembles), "
-                         "heavy top T = 10 .. 1000")
+                    "T = 10 and free body parts (default: SPLITS)")
+    ap.add_argument("--part", choices=("all", "heavy", "free", "free-ensembles", "long"),
+                    default="all", help="one part only: heavy top T = 10, free body (without "
+                    "or with its ensembles), heavy top T = 10 .. 1000")
     args = ap.parse_args()
+    splits = tuple(args.splits.split(",")) if args.splits else SPLITS
     if args.part in ("all", "heavy"):
-        heavy_top(args.quick, tuple(args.splits.split(",")) if args.splits else SPLITS)
-    if args.part in ("all", "free"):
-        h_at, e_sv = free_body(args.quick)
-        ensembles(args.quick, h_at, e_sv)
+        heavy_top(args.quick, splits)
+    if args.part in ("all", "free", "free-ensembles"):
+        h_at, e_sv = free_body(args.quick, splits)
+        if args.part != "free":
+            ensembles(args.quick, h_at, e_sv)
     if args.part in ("all", "long"):
         long_runs(args.quick)
 
