@@ -85,6 +85,13 @@ def test_schedule_per_stage():
                        ("frem", 0, 2, g / 2), ("kick", -1, 0, g / 2 + s.gammas[1] / 2)]
     assert [sum(o[0] == k for o in ops) for k in ("kick", "frem", "fsym", "rot")] == \
         [10, 18, 9, 0]
+    # two bodies: between two kicks each body's remainder / top / remainder, the top merged
+    model = load_model(EXAMPLES / "double_body_chain.yaml")
+    st = recognise(model, lagrangian_function(model))
+    ops = schedule(st, get_splitting("split2-fasso"), True)
+    assert [o[:2] for o in ops] == [("kick", -1)] + [
+        (kind, k) for k in (0, 1) for kind in ("frem", "fsym", "frem")] + [("kick", -1)]
+    assert ops[2][3] == 1.0 and ops[1][3] == 0.5
 
 
 @pytest.mark.parametrize("name", ["split2-fasso", TOP, "split6-blanes-moan-fasso"])
