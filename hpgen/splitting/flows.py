@@ -13,7 +13,12 @@ schemes' (p_k the momentum at the node t_k). The exact sub-flows over a time t:
 - SO2: R <- R rot(t p / I);
 - free (a symmetric body, two equal moments D_a and the distinct D_c about a_c): the exact
   free flow, the commuting rotations R <- R exp(t pi^ / D_a) (pi fixed) and about a_c by
-  t (a_c.pi)(1/D_c - 1/D_a).
+  t (a_c.pi)(1/D_c - 1/D_a);
+- Fasso's split of an asymmetric body (the ``-fasso`` schemes; FactorKinetics.fasso = (a, b,
+  s)): T_sym = |pi|^2 / (2 D_s) + (1/D_a - 1/D_s) pi_a^2 / 2, a symmetric top's exact flow
+  as above ("fsym"), and T_r = (1/D_b - 1/D_s) pi_b^2 / 2, one rotation about b by
+  t (b.pi)(1/D_b - 1/D_s) ("frem"); phi's kinetic part is T_r then T_sym, so the basic step's
+  is T_r(t/2) T_sym(t) T_r(t/2).
 
 The basic step S(t) = K(t/2) F(t) K(t/2) with the free flow's symmetric approximation
 F(t) = product over factors of X1(t/2) X2(t/2) X3(t) X2(t/2) X1(t/2) (Dullweber, Leimkuhler,

@@ -10,7 +10,8 @@ b), {b, s} the pair of moments closest in 1/D (hpgen.splitting.structure._fasso_
 - The schedule: per stage the remainder rotation, the symmetric top, the remainder rotation.
 - Measured orders against the exact free rigid body (slope = order within 0.15).
 - The guarantees of every splitting scheme, on the heavy top (SO3) and the underwater vehicle
-  (SE3): C and Python bitwise equal, the symmetric potential's momentum to 1e-12 relative,
+  (SE3): C and Python bitwise equal (also the two-body chain, SO3 x SO3), the symmetric
+  potential's momentum to 1e-12 relative,
   the group to 1e-13, symplectic to 1e-12 relative with linearize = the implicit derivative,
   lanes bitwise equal to simulate.
 - The error constant on the heavy top (I = (1, 5, 6), remainder |1/6 - 1/5| = 1/30): at
@@ -110,7 +111,8 @@ def test_measured_order_against_the_exact_free_body(compile_model, name):
     assert abs(slope - get_splitting(name).order) <= 0.15, (name, errs, slope)
 
 
-@pytest.mark.parametrize("path,name", [(HEAVY_TOP, TOP), (UNDERWATER, "split2-fasso")])
+@pytest.mark.parametrize("path,name", [(HEAVY_TOP, TOP), (UNDERWATER, "split2-fasso"),
+                                       (EXAMPLES / "double_body_chain.yaml", "split2-fasso")])
 def test_backends_bitwise_equal(compile_model, path, name):
     g0, xi0, mu0 = _start(path)
     runs = [compile_model(path, tableau=name, backend=b).simulate(g0, 0.02, 200, xi0=xi0,
