@@ -32,18 +32,22 @@ sys.path.insert(0, str(ROOT))
 
 SPLITS = ("split2", "split4-yoshida", "split4-suzuki", "split4-mclachlan", "split4-blanes-moan",
           "split6-yoshida", "split6-kahan-li", "split6-blanes-moan", "split8-mclachlan",
-          "split8-kahan-li")
+          "split8-kahan-li", "split2-fasso", "split4-suzuki-fasso", "split4-blanes-moan-fasso",
+          "split6-kahan-li-fasso", "split6-blanes-moan-fasso", "split8-kahan-li-fasso")
+#: the generated schemes of the long runs: the best DLM tables and the best Fasso variants
+LONG_SPLITS = ("split6-kahan-li", "split8-kahan-li", "split4-blanes-moan-fasso",
+               "split6-blanes-moan-fasso", "split8-kahan-li-fasso")
 HAND = ("splitting-2", "splitting-4", "splitting-6")
 #: the ensembles' stepping alone is timed over this many times the steps of T = 10
 LONG = 20
 
 
-def heavy_top(quick):
+def heavy_top(quick, splits=SPLITS):
     from hpgen.bench import run_bench
     from hpgen.bench.report import time_at_error
     hs = [0.4, 0.3, 0.2, 0.1, 0.05, 0.025, 0.0125, 0.00625, 0.003125]
     res = run_bench(ROOT / "examples" / "heavy_top.yaml", T=10, schemes=[
-        (s, "cay", "exact") for s in SPLITS], h=hs, rtol=[1e-4, 1e-6, 1e-8, 1e-10, 1e-12],
+        (s, "cay", "exact") for s in splits], h=hs, rtol=[1e-4, 1e-6, 1e-8, 1e-10, 1e-12],
         peers=["DOP853", "RK4-C", *HAND], write=False, min_time=0.05 if quick else 0.2,
         log=lambda s: None)
     gen = [p for p in res.points if p.kind == "hpgen"]
@@ -55,9 +59,9 @@ def heavy_top(quick):
           "gen | gen / hand |")
     print("|---|---|---|---|---|---|")
     for e in (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10):
-        tg = _best(gen, e, time_at_error)
+        tg, best = _best(gen, e, time_at_error, which=True)
         th = _best(hand, e, time_at_error)
-        cells = [f"{e:g}", _f(tg)]
+        cells = [f"{e:g}", _f(tg) + f" ({best})"]
         for name in ("DOP853", "RK4-C"):
             t = time_at_error(fam[name], e)
             cells.append("-" if t is None or tg is None else f"{t / tg:.3g}x")
@@ -69,7 +73,7 @@ def heavy_top(quick):
 def long_runs(quick):
     """Heavy top over T = 10 .. 1000: the final-state error against a DOP853 reference at
     rtol = atol = 1e-13 (hpgen bench's), the time at equal error of the best generated
-    splitting (split6-kahan-li, split8-kahan-li) and of RK4-C; their ratio per T and the
+    splitting (LONG_SPLITS) and of RK4-C; their ratio per T and the
     break-even T (log-log interpolation between the T where the ratio crosses 1) per error."""
     from hpgen.bench import run_bench
     from hpgen.bench.report import time_at_error
@@ -78,7 +82,7 @@ def long_runs(quick):
     ratio = {}
     for T in Ts:
         res = run_bench(ROOT / "examples" / "heavy_top.yaml", T=T, schemes=[
-            (s, "cay", "exact") for s in ("split6-kahan-li", "split8-kahan-li")],
+            (s, "cay", "exact") for s in LONG_SPLITS],
             h=[0.4 * 2.0 ** -k for k in range(8 if T <= 100 else 7)],
             rk4_h=[0.05 * 2.0 ** -k for k in range(6 if T <= 100 else 5)],
             peers=["RK4-C"], reference="dop853", write=False, min_time=0.02,
@@ -112,21 +116,22 @@ def _break_even(Ts, ratios) -> str:
     return f"> {pts[-1][0]}"
 
 
-def _best(points, e, time_at_error):
-    """The least time at error e over the families of ``points``."""
-    out = None
+def _best(points, e, time_at_error, which=False):
+    """The least time at error e over the families of ``points`` (with ``which``: and the
+    family reaching it)."""
+    out, name = None, None
     for f in sorted({p.family for p in points}):
         t = time_at_error([p for p in points if p.family == f], e)
         if t is not None and (out is None or t < out):
-            out = t
-    return out
+            out, name = t, f
+    return (out, name) if which else out
 
 
 def _f(x):
     return "-" if x is None else f"{x:.3g}"
 
 
-def free_body(quick):
+def free_body(quick, splits=SPLITS):
     import hpgen
     from hpgen.analysis.exact import free_rigid_body_attitude
     path = ROOT / "examples" / "free_rigid_body.yaml"
@@ -157,7 +162,7 @@ def free_body(quick):
     print("| scheme | h at SV's error | error | steps/s (M) | ns/step | SV-equivalent "
           "steps/s (M) | time / SV's |")
     print("|---|---|---|---|---|---|---|")
-    for name in SPLITS:
+    for name in splits:
         integ = hpgen.compile(path, tableau=name)
         ladder = [2.0 ** -k for k in range(-1, 9)]
         pts = [(h, *error_time(integ, h)) for h in ladder]
@@ -240,11 +245,21 @@ def _h_at(pts, e):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--splits", help="comma-separated generated schemes of the heavy top "
+                    "T = 10 and free body parts (default: SPLITS)")
+    ap.add_argument("--part", choices=("all", "heavy", "free", "free-ensembles", "long"),
+                    default="all", help="one part only: heavy top T = 10, free body (without "
+                    "or with its ensembles), heavy top T = 10 .. 1000")
     args = ap.parse_args()
-    heavy_top(args.quick)
-    h_at, e_sv = free_body(args.quick)
-    ensembles(args.quick, h_at, e_sv)
-    long_runs(args.quick)
+    splits = tuple(args.splits.split(",")) if args.splits else SPLITS
+    if args.part in ("all", "heavy"):
+        heavy_top(args.quick, splits)
+    if args.part in ("all", "free", "free-ensembles"):
+        h_at, e_sv = free_body(args.quick, splits)
+        if args.part != "free":
+            ensembles(args.quick, h_at, e_sv)
+    if args.part in ("all", "long"):
+        long_runs(args.quick)
 
 
 if __name__ == "__main__":

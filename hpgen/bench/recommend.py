@@ -34,7 +34,8 @@ TS_MAX = 10.0
 #: errors below this count as the reference floor
 FLOOR = 1e-11
 #: the splittings and VPRK schemes tried, cheapest family first
-SPLITTINGS = ("split2", "split4-suzuki", "split6-kahan-li", "split8-kahan-li")
+SPLITTINGS = ("split2", "split4-suzuki", "split6-kahan-li", "split8-kahan-li",
+              "split4-blanes-moan-fasso", "split6-blanes-moan-fasso")
 VPRK = (("stormer-verlet", None, None), ("gauss2", "cay", "exact"), ("gauss3", "cay", "exact"))
 MAX_HALVINGS = 8
 #: how far the measured slope may miss the order (high orders approach it from below)

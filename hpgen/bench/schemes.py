@@ -19,7 +19,8 @@ from .measure import FAILURES, Point, fixed_note, measure, steps_for
 DEFAULT_SCHEMES = (("stormer-verlet", "cay", "truncated"), ("gauss2", "exp", "exact"),
                    ("gauss2", "cay", "exact"), ("gauss3", "cay", "exact"))
 #: the splitting schemes the default grid adds for a model with their structure
-DEFAULT_SPLITTINGS = ("split4-suzuki", "split6-kahan-li", "split8-kahan-li")
+DEFAULT_SPLITTINGS = ("split4-suzuki", "split6-kahan-li", "split8-kahan-li",
+                      "split4-blanes-moan-fasso", "split6-blanes-moan-fasso")
 
 
 def validate_schemes(schemes):

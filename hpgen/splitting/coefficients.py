@@ -29,6 +29,7 @@ read this catalog.
 """
 from __future__ import annotations
 
+import dataclasses
 import functools
 from dataclasses import dataclass
 
@@ -54,6 +55,9 @@ class SplittingScheme:
     summary: str
     halves: tuple = ()
     adjoint_first: bool = False
+    #: how an asymmetric body's kinetic energy is split: "dlm" (one rotation per principal
+    #: axis) or "fasso" (a symmetric top plus one small remainder rotation)
+    kinetic: str = "dlm"
 
     @property
     def stages(self) -> int:
@@ -188,8 +192,14 @@ with mp.workdps(50):
             raise AssertionError(f"splitting coefficients {_name}: not a symmetric consistent "
                                  "composition of its order")
 
-#: the catalog's names, in catalog order
-SPLITTING_NAMES = tuple(_ENTRIES) + tuple(_HALVES)
+#: the tables' names, in catalog order (their kinetic part split as Dullweber-Leimkuhler-
+#: McLachlan's rotations about the three principal axes)
+TABLE_NAMES = tuple(_ENTRIES) + tuple(_HALVES)
+#: the suffix of a table's variant with Fasso's kinetic splitting (a symmetric top and one
+#: remainder rotation; hpgen.splitting.flows)
+FASSO = "-fasso"
+#: the catalog's names, in catalog order: the tables, then their Fasso variants
+SPLITTING_NAMES = TABLE_NAMES + tuple(n + FASSO for n in TABLE_NAMES)
 
 
 @functools.lru_cache(maxsize=None)
@@ -198,6 +208,10 @@ def get_splitting(name: str) -> SplittingScheme:
     if not isinstance(name, str) or name not in SPLITTING_NAMES:
         raise ModelError(f"unknown splitting scheme {name!r}: expected one of "
                          f"{', '.join(SPLITTING_NAMES)}", field="integrator.tableau")
+    if name.endswith(FASSO):
+        base = get_splitting(name[:-len(FASSO)])
+        return dataclasses.replace(base, name=name, kinetic="fasso",
+                                   summary=base.summary + ", Fasso's kinetic splitting")
     if name in _HALVES:
         c, order, summary, adjoint_first = _HALVES[name]
         return SplittingScheme(name, (), order, summary, tuple(float(x) for x in c),

@@ -13,7 +13,12 @@ schemes' (p_k the momentum at the node t_k). The exact sub-flows over a time t:
 - SO2: R <- R rot(t p / I);
 - free (a symmetric body, two equal moments D_a and the distinct D_c about a_c): the exact
   free flow, the commuting rotations R <- R exp(t pi^ / D_a) (pi fixed) and about a_c by
-  t (a_c.pi)(1/D_c - 1/D_a).
+  t (a_c.pi)(1/D_c - 1/D_a);
+- Fasso's split of an asymmetric body (the ``-fasso`` schemes; FactorKinetics.fasso = (a, b,
+  s)): T_sym = |pi|^2 / (2 D_s) + (1/D_a - 1/D_s) pi_a^2 / 2, a symmetric top's exact flow
+  as above ("fsym"), and T_r = (1/D_b - 1/D_s) pi_b^2 / 2, one rotation about b by
+  t (b.pi)(1/D_b - 1/D_s) ("frem"); phi's kinetic part is T_r then T_sym, so the basic step's
+  is T_r(t/2) T_sym(t) T_r(t/2).
 
 The basic step S(t) = K(t/2) F(t) K(t/2) with the free flow's symmetric approximation
 F(t) = product over factors of X1(t/2) X2(t/2) X3(t) X2(t/2) X1(t/2) (Dullweber, Leimkuhler,
@@ -45,17 +50,20 @@ def _force_function(group, lag, g):
     return ca.substitute(f, eta, ca.SX.zeros(d))
 
 
-def _first_order(fk: FactorKinetics, k: int, c: float) -> list:
+def _first_order(fk: FactorKinetics, k: int, c: float, kinetic: str = "dlm") -> list:
     """Factor k's kinetic sub-flows of phi(c h), in order, as (kind, factor, axis,
     coefficient): SE3's drift, then the rotations about the principal axes 1, 2, 3 (the
-    largest moment last) or a symmetric body's exact free flow; R<n> its drift, SO2 its
-    rotation."""
+    largest moment last; ``kinetic`` "dlm") or Fasso's remainder rotation then his symmetric
+    top ("fasso", an asymmetric body) or a symmetric body's exact free flow; R<n> its drift,
+    SO2 its rotation."""
     if fk.family == "R":
         return [("drift", k, 0, c)]
     if fk.family == "SO2":
         return [("rot", k, 0, c)]
     if fk.symmetric_axis is not None:
         rots = [("free", k, 0, c)]
+    elif kinetic == "fasso":
+        rots = [("frem", k, fk.fasso[1], c), ("fsym", k, 0, c)]
     else:
         rots = [("rot", k, 0, c), ("rot", k, 1, c), ("rot", k, 2, c)]
     return ([("drift", k, 0, c)] if fk.family == "SE3" else []) + rots
@@ -72,7 +80,8 @@ def schedule(structure: SplitStructure, scheme, kicks: bool) -> list:
     kick = [("kick", -1, 0)] if kicks else []
     for i, c in enumerate(scheme.halves):
         adjoint = (i % 2 == 1) != scheme.adjoint_first
-        flows = [_first_order(fk, k, c) for k, fk in enumerate(structure.factors)]
+        flows = [_first_order(fk, k, c, scheme.kinetic)
+                 for k, fk in enumerate(structure.factors)]
         half = [op + (c,) for op in kick] + [op for f in flows for op in f]
         ops.extend(half[::-1] if adjoint else half)
     # between two kicks the factors' kinetic flows commute (they move disjoint parts of the
@@ -156,7 +165,8 @@ def _axis_rotation(a, theta):
     return c * ca.SX.eye(3) + s * ca.SX(ahat) + (1 - c) * ca.SX(ca.mtimes(A, A.T))
 
 
-def _rotate(st: _State, k: int, axis: int, t):
+def _rotate(st: _State, k: int, axis: int, t, rate=None):
+    """The flow of rate (a.pi)^2 / 2 about principal axis a (rate 1/D_a unless given)."""
     fk = st.structure.factors[k]
     if fk.family == "SO2":
         phi = t * st.p[k][0] * (1.0 / fk.moments[0])
@@ -167,7 +177,7 @@ def _rotate(st: _State, k: int, axis: int, t):
     a = tuple(fk.axes[r][axis] for r in range(3))
     pi = st.p[k][0:3]
     api = sum((a[r] * pi[r] for r in range(3) if a[r] != 0.0), ca.SX(0))
-    Q = _axis_rotation(a, t * api * (1.0 / fk.moments[axis]))
+    Q = _axis_rotation(a, t * api * (1.0 / fk.moments[axis] if rate is None else rate))
     st.R[k] = ca.mtimes(st.R[k], Q)
     parts = [ca.mtimes(Q.T, pi)]
     if fk.family == "SE3":
@@ -192,11 +202,17 @@ def _rodrigues(w):
 
 def _free(st: _State, k: int, t):
     """The exact free flow of a symmetric body (moments D_a = D_b, distinct D_c about axis
-    a_c): H = |pi|^2 / (2 D_a) + (a_c.pi)^2 (1/D_c - 1/D_a) / 2, two commuting exact flows:
-    the rotation by t pi / D_a (pi fixed) and the rotation about a_c."""
+    a_c)."""
     fk = st.structure.factors[k]
     c = fk.symmetric_axis
-    Da = fk.moments[(c + 1) % 3]
+    _symmetric_top(st, k, t, fk.moments[(c + 1) % 3], c)
+
+
+def _symmetric_top(st: _State, k: int, t, Da: float, c: int):
+    """The exact flow of H = |pi|^2 / (2 D_a) + (a_c.pi)^2 (1/D_c - 1/D_a) / 2, two
+    commuting exact flows (|pi|^2 is a Casimir): the rotation by t pi / D_a (pi fixed) and
+    the rotation about a_c."""
+    fk = st.structure.factors[k]
     pi = st.p[k][0:3]
     Q = _rodrigues(t * (1.0 / Da) * pi)
     st.R[k] = ca.mtimes(st.R[k], Q)
@@ -243,6 +259,12 @@ def composition(structure, group, force, gsym, ops, g, p, h):
             _rotate(st, k, axis, t)
         elif kind == "free":
             _free(st, k, t)
+        elif kind == "fsym":
+            fk = structure.factors[k]
+            _symmetric_top(st, k, t, fk.moments[fk.fasso[2]], fk.fasso[0])
+        elif kind == "frem":
+            fk = structure.factors[k]
+            _rotate(st, k, axis, t, 1.0 / fk.moments[axis] - 1.0 / fk.moments[fk.fasso[2]])
         else:
             _drift(st, k, t)
     return st.g(group.n), st.momentum()
