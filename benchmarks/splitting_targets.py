@@ -42,32 +42,56 @@ HAND = ("splitting-2", "splitting-4", "splitting-6")
 LONG = 20
 
 
-def heavy_top(quick, splits=SPLITS):
+def heavy_top(quick, splits=SPLITS, cache_dir=None):
+    hs = [0.4, 0.3, 0.2, 0.1, 0.05, 0.025, 0.0125, 0.00625, 0.003125]
+    return equal_error(ROOT / "examples" / "heavy_top.yaml", "Heavy top", quick, splits, hs,
+                       ("DOP853", "RK4-C", *HAND), "dop853", cache_dir)
+
+
+def free_body_equal_error(quick, splits=SPLITS, cache_dir=None):
+    """The free body (examples/free_rigid_body.yaml), T = 10, against the exact flow: h from
+    10 (one step) down to 10 * 2^-14, so that every family's front spans 1e-4 .. 1e-10 where
+    its order allows (the order-2 schemes stop short of 1e-10)."""
+    hs = [10.0 * 2.0 ** -k for k in range(12 if quick else 15)]
+    return equal_error(ROOT / "examples" / "free_rigid_body.yaml", "Free rigid body", quick,
+                       splits, hs, ("RK4-C", *HAND), "exact", cache_dir)
+
+
+def equal_error(path, title, quick, splits, hs, peers, reference, cache_dir=None):
+    """``hpgen bench`` points over T = 10 (the generated splittings and ``peers``), each
+    family's time at errors 1e-4 .. 1e-10 read off its Pareto front; prints the table of
+    peer time / the best generated splitting's time and returns
+    {error: (best generated time, its scheme, best hand-written time, its family)}."""
     from hpgen.bench import run_bench
     from hpgen.bench.report import time_at_error
-    hs = [0.4, 0.3, 0.2, 0.1, 0.05, 0.025, 0.0125, 0.00625, 0.003125]
-    res = run_bench(ROOT / "examples" / "heavy_top.yaml", T=10, schemes=[
-        (s, "cay", "exact") for s in splits], h=hs, rtol=[1e-4, 1e-6, 1e-8, 1e-10, 1e-12],
-        peers=["DOP853", "RK4-C", *HAND], write=False, min_time=0.05 if quick else 0.2,
-        log=lambda s: None)
+    load = os.getloadavg()[0]
+    res = run_bench(path, T=10, schemes=[(s, "cay", "exact") for s in splits], h=hs,
+                    rtol=[1e-4, 1e-6, 1e-8, 1e-10, 1e-12], peers=list(peers),
+                    reference=reference, write=False, min_time=0.05 if quick else 0.2,
+                    cache_dir=cache_dir, log=lambda s: None)
     gen = [p for p in res.points if p.kind == "hpgen"]
     hand = [p for p in res.points if p.family in HAND]
-    fam = {name: [p for p in res.points if p.family == name] for name in ("DOP853", "RK4-C")}
-    print("## Heavy top, T = 10: time at equal error (ratio = peer time / best generated "
-          "splitting's time)\n")
-    print("| error | best generated (s) | DOP853 / gen | RK4-C / gen | best hand splitting / "
-          "gen | gen / hand |")
-    print("|---|---|---|---|---|---|")
+    others = [name for name in peers if name not in HAND]
+    fam = {name: [p for p in res.points if p.family == name] for name in others}
+    print(f"\n## {title}, T = 10 (reference: {res.reference}): time at equal error (ratio = "
+          f"peer time / best generated splitting's time; load average {load:.1f} before, "
+          f"{os.getloadavg()[0]:.1f} after)\n")
+    print("| error | best generated (s) | " + " | ".join(f"{n} / gen" for n in others)
+          + " | best hand splitting / gen | gen / hand |")
+    print("|---|---|" + "---|" * len(others) + "---|---|")
+    out = {}
     for e in (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10):
         tg, best = _best(gen, e, time_at_error, which=True)
-        th = _best(hand, e, time_at_error)
+        th, hbest = _best(hand, e, time_at_error, which=True)
+        out[e] = (tg, best, th, hbest)
         cells = [f"{e:g}", _f(tg) + f" ({best})"]
-        for name in ("DOP853", "RK4-C"):
+        for name in others:
             t = time_at_error(fam[name], e)
             cells.append("-" if t is None or tg is None else f"{t / tg:.3g}x")
-        cells.append("-" if th is None or tg is None else f"{th / tg:.3g}x")
+        cells.append("-" if th is None or tg is None else f"{th / tg:.3g}x ({hbest})")
         cells.append("-" if th is None or tg is None else f"{tg / th:.3g}")
         print("| " + " | ".join(cells) + " |")
+    return out
 
 
 def long_runs(quick):
@@ -242,25 +266,31 @@ def _h_at(pts, e):
     return None
 
 
-def main():
+def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--splits", help="comma-separated generated schemes of the heavy top "
                     "T = 10 and free body parts (default: SPLITS)")
-    ap.add_argument("--part", choices=("all", "heavy", "free", "free-ensembles", "long"),
-                    default="all", help="one part only: heavy top T = 10, free body (without "
-                    "or with its ensembles), heavy top T = 10 .. 1000")
-    args = ap.parse_args()
+    ap.add_argument("--part", choices=("all", "heavy", "free-equal", "free", "free-ensembles",
+                                       "long"),
+                    default="all", help="one part only: heavy top T = 10, free body at equal "
+                    "error against the hand-written splittings, free body at SV's error "
+                    "(without or with its ensembles), heavy top T = 10 .. 1000")
+    ap.add_argument("--cache-dir", help="hpgen's module cache (default: ~/.cache/hpgen)")
+    args = ap.parse_args(argv)
     splits = tuple(args.splits.split(",")) if args.splits else SPLITS
     if args.part in ("all", "heavy"):
-        heavy_top(args.quick, splits)
+        heavy_top(args.quick, splits, args.cache_dir)
+    if args.part in ("all", "free-equal"):
+        free_body_equal_error(args.quick, splits, args.cache_dir)
     if args.part in ("all", "free", "free-ensembles"):
         h_at, e_sv = free_body(args.quick, splits)
         if args.part != "free":
             ensembles(args.quick, h_at, e_sv)
     if args.part in ("all", "long"):
         long_runs(args.quick)
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())
