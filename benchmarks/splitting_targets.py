@@ -91,6 +91,11 @@ def equal_error(path, title, quick, splits, hs, peers, reference, cache_dir=None
         cells.append("-" if th is None or tg is None else f"{th / tg:.3g}x ({hbest})")
         cells.append("-" if th is None or tg is None else f"{tg / th:.3g}")
         print("| " + " | ".join(cells) + " |")
+    for name in sorted({b for _, b, _, _ in out.values() if b}):
+        pro = next((n for p in gen if p.family == name for n in p.notes
+                    if n.startswith("simulate prologue")), None)
+        if pro:
+            print(f"\n{name}: {pro}")
     return out
 
 
