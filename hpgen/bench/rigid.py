@@ -96,6 +96,10 @@ class RigidPeers:
         lib.hpgen_rigid_rattle.argtypes = [P, P, P, D, L, L, P, P]
         lib.hpgen_rigid_rattle.restype = L
         self._coef = {k: np.array(v, dtype=np.float64) for k, v in COMPOSITIONS.items()}
+        # the constant arguments' addresses, taken once (the arrays live as long as self):
+        # a run's Python cost is then one state copy and the call
+        self._body = (self.inertia.ctypes.data, self.m.ctypes.data)
+        self._coef_arg = {k: (c.ctypes.data, len(c)) for k, c in self._coef.items()}
         self.setup_s = time.perf_counter() - t0
 
     def run(self, family, y0, h, steps, every=None):
@@ -104,14 +108,13 @@ class RigidPeers:
         rp = None if rec is None else rec.ctypes.data
         its = ctypes.c_long(0)
         if family == "RATTLE":
-            done = self.lib.hpgen_rigid_rattle(y.ctypes.data, self.inertia.ctypes.data,
-                                               self.m.ctypes.data, float(h), int(steps),
-                                               int(every or 1), rp, ctypes.byref(its))
+            done = self.lib.hpgen_rigid_rattle(y.ctypes.data, *self._body, float(h),
+                                               int(steps), int(every or 1), rp,
+                                               ctypes.byref(its))
         else:
-            c = self._coef[family]
-            done = self.lib.hpgen_rigid_split(y.ctypes.data, self.inertia.ctypes.data,
-                                              self.m.ctypes.data, c.ctypes.data, len(c),
-                                              float(h), int(steps), int(every or 1), rp)
+            done = self.lib.hpgen_rigid_split(y.ctypes.data, *self._body,
+                                              *self._coef_arg[family], float(h), int(steps),
+                                              int(every or 1), rp)
         if rec is not None:
             rec = rec[:done // (every or 1) + 1]
         return rec, y, int(done), int(its.value)
