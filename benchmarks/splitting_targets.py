@@ -7,6 +7,9 @@
    1e-10, each family's time read off its Pareto front (log-log interpolation, as the bench's
    equal-error comparison), then the best generated splitting against DOP853, RK4-C and the
    best hand-written splitting (ratio = their time / hpgen's time, > 1: hpgen faster).
+   ``--part free-equal``: the same table for the free rigid body (examples/free_rigid_body.yaml,
+   T = 10, error against the exact flow of hpgen.analysis.exact; peers RK4-C and the
+   hand-written DLM splittings 2/4/6, one C call a run).
 2. Free rigid body (examples/free_rigid_body.yaml), T = 10, against the exact solution: the
    error of the generated Stormer-Verlet (cay, truncated) at h = 0.01, and for every
    splitting scheme the step h reaching that error (log-log interpolation over a ladder of
