@@ -118,18 +118,23 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
         m, nP = len(model.inputs), len(model.runtime_symbols)
         hv = ca.SX.sym("h", 2 + m + nP)           # [h, t_k, u, params]
         h, t, u, P = hv[0], hv[1], hv[2:2 + m], hv[2 + m:]
-        lag_f, force_f = open_functions(model)
-        lag_t = lambda G, X, tt: lag_f(G, X, tt, P)  # noqa: E731
-        lag = lambda G, X: lag_f(G, X, t, P)  # noqa: E731  (at t_k: records, energy)
-        force = (lambda G, X, tt: force_f(G, X, tt, u, P)) if model.forced else None
         reduced = model.left_invariant and not model.forced and not model.time_dependent \
             and not model.constraints
-        if is_splitting(tableau):
-            reduced = False
-            eqs, chart = splitting_step(model, tableau, lag, g, p, h, P)
+        fam = family_step(model, tableau, tau, rkmk, g, p, hv) if local else None
+        if fam is not None:          # per body, t and params passed through (no forces)
+            eqs, lag, force = fam.eqs, fam.lag, None
         else:
-            eqs = step_equations(group, lag_t, tableau, tau, rkmk, reduced, g, p, h, t, force)
-        lag1 = lambda G, X: lag_f(G, X, t + h, P)  # noqa: E731  (at t_{k+1})
+            lag_f, force_f = open_functions(model)
+            lag_t = lambda G, X, tt: lag_f(G, X, tt, P)  # noqa: E731
+            lag = lambda G, X: lag_f(G, X, t, P)  # noqa: E731  (at t_k: records, energy)
+            force = (lambda G, X, tt: force_f(G, X, tt, u, P)) if model.forced else None
+            if is_splitting(tableau):
+                reduced = False
+                eqs, chart = splitting_step(model, tableau, lag, g, p, h, P)
+            else:
+                eqs = step_equations(group, lag_t, tableau, tau, rkmk, reduced, g, p, h, t,
+                                     force)
+            lag1 = lambda G, X: lag_f(G, X, t + h, P)  # noqa: E731  (at t_{k+1})
         extra = [("h", hv)]
     else:
         h = hv = ca.SX.sym("h", 1)

@@ -57,12 +57,42 @@ class FamilyParts:
     velocity: object     # (g, p, xi) -> SX d: one Newton step of dl/dxi = p, body by body
 
 
+def open_layout(model):
+    """(m, P): the numbers of control inputs and runtime parameter entries of an open family
+    model (its step vector hv = [h, t_k, u (m), params (P)], hpgen.abi), None when closed."""
+    if not model.open_system:
+        return None
+    return len(model.inputs), len(model.runtime_symbols)
+
+
+def split_step_vector(model, hv):
+    """(h, e_k, e_1) from the step input hv: h the step (hv itself when closed), e_k and e_1
+    the environment (t, params) at t_k and at t_k + h, or None when closed."""
+    lay = open_layout(model)
+    if lay is None:
+        return hv, None, None
+    h, t, P = hv[0], hv[1], hv[2 + lay[0]:]
+    return h, ca.vertcat(t, P), ca.vertcat(t + h, P)
+
+
+def _with(args, e):
+    """A body function's arguments, with the environment e (t, params) appended when open."""
+    return [*args, e] if e is not None else list(args)
+
+
 def _body_lagrangians(model, body):
-    """{class key: (inline Function l(G, X, i), call Function)}, and the key of each body."""
+    """{class key: (inline Function l(G, X, i[, e]), call Function)}, and the key of each
+    body; e = (t, params) (open models: t the time, params Model.runtime_symbols' order)."""
+    from ..model.symbols import TIME_SYMBOL
     terms = model.family.local.bodies
     N = model.family.count
     keys = [tuple(j for j, t in enumerate(terms) if t.start <= k < t.stop) for k in range(N)]
     G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i")
+    lay = open_layout(model)
+    E = ca.SX.sym("e", 1 + lay[1]) if lay is not None else None
+    env = {}
+    if E is not None:
+        env = {TIME_SYMBOL: E[0], **{s: E[1 + k] for k, s in enumerate(model.runtime_symbols)}}
     funs = {}
     for c, key in enumerate(sorted(set(keys))):
         expr = ca.SX(0)
@@ -76,9 +106,10 @@ def _body_lagrangians(model, body):
                     a, b = map(int, name[2:].split("_"))
                     mapping[s] = G[a, b]
             mapping[t.index] = I
+            mapping.update({s: v for s, v in env.items() if s in t.expr.free_symbols})
             expr = expr + to_casadi(t.expr, mapping)
-        funs[key] = (ca.Function(f"l_body{c}", [G, X, I], [expr]),
-                     ca.Function(f"l_body{c}_call", [G, X, I], [expr], CALL))
+        funs[key] = (ca.Function(f"l_body{c}", _with([G, X, I], E), [expr]),
+                     ca.Function(f"l_body{c}_call", _with([G, X, I], E), [expr], CALL))
     return funs, keys
 
 
@@ -114,10 +145,20 @@ def _joint_functions(model, body):
 
 
 def family_local(model) -> bool:
-    """True when ``model`` is derived body by body: a closed family model whose Lagrangian
-    sums and joints are local (hpgen.model.bodyterms); otherwise it is expanded."""
+    """True when ``model`` is derived body by body: a family model whose Lagrangian sums and
+    joints are local (hpgen.model.bodyterms), without forces or control inputs (runtime
+    parameters and t may enter the Lagrangian, not the joints); otherwise it is expanded."""
     family = getattr(model, "family", None)
-    return family is not None and family.local is not None and not model.open_system
+    if family is None or family.local is None:
+        return False
+    if model.open_system:
+        if model.forced or model.inputs:
+            return False
+        for jt in family.local.joints:
+            for r in jt.rows:
+                if any(not str(s).startswith("g_") and s != jt.index for s in r.free_symbols):
+                    return False
+    return True
 
 
 def block_diagonal_symbol(group):
@@ -141,15 +182,25 @@ def _functions(model, tableau, tau: str, rkmk: str):
     body = group_from_spec(family.body)
     nb, db = body.n, body.d
     lags, keys = _body_lagrangians(model, body)
-    reduced = model.left_invariant and not model.constraints
+    reduced = model.left_invariant and not model.constraints and not model.time_dependent
 
-    # one body's step per class, derived once
-    gb, pb, hb, ib = ca.SX.sym("g", nb, nb), ca.SX.sym("p", db), ca.SX.sym("h"), ca.SX.sym("i")
+    # one body's step per class, derived once; its h input is the step vector of an open
+    # model (hpgen.abi: [h, t_k, u, params])
+    lay = open_layout(model)
+    H = 1 if lay is None else 2 + lay[0] + lay[1]
+    gb, pb, ib = ca.SX.sym("g", nb, nb), ca.SX.sym("p", db), ca.SX.sym("i")
+    hb = ca.SX.sym("h") if lay is None else ca.SX.sym("h", H)
+    h_, _, _ = split_step_vector(model, hb)
     gbv = ca.vec(gb)
     steps = {}
     for c, (cls, (lag_in, _)) in enumerate(sorted(lags.items())):
-        e = step_equations(body, lambda G, X, f=lag_in: f(G, X, ib), tableau, tau, rkmk,
-                           reduced, gb, pb, hb)
+        if lay is None:
+            e = step_equations(body, lambda G, X, f=lag_in: f(G, X, ib), tableau, tau, rkmk,
+                               reduced, gb, pb, hb)
+        else:
+            P = hb[2 + lay[0]:]
+            e = step_equations(body, lambda G, X, tt, f=lag_in: f(G, X, ib, ca.vertcat(tt, P)),
+                               tableau, tau, rkmk, reduced, gb, pb, h_, hb[1])
         args = [e.z, gbv, pb, hb, ib]
         steps[cls] = dict(
             nz=e.z.numel(), blocks=e.blocks,
@@ -161,7 +212,7 @@ def _functions(model, tableau, tau: str, rkmk: str):
 
     joints = family.local.joints
     jfun = _joint_functions(model, body) if joints else {}
-    vel_funs = _node_velocity(lags, body) if joints else {}
+    vel_funs = _node_velocity(lags, body, lay) if joints else {}
     out = (body, lags, keys, steps, jfun, vel_funs)
     _LAST[:] = [model, key, out]
     return out
@@ -170,9 +221,10 @@ def _functions(model, tableau, tau: str, rkmk: str):
 def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyParts:
     """The family step (module docstring) in g (n x n: SX, block-diagonal, or MX), p (d), h
     (1), for a model with family_local(model); z: the unknowns' symbol to use (else a new
-    one, of the class of g)."""
+    one, of the class of g). An open model's h is its step vector hv (hpgen.abi)."""
     S = ca.MX if isinstance(g, ca.MX) else ca.SX      # the composition's symbol class
     body, lags, keys, steps, jfun, vel_funs = _functions(model, tableau, tau, rkmk)
+    hs, ek, e1 = split_step_vector(model, h)
     nb, db, N = body.n, body.d, model.family.count
 
     Gk = [g[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb] for k in range(N)]
@@ -213,7 +265,7 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     for mk in margins[1:]:
         margin = ca.fmin(margin, mk)
     g1 = ca.diagcat(*g1s)
-    lag, velocity = _product_lagrangian(lags, keys, body, N)
+    lag, velocity = _product_lagrangian(lags, keys, body, N, ek)
     if not joints:
         eqs = StepEquations(z, tuple(blocks), ca.vertcat(*res), g1, ca.vertcat(*p1s),
                             ca.vertcat(*guesses), xi_hat, margin, ca.vertcat(*charts))
@@ -225,20 +277,20 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     kick = [S.zeros(db) for _ in range(N)]           # sum_j Phi_{j,k}(g1)^T nu_j
     for j, jt in enumerate(joints):
         out = jfun[(jt.text, jt.index)](*[ca.vec(g1s[b]) for b in jt.bodies], jt.value)
-        phis.append(out[0] / h)
+        phis.append(out[0] / hs)
         Phi1.append(out[1:])
         for s, b in enumerate(jt.bodies):
             kick[b] = kick[b] + ca.mtimes(out[1 + s].T, nu[rows[j]:rows[j + 1]])
     p1s = [p1s[k] - kick[k] for k in range(N)]
     if explicit:
-        vel = [vel_funs[keys[k]][0](ca.vec(g1s[k]), p1s[k], k,
-                                    _inverse_hessian(vel_funs[keys[k]][1], k)) for k in range(N)]
+        vel = [vel_funs[keys[k]][0](*_with([ca.vec(g1s[k]), p1s[k], k, _inverse_hessian(
+            vel_funs[keys[k]][1], k)], e1)) for k in range(N)]
         extra_rows, extra_guess = [], []
     else:
         v1 = z[nz + 2 * m:]
         vel = [v1[k * db:(k + 1) * db] for k in range(N)]
-        dl = _momentum(lags, body)
-        extra_rows = [dl[keys[k]](g1s[k], vel[k], k) - p1s[k] for k in range(N)]
+        dl = _momentum(lags, body, e1 is not None and e1.numel())
+        extra_rows = [dl[keys[k]](*_with([g1s[k], vel[k], k], e1)) - p1s[k] for k in range(N)]
         extra_guess = [xi_hat]
         blocks.append(("v1", nz + 2 * m, nz + 2 * m + N * db))
     hidden = []
@@ -252,31 +304,34 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     return FamilyParts(eqs, lag, velocity)
 
 
-def _momentum(lags, body):
-    """{class key: Function(g, xi, i) -> dl/dxi} (call nodes)."""
+def _momentum(lags, body, ne):
+    """{class key: Function(g, xi, i[, e]) -> dl/dxi} (call nodes); ne: e's size (0: closed)."""
     G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i")
-    return {key: ca.Function(f"body{c}_momentum", [G, X, I],
-                             [ca.gradient(lag_in(G, X, I), X)], CALL)
+    E = ca.SX.sym("e", ne) if ne else None
+    return {key: ca.Function(f"body{c}_momentum", _with([G, X, I], E),
+                             [ca.gradient(lag_in(*_with([G, X, I], E)), X)], CALL)
             for c, (key, (lag_in, _)) in enumerate(sorted(lags.items()))}
 
 
-def _node_velocity(lags, body):
-    """{class key: (Function(g (vec), p, i, Hinv (d*d, column-major)) -> Hinv (p - dl/dxi(g, 0)),
-    Function(i) -> d2l/dxi2)}, or None for a class whose d2l/dxi2 depends on g or xi (it may
-    depend on i: its inverse is taken numerically per body, as the expanded step does)."""
+def _node_velocity(lags, body, lay=None):
+    """{class key: (Function(g (vec), p, i, Hinv (d*d, column-major)[, e]) -> Hinv (p -
+    dl/dxi(g, 0)), Function(i) -> d2l/dxi2)}, or None for a class whose d2l/dxi2 depends on
+    g or xi, or on e = (t, params) (lay: open_layout; it may depend on i: its inverse is
+    taken numerically per body, as the expanded step does)."""
     G, X, I, P = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i"), \
         ca.SX.sym("p", body.d)
+    E = ca.SX.sym("e", 1 + lay[1]) if lay is not None else None
     Hinv = ca.SX.sym("Hinv", body.d, body.d)
     out = {}
     for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
-        dl = ca.gradient(lag_in(G, X, I), X)
+        dl = ca.gradient(lag_in(*_with([G, X, I], E)), X)
         hess = ca.jacobian(dl, X)
-        if ca.depends_on(hess, ca.vertcat(ca.vec(G), X)):
+        if ca.depends_on(hess, ca.vertcat(ca.vec(G), X, *([E] if E is not None else []))):
             out[key] = None
             continue
         vel = ca.mtimes(Hinv, P - ca.substitute(dl, X, ca.SX.zeros(body.d)))
-        out[key] = (ca.Function(f"body{c}_velocity", [ca.vec(G), P, I, ca.vec(Hinv)], [vel],
-                                CALL), ca.Function(f"body{c}_hessian", [I], [hess]))
+        out[key] = (ca.Function(f"body{c}_velocity", _with([ca.vec(G), P, I, ca.vec(Hinv)], E),
+                                [vel], CALL), ca.Function(f"body{c}_hessian", [I], [hess]))
     return out
 
 
@@ -286,24 +341,26 @@ def _inverse_hessian(fun, k: int):
     return ca.DM(np.linalg.inv(H).ravel(order="F"))
 
 
-def _product_lagrangian(lags, keys, body, N):
+def _product_lagrangian(lags, keys, body, N, ek=None):
     """(lag, velocity): l(G, X) of the product as a sum of per-body calls, and one Newton step
-    of dl/dxi = p from xi body by body (the Hessian of a separable l is block-diagonal)."""
+    of dl/dxi = p from xi body by body (the Hessian of a separable l is block-diagonal); ek:
+    an open model's (t_k, params), bound into both."""
     nb, db = body.n, body.d
     G, X, I, P = ca.SX.sym("g", nb, nb), ca.SX.sym("xi", db), ca.SX.sym("i"), ca.SX.sym("p", db)
+    E = ca.SX.sym("e", ek.numel()) if ek is not None else None
     steps = {}
     for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
-        mu = ca.gradient(lag_in(G, X, I), X)
-        steps[key] = ca.Function(f"body{c}_velocity_step", [ca.vec(G), P, X, I],
+        mu = ca.gradient(lag_in(*_with([G, X, I], E)), X)
+        steps[key] = ca.Function(f"body{c}_velocity_step", _with([ca.vec(G), P, X, I], E),
                                  [X - ca.solve(ca.jacobian(mu, X), mu - P)], CALL)
 
     def lag(Gp, Xp):
-        terms = [lags[keys[k]][1](Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb],
-                                  Xp[k * db:(k + 1) * db], k) for k in range(N)]
+        terms = [lags[keys[k]][1](*_with([Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb],
+                                          Xp[k * db:(k + 1) * db], k], ek)) for k in range(N)]
         return ca.sum1(ca.vertcat(*terms))
 
     def velocity(Gp, Pp, Xp):
-        return ca.vertcat(*[steps[keys[k]](ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]),
-                                           Pp[k * db:(k + 1) * db], Xp[k * db:(k + 1) * db], k)
-                            for k in range(N)])
+        return ca.vertcat(*[steps[keys[k]](*_with([
+            ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]), Pp[k * db:(k + 1) * db],
+            Xp[k * db:(k + 1) * db], k], ek)) for k in range(N)])
     return lag, velocity

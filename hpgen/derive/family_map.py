@@ -75,8 +75,12 @@ def mapped_step(model, funcs, G, P, h, z, xi_hat) -> StepEquations | None:
 def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     """(mapped_step's StepEquations, its intermediates for the block-assembled Jacobian
     (hpgen.derive.family_jacobian): a dict of MX Z, Q, G1, P1, V (columns per body), the
-    joint groups, the constants I, Hinv and the joint rows' order), or None."""
+    joint groups, the constants I, Hinv and the joint rows' order), or None. An open model's
+    h is its step vector hv (hpgen.abi)."""
+    from .family import _with, split_step_vector
     body, lags, keys, steps, jfun, vel_funs = funcs
+    hv = h
+    h, _, e1 = split_step_vector(model, hv)
     N, db = model.family.count, body.d
     if len(steps) != 1 or any(f is None for f in vel_funs.values()):
         return None
@@ -107,8 +111,8 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
             L = L + ca.mtimes(imp[s], sel[s])
         plan.append((js, fns, cols, sel, Ij, nu, rows))
     Q = P - L
-    Fr = mapped(st["F"], N)(Z, G, Q, h, I)
-    G1, P1m = mapped(st["U"], N)(Z, G, Q, h, I)
+    Fr = mapped(st["F"], N)(Z, G, Q, hv, I)
+    G1, P1m = mapped(st["U"], N)(Z, G, Q, hv, I)
     phis, rows_of = [], []
     for js, fns, cols, sel, Ij, nu, rows in plan:
         out = mapped(fns[1], len(js))(*[G1[:, c] for c in cols], Ij, nu)
@@ -120,7 +124,7 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     vel_fn, hess_fn = vel_funs[cls]
     Hinv = ca.DM(np.hstack([np.linalg.inv(np.array(hess_fn(k), dtype=float)).reshape(
         -1, 1, order="F") for k in range(N)]))
-    V = mapped(vel_fn, N)(G1, P1, I, Hinv)
+    V = mapped(vel_fn, N)(*_with([G1, P1, I, Hinv], e1))
     hidden = [mapped(fns[2], len(js))(*[G1[:, c] for c in cols], Ij, *[V[:, c] for c in cols])
               for js, fns, cols, sel, Ij, nu, rows in plan]
     # joint rows back in file order
@@ -128,14 +132,14 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     perm = np.argsort([rowoff[j] + r for j, r in order], kind="stable")
     phi = ca.vertcat(*[ca.vec(x) for x in phis])[perm.tolist()]
     hid = ca.vertcat(*[ca.vec(x) for x in hidden])[perm.tolist()]
-    margins = mapped(st["M"], N)(Z, h)
-    charts = mapped(st["C"], N)(Z, h)
-    guess = mapped(st["Z"], N)(ca.reshape(xi_hat, db, N), G, P, h)
+    margins = mapped(st["M"], N)(Z, hv)
+    charts = mapped(st["C"], N)(Z, hv)
+    guess = mapped(st["Z"], N)(ca.reshape(xi_hat, db, N), G, P, hv)
     eqs = StepEquations(z, (), ca.vertcat(ca.vec(Fr), phi, hid), G1, ca.vec(P1),
                         ca.vertcat(ca.vec(guess), ca.MX.zeros(2 * m)), xi_hat,
                         ca.mmin(margins), ca.vec(charts))
     groups_out = [(key, js) for key, js in groups.items()]
-    parts = {"z": z, "Z": Z, "G": G, "Q": Q, "G1": G1, "P1": P1, "V": V, "h": h, "I": I,
+    parts = {"z": z, "Z": Z, "G": G, "Q": Q, "G1": G1, "P1": P1, "V": V, "h": h, "hv": hv, "e1": e1, "I": I,
              "Hinv": Hinv, "groups": groups_out, "rowoff": rowoff, "perm": perm, "m": m,
              "step": st, "velocity": vel_fn}
     return eqs, parts
@@ -146,8 +150,8 @@ def mapped_state_kernels(model, lags, keys, body, record_names) -> dict | None:
     energy, momentum, defect, observe, velocity_step and (when the scene records only g, mu,
     xi, energy, momentum, defect) record: one mapped call of a per-body function each, the
     sums and maxima over the bodies as reductions. None when the bodies do not share one
-    Lagrangian."""
-    if len(lags) != 1:
+    Lagrangian or the model is open (its kernels then come from the SX composition)."""
+    if len(lags) != 1 or model.open_system:
         return None
     (lag_in, _), = lags.values()
     n, d, N = model.group.n, model.group.d, model.family.count
