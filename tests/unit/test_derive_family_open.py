@@ -1,0 +1,179 @@
+"""An open family model (runtime parameters, the time t in the Lagrangian) derived once per
+body and per joint (hpgen.derive.family) against the same model expanded on the product group
+(derive(..., expand=True)): the kernels at random points, in the step vector hv = [h, t_k,
+params] of hpgen.abi, and runs, to round-off; the compiled C and Python modules and a sweep
+over the gravity."""
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+import pytest
+
+from hpgen.derive import derive
+from hpgen.derive.family import family_local
+from hpgen.model import load_model_text
+from hpgen.tableaus import resolve_tableau
+from tests.conftest import EXAMPLES
+from tests.unit.test_derive_family import evaluate, permutation, state
+
+GRAVITY = (EXAMPLES / "pendulum_chain_gravity.yaml").read_text()
+SCHEMES = [("stormer-verlet", "truncated"), ("gauss2", "exact")]
+
+
+def chain(n: int, runtime: str = "[grav]", timed: bool = True):
+    """The gravity chain with N = n, the given runtime parameters and (timed) a gravity that
+    varies in time."""
+    text = GRAVITY.replace("{N: 4,", "{N: %d," % n).replace(
+        "runtime_parameters: [grav]", f"runtime_parameters: {runtime}")
+    if timed:
+        text = text.replace("- m*grav*(", "- m*grav*(1 + 0.1*sin(3*t))*(")
+    return load_model_text(text)
+
+
+@functools.lru_cache(maxsize=None)
+def pair(n, tab, rk, runtime="[grav]", timed=True):
+    m = chain(n, runtime, timed)
+    return (derive(m, resolve_tableau(tab), "cay", rk),
+            derive(m, resolve_tableau(tab), "cay", rk, expand=True))
+
+
+def close(a, b, what):
+    assert np.abs(a - b).max() <= 1e-13 * (1.0 + np.abs(b).max()), what
+
+
+def test_runtime_parameters_and_time_are_derived_per_body():
+    assert family_local(chain(3))
+    assert family_local(chain(3, "[grav, m]"))
+    assert chain(3).open_system and chain(3).time_dependent
+    forced = GRAVITY.replace("integrator:", "forces: [%s]\nintegrator:" % ", ".join(
+        ["0.0"] * 24))
+    forced = forced.replace("0.0, 0.0, 0.0]\nintegrator", "0.0, 0.0, t]\nintegrator")
+    assert not family_local(load_model_text(forced))      # forces: still expanded
+
+
+@pytest.mark.parametrize("n", [2, 3])
+@pytest.mark.parametrize("tab,rk", SCHEMES)
+def test_step_kernels_match_the_expansion(n, tab, rk):
+    fam, dense = pair(n, tab, rk)
+    assert fam.open_spec == dense.open_spec
+    P = permutation(fam, dense, 6, n)
+    g, p, rng = state(n, 11)
+    z = 0.3 * rng.standard_normal(dense.nz)
+    hv = np.array([0.01, 0.37, 7.5])
+    Fd, Jd = evaluate(dense, "residual_jacobian", z, g, p, hv)
+    Ff, Jf = evaluate(fam, "residual_jacobian", z[P], g, p, hv)
+    close(Ff, Fd[P], "F")
+    nz = fam.nz
+    close(Jf.reshape(nz, nz, order="F"), Jd.reshape(nz, nz, order="F")[np.ix_(P, P)], "J")
+    for name, args in (("update", (z, g, p, hv)), ("margin", (z, hv)),
+                       ("chart_point", (z, g, hv, [0.5])), ("update_p", (z, g, p, hv))):
+        ref = evaluate(dense, name, *args)
+        got = evaluate(fam, name, z[P], *args[1:])
+        for a, b in zip(got, ref):
+            close(a, b, name)
+    # step_partials: Fs, Yz, Ys and the open module's FH, YH (partials in hv)
+    sd = evaluate(dense, "step_partials", z, g, p, hv)
+    sf = evaluate(fam, "step_partials", z[P], g, p, hv)
+    assert len(sd) == len(sf) == 5
+    rows = lambda M, k: M.reshape(nz, k, order="F")[P].ravel(order="F")  # noqa: E731
+    close(sf[0], rows(sd[0], 12 * n), "Fs")
+    close(sf[1], sd[1].reshape(12 * n, nz, order="F")[:, P].ravel(order="F"), "Yz")
+    close(sf[2], sd[2], "Ys")
+    close(sf[3], rows(sd[3], 3), "FH")
+    close(sf[4], sd[4], "YH")
+
+
+@pytest.mark.parametrize("n", [2, 3])
+def test_state_kernels_match_the_expansion(n):
+    fam, dense = pair(n, "stormer-verlet", "truncated")
+    g, p, rng = state(n, 5)
+    xi = rng.standard_normal(6 * n)
+    hv = np.array([0.01, 1.1, 4.0])
+    for name, args in (("legendre", (g, xi, hv)), ("hessian", (g, xi, hv)),
+                       ("energy", (g, xi, hv)), ("momentum", (g, p)),
+                       ("observe", (g, p, hv)), ("record", (g, p, xi, hv)),
+                       ("velocity_step", (g, p, xi, hv)), ("guess", (xi, g, p, hv))):
+        ref, got = evaluate(dense, name, *args), evaluate(fam, name, *args)
+        if name == "guess":
+            ref = [ref[0][permutation(fam, dense, 6, n)]]
+        for a, b in zip(got, ref):
+            close(a, b, name)
+
+
+def test_step_kernels_do_not_grow_with_the_bodies():
+    """With a runtime parameter and t the chain's step kernels still call each body and
+    joint function through one mapped call: the same instruction counts for N = 3 and 6."""
+    sizes = {}
+    for n in (3, 6):
+        s = derive(chain(n), resolve_tableau("stormer-verlet"), "cay", "truncated")
+        sizes[n] = {k.name: k.function.n_instructions() for k in s.kernels
+                    if k.name in ("residual", "residual_jacobian", "update", "step_partials")}
+        names = [f.name() for f in s.kernel("residual").function.find_functions()]
+        assert f"map{n}_body0_residual_w" in names
+    assert sizes[3] == sizes[6]
+
+
+def run(step, g, p, h, steps, params, t0=0.0):
+    """``steps`` steps with CasADi's evaluation of ``step``'s kernels (Newton, dense solve)."""
+    nz, out = step.nz, []
+    for k in range(steps):
+        hv = np.concatenate([[h, t0 + k * h], params])
+        xi = evaluate(step, "velocity_step", g, p, np.zeros(len(p)), hv)[0]
+        z = evaluate(step, "guess", xi, g, p, hv)[0]
+        for _ in range(30):
+            F, J = evaluate(step, "residual_jacobian", z, g, p, hv)
+            dz = np.linalg.solve(J.reshape(nz, nz, order="F"), F)
+            z = z - dz
+            if np.abs(dz).max() <= 1e-14 * (1 + np.abs(z).max()):
+                break
+        g, p = evaluate(step, "update", z, g, p, hv)
+        out.append(np.concatenate([g, p]))
+    return np.array(out)
+
+
+@pytest.mark.parametrize("runtime,params", [("[grav]", [6.0]), ("[grav, m]", [6.0, 1.7])])
+def test_runs_match_the_expansion(runtime, params):
+    """30 steps of the N = 2 chain; with the mass a runtime parameter d2l/dxi2 depends on it
+    and the node velocity is an unknown (the family's rows then come in another order than
+    the expansion's, the states agree)."""
+    fam, dense = pair(2, "stormer-verlet", "truncated", runtime)
+    g0 = np.eye(8).ravel(order="F")
+    hv = np.concatenate([[1e-3, 0.0], params])
+    p0 = evaluate(dense, "legendre", g0, np.tile([3.0, 1.0, 0.5, 0.0, 0.0, 0.0], 2), hv)[0]
+    a = run(fam, g0, p0, 1e-3, 30, params)
+    b = run(dense, g0, p0, 1e-3, 30, params)
+    assert np.abs(a - b).max() <= 1e-12
+
+
+@pytest.mark.slow
+def test_compiled_modules_and_a_sweep_over_the_gravity(tmp_path):
+    """The generated modules (C and Python) of the N = 2 gravity chain run 200 steps like
+    CasADi's evaluation of the expanded derivation, to round-off, at a gravity given at run
+    time; a sweep over three gravities gives each member's simulate."""
+    import hpgen
+    n, grav = 2, 5.0
+    dense = derive(chain(n, timed=False), resolve_tableau("stormer-verlet"), "cay",
+                   "truncated", expand=True)
+    g0 = np.eye(4 * n)
+    xi0 = np.tile([3.0, 1.0, 0.5, 0.0, 0.0, 0.0], n)
+    p0 = evaluate(dense, "legendre", g0.ravel(order="F"), xi0, [1e-3, 0.0, grav])[0]
+    ref = run(dense, g0.ravel(order="F"), p0, 1e-3, 200, [grav])
+    gref = np.array([r[:16 * n * n].reshape(4 * n, 4 * n, order="F").ravel() for r in ref])
+    ref_rows = np.hstack([gref, ref[:, 16 * n * n:]])
+    out, integ = {}, {}
+    for backend in ("c", "python"):
+        integ[backend] = hpgen.compile(EXAMPLES / "pendulum_chain_gravity.yaml",
+                                       backend=backend, cache_dir=tmp_path,
+                                       parameters={"N": n})
+        traj = integ[backend].simulate(g0, 1e-3, 200, mu0=p0, params={"grav": grav})
+        out[backend] = np.hstack([traj.g[1:].reshape(200, -1), traj.mu[1:]])
+        assert np.abs(out[backend] - ref_rows).max() <= 1e-11, backend
+    assert np.abs(out["c"] - out["python"]).max() <= 1e-13
+    gravs = np.array([1.0, 5.0, 9.81])
+    res = hpgen.sweep(integ["c"], xi0=np.tile(xi0, (3, 1)), h=1e-3, steps=200,
+                      params={"grav": gravs}, progress=False, threads=1)
+    for k, gv in enumerate(gravs):
+        one = integ["c"].simulate(g0, 1e-3, 200, xi0=xi0, params={"grav": gv})
+        assert np.array_equal(res["g"][k], one.g) and np.array_equal(res["mu"][k], one.mu)
+    assert np.abs(res["g"][0, -1] - res["g"][2, -1]).max() > 1e-3   # the gravity matters
