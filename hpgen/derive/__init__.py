@@ -121,8 +121,8 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
         reduced = model.left_invariant and not model.forced and not model.time_dependent \
             and not model.constraints
         fam = family_step(model, tableau, tau, rkmk, g, p, hv) if local else None
-        if fam is not None:          # per body, t and params passed through (no forces)
-            eqs, lag, force = fam.eqs, fam.lag, None
+        if fam is not None:          # per body, t, u and params passed through
+            eqs, lag, force = fam.eqs, fam.lag, fam.force
         else:
             lag_f, force_f = open_functions(model)
             lag_t = lambda G, X, tt: lag_f(G, X, tt, P)  # noqa: E731

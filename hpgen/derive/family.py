@@ -43,6 +43,8 @@ import numpy as np
 
 from ..groups import group_from_spec
 from .action import StepEquations, step_equations
+from .family_open import with_env, body_force_function, open_layout, product_force, \
+    split_step_vector
 from .lagrangian import to_casadi
 
 CALL = {"never_inline": True, "jac_penalty": 0}
@@ -55,29 +57,7 @@ class FamilyParts:
     eqs: StepEquations
     lag: object
     velocity: object     # (g, p, xi) -> SX d: one Newton step of dl/dxi = p, body by body
-
-
-def open_layout(model):
-    """(m, P): the numbers of control inputs and runtime parameter entries of an open family
-    model (its step vector hv = [h, t_k, u (m), params (P)], hpgen.abi), None when closed."""
-    if not model.open_system:
-        return None
-    return len(model.inputs), len(model.runtime_symbols)
-
-
-def split_step_vector(model, hv):
-    """(h, e_k, e_1) from the step input hv: h the step (hv itself when closed), e_k and e_1
-    the environment (t, params) at t_k and at t_k + h, or None when closed."""
-    lay = open_layout(model)
-    if lay is None:
-        return hv, None, None
-    h, t, P = hv[0], hv[1], hv[2 + lay[0]:]
-    return h, ca.vertcat(t, P), ca.vertcat(t + h, P)
-
-
-def _with(args, e):
-    """A body function's arguments, with the environment e (t, params) appended when open."""
-    return [*args, e] if e is not None else list(args)
+    force: object = None  # (G, X, t) -> the product's force (per-body calls), or None
 
 
 def _body_lagrangians(model, body):
@@ -108,8 +88,8 @@ def _body_lagrangians(model, body):
             mapping[t.index] = I
             mapping.update({s: v for s, v in env.items() if s in t.expr.free_symbols})
             expr = expr + to_casadi(t.expr, mapping)
-        funs[key] = (ca.Function(f"l_body{c}", _with([G, X, I], E), [expr]),
-                     ca.Function(f"l_body{c}_call", _with([G, X, I], E), [expr], CALL))
+        funs[key] = (ca.Function(f"l_body{c}", with_env([G, X, I], E), [expr]),
+                     ca.Function(f"l_body{c}_call", with_env([G, X, I], E), [expr], CALL))
     return funs, keys
 
 
@@ -146,13 +126,15 @@ def _joint_functions(model, body):
 
 def family_local(model) -> bool:
     """True when ``model`` is derived body by body: a family model whose Lagrangian sums and
-    joints are local (hpgen.model.bodyterms), without forces or control inputs (runtime
-    parameters and t may enter the Lagrangian, not the joints); otherwise it is expanded."""
+    joints are local (hpgen.model.bodyterms); runtime parameters and t may enter the
+    Lagrangian (not the joints), forces and control inputs only through a per-body force
+    (``forces: {for: i, body: [...]}``, hpgen.model.family_forces). Otherwise it is
+    expanded."""
     family = getattr(model, "family", None)
     if family is None or family.local is None:
         return False
     if model.open_system:
-        if model.forced or model.inputs:
+        if (model.forced or model.inputs) and family.local.force is None:
             return False
         for jt in family.local.joints:
             for r in jt.rows:
@@ -182,7 +164,8 @@ def _functions(model, tableau, tau: str, rkmk: str):
     body = group_from_spec(family.body)
     nb, db = body.n, body.d
     lags, keys = _body_lagrangians(model, body)
-    reduced = model.left_invariant and not model.constraints and not model.time_dependent
+    reduced = model.left_invariant and not model.constraints and not model.time_dependent \
+        and not model.forced
 
     # one body's step per class, derived once; its h input is the step vector of an open
     # model (hpgen.abi: [h, t_k, u, params])
@@ -192,15 +175,18 @@ def _functions(model, tableau, tau: str, rkmk: str):
     hb = ca.SX.sym("h") if lay is None else ca.SX.sym("h", H)
     h_, _, _ = split_step_vector(model, hb)
     gbv = ca.vec(gb)
+    fb = body_force_function(model, body)
     steps = {}
     for c, (cls, (lag_in, _)) in enumerate(sorted(lags.items())):
         if lay is None:
             e = step_equations(body, lambda G, X, f=lag_in: f(G, X, ib), tableau, tau, rkmk,
                                reduced, gb, pb, hb)
         else:
-            P = hb[2 + lay[0]:]
+            P, u = hb[2 + lay[0]:], hb[2:2 + lay[0]]
+            force = None if fb is None else (
+                lambda G, X, tt: fb(ca.vec(G), X, ib, ca.vertcat(tt, u, P)))
             e = step_equations(body, lambda G, X, tt, f=lag_in: f(G, X, ib, ca.vertcat(tt, P)),
-                               tableau, tau, rkmk, reduced, gb, pb, h_, hb[1])
+                               tableau, tau, rkmk, reduced, gb, pb, h_, hb[1], force)
         args = [e.z, gbv, pb, hb, ib]
         steps[cls] = dict(
             nz=e.z.numel(), blocks=e.blocks,
@@ -208,7 +194,8 @@ def _functions(model, tableau, tau: str, rkmk: str):
             U=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1], CALL),
             M=ca.Function(f"body{c}_margin", [e.z, hb], [e.margin], CALL),
             C=ca.Function(f"body{c}_chart", [e.z, hb], [e.chart_step], CALL),
-            Z=ca.Function(f"body{c}_guess", [e.xi_hat, gbv, pb, hb], [e.guess], CALL))
+            Z=ca.Function(f"body{c}_guess", [e.xi_hat, gbv, pb, hb], [e.guess], CALL),
+            force=fb)
 
     joints = family.local.joints
     jfun = _joint_functions(model, body) if joints else {}
@@ -266,10 +253,11 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
         margin = ca.fmin(margin, mk)
     g1 = ca.diagcat(*g1s)
     lag, velocity = _product_lagrangian(lags, keys, body, N, ek)
+    force = product_force(steps[keys[0]]["force"], model, h, nb, db, N)
     if not joints:
         eqs = StepEquations(z, tuple(blocks), ca.vertcat(*res), g1, ca.vertcat(*p1s),
                             ca.vertcat(*guesses), xi_hat, margin, ca.vertcat(*charts))
-        return FamilyParts(eqs, lag, velocity)
+        return FamilyParts(eqs, lag, velocity, force)
 
     nz = nzb
     blocks += [("lambda", nz, nz + m), ("nu", nz + m, nz + 2 * m)]
@@ -283,14 +271,14 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
             kick[b] = kick[b] + ca.mtimes(out[1 + s].T, nu[rows[j]:rows[j + 1]])
     p1s = [p1s[k] - kick[k] for k in range(N)]
     if explicit:
-        vel = [vel_funs[keys[k]][0](*_with([ca.vec(g1s[k]), p1s[k], k, _inverse_hessian(
+        vel = [vel_funs[keys[k]][0](*with_env([ca.vec(g1s[k]), p1s[k], k, _inverse_hessian(
             vel_funs[keys[k]][1], k)], e1)) for k in range(N)]
         extra_rows, extra_guess = [], []
     else:
         v1 = z[nz + 2 * m:]
         vel = [v1[k * db:(k + 1) * db] for k in range(N)]
         dl = _momentum(lags, body, e1 is not None and e1.numel())
-        extra_rows = [dl[keys[k]](*_with([g1s[k], vel[k], k], e1)) - p1s[k] for k in range(N)]
+        extra_rows = [dl[keys[k]](*with_env([g1s[k], vel[k], k], e1)) - p1s[k] for k in range(N)]
         extra_guess = [xi_hat]
         blocks.append(("v1", nz + 2 * m, nz + 2 * m + N * db))
     hidden = []
@@ -301,15 +289,15 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     eqs = StepEquations(z, tuple(blocks), residual, g1,
                         ca.vertcat(*p1s), ca.vertcat(*guesses, S.zeros(2 * m), *extra_guess),
                         xi_hat, margin, ca.vertcat(*charts))
-    return FamilyParts(eqs, lag, velocity)
+    return FamilyParts(eqs, lag, velocity, force)
 
 
 def _momentum(lags, body, ne):
     """{class key: Function(g, xi, i[, e]) -> dl/dxi} (call nodes); ne: e's size (0: closed)."""
     G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i")
     E = ca.SX.sym("e", ne) if ne else None
-    return {key: ca.Function(f"body{c}_momentum", _with([G, X, I], E),
-                             [ca.gradient(lag_in(*_with([G, X, I], E)), X)], CALL)
+    return {key: ca.Function(f"body{c}_momentum", with_env([G, X, I], E),
+                             [ca.gradient(lag_in(*with_env([G, X, I], E)), X)], CALL)
             for c, (key, (lag_in, _)) in enumerate(sorted(lags.items()))}
 
 
@@ -324,13 +312,13 @@ def _node_velocity(lags, body, lay=None):
     Hinv = ca.SX.sym("Hinv", body.d, body.d)
     out = {}
     for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
-        dl = ca.gradient(lag_in(*_with([G, X, I], E)), X)
+        dl = ca.gradient(lag_in(*with_env([G, X, I], E)), X)
         hess = ca.jacobian(dl, X)
         if ca.depends_on(hess, ca.vertcat(ca.vec(G), X, *([E] if E is not None else []))):
             out[key] = None
             continue
         vel = ca.mtimes(Hinv, P - ca.substitute(dl, X, ca.SX.zeros(body.d)))
-        out[key] = (ca.Function(f"body{c}_velocity", _with([ca.vec(G), P, I, ca.vec(Hinv)], E),
+        out[key] = (ca.Function(f"body{c}_velocity", with_env([ca.vec(G), P, I, ca.vec(Hinv)], E),
                                 [vel], CALL), ca.Function(f"body{c}_hessian", [I], [hess]))
     return out
 
@@ -350,17 +338,17 @@ def _product_lagrangian(lags, keys, body, N, ek=None):
     E = ca.SX.sym("e", ek.numel()) if ek is not None else None
     steps = {}
     for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
-        mu = ca.gradient(lag_in(*_with([G, X, I], E)), X)
-        steps[key] = ca.Function(f"body{c}_velocity_step", _with([ca.vec(G), P, X, I], E),
+        mu = ca.gradient(lag_in(*with_env([G, X, I], E)), X)
+        steps[key] = ca.Function(f"body{c}_velocity_step", with_env([ca.vec(G), P, X, I], E),
                                  [X - ca.solve(ca.jacobian(mu, X), mu - P)], CALL)
 
     def lag(Gp, Xp):
-        terms = [lags[keys[k]][1](*_with([Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb],
+        terms = [lags[keys[k]][1](*with_env([Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb],
                                           Xp[k * db:(k + 1) * db], k], ek)) for k in range(N)]
         return ca.sum1(ca.vertcat(*terms))
 
     def velocity(Gp, Pp, Xp):
-        return ca.vertcat(*[steps[keys[k]](*_with([
+        return ca.vertcat(*[steps[keys[k]](*with_env([
             ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]), Pp[k * db:(k + 1) * db],
             Xp[k * db:(k + 1) * db], k], ek)) for k in range(N)])
     return lag, velocity

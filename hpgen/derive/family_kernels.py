@@ -9,7 +9,8 @@ from __future__ import annotations
 import casadi as ca
 
 from ..groups import group_from_spec
-from .family import CALL, _functions, block_diagonal_symbol, family_step, open_layout
+from .family import CALL, _functions, block_diagonal_symbol, family_step
+from .family_open import open_layout
 
 
 def _body_maps(body, tau: str):

@@ -58,6 +58,8 @@ class LocalTerms:
     bodies: tuple                  # BodyTerm per Lagrangian sum, file order
     joints: tuple                  # JointTerm per ConstraintSpec, file order
     slots: int                     # the largest K over the joints (1 without joints)
+    #: the per-body force (hpgen.model.family_forces.BodyForce) of a ``forces: {for, body}``
+    force: object = None
 
 
 class _NotLocal(Exception):
