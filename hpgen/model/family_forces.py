@@ -49,7 +49,8 @@ def parse_family_forces(doc: Doc, raw: dict, group, params: dict, inputs, xi_sym
     from .bodyterms import _Local, _NotLocal
     from .symbols import TIME_SYMBOL, input_symbol
     from .syntax import parse_checked
-    family = getattr(group, "family", None)
+    from .families import family_of
+    family = family_of(group)
     if family is None:
         raise doc.error(("forces",), "the per-body form {for: i, body: [...]} needs a family "
                                      "group (G^N); give a list of one expression per algebra "

@@ -177,3 +177,79 @@ def test_compiled_modules_and_a_sweep_over_the_gravity(tmp_path):
         one = integ["c"].simulate(g0, 1e-3, 200, xi0=xi0, params={"grav": gv})
         assert np.array_equal(res["g"][k], one.g) and np.array_equal(res["mu"][k], one.mu)
     assert np.abs(res["g"][0, -1] - res["g"][2, -1]).max() > 1e-3   # the gravity matters
+
+
+DAMPED = (EXAMPLES / "damped_pendulum_chain.yaml").read_text()
+
+
+@functools.lru_cache(maxsize=None)
+def damped_pair(n, tab, rk):
+    """The damped chain with a time-dependent drive, derived per body and expanded."""
+    text = DAMPED.replace("{N: 4,", "{N: %d," % n).replace(
+        '"-c*w[i][2]", "0"', '"-c*w[i][2]*(i + 1)", "-0.1*v[i][0]*R[i][2, 2]*sin(t)"')
+    m = load_model_text(text)
+    assert family_local(m)
+    return (derive(m, resolve_tableau(tab), "cay", rk),
+            derive(m, resolve_tableau(tab), "cay", rk, expand=True))
+
+
+@pytest.mark.parametrize("n", [2, 3])
+@pytest.mark.parametrize("tab,rk", SCHEMES)
+def test_per_body_forces_match_the_expansion(n, tab, rk):
+    """Body i's force in body i's step: the kernels of the forced chain (damping c a runtime
+    parameter, the input u, t) equal the expansion's, the record's power included."""
+    fam, dense = damped_pair(n, tab, rk)
+    P = permutation(fam, dense, 6, n)
+    g, p, rng = state(n, 13)
+    z = 0.3 * rng.standard_normal(dense.nz)
+    hv = np.array([0.01, 0.37, 0.8, 0.3])            # h, t_k, u, c
+    Fd, Jd = evaluate(dense, "residual_jacobian", z, g, p, hv)
+    Ff, Jf = evaluate(fam, "residual_jacobian", z[P], g, p, hv)
+    close(Ff, Fd[P], "F")
+    nz = fam.nz
+    close(Jf.reshape(nz, nz, order="F"), Jd.reshape(nz, nz, order="F")[np.ix_(P, P)], "J")
+    for a, b in zip(evaluate(fam, "update", z[P], g, p, hv), evaluate(dense, "update", z, g, p, hv)):
+        close(a, b, "update")
+    sd = evaluate(dense, "step_partials", z, g, p, hv)
+    sf = evaluate(fam, "step_partials", z[P], g, p, hv)
+    close(sf[3], sd[3].reshape(nz, 4, order="F")[P].ravel(order="F"), "FH")
+    close(sf[4], sd[4], "YH")
+    xi = rng.standard_normal(6 * n)
+    assert "power" in [name for name, _, _ in fam.record_layout]
+    close(evaluate(fam, "record", g, p, xi, hv)[0], evaluate(dense, "record", g, p, xi, hv)[0],
+          "record")
+
+
+@pytest.mark.slow
+def test_the_damped_chain_modules_match_the_expansion(tmp_path):
+    """The damped chain's C and Python modules (N = 2) with a control torque u and the
+    damping c at run time: 200 steps like CasADi's evaluation of the expansion."""
+    import hpgen
+    n, c, u = 2, 0.4, 0.25
+    m = load_model_text(DAMPED.replace("{N: 4,", "{N: 2,"))
+    dense = derive(m, resolve_tableau("stormer-verlet"), "cay", "truncated", expand=True)
+    g0 = np.eye(4 * n)
+    xi0 = np.tile([3.0, 1.0, 0.5, 0.0, 0.0, 0.0], n)
+    hv = [1e-3, 0.0, u, c]
+    p0 = evaluate(dense, "legendre", g0.ravel(order="F"), xi0, hv)[0]
+    nz, gk, pk, ref = dense.nz, g0.ravel(order="F"), p0, []
+    for k in range(200):
+        hv[1] = k * 1e-3
+        xi = evaluate(dense, "velocity_step", gk, pk, np.zeros(6 * n), hv)[0]
+        z = evaluate(dense, "guess", xi, gk, pk, hv)[0]
+        for _ in range(30):
+            F, J = evaluate(dense, "residual_jacobian", z, gk, pk, hv)
+            dz = np.linalg.solve(J.reshape(nz, nz, order="F"), F)
+            z = z - dz
+            if np.abs(dz).max() <= 1e-14 * (1 + np.abs(z).max()):
+                break
+        gk, pk = evaluate(dense, "update", z, gk, pk, hv)
+        ref.append(np.concatenate([gk.reshape(4 * n, 4 * n, order="F").ravel(), pk]))
+    out = {}
+    for backend in ("c", "python"):
+        integ = hpgen.compile(EXAMPLES / "damped_pendulum_chain.yaml", backend=backend,
+                              cache_dir=tmp_path, parameters={"N": n})
+        traj = integ.simulate(g0, 1e-3, 200, mu0=p0, u=[u], params={"c": c})
+        out[backend] = np.hstack([traj.g[1:].reshape(200, -1), traj.mu[1:]])
+        assert np.abs(out[backend] - np.array(ref)).max() <= 1e-11, backend
+    assert np.abs(out["c"] - out["python"]).max() <= 1e-13
