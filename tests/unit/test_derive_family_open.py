@@ -253,3 +253,45 @@ def test_the_damped_chain_modules_match_the_expansion(tmp_path):
         out[backend] = np.hstack([traj.g[1:].reshape(200, -1), traj.mu[1:]])
         assert np.abs(out[backend] - np.array(ref)).max() <= 1e-11, backend
     assert np.abs(out["c"] - out["python"]).max() <= 1e-13
+
+
+def _chart(g_ref, g, n):
+    """(eta per body) with g = g_ref (I + eta^) to first order, SE3^n."""
+    out = []
+    for k in range(n):
+        s = slice(4 * k, 4 * k + 4)
+        M = np.linalg.solve(g_ref[s, s], g[s, s]) - np.eye(4)
+        out += [M[2, 1], M[0, 2], M[1, 0], *M[0:3, 3]]
+    return np.array(out)
+
+
+@pytest.mark.slow
+def test_linearize_of_the_damped_chain_module_against_differences(tmp_path):
+    """linearize on the per-body module: A's dp columns, B = d/du and P = d/dc of one step
+    against central differences of simulate (C backend, N = 2)."""
+    import hpgen
+    n, h, c, u = 2, 1e-2, 0.4, 0.25
+    integ = hpgen.compile(EXAMPLES / "damped_pendulum_chain.yaml", backend="c",
+                          cache_dir=tmp_path, parameters={"N": n})
+    g0 = np.eye(4 * n)
+    xi0 = np.tile([3.0, 1.0, 0.5, 0.0, 0.0, 0.0], n)
+    traj = integ.simulate(g0, h, 1, xi0=xi0, u=[u], params={"c": c})
+    mu0 = traj.mu[0]
+    A, B = integ.linearize(traj, u=[u], params={"c": c})
+    P = integ.linearize(traj, u=[u], params={"c": c}, wrt="params")
+    d, eps = 6 * n, 1e-6
+
+    def out(mu=mu0, uu=u, cc=c):
+        t = integ.simulate(g0, h, 1, mu0=mu, u=[uu], params={"c": cc})
+        return np.concatenate([_chart(traj.g[1], t.g[1], n), t.mu[1] - traj.mu[1]])
+    fd_u = (out(uu=u + eps) - out(uu=u - eps)) / (2 * eps)
+    fd_c = (out(cc=c + eps) - out(cc=c - eps)) / (2 * eps)
+    scale = 1.0 + np.abs(A[0]).max()
+    assert np.abs(B[0][:, 0] - fd_u).max() <= 1e-6 * scale
+    assert np.abs(P[0][:, 0] - fd_c).max() <= 1e-6 * scale
+    assert np.abs(fd_u).max() > 1e-3 and np.abs(fd_c).max() > 1e-3
+    for j in (0, 4, d - 1):
+        e = np.zeros(d)
+        e[j] = eps
+        fd = (out(mu=mu0 + e) - out(mu=mu0 - e)) / (2 * eps)
+        assert np.abs(A[0][:, d + j] - fd).max() <= 1e-6 * scale
