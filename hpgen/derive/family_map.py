@@ -145,13 +145,15 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     return eqs, parts
 
 
-def mapped_state_kernels(model, lags, keys, body, record_names) -> dict | None:
+def mapped_state_kernels(model, lags, keys, body, record_names, force=None) -> dict | None:
     """{kernel name: (Function over MX, input names, output names)} for legendre, hessian,
     energy, momentum, defect, observe, velocity_step and (when the scene records only g, mu,
     xi, energy, momentum, defect) record: one mapped call of a per-body function each, the
     sums and maxima over the bodies as reductions. None when the bodies do not share one
     Lagrangian. An open model's kernels of hpgen.abi.OPEN_EXTRA take its step vector hv as a
-    last input ``h`` (their t is t_k)."""
+    last input ``h`` (their t is t_k); with ``force`` (the per-body force, hpgen.derive.
+    family_open.body_force_function) the record may hold power and work, <f, xi> summed over
+    the bodies."""
     from ..abi import OPEN_EXTRA
     from .family_open import with_env, open_layout, split_step_vector
     if len(lags) != 1:
@@ -194,6 +196,13 @@ def mapped_state_kernels(model, lags, keys, body, record_names) -> dict | None:
     energy, defect = ca.sum2(E_), ca.mmax(e_)
     items = {"g": gv, "mu": p, "xi": xi, "energy": energy, "momentum": ca.vec(m_),
              "defect": defect}
+    if force is not None:            # <f, xi> at t_k, body by body
+        Ef = ca.SX.sym("e", force.size1_in(3))
+        fp = ca.Function("body_power", [gvec, X, I, Ef],
+                         [ca.dot(force(gvec, X, I, Ef), X)], CALL)
+        m = len(model.inputs)
+        ef = ca.vertcat(hv[1], hv[2:2 + m], hv[2 + m:])
+        items["power"] = items["work"] = ca.sum2(mapped(fp, N)(G, Xm, Im, ef))
     res = {"legendre": ([gv, xi], ("g", "xi"), [ca.vec(mu_)], ("mu",)),
            "hessian": ([gv, xi], ("g", "xi"),
                        [ca.sparsity_cast(ca.vec(H_), hcol.sparsity())], ("H",)),

@@ -101,14 +101,19 @@ def test_state_kernels_match_the_expansion(n):
             close(a, b, name)
 
 
-def test_step_kernels_do_not_grow_with_the_bodies():
-    """With a runtime parameter and t the chain's step kernels still call each body and
-    joint function through one mapped call: the same instruction counts for N = 3 and 6."""
+@pytest.mark.parametrize("example", ["pendulum_chain_gravity", "damped_pendulum_chain"])
+def test_kernels_do_not_grow_with_the_bodies(example):
+    """With a runtime parameter, t, inputs and a per-body force the chain's kernels still
+    call each body and joint function through one mapped call: the same instruction counts
+    for N = 3 and 6 (the record with the forces' power and work included)."""
     sizes = {}
+    text = (EXAMPLES / f"{example}.yaml").read_text()
     for n in (3, 6):
-        s = derive(chain(n), resolve_tableau("stormer-verlet"), "cay", "truncated")
+        m = load_model_text(text.replace("{N: 4,", "{N: %d," % n))
+        s = derive(m, resolve_tableau("stormer-verlet"), "cay", "truncated")
         sizes[n] = {k.name: k.function.n_instructions() for k in s.kernels
-                    if k.name in ("residual", "residual_jacobian", "update", "step_partials")}
+                    if k.name in ("residual", "residual_jacobian", "update", "step_partials",
+                                  "hessian", "observe", "record", "velocity_step")}
         names = [f.name() for f in s.kernel("residual").function.find_functions()]
         assert f"map{n}_body0_residual_w" in names
     assert sizes[3] == sizes[6]
