@@ -21,8 +21,9 @@ A model with ``constraints:`` wraps the step in RATTLE-type node multipliers
 and ``nu`` (impulses h lambda_k, h nu_(k+1)) and, when d2l/dxi2 is not constant, ``v1``; the
 reduced Euler-Poincare step is not used.
 
-A closed family model (group G^N) whose Lagrangian sums and joints are local to their bodies
-(hpgen.model.bodyterms) is derived once per body and per joint (hpgen.derive.family): g is
+A family model (group G^N) whose Lagrangian sums and joints are local to their bodies
+(hpgen.model.bodyterms; an open one's forces written per body, hpgen.derive.family.
+family_local) is derived once per body and per joint (hpgen.derive.family): g is
 block-diagonal, the step kernels are composed over MX from per-body and per-joint call
 nodes, the other kernels over SX with calls, and every kernel keeps its outputs' structural
 sparsity (the wrappers scatter them into the contract's dense arrays). ``expand=True``

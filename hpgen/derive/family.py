@@ -11,7 +11,10 @@ a call through the callee's own Jacobian function, derived once, instead of one 
 derivative per seed). The step kernels (hpgen.derive.family_kernels) compose the calls over MX, where a
 call passes whole vectors; family_step composes them over SX as well (the SX kernels' and
 the tests' form). Bodies whose Lagrangians differ (sums over different ranges) get one
-function per distinct set of sums ("class").
+function per distinct set of sums ("class"). An open model (runtime parameters and t in the
+sums, a per-body force with the control inputs) gives its body functions the environment
+(t, params) and its step functions the step vector hv as their h (hpgen.derive.family_open);
+body i's force enters body i's step only.
 
 Constraints (hpgen.derive.constraints, docs/numerics.md sec. 14) decompose by joint: with
 joint j's rows phi_j(g_a, g_b, ...; i_j) and body-frame Jacobians Phi_{j,a},
