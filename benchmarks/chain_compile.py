@@ -6,6 +6,7 @@ nothing imported beforehand), through ``hpgen.build`` (the path ``hpgen compile`
 
     PYTHONPATH=. python benchmarks/chain_compile.py --n 8 16 32 64 --tableau stormer-verlet
     PYTHONPATH=. python benchmarks/chain_compile.py --n 8 64 --tableau gauss2
+    PYTHONPATH=. python benchmarks/chain_compile.py --n 32 --model examples/pendulum_chain_gravity.yaml
     PYTHONPATH=/other/tree python benchmarks/chain_compile.py ...   # another revision
       (a revision without CompiledModule.timings reports the total only)
 
@@ -61,7 +62,7 @@ print(json.dumps({"total": total, "py_cpu": py_cpu, "cc_cpu": cc_cpu, "lazy": la
 """
 
 
-def cold_compile(n: int, tableau: str, lazy: bool = True) -> dict:
+def cold_compile(n: int, tableau: str, lazy: bool = True, model: Path = MODEL) -> dict:
     """The child's result; it runs in the empty cache directory (``-c`` puts the working
     directory first on sys.path) with PYTHONPATH made absolute, so PYTHONPATH alone chooses
     the hpgen it imports."""
@@ -69,7 +70,7 @@ def cold_compile(n: int, tableau: str, lazy: bool = True) -> dict:
     env["PYTHONPATH"] = os.pathsep.join(os.path.abspath(p) for p in
                                         env.get("PYTHONPATH", "").split(os.pathsep) if p)
     with tempfile.TemporaryDirectory(prefix="hpgen-cold-") as cache:
-        out = subprocess.run([sys.executable, "-c", CHILD, str(MODEL), str(n), tableau, cache,
+        out = subprocess.run([sys.executable, "-c", CHILD, str(Path(model).resolve()), str(n), tableau, cache,
                               "lazy" if lazy else "-"],
                              capture_output=True, text=True, env=env, cwd=cache)
     if out.returncode != 0:
@@ -84,13 +85,14 @@ def main() -> int:
     ap.add_argument("--tableau", default="stormer-verlet")
     ap.add_argument("--no-lazy", action="store_true",
                     help="skip the lazily built library's build (its columns read -)")
+    ap.add_argument("--model", default=str(MODEL), help="the model file (a chain on G^N)")
     args = ap.parse_args()
-    print(f"tableau {args.tableau}")
+    print(f"tableau {args.tableau}, model {Path(args.model).name}")
     print("| N | derive | emit | write | cc | cold total | py CPU | cc CPU | lazy lib | lazy CPU "
           "| kernels.c | kernels.py | hpgen |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for n in args.n:
-        r = cold_compile(n, args.tableau, lazy=not args.no_lazy)
+        r = cold_compile(n, args.tableau, lazy=not args.no_lazy, model=args.model)
         t = r["timings"]
         cells = [f"{t[k]:.1f} s" if k in t else "-" for k in ("derive", "emit", "write", "cc")]
         kb = [f"{r['sizes'][f] / 1e6:.2f} MB" if r["sizes"][f] else "-"

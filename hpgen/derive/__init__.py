@@ -21,8 +21,9 @@ A model with ``constraints:`` wraps the step in RATTLE-type node multipliers
 and ``nu`` (impulses h lambda_k, h nu_(k+1)) and, when d2l/dxi2 is not constant, ``v1``; the
 reduced Euler-Poincare step is not used.
 
-A closed family model (group G^N) whose Lagrangian sums and joints are local to their bodies
-(hpgen.model.bodyterms) is derived once per body and per joint (hpgen.derive.family): g is
+A family model (group G^N) whose Lagrangian sums and joints are local to their bodies
+(hpgen.model.bodyterms; an open one's forces written per body, hpgen.derive.family.
+family_local) is derived once per body and per joint (hpgen.derive.family): g is
 block-diagonal, the step kernels are composed over MX from per-body and per-joint call
 nodes, the other kernels over SX with calls, and every kernel keeps its outputs' structural
 sparsity (the wrappers scatter them into the contract's dense arrays). ``expand=True``
@@ -118,18 +119,23 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
         m, nP = len(model.inputs), len(model.runtime_symbols)
         hv = ca.SX.sym("h", 2 + m + nP)           # [h, t_k, u, params]
         h, t, u, P = hv[0], hv[1], hv[2:2 + m], hv[2 + m:]
-        lag_f, force_f = open_functions(model)
-        lag_t = lambda G, X, tt: lag_f(G, X, tt, P)  # noqa: E731
-        lag = lambda G, X: lag_f(G, X, t, P)  # noqa: E731  (at t_k: records, energy)
-        force = (lambda G, X, tt: force_f(G, X, tt, u, P)) if model.forced else None
         reduced = model.left_invariant and not model.forced and not model.time_dependent \
             and not model.constraints
-        if is_splitting(tableau):
-            reduced = False
-            eqs, chart = splitting_step(model, tableau, lag, g, p, h, P)
+        fam = family_step(model, tableau, tau, rkmk, g, p, hv) if local else None
+        if fam is not None:          # per body, t, u and params passed through
+            eqs, lag, force = fam.eqs, fam.lag, fam.force
         else:
-            eqs = step_equations(group, lag_t, tableau, tau, rkmk, reduced, g, p, h, t, force)
-        lag1 = lambda G, X: lag_f(G, X, t + h, P)  # noqa: E731  (at t_{k+1})
+            lag_f, force_f = open_functions(model)
+            lag_t = lambda G, X, tt: lag_f(G, X, tt, P)  # noqa: E731
+            lag = lambda G, X: lag_f(G, X, t, P)  # noqa: E731  (at t_k: records, energy)
+            force = (lambda G, X, tt: force_f(G, X, tt, u, P)) if model.forced else None
+            if is_splitting(tableau):
+                reduced = False
+                eqs, chart = splitting_step(model, tableau, lag, g, p, h, P)
+            else:
+                eqs = step_equations(group, lag_t, tableau, tau, rkmk, reduced, g, p, h, t,
+                                     force)
+            lag1 = lambda G, X: lag_f(G, X, t + h, P)  # noqa: E731  (at t_{k+1})
         extra = [("h", hv)]
     else:
         h = hv = ca.SX.sym("h", 1)

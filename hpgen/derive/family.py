@@ -11,7 +11,10 @@ a call through the callee's own Jacobian function, derived once, instead of one 
 derivative per seed). The step kernels (hpgen.derive.family_kernels) compose the calls over MX, where a
 call passes whole vectors; family_step composes them over SX as well (the SX kernels' and
 the tests' form). Bodies whose Lagrangians differ (sums over different ranges) get one
-function per distinct set of sums ("class").
+function per distinct set of sums ("class"). An open model (runtime parameters and t in the
+sums, a per-body force with the control inputs) gives its body functions the environment
+(t, params) and its step functions the step vector hv as their h (hpgen.derive.family_open);
+body i's force enters body i's step only.
 
 Constraints (hpgen.derive.constraints, docs/numerics.md sec. 14) decompose by joint: with
 joint j's rows phi_j(g_a, g_b, ...; i_j) and body-frame Jacobians Phi_{j,a},
@@ -43,6 +46,8 @@ import numpy as np
 
 from ..groups import group_from_spec
 from .action import StepEquations, step_equations
+from .family_open import with_env, body_force_function, open_layout, product_force, \
+    split_step_vector
 from .lagrangian import to_casadi
 
 CALL = {"never_inline": True, "jac_penalty": 0}
@@ -55,14 +60,22 @@ class FamilyParts:
     eqs: StepEquations
     lag: object
     velocity: object     # (g, p, xi) -> SX d: one Newton step of dl/dxi = p, body by body
+    force: object = None  # (G, X, t) -> the product's force (per-body calls), or None
 
 
 def _body_lagrangians(model, body):
-    """{class key: (inline Function l(G, X, i), call Function)}, and the key of each body."""
+    """{class key: (inline Function l(G, X, i[, e]), call Function)}, and the key of each
+    body; e = (t, params) (open models: t the time, params Model.runtime_symbols' order)."""
+    from ..model.symbols import TIME_SYMBOL
     terms = model.family.local.bodies
     N = model.family.count
     keys = [tuple(j for j, t in enumerate(terms) if t.start <= k < t.stop) for k in range(N)]
     G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i")
+    lay = open_layout(model)
+    E = ca.SX.sym("e", 1 + lay[1]) if lay is not None else None
+    env = {}
+    if E is not None:
+        env = {TIME_SYMBOL: E[0], **{s: E[1 + k] for k, s in enumerate(model.runtime_symbols)}}
     funs = {}
     for c, key in enumerate(sorted(set(keys))):
         expr = ca.SX(0)
@@ -76,9 +89,10 @@ def _body_lagrangians(model, body):
                     a, b = map(int, name[2:].split("_"))
                     mapping[s] = G[a, b]
             mapping[t.index] = I
+            mapping.update({s: v for s, v in env.items() if s in t.expr.free_symbols})
             expr = expr + to_casadi(t.expr, mapping)
-        funs[key] = (ca.Function(f"l_body{c}", [G, X, I], [expr]),
-                     ca.Function(f"l_body{c}_call", [G, X, I], [expr], CALL))
+        funs[key] = (ca.Function(f"l_body{c}", with_env([G, X, I], E), [expr]),
+                     ca.Function(f"l_body{c}_call", with_env([G, X, I], E), [expr], CALL))
     return funs, keys
 
 
@@ -114,10 +128,22 @@ def _joint_functions(model, body):
 
 
 def family_local(model) -> bool:
-    """True when ``model`` is derived body by body: a closed family model whose Lagrangian
-    sums and joints are local (hpgen.model.bodyterms); otherwise it is expanded."""
+    """True when ``model`` is derived body by body: a family model whose Lagrangian sums and
+    joints are local (hpgen.model.bodyterms); runtime parameters and t may enter the
+    Lagrangian (not the joints), forces and control inputs only through a per-body force
+    (``forces: {for: i, body: [...]}``, hpgen.model.family_forces). Otherwise it is
+    expanded."""
     family = getattr(model, "family", None)
-    return family is not None and family.local is not None and not model.open_system
+    if family is None or family.local is None:
+        return False
+    if model.open_system:
+        if (model.forced or model.inputs) and family.local.force is None:
+            return False
+        for jt in family.local.joints:
+            for r in jt.rows:
+                if any(not str(s).startswith("g_") and s != jt.index for s in r.free_symbols):
+                    return False
+    return True
 
 
 def block_diagonal_symbol(group):
@@ -141,15 +167,29 @@ def _functions(model, tableau, tau: str, rkmk: str):
     body = group_from_spec(family.body)
     nb, db = body.n, body.d
     lags, keys = _body_lagrangians(model, body)
-    reduced = model.left_invariant and not model.constraints
+    reduced = model.left_invariant and not model.constraints and not model.time_dependent \
+        and not model.forced
 
-    # one body's step per class, derived once
-    gb, pb, hb, ib = ca.SX.sym("g", nb, nb), ca.SX.sym("p", db), ca.SX.sym("h"), ca.SX.sym("i")
+    # one body's step per class, derived once; its h input is the step vector of an open
+    # model (hpgen.abi: [h, t_k, u, params])
+    lay = open_layout(model)
+    H = 1 if lay is None else 2 + lay[0] + lay[1]
+    gb, pb, ib = ca.SX.sym("g", nb, nb), ca.SX.sym("p", db), ca.SX.sym("i")
+    hb = ca.SX.sym("h") if lay is None else ca.SX.sym("h", H)
+    h_, _, _ = split_step_vector(model, hb)
     gbv = ca.vec(gb)
+    fb = body_force_function(model, body)
     steps = {}
     for c, (cls, (lag_in, _)) in enumerate(sorted(lags.items())):
-        e = step_equations(body, lambda G, X, f=lag_in: f(G, X, ib), tableau, tau, rkmk,
-                           reduced, gb, pb, hb)
+        if lay is None:
+            e = step_equations(body, lambda G, X, f=lag_in: f(G, X, ib), tableau, tau, rkmk,
+                               reduced, gb, pb, hb)
+        else:
+            P, u = hb[2 + lay[0]:], hb[2:2 + lay[0]]
+            force = None if fb is None else (
+                lambda G, X, tt: fb(ca.vec(G), X, ib, ca.vertcat(tt, u, P)))
+            e = step_equations(body, lambda G, X, tt, f=lag_in: f(G, X, ib, ca.vertcat(tt, P)),
+                               tableau, tau, rkmk, reduced, gb, pb, h_, hb[1], force)
         args = [e.z, gbv, pb, hb, ib]
         steps[cls] = dict(
             nz=e.z.numel(), blocks=e.blocks,
@@ -157,11 +197,12 @@ def _functions(model, tableau, tau: str, rkmk: str):
             U=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1], CALL),
             M=ca.Function(f"body{c}_margin", [e.z, hb], [e.margin], CALL),
             C=ca.Function(f"body{c}_chart", [e.z, hb], [e.chart_step], CALL),
-            Z=ca.Function(f"body{c}_guess", [e.xi_hat, gbv, pb, hb], [e.guess], CALL))
+            Z=ca.Function(f"body{c}_guess", [e.xi_hat, gbv, pb, hb], [e.guess], CALL),
+            force=fb)
 
     joints = family.local.joints
     jfun = _joint_functions(model, body) if joints else {}
-    vel_funs = _node_velocity(lags, body) if joints else {}
+    vel_funs = _node_velocity(lags, body, lay) if joints else {}
     out = (body, lags, keys, steps, jfun, vel_funs)
     _LAST[:] = [model, key, out]
     return out
@@ -170,9 +211,10 @@ def _functions(model, tableau, tau: str, rkmk: str):
 def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyParts:
     """The family step (module docstring) in g (n x n: SX, block-diagonal, or MX), p (d), h
     (1), for a model with family_local(model); z: the unknowns' symbol to use (else a new
-    one, of the class of g)."""
+    one, of the class of g). An open model's h is its step vector hv (hpgen.abi)."""
     S = ca.MX if isinstance(g, ca.MX) else ca.SX      # the composition's symbol class
     body, lags, keys, steps, jfun, vel_funs = _functions(model, tableau, tau, rkmk)
+    hs, ek, e1 = split_step_vector(model, h)
     nb, db, N = body.n, body.d, model.family.count
 
     Gk = [g[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb] for k in range(N)]
@@ -213,11 +255,12 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     for mk in margins[1:]:
         margin = ca.fmin(margin, mk)
     g1 = ca.diagcat(*g1s)
-    lag, velocity = _product_lagrangian(lags, keys, body, N)
+    lag, velocity = _product_lagrangian(lags, keys, body, N, ek)
+    force = product_force(steps[keys[0]]["force"], model, h, nb, db, N)
     if not joints:
         eqs = StepEquations(z, tuple(blocks), ca.vertcat(*res), g1, ca.vertcat(*p1s),
                             ca.vertcat(*guesses), xi_hat, margin, ca.vertcat(*charts))
-        return FamilyParts(eqs, lag, velocity)
+        return FamilyParts(eqs, lag, velocity, force)
 
     nz = nzb
     blocks += [("lambda", nz, nz + m), ("nu", nz + m, nz + 2 * m)]
@@ -225,20 +268,20 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     kick = [S.zeros(db) for _ in range(N)]           # sum_j Phi_{j,k}(g1)^T nu_j
     for j, jt in enumerate(joints):
         out = jfun[(jt.text, jt.index)](*[ca.vec(g1s[b]) for b in jt.bodies], jt.value)
-        phis.append(out[0] / h)
+        phis.append(out[0] / hs)
         Phi1.append(out[1:])
         for s, b in enumerate(jt.bodies):
             kick[b] = kick[b] + ca.mtimes(out[1 + s].T, nu[rows[j]:rows[j + 1]])
     p1s = [p1s[k] - kick[k] for k in range(N)]
     if explicit:
-        vel = [vel_funs[keys[k]][0](ca.vec(g1s[k]), p1s[k], k,
-                                    _inverse_hessian(vel_funs[keys[k]][1], k)) for k in range(N)]
+        vel = [vel_funs[keys[k]][0](*with_env([ca.vec(g1s[k]), p1s[k], k, _inverse_hessian(
+            vel_funs[keys[k]][1], k)], e1)) for k in range(N)]
         extra_rows, extra_guess = [], []
     else:
         v1 = z[nz + 2 * m:]
         vel = [v1[k * db:(k + 1) * db] for k in range(N)]
-        dl = _momentum(lags, body)
-        extra_rows = [dl[keys[k]](g1s[k], vel[k], k) - p1s[k] for k in range(N)]
+        dl = _momentum(lags, body, e1 is not None and e1.numel())
+        extra_rows = [dl[keys[k]](*with_env([g1s[k], vel[k], k], e1)) - p1s[k] for k in range(N)]
         extra_guess = [xi_hat]
         blocks.append(("v1", nz + 2 * m, nz + 2 * m + N * db))
     hidden = []
@@ -249,34 +292,37 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     eqs = StepEquations(z, tuple(blocks), residual, g1,
                         ca.vertcat(*p1s), ca.vertcat(*guesses, S.zeros(2 * m), *extra_guess),
                         xi_hat, margin, ca.vertcat(*charts))
-    return FamilyParts(eqs, lag, velocity)
+    return FamilyParts(eqs, lag, velocity, force)
 
 
-def _momentum(lags, body):
-    """{class key: Function(g, xi, i) -> dl/dxi} (call nodes)."""
+def _momentum(lags, body, ne):
+    """{class key: Function(g, xi, i[, e]) -> dl/dxi} (call nodes); ne: e's size (0: closed)."""
     G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i")
-    return {key: ca.Function(f"body{c}_momentum", [G, X, I],
-                             [ca.gradient(lag_in(G, X, I), X)], CALL)
+    E = ca.SX.sym("e", ne) if ne else None
+    return {key: ca.Function(f"body{c}_momentum", with_env([G, X, I], E),
+                             [ca.gradient(lag_in(*with_env([G, X, I], E)), X)], CALL)
             for c, (key, (lag_in, _)) in enumerate(sorted(lags.items()))}
 
 
-def _node_velocity(lags, body):
-    """{class key: (Function(g (vec), p, i, Hinv (d*d, column-major)) -> Hinv (p - dl/dxi(g, 0)),
-    Function(i) -> d2l/dxi2)}, or None for a class whose d2l/dxi2 depends on g or xi (it may
-    depend on i: its inverse is taken numerically per body, as the expanded step does)."""
+def _node_velocity(lags, body, lay=None):
+    """{class key: (Function(g (vec), p, i, Hinv (d*d, column-major)[, e]) -> Hinv (p -
+    dl/dxi(g, 0)), Function(i) -> d2l/dxi2)}, or None for a class whose d2l/dxi2 depends on
+    g or xi, or on e = (t, params) (lay: open_layout; it may depend on i: its inverse is
+    taken numerically per body, as the expanded step does)."""
     G, X, I, P = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i"), \
         ca.SX.sym("p", body.d)
+    E = ca.SX.sym("e", 1 + lay[1]) if lay is not None else None
     Hinv = ca.SX.sym("Hinv", body.d, body.d)
     out = {}
     for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
-        dl = ca.gradient(lag_in(G, X, I), X)
+        dl = ca.gradient(lag_in(*with_env([G, X, I], E)), X)
         hess = ca.jacobian(dl, X)
-        if ca.depends_on(hess, ca.vertcat(ca.vec(G), X)):
+        if ca.depends_on(hess, ca.vertcat(ca.vec(G), X, *([E] if E is not None else []))):
             out[key] = None
             continue
         vel = ca.mtimes(Hinv, P - ca.substitute(dl, X, ca.SX.zeros(body.d)))
-        out[key] = (ca.Function(f"body{c}_velocity", [ca.vec(G), P, I, ca.vec(Hinv)], [vel],
-                                CALL), ca.Function(f"body{c}_hessian", [I], [hess]))
+        out[key] = (ca.Function(f"body{c}_velocity", with_env([ca.vec(G), P, I, ca.vec(Hinv)], E),
+                                [vel], CALL), ca.Function(f"body{c}_hessian", [I], [hess]))
     return out
 
 
@@ -286,24 +332,26 @@ def _inverse_hessian(fun, k: int):
     return ca.DM(np.linalg.inv(H).ravel(order="F"))
 
 
-def _product_lagrangian(lags, keys, body, N):
+def _product_lagrangian(lags, keys, body, N, ek=None):
     """(lag, velocity): l(G, X) of the product as a sum of per-body calls, and one Newton step
-    of dl/dxi = p from xi body by body (the Hessian of a separable l is block-diagonal)."""
+    of dl/dxi = p from xi body by body (the Hessian of a separable l is block-diagonal); ek:
+    an open model's (t_k, params), bound into both."""
     nb, db = body.n, body.d
     G, X, I, P = ca.SX.sym("g", nb, nb), ca.SX.sym("xi", db), ca.SX.sym("i"), ca.SX.sym("p", db)
+    E = ca.SX.sym("e", ek.numel()) if ek is not None else None
     steps = {}
     for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
-        mu = ca.gradient(lag_in(G, X, I), X)
-        steps[key] = ca.Function(f"body{c}_velocity_step", [ca.vec(G), P, X, I],
+        mu = ca.gradient(lag_in(*with_env([G, X, I], E)), X)
+        steps[key] = ca.Function(f"body{c}_velocity_step", with_env([ca.vec(G), P, X, I], E),
                                  [X - ca.solve(ca.jacobian(mu, X), mu - P)], CALL)
 
     def lag(Gp, Xp):
-        terms = [lags[keys[k]][1](Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb],
-                                  Xp[k * db:(k + 1) * db], k) for k in range(N)]
+        terms = [lags[keys[k]][1](*with_env([Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb],
+                                          Xp[k * db:(k + 1) * db], k], ek)) for k in range(N)]
         return ca.sum1(ca.vertcat(*terms))
 
     def velocity(Gp, Pp, Xp):
-        return ca.vertcat(*[steps[keys[k]](ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]),
-                                           Pp[k * db:(k + 1) * db], Xp[k * db:(k + 1) * db], k)
-                            for k in range(N)])
+        return ca.vertcat(*[steps[keys[k]](*with_env([
+            ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]), Pp[k * db:(k + 1) * db],
+            Xp[k * db:(k + 1) * db], k], ek)) for k in range(N)])
     return lag, velocity

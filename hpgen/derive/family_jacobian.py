@@ -112,7 +112,8 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
     bf = _jacobian_function(st["F"], [(0, 0), (0, 2)], f"{st['F'].name()}_blocks")
     bu = _jacobian_function(st["U"], [(0, 0), (0, 2), (1, 0), (1, 2)],
                             f"{st['U'].name()}_blocks")
-    outs = [*bf.map(N)(Z, G, Q, h, I), *bu.map(N)(Z, G, Q, h, I)]
+    hv = parts["hv"]              # the step vector of an open model, else h
+    outs = [*bf.map(N)(Z, G, Q, hv, I), *bu.map(N)(Z, G, Q, hv, I)]
     sps = [bf.sparsity_out(0), bf.sparsity_out(1), *[bu.sparsity_out(k) for k in range(4)]]
 
     def diag(k, a, b):
@@ -122,7 +123,7 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
     GZ, GQ = diag(2, nb2, nzb), diag(3, nb2, db)
     PZ, PQ = diag(4, db, nzb), diag(5, db, db)
     vj = _jacobian_function(parts["velocity"], [(0, 0), (0, 1)], "body_velocity_blocks")
-    VG, VP = vj.map(N)(G1, P1, I, Hinv)
+    VG, VP = vj.map(N)(G1, P1, I, Hinv, *([] if parts["e1"] is None else [parts["e1"]]))
     VG = ca.sparsity_cast(VG, ca.diagcat(*[vj.sparsity_out(0)] * N))
     VP = ca.sparsity_cast(VP, ca.diagcat(*[vj.sparsity_out(1)] * N))
 

@@ -10,6 +10,7 @@ import casadi as ca
 
 from ..groups import group_from_spec
 from .family import CALL, _functions, block_diagonal_symbol, family_step
+from .family_open import open_layout
 
 
 def _body_maps(body, tau: str):
@@ -41,13 +42,16 @@ def mx_step_kernels(model, tableau, tau: str, rkmk: str) -> dict:
     n, d = model.group.n, model.group.d
     body = group_from_spec(model.family.body)
     nb, N = body.n, model.family.count
-    gv, p, h = ca.MX.sym("g", n * n), ca.MX.sym("p", d), ca.MX.sym("h")
+    lay = open_layout(model)
+    h = ca.MX.sym("h") if lay is None else ca.MX.sym("h", 2 + lay[0] + lay[1])
+    gv, p = ca.MX.sym("g", n * n), ca.MX.sym("p", d)
     mapped = _mapped_kernels(model, tableau, tau, rkmk, gv, p, h)
     if mapped is not None:
         from .family_map import mapped_state_kernels
         from .record_kernel import record_names
-        _, lags, keys, _, _, _ = _functions(model, tableau, tau, rkmk)
-        state = mapped_state_kernels(model, lags, keys, body, record_names(model))
+        _, lags, keys, steps, _, _ = _functions(model, tableau, tau, rkmk)
+        state = mapped_state_kernels(model, lags, keys, body, record_names(model),
+                                     next(iter(steps.values()))["force"])
         return {**mapped, **(state or {})}
     g = ca.reshape(gv, n, n)
     eqs = family_step(model, tableau, tau, rkmk, g, p, h).eqs
@@ -68,7 +72,7 @@ def mx_step_kernels(model, tableau, tau: str, rkmk: str) -> dict:
     Y = ca.vertcat(*[chart_of(R, G) for R, G in zip(_blocks(ca.reshape(g1ref, n, n), nb, N),
                                                     _blocks(pert.g1, nb, N))], pert.p1)
     s = ca.vertcat(eta, dp)
-    parts = [ca.jacobian(pert.residual, s), ca.jacobian(Y, z), ca.jacobian(Y, s)]
+    parts = _partials(pert.residual, Y, z, s, h, lay is not None)
     parts = ca.substitute(parts, [s, g1ref], [ca.MX.zeros(2 * d), ca.densify(g1)])
     return _step_kernels(eqs, z, gv, p, h, eqs.xi_hat, theta, J, g1, col(gth),
                          [col(e) for e in parts])
@@ -114,10 +118,17 @@ def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
     G1ref = ca.MX.sym("g1ref", nb * nb, N)
     Y = ca.vertcat(ca.vec(mapped(chart_of, N)(G1ref, pert.g1)), pert.p1)
     s = ca.vertcat(eta, dp)
-    parts = [ca.jacobian(pert.residual, s), ca.jacobian(Y, z), ca.jacobian(Y, s)]
+    parts = _partials(pert.residual, Y, z, s, h, model.open_system)
     parts = ca.substitute(parts, [s, G1ref], [ca.MX.zeros(2 * d), eqs.g1])
     return _step_kernels(eqs, z, gv, p, h, xi_hat, theta, J, cast(eqs.g1), cast(gth),
                          [col(e) for e in parts])
+
+
+def _partials(F, Y, z, s, hv, is_open: bool) -> list:
+    """step_partials' outputs (hpgen.derive.linearize): dF/ds, dY/dz, dY/ds, and for an open
+    model dF/dH, dY/dH in its step vector hv."""
+    out = [ca.jacobian(F, s), ca.jacobian(Y, z), ca.jacobian(Y, s)]
+    return out + [ca.jacobian(F, hv), ca.jacobian(Y, hv)] if is_open else out
 
 
 def _step_kernels(eqs, z, gv, p, h, xi_hat, theta, J, g1, g_theta, partials) -> dict:
@@ -134,6 +145,6 @@ def _step_kernels(eqs, z, gv, p, h, xi_hat, theta, J, g1, g_theta, partials) -> 
            "chart_point": (([z, gv, h, theta], ("z", "g", "h", "theta")), [g_theta],
                            ("g_theta",)),
            "update_p": (step_in, [eqs.p1], ("p1",)),
-           "step_partials": (step_in, partials, ("Fs", "Yz", "Ys"))}
+           "step_partials": (step_in, partials, ("Fs", "Yz", "Ys", "FH", "YH")[:len(partials)])}
     return {name: (ca.Function(name, list(ins), outs, list(nin), list(nout)), nin, nout)
             for name, ((ins, nin), outs, nout) in out.items()}

@@ -75,8 +75,12 @@ def mapped_step(model, funcs, G, P, h, z, xi_hat) -> StepEquations | None:
 def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     """(mapped_step's StepEquations, its intermediates for the block-assembled Jacobian
     (hpgen.derive.family_jacobian): a dict of MX Z, Q, G1, P1, V (columns per body), the
-    joint groups, the constants I, Hinv and the joint rows' order), or None."""
+    joint groups, the constants I, Hinv and the joint rows' order), or None. An open model's
+    h is its step vector hv (hpgen.abi)."""
+    from .family_open import with_env, split_step_vector
     body, lags, keys, steps, jfun, vel_funs = funcs
+    hv = h
+    h, _, e1 = split_step_vector(model, hv)
     N, db = model.family.count, body.d
     if len(steps) != 1 or any(f is None for f in vel_funs.values()):
         return None
@@ -107,8 +111,8 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
             L = L + ca.mtimes(imp[s], sel[s])
         plan.append((js, fns, cols, sel, Ij, nu, rows))
     Q = P - L
-    Fr = mapped(st["F"], N)(Z, G, Q, h, I)
-    G1, P1m = mapped(st["U"], N)(Z, G, Q, h, I)
+    Fr = mapped(st["F"], N)(Z, G, Q, hv, I)
+    G1, P1m = mapped(st["U"], N)(Z, G, Q, hv, I)
     phis, rows_of = [], []
     for js, fns, cols, sel, Ij, nu, rows in plan:
         out = mapped(fns[1], len(js))(*[G1[:, c] for c in cols], Ij, nu)
@@ -120,7 +124,7 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     vel_fn, hess_fn = vel_funs[cls]
     Hinv = ca.DM(np.hstack([np.linalg.inv(np.array(hess_fn(k), dtype=float)).reshape(
         -1, 1, order="F") for k in range(N)]))
-    V = mapped(vel_fn, N)(G1, P1, I, Hinv)
+    V = mapped(vel_fn, N)(*with_env([G1, P1, I, Hinv], e1))
     hidden = [mapped(fns[2], len(js))(*[G1[:, c] for c in cols], Ij, *[V[:, c] for c in cols])
               for js, fns, cols, sel, Ij, nu, rows in plan]
     # joint rows back in file order
@@ -128,25 +132,30 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     perm = np.argsort([rowoff[j] + r for j, r in order], kind="stable")
     phi = ca.vertcat(*[ca.vec(x) for x in phis])[perm.tolist()]
     hid = ca.vertcat(*[ca.vec(x) for x in hidden])[perm.tolist()]
-    margins = mapped(st["M"], N)(Z, h)
-    charts = mapped(st["C"], N)(Z, h)
-    guess = mapped(st["Z"], N)(ca.reshape(xi_hat, db, N), G, P, h)
+    margins = mapped(st["M"], N)(Z, hv)
+    charts = mapped(st["C"], N)(Z, hv)
+    guess = mapped(st["Z"], N)(ca.reshape(xi_hat, db, N), G, P, hv)
     eqs = StepEquations(z, (), ca.vertcat(ca.vec(Fr), phi, hid), G1, ca.vec(P1),
                         ca.vertcat(ca.vec(guess), ca.MX.zeros(2 * m)), xi_hat,
                         ca.mmin(margins), ca.vec(charts))
     groups_out = [(key, js) for key, js in groups.items()]
-    parts = {"z": z, "Z": Z, "G": G, "Q": Q, "G1": G1, "P1": P1, "V": V, "h": h, "I": I,
+    parts = {"z": z, "Z": Z, "G": G, "Q": Q, "G1": G1, "P1": P1, "V": V, "h": h, "hv": hv, "e1": e1, "I": I,
              "Hinv": Hinv, "groups": groups_out, "rowoff": rowoff, "perm": perm, "m": m,
              "step": st, "velocity": vel_fn}
     return eqs, parts
 
 
-def mapped_state_kernels(model, lags, keys, body, record_names) -> dict | None:
+def mapped_state_kernels(model, lags, keys, body, record_names, force=None) -> dict | None:
     """{kernel name: (Function over MX, input names, output names)} for legendre, hessian,
     energy, momentum, defect, observe, velocity_step and (when the scene records only g, mu,
     xi, energy, momentum, defect) record: one mapped call of a per-body function each, the
     sums and maxima over the bodies as reductions. None when the bodies do not share one
-    Lagrangian."""
+    Lagrangian. An open model's kernels of hpgen.abi.OPEN_EXTRA take its step vector hv as a
+    last input ``h`` (their t is t_k); with ``force`` (the per-body force, hpgen.derive.
+    family_open.body_force_function) the record may hold power and work, <f, xi> summed over
+    the bodies."""
+    from ..abi import OPEN_EXTRA
+    from .family_open import with_env, open_layout, split_step_vector
     if len(lags) != 1:
         return None
     (lag_in, _), = lags.values()
@@ -154,32 +163,46 @@ def mapped_state_kernels(model, lags, keys, body, record_names) -> dict | None:
     nb, db = body.n, body.d
     Gs, X, Ps, I = ca.SX.sym("g", nb, nb), ca.SX.sym("xi", db), ca.SX.sym("p", db), \
         ca.SX.sym("i")
-    lval = lag_in(Gs, X, I)
+    lay = open_layout(model)
+    E = None if lay is None else ca.SX.sym("e", 1 + lay[1])
+    lval = lag_in(*with_env([Gs, X, I], E))
     mu = ca.gradient(lval, X)
     H = ca.jacobian(mu, X)
     vstep = X - ca.solve(H, mu - Ps)
     at0 = lambda e: ca.substitute(e, X, ca.SX.zeros(db))  # noqa: E731
     x0 = at0(vstep)
     gvec = ca.vec(Gs)
-    fa = ca.Function("body_legendre", [gvec, X, I],
+    fa = ca.Function("body_legendre", with_env([gvec, X, I], E),
                      [mu, ca.densify(ca.vec(H)), ca.dot(mu, X) - lval], CALL)
-    fb = ca.Function("body_observe", [gvec, Ps, I], [
+    fb = ca.Function("body_observe", with_env([gvec, Ps, I], E), [
         body.momentum_map(Gs, Ps), x0, ca.substitute(ca.dot(mu, X) - lval, X, x0)], CALL)
     fd = ca.Function("body_defect", [gvec], [body.group_defect(Gs)], CALL)
-    fv = ca.Function("body_velocity_step", [gvec, Ps, X, I], [vstep], CALL)
+    fv = ca.Function("body_velocity_step", with_env([gvec, Ps, X, I], E), [vstep], CALL)
     xi, p = ca.MX.sym("xi", d), ca.MX.sym("p", d)
     gcol = ca.reshape(ca.DM(ca.diagcat(*[ca.DM.ones(nb, nb)] * N).sparsity(), 1.0), n * n, 1)
     gv = ca.MX.sym("g", gcol.sparsity())      # g's block-diagonal nonzeros, body by body
     hcol = ca.reshape(ca.DM(ca.diagcat(*[ca.DM.ones(db, db)] * N).sparsity(), 1.0), d * d, 1)
     G = ca.reshape(ca.sparsity_cast(gv, ca.Sparsity.dense(gv.nnz(), 1)), nb * nb, N)
     Xm, Pm, Im = ca.reshape(xi, db, N), ca.reshape(p, db, N), ca.DM(np.arange(N)).T
-    mu_, H_, E_ = mapped(fa, N)(G, Xm, Im)
-    m_, x0_, E0_ = mapped(fb, N)(G, Pm, Im)
+    hv = None if lay is None else ca.MX.sym("h", 2 + lay[0] + lay[1])
+    ek = None if hv is None else split_step_vector(model, hv)[1]
+    mu_, H_, E_ = mapped(fa, N)(*with_env([G, Xm, Im], ek))
+    m_, x0_, E0_ = mapped(fb, N)(*with_env([G, Pm, Im], ek))
     e_ = mapped(fd, N)(G)
-    v_ = mapped(fv, N)(G, Pm, Xm, Im)
+    v_ = mapped(fv, N)(*with_env([G, Pm, Xm, Im], ek))
+    if hv is not None:               # the momentum map without the mapped call's hv input
+        fm = ca.Function("body_momentum_map", [gvec, Ps], [body.momentum_map(Gs, Ps)], CALL)
+        m_ = mapped(fm, N)(G, Pm)
     energy, defect = ca.sum2(E_), ca.mmax(e_)
     items = {"g": gv, "mu": p, "xi": xi, "energy": energy, "momentum": ca.vec(m_),
              "defect": defect}
+    if force is not None:            # <f, xi> at t_k, body by body
+        Ef = ca.SX.sym("e", force.size1_in(3))
+        fp = ca.Function("body_power", [gvec, X, I, Ef],
+                         [ca.dot(force(gvec, X, I, Ef), X)], CALL)
+        m = len(model.inputs)
+        ef = ca.vertcat(hv[1], hv[2:2 + m], hv[2 + m:])
+        items["power"] = items["work"] = ca.sum2(mapped(fp, N)(G, Xm, Im, ef))
     res = {"legendre": ([gv, xi], ("g", "xi"), [ca.vec(mu_)], ("mu",)),
            "hessian": ([gv, xi], ("g", "xi"),
                        [ca.sparsity_cast(ca.vec(H_), hcol.sparsity())], ("H",)),
@@ -192,5 +215,9 @@ def mapped_state_kernels(model, lags, keys, body, record_names) -> dict | None:
     if all(nm in items for nm in record_names):
         res["record"] = ([gv, p, xi], ("g", "p", "xi"),
                          [ca.vertcat(*[items[nm] for nm in record_names])], ("row",))
+    if hv is not None:               # hpgen.abi: these kernels take hv last
+        res = {name: ((ins + [hv], nin + ("h",), outs, nout) if name in OPEN_EXTRA
+                      else (ins, nin, outs, nout))
+               for name, (ins, nin, outs, nout) in res.items()}
     return {name: (ca.Function(name, ins, outs, list(nin), list(nout)), nin, nout)
             for name, (ins, nin, outs, nout) in res.items()}

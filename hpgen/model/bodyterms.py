@@ -58,6 +58,8 @@ class LocalTerms:
     bodies: tuple                  # BodyTerm per Lagrangian sum, file order
     joints: tuple                  # JointTerm per ConstraintSpec, file order
     slots: int                     # the largest K over the joints (1 without joints)
+    #: the per-body force (hpgen.model.family_forces.BodyForce) of a ``forces: {for, body}``
+    force: object = None
 
 
 class _NotLocal(Exception):
@@ -68,9 +70,10 @@ class _Local(_Evaluator):
     """The whitelist evaluator on a K-body family, with the index ``var`` symbolic and every
     body index expression mapped to a slot (its first use)."""
 
-    def __init__(self, body: str, slots: int, params: dict, var, variables, forbidden=None):
+    def __init__(self, body: str, slots: int, params: dict, var, variables, forbidden=None,
+                 extra=None):
         group = FamilyGroup(BodyFamily(body=body, count=slots))
-        super().__init__(group, params, variables=variables, forbidden=forbidden)
+        super().__init__(group, params, variables=variables, forbidden=forbidden, extra=extra)
         self.var = var
         self.index = sp.Symbol(var, real=True) if var else None
         self.slots: dict = {}      # ast.dump(index node) -> (slot, node)
@@ -114,7 +117,8 @@ class _Local(_Evaluator):
 
 
 def _body_term(family: BodyFamily, fsum, params: dict) -> BodyTerm:
-    ev = _Local(family.body, 1, params, fsum.variable, ("xi",))
+    from .symbols import TIME_SYMBOL
+    ev = _Local(family.body, 1, params, fsum.variable, ("xi",), extra={"t": TIME_SYMBOL})
     value = ev.walk(parse_checked(fsum.term).body)
     if hasattr(value, "shape") or not all(isinstance(node, ast.Name) and node.id == fsum.variable
                                           for _, node in ev.slots.values()):

@@ -190,8 +190,12 @@ def build_model(doc: Doc, text: str) -> Model:
                   "through forces only)" for u in inputs}
     lag, xi_syms, g_syms = _lagrangian(doc, data["lagrangian"], group, lag_params, refused)
     family = _family(group, data["lagrangian"], exact)
-    forces, forces_text = (), ()
-    if data.get("forces") is not None:
+    forces, forces_text, body_force = (), (), None
+    if isinstance(data.get("forces"), dict):      # per body: {for: i, body: [...]}
+        from .family_forces import parse_family_forces
+        forces, forces_text, body_force = parse_family_forces(
+            doc, data["forces"], group, lag_params, inputs, xi_syms, g_syms)
+    elif data.get("forces") is not None:
         forces, forces_text = _forces(doc, data["forces"], group, lag_params, inputs)
     scene = None
     if data.get("scene") is not None:
@@ -212,7 +216,10 @@ def build_model(doc: Doc, text: str) -> Model:
     if family is not None:
         from dataclasses import replace
         from .bodyterms import local_terms
-        family = replace(family, local=local_terms(family, constraints, lag_params))
+        local = local_terms(family, constraints, lag_params)
+        if local is not None and body_force is not None:
+            local = replace(local, force=body_force)
+        family = replace(family, local=local)
     return Model(name=name, path=doc.file, source=text, group_spec=data["group"], group=group,
                  parameters=stored, lagrangian_text=data["lagrangian"], lagrangian=lag,
                  xi_symbols=xi_syms, g_symbols=g_syms, integrator=integrator, scene=scene,

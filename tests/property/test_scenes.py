@@ -309,6 +309,7 @@ def test_chain_energy_and_vertical_momentum(compile_model):
 #   heavy_top          Gauss 2/exp/exact, h = 0.05,   8.4e-8
 #   lagrange_top       Gauss 2/cay/exact, h = 5e-4,   5.1e-11
 #   pendulum_chain     SV/cay/q=0,        h = 1e-3,   4.2e-6 (N = 2; ball joints, constrained)
+#   pendulum_chain_gravity SV/cay/q=0,    h = 1e-3,   1.3e-4 (N = 4; grav a runtime parameter)
 #   turntable          SV/cay/q=0,        h = 0.02,   1.1e-4
 #   underwater_vehicle Gauss 2/cay/exact, h = 0.05,   2.0e-8
 # forced scenes (issue 16): max |(E - W) - (E0 - W0)| / max(|E0|, max |W|), the energy-work
@@ -317,6 +318,7 @@ def test_chain_energy_and_vertical_momentum(compile_model):
 #   driven_pendulum         Gauss 2/cay/exact, h = 3pi/100, 5.3e-5
 #   spacecraft_slew         Gauss 2/cay/exact, h = 0.05,   9.4e-10
 #   underwater_vehicle_drag Gauss 2/cay/exact, h = 0.05,   4.6e-7
+#   damped_pendulum_chain   SV/cay/q=0,        h = 1e-3,   1.2e-4 (N = 4; per-body damping)
 SCENE_ENERGY_BOUND = {
     "chain": 1.9e-1,
     "damped_top": 2.1e-6,
@@ -328,6 +330,8 @@ SCENE_ENERGY_BOUND = {
     "heavy_top": 8.4e-7,
     "lagrange_top": 5.1e-10,
     "pendulum_chain": 4.2e-5,
+    "pendulum_chain_gravity": 1.3e-3,
+    "damped_pendulum_chain": 1.2e-3,
     "spacecraft_panels": 3.0e-6,
     "four_bar": 7.2e-5,
     "rod": 1.4e-6,

@@ -1,0 +1,76 @@
+"""The open part of a family model's per-body derivation (hpgen.derive.family): the step
+vector of an open model and the per-body force.
+
+An open family model's body functions take, besides (g_i, xi_i, i), the environment
+e = (t, params) (the Lagrangian: t the time, params the runtime parameters in
+Model.runtime_symbols' order) or (t, u, params) (the per-body force, u the control inputs in
+Model.input_symbols' order); the step functions take the whole step vector
+hv = [h, t_k, u, params] of hpgen.abi as their ``h``.
+"""
+from __future__ import annotations
+
+import casadi as ca
+
+from .lagrangian import to_casadi
+
+CALL = {"never_inline": True, "jac_penalty": 0}
+
+
+def open_layout(model):
+    """(m, P): the numbers of control inputs and runtime parameter entries of an open family
+    model (its step vector hv = [h, t_k, u (m), params (P)], hpgen.abi), None when closed."""
+    if not model.open_system:
+        return None
+    return len(model.inputs), len(model.runtime_symbols)
+
+
+def split_step_vector(model, hv):
+    """(h, e_k, e_1) from the step input hv: h the step (hv itself when closed), e_k and e_1
+    the environment (t, params) at t_k and at t_k + h, or None when closed."""
+    lay = open_layout(model)
+    if lay is None:
+        return hv, None, None
+    h, t, P = hv[0], hv[1], hv[2 + lay[0]:]
+    return h, ca.vertcat(t, P), ca.vertcat(t + h, P)
+
+
+def with_env(args, e):
+    """A body function's arguments, with the environment e (t, params) appended when open."""
+    return [*args, e] if e is not None else list(args)
+
+
+def body_force_function(model, body):
+    """Function(vec g, xi, i, e) -> the body's force (d) of a per-body ``forces:``, e = (t, u,
+    params) (Model.input_symbols', Model.runtime_symbols' orders); None without one."""
+    from ..model.symbols import TIME_SYMBOL
+    bf = model.family.local.force
+    if bf is None:
+        return None
+    m, nP = open_layout(model)
+    G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i")
+    E = ca.SX.sym("e", 1 + m + nP)
+    mapping = {TIME_SYMBOL: E[0], bf.index: I,
+               **{s: E[1 + k] for k, s in enumerate(model.input_symbols)},
+               **{s: E[1 + m + k] for k, s in enumerate(model.runtime_symbols)}}
+    for e in bf.exprs:
+        for sym in e.free_symbols:
+            name = str(sym)
+            if name.startswith("xi_"):
+                mapping[sym] = X[int(name[3:])]
+            elif name.startswith("g_"):
+                a, b = map(int, name[2:].split("_"))
+                mapping[sym] = G[a, b]
+    f = ca.vertcat(*[to_casadi(e, mapping) for e in bf.exprs])
+    return ca.Function("body_force", [ca.vec(G), X, I, E], [f], CALL)
+
+
+def product_force(fb, model, hv, nb, db, N):
+    """(G, X, t) -> the product's force as N calls of the body force ``fb`` with (t, u,
+    params) of the step vector hv; None without a per-body force."""
+    if fb is None:
+        return None
+    m = len(model.inputs)
+    u, P = hv[2:2 + m], hv[2 + m:]
+    return lambda Gp, Xp, tt: ca.vertcat(*[fb(
+        ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]), Xp[k * db:(k + 1) * db], k,
+        ca.vertcat(tt, u, P)) for k in range(N)])
