@@ -8,11 +8,7 @@ kernels.c (static functions are not exported, so ctypes cannot call them).
 Each N: examples/pendulum_chain.yaml compiled (C, sparse J), 50 steps of h = 1e-3 from the
 benchmark's start (hpgen.bench.multibody.chain) give the state; the harness (built with the
 runtime's flags) then advances 20 more steps and times each part at that state, best of 5
-rounds, us of CPU time per call (the process's CPU clock: a loaded machine's preemptions
-leave it, its cache contention does not). Read the parts against each other: the machine's load moves them all.
-The harness is built twice, with a sparse module's full Newton as the chord iteration within
-the step (HPGEN_SPARSE_CHORD=1, the default) and with J at every iterate (=0); the two run
-in turn, two rounds.
+rounds, us per call. Read the parts against each other: the machine's load moves them all.
 """
 from __future__ import annotations
 
@@ -33,7 +29,7 @@ HARNESS = r"""
 #define _POSIX_C_SOURCE 199309L
 #include <time.h>
 #include "kernels.c"
-static double now(void) { struct timespec t; clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t); return t.tv_sec + 1e-9 * t.tv_nsec; }
+static double now(void) { struct timespec t; clock_gettime(CLOCK_MONOTONIC, &t); return t.tv_sec + 1e-9 * t.tv_nsec; }
 #define TIME(label, reps, stmt) do { double best = 1e30; int rr, q; for (rr = 0; rr < 5; ++rr) { double t0 = now(); for (q = 0; q < (reps); ++q) { stmt; } double t1 = (now() - t0) / (reps); if (t1 < best) best = t1; } printf("%-28s %9.2f us\n", label, best * 1e6); } while (0)
 static hpgen_run R;
 int main(int argc, char** argv) {
@@ -89,27 +85,13 @@ def run(n: int, work: Path) -> str:
     state = work / f"state{n}.bin"
     np.concatenate([np.asarray(tr.g[-1]).ravel(order="F"), np.asarray(tr.mu[-1])]).tofile(state)
     module = Path(integ.engine.backend.lib._name).parent
-    src = work / "parts.c"
+    src, exe = work / "parts.c", work / f"parts{n}"
     src.write_text(HARNESS)
     flags = [f for f in DEFAULT_CFLAGS if f != "-shared"]
-    exes = {}
-    for chord in (1, 0):
-        exes[chord] = work / f"parts{n}_{chord}"
-        subprocess.run([os.environ.get("CC", "cc"), *flags, f"-DHPGEN_SPARSE_CHORD={chord}",
-                        *include_flags(), "-I", str(module), str(src), "-o",
-                        str(exes[chord]), "-lm"], check=True)
-    out = []
-    for rnd in range(2):          # interleaved: the chord build, then J at every iterate
-        for chord in (1, 0):
-            text = subprocess.run([str(exes[chord]), str(state)], check=True,
-                                  capture_output=True, text=True).stdout
-            if rnd or chord:      # the parts once; the runs of every round
-                lines = text.splitlines(keepends=True)
-            else:
-                lines = [ln for ln in text.splitlines(keepends=True) if "advance" in ln]
-            label = "chord" if chord else "J every iterate"
-            out.append(f"-- round {rnd + 1}, full Newton = {label}\n" + "".join(lines))
-    return "".join(out)
+    subprocess.run([os.environ.get("CC", "cc"), *flags, *include_flags(), "-I", str(module),
+                    str(src), "-o", str(exe), "-lm"], check=True)
+    return subprocess.run([str(exe), str(state)], check=True, capture_output=True,
+                          text=True).stdout
 
 
 def main() -> int:

@@ -177,11 +177,6 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
     stol, sparse = SIMPLIFIED_TOL * tol, kern.sparse
     dprev, jacs, F = _INF, 0, None
     full, fresh = not opts.simplified, False
-    if full and sparse:
-        # a sparse Newton matrix: full Newton is the chord iteration within the step
-        from .newton_chord import solve_chord
-        memory.lu = None
-        return solve_chord(kern, z, g, p, hv, tol, maxit)
     if full and kern.iterate_full is not None:
         # full Newton's iterates in one call (same arithmetic as below; J is not kept)
         out = kern.iterate_full(z, g, p, hv, 1, maxit, dprev, tol)

@@ -128,9 +128,7 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
    and F's norm taken once, at the end. A non-finite F is caught after the solve, where it
    makes dz non-finite (dz = J^{-1} F: every F_i enters some dz_j with a nonzero factor of
    J^{-1}, or as inf * 0 = NaN): then F is tested and, if it is the culprit, z is left at the
-   iterate F was evaluated at, as in hpgen_newton. A sparse module uses it only when built
-   with HPGEN_SPARSE_CHORD = 0 (else hpgen_newton_chord). */
-#if !(HPGEN_SPARSE && HPGEN_SPARSE_CHORD)
+   iterate F was evaluated at, as in hpgen_newton. */
 static int hpgen_newton_full(const double* g, const double* p, const double* hv, double* z,
                              const hpgen_options* o, long long* iters, long long* jacs,
                              double* rnorm) {
@@ -165,70 +163,6 @@ static int hpgen_newton_full(const double* g, const double* p, const double* hv,
     *rnorm = evaluated ? hpgen_norm_inf(Fz, HPGEN_NZ) : NAN;
     return code;
 }
-#endif
-
-#if HPGEN_SPARSE && HPGEN_SPARSE_CHORD
-/* Full Newton of a module with a sparse Newton matrix (many bodies), as a chord iteration
-   within the step: J is evaluated and factored at the step's first iterate; the next
-   iterates apply those factors to F (one residual and one solve each, a small fraction of
-   J's cost) while they contract, and a kept J whose rate theta = |dz| / |dz_prev| exceeds
-   HPGEN_THETA_MAX is refreshed at the next iterate (unless |dz| is at the round-off noise,
-   hpgen_at_floor, from the third iterate on). Nothing is kept across steps.
-   Stop tests: after a fresh J those of full Newton (|dz| <= tol (1 + |z|),
-   hpgen_sparse_converged with a fresh J); after a kept J the linear-rate bound of
-   hpgen_sparse_converged asked of HPGEN_SIMPLIFIED_TOL tol, as simplified Newton's
-   (te/(1 - te) |dz| <= HPGEN_SIMPLIFIED_TOL tol (1 + |z|), |dz| at the round-off floor: the
-   error full Newton's stop leaves, not tol (1 + |z|) itself);
-   either, the stagnation test (|dz| stopped decreasing at the round-off floor: the kept J
-   was factored in this step, so it contracts). The results are those of a Newton with
-   a linear rate theta (about |z_0 - z*| cond(J) times a curvature), not full Newton's
-   bitwise. Mirrored in hpgen.runtime.newton_chord. */
-static int hpgen_newton_chord(const double* g, const double* p, const double* hv, double* z,
-                              const hpgen_options* o, long long* iters, long long* jacs,
-                              double* rnorm) {
-    double F[HPGEN_NZ], Fz[HPGEN_NZ], J[HPGEN_LU_SIZE], dprev = HUGE_VAL;
-    const double tol = o->tol;
-    const long long maxit = o->maxit;
-    long long it, nj = 0;
-    int i, piv[1], evaluated = 0, need_j = 1, fresh = 0, code = HPGEN_NO_CONVERGENCE;
-    for (it = 1; it <= maxit; ++it) {
-        double dn, zn;
-        if (need_j) {
-            ++nj;
-            if (hpgen_newton_fj(z, g, p, hv, F, J)) { code = HPGEN_NONFINITE; break; }
-            memcpy(Fz, F, sizeof F);
-            evaluated = 1;
-            if (hpgen_lu_factor_solve(J, piv, F, 1)) { code = HPGEN_NONFINITE; break; }
-            need_j = 0;
-            fresh = 1;
-        } else {
-            if (hpgen_k_residual(z, g, p, hv, F)) { code = HPGEN_NONFINITE; break; }
-            memcpy(Fz, F, sizeof F);
-            hpgen_lu_apply(J, piv, F);
-            fresh = 0;
-        }
-        dn = hpgen_norm_inf(F, HPGEN_NZ);
-        if (!isfinite(dn) && !hpgen_all_finite(Fz, HPGEN_NZ)) { code = HPGEN_NONFINITE; break; }
-        for (i = 0; i < HPGEN_NZ; ++i) z[i] -= F[i];
-        zn = hpgen_norm_inf(z, HPGEN_NZ);
-        if (!isfinite(dn) || !isfinite(zn)) { code = HPGEN_NONFINITE; break; }
-        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)) {
-            code = HPGEN_OK; break;
-        }
-        if (fresh && dn <= tol * (1.0 + zn)) { code = HPGEN_OK; break; }
-        if (hpgen_sparse_converged(it, dn, dprev, zn, fresh ? tol : HPGEN_SIMPLIFIED_TOL * tol,
-                                   fresh)) { code = HPGEN_OK; break; }
-        if (!fresh && dn > HPGEN_THETA_MAX * dprev && !(it > 2 && hpgen_at_floor(dn, zn)))
-            need_j = 1;
-        dprev = dn;
-    }
-    if (it > maxit) it = maxit;
-    *iters = it;
-    *jacs += nj;
-    *rnorm = evaluated ? hpgen_norm_inf(Fz, HPGEN_NZ) : NAN;
-    return code;
-}
-#endif
 
 /* A family module (HPGEN_G_PACKED): g is block-diagonal and the update kernel's variant
    hpgen_k_update_nz writes g_{k+1} as its HPGEN_GNZ structural nonzeros, whose positions in
@@ -293,11 +227,7 @@ static int hpgen_step_solve(const double* g, const double* p, const double* hv, 
         code = hpgen_newton(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm);
     } else {
         *lu_valid = 0;                     /* full Newton keeps no J^{-1} */
-#if HPGEN_SPARSE && HPGEN_SPARSE_CHORD
-        code = hpgen_newton_chord(g, p, hv, z, o, iters, jacs, rnorm);
-#else
         code = hpgen_newton_full(g, p, hv, z, o, iters, jacs, rnorm);
-#endif
     }
     /* a Newton failure is reported as such (wherever its last iterate went): DOMAIN is a
        converged solution outside tau's domain only */

@@ -122,12 +122,6 @@
 #define HPGEN_VELOCITY_MAXIT 50
 /* a static pivot u_kk of the sparse LU is accepted when |u_kk| > this * max_i |J_ik| (a
    build may set it, e.g. -DHPGEN_STATIC_PIVOT_TOL=1e300 sends every J to the QR) */
-/* 1: a sparse module's full Newton is a chord iteration within the step (hpgen_newton_chord:
-   J once at the step's start, refreshed only on a poor rate); 0: J at every iterate (a build
-   may set it to compare) */
-#ifndef HPGEN_SPARSE_CHORD
-#define HPGEN_SPARSE_CHORD 1
-#endif
 #ifndef HPGEN_STATIC_PIVOT_TOL
 #define HPGEN_STATIC_PIVOT_TOL 1e-08
 #endif
