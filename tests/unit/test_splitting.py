@@ -149,7 +149,8 @@ def test_symmetric_momentum_and_group_kept(compile_model, path, name, h):
 
 
 @pytest.mark.parametrize("path,name", [(HEAVY_TOP, "split6-kahan-li"),
-                                       (UNDERWATER, "split2"), (TWO_BODIES, "split4-yoshida")])
+                                       (UNDERWATER, "split2"), (TWO_BODIES, "split4-yoshida"),
+                                       (HEAVY_TOP, "split4-blanes-moan-fasso")])
 def test_step_is_symplectic_and_linearize_matches_differences(compile_model, path, name):
     from hpgen import build
     from hpgen.model import load_model

@@ -67,8 +67,9 @@ def test_schedule_of_a_symmetric_composition():
     assert sum(o[0] == "kick" for o in ops) == 5
 
 
-@pytest.mark.parametrize("name", NEW)
-def test_measured_order_against_the_exact_free_body(compile_model, name):
+@pytest.mark.parametrize("name,tol", [(n, 0.1) for n in NEW] + [
+    ("split2-fasso", 0.15), ("split4-blanes-moan-fasso", 0.15), ("split6-blanes-moan-fasso", 0.15)])
+def test_measured_order_against_the_exact_free_body(compile_model, name, tol):
     integ = compile_model(FREE_BODY, tableau=name)
     inertia = np.array([2.0, 1.0, 0.6666666666666666])
     pi0 = np.array([math.cos(1.1), 0.0, math.sin(1.1)])
@@ -80,7 +81,7 @@ def test_measured_order_against_the_exact_free_body(compile_model, name):
         tr = integ.simulate(np.eye(3), h, N, mu0=pi0, every=N)
         errs.append(max(np.abs(tr.g[-1] - RT).max(), np.abs(tr.mu[-1] - piT).max()))
     slope = math.log2(errs[0] / errs[1])
-    assert abs(slope - get_splitting(name).order) <= 0.1, (name, errs, slope)
+    assert abs(slope - get_splitting(name).order) <= tol, (name, errs, slope)
 
 
 @pytest.mark.parametrize("name", NEW)
