@@ -94,7 +94,9 @@ def parse_family_forces(doc: Doc, raw: dict, group, params: dict, inputs, xi_sym
                                   "shared parameters")
         if hasattr(value, "shape"):
             raise doc.error(path, f"expected a scalar, got shape {value.shape}")
-        exprs.append(sp.sympify(value))
+        # the walker's value: a SymPy expression, or a Python number for a constant force
+        exprs.append(value if isinstance(value, sp.Basic) else
+                     sp.Integer(value) if isinstance(value, int) else sp.Float(value))
         index = ev.index
     out = []
     for k in range(N):
