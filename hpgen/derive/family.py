@@ -46,8 +46,8 @@ import numpy as np
 
 from ..groups import group_from_spec
 from .action import StepEquations, step_equations
-from .family_open import with_env, body_force_function, open_layout, product_force, \
-    split_step_vector
+from .family_open import with_env, body_force_function, body_index, index_symbol, \
+    open_layout, product_force, split_step_vector
 from .lagrangian import to_casadi
 
 CALL = {"never_inline": True, "jac_penalty": 0}
@@ -70,7 +70,8 @@ def _body_lagrangians(model, body):
     terms = model.family.local.bodies
     N = model.family.count
     keys = [tuple(j for j, t in enumerate(terms) if t.start <= k < t.stop) for k in range(N)]
-    G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i")
+    G, X = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d)
+    I, index, data = index_symbol(model)
     lay = open_layout(model)
     E = ca.SX.sym("e", 1 + lay[1]) if lay is not None else None
     env = {}
@@ -88,8 +89,9 @@ def _body_lagrangians(model, body):
                 if name.startswith("g_"):
                     a, b = map(int, name[2:].split("_"))
                     mapping[s] = G[a, b]
-            mapping[t.index] = I
-            mapping.update({s: v for s, v in env.items() if s in t.expr.free_symbols})
+            mapping[t.index] = index
+            mapping.update({s: v for s, v in {**env, **data}.items()
+                            if s in t.expr.free_symbols})
             expr = expr + to_casadi(t.expr, mapping)
         funs[key] = (ca.Function(f"l_body{c}", with_env([G, X, I], E), [expr]),
                      ca.Function(f"l_body{c}_call", with_env([G, X, I], E), [expr], CALL))
@@ -174,7 +176,8 @@ def _functions(model, tableau, tau: str, rkmk: str):
     # model (hpgen.abi: [h, t_k, u, params])
     lay = open_layout(model)
     H = 1 if lay is None else 2 + lay[0] + lay[1]
-    gb, pb, ib = ca.SX.sym("g", nb, nb), ca.SX.sym("p", db), ca.SX.sym("i")
+    gb, pb = ca.SX.sym("g", nb, nb), ca.SX.sym("p", db)
+    ib = index_symbol(model)[0]
     hb = ca.SX.sym("h") if lay is None else ca.SX.sym("h", H)
     h_, _, _ = split_step_vector(model, hb)
     gbv = ca.vec(gb)
@@ -202,7 +205,7 @@ def _functions(model, tableau, tau: str, rkmk: str):
 
     joints = family.local.joints
     jfun = _joint_functions(model, body) if joints else {}
-    vel_funs = _node_velocity(lags, body, lay) if joints else {}
+    vel_funs = _node_velocity(model, lags, body, lay) if joints else {}
     out = (body, lags, keys, steps, jfun, vel_funs)
     _LAST[:] = [model, key, out]
     return out
@@ -220,6 +223,7 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     Gk = [g[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb] for k in range(N)]
     pk = [p[k * db:(k + 1) * db] for k in range(N)]
     xi_hat = S.sym("xi_hat", N * db)
+    index = [body_index(model, k, h) for k in range(N)]     # body k's index input
     joints = model.family.local.joints
     m = sum(len(j.rows) for j in joints)
     explicit = all(f is not None for f in vel_funs.values())
@@ -243,7 +247,7 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     res, g1s, p1s, margins, charts, guesses = [], [], [], [], [], []
     for k in range(N):
         st = steps[keys[k]]
-        args = [zs[k], ca.vec(Gk[k]), pk[k] - impulse[k], h, k]
+        args = [zs[k], ca.vec(Gk[k]), pk[k] - impulse[k], h, index[k]]
         res.append(st["F"](*args))
         g1v, p1 = st["U"](*args)
         g1s.append(ca.reshape(g1v, nb, nb))
@@ -255,7 +259,7 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     for mk in margins[1:]:
         margin = ca.fmin(margin, mk)
     g1 = ca.diagcat(*g1s)
-    lag, velocity = _product_lagrangian(lags, keys, body, N, ek)
+    lag, velocity = _product_lagrangian(model, lags, keys, body, index, ek)
     force = product_force(steps[keys[0]]["force"], model, h, nb, db, N)
     if not joints:
         eqs = StepEquations(z, tuple(blocks), ca.vertcat(*res), g1, ca.vertcat(*p1s),
@@ -274,14 +278,17 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
             kick[b] = kick[b] + ca.mtimes(out[1 + s].T, nu[rows[j]:rows[j + 1]])
     p1s = [p1s[k] - kick[k] for k in range(N)]
     if explicit:
-        vel = [vel_funs[keys[k]][0](*with_env([ca.vec(g1s[k]), p1s[k], k, _inverse_hessian(
-            vel_funs[keys[k]][1], k)], e1)) for k in range(N)]
+        vel = [vel_funs[keys[k]][0](*with_env([ca.vec(g1s[k]), p1s[k], index[k],
+                                               hessian_inverse(model, vel_funs[keys[k]], k,
+                                                               index[k])], e1))
+               for k in range(N)]
         extra_rows, extra_guess = [], []
     else:
         v1 = z[nz + 2 * m:]
         vel = [v1[k * db:(k + 1) * db] for k in range(N)]
-        dl = _momentum(lags, body, e1 is not None and e1.numel())
-        extra_rows = [dl[keys[k]](*with_env([g1s[k], vel[k], k], e1)) - p1s[k] for k in range(N)]
+        dl = _momentum(model, lags, body, e1 is not None and e1.numel())
+        extra_rows = [dl[keys[k]](*with_env([g1s[k], vel[k], index[k]], e1)) - p1s[k]
+                      for k in range(N)]
         extra_guess = [xi_hat]
         blocks.append(("v1", nz + 2 * m, nz + 2 * m + N * db))
     hidden = []
@@ -295,22 +302,24 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     return FamilyParts(eqs, lag, velocity, force)
 
 
-def _momentum(lags, body, ne):
+def _momentum(model, lags, body, ne):
     """{class key: Function(g, xi, i[, e]) -> dl/dxi} (call nodes); ne: e's size (0: closed)."""
-    G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i")
+    G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), index_symbol(model)[0]
     E = ca.SX.sym("e", ne) if ne else None
     return {key: ca.Function(f"body{c}_momentum", with_env([G, X, I], E),
                              [ca.gradient(lag_in(*with_env([G, X, I], E)), X)], CALL)
             for c, (key, (lag_in, _)) in enumerate(sorted(lags.items()))}
 
 
-def _node_velocity(lags, body, lay=None):
+def _node_velocity(model, lags, body, lay=None):
     """{class key: (Function(g (vec), p, i, Hinv (d*d, column-major)[, e]) -> Hinv (p -
-    dl/dxi(g, 0)), Function(i) -> d2l/dxi2)}, or None for a class whose d2l/dxi2 depends on
-    g or xi, or on e = (t, params) (lay: open_layout; it may depend on i: its inverse is
-    taken numerically per body, as the expanded step does)."""
-    G, X, I, P = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i"), \
-        ca.SX.sym("p", body.d)
+    dl/dxi(g, 0)), Function(i) -> d2l/dxi2, Function(i) -> Hinv or None)}, or None for a
+    class whose d2l/dxi2 depends on g or xi, or on e = (t, params) (lay: open_layout). It
+    may depend on i: its inverse is taken numerically per body, as the expanded step does;
+    when it depends on body data (runtime per-body lists, hpgen.derive.family_open) the
+    third function inverts it symbolically, from the body's index input."""
+    G, X, P = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("p", body.d)
+    I = index_symbol(model)[0]
     E = ca.SX.sym("e", 1 + lay[1]) if lay is not None else None
     Hinv = ca.SX.sym("Hinv", body.d, body.d)
     out = {}
@@ -321,23 +330,39 @@ def _node_velocity(lags, body, lay=None):
             out[key] = None
             continue
         vel = ca.mtimes(Hinv, P - ca.substitute(dl, X, ca.SX.zeros(body.d)))
+        inverse = None
+        if I.numel() > 1 and ca.depends_on(hess, I[1:]):
+            inverse = ca.Function(f"body{c}_hessian_inverse", [I],
+                                  [ca.vec(ca.inv(hess))], CALL)
         out[key] = (ca.Function(f"body{c}_velocity", with_env([ca.vec(G), P, I, ca.vec(Hinv)], E),
-                                [vel], CALL), ca.Function(f"body{c}_hessian", [I], [hess]))
+                                [vel], CALL), ca.Function(f"body{c}_hessian", [I], [hess]),
+                    inverse)
     return out
 
 
-def _inverse_hessian(fun, k: int):
-    """d2l/dxi2 of body k inverted numerically, column-major (a DM)."""
-    H = np.array(fun(k), dtype=float)
+def numeric_index(model, k: int):
+    """Body k's index input with zero body data (for a function that does not read them)."""
+    q = len(model.family.local.data)
+    return k if not q else ca.DM([k] + [0.0] * q)
+
+
+def hessian_inverse(model, entry, k: int, index):
+    """Body k's (d2l/dxi2)^-1, column-major: numerically (a DM) unless it depends on body
+    data (``entry``: a _node_velocity value; ``index``: body k's index input)."""
+    if entry[2] is not None:
+        return entry[2](index)
+    H = np.array(entry[1](numeric_index(model, k)), dtype=float)
     return ca.DM(np.linalg.inv(H).ravel(order="F"))
 
 
-def _product_lagrangian(lags, keys, body, N, ek=None):
+def _product_lagrangian(model, lags, keys, body, index, ek=None):
     """(lag, velocity): l(G, X) of the product as a sum of per-body calls, and one Newton step
-    of dl/dxi = p from xi body by body (the Hessian of a separable l is block-diagonal); ek:
-    an open model's (t_k, params), bound into both."""
-    nb, db = body.n, body.d
-    G, X, I, P = ca.SX.sym("g", nb, nb), ca.SX.sym("xi", db), ca.SX.sym("i"), ca.SX.sym("p", db)
+    of dl/dxi = p from xi body by body (the Hessian of a separable l is block-diagonal);
+    index: the bodies' index inputs (body_index); ek: an open model's (t_k, params), bound
+    into both."""
+    nb, db, N = body.n, body.d, len(index)
+    G, X, P = ca.SX.sym("g", nb, nb), ca.SX.sym("xi", db), ca.SX.sym("p", db)
+    I = index_symbol(model)[0]
     E = ca.SX.sym("e", ek.numel()) if ek is not None else None
     steps = {}
     for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
@@ -347,11 +372,12 @@ def _product_lagrangian(lags, keys, body, N, ek=None):
 
     def lag(Gp, Xp):
         terms = [lags[keys[k]][1](*with_env([Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb],
-                                          Xp[k * db:(k + 1) * db], k], ek)) for k in range(N)]
+                                          Xp[k * db:(k + 1) * db], index[k]], ek))
+                 for k in range(N)]
         return ca.sum1(ca.vertcat(*terms))
 
     def velocity(Gp, Pp, Xp):
         return ca.vertcat(*[steps[keys[k]](*with_env([
             ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]), Pp[k * db:(k + 1) * db],
-            Xp[k * db:(k + 1) * db], k], ek)) for k in range(N)])
+            Xp[k * db:(k + 1) * db], index[k]], ek)) for k in range(N)])
     return lag, velocity

@@ -77,7 +77,8 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     (hpgen.derive.family_jacobian): a dict of MX Z, Q, G1, P1, V (columns per body), the
     joint groups, the constants I, Hinv and the joint rows' order), or None. An open model's
     h is its step vector hv (hpgen.abi)."""
-    from .family_open import with_env, split_step_vector
+    from .family import hessian_inverse
+    from .family_open import body_indices, with_env, split_step_vector
     body, lags, keys, steps, jfun, vel_funs = funcs
     hv = h
     h, _, e1 = split_step_vector(model, hv)
@@ -85,7 +86,7 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     if len(steps) != 1 or any(f is None for f in vel_funs.values()):
         return None
     (cls, st), = steps.items()
-    nzb, I = st["nz"], ca.DM(np.arange(N)).T
+    nzb, I = st["nz"], body_indices(model, hv)     # the bodies' index inputs
     Z = ca.reshape(z[:nzb * N], nzb, N)
     joints = model.family.local.joints
     m = sum(len(j.rows) for j in joints)
@@ -121,9 +122,9 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
             K_ = K_ + ca.mtimes(out[1 + s], sel[s])
         rows_of.append((js, rows))
     P1 = P1m - K_
-    vel_fn, hess_fn = vel_funs[cls]
-    Hinv = ca.DM(np.hstack([np.linalg.inv(np.array(hess_fn(k), dtype=float)).reshape(
-        -1, 1, order="F") for k in range(N)]))
+    vel_fn, _, inverse = vel_funs[cls]
+    Hinv = mapped(inverse, N)(I) if inverse is not None else ca.DM(np.hstack([
+        np.array(hessian_inverse(model, vel_funs[cls], k, None)) for k in range(N)]))
     V = mapped(vel_fn, N)(*with_env([G1, P1, I, Hinv], e1))
     hidden = [mapped(fns[2], len(js))(*[G1[:, c] for c in cols], Ij, *[V[:, c] for c in cols])
               for js, fns, cols, sel, Ij, nu, rows in plan]
@@ -155,14 +156,15 @@ def mapped_state_kernels(model, lags, keys, body, record_names, force=None) -> d
     family_open.body_force_function) the record may hold power and work, <f, xi> summed over
     the bodies."""
     from ..abi import OPEN_EXTRA
-    from .family_open import with_env, open_layout, split_step_vector
+    from .family_open import body_indices, index_symbol, with_env, open_layout, \
+        split_step_vector
     if len(lags) != 1:
         return None
     (lag_in, _), = lags.values()
     n, d, N = model.group.n, model.group.d, model.family.count
     nb, db = body.n, body.d
-    Gs, X, Ps, I = ca.SX.sym("g", nb, nb), ca.SX.sym("xi", db), ca.SX.sym("p", db), \
-        ca.SX.sym("i")
+    Gs, X, Ps = ca.SX.sym("g", nb, nb), ca.SX.sym("xi", db), ca.SX.sym("p", db)
+    I = index_symbol(model)[0]
     lay = open_layout(model)
     E = None if lay is None else ca.SX.sym("e", 1 + lay[1])
     lval = lag_in(*with_env([Gs, X, I], E))
@@ -183,8 +185,9 @@ def mapped_state_kernels(model, lags, keys, body, record_names, force=None) -> d
     gv = ca.MX.sym("g", gcol.sparsity())      # g's block-diagonal nonzeros, body by body
     hcol = ca.reshape(ca.DM(ca.diagcat(*[ca.DM.ones(db, db)] * N).sparsity(), 1.0), d * d, 1)
     G = ca.reshape(ca.sparsity_cast(gv, ca.Sparsity.dense(gv.nnz(), 1)), nb * nb, N)
-    Xm, Pm, Im = ca.reshape(xi, db, N), ca.reshape(p, db, N), ca.DM(np.arange(N)).T
+    Xm, Pm = ca.reshape(xi, db, N), ca.reshape(p, db, N)
     hv = None if lay is None else ca.MX.sym("h", 2 + lay[0] + lay[1])
+    Im = ca.DM(np.arange(N)).T if hv is None else body_indices(model, hv)
     ek = None if hv is None else split_step_vector(model, hv)[1]
     mu_, H_, E_ = mapped(fa, N)(*with_env([G, Xm, Im], ek))
     m_, x0_, E0_ = mapped(fb, N)(*with_env([G, Pm, Im], ek))

@@ -6,10 +6,15 @@ e = (t, params) (the Lagrangian: t the time, params the runtime parameters in
 Model.runtime_symbols' order) or (t, u, params) (the per-body force, u the control inputs in
 Model.input_symbols' order); the step functions take the whole step vector
 hv = [h, t_k, u, params] of hpgen.abi as their ``h``.
+
+Body data (runtime per-body lists, hpgen.model.bodyterms.LocalTerms.data): a body function's
+index input i is then the column (i, q_i), q_i body i's entries of the data in
+LocalTerms.data's order, taken from hv's params; without body data it is the number i.
 """
 from __future__ import annotations
 
 import casadi as ca
+import numpy as np
 
 from .lagrangian import to_casadi
 
@@ -34,6 +39,44 @@ def split_step_vector(model, hv):
     return h, ca.vertcat(t, P), ca.vertcat(t + h, P)
 
 
+def index_symbol(model):
+    """(I, i, data map): the SX index input of a body function (1 + q entries, q the body
+    data's size), the expression of the index i in it and {body data symbol: its entry}."""
+    data = model.family.local.data
+    I = ca.SX.sym("i", 1 + len(data))
+    if not data:
+        return I, I, {}
+    return I, I[0], {s: I[1 + j] for j, (s, _) in enumerate(data)}
+
+
+def _data_positions(model) -> list:
+    """For each body data entry, the positions in Model.runtime_symbols of bodies 0..N-1's
+    values."""
+    where = {s: k for k, s in enumerate(model.runtime_symbols)}
+    return [[where[v] for v in vals] for _, vals in model.family.local.data]
+
+
+def body_index(model, k: int, hv):
+    """Body k's index input: k, or the column (k, q_k) with q_k from the params of the step
+    vector hv."""
+    if not model.family.local.data:
+        return k
+    P = hv[2 + len(model.inputs):]
+    return ca.vertcat(k, *[P[pos[k]] for pos in _data_positions(model)])
+
+
+def body_indices(model, hv):
+    """The index inputs of all bodies as columns (1 x N, or (1 + q) x N with body data from
+    the params of the step vector hv)."""
+    N = model.family.count
+    I = ca.DM(np.arange(N)).T
+    if not model.family.local.data:
+        return I
+    pos = _data_positions(model)
+    P = hv[2 + len(model.inputs):]
+    return ca.vertcat(I, ca.reshape(P[[p[k] for k in range(N) for p in pos]], len(pos), N))
+
+
 def with_env(args, e):
     """A body function's arguments, with the environment e (t, params) appended when open."""
     return [*args, e] if e is not None else list(args)
@@ -47,9 +90,10 @@ def body_force_function(model, body):
     if bf is None:
         return None
     m, nP = open_layout(model)
-    G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("i")
+    G, X = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d)
+    I, i, data = index_symbol(model)
     E = ca.SX.sym("e", 1 + m + nP)
-    mapping = {TIME_SYMBOL: E[0], bf.index: I,
+    mapping = {TIME_SYMBOL: E[0], bf.index: i, **data,
                **{s: E[1 + k] for k, s in enumerate(model.input_symbols)},
                **{s: E[1 + m + k] for k, s in enumerate(model.runtime_symbols)}}
     for e in bf.exprs:
@@ -72,5 +116,5 @@ def product_force(fb, model, hv, nb, db, N):
     m = len(model.inputs)
     u, P = hv[2:2 + m], hv[2 + m:]
     return lambda Gp, Xp, tt: ca.vertcat(*[fb(
-        ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]), Xp[k * db:(k + 1) * db], k,
-        ca.vertcat(tt, u, P)) for k in range(N)])
+        ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]), Xp[k * db:(k + 1) * db],
+        body_index(model, k, hv), ca.vertcat(tt, u, P)) for k in range(N)])

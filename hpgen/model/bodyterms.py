@@ -8,7 +8,13 @@ Conventions:
   the body group) and ``index`` (the sum variable, a real symbol standing for the body's
   number i). Body i's term in the expanded Lagrangian is ``expr`` with the symbols of body i
   and index = i. A term is local when every body-indexed name in it (xi g R x w v) is indexed
-  by the sum variable itself; a parameter indexed by it must be a scalar (shared).
+  by the sum variable itself; a parameter indexed by it is a scalar (shared) or a runtime
+  parameter with one entry per body (``m[i]``, ``J[i]`` with ``m``, ``J`` in
+  ``runtime_parameters``), body data: body i's entry is the symbol ``body:m`` (``body:J[0]``
+  ... for a vector entry) in ``expr``. A fixed per-body list makes the model expanded.
+- ``LocalTerms.data`` lists the body data: ((symbol, (body 0's value, ..., body N-1's)), ...)
+  sorted by the symbol's name, each value a runtime parameter's symbol (hpgen.model.symbols.
+  runtime_symbol); the compiler passes body i's values next to its index.
 - A JointTerm is one constraint row block (hpgen.model.constraints.ConstraintSpec) evaluated
   on K local bodies ("slots", K <= MAX_SLOTS, one per distinct body-index expression in the
   text, in order of first use): ``rows`` in the symbols ``g_a_b`` of the K-body product group
@@ -27,10 +33,12 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ..errors import ModelError
-from .bodies import BodyIndexed
+import numpy as np
+
+from .bodies import BodyIndexed, body_parameter
 from .evaluator import _Evaluator
 from .families import BodyFamily, FamilyGroup
-from .syntax import parse_checked
+from .syntax import fail, parse_checked
 
 #: the most bodies one joint row block may involve for it to be derived once
 MAX_SLOTS = 4
@@ -60,6 +68,8 @@ class LocalTerms:
     slots: int                     # the largest K over the joints (1 without joints)
     #: the per-body force (hpgen.model.family_forces.BodyForce) of a ``forces: {for, body}``
     force: object = None
+    #: the body data (module docstring): ((symbol, per-body values), ...), sorted by name
+    data: tuple = ()
 
 
 class _NotLocal(Exception):
@@ -71,12 +81,15 @@ class _Local(_Evaluator):
     body index expression mapped to a slot (its first use)."""
 
     def __init__(self, body: str, slots: int, params: dict, var, variables, forbidden=None,
-                 extra=None):
+                 extra=None, count: int | None = None):
         group = FamilyGroup(BodyFamily(body=body, count=slots))
         super().__init__(group, params, variables=variables, forbidden=forbidden, extra=extra)
         self.var = var
         self.index = sp.Symbol(var, real=True) if var else None
         self.slots: dict = {}      # ast.dump(index node) -> (slot, node)
+        #: the family's N when runtime per-body lists may be body data (else None)
+        self.count = count
+        self.data: dict = {}       # body data symbol -> per-body values
 
     def lookup(self, node):
         if self.var is not None and node.id == self.var and node.id not in self.bound:
@@ -101,10 +114,33 @@ class _Local(_Evaluator):
         if isinstance(base, ast.Name) and base.id in self.params and self.var is not None \
                 and any(self._uses(n, (self.var,)) for n in idx):
             value = self.lookup(base)
-            if hasattr(value, "shape"):
-                raise _NotLocal            # one entry per body: not one function of i
+            if hasattr(value, "shape"):    # one entry per body
+                return self._body_data(node, base.id, value, idx)
             return value
         return super().subscript(node)
+
+    def _body_data(self, node, name: str, value, idx):
+        """``p[i]`` (``p[i, k]``, ...) of a runtime per-body list: body i's entry as body data
+        symbols (module docstring); any other per-body list is not local."""
+        runtime = all(isinstance(e, sp.Symbol) and e.name.startswith("param:")
+                      for e in value.flat)
+        if self.count is None or not runtime or not (
+                isinstance(idx[0], ast.Name) and idx[0].id == self.var) \
+                or any(self._uses(n, (self.var,)) for n in idx[1:]):
+            raise _NotLocal
+        body_parameter(node, name, value, (0,), self.count)   # one entry per body
+        rest = tuple(self.index_value(n) for n in idx[1:])
+        shape = value.shape[1:]
+        if len(rest) > len(shape) or not all(0 <= r < s for r, s in zip(rest, shape)):
+            raise fail(node, f"index {[self.var, *rest]} out of range for the parameter {name} "
+                             f"(shape {' x '.join(map(str, value.shape))})")
+        syms = np.empty(shape, dtype=object)
+        for e in np.ndindex(shape):
+            s = sp.Symbol("body:" + name + "".join(f"[{a}]" for a in e), real=True)
+            syms[e] = s
+            self.data[s] = tuple(value[(k,) + e] for k in range(self.count))
+        out = syms[rest] if rest else syms
+        return out[()] if isinstance(out, np.ndarray) and not out.shape else out
 
     def bodies_at(self, value: int) -> tuple:
         """The family's bodies of the slots when the index has ``value``."""
@@ -116,14 +152,21 @@ class _Local(_Evaluator):
             self.bound = {}
 
 
-def _body_term(family: BodyFamily, fsum, params: dict) -> BodyTerm:
+def _body_term(family: BodyFamily, fsum, params: dict, data: dict) -> BodyTerm:
     from .symbols import TIME_SYMBOL
-    ev = _Local(family.body, 1, params, fsum.variable, ("xi",), extra={"t": TIME_SYMBOL})
+    ev = _Local(family.body, 1, params, fsum.variable, ("xi",), extra={"t": TIME_SYMBOL},
+                count=family.count)
     value = ev.walk(parse_checked(fsum.term).body)
     if hasattr(value, "shape") or not all(isinstance(node, ast.Name) and node.id == fsum.variable
                                           for _, node in ev.slots.values()):
         raise _NotLocal
+    data.update(ev.data)
     return BodyTerm(fsum.sign * value, ev.index, fsum.start, fsum.stop)
+
+
+def sorted_data(data: dict) -> tuple:
+    """LocalTerms.data of {body data symbol: per-body values}."""
+    return tuple(sorted(data.items(), key=lambda kv: kv[0].name))
 
 
 def _joint_terms(family: BodyFamily, constraints, params: dict) -> tuple:
@@ -158,9 +201,11 @@ def local_terms(family: BodyFamily | None, constraints, params: dict) -> LocalTe
     family. ``params``: the parameters as the Lagrangian's evaluator takes them."""
     if family is None or family.rest is not None or not family.sums:
         return None
+    data: dict = {}
     try:
-        bodies = tuple(_body_term(family, s, params) for s in family.sums)
+        bodies = tuple(_body_term(family, s, params, data) for s in family.sums)
         joints = _joint_terms(family, constraints, params)
     except (_NotLocal, ModelError):
         return None
-    return LocalTerms(bodies, joints, max((len(j.bodies) for j in joints), default=1))
+    return LocalTerms(bodies, joints, max((len(j.bodies) for j in joints), default=1),
+                      data=sorted_data(data))

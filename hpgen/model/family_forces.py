@@ -5,7 +5,7 @@
 with d the body group's dimension; f_k is body i's force component k (left-trivialized,
 body frame, in the order of xi[i]) in body i's names (xi[i], g[i], R[i], x[i], w[i], v[i]),
 the index i as a number, t, the control inputs and the parameters (runtime ones as
-symbols). Body i's components are the force's entries i d .. (i + 1) d - 1, so the file does
+symbols; a runtime per-body list ``c[i]`` as body data, hpgen.model.bodyterms). Body i's components are the force's entries i d .. (i + 1) d - 1, so the file does
 not grow with N.
 
 Conventions: a BodyForce holds ``exprs`` (d sympy scalars in the symbols of ONE body of the
@@ -31,6 +31,8 @@ _BODY_NAMES = ("xi", "g", "R", "x", "w", "v", "mu", "t", "pi")
 class BodyForce:
     exprs: tuple                   # d sympy scalars of one body (module docstring)
     index: object                  # sympy Symbol of the loop variable
+    #: the body data its entries use (hpgen.model.bodyterms.LocalTerms.data's form)
+    data: tuple = ()
 
 
 def _local_symbol(sym, xi_syms, g_syms, k: int, nb: int, db: int):
@@ -46,7 +48,7 @@ def _local_symbol(sym, xi_syms, g_syms, k: int, nb: int, db: int):
 
 def parse_family_forces(doc: Doc, raw: dict, group, params: dict, inputs, xi_syms, g_syms):
     """(expanded force exprs, their texts, BodyForce) of a ``forces: {for, body}`` mapping."""
-    from .bodyterms import _Local, _NotLocal
+    from .bodyterms import _Local, _NotLocal, sorted_data
     from .symbols import TIME_SYMBOL, input_symbol
     from .syntax import parse_checked
     from .families import family_of
@@ -72,7 +74,7 @@ def parse_family_forces(doc: Doc, raw: dict, group, params: dict, inputs, xi_sym
                                             f"force, one per coordinate of {family.body}), got "
                                             f"{describe(entries)}")
     extra = {"t": TIME_SYMBOL, **{u: input_symbol(u) for u in inputs}}
-    exprs, index = [], None
+    exprs, index, data = [], None, {}
     for j, text in enumerate(entries):
         path = ("forces", "body", j)
         if is_number(text):
@@ -80,7 +82,7 @@ def parse_family_forces(doc: Doc, raw: dict, group, params: dict, inputs, xi_sym
         if not isinstance(text, str) or not text.strip():
             raise doc.error(path, "expected an expression in body i's names, t, parameters "
                                   f"and inputs (or a number), got {describe(text)}")
-        ev = _Local(family.body, 1, params, var, ("xi",), extra=extra)
+        ev = _Local(family.body, 1, params, var, ("xi",), extra=extra, count=N)
         try:
             value = ev.walk(parse_checked(text).body)
         except _NotLocal:
@@ -98,12 +100,14 @@ def parse_family_forces(doc: Doc, raw: dict, group, params: dict, inputs, xi_sym
         exprs.append(value if isinstance(value, sp.Basic) else
                      sp.Integer(value) if isinstance(value, int) else sp.Float(value))
         index = ev.index
+        data.update(ev.data)
     out = []
     for k in range(N):
         for e in exprs:
             sub = {s: _local_symbol(s, xi_syms, g_syms, k, nb, db) for s in e.free_symbols}
             sub = {s: v for s, v in sub.items() if v is not None}
             sub[index] = sp.Integer(k)
+            sub.update({s: vals[k] for s, vals in data.items()})
             out.append(e.xreplace(sub))
     texts = tuple(f"{t} ({var} = {k})" for k in range(N) for t in map(str, entries))
-    return tuple(out), texts, BodyForce(tuple(exprs), index)
+    return tuple(out), texts, BodyForce(tuple(exprs), index, sorted_data(data))

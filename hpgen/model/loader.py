@@ -218,7 +218,9 @@ def build_model(doc: Doc, text: str) -> Model:
         from .bodyterms import local_terms
         local = local_terms(family, constraints, lag_params)
         if local is not None and body_force is not None:
-            local = replace(local, force=body_force)
+            from .bodyterms import sorted_data
+            local = replace(local, force=body_force,
+                            data=sorted_data({**dict(local.data), **dict(body_force.data)}))
         family = replace(family, local=local)
     return Model(name=name, path=doc.file, source=text, group_spec=data["group"], group=group,
                  parameters=stored, lagrangian_text=data["lagrangian"], lagrangian=lag,
