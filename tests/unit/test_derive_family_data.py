@@ -114,3 +114,45 @@ def test_masses_in_the_hessian_match_the_expansion(n):
     a = run(fam, g0, p0, 1e-3, 200, params, t0=0.2)
     b = run(dense, g0, p0, 1e-3, 200, params, t0=0.2)
     assert np.abs(a - b).max() <= 1e-12 * (1 + np.abs(b).max())
+
+
+@pytest.mark.slow
+def test_compiled_modules_and_a_sweep_over_one_link_mass(tmp_path):
+    """The C and Python modules of the N = 2 chain with the masses and the gravity factors
+    given at run time (params={"m": [...], "k": [...]}) run 200 steps like CasADi's
+    evaluation of the expansion; a sweep over link 1's mass gives each member's simulate
+    bitwise."""
+    import hpgen
+    n = 2
+    path = tmp_path / "mass_chain.yaml"
+    path.write_text(chain_text(n))
+    m, _, dense = pair(n, "stormer-verlet", "truncated")
+    masses, ks, grav = np.array([1.3, 0.7]), np.array([0.9, 1.1]), 8.0
+    params = np.concatenate([[grav], masses, ks])
+    g0 = np.eye(4 * n)
+    xi0 = np.tile([3.0, 1.0, 0.5, 0.0, 0.0, 0.0], n)
+    p0 = evaluate(dense, "legendre", g0.ravel(order="F"), xi0,
+                  np.concatenate([[1e-3, 0.0], params]))[0]
+    raw = run(dense, g0.ravel(order="F"), p0, 1e-3, 200, params)
+    ng = (4 * n) ** 2
+    ref = np.array([np.concatenate([r[:ng].reshape(4 * n, 4 * n, order="F").ravel(), r[ng:]])
+                    for r in raw])
+    out, integ = {}, {}
+    values = {"grav": grav, "m": masses, "k": ks}
+    for backend in ("c", "python"):
+        integ[backend] = hpgen.compile(path, backend=backend, cache_dir=tmp_path)
+        traj = integ[backend].simulate(g0, 1e-3, 200, mu0=p0, params=values)
+        out[backend] = np.hstack([traj.g[1:].reshape(200, -1), traj.mu[1:]])
+        assert np.abs(out[backend] - ref).max() <= 1e-11, backend
+    assert np.abs(out["c"] - out["python"]).max() <= 1e-13
+    link1 = np.array([0.5, 1.0, 2.0])
+    grid = np.tile(masses, (3, 1))
+    grid[:, 1] = link1
+    res = hpgen.sweep(integ["c"], xi0=np.tile(xi0, (3, 1)), h=1e-3, steps=200,
+                      params={"grav": np.full(3, grav), "m": grid, "k": np.tile(ks, (3, 1))},
+                      progress=False, threads=1)
+    for b in range(3):
+        one = integ["c"].simulate(g0, 1e-3, 200, xi0=xi0,
+                                  params={"grav": grav, "m": grid[b], "k": ks})
+        assert np.array_equal(res["g"][b], one.g) and np.array_equal(res["mu"][b], one.mu)
+    assert np.abs(res["g"][0, -1] - res["g"][2, -1]).max() > 1e-3    # the mass matters
