@@ -48,6 +48,8 @@ from ..groups import group_from_spec
 from .action import StepEquations, step_equations
 from .family_open import with_env, body_force_function, body_index, index_symbol, \
     open_layout, product_force, split_step_vector
+from .family_joint_forces import external_forces, joint_force_functions, stage_force, \
+    stage_function
 from .lagrangian import to_casadi
 
 CALL = {"never_inline": True, "jac_penalty": 0}
@@ -182,6 +184,9 @@ def _functions(model, tableau, tau: str, rkmk: str):
     h_, _, _ = split_step_vector(model, hb)
     gbv = ca.vec(gb)
     fb = body_force_function(model, body)
+    jforces = joint_force_functions(model, body) if lay is not None else []
+    # with forces between bodies, a body's step takes its external stage forces fext
+    fx = ca.SX.sym("fext", tableau.stages * db) if jforces else None
     steps = {}
     for c, (cls, (lag_in, _)) in enumerate(sorted(lags.items())):
         if lay is None:
@@ -191,10 +196,14 @@ def _functions(model, tableau, tau: str, rkmk: str):
             P, u = hb[2 + lay[0]:], hb[2:2 + lay[0]]
             force = None if fb is None else (
                 lambda G, X, tt: fb(ca.vec(G), X, ib, ca.vertcat(tt, u, P)))
+            if jforces:
+                force = stage_force(fb, fx, ib, u, P, db)
             e = step_equations(body, lambda G, X, tt, f=lag_in: f(G, X, ib, ca.vertcat(tt, P)),
                                tableau, tau, rkmk, reduced, gb, pb, h_, hb[1], force)
-        args = [e.z, gbv, pb, hb, ib]
+        args = [e.z, gbv, pb, hb, ib] + ([fx] if jforces else [])
         steps[cls] = dict(
+            S=stage_function(e, body, tableau, tau, gb, hb, h_, f"body{c}_stages")
+            if jforces else None, joint_forces=jforces,
             nz=e.z.numel(), blocks=e.blocks,
             F=ca.Function(f"body{c}_residual", args, [e.residual], CALL),
             U=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1], CALL),
@@ -245,9 +254,11 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
         for s, b in enumerate(jt.bodies):
             impulse[b] = impulse[b] + ca.mtimes(out[1 + s].T, lam[rows[j]:rows[j + 1]])
     res, g1s, p1s, margins, charts, guesses = [], [], [], [], [], []
+    st0 = steps[keys[0]]
+    fext = external_forces(model, tableau, st0, zs, Gk, h, S) if st0["joint_forces"] else []
     for k in range(N):
         st = steps[keys[k]]
-        args = [zs[k], ca.vec(Gk[k]), pk[k] - impulse[k], h, index[k]]
+        args = [zs[k], ca.vec(Gk[k]), pk[k] - impulse[k], h, index[k]] + fext[k:k + 1]
         res.append(st["F"](*args))
         g1v, p1 = st["U"](*args)
         g1s.append(ca.reshape(g1v, nb, nb))
@@ -260,7 +271,7 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
         margin = ca.fmin(margin, mk)
     g1 = ca.diagcat(*g1s)
     lag, velocity = _product_lagrangian(model, lags, keys, body, index, ek)
-    force = product_force(steps[keys[0]]["force"], model, h, nb, db, N)
+    force = product_force(st0["force"], model, h, nb, db, N, st0["joint_forces"])
     if not joints:
         eqs = StepEquations(z, tuple(blocks), ca.vertcat(*res), g1, ca.vertcat(*p1s),
                             ca.vertcat(*guesses), xi_hat, margin, ca.vertcat(*charts))

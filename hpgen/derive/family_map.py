@@ -83,8 +83,9 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     hv = h
     h, _, e1 = split_step_vector(model, hv)
     N, db = model.family.count, body.d
-    if len(steps) != 1 or any(f is None for f in vel_funs.values()):
-        return None
+    if len(steps) != 1 or any(f is None for f in vel_funs.values()) \
+            or any(st["joint_forces"] for st in steps.values()):
+        return None              # forces between bodies: family_step's composition
     (cls, st), = steps.items()
     nzb, I = st["nz"], body_indices(model, hv)     # the bodies' index inputs
     Z = ca.reshape(z[:nzb * N], nzb, N)

@@ -108,13 +108,21 @@ def body_force_function(model, body):
     return ca.Function("body_force", [ca.vec(G), X, I, E], [f], CALL)
 
 
-def product_force(fb, model, hv, nb, db, N):
+def product_force(fb, model, hv, nb, db, N, joint_forces=()):
     """(G, X, t) -> the product's force as N calls of the body force ``fb`` with (t, u,
-    params) of the step vector hv; None without a per-body force."""
+    params) of the step vector hv, plus the forces between bodies (hpgen.derive.
+    family_joint_forces: [(Function, JointForce), ...]); None without a per-body force."""
     if fb is None:
         return None
     m = len(model.inputs)
     u, P = hv[2:2 + m], hv[2 + m:]
-    return lambda Gp, Xp, tt: ca.vertcat(*[fb(
-        ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]), Xp[k * db:(k + 1) * db],
-        body_index(model, k, hv), ca.vertcat(tt, u, P)) for k in range(N)])
+
+    def force(Gp, Xp, tt):
+        own = [fb(ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]), Xp[k * db:(k + 1) * db],
+                  body_index(model, k, hv), ca.vertcat(tt, u, P)) for k in range(N)]
+        if joint_forces:
+            from .family_joint_forces import joint_power_force
+            between = joint_power_force(model, joint_forces, Gp, Xp, tt, hv, nb, db, N)
+            own = [a + b for a, b in zip(own, between)]
+        return ca.vertcat(*own)
+    return force

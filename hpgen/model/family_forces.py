@@ -33,6 +33,8 @@ class BodyForce:
     index: object                  # sympy Symbol of the loop variable
     #: the body data its entries use (hpgen.model.bodyterms.LocalTerms.data's form)
     data: tuple = ()
+    #: the forces between bodies (hpgen.model.joint_forces.JointForce), written per joint
+    joints: tuple = ()
 
 
 def _local_symbol(sym, xi_syms, g_syms, k: int, nb: int, db: int):
@@ -57,9 +59,10 @@ def parse_family_forces(doc: Doc, raw: dict, group, params: dict, inputs, xi_sym
         raise doc.error(("forces",), "the per-body form {for: i, body: [...]} needs a family "
                                      "group (G^N); give a list of one expression per algebra "
                                      "coordinate")
-    if set(raw) != {"for", "body"}:
-        raise doc.error(("forces",), "expected the keys for (the body index's name) and body "
-                                     f"(one expression per coordinate), got {sorted(raw)}")
+    if "for" not in raw or not set(raw) - {"for"} or set(raw) - {"for", "body", "joint"}:
+        raise doc.error(("forces",), "expected the keys for (the body index's name), body "
+                                     "(one expression per coordinate) and/or joint (forces "
+                                     f"between bodies), got {sorted(map(str, raw))}")
     var = raw["for"]
     check_identifier(doc, ("forces", "for"), var, "body index name")
     if var in params or var in inputs or var in _BODY_NAMES:
@@ -68,12 +71,16 @@ def parse_family_forces(doc: Doc, raw: dict, group, params: dict, inputs, xi_sym
     from ..groups import group_from_spec
     body = group_from_spec(family.body)
     nb, db, N = body.n, body.d, family.count
-    entries = raw["body"]
+    entries = raw.get("body", [0] * db)
     if not isinstance(entries, list) or len(entries) != db:
         raise doc.error(("forces", "body"), f"expected a list of {db} expressions (body i's "
                                             f"force, one per coordinate of {family.body}), got "
                                             f"{describe(entries)}")
     extra = {"t": TIME_SYMBOL, **{u: input_symbol(u) for u in inputs}}
+    joints = ()
+    if "joint" in raw:
+        from .joint_forces import parse_joint_forces
+        joints = parse_joint_forces(doc, raw["joint"], var, family, params, extra)
     exprs, index, data = [], None, {}
     for j, text in enumerate(entries):
         path = ("forces", "body", j)
@@ -109,5 +116,8 @@ def parse_family_forces(doc: Doc, raw: dict, group, params: dict, inputs, xi_sym
             sub[index] = sp.Integer(k)
             sub.update({s: vals[k] for s, vals in data.items()})
             out.append(e.xreplace(sub))
+    if joints:
+        from .joint_forces import expand_joint_forces
+        expand_joint_forces(joints, out, xi_syms, g_syms, nb, db)
     texts = tuple(f"{t} ({var} = {k})" for k in range(N) for t in map(str, entries))
-    return tuple(out), texts, BodyForce(tuple(exprs), index, sorted_data(data))
+    return tuple(out), texts, BodyForce(tuple(exprs), index, sorted_data(data), joints)

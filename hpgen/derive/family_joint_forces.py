@@ -1,0 +1,130 @@
+"""Forces between bodies of a family model (hpgen.model.joint_forces: ``forces.joint``) in the
+per-body step: each joint force is one CasADi function of its bodies' stage states, called
+per joint and per stage, its outputs scattered to the bodies.
+
+The discrete Lagrange-d'Alembert force of stage s (hpgen.derive.action) is evaluated at the
+unvaried stage state (G^s = g_k tau(h Theta^s), Xi^s, t_k + c_s h). A body's step function
+takes, besides its own force, an external stage force ``fext`` (s d: stage 0's d entries
+first) added to it; ``stage_function`` gives the body's stage states from its unknowns (the
+eliminations of hpgen.derive.action, read off the unknowns' block labels), so that body b's
+fext is sum over the joints touching b of the joint function at its bodies' stage states.
+The Jacobian couples the unknowns of the bodies a joint force touches.
+"""
+from __future__ import annotations
+
+import casadi as ca
+import numpy as np
+
+from .lagrangian import to_casadi
+
+CALL = {"never_inline": True, "jac_penalty": 0}
+
+
+def joint_force_functions(model, body) -> list:
+    """[(Function(vec G_0, X_0, ..., vec G_(K-1), X_(K-1), i, e) -> (f_0, ..., f_(K-1)),
+    JointForce), ...] of the model's joint forces, e = (t, u, params) as the body force's."""
+    from ..model.symbols import TIME_SYMBOL
+    bf = model.family.local.force
+    if bf is None or not bf.joints:
+        return []
+    nb, db = body.n, body.d
+    m, nP = len(model.inputs), len(model.runtime_symbols)
+    out = []
+    for c, jf in enumerate(bf.joints):
+        K = len(jf.exprs)
+        Gs = [ca.SX.sym(f"g{s}", nb, nb) for s in range(K)]
+        Xs = [ca.SX.sym(f"xi{s}", db) for s in range(K)]
+        I, E = ca.SX.sym("i"), ca.SX.sym("e", 1 + m + nP)
+        mapping = {TIME_SYMBOL: E[0], jf.index: I,
+                   **{s: E[1 + k] for k, s in enumerate(model.input_symbols)},
+                   **{s: E[1 + m + k] for k, s in enumerate(model.runtime_symbols)}}
+        for row in jf.exprs:
+            for e in row:
+                for sym in e.free_symbols:
+                    name = str(sym)
+                    if name.startswith("xi_"):
+                        k = int(name[3:])
+                        mapping[sym] = Xs[k // db][k % db]
+                    elif name.startswith("g_"):
+                        a, b = map(int, name[2:].split("_"))
+                        mapping[sym] = Gs[a // nb][a % nb, b % nb]
+        outs = [ca.vertcat(*[to_casadi(e, mapping) for e in row]) for row in jf.exprs]
+        args = [v for G, X in zip(Gs, Xs) for v in (ca.vec(G), X)]
+        out.append((ca.Function(f"joint_force{c}", [*args, I, E], outs, CALL), jf))
+    return out
+
+
+def stage_force(fb, fext, index, u, P, db: int):
+    """The body's stage force for hpgen.derive.action.step_equations: its own force ``fb``
+    (or none) plus stage s's slice of ``fext``; step_equations calls it once per stage, in
+    order."""
+    calls: list = []
+
+    def force(G, X, tt):
+        s = len(calls)
+        calls.append(s)
+        own = 0 if fb is None else fb(ca.vec(G), X, index, ca.vertcat(tt, u, P))
+        return own + fext[s * db:(s + 1) * db]
+    return force
+
+
+def stage_function(e, body, tableau, tau: str, g, hv, h, name: str):
+    """Function(z, vec g, hv) -> (vec G^s per column (n^2 x s), Xi^s per column (d x s)) of a
+    body's step ``e`` (hpgen.derive.action.StepEquations) from its unknowns."""
+    s, d = tableau.stages, body.d
+    A, c = np.array(tableau.A, dtype=float), [float(x) for x in tableau.c]
+    blk = {lab: e.z[a:b] for lab, a, b in e.blocks}
+    zero = ca.SX.zeros(d)
+    if list(blk) == ["Xi"]:                                  # a common stage velocity
+        X = [blk["Xi"]] * s
+        Th = [ci * blk["Xi"] for ci in c]
+    elif sorted(blk) == sorted([f"Theta{i + 1}" for i in range(s)] + ["mu1"]):   # exact, A^-1
+        Th = [blk[f"Theta{i + 1}"] for i in range(s)]
+        Ainv = np.linalg.inv(A)
+        K = [sum((float(Ainv[j][i]) * Th[i] for i in range(s)), zero) for j in range(s)]
+        X = [body.chart_product(tau, "dtau", -h * Th[j], K[j]) for j in range(s)]
+    elif sorted(blk) == sorted(f"Xi{i + 1}" for i in range(s)):                  # truncated
+        X = [blk[f"Xi{i + 1}"] for i in range(s)]
+        Th = [sum((float(A[i][j]) * X[j] for j in range(s)), zero) for i in range(s)]
+    else:                                                    # stage variables are unknowns
+        X = [blk[f"Xi{i + 1}"] for i in range(s)]
+        Th = [blk[f"Theta{i + 1}"] for i in range(s)]
+    G = [ca.vec(ca.mtimes(g, body.tau(tau, h * t))) for t in Th]
+    return ca.Function(name, [e.z, ca.vec(g), hv], [ca.horzcat(*G), ca.horzcat(*X)], CALL)
+
+
+def external_forces(model, tableau, st, zs, Gk, hv, S) -> list:
+    """Body k's fext (s d) for k = 0..N-1 (module docstring): zs body k's unknowns, Gk its
+    g block, hv the step vector, S the symbol class (SX or MX)."""
+    db = st["S"].size1_out(1)
+    s, N, m = tableau.stages, len(zs), len(model.inputs)
+    h, t, u, P = hv[0], hv[1], hv[2:2 + m], hv[2 + m:]
+    states = [st["S"](zs[k], ca.vec(Gk[k]), hv) for k in range(N)]
+    fext = [[S.zeros(db) for _ in range(s)] for _ in range(N)]
+    for fun, jf in st["joint_forces"]:
+        for i, bodies in jf.instances:
+            for q in range(s):
+                args = [v for b in bodies for v in (states[b][0][:, q], states[b][1][:, q])]
+                out = fun(*args, i, ca.vertcat(t + float(tableau.c[q]) * h, u, P))
+                out = [out] if len(bodies) == 1 else out
+                for slot, b in enumerate(bodies):
+                    fext[b][q] = fext[b][q] + out[slot]
+    return [ca.vertcat(*f) for f in fext]
+
+
+def joint_power_force(model, funs, Gp, Xp, tt, hv, nb: int, db: int, N: int) -> list:
+    """The joint forces at the product's (Gp, Xp) and time tt, per body (d each)."""
+    m = len(model.inputs)
+    u, P = hv[2:2 + m], hv[2 + m:]
+    out = [0] * N
+    for fun, jf in funs:
+        for i, bodies in jf.instances:
+            args = []
+            for b in bodies:
+                args += [ca.vec(Gp[b * nb:(b + 1) * nb, b * nb:(b + 1) * nb]),
+                         Xp[b * db:(b + 1) * db]]
+            res = fun(*args, i, ca.vertcat(tt, u, P))
+            res = [res] if len(bodies) == 1 else res
+            for slot, b in enumerate(bodies):
+                out[b] = out[b] + res[slot]
+    return out
