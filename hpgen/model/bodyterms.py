@@ -116,6 +116,8 @@ class _Local(_Evaluator):
             value = self.lookup(base)
             if hasattr(value, "shape"):    # one entry per body
                 return self._body_data(node, base.id, value, idx)
+            if len(idx) != 1:
+                raise _NotLocal            # refused by the full evaluator
             return value
         return super().subscript(node)
 
@@ -152,7 +154,9 @@ class _Local(_Evaluator):
             self.bound = {}
 
 
-def _body_term(family: BodyFamily, fsum, params: dict, data: dict) -> BodyTerm:
+def _body_term(family: BodyFamily, fsum, params: dict, data: dict, work=None) -> BodyTerm:
+    """The BodyTerm of the sum ``fsum`` (body data into ``data``; the evaluator's work
+    appended to the list ``work`` when given)."""
     from .symbols import TIME_SYMBOL
     ev = _Local(family.body, 1, params, fsum.variable, ("xi",), extra={"t": TIME_SYMBOL},
                 count=family.count)
@@ -161,6 +165,8 @@ def _body_term(family: BodyFamily, fsum, params: dict, data: dict) -> BodyTerm:
                                           for _, node in ev.slots.values()):
         raise _NotLocal
     data.update(ev.data)
+    if work is not None:
+        work.append(ev.work)
     return BodyTerm(fsum.sign * value, ev.index, fsum.start, fsum.stop)
 
 

@@ -168,6 +168,9 @@ def _legendre_map(lagrangian, g_symbols, group, g):
     from ..derive.lagrangian import to_casadi
     from .symbols import TIME_SYMBOL
     lag, xi_symbols, runtime = lagrangian
+    from .family_load import BodyLagrangian, body_terms_hessian
+    if isinstance(lag, BodyLagrangian):       # a family loaded body by body
+        return body_terms_hessian(lag, group, g, runtime)
     expr = lag.xreplace({TIME_SYMBOL: 0, **runtime})
     where = {s: (i, j) for i, row in enumerate(g_symbols) for j, s in enumerate(row)}
     used = sorted(where[s] for s in expr.free_symbols if s in where)

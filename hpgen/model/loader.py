@@ -12,6 +12,7 @@ Conventions:
 """
 from __future__ import annotations
 
+import functools
 import keyword
 import os
 import re
@@ -170,6 +171,11 @@ def _family(group, text: str, exact):
 
 
 
+def _expanded(doc: Doc, text, group, lag_params: dict, refused: dict):
+    """The expanded Lagrangian (sympy) of a model loaded without it (Model.lagrangian)."""
+    return _lagrangian(doc, text, group, lag_params, refused)[0]
+
+
 def build_model(doc: Doc, text: str) -> Model:
     from .symbols import input_symbol
     data = doc.mapping((), doc.data, TOP_KEYS)
@@ -188,8 +194,16 @@ def build_model(doc: Doc, text: str) -> Model:
     integrator = _integrator(doc, data.get("integrator"))
     refused = {u: f"the input {u!r} may not appear in the Lagrangian (control inputs enter "
                   "through forces only)" for u in inputs}
-    lag, xi_syms, g_syms = _lagrangian(doc, data["lagrangian"], group, lag_params, refused)
-    family = _family(group, data["lagrangian"], exact)
+    from .family_load import local_lagrangian
+    fast = local_lagrangian(group, data["lagrangian"], exact, lag_params, refused)
+    build = functools.partial(_expanded, doc, data["lagrangian"], group, lag_params, refused)
+    if fast is not None:             # a family whose sums are local: not expanded here
+        family, body_lag, xi_syms, g_syms = fast
+        lag = None
+    else:
+        lag, xi_syms, g_syms = _lagrangian(doc, data["lagrangian"], group, lag_params, refused)
+        family, body_lag = _family(group, data["lagrangian"], exact), None
+    checked = lag if lag is not None else body_lag     # what the constraint checks read
     forces, forces_text, body_force = (), (), None
     if isinstance(data.get("forces"), dict):      # per body: {for: i, body: [...]}
         from .family_forces import parse_family_forces
@@ -208,9 +222,11 @@ def build_model(doc: Doc, text: str) -> Model:
         from .constraints import parse_constraints
         constraints = parse_constraints(doc, data["constraints"], group, exact,
                                         [nm for nm, _ in runtime], g_syms,
-                                        (lag, xi_syms, dict(zip(rsyms, rdefaults))))
+                                        (checked, xi_syms, dict(zip(rsyms, rdefaults))))
     if scene is not None and (constraints or scene.project):
         from .constraints import check_initial
+        if scene.project and lag is None:     # the projection's metric: the full l
+            lag = build()
         scene = check_initial(doc, constraints, g_syms, group, scene,
                               (lag, xi_syms, dict(zip(rsyms, rdefaults))))
     if family is not None:
@@ -223,12 +239,12 @@ def build_model(doc: Doc, text: str) -> Model:
                             data=sorted_data({**dict(local.data), **dict(body_force.data)}))
         family = replace(family, local=local)
     return Model(name=name, path=doc.file, source=text, group_spec=data["group"], group=group,
-                 parameters=stored, lagrangian_text=data["lagrangian"], lagrangian=lag,
+                 parameters=stored, lagrangian_text=data["lagrangian"], lagrangian_expr=lag,
                  xi_symbols=xi_syms, g_symbols=g_syms, integrator=integrator, scene=scene,
                  runtime_parameters=runtime, runtime_symbols=rsyms, runtime_defaults=rdefaults,
                  inputs=inputs, input_symbols=tuple(input_symbol(u) for u in inputs),
                  forces=forces, forces_text=forces_text, constraints=constraints,
-                 family=family)
+                 family=family, lagrangian_builder=build)
 
 
 def load_model_text(text, filename: str = "<string>") -> Model:

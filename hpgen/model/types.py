@@ -88,7 +88,9 @@ class Model:
 
     lagrangian: sympy expression in the symbols ``xi_symbols`` (xi_0 .. xi_{d-1}) and
     ``g_symbols`` (g_i_j, an n x n tuple of tuples), parameters already substituted as exact
-    binary floats. It was built by hpgen's own whitelist parser, never by eval/sympify.
+    binary floats. It was built by hpgen's own whitelist parser, never by eval/sympify. A
+    family model whose Lagrangian is a sum of body-local terms (family.local) is loaded
+    without it (``lagrangian_expr`` None): ``lagrangian_builder()`` builds it on first use.
     """
     name: str
     path: str                      # file name used in error messages ("<string>" if none)
@@ -97,7 +99,7 @@ class Model:
     group: Any                     # hpgen.groups.LieGroup
     parameters: tuple              # ((name, value), ...), value float | tuple | tuple of tuples
     lagrangian_text: str
-    lagrangian: Any                # sympy.Expr
+    lagrangian_expr: Any           # sympy.Expr, or None until ``lagrangian`` builds it
     xi_symbols: tuple
     g_symbols: tuple
     integrator: IntegratorChoice = field(default_factory=IntegratorChoice)
@@ -126,6 +128,21 @@ class Model:
     #: the family of bodies of a model on G^N (hpgen.model.families.BodyFamily: body group,
     #: N, the Lagrangian's per-body sums), None otherwise; ``group`` is then its product
     family: Any = None
+    #: () -> the Lagrangian (sympy.Expr) when lagrangian_expr is None
+    lagrangian_builder: Any = field(default=None, compare=False, repr=False)
+
+    @property
+    def lagrangian(self) -> Any:
+        """The expanded Lagrangian (sympy.Expr), built on first use for a family loaded
+        body by body."""
+        if self.lagrangian_expr is None:
+            object.__setattr__(self, "lagrangian_expr", self.lagrangian_builder())
+        return self.lagrangian_expr
+
+    def _body_terms(self):
+        """The family's body terms when the Lagrangian is not built (else None)."""
+        local = getattr(self.family, "local", None)
+        return None if self.lagrangian_expr is not None or local is None else local.bodies
 
     @property
     def forced(self) -> bool:
@@ -144,10 +161,15 @@ class Model:
     def time_dependent(self) -> bool:
         """True when the Lagrangian or a force depends on the time t."""
         from .symbols import TIME_SYMBOL
-        return any(TIME_SYMBOL in e.free_symbols for e in (self.lagrangian, *self.forces))
+        terms = self._body_terms()
+        lag = [t.expr for t in terms] if terms is not None else [self.lagrangian]
+        return any(TIME_SYMBOL in e.free_symbols for e in (*lag, *self.forces))
 
     @property
     def left_invariant(self) -> bool:
         """True when l does not depend on g (the Euler-Poincare case)."""
         gs = {s for row in self.g_symbols for s in row}
+        terms = self._body_terms()
+        if terms is not None:        # a body term's g symbols are g_a_b of one body
+            return not any(str(s).startswith("g_") for t in terms for s in t.expr.free_symbols)
         return not (self.lagrangian.free_symbols & gs)
