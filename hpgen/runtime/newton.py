@@ -177,6 +177,11 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
     stol, sparse = SIMPLIFIED_TOL * tol, kern.sparse
     dprev, jacs, F = _INF, 0, None
     full, fresh = not opts.simplified, False
+    if full and sparse:
+        # a chord iteration within the step with the round-off stall (newton_sparse)
+        from .newton_sparse import solve_sparse
+        memory.lu = None
+        return solve_sparse(kern, z, g, p, hv, tol, maxit)
     if full and kern.iterate_full is not None:
         # full Newton's iterates in one call (same arithmetic as below; J is not kept)
         out = kern.iterate_full(z, g, p, hv, 1, maxit, dprev, tol)
