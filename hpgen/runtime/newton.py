@@ -14,7 +14,9 @@ z <- z - J^{-1} F, inf-norms, theta = ||dz_k|| / ||dz_{k-1}||.
   floor). The constants and status codes are hpgen.abi's, as are the C runtime's.
 - A module whose Newton matrix is sparse (many bodies) also stops when the error left,
   estimated from the rate (quadratic after a fresh J, linear else), is <= tol (1 + ||z||)
-  (sparse_converged).
+  (sparse_converged); its full Newton is a chord iteration within the step (J once a step)
+  that also stops at the round-off stall, whose level follows the problem
+  (hpgen.runtime.newton_sparse).
 - An iterate that needs J takes F and J from one ``residual_jacobian`` evaluation when the
   module has that kernel (else ``residual`` then ``jacobian``), the others ``residual`` only.
 Non-finite F, J or z, or an exactly singular J, give code NONFINITE. A first step whose start
