@@ -54,7 +54,8 @@ import numpy as np
 # status codes and Newton constants: the generated-module contract (hpgen_runtime.h defines
 # the same values)
 from ..abi import (DEFAULT_MAXIT, DEFAULT_TOL, DOMAIN, KEEP_J_FLOOR, NO_CONVERGENCE, NONFINITE,
-                   OK, REFRESH, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, THETA_FLOOR, THETA_MAX)
+                   OK, REFRESH, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, STALL_MAX, THETA_FLOOR,
+                   THETA_MAX)
 # the linear algebra (re-exported: hpgen.runtime.loop, .sparse and the tests import it here)
 from .newton_linalg import (LinearSolver, _isfinite, all_finite, linear_solver,  # noqa: F401
                             norm_inf)
@@ -282,7 +283,9 @@ def newton(fun, z, tol=DEFAULT_TOL, maxit=DEFAULT_MAXIT):
 
     The logic of ``solve`` with full Newton and numpy's solve for the update (J dz = F), on
     arrays from ``fun`` without per-iterate conversions: converged when |dz| <= tol (1 + |z|)
-    or at the round-off floor; NONFINITE on a non-finite F, J or z or a singular J.
+    or at the round-off floor, or at a round-off stall above that floor (the rate above
+    THETA_MAX at |dz| <= STALL_MAX (1 + |z|): an ill-conditioned J's noise, e.g. the Legendre
+    map of the pendulum chain at 32 links; hpgen.runtime.newton_sparse.stalled); NONFINITE on a non-finite F, J or z or a singular J.
     Returns (code, z (m,) array, iterations, residual inf-norm of the last iterate, NaN
     before the first). ``fun`` may raise; it is not caught here (the callers use that for
     the singular-Legendre check).
@@ -304,7 +307,9 @@ def newton(fun, z, tol=DEFAULT_TOL, maxit=DEFAULT_MAXIT):
             if not (dn < _INF and zn < _INF):
                 break
             if (k > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + zn)) or \
-                    dn <= tol * (1.0 + zn):
+                    dn <= tol * (1.0 + zn) or (k > 1 and dn > THETA_MAX * dprev and
+                                               ROUNDOFF_FLOOR * (1.0 + zn) < dn
+                                               <= STALL_MAX * (1.0 + zn)):
                 code = OK
                 break
             code, dprev = NO_CONVERGENCE, dn
