@@ -285,7 +285,8 @@ def newton(fun, z, tol=DEFAULT_TOL, maxit=DEFAULT_MAXIT):
     arrays from ``fun`` without per-iterate conversions: converged when |dz| <= tol (1 + |z|)
     or at the round-off floor, or at a round-off stall above that floor (the rate above
     THETA_MAX at |dz| <= STALL_MAX (1 + |z|): an ill-conditioned J's noise, e.g. the Legendre
-    map of the pendulum chain at 32 links; hpgen.runtime.newton_sparse.stalled); NONFINITE on a non-finite F, J or z or a singular J.
+    map of the pendulum chain at 32 links; hpgen.runtime.newton_sparse.stalled); NONFINITE
+    on a non-finite F, J or z or a singular J.
     Returns (code, z (m,) array, iterations, residual inf-norm of the last iterate, NaN
     before the first). ``fun`` may raise; it is not caught here (the callers use that for
     the singular-Legendre check).
