@@ -171,11 +171,11 @@ static int hpgen_newton_full(const double* g, const double* p, const double* hv,
    with a J that contracts: evaluated at z_{k-1} (fresh: Newton's rate near the root is
    C |dz_{k-1}|, far below THETA_MAX at that size), or one that already contracted in this step
    (theta <= THETA_MAX once; a J factored in this step keeps its linear rate, which only falls
-   as the iterates approach the root). The noise of dz grows with cond(J) (the pendulum
-   chain's pin frames: 5e-13 (1 + |z|) at 8 links, 2e-11 at 32, 5e-11 at 64), so it is
-   estimated from the data, as the level where the step's corrections stop contracting, not
-   set by a fixed floor. HPGEN_STALL_MAX bounds that level: a stall above it is not taken
-   for noise. Mirrored in hpgen.runtime.newton_sparse.stalled. */
+   as the iterates approach the root; a J kept from earlier steps does not qualify: its slow
+   modes can surface once its fast ones died). The noise of dz grows with cond(J), so its
+   level is read off the data (where the step's corrections stop contracting); a stall above
+   HPGEN_STALL_MAX (1 + |z|) is not taken for noise. Mirrored in
+   hpgen.runtime.newton_sparse.stalled. */
 static int hpgen_stalled(long long it, double dn, double dprev, double zn, int fresh,
                          int contracted) {
     return it > 1 && (fresh || contracted) && dn > HPGEN_THETA_MAX * dprev
