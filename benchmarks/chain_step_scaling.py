@@ -1,16 +1,19 @@
 """How the step of the N-link pendulum chain (examples/pendulum_chain.yaml: SV / cay /
-truncated, C backend, sparse J, default Newton) grows with N: us/step, Newton iterations and
-Jacobian evaluations per step, and the time of the residual kernel alone.
+truncated, C backend, sparse J) grows with N, for three Newton variants run interleaved in
+one process: the default (a chord iteration within the step: J once a step, again only on a
+poor rate), J at every iterate (the runtime built with -DHPGEN_SPARSE_CHORD=0) and simplified
+Newton (J kept across steps, NewtonOptions(simplified=True)).
 
     PYTHONPATH=. python benchmarks/chain_step_scaling.py [--n 8 16 32 64] [--steps 2000]
-                                                         [--newton default|full|simplified]
+                                                         [--rounds 3]
 
 Every N starts from the chain's joint-space initial state (hpgen.bench.multibody.chain:
-joint velocities N(0, 1), seed fixed) with h = 1e-3; us/step is the best of three runs of
-``steps`` steps (simulate, one recorded row), compile time included once in "compile s"
-(a cached module compiles in well under a second). The last column is us/step over that of
-the first N, the issue's "time(64) / time(8)". The machine's load moves the figures: run the
-variants to compare in one session, interleaved.
+joint velocities N(0, 1), seed fixed) with h = 1e-3; us/step is the best over ``rounds``
+rounds of ``steps`` steps (simulate, one recorded row) on the process's CPU clock, the
+variants alternating within each round; it/step and J/step are Newton iterations and
+Jacobian evaluations per step; "residual us" is the residual kernel alone. The last columns
+are the variants' times over the default's, and the default's over its time at the first N
+(the issue's "time(64) / time(8)"). The machine's load moves the figures: read the ratios.
 """
 from __future__ import annotations
 
@@ -24,6 +27,9 @@ import hpgen
 from hpgen.bench.multibody import chain, hpgen_chain
 from hpgen.runtime.newton import NewtonOptions
 
+VARIANTS = {"chord": (None, None), "every": (["-DHPGEN_SPARSE_CHORD=0"], None),
+            "simplified": (None, NewtonOptions(simplified=True))}
+
 
 def kernel_us(integ, name, args, reps=300) -> float:
     """us per call of the exported C kernel hpgen_kernel_<name> (ctypes, best of 3)."""
@@ -33,53 +39,59 @@ def kernel_us(integ, name, args, reps=300) -> float:
     ptrs = [a.ctypes.data_as(ctypes.c_void_p) for a in ins + outs]
     best = np.inf
     for _ in range(3):
-        t = time.perf_counter()
+        t = time.process_time()
         for _ in range(reps):
             fn(*ptrs)
-        best = min(best, (time.perf_counter() - t) / reps)
+        best = min(best, (time.process_time() - t) / reps)
     return best * 1e6
 
 
-def measure(n: int, steps: int, newton) -> dict:
-    t = time.perf_counter()
-    integ = hpgen.compile(hpgen_chain.MODEL, parameters={"N": n})
-    compile_s = time.perf_counter() - t
+def measure(n: int, steps: int, rounds: int) -> dict:
+    integs = {k: hpgen.compile(hpgen_chain.MODEL, parameters={"N": n}, cflags=f)
+              for k, (f, _) in VARIANTS.items()}
     spec = chain.ChainSpec(n)
     qpos, qvel = chain.initial_joint_state(spec)
     g0, xi0 = hpgen_chain.to_hpgen(spec, chain.from_joint(spec, qpos, qvel))
-    best, tr = np.inf, None
-    for _ in range(3):
-        t = time.perf_counter()
-        tr = integ.simulate(g0, 1e-3, steps, xi0=xi0, every=steps, newton=newton)
-        best = min(best, time.perf_counter() - t)
+    best = {k: np.inf for k in VARIANTS}
+    runs = {}
+    for _ in range(rounds):
+        for k, (_, newton) in VARIANTS.items():
+            t = time.process_time()
+            runs[k] = integs[k].simulate(g0, 1e-3, steps, xi0=xi0, every=steps, newton=newton)
+            best[k] = min(best[k], time.process_time() - t)
+    tr, integ = runs["chord"], integs["chord"]
+    if any(r.error is not None for r in runs.values()):
+        raise SystemExit(f"N = {n}: " + "; ".join(f"{k}: {r.error}" for k, r in runs.items()))
     gap = max(chain.constraint_residual(spec, s)[0]
               for s in hpgen_chain.from_hpgen(spec, tr.g, tr.xi()))
     nz = integ.meta["nz"]
     args = (np.zeros(nz), np.asarray(tr.g[-1]).ravel(order="F"), np.asarray(tr.mu[-1]),
             np.array([1e-3]))
-    return {"N": n, "nz": nz, "compile_s": compile_s, "us": best / steps * 1e6,
-            "it": tr.newton_iterations / steps, "jac": tr.jacobians / steps,
-            "residual_us": kernel_us(integ, "residual", args), "gap": gap}
+    out = {"N": n, "nz": nz, "residual_us": kernel_us(integ, "residual", args), "gap": gap}
+    for k, r in runs.items():
+        out[k] = (best[k] / steps * 1e6, r.newton_iterations / steps, r.jacobians / steps)
+    return out
 
 
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--n", type=int, nargs="+", default=[8, 16, 32, 64])
     ap.add_argument("--steps", type=int, default=2000)
-    ap.add_argument("--newton", choices=["default", "full", "simplified"], default="default")
+    ap.add_argument("--rounds", type=int, default=3)
     a = ap.parse_args()
-    newton = None if a.newton == "default" else NewtonOptions(simplified=a.newton == "simplified")
-    print(f"hpgen from {hpgen.__file__}; Newton: {a.newton}")
-    print("| N | nz | compile s | us/step | it/step | J/step | residual us | joint gap | "
-          "us/step / first |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print(f"hpgen from {hpgen.__file__}")
+    cols = " | ".join(f"{k} us | it/step | J/step" for k in VARIANTS)
+    print(f"| N | nz | {cols} | residual us | joint gap | every / chord | "
+          "simplified / chord | chord / first |")
+    print("|---|---|" + "---|" * (3 * len(VARIANTS) + 5))
     first = None
     for n in a.n:
-        r = measure(n, a.steps, newton)
+        r = measure(n, a.steps, a.rounds)
         first = first or r
-        print(f"| {n} | {r['nz']} | {r['compile_s']:.1f} | {r['us']:.1f} | {r['it']:.2f} | "
-              f"{r['jac']:.2f} | {r['residual_us']:.1f} | {r['gap']:.1e} | "
-              f"{r['us'] / first['us']:.2f} |", flush=True)
+        cells = " | ".join(f"{r[k][0]:.1f} | {r[k][1]:.2f} | {r[k][2]:.2f}" for k in VARIANTS)
+        print(f"| {n} | {r['nz']} | {cells} | {r['residual_us']:.1f} | {r['gap']:.1e} | "
+              f"{r['every'][0] / r['chord'][0]:.2f} | {r['simplified'][0] / r['chord'][0]:.2f} | "
+              f"{r['chord'][0] / first['chord'][0]:.2f} |", flush=True)
     return 0
 
 

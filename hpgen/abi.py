@@ -188,6 +188,11 @@ DEFAULT_TOL = 1e-14
 DEFAULT_MAXIT = 50
 #: round-off floor: stop when |dz| stopped decreasing while |dz| <= ROUNDOFF_FLOOR (1 + |z|)
 ROUNDOFF_FLOOR = 1e-11
+#: a sparse module's Newton takes a stall of its contracting iterates (theta > THETA_MAX with
+#: a fresh J or one that contracted in the step) for the round-off noise of the solution while
+#: |dz| <= STALL_MAX (1 + |z|) (hpgen_newton.c, hpgen_stalled). The noise grows with cond(J):
+#: 5e-13 .. 5e-11 (1 + |z|) on the pendulum chain at 8 .. 64 links (pin frames)
+STALL_MAX = 1e-9
 #: a sparse module's simplified Newton keeps its J, from a step's third iterate on, while
 #: |dz| <= KEEP_J_FLOOR (1 + |z|) (the many-body step's round-off noise in dz, 2e-12..1e-11 at
 #: |z| = 13 on the 10-link chain): a rate above THETA_MAX there is the noise's. At
@@ -242,7 +247,7 @@ PREDICTOR_COEFFICIENTS = tuple(tuple(float((-1) ** i * math.comb(m, i + 1)) for 
 #: the contract's values the C runtime defines (hpgen/runtime/c/hpgen_runtime.h: macro ->
 #: value, written there as c_literal(value); tests/unit/test_abi.py reads them back)
 C_CONSTANTS = {"HPGEN_ABI": ABI_VERSION, "HPGEN_ROUNDOFF_FLOOR": ROUNDOFF_FLOOR,
-               "HPGEN_KEEP_J_FLOOR": KEEP_J_FLOOR,
+               "HPGEN_KEEP_J_FLOOR": KEEP_J_FLOOR, "HPGEN_STALL_MAX": STALL_MAX,
                "HPGEN_THETA_MAX": THETA_MAX, "HPGEN_SIMPLIFIED_TOL": SIMPLIFIED_TOL,
                "HPGEN_THETA_FLOOR": THETA_FLOOR, "HPGEN_VELOCITY_TOL": VELOCITY_TOL,
                "HPGEN_VELOCITY_MAXIT": VELOCITY_MAXIT, "HPGEN_PH": PREDICTOR_HISTORY,

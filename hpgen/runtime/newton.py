@@ -14,7 +14,9 @@ z <- z - J^{-1} F, inf-norms, theta = ||dz_k|| / ||dz_{k-1}||.
   floor). The constants and status codes are hpgen.abi's, as are the C runtime's.
 - A module whose Newton matrix is sparse (many bodies) also stops when the error left,
   estimated from the rate (quadratic after a fresh J, linear else), is <= tol (1 + ||z||)
-  (sparse_converged).
+  (sparse_converged); its full Newton is a chord iteration within the step (J once a step)
+  that also stops at the round-off stall, whose level follows the problem
+  (hpgen.runtime.newton_sparse).
 - An iterate that needs J takes F and J from one ``residual_jacobian`` evaluation when the
   module has that kernel (else ``residual`` then ``jacobian``), the others ``residual`` only.
 Non-finite F, J or z, or an exactly singular J, give code NONFINITE. A first step whose start
@@ -52,7 +54,8 @@ import numpy as np
 # status codes and Newton constants: the generated-module contract (hpgen_runtime.h defines
 # the same values)
 from ..abi import (DEFAULT_MAXIT, DEFAULT_TOL, DOMAIN, KEEP_J_FLOOR, NO_CONVERGENCE, NONFINITE,
-                   OK, REFRESH, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, THETA_FLOOR, THETA_MAX)
+                   OK, REFRESH, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, STALL_MAX, THETA_FLOOR,
+                   THETA_MAX)
 # the linear algebra (re-exported: hpgen.runtime.loop, .sparse and the tests import it here)
 from .newton_linalg import (LinearSolver, _isfinite, all_finite, linear_solver,  # noqa: F401
                             norm_inf)
@@ -177,6 +180,11 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
     stol, sparse = SIMPLIFIED_TOL * tol, kern.sparse
     dprev, jacs, F = _INF, 0, None
     full, fresh = not opts.simplified, False
+    if full and sparse:
+        # a chord iteration within the step with the round-off stall (newton_sparse)
+        from .newton_sparse import solve_sparse
+        memory.lu = None
+        return solve_sparse(kern, z, g, p, hv, tol, maxit)
     if full and kern.iterate_full is not None:
         # full Newton's iterates in one call (same arithmetic as below; J is not kept)
         out = kern.iterate_full(z, g, p, hv, 1, maxit, dprev, tol)
@@ -275,7 +283,10 @@ def newton(fun, z, tol=DEFAULT_TOL, maxit=DEFAULT_MAXIT):
 
     The logic of ``solve`` with full Newton and numpy's solve for the update (J dz = F), on
     arrays from ``fun`` without per-iterate conversions: converged when |dz| <= tol (1 + |z|)
-    or at the round-off floor; NONFINITE on a non-finite F, J or z or a singular J.
+    or at the round-off floor, or at a round-off stall above that floor (the rate above
+    THETA_MAX at |dz| <= STALL_MAX (1 + |z|): an ill-conditioned J's noise, e.g. the Legendre
+    map of the pendulum chain at 32 links; hpgen.runtime.newton_sparse.stalled); NONFINITE
+    on a non-finite F, J or z or a singular J.
     Returns (code, z (m,) array, iterations, residual inf-norm of the last iterate, NaN
     before the first). ``fun`` may raise; it is not caught here (the callers use that for
     the singular-Legendre check).
@@ -297,7 +308,9 @@ def newton(fun, z, tol=DEFAULT_TOL, maxit=DEFAULT_MAXIT):
             if not (dn < _INF and zn < _INF):
                 break
             if (k > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + zn)) or \
-                    dn <= tol * (1.0 + zn):
+                    dn <= tol * (1.0 + zn) or (k > 1 and dn > THETA_MAX * dprev and
+                                               ROUNDOFF_FLOOR * (1.0 + zn) < dn
+                                               <= STALL_MAX * (1.0 + zn)):
                 code = OK
                 break
             code, dprev = NO_CONVERGENCE, dn

@@ -395,14 +395,3 @@ def test_storage_from_the_j_outputs():
         assert (col == sp) if nz >= SPARSE_MIN_NZ else col is None
         assert jacobian_sparsity(step(ca.SX(ca.Sparsity.dense(nz * nz, 1)), nz)) is None
 
-
-def test_full_newton_converges_on_the_example_scene_at_32_links(cache_dir):
-    """The example's own scene (every link (w, v) = (3, 1, 0.5, 0, 0, 0)) at N = 32: full
-    Newton on the sparse J (the default) converges in every step, about two iterates a step
-    (a chord iteration that kept J within the step stalled at the round-off noise here)."""
-    integ = hpgen.compile(EXAMPLES / "pendulum_chain.yaml", parameters={"N": 32},
-                          cache_dir=cache_dir)
-    steps = 300
-    run = integ.simulate(np.eye(4 * 32), 1e-3, steps, xi0=np.tile([3.0, 1.0, 0.5, 0, 0, 0], 32))
-    assert run.error is None and len(run.t) == steps + 1
-    assert run.newton_iterations <= 3 * steps

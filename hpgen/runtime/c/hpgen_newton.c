@@ -128,7 +128,8 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
    and F's norm taken once, at the end. A non-finite F is caught after the solve, where it
    makes dz non-finite (dz = J^{-1} F: every F_i enters some dz_j with a nonzero factor of
    J^{-1}, or as inf * 0 = NaN): then F is tested and, if it is the culprit, z is left at the
-   iterate F was evaluated at, as in hpgen_newton. */
+   iterate F was evaluated at, as in hpgen_newton. A sparse module's is hpgen_newton_sparse. */
+#if !HPGEN_SPARSE
 static int hpgen_newton_full(const double* g, const double* p, const double* hv, double* z,
                              const hpgen_options* o, long long* iters, long long* jacs,
                              double* rnorm) {
@@ -152,9 +153,6 @@ static int hpgen_newton_full(const double* g, const double* p, const double* hv,
             code = HPGEN_OK; break;
         }
         if (dn <= tol * (1.0 + zn)) { code = HPGEN_OK; break; }
-#if HPGEN_SPARSE
-        if (hpgen_sparse_converged(it, dn, dprev, zn, tol, 1)) { code = HPGEN_OK; break; }
-#endif
         dprev = dn;
     }
     if (it > maxit) it = maxit;
@@ -163,6 +161,89 @@ static int hpgen_newton_full(const double* g, const double* p, const double* hv,
     *rnorm = evaluated ? hpgen_norm_inf(Fz, HPGEN_NZ) : NAN;
     return code;
 }
+#endif
+
+#if HPGEN_SPARSE
+/* The round-off stall of a module with a sparse Newton matrix (many bodies): the correction
+   dz_k is the round-off noise of the step's solution, and z_k is as close to it as the
+   arithmetic allows, when
+     theta_k = |dz_k| / |dz_{k-1}| > HPGEN_THETA_MAX,  |dz_k| <= HPGEN_STALL_MAX (1 + |z_k|),
+   with a J that contracts: evaluated at z_{k-1} (fresh: Newton's rate near the root is
+   C |dz_{k-1}|, far below THETA_MAX at that size), or one that already contracted in this step
+   (theta <= THETA_MAX once; a J factored in this step keeps its linear rate, which only falls
+   as the iterates approach the root; a J kept from earlier steps does not qualify: its slow
+   modes can surface once its fast ones died). The noise of dz grows with cond(J), so its
+   level is read off the data (where the step's corrections stop contracting); a stall above
+   HPGEN_STALL_MAX (1 + |z|) is not taken for noise. Mirrored in
+   hpgen.runtime.newton_sparse.stalled. */
+static int hpgen_stalled(long long it, double dn, double dprev, double zn, int fresh,
+                         int contracted) {
+    return it > 1 && (fresh || contracted) && dn > HPGEN_THETA_MAX * dprev
+        && dn <= HPGEN_STALL_MAX * (1.0 + zn);
+}
+
+/* Full Newton of a module with a sparse Newton matrix. HPGEN_SPARSE_CHORD = 1: a chord
+   iteration within the step (J and its factors at the step's first iterate; the next iterates
+   one residual and one solve each, while they contract; a kept J whose rate
+   theta = |dz| / |dz_prev| exceeds HPGEN_THETA_MAX, and is no stall, is evaluated again at
+   the next iterate); 0: J at every iterate. Nothing is kept across steps.
+   Stops (inf-norms): |dz| stopped decreasing while <= HPGEN_ROUNDOFF_FLOOR (1 + |z|); after a
+   fresh J |dz| <= tol (1 + |z|) and hpgen_sparse_converged (quadratic rate); after a kept J
+   hpgen_sparse_converged asked of HPGEN_SIMPLIFIED_TOL tol (the linear rate's bound
+   te/(1 - te) |dz|, as simplified Newton's); the round-off stall (hpgen_stalled).
+   Mirrored in hpgen.runtime.newton_sparse.solve_sparse. */
+static int hpgen_newton_sparse(const double* g, const double* p, const double* hv, double* z,
+                               const hpgen_options* o, long long* iters, long long* jacs,
+                               double* rnorm) {
+    double F[HPGEN_NZ], Fz[HPGEN_NZ], J[HPGEN_LU_SIZE], dprev = HUGE_VAL;
+    const double tol = o->tol;
+    const long long maxit = o->maxit;
+    long long it, nj = 0;
+    int i, piv[HPGEN_NZ], evaluated = 0, need_j = 1, fresh = 0, contracted = 0;
+    int code = HPGEN_NO_CONVERGENCE;
+    for (it = 1; it <= maxit; ++it) {
+        double dn, zn;
+        if (need_j) {
+            ++nj;
+            if (hpgen_newton_fj(z, g, p, hv, F, J)) { code = HPGEN_NONFINITE; break; }
+            memcpy(Fz, F, sizeof F);
+            evaluated = 1;
+            if (hpgen_lu_factor_solve(J, piv, F, HPGEN_SPARSE_CHORD)) {
+                code = HPGEN_NONFINITE; break;
+            }
+            need_j = !HPGEN_SPARSE_CHORD;
+            fresh = 1;
+        } else {
+            if (hpgen_k_residual(z, g, p, hv, F)) { code = HPGEN_NONFINITE; break; }
+            memcpy(Fz, F, sizeof F);
+            hpgen_lu_apply(J, piv, F);
+            fresh = 0;
+        }
+        dn = hpgen_norm_inf(F, HPGEN_NZ);
+        if (!isfinite(dn) && !hpgen_all_finite(Fz, HPGEN_NZ)) { code = HPGEN_NONFINITE; break; }
+        for (i = 0; i < HPGEN_NZ; ++i) z[i] -= F[i];
+        zn = hpgen_norm_inf(z, HPGEN_NZ);
+        if (!isfinite(dn) || !isfinite(zn)) { code = HPGEN_NONFINITE; break; }
+        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)) {
+            code = HPGEN_OK; break;
+        }
+        if (fresh && dn <= tol * (1.0 + zn)) { code = HPGEN_OK; break; }
+        if (hpgen_sparse_converged(it, dn, dprev, zn, fresh ? tol : HPGEN_SIMPLIFIED_TOL * tol,
+                                   fresh)) { code = HPGEN_OK; break; }
+        if (hpgen_stalled(it, dn, dprev, zn, fresh, contracted)) { code = HPGEN_OK; break; }
+        if (it > 1 && dn <= HPGEN_THETA_MAX * dprev) contracted = 1;
+        else if (it > 1 && !fresh) need_j = 1;
+        dprev = dn;
+    }
+    if (it > maxit) it = maxit;
+    *iters = it;
+    *jacs += nj;
+    *rnorm = evaluated ? hpgen_norm_inf(Fz, HPGEN_NZ) : NAN;
+    return code;
+}
+#else
+#define hpgen_newton_sparse hpgen_newton_full
+#endif
 
 /* A family module (HPGEN_G_PACKED): g is block-diagonal and the update kernel's variant
    hpgen_k_update_nz writes g_{k+1} as its HPGEN_GNZ structural nonzeros, whose positions in
@@ -227,7 +308,7 @@ static int hpgen_step_solve(const double* g, const double* p, const double* hv, 
         code = hpgen_newton(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm);
     } else {
         *lu_valid = 0;                     /* full Newton keeps no J^{-1} */
-        code = hpgen_newton_full(g, p, hv, z, o, iters, jacs, rnorm);
+        code = hpgen_newton_sparse(g, p, hv, z, o, iters, jacs, rnorm);
     }
     /* a Newton failure is reported as such (wherever its last iterate went): DOMAIN is a
        converged solution outside tau's domain only */

@@ -108,6 +108,14 @@
 
 /* Newton stalls at round-off: stop when |dz| stopped decreasing while below this * (1+|z|) */
 #define HPGEN_ROUNDOFF_FLOOR 1e-11
+/* a sparse module's Newton takes a stall of its contracting iterates below this * (1 + |z|)
+   for the round-off noise of the solution (hpgen_stalled) */
+#define HPGEN_STALL_MAX 1e-09
+/* 1: a sparse module's full Newton is a chord iteration within the step (J once, again only
+   on a poor rate: hpgen_newton_sparse); 0: J at every iterate (a build may set it to compare) */
+#ifndef HPGEN_SPARSE_CHORD
+#define HPGEN_SPARSE_CHORD 1
+#endif
 /* a sparse module's simplified Newton keeps J at |dz| <= this * (1 + |z|) (hpgen_at_floor) */
 #define HPGEN_KEEP_J_FLOOR 1e-12
 /* simplified Newton: a contraction rate |dz_k| / |dz_{k-1}| above this refreshes the Jacobian

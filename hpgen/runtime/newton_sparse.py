@@ -1,0 +1,83 @@
+"""Full Newton of a module whose Newton matrix is sparse (many bodies): the C runtime's
+hpgen_newton_sparse (hpgen_newton.c), the same iteration and stop tests; the linear algebra
+is hpgen.runtime.sparse's, which agrees with C's to round-off.
+
+CHORD (hpgen_runtime.h HPGEN_SPARSE_CHORD): J and its factors at the step's first iterate; the
+next iterates one residual and one solve each while they contract; a kept J whose rate
+theta = |dz| / |dz_prev| exceeds THETA_MAX (and that is no round-off stall) is evaluated again
+at the next iterate. Nothing is kept across steps. Stops (inf-norms): |dz| stopped decreasing
+while <= ROUNDOFF_FLOOR (1 + |z|); after a fresh J |dz| <= tol (1 + |z|) and
+hpgen.runtime.newton.sparse_converged (quadratic rate); after a kept J sparse_converged asked
+of SIMPLIFIED_TOL tol (the linear rate's bound); the round-off stall (``stalled``).
+"""
+from __future__ import annotations
+
+from ..abi import (NO_CONVERGENCE, NONFINITE, OK, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, STALL_MAX,
+                   THETA_MAX)
+from .newton_linalg import all_finite, norm_inf
+
+_INF, _NAN = float("inf"), float("nan")
+
+#: the C runtime's HPGEN_SPARSE_CHORD default: J once a step (refreshed on a poor rate)
+CHORD = True
+
+
+def stalled(it: int, dn: float, dprev: float, zn: float, fresh: bool,
+            contracted: bool) -> bool:
+    """hpgen_newton.c's hpgen_stalled: dz_k is the round-off noise of the step's solution when
+    theta_k = |dz_k| / |dz_{k-1}| > THETA_MAX and |dz_k| <= STALL_MAX (1 + |z_k|) with a J that
+    contracts (fresh: evaluated at z_{k-1}; or one under which the step's iterates contracted,
+    theta <= THETA_MAX once). The noise level is the data's (where the corrections stop
+    contracting; it grows with cond(J)); STALL_MAX only bounds it."""
+    return (it > 1 and (fresh or contracted) and dn > THETA_MAX * dprev
+            and dn <= STALL_MAX * (1.0 + zn))
+
+
+def solve_sparse(kern, z, g, p, hv, tol: float, maxit: int, chord: bool = CHORD):
+    """Full Newton from z (a list of floats) on kern.residual(z, g, p, hv) = 0 with kern.linear
+    a sparse solver (hpgen.runtime.sparse). Returns (code, z (list), iterations, last residual
+    inf-norm, Jacobian evaluations), as hpgen.runtime.newton.solve."""
+    from .newton import sparse_converged
+    residual, both, jacobian = kern.residual, kern.residual_jacobian, kern.jacobian
+    factor_solve, apply = kern.linear.factor_solve, kern.linear.apply
+    dprev, jacs, F, kept = _INF, 0, None, None
+    need_j, fresh, contracted = True, False, False
+    for it in range(1, maxit + 1):
+        if need_j:
+            jacs += 1
+            if both is not None:
+                F, J = both(z, g, p, hv)
+            else:
+                F = residual(z, g, p, hv)[0]
+                J = jacobian(z, g, p, hv)[0]
+            if not all_finite(F):
+                return NONFINITE, z, it, norm_inf(F), jacs
+            res = factor_solve(J, F, chord)
+            if res is None:
+                return NONFINITE, z, it, norm_inf(F), jacs
+            dz, kept = res
+            need_j, fresh = not chord, True
+        else:
+            F = residual(z, g, p, hv)[0]
+            if not all_finite(F):
+                return NONFINITE, z, it, norm_inf(F), jacs
+            dz = apply(kept, F)
+            fresh = False
+        z = [a - b for a, b in zip(z, dz)]
+        dn, zn = norm_inf(dz), norm_inf(z)
+        if not (dn < _INF and zn < _INF):
+            return NONFINITE, z, it, norm_inf(F), jacs
+        if it > 1 and dprev <= dn <= ROUNDOFF_FLOOR * (1.0 + zn):
+            return OK, z, it, norm_inf(F), jacs
+        if fresh and dn <= tol * (1.0 + zn):
+            return OK, z, it, norm_inf(F), jacs
+        if sparse_converged(it, dn, dprev, zn, tol if fresh else SIMPLIFIED_TOL * tol, fresh):
+            return OK, z, it, norm_inf(F), jacs
+        if stalled(it, dn, dprev, zn, fresh, contracted):
+            return OK, z, it, norm_inf(F), jacs
+        if it > 1 and dn <= THETA_MAX * dprev:
+            contracted = True
+        elif it > 1 and not fresh:
+            need_j = True
+        dprev = dn
+    return NO_CONVERGENCE, z, maxit, (_NAN if F is None else norm_inf(F)), jacs
