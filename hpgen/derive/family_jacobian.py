@@ -38,11 +38,20 @@ CALL = {"never_inline": True, "jac_penalty": 0}
 
 def _jacobian_function(f, pairs, name):
     """SX Function of f's inputs -> [d out_o / d in_i for (o, i) in pairs] (CasADi's SX AD
-    on f's own expression graph, one factory per block, inlined into one function)."""
+    on f's own expression graph). The blocks of the column outputs come from one factory, so
+    that they share f's forward evaluation and their common subexpressions; a matrix
+    output's blocks one factory each (CasADi's factory refuses several for a matrix)."""
     args = [ca.SX.sym(f"a{i}", f.sparsity_in(i)) for i in range(f.n_in())]
-    outs = [f.factory(f"{name}_{o}_{i}", f.name_in(),
-                      [f"jac:{f.name_out(o)}:{f.name_in(i)}"])(*args) for o, i in pairs]
-    return ca.Function(name, args, outs, CALL)
+    groups: dict = {}
+    for o, i in pairs:
+        groups.setdefault(("c",) if f.size2_out(o) == 1 else (o, i), []).append((o, i))
+    blocks = {}
+    for key, group in groups.items():
+        jf = f.factory(f"{name}_{'_'.join(map(str, key))}", f.name_in(),
+                       [f"jac:{f.name_out(o)}:{f.name_in(i)}" for o, i in group])
+        out = jf(*args)
+        blocks.update(zip(group, [out] if len(group) == 1 else out))
+    return ca.Function(name, args, [blocks[pair] for pair in pairs], CALL)
 
 
 def _joint_jacobians(fun, K: int, rows: int):
