@@ -120,45 +120,79 @@ class Gathered:
         self.blocks = ca.reshape(yv[idx.ravel().tolist()], self.rows, self.width * len(yrows))
 
 
+def _disjoint_slots(Y, yrows) -> bool:
+    """Whether every entity's slots read Y rows whose columns do not overlap."""
+    spY = Y.sparsity()
+    cols_of: dict[int, set] = {}
+    for r, c in zip(spY.row(), spY.get_col()):
+        cols_of.setdefault(int(r), set()).add(int(c))
+    for ys in yrows:
+        seen: set = set()
+        for rs in ys:
+            cs = set().union(*[cols_of.get(r, set()) for r in rs])
+            if cs & seen:
+                return False
+            seen |= cs
+    return True
+
+
 def block_products(xs, entities, Y, name: str, cache: dict | None = None) -> Entries:
     """Entries of sum_e sum_s X_{e,s} Y[yrows[e][s], :] at rows out[e] (Y a sparse MX).
 
     xs[s] = (M, sp): the blocks X_{0,s}, X_{1,s}, ... side by side in M (a map's output),
     each of pattern sp; entities[e] = (out (a rows of C), [yrows[e][s] (b_s rows of Y) per
-    slot s]). ``cache``: Gathered blocks by (Y, rows), for products reading the same rows."""
+    slot s]). When the slots' rows of Y have disjoint columns in every entity, each slot's
+    block is gathered on its own (no padding to the other slots' columns); else one block
+    over the union. ``cache``: Gathered blocks by (Y, rows), for products reading the same
+    rows."""
     sp_x = [sp for _, sp in xs]
     a = sp_x[0].size1()
     if not entities or all(sp.nnz() == 0 for sp in sp_x) or Y.nnz() == 0:
         return Entries(ca.MX(0, 1), [], [])
     yrows = [[tuple(int(r) for r in rs) for rs in ys] for _, ys in entities]
-    key = (id(Y), tuple(tuple(ys) for ys in yrows))
+    K = len(sp_x)
+    groups = ([[s] for s in range(K)] if K > 1 and _disjoint_slots(Y, yrows)
+              else [list(range(K))])
     cache = {} if cache is None else cache
-    if key not in cache:
-        cache[key] = (Y, Gathered(Y, yrows))      # Y kept alive: its id stays unique
-    gy = cache[key][1]
+    gys = []
+    for grp in groups:
+        rows_g = [[ys[s] for s in grp] for ys in yrows]
+        key = (id(Y), tuple(tuple(ys) for ys in rows_g))
+        if key not in cache:
+            cache[key] = (Y, Gathered(Y, rows_g))  # Y kept alive: its id stays unique
+        gys.append(cache[key][1])
     Xs = [ca.SX.sym(f"x{s}", sp) for s, sp in enumerate(sp_x)]
-    Yb = ca.SX.sym("y", gy.rows, gy.width)
-    offs = np.cumsum([0] + [len(k) for k in gy.kept])
-    prod = ca.SX(a, gy.width)
-    for s, X in enumerate(Xs):
-        if gy.kept[s]:
-            prod = prod + ca.mtimes(X[:, gy.kept[s]], Yb[int(offs[s]):int(offs[s + 1]), :])
-    f = ca.Function(name, [*Xs, Yb], [prod], {"never_inline": True})
+    Ybs = [ca.SX.sym(f"y{g}", gy.rows, gy.width) for g, gy in enumerate(gys)]
+    prods = []
+    for grp, gy, Yb in zip(groups, gys, Ybs):
+        offs = np.cumsum([0] + [len(k) for k in gy.kept])
+        prod = ca.SX(a, gy.width)
+        for q, s in enumerate(grp):
+            if gy.kept[q]:
+                prod = prod + ca.mtimes(Xs[s][:, gy.kept[q]],
+                                        Yb[int(offs[q]):int(offs[q + 1]), :])
+        prods.append(prod)
+    f = ca.Function(name, [*Xs, *Ybs], [ca.horzcat(*prods)], {"never_inline": True})
     sp_o = f.sparsity_out(0)
     where = {(int(r), int(c)): q for q, (r, c) in enumerate(zip(sp_o.row(), sp_o.get_col()))}
-    out_nz = ca.sparsity_cast(f.map(len(entities))(*[M for M, _ in xs], gy.blocks),
+    out_nz = ca.sparsity_cast(f.map(len(entities))(*[M for M, _ in xs],
+                                                   *[gy.blocks for gy in gys]),
                               ca.Sparsity.dense(sp_o.nnz() * len(entities), 1))
-    xpat = np.hstack([(np.array(ca.DM(sp, 1.0)) != 0)[:, k] for sp, k in zip(sp_x, gy.kept)])
     src, rows, cols = [], [], []
-    for e, (out, _) in enumerate(entities):
-        ecols = gy.cols[e]
-        ypat = gy.nonzero[e, :len(ecols), :].T.astype(int)
-        pat = (xpat.astype(int) @ ypat) > 0
-        for c in range(len(ecols)):           # C's entries in column-major order per entity
-            for r in np.flatnonzero(pat[:, c]):
-                src.append(e * sp_o.nnz() + where[int(r), c])
-                rows.append(int(out[r]))
-                cols.append(ecols[c])
+    col0 = 0
+    for grp, gy in zip(groups, gys):
+        xpat = np.hstack([(np.array(ca.DM(sp_x[s], 1.0)) != 0)[:, k]
+                          for s, k in zip(grp, gy.kept)])
+        for e, (out, _) in enumerate(entities):
+            ecols = gy.cols[e]
+            ypat = gy.nonzero[e, :len(ecols), :].T.astype(int)
+            pat = (xpat.astype(int) @ ypat) > 0
+            for c in range(len(ecols)):       # C's entries in column-major order per entity
+                for r in np.flatnonzero(pat[:, c]):
+                    src.append(e * sp_o.nnz() + where[int(r), col0 + c])
+                    rows.append(int(out[r]))
+                    cols.append(ecols[c])
+        col0 += gy.width
     if not src:
         return Entries(ca.MX(0, 1), [], [])
     return Entries(out_nz[src], rows, cols)

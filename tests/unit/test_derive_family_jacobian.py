@@ -85,13 +85,16 @@ def test_entries_at_the_same_place_add_up():
                                                     [0, 0, 1, 1, 1, 2, 0, 2])
 
 
-def test_block_products_equal_the_sparse_product():
+@pytest.mark.parametrize("last", [0, 3])
+def test_block_products_equal_the_sparse_product(last):
     """sum_e sum_s X_{e,s} Y[rows] at out rows against the same product written with dense
-    numpy matrices, at random values; overlapping output rows add up."""
-    from hpgen.derive.sparse_blocks import assemble, block_products
+    numpy matrices, at random values; overlapping output rows add up. Y's last entry in
+    column 0 makes the slots of entity 2 share a column (one block over the union), in
+    column 3 every entity's slots read disjoint columns (a block per slot)."""
+    from hpgen.derive.sparse_blocks import _disjoint_slots, assemble, block_products
     rng = np.random.default_rng(3)
     spx = [ca.Sparsity.lower(3), ca.Sparsity.dense(3, 3)]
-    ysp = ca.Sparsity.triplet(9, 5, [0, 1, 2, 3, 4, 6, 7, 8, 8], [0, 1, 1, 2, 2, 3, 4, 0, 4])
+    ysp = ca.Sparsity.triplet(9, 5, [0, 1, 2, 3, 4, 6, 7, 8, 8], [0, 1, 1, 2, 2, 3, 4, last, 4])
     Y = ca.MX.sym("Y", ysp)
     E = 3
     Ms = [ca.MX.sym(f"M{s}", ca.horzcat(*[ca.DM(sp, 1.0)] * E).sparsity()) for s, sp in
@@ -99,6 +102,7 @@ def test_block_products_equal_the_sparse_product():
     body = [[0, 1], [1, 2], [2, 0]]                # entity e's slots: bodies of 3 rows
     out = [range(0, 3), range(3, 6), range(0, 3)]  # entities 0 and 2 share their rows
     ents = [(out[e], [range(3 * b, 3 * b + 3) for b in body[e]]) for e in range(E)]
+    assert _disjoint_slots(Y, [ys for _, ys in ents]) == (last == 3)
     C = assemble([block_products(list(zip(Ms, spx)), ents, Y, "bp")], (6, 5))
     f = ca.Function("f", [*Ms, Y], [C])
     xv = [rng.standard_normal(M.nnz()) for M in Ms]
