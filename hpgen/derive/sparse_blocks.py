@@ -3,7 +3,7 @@ with static index arrays, so that the generated code moves each nonzero a bounde
 times and multiplies small dense blocks in straight-line SX code.
 
 - ``Entries``: values (a dense MX column) placed at fixed (row, col) positions;
-- ``assemble``: the sparse MX sum of Entries, one gather per multiplicity of a position;
+- ``assemble``: the sparse MX sum of Entries by static gathers;
 - ``block_products``: C = sum over entities e and slots s of X_{e,s} Y[rows_{e,s}, :] at
   rows out_e, with each X_{e,s} a map's block output and the product one mapped SX function
   over the entities (Y's rows gathered per entity into a dense block, padded with zeros to
@@ -56,9 +56,10 @@ class Entries:
 
 def assemble(terms, shape):
     """Sparse MX of ``shape``: the sum of the Entries ``terms`` (entries at the same
-    position add up). Its pattern is the union of the terms' positions; its nonzeros (CCS
-    order) are sum_k cat[index_k], cat the terms' values one after the other and a zero,
-    index_k the k-th entry at each position (the zero where it has fewer)."""
+    position add up, in the terms' order). Its pattern is the union of the terms' positions;
+    its nonzeros (CCS order) are a gather of the first entry at each position from cat (the
+    terms' values one after the other), to which the positions with a k-th entry add it
+    (k = 2, 3, ...: a gather and an addition over those positions only)."""
     terms = [t for t in terms if len(t.rows)]
     if not terms:
         return ca.MX(*shape)
@@ -75,15 +76,12 @@ def assemble(terms, shape):
                              (unique // shape[0]).tolist())
     if len(terms) == 1 and rank.max() == 0 and np.array_equal(order, np.arange(len(ks))):
         return ca.sparsity_cast(terms[0].values, sp)
-    cat = ca.vertcat(*[t.values for t in terms], ca.MX.zeros(1, 1))
-    zero = len(key)
-    out = None
-    for k in range(int(rank.max()) + 1):
-        idx = np.full(len(unique), zero)
+    cat = ca.vertcat(*[t.values for t in terms])
+    out = cat[order[rank == 0].tolist()]       # the first entry at each position
+    for k in range(1, int(rank.max()) + 1):    # then the positions with a k-th entry
         sel = rank == k
-        idx[place[sel]] = order[sel]
-        layer = cat[idx.tolist()]
-        out = layer if out is None else out + layer
+        at = place[sel].tolist()
+        out.nz[at] = out.nz[at] + cat[order[sel].tolist()]
     return ca.sparsity_cast(out, sp)
 
 
