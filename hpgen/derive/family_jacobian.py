@@ -2,11 +2,13 @@
 from per-body and per-joint Jacobian blocks, with O(N) work and memory.
 
 Each block is one SX function (derived once, its Jacobians by CasADi's SX AD) mapped over
-the bodies or a joint group's instances; its outputs are placed into sparse N-sized matrices
-by static nonzero indexing, and the chain rule through the step's intermediates is a few
-sparse matrix products whose patterns CasADi fixes when the kernel is built. With
-z = (Z, lambda, nu) (body unknowns, joint multipliers at the start and at the end of the
-step), per body k
+the bodies or a joint group's instances. The chain rule through the step's intermediates is
+carried out on the blocks (hpgen.derive.sparse_blocks): every product of a block-diagonal or
+per-joint factor with an intermediate is one mapped SX function of small dense blocks (the
+intermediate's rows gathered per body or joint), and every sum is a static gather of the
+terms' nonzeros, so the generated code has no generic sparse product, projection or
+transpose of N-sized matrices. With z = (Z, lambda, nu) (body unknowns, joint multipliers
+at the start and at the end of the step), per body k
 
     Q_k = P_k - sum_j Phi_{j,k}(g)^T lambda_j                      (impulses)
     F_k, g1_k, P1m_k = body step(Z_k, g_k, Q_k)
@@ -28,45 +30,28 @@ CasADi's directional derivatives of the whole mapped step.
 from __future__ import annotations
 
 import casadi as ca
-import numpy as np
+
+from .sparse_blocks import Entries, assemble, block_products
 
 CALL = {"never_inline": True, "jac_penalty": 0}
 
 
 def _jacobian_function(f, pairs, name):
     """SX Function of f's inputs -> [d out_o / d in_i for (o, i) in pairs] (CasADi's SX AD
-    on f's own expression graph, one factory per block, inlined into one function)."""
+    on f's own expression graph). The blocks of the column outputs come from one factory, so
+    that they share f's forward evaluation and their common subexpressions; a matrix
+    output's blocks one factory each (CasADi's factory refuses several for a matrix)."""
     args = [ca.SX.sym(f"a{i}", f.sparsity_in(i)) for i in range(f.n_in())]
-    outs = [f.factory(f"{name}_{o}_{i}", f.name_in(),
-                      [f"jac:{f.name_out(o)}:{f.name_in(i)}"])(*args) for o, i in pairs]
-    return ca.Function(name, args, outs, CALL)
-
-
-def _place(M, sp_blk, places, shape):
-    """Sparse MX of ``shape``: the sum of the blocks B_t of M (M = [B_0, B_1, ...], each of
-    pattern sp_blk, as a map's output) at the offsets places[t] = (row, col). Blocks at the
-    same offset (a body in the same slot of two joints of one group) go to separate layers,
-    each a static gather and a sparsity cast."""
-    e = sp_blk.nnz()
-    br, bc = np.asarray(sp_blk.row()), np.asarray(sp_blk.get_col())
-    layers: list = []
-    for t, at in enumerate(places):
-        for layer in layers:
-            if at not in layer:
-                layer[at] = t
-                break
-        else:
-            layers.append({at: t})
-    out = ca.MX(*shape)
-    for layer in layers:
-        ts = list(layer.values())
-        rows = np.concatenate([places[t][0] + br for t in ts])
-        cols = np.concatenate([places[t][1] + bc for t in ts])
-        src = np.concatenate([np.arange(t * e, (t + 1) * e) for t in ts])
-        order = np.lexsort((rows, cols))            # the pattern's nonzeros in CCS order
-        sp = ca.Sparsity.triplet(shape[0], shape[1], rows.tolist(), cols.tolist())
-        out = out + ca.sparsity_cast(M.nz[src[order].tolist()], sp)
-    return out
+    groups: dict = {}
+    for o, i in pairs:
+        groups.setdefault(("c",) if f.size2_out(o) == 1 else (o, i), []).append((o, i))
+    blocks = {}
+    for key, group in groups.items():
+        jf = f.factory(f"{name}_{'_'.join(map(str, key))}", f.name_in(),
+                       [f"jac:{f.name_out(o)}:{f.name_in(i)}" for o, i in group])
+        out = jf(*args)
+        blocks.update(zip(group, [out] if len(group) == 1 else out))
+    return ca.Function(name, args, [blocks[pair] for pair in pairs], CALL)
 
 
 def _joint_jacobians(fun, K: int, rows: int):
@@ -114,22 +99,22 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
                             f"{st['U'].name()}_blocks")
     hv = parts["hv"]              # the step vector of an open model, else h
     outs = [*bf.map(N)(Z, G, Q, hv, I), *bu.map(N)(Z, G, Q, hv, I)]
-    sps = [bf.sparsity_out(0), bf.sparsity_out(1), *[bu.sparsity_out(k) for k in range(4)]]
+    sp = [bf.sparsity_out(0), bf.sparsity_out(1), *[bu.sparsity_out(k) for k in range(4)]]
 
-    def diag(k, a, b):
-        # block t at (t a, t b): the map's nonzeros are already in the CCS order
-        return ca.sparsity_cast(outs[k], ca.diagcat(*[sps[k]] * N))
-    FZ, FQ = diag(0, nzb, nzb), diag(1, nzb, db)
-    GZ, GQ = diag(2, nb2, nzb), diag(3, nb2, db)
-    PZ, PQ = diag(4, db, nzb), diag(5, db, db)
+    def diag(k):
+        # body t's block at (t a, t b): the map's nonzeros are already in the CCS order
+        return Entries.of(ca.sparsity_cast(outs[k], ca.diagcat(*[sp[k]] * N)))
     vj = _jacobian_function(parts["velocity"], [(0, 0), (0, 1)], "body_velocity_blocks")
-    VG, VP = vj.map(N)(G1, P1, I, Hinv, *([] if parts["e1"] is None else [parts["e1"]]))
-    VG = ca.sparsity_cast(VG, ca.diagcat(*[vj.sparsity_out(0)] * N))
-    VP = ca.sparsity_cast(VP, ca.diagcat(*[vj.sparsity_out(1)] * N))
 
-    A, B = ca.MX(db * N, m), ca.MX(db * N, m)
-    Kg = ca.MX(db * N, nb2 * N)
-    Pg, Hg, Hv = ca.MX(m, nb2 * N), ca.MX(m, nb2 * N), ca.MX(m, db * N)
+    def brows(u, w):                  # body u's rows in a matrix of w rows per body
+        return range(u * w, (u + 1) * w)
+
+    def per_body(M, sp, w_out, w_in):
+        return [(M, sp)], [(brows(u, w_out), [brows(u, w_in)]) for u in range(N)]
+
+    nzc = zc + 2 * m                                      # the columns of J
+    tA, tB = [], []
+    kg, pg, hg, hv_ = [], [], [], []    # (xs, entities) of the joints' products
     for key, js in parts["groups"]:
         first = joints[js[0]]
         K, rows = len(first.bodies), len(first.rows)
@@ -142,29 +127,53 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
         o_old = [o_old] if K == 1 else o_old
         o_new = new.map(len(js))(*[G1[:, c] for c in cols], Ij, nu, *[V[:, c] for c in cols])
         at = [int(rowoff[j]) for j in js]
+        jrows = [range(a, a + rows) for a in at]
 
-        def put(M, k, f, rb, cb, shape):
-            return _place(M, f.sparsity_out(k), list(zip(rb, cb)), shape)
+        def out(k):
+            return (o_new[k], new.sparsity_out(k))
         for s in range(K):
             bs = cols[s]
-            A = A + put(o_old[s], s, old, [b * db for b in bs], at, (db * N, m))
-            Pg = Pg + put(o_new[s], s, new, at, [b * nb2 for b in bs], (m, nb2 * N))
-            for t in range(K):
-                k = K + s * K + t
-                Kg = Kg + put(o_new[k], k, new, [b * db for b in bs],
-                              [b * nb2 for b in cols[t]], (db * N, nb2 * N))
+            tA.append(Entries.blocks(o_old[s], old.sparsity_out(s),
+                                     [(b * db, a) for b, a in zip(bs, at)]))
             k = K + K * K + s
-            B = B + put(o_new[k], k, new, [b * db for b in bs], at, (db * N, m))
-            k = 2 * K + K * K + s
-            Hg = Hg + put(o_new[k], k, new, at, [b * nb2 for b in bs], (m, nb2 * N))
-            k = 3 * K + K * K + s
-            Hv = Hv + put(o_new[k], k, new, at, [b * db for b in bs], (m, db * N))
+            tB.append(Entries.blocks(-o_new[k], new.sparsity_out(k),
+                                     [(b * db, zc + m + a) for b, a in zip(bs, at)]))
+            # d(Phi_s^T nu)/d g1 of the joint's bodies, into body b(j, s)'s rows of dP1
+            kg.append(([out(K + s * K + t) for t in range(K)],
+                       [(brows(cols[s][e], db), [brows(cols[t][e], nb2) for t in range(K)])
+                        for e in range(len(js))]))
 
-    dG1 = ca.horzcat(GZ, -ca.mtimes(GQ, A), ca.MX(nb2 * N, m))
-    dP1 = (ca.horzcat(PZ, -ca.mtimes(PQ, A), ca.MX(db * N, m)) - ca.mtimes(Kg, dG1)
-           - ca.horzcat(ca.MX(db * N, zc + m), B))
-    dV = ca.mtimes(VG, dG1) + ca.mtimes(VP, dP1)
-    dF = ca.horzcat(FZ, -ca.mtimes(FQ, A), ca.MX(zc, m))
-    dphi = ca.mtimes(Pg, dG1) / h
-    dhid = ca.mtimes(Hg, dG1) + ca.mtimes(Hv, dV)
-    return ca.vertcat(dF, dphi, dhid)
+        def of_slots(w):              # each joint's rows from its slots' body rows
+            return [(jrows[e], [brows(cols[s][e], w) for s in range(K)])
+                    for e in range(len(js))]
+        pg.append(([out(s) for s in range(K)], of_slots(nb2)))
+        hg.append(([out(2 * K + K * K + s) for s in range(K)], of_slots(nb2)))
+        hv_.append(([out(3 * K + K * K + s) for s in range(K)], of_slots(db)))
+    A = assemble(tA, (db * N, m))
+
+    def neg(t):
+        return Entries(-t.values, t.rows, t.cols)
+
+    def times_A(k, w):                # -(X_body A) at the lambda columns
+        t = block_products(*per_body(outs[k], sp[k], w, db), A, f"{st['F'].name()}_dA{k}")
+        return Entries(-t.values, t.rows, t.cols + zc)
+
+    # the chain rule: block products (mapped SX) and sums of Entries (static gathers)
+    cache: dict = {}
+    dG1 = assemble([diag(2), times_A(3, nb2)], (nb2 * N, nzc))
+    tKg = [neg(block_products(xs, ents, dG1, f"joint_kick_dg{q}", cache))
+           for q, (xs, ents) in enumerate(kg)]
+    dP1 = assemble([diag(4), times_A(5, db), *tKg, *tB], (db * N, nzc))
+    vg, vp = vj.map(N)(G1, P1, I, Hinv, *([] if parts["e1"] is None else [parts["e1"]]))
+    dV = assemble([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, "vel_dg"),
+                   block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1, "vel_dp")],
+                  (db * N, nzc))
+
+    def joint_rows(plan, Y, what, row0):
+        ts = [block_products(xs, ents, Y, f"joint_{what}{q}", cache) for q, (xs, ents) in
+              enumerate(plan)]
+        return [Entries(t.values, t.rows + row0, t.cols) for t in ts]
+    dphi = [Entries(t.values / h, t.rows, t.cols) for t in joint_rows(pg, dG1, "phi", zc)]
+    return assemble([diag(0), times_A(1, nzb), *dphi,
+                     *joint_rows(hg, dG1, "hg", zc + m), *joint_rows(hv_, dV, "hv", zc + m)],
+                    (nzc, nzc))

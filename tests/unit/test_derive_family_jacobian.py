@@ -64,16 +64,55 @@ def test_assembled_jacobian_does_not_grow_with_the_bodies():
     assert sizes[0] == sizes[1]
 
 
-def test_blocks_at_the_same_place_add_up():
-    from hpgen.derive.family_jacobian import _place
+def test_entries_at_the_same_place_add_up():
+    from hpgen.derive.sparse_blocks import Entries, assemble
     sp = ca.Sparsity.lower(2)
     vals = np.arange(1.0, 1.0 + 3 * sp.nnz())
     M = ca.MX.sym("M", ca.horzcat(*[ca.DM(sp, 1.0)] * 3).sparsity())
     places = [(0, 0), (2, 1), (0, 0)]
-    f = ca.Function("f", [M], [_place(M, sp, places, (4, 3))])
-    got = np.array(ca.densify(f(ca.DM(M.sparsity(), vals))))
+    extra = ca.MX.sym("e", 2)
+    terms = [Entries.blocks(M, sp, places), Entries(extra, [3, 0], [0, 2])]
+    f = ca.Function("f", [M, extra], [assemble(terms, (4, 3))])
+    got = np.array(ca.densify(f(ca.DM(M.sparsity(), vals), [10.0, 20.0])))
     want = np.zeros((4, 3))
     for t, (r, c) in enumerate(places):
         block = np.array(ca.densify(ca.DM(sp, vals[3 * t:3 * t + 3])))
         want[r:r + 2, c:c + 2] += block
+    want[3, 0] += 10.0
+    want[0, 2] += 20.0
     assert np.array_equal(got, want)
+    assert f.sparsity_out(0) == ca.Sparsity.triplet(4, 3, [0, 1, 1, 2, 3, 3, 3, 0],
+                                                    [0, 0, 1, 1, 1, 2, 0, 2])
+
+
+@pytest.mark.parametrize("last", [0, 3])
+def test_block_products_equal_the_sparse_product(last):
+    """sum_e sum_s X_{e,s} Y[rows] at out rows against the same product written with dense
+    numpy matrices, at random values; overlapping output rows add up. Y's last entry in
+    column 0 makes the slots of entity 2 share a column (one block over the union), in
+    column 3 every entity's slots read disjoint columns (a block per slot)."""
+    from hpgen.derive.sparse_blocks import _disjoint_slots, assemble, block_products
+    rng = np.random.default_rng(3)
+    spx = [ca.Sparsity.lower(3), ca.Sparsity.dense(3, 3)]
+    ysp = ca.Sparsity.triplet(9, 5, [0, 1, 2, 3, 4, 6, 7, 8, 8], [0, 1, 1, 2, 2, 3, 4, last, 4])
+    Y = ca.MX.sym("Y", ysp)
+    E = 3
+    Ms = [ca.MX.sym(f"M{s}", ca.horzcat(*[ca.DM(sp, 1.0)] * E).sparsity()) for s, sp in
+          enumerate(spx)]
+    body = [[0, 1], [1, 2], [2, 0]]                # entity e's slots: bodies of 3 rows
+    out = [range(0, 3), range(3, 6), range(0, 3)]  # entities 0 and 2 share their rows
+    ents = [(out[e], [range(3 * b, 3 * b + 3) for b in body[e]]) for e in range(E)]
+    assert _disjoint_slots(Y, [ys for _, ys in ents]) == (last == 3)
+    C = assemble([block_products(list(zip(Ms, spx)), ents, Y, "bp")], (6, 5))
+    f = ca.Function("f", [*Ms, Y], [C])
+    xv = [rng.standard_normal(M.nnz()) for M in Ms]
+    yv = rng.standard_normal(ysp.nnz())
+    got = np.array(ca.densify(f(*[ca.DM(M.sparsity(), v) for M, v in zip(Ms, xv)],
+                                ca.DM(ysp, yv))))
+    Yd = np.array(ca.densify(ca.DM(ysp, yv)))
+    want = np.zeros((6, 5))
+    for e in range(E):
+        for s, sp in enumerate(spx):
+            X = np.array(ca.densify(ca.DM(sp, xv[s][e * sp.nnz():(e + 1) * sp.nnz()])))
+            want[list(out[e])] += X @ Yd[3 * body[e][s]:3 * body[e][s] + 3]
+    assert np.abs(got - want).max() <= 1e-14 * np.abs(want).max()
