@@ -34,6 +34,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from typing import NamedTuple
 from pathlib import Path
 
 import numpy as np
@@ -74,11 +75,21 @@ def band(E, spec):
     return float(np.abs(E - E[0]).max() / (E[0] - chain.rest_potential(spec)))
 
 
-def hpgen_run(integ, spec, g0, xi0, h, steps, chunk=20_000, newton=None):
-    """(seconds of stepping, energies at every node, (position, velocity) gaps, final
-    ChainState) of ``steps`` steps of h, streamed in chunks (newton: NewtonOptions or None,
-    the module's default)."""
-    energies, gaps, seconds = [], np.zeros(2), 0.0
+class HpgenRun(NamedTuple):
+    """A streamed hpgen run: wall seconds of stepping, the energy at every node (J, potential
+    zero at the pin), the joints' largest (position, velocity) gaps, the final ChainState and
+    the Newton iterations over all steps."""
+    seconds: float
+    energy: np.ndarray
+    gaps: np.ndarray
+    last: chain.ChainState
+    iterations: int
+
+
+def hpgen_run(integ, spec, g0, xi0, h, steps, chunk=20_000, newton=None, frames="pin"):
+    """``steps`` steps of h streamed in chunks (newton: NewtonOptions or None, the module's
+    default; frames: the model's, hpgen_chain's ``"pin"`` or ``"centre"``) -> HpgenRun."""
+    energies, gaps, seconds, iterations = [], np.zeros(2), 0.0, 0
     stream = integ.stream(g0, h, steps, xi0=xi0, chunk=chunk, newton=newton)
     last = None
     while True:
@@ -87,12 +98,13 @@ def hpgen_run(integ, spec, g0, xi0, h, steps, chunk=20_000, newton=None):
         seconds += time.perf_counter() - start
         if part is None:
             break
-        states = hpgen_chain.from_hpgen(spec, part.g, part.xi())
+        iterations += int(part.newton_iterations)
+        states = hpgen_chain.from_hpgen(spec, part.g, part.xi(), frames)
         energies.append([sum(chain.energy(spec, s)) for s in states])
         gaps = np.maximum(gaps, np.max([chain.constraint_residual(spec, s) for s in states],
                                        axis=0))
         last = states[-1]
-    return seconds, np.concatenate(energies), gaps, last
+    return HpgenRun(seconds, np.concatenate(energies), gaps, last, iterations)
 
 
 def peer_run(peer, spec, qpos, qvel, dt, steps):
@@ -112,8 +124,9 @@ def work_precision(integ, spec, peers, qpos, qvel, g0, xi0, hs, ref):
     for h in hs:
         steps = int(round(1.0 / h))
         h = 1.0 / steps
-        sec, E, _, last = hpgen_run(integ, spec, g0, xi0, h, steps)
-        rows.append(("hpgen SV", h, sec, chain.trajectory_error(last, ref), band(E, spec), True))
+        r = hpgen_run(integ, spec, g0, xi0, h, steps)
+        rows.append(("hpgen SV", h, r.seconds, chain.trajectory_error(r.last, ref),
+                     band(r.energy, spec), True))
         for peer in peers:
             run = peer_run(peer, spec, qpos, qvel, h, steps)
             err = chain.trajectory_error(peer_final(spec, run), ref) if run.stable else np.nan
@@ -180,9 +193,10 @@ def main(argv=None):
         hpgen_chain.check_parameters(spec, model)
         qpos, qvel = chain.initial_joint_state(spec)
         g0, xi0 = hpgen_chain.to_hpgen(spec, chain.from_joint(spec, qpos, qvel))
-        sec, E, gaps, _ = hpgen_run(integ, spec, g0, xi0, args.dt, args.steps)
-        rows = [dict(runner="hpgen SV", us_per_step=1e6 * sec / args.steps, band=band(E, spec),
-                     gaps=gaps.tolist(), stable=True, compile_s=compile_s)]
+        r = hpgen_run(integ, spec, g0, xi0, args.dt, args.steps)
+        rows = [dict(runner="hpgen SV", us_per_step=1e6 * r.seconds / args.steps,
+                     band=band(r.energy, spec), gaps=r.gaps.tolist(), stable=True,
+                     compile_s=compile_s)]
         for peer in args.peers:
             run = peer_run(peer, spec, qpos, qvel, args.dt, args.steps)
             rows.append(dict(runner=peer, us_per_step=1e6 * run.seconds / args.steps,
