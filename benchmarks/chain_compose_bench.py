@@ -21,6 +21,7 @@ Per N every runner integrates to T = ``--t``:
   the same divided by |E_0| (potential zero at the pin);
 - hpgen: the joints' largest position / velocity gaps and the error at T = 1 against the
   reference (DOP853 at 1e-13 on the reduced equations), a check of the order;
+- a run whose Newton fails (h too large for the motion) is reported on one line and left out;
 - at equal cost: MuJoCo RK4's band interpolated (log-log, between its dt) at the hpgen row's
   cost, and the ratio hpgen band / RK4 band (below 1: hpgen has the smaller error).
 MuJoCo (the peers extra) is skipped when it is not installed. Speed figures are ratios within
@@ -72,10 +73,15 @@ def compile_options(name):
 def hpgen_rows(integ, label, spec, frames, g0, xi0, hs, T, ref, newton=None):
     """Rows for ``integ`` at each h of ``hs``: runs to T (cost, band) and to 1 (error);
     newton: NewtonOptions or None (the module's default)."""
+    from hpgen.errors import ConvergenceError
     rows = []
     for h in hs:
         steps = int(round(T / h))
-        r = hpgen_run(integ, spec, g0, xi0, T / steps, steps, newton=newton, frames=frames)
+        try:
+            r = hpgen_run(integ, spec, g0, xi0, T / steps, steps, newton=newton, frames=frames)
+        except ConvergenceError as exc:
+            print(f"| {label} | {h:g} | Newton failed: {str(exc).split(';')[0]} |", flush=True)
+            continue
         n1 = int(round(1.0 / h))
         tr = integ.simulate(g0, 1.0 / n1, n1, xi0=xi0, every=n1, newton=newton)
         last = hpgen_chain.from_hpgen(spec, tr.g[-1:], tr.xi()[-1:], frames)[0]

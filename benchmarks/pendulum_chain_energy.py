@@ -16,7 +16,8 @@ Per (N, start) and model: hpgen runs ``steps`` steps of h (T = steps h), streame
 - band: max_k |E_k - E_0| over every node divided (1) by E_0 - V_rest (V_rest: the chain at
   rest; the energy above the minimum, independent of where the potential's zero is) and (2) by
   |E_0| with the potential zero at the pin (MuJoCo's own energy);
-- drift: max |E_k - E_0| / (E_0 - V_rest) over the first and over the last tenth of the run;
+- drift: max |E_k - E_0| / (E_0 - V_rest) over the first and over the last tenth of the run,
+  and the least-squares line through E_k - E_0 over the run: its rise over T, / (E_0 - V_rest);
 - joints: the largest position and velocity gaps over every node (chain.constraint_residual);
 - Newton iterations per step and wall time per step (the stream's stepping alone);
 - cond H: the largest condition number of a link's 6 x 6 kinetic metric d2l/dxi2 (body
@@ -56,19 +57,21 @@ def kinetic_condition(spec, frames):
 
 
 def energy_figures(E, spec):
-    """(band / (E0 - V_rest), band / |E0|, first tenth, last tenth) of node energies E."""
+    """(band / (E0 - V_rest), band / |E0|, first tenth, last tenth, the fitted line's rise
+    over the run / (E0 - V_rest)) of node energies E (equally spaced in time)."""
     E = np.asarray(E)
     dev = np.abs(E - E[0])
     above = E[0] - chain.rest_potential(spec)
     tenth = max(1, len(E) // 10)
+    slope = np.polyfit(np.linspace(0.0, 1.0, len(E)), E - E[0], 1)[0]
     return (dev.max() / above, dev.max() / abs(E[0]), dev[:tenth].max() / above,
-            dev[-tenth:].max() / above)
+            dev[-tenth:].max() / above, slope / above)
 
 
 def row(n, start, runner, dt, steps, c, figs, extra):
-    b_rest, b_abs, first, last = figs
+    b_rest, b_abs, first, last, rise = figs
     return (f"| {n} | {start} | {runner} | {dt:.3g} | {steps} | {1e6 * c:.1f} | "
-            f"{b_rest:.2e} | {b_abs:.2e} | {first:.1e} / {last:.1e} | {extra} |")
+            f"{b_rest:.2e} | {b_abs:.2e} | {first:.1e} / {last:.1e}; {rise:+.1e} | {extra} |")
 
 
 def main(argv=None):
@@ -83,7 +86,7 @@ def main(argv=None):
     import hpgen
     from hpgen.bench.multibody import mujoco_peer
     print("| N | start | runner | dt | steps | us/step | band / (E0 - V_rest) | band / abs(E0) "
-          "| first / last tenth | joints (pos / vel); it/step; cond H |")
+          "| first / last tenth; line's rise | joints (pos / vel); it/step; cond H |")
     print("|---|---|---|---|---|---|---|---|---|---|", flush=True)
     for n in args.n:
         spec = chain.ChainSpec(n)
