@@ -88,3 +88,25 @@ def test_a_compile_over_the_budget_is_stopped(tmp_path):
     spec.loader.exec_module(bench)
     assert bench.cold_compile(2, tmp_path / "cache", budget=0.2) is None
     assert not list((tmp_path / "cache").glob("*/meta.json"))
+
+
+def _load(name):
+    spec = importlib.util.spec_from_file_location(name, ROOT / "benchmarks" / f"{name}.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_compose_bench_runs_and_equal_cost_interpolation():
+    bench = _load("chain_compose_bench")
+    assert bench.parse_run("kahan-li6:2e-2,1e-2") == ("kahan-li6", [2e-2, 1e-2])
+    assert bench.compile_options("gauss2") == dict(tableau="gauss2", tau="cay", rkmk="exact")
+    assert bench.compile_options("suzuki4") == dict(compose="suzuki4")
+    for bad in ("rk4:1e-3", "sv:", "sv:-1e-3", "suzuki4:x"):
+        with pytest.raises(SystemExit, match="--runs"):
+            bench.parse_run(bad)
+    rk4 = [dict(cost=c, band=b, stable=True) for c, b in ((0.1, 1e-10), (0.01, 1e-6))]
+    rk4.append(dict(cost=0.001, band=1.0, stable=False))            # unstable: left out
+    # log-log: halfway in log cost is halfway in log band
+    assert bench.rk4_band_at(np.sqrt(0.1 * 0.01), rk4) == pytest.approx(1e-8, rel=1e-12)
+    assert bench.rk4_band_at(0.005, rk4) is None
