@@ -4,7 +4,7 @@ at several dt, one table of cost per simulated second against energy band.
 
     PYTHONPATH=. python benchmarks/chain_compose_bench.py [--n 10] [--t 100]
         [--runs sv:1e-3,5e-4 suzuki4:1e-2,5e-3 kahan-li6:2e-2,1e-2 gauss2:1e-2]
-        [--rk4-dt 1e-3 2e-3 4e-3 8e-3 1.6e-2] [--frames centre] [--start random]
+        [--rk4-dt 2.5e-4 5e-4 1e-3 2e-3 4e-3 8e-3] [--frames centre] [--start random]
         [--newton default] [--out DIR]
 
 ``--runs``: NAME:H,H,... with NAME ``sv`` (the model's constrained Stormer-Verlet), a
@@ -23,7 +23,8 @@ Per N every runner integrates to T = ``--t``:
   reference (DOP853 at 1e-13 on the reduced equations), a check of the order;
 - a run whose Newton fails (h too large for the motion) is reported on one line and left out;
 - at equal cost: MuJoCo RK4's band interpolated (log-log, between its dt) at the hpgen row's
-  cost, and the ratio hpgen band / RK4 band (below 1: hpgen has the smaller error).
+  cost, and the ratio hpgen band / RK4 band (below 1: hpgen has the smaller error); and
+  RK4's cost at the hpgen row's band, and the ratio of costs (below 1: hpgen is cheaper).
 MuJoCo (the peers extra) is skipped when it is not installed. Speed figures are ratios within
 one run on one machine. Results: the table on stdout and OUT/chain_compose.json.
 """
@@ -122,19 +123,32 @@ def rk4_band_at(cost, rk4):
     return float(np.exp(np.interp(np.log(cost), c, b)))
 
 
+def rk4_cost_at(band_value, rk4):
+    """MuJoCo RK4's cost per simulated second at an energy band (log-log interpolation between
+    its stable rows), or None outside their range."""
+    pts = sorted((r["band"], r["cost"]) for r in rk4 if r["stable"] and r["band"] > 0)
+    if len(pts) < 2 or not pts[0][0] <= band_value <= pts[-1][0]:
+        return None
+    b, c = np.log([p[0] for p in pts]), np.log([p[1] for p in pts])
+    return float(np.exp(np.interp(np.log(band_value), b, c)))
+
+
 def _line(r):
     hp = "error_T1" in r
     extra = (f"{r['error_T1']:.2e} | {r['iterations_per_step']:.1f} | "
              f"{r['gaps'][0]:.0e} / {r['gaps'][1]:.0e}" if hp else "- | - | -")
     eq = r.get("rk4_band_at_cost")
     eq = "-" if eq is None else f"{eq:.1e} ({r['band'] / eq:.2g})"
+    eqc = r.get("rk4_cost_at_band")
+    eq += " | " + ("-" if eqc is None else f"{1e3 * eqc:.1f} ({r['cost'] / eqc:.2g})")
     return (f"| {r['runner']} | {r['h']:g} | {1e3 * r['cost']:.1f} | {r['band']:.2e}"
             f"{'' if r['stable'] else ' (unstable)'} | {r['band_abs']:.2e} | {extra} | {eq} |")
 
 
 HEADER = ("| runner | h | ms per simulated s | band / (E0 - V_rest) | band / abs(E0) | "
           "error at T = 1 | Newton it/step | joints (pos / vel) | RK4 band at equal cost "
-          "(hpgen / RK4) |\n|---|---|---|---|---|---|---|---|---|")
+          "(hpgen / RK4) | RK4 ms per s at equal band (hpgen / RK4) |\n"
+          "|---|---|---|---|---|---|---|---|---|---|")
 
 
 def main(argv=None):
@@ -142,7 +156,8 @@ def main(argv=None):
     ap.add_argument("--n", type=int, nargs="+", default=[10])
     ap.add_argument("--t", type=float, default=100.0, help="simulated seconds per run")
     ap.add_argument("--runs", nargs="+", default=DEFAULT_RUNS, help="NAME:H,H,... (see above)")
-    ap.add_argument("--rk4-dt", type=float, nargs="+", default=[1e-3, 2e-3, 4e-3, 8e-3, 1.6e-2])
+    ap.add_argument("--rk4-dt", type=float, nargs="+",
+                    default=[2.5e-4, 5e-4, 1e-3, 2e-3, 4e-3, 8e-3])
     ap.add_argument("--frames", choices=sorted(hpgen_chain.MODELS), default="centre")
     ap.add_argument("--start", default="random", help="chain.named_joint_state's name")
     ap.add_argument("--out", type=Path, default=Path("bench-chain-compose"))
@@ -180,6 +195,7 @@ def main(argv=None):
         print(f"\nN = {n}: at equal cost\n\n{HEADER}")
         for r in rows:
             r["rk4_band_at_cost"] = rk4_band_at(r["cost"], rk4)
+            r["rk4_cost_at_band"] = rk4_cost_at(r["band"], rk4)
             print(_line(r))
         for r in rk4:
             print(_line(r))

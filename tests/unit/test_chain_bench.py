@@ -110,3 +110,5 @@ def test_compose_bench_runs_and_equal_cost_interpolation():
     # log-log: halfway in log cost is halfway in log band
     assert bench.rk4_band_at(np.sqrt(0.1 * 0.01), rk4) == pytest.approx(1e-8, rel=1e-12)
     assert bench.rk4_band_at(0.005, rk4) is None
+    assert bench.rk4_cost_at(1e-8, rk4) == pytest.approx(np.sqrt(0.1 * 0.01), rel=1e-12)
+    assert bench.rk4_cost_at(1e-4, rk4) is None
