@@ -1,11 +1,12 @@
-"""The N-link pendulum chain (examples/pendulum_chain.yaml: SE3^N, ball joints as holonomic
-constraints, constrained Stormer-Verlet) against MuJoCo (RK4, Euler, implicitfast through
+"""The N-link pendulum chain (examples/capsule_chain.yaml, ``--frames pin``
+examples/pendulum_chain.yaml: SE3^N, ball joints as holonomic constraints, constrained
+Stormer-Verlet) against MuJoCo (RK4, Euler, implicitfast through
 mujoco.rollout) and Pinocchio (RKMK4, accelerations by CRBA + Cholesky; ABA on request) in
 one run, for N in a list, with a work-precision figure per N.
 
     PYTHONPATH=. python benchmarks/chain_bench.py [--n 2 4 8 16 32 64] [--budget 120]
         [--steps 100000] [--dt 1e-3] [--wp-h 4e-3 2e-3 1e-3 5e-4 2.5e-4] [--out bench-chain]
-        [--peers ...] [--quick]
+        [--peers ...] [--frames centre] [--quick]
 
 Per N (the chain of hpgen.bench.multibody.chain; start: hanging straight down, joint rates
 qvel ~ N(0, 1), seed 0):
@@ -34,6 +35,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from typing import NamedTuple
 from pathlib import Path
 
 import numpy as np
@@ -53,13 +55,13 @@ COMPILE = ("import sys, time, hpgen; n, cache = int(sys.argv[1]), sys.argv[2]; "
            "cache_dir=cache); print(time.perf_counter() - t)")
 
 
-def cold_compile(n, cache, budget):
+def cold_compile(n, cache, budget, model=hpgen_chain.CENTRE_MODEL):
     """Seconds of a cold hpgen.compile of the chain with N = n into ``cache``, or None when it
     exceeded ``budget`` (the subprocess is stopped)."""
     env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
     try:
         out = subprocess.run([sys.executable, "-c", COMPILE, str(n), str(cache),
-                              str(hpgen_chain.MODEL)], capture_output=True, text=True,
+                              str(model)], capture_output=True, text=True,
                              timeout=budget, cwd=ROOT, env=env)
     except subprocess.TimeoutExpired:
         return None
@@ -74,11 +76,21 @@ def band(E, spec):
     return float(np.abs(E - E[0]).max() / (E[0] - chain.rest_potential(spec)))
 
 
-def hpgen_run(integ, spec, g0, xi0, h, steps, chunk=20_000, newton=None):
-    """(seconds of stepping, energies at every node, (position, velocity) gaps, final
-    ChainState) of ``steps`` steps of h, streamed in chunks (newton: NewtonOptions or None,
-    the module's default)."""
-    energies, gaps, seconds = [], np.zeros(2), 0.0
+class HpgenRun(NamedTuple):
+    """A streamed hpgen run: wall seconds of stepping, the energy at every node (J, potential
+    zero at the pin), the joints' largest (position, velocity) gaps, the final ChainState and
+    the Newton iterations over all steps."""
+    seconds: float
+    energy: np.ndarray
+    gaps: np.ndarray
+    last: chain.ChainState
+    iterations: int
+
+
+def hpgen_run(integ, spec, g0, xi0, h, steps, chunk=20_000, newton=None, frames="pin"):
+    """``steps`` steps of h streamed in chunks (newton: NewtonOptions or None, the module's
+    default; frames: the model's, hpgen_chain's ``"pin"`` or ``"centre"``) -> HpgenRun."""
+    energies, gaps, seconds, iterations = [], np.zeros(2), 0.0, 0
     stream = integ.stream(g0, h, steps, xi0=xi0, chunk=chunk, newton=newton)
     last = None
     while True:
@@ -87,12 +99,13 @@ def hpgen_run(integ, spec, g0, xi0, h, steps, chunk=20_000, newton=None):
         seconds += time.perf_counter() - start
         if part is None:
             break
-        states = hpgen_chain.from_hpgen(spec, part.g, part.xi())
+        iterations += int(part.newton_iterations)
+        states = hpgen_chain.from_hpgen(spec, part.g, part.xi(), frames)
         energies.append([sum(chain.energy(spec, s)) for s in states])
         gaps = np.maximum(gaps, np.max([chain.constraint_residual(spec, s) for s in states],
                                        axis=0))
         last = states[-1]
-    return seconds, np.concatenate(energies), gaps, last
+    return HpgenRun(seconds, np.concatenate(energies), gaps, last, iterations)
 
 
 def peer_run(peer, spec, qpos, qvel, dt, steps):
@@ -106,14 +119,15 @@ def peer_final(spec, run):
     return chain.from_joint(spec, run.qpos, run.qvel)
 
 
-def work_precision(integ, spec, peers, qpos, qvel, g0, xi0, hs, ref):
+def work_precision(integ, spec, peers, qpos, qvel, g0, xi0, hs, ref, frames="centre"):
     """Rows (runner, h, seconds, error at T = 1, energy band on [0, 1], stable)."""
     rows = []
     for h in hs:
         steps = int(round(1.0 / h))
         h = 1.0 / steps
-        sec, E, _, last = hpgen_run(integ, spec, g0, xi0, h, steps)
-        rows.append(("hpgen SV", h, sec, chain.trajectory_error(last, ref), band(E, spec), True))
+        r = hpgen_run(integ, spec, g0, xi0, h, steps, frames=frames)
+        rows.append(("hpgen SV", h, r.seconds, chain.trajectory_error(r.last, ref),
+                     band(r.energy, spec), True))
         for peer in peers:
             run = peer_run(peer, spec, qpos, qvel, h, steps)
             err = chain.trajectory_error(peer_final(spec, run), ref) if run.stable else np.nan
@@ -156,6 +170,8 @@ def main(argv=None):
     ap.add_argument("--wp-h", type=float, nargs="+", default=[4e-3, 2e-3, 1e-3, 5e-4, 2.5e-4])
     ap.add_argument("--peers", nargs="*", default=list(DEFAULT_PEERS), choices=PEERS)
     ap.add_argument("--out", type=Path, default=Path("bench-chain"))
+    ap.add_argument("--frames", choices=sorted(hpgen_chain.MODELS), default="centre",
+                    help="hpgen's model file: frames at the link centres or at the pin")
     ap.add_argument("--quick", action="store_true",
                     help="a smoke run: 2000 long steps, two work-precision step sizes")
     args = ap.parse_args(argv)
@@ -164,31 +180,34 @@ def main(argv=None):
     import hpgen
     from hpgen.model import load_model
     args.out.mkdir(parents=True, exist_ok=True)
-    model = load_model(hpgen_chain.MODEL)
+    path = hpgen_chain.MODELS[args.frames]
+    model = load_model(path)
     table, report = [], {"dt": args.dt, "steps": args.steps, "budget": args.budget, "N": []}
     for n in sorted(args.n):
         spec = chain.ChainSpec(n)
         with tempfile.TemporaryDirectory(prefix="hpgen-cold-") as cache:
-            compile_s = cold_compile(n, cache, args.budget)
+            compile_s = cold_compile(n, cache, args.budget, path)
             if compile_s is None:
                 skipped = [m for m in sorted(args.n) if m >= n]
                 print(f"N = {n}: the cold compile exceeded the budget of {args.budget:g} s; "
                       f"skipped N = {', '.join(map(str, skipped))}", flush=True)
                 report["skipped"] = skipped
                 break
-            integ = hpgen.compile(hpgen_chain.MODEL, parameters={"N": n}, cache_dir=cache)
-        hpgen_chain.check_parameters(spec, model)
+            integ = hpgen.compile(path, parameters={"N": n}, cache_dir=cache)
+        hpgen_chain.check_parameters(spec, model, args.frames)
         qpos, qvel = chain.initial_joint_state(spec)
-        g0, xi0 = hpgen_chain.to_hpgen(spec, chain.from_joint(spec, qpos, qvel))
-        sec, E, gaps, _ = hpgen_run(integ, spec, g0, xi0, args.dt, args.steps)
-        rows = [dict(runner="hpgen SV", us_per_step=1e6 * sec / args.steps, band=band(E, spec),
-                     gaps=gaps.tolist(), stable=True, compile_s=compile_s)]
+        g0, xi0 = hpgen_chain.to_hpgen(spec, chain.from_joint(spec, qpos, qvel), args.frames)
+        r = hpgen_run(integ, spec, g0, xi0, args.dt, args.steps, frames=args.frames)
+        rows = [dict(runner="hpgen SV", us_per_step=1e6 * r.seconds / args.steps,
+                     band=band(r.energy, spec), gaps=r.gaps.tolist(), stable=True,
+                     compile_s=compile_s)]
         for peer in args.peers:
             run = peer_run(peer, spec, qpos, qvel, args.dt, args.steps)
             rows.append(dict(runner=peer, us_per_step=1e6 * run.seconds / args.steps,
                              band=band(run.energy, spec), stable=bool(run.stable)))
         ref = reference.solve(spec, qpos, qvel, [1.0]).final
-        wp = work_precision(integ, spec, args.peers, qpos, qvel, g0, xi0, args.wp_h, ref)
+        wp = work_precision(integ, spec, args.peers, qpos, qvel, g0, xi0, args.wp_h, ref,
+                            args.frames)
         figure = args.out / f"chain_wp_N{n}.png"
         plot(n, wp, figure)
         report["N"].append(dict(N=n, long=rows, work_precision=[

@@ -1,100 +1,124 @@
-"""Energy band of examples/pendulum_chain.yaml (constrained Stormer-Verlet, cay, truncated
-RKMK, C backend) against MuJoCo RK4 on the same chain (hpgen.bench.multibody), in one process.
+"""Energy band of the N-link pendulum chain in hpgen's two model files of it (constrained
+Stormer-Verlet, cay, truncated RKMK, C backend) against MuJoCo RK4 on the same chain
+(hpgen.bench.multibody), in one process.
 
-    PYTHONPATH=. python benchmarks/pendulum_chain_energy.py [--n 2 4] [--steps 100000]
-                                                          [--h 1e-3]
+    PYTHONPATH=. python benchmarks/pendulum_chain_energy.py [--n 10] [--steps 100000]
+        [--h 1e-3] [--frames pin centre] [--start random tilt60] [--cache-dir DIR]
 
-Start: the benchmark's (chain.initial_joint_state: hanging straight down, qvel ~ N(0, 1),
-seed 0), converted to the example's SE3^N state (its frames sit at the pin when the chain
-hangs straight: centre x_i + R_i (i + 1/2) b, b = (0, 0, -length); xi = (omega, v) in the
-body frame). hpgen runs ``steps`` steps of h (simulated time T = steps h); MuJoCo RK4 runs
-the same T (1) at dt = h and (2) at equal cost per simulated second: dt = h c_mj / c_hpgen
-with c the measured time per step (MuJoCo's from a 2000-step probe of its C rollout, hpgen's
-from its own run). Band: max_k |E_k - E_0| / (E_0 - V_rest), V_rest the potential energy of
-the chain at rest (chain_peers.py's normalisation). Also: the joints' largest position and
-velocity gaps over hpgen's recorded nodes (chain.constraint_residual), and hpgen.compile's
-wall time (cold unless the build cache already holds the module: use a fresh --cache-dir
-for cold figures).
+Models (``--frames``, hpgen.bench.multibody.hpgen_chain): ``pin`` examples/pendulum_chain.yaml
+(frames at the pin when the chain hangs straight), ``centre`` examples/capsule_chain.yaml
+(frames at the link centres). Starts (``--start``): ``random`` the benchmark's (hanging
+straight down, joint rates qvel ~ N(0, 1), seed 0; ``randomS`` seed S), ``tiltD`` the straight chain released at
+rest tilted by D degrees about the world x axis (chain.named_joint_state). The same joint
+state is mapped to each model (hpgen_chain.to_hpgen).
+
+Per (N, start) and model: hpgen runs ``steps`` steps of h (T = steps h), streamed; figures:
+- band: max_k |E_k - E_0| over every node divided (1) by E_0 - V_rest (V_rest: the chain at
+  rest; the energy above the minimum, independent of where the potential's zero is) and (2) by
+  |E_0| with the potential zero at the pin (MuJoCo's own energy);
+- drift: max |E_k - E_0| / (E_0 - V_rest) over the first and over the last tenth of the run,
+  and the least-squares line through E_k - E_0 over the run: its rise over T, / (E_0 - V_rest);
+- joints: the largest position and velocity gaps over every node (chain.constraint_residual);
+- Newton iterations per step and wall time per step (the stream's stepping alone);
+- cond H: the largest condition number of a link's 6 x 6 kinetic metric d2l/dxi2 (body
+  inertia in the model's frame).
+MuJoCo RK4 (its C rollout) runs the same T at dt = h and at equal cost per simulated second
+(dt = h c_mujoco / c_hpgen, c the time per step: MuJoCo's from a 2000-step probe, hpgen's the
+cheaper model's), its energy every 10 steps. Speed figures are ratios within one run.
 """
 from __future__ import annotations
 
 import argparse
+import sys
 import time
 from pathlib import Path
 
 import numpy as np
 
-import hpgen
-from hpgen.bench.multibody import chain, mujoco_peer
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "benchmarks"))
 
-MODEL = Path(__file__).resolve().parents[1] / "examples" / "pendulum_chain.yaml"
-
-
-def to_hpgen(spec, s):
-    """(g (4N x 4N), xi (6N,)) of a chain.ChainState in the example's frames."""
-    n, b = spec.n, np.array([0.0, 0.0, -spec.length])
-    g, xi = np.eye(4 * n), np.zeros(6 * n)
-    for i in range(n):
-        p = (i + 0.5) * b
-        g[4 * i:4 * i + 3, 4 * i:4 * i + 3] = s.R[i]
-        g[4 * i:4 * i + 3, 4 * i + 3] = s.x[i] - s.R[i] @ p
-        xi[6 * i:6 * i + 3] = s.omega[i]
-        xi[6 * i + 3:6 * i + 6] = s.R[i].T @ s.v[i] - np.cross(s.omega[i], p)
-    return g, xi
+from chain_bench import hpgen_run  # noqa: E402
+from hpgen.bench.multibody import chain, hpgen_chain  # noqa: E402
 
 
-def from_hpgen(spec, g, xi):
-    n, b = spec.n, np.array([0.0, 0.0, -spec.length])
-    R = np.array([g[4 * i:4 * i + 3, 4 * i:4 * i + 3] for i in range(n)])
-    w = np.array([xi[6 * i:6 * i + 3] for i in range(n)])
-    x = np.array([g[4 * i:4 * i + 3, 4 * i + 3] + R[i] @ ((i + 0.5) * b) for i in range(n)])
-    v = np.array([R[i] @ (xi[6 * i + 3:6 * i + 6] + np.cross(w[i], (i + 0.5) * b))
-                  for i in range(n)])
-    return chain.ChainState(R, x, w, v)
+def kinetic_condition(spec, frames):
+    """The largest condition number over the links of the 6 x 6 body inertia in the model's
+    frames: diag(J, m) at the centre, moved along the link by (i + 1/2) b for the pin frames."""
+    J, m = spec.inertia, spec.mass
+    offsets = (np.arange(spec.n) + 0.5) * spec.length if frames == "pin" else np.zeros(spec.n)
+    worst = 0.0
+    for d in offsets:
+        c = chain.hat(np.array([0.0, 0.0, -d]))
+        H = np.block([[np.diag(J) + m * c.T @ c, m * c.T], [m * c, m * np.eye(3)]])
+        worst = max(worst, float(np.linalg.cond(H)))
+    return worst
 
 
-def band(E, spec):
-    return np.abs(E - E[0]).max() / (E[0] - chain.rest_potential(spec))
+def energy_figures(E, spec):
+    """(band / (E0 - V_rest), band / |E0|, first tenth, last tenth, the fitted line's rise
+    over the run / (E0 - V_rest)) of node energies E (equally spaced in time)."""
+    E = np.asarray(E)
+    dev = np.abs(E - E[0])
+    above = E[0] - chain.rest_potential(spec)
+    tenth = max(1, len(E) // 10)
+    slope = np.polyfit(np.linspace(0.0, 1.0, len(E)), E - E[0], 1)[0]
+    return (dev.max() / above, dev.max() / abs(E[0]), dev[:tenth].max() / above,
+            dev[-tenth:].max() / above, slope / above)
+
+
+def row(n, start, runner, dt, steps, c, figs, extra):
+    b_rest, b_abs, first, last, rise = figs
+    return (f"| {n} | {start} | {runner} | {dt:.3g} | {steps} | {1e6 * c:.1f} | "
+            f"{b_rest:.2e} | {b_abs:.2e} | {first:.1e} / {last:.1e}; {rise:+.1e} | {extra} |")
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--n", type=int, nargs="+", default=[2, 4])
+    ap.add_argument("--n", type=int, nargs="+", default=[10])
     ap.add_argument("--steps", type=int, default=100_000)
     ap.add_argument("--h", type=float, default=1e-3)
+    ap.add_argument("--frames", nargs="+", default=["pin", "centre"], choices=["pin", "centre"])
+    ap.add_argument("--start", nargs="+", default=["random", "tilt60"])
     ap.add_argument("--cache-dir", default=None, help="hpgen's build cache (default its own)")
     args = ap.parse_args(argv)
-    print("| N | runner | dt | steps | us/step | us per simulated ms | energy band | joints |")
-    print("|---|---|---|---|---|---|---|---|")
+    import hpgen
+    from hpgen.bench.multibody import mujoco_peer
+    print("| N | start | runner | dt | steps | us/step | band / (E0 - V_rest) | band / abs(E0) "
+          "| first / last tenth; line's rise | joints (pos / vel); it/step; cond H |")
+    print("|---|---|---|---|---|---|---|---|---|---|", flush=True)
     for n in args.n:
         spec = chain.ChainSpec(n)
-        qpos, qvel = chain.initial_joint_state(spec)
-        g0, xi0 = to_hpgen(spec, chain.from_joint(spec, qpos, qvel))
-        start = time.perf_counter()
-        integ = hpgen.compile(MODEL, parameters={"N": n}, cache_dir=args.cache_dir)
-        compile_s = time.perf_counter() - start
-        start = time.perf_counter()
-        tr = integ.simulate(g0=g0, xi0=xi0, h=args.h, steps=args.steps, every=10)
-        c_hp = (time.perf_counter() - start) / args.steps
-        E = np.array([sum(chain.energy(spec, from_hpgen(spec, g, xi)))
-                      for g, xi in zip(tr.g, tr.xi())])
-        gaps = np.max([chain.constraint_residual(spec, from_hpgen(spec, g, xi))
-                       for g, xi in zip(tr.g, tr.xi())], axis=0)
-        T = args.steps * args.h
-        print(f"| {n} | hpgen SV (compile {compile_s:.1f} s) | {args.h:g} | {args.steps} | "
-              f"{1e6 * c_hp:.2f} | {1e3 * c_hp / args.h:.1f} | {band(E, spec):.2e} | "
-              f"{gaps[0]:.2e} / {gaps[1]:.2e} |")
-        probe = mujoco_peer.run(spec, qpos, qvel, args.h, 2000, "RK4")
-        c_mj = probe.seconds / 2000
-        for label, dt in (("equal dt", args.h), ("equal cost", args.h * c_mj / c_hp)):
-            steps = int(round(T / dt))
-            dt = T / steps
-            run = mujoco_peer.run(spec, qpos, qvel, dt, steps, "RK4",
-                                  sample=max(10, steps // 10_000))
-            c = run.seconds / steps
-            print(f"| {n} | MuJoCo RK4 ({label}) | {dt:.3g} | {steps} | {1e6 * c:.2f} | "
-                  f"{1e3 * c / dt:.1f} | {band(run.energy, spec):.2e}"
-                  f"{'' if run.stable else ' (unstable)'} | - |")
+        integs = {}
+        for frames in args.frames:
+            t0 = time.perf_counter()
+            integs[frames] = hpgen.compile(hpgen_chain.MODELS[frames], parameters={"N": n},
+                                           cache_dir=args.cache_dir)
+            print(f"compile N = {n} {frames}: {time.perf_counter() - t0:.1f} s", flush=True)
+        for start in args.start:
+            qpos, qvel = chain.named_joint_state(spec, start)
+            s0 = chain.from_joint(spec, qpos, qvel)
+            costs = []
+            for frames, integ in integs.items():
+                g0, xi0 = hpgen_chain.to_hpgen(spec, s0, frames)
+                r = hpgen_run(integ, spec, g0, xi0, args.h, args.steps, frames=frames)
+                c = r.seconds / args.steps
+                costs.append(c)
+                extra = (f"{r.gaps[0]:.1e} / {r.gaps[1]:.1e}; {r.iterations / args.steps:.2f}; "
+                         f"{kinetic_condition(spec, frames):.1e}")
+                print(row(n, start, f"hpgen SV {frames}", args.h, args.steps, c,
+                          energy_figures(r.energy, spec), extra), flush=True)
+            T = args.steps * args.h
+            probe = mujoco_peer.run(spec, qpos, qvel, args.h, 2000, "RK4")
+            c_mj = probe.seconds / 2000
+            for label, dt in (("equal dt", args.h), ("equal cost", args.h * c_mj / min(costs))):
+                steps = int(round(T / dt))
+                dt = T / steps
+                run = mujoco_peer.run(spec, qpos, qvel, dt, steps, "RK4", sample=10)
+                print(row(n, start, f"MuJoCo RK4 ({label})", dt, steps, run.seconds / steps,
+                          energy_figures(run.energy, spec),
+                          "-" if run.stable else "unstable"), flush=True)
 
 
 if __name__ == "__main__":

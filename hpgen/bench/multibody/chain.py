@@ -269,6 +269,33 @@ def initial_joint_state(spec: ChainSpec, seed: int = 0, angle: float = 0.0,
     return qpos.reshape(-1), qvel
 
 
+def tilted_joint_state(spec: ChainSpec, degrees: float) -> tuple[np.ndarray, np.ndarray]:
+    """A start in joint coordinates (qpos, qvel): the straight chain rotated about the world
+    x axis through the pin by ``degrees``, at rest (released from a tilt)."""
+    if not np.isfinite(degrees):
+        raise ArgumentError(f"expected a finite angle in degrees, got {degrees!r}",
+                            field="degrees")
+    half = 0.5 * np.radians(degrees)
+    qpos = np.tile([1.0, 0.0, 0.0, 0.0], spec.n)
+    qpos[:4] = [np.cos(half), np.sin(half), 0.0, 0.0]
+    return qpos, np.zeros(3 * spec.n)
+
+
+def named_joint_state(spec: ChainSpec, name: str) -> tuple[np.ndarray, np.ndarray]:
+    """(qpos, qvel) of a start's name: ``random`` the benchmark's (:func:`initial_joint_state`,
+    seed 0), ``randomS`` the same with seed S, ``tiltD`` :func:`tilted_joint_state` at D
+    degrees."""
+    try:
+        if name.startswith("random"):
+            return initial_joint_state(spec, seed=int(name[6:] or 0))
+        if name.startswith("tilt"):
+            return tilted_joint_state(spec, float(name[4:]))
+    except ValueError:
+        pass
+    raise ArgumentError(f"expected 'random', 'randomS' (seed S) or 'tiltD' (D in degrees), "
+                        f"got {name!r}", field="start")
+
+
 def trajectory_error(a: ChainState, b: ChainState) -> float:
     """Max-norm distance of two states in positions: centres of mass (m) and rotation
     matrix entries."""
