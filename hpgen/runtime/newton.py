@@ -57,8 +57,8 @@ from ..abi import (DEFAULT_MAXIT, DEFAULT_TOL, DOMAIN, KEEP_J_FLOOR, NO_CONVERGE
                    OK, REFRESH, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, STALL_MAX, THETA_FLOOR,
                    THETA_MAX)
 # the linear algebra (re-exported: hpgen.runtime.loop, .sparse and the tests import it here)
-from .newton_linalg import (LinearSolver, _isfinite, all_finite, linear_solver,  # noqa: F401
-                            norm_inf)
+from .newton_linalg import (LinearSolver, _isfinite, all_finite, fresh_solve,  # noqa: F401
+                            linear_solver, norm_inf)
 
 _INF, _NAN = math.inf, math.nan
 
@@ -173,9 +173,9 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
 
     Returns (code, z (list), iterations, last residual inf-norm, Jacobian evaluations).
     """
-    residual, jacobian, both = kern.residual, kern.jacobian, kern.residual_jacobian
+    residual = kern.residual
     lin, iterate = kern.linear, kern.iterate
-    factor_solve, apply, update, finish = lin.factor_solve, lin.apply, lin.update, lin.finish
+    apply, update, finish = lin.apply, lin.update, lin.finish
     tol, keep, maxit = opts.tol, opts.simplified, opts.maxit
     stol, sparse = SIMPLIFIED_TOL * tol, kern.sparse
     dprev, jacs, F = _INF, 0, None
@@ -216,14 +216,7 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
             # F and a fresh J (one evaluation when the module has residual_jacobian)
             memory.lu = None
             jacs += 1
-            if both is not None:
-                F, J = both(z, g, p, hv)
-            else:
-                F = residual(z, g, p, hv)[0]
-                J = jacobian(z, g, p, hv)[0]
-            if not all_finite(F):
-                return NONFINITE, z, it, norm_inf(F), jacs
-            res = factor_solve(J, F, keep)
+            F, res = fresh_solve(kern, z, g, p, hv, keep)
             if res is None:
                 return NONFINITE, z, it, norm_inf(F), jacs
             dz = res[0]

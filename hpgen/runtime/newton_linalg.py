@@ -90,3 +90,18 @@ def linear_solver(n: int, printed=None) -> LinearSolver:
     if printed is None:
         return _numpy_solver(n)
     return LinearSolver(n, *printed)
+
+
+def fresh_solve(kern, z, g, p, hv, keep):
+    """F and a fresh J at z (one evaluation when the module has residual_jacobian), then
+    J^{-1} F with factor_solve(J, F, keep): (F, result); result is None when F is not finite
+    (then nothing was factored) or the factorization failed."""
+    if kern.residual_jacobian is not None:
+        F, J = kern.residual_jacobian(z, g, p, hv)
+    else:
+        F = kern.residual(z, g, p, hv)[0]
+        J = kern.jacobian(z, g, p, hv)[0]
+    if not all_finite(F):
+        return F, None
+    return F, kern.linear.factor_solve(J, F, keep)
+

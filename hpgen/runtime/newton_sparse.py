@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from ..abi import (NO_CONVERGENCE, NONFINITE, OK, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, STALL_MAX,
                    THETA_MAX)
-from .newton_linalg import all_finite, norm_inf
+from .newton_linalg import all_finite, fresh_solve, norm_inf
 
 _INF, _NAN = float("inf"), float("nan")
 
@@ -38,21 +38,13 @@ def solve_sparse(kern, z, g, p, hv, tol: float, maxit: int, chord: bool = CHORD)
     a sparse solver (hpgen.runtime.sparse). Returns (code, z (list), iterations, last residual
     inf-norm, Jacobian evaluations), as hpgen.runtime.newton.solve."""
     from .newton import sparse_converged
-    residual, both, jacobian = kern.residual, kern.residual_jacobian, kern.jacobian
-    factor_solve, apply = kern.linear.factor_solve, kern.linear.apply
+    residual, apply = kern.residual, kern.linear.apply
     dprev, jacs, F, kept = _INF, 0, None, None
     need_j, fresh, contracted = True, False, False
     for it in range(1, maxit + 1):
         if need_j:
             jacs += 1
-            if both is not None:
-                F, J = both(z, g, p, hv)
-            else:
-                F = residual(z, g, p, hv)[0]
-                J = jacobian(z, g, p, hv)[0]
-            if not all_finite(F):
-                return NONFINITE, z, it, norm_inf(F), jacs
-            res = factor_solve(J, F, chord)
+            F, res = fresh_solve(kern, z, g, p, hv, chord)
             if res is None:
                 return NONFINITE, z, it, norm_inf(F), jacs
             dz, kept = res

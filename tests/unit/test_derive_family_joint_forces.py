@@ -17,7 +17,7 @@ from hpgen.model import load_model_text
 from hpgen.tableaus import resolve_tableau
 from tests.conftest import EXAMPLES
 from tests.unit.test_derive_family import evaluate, permutation, state
-from tests.unit.test_derive_family_open import close, run
+from tests.unit.test_derive_family_open import close, compare_step_kernels, run
 
 JOINTS = (EXAMPLES / "joint_damped_chain.yaml").read_text()
 SCHEMES = [("stormer-verlet", "truncated"), ("gauss2", "exact")]
@@ -62,16 +62,8 @@ def test_step_kernels_match_the_expansion(n, tab, rk, driven):
     g, p, rng = state(n, 23)
     z = 0.3 * rng.standard_normal(dense.nz)
     hv = np.array([0.01, 0.37, 0.8, 0.3] if driven else [0.01, 0.37, 0.3])
-    Fd, Jd = evaluate(dense, "residual_jacobian", z, g, p, hv)
-    Ff, Jf = evaluate(fam, "residual_jacobian", z[P], g, p, hv)
-    close(Ff, Fd[P], "F")
+    sf, sd = compare_step_kernels(fam, dense, P, z, g, p, hv)
     nz = fam.nz
-    close(Jf.reshape(nz, nz, order="F"), Jd.reshape(nz, nz, order="F")[np.ix_(P, P)], "J")
-    for a, b in zip(evaluate(fam, "update", z[P], g, p, hv),
-                    evaluate(dense, "update", z, g, p, hv)):
-        close(a, b, "update")
-    sd = evaluate(dense, "step_partials", z, g, p, hv)
-    sf = evaluate(fam, "step_partials", z[P], g, p, hv)
     close(sf[0], sd[0].reshape(nz, 12 * n, order="F")[P].ravel(order="F"), "Fs")
     close(sf[3], sd[3].reshape(nz, len(hv), order="F")[P].ravel(order="F"), "FH")
     close(sf[4], sd[4], "YH")

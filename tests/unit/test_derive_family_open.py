@@ -42,6 +42,21 @@ def close(a, b, what):
     assert np.abs(a - b).max() <= 1e-13 * (1.0 + np.abs(b).max()), what
 
 
+def compare_step_kernels(fam, dense, P, z, g, p, hv):
+    """F, J and update of the family module at z[P] against the expanded module's at z (P: the
+    family's unknowns in the expanded order); returns both modules' step_partials."""
+    Fd, Jd = evaluate(dense, "residual_jacobian", z, g, p, hv)
+    Ff, Jf = evaluate(fam, "residual_jacobian", z[P], g, p, hv)
+    close(Ff, Fd[P], "F")
+    nz = fam.nz
+    close(Jf.reshape(nz, nz, order="F"), Jd.reshape(nz, nz, order="F")[np.ix_(P, P)], "J")
+    for a, b in zip(evaluate(fam, "update", z[P], g, p, hv),
+                    evaluate(dense, "update", z, g, p, hv)):
+        close(a, b, "update")
+    return (evaluate(fam, "step_partials", z[P], g, p, hv),
+            evaluate(dense, "step_partials", z, g, p, hv))
+
+
 def test_runtime_parameters_and_time_are_derived_per_body():
     assert family_local(chain(3))
     assert family_local(chain(3, "[grav, m]"))
