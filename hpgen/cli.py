@@ -198,7 +198,7 @@ def cmd_run(args) -> int:
     directions = None
     if "momentum" in integ.record_names:
         from .analysis.symmetry import conserved_directions
-        directions = conserved_directions(model)
+        directions = conserved_directions(model, g0=sc.g0)
     t0 = time.perf_counter()
     try:
         with sigterm_raises():
@@ -262,8 +262,9 @@ def _forced_line(summary) -> str:
 
 
 def _momentum_line(model, change, directions, conserved_change) -> str:
-    """Only the spatial momenta the Lagrangian's symmetry conserves are conservation
-    figures (hpgen.analysis.symmetry decides them from the model)."""
+    """Only the spatial momenta the model's symmetry conserves (its Lagrangian's and, if any,
+    its constraints') are conservation figures (hpgen.analysis.symmetry decides them from
+    the model)."""
     from .analysis.symmetry import describe
     head = "  spatial momentum J = Ad*_{g^-1} p"
     if not len(directions):
@@ -272,7 +273,8 @@ def _momentum_line(model, change, directions, conserved_change) -> str:
     if len(directions) == len(change):
         return (f"{head}, conserved (l is left-invariant), max change per component: "
                 + " ".join(f"{v:.2e}" for v in change))
-    return (f"{head}: l's symmetry conserves only "
+    what = "the symmetry of l and the constraints" if model.constraints else "l's symmetry"
+    return (f"{head}: {what} conserves only "
             + ", ".join(f"{q} (max change {v:.2e})"
                         for q, v in zip(describe(directions), conserved_change)))
 

@@ -20,6 +20,14 @@ size O(1) at random states (heavy top, e_1: 0.3 to 1), and the singular values o
 off the null space are O(1). RTOL = 1e-9 sits between, with margins of 10^6 and more; the
 SAMPLES extra states make a non-symmetry that vanishes at every sample by chance
 negligibly rare.
+
+With holonomic constraints phi(g) = 0, <J, v> is conserved when moreover the constraint set is
+invariant: d/ds phi(exp(s v) g) = 0 at every g ON the constraints (a pin at the origin and a
+rotation about it move phi's rows into each other, so the rate vanishes on phi = 0 only).
+Those states are drawn by a random walk on the constraints from the scene's initial g (or the
+identity): a random step in the null space of Phi(g) (the body-frame constraint Jacobian),
+then Gauss-Newton back onto phi = 0 (|phi| <= PROJECT_TOL); each state adds the rows
+d/ds phi_m(exp(s e_i) g), row m scaled by its largest entry, to the rows of l.
 """
 from __future__ import annotations
 
@@ -27,10 +35,14 @@ import numpy as np
 
 RTOL = 1e-9
 SAMPLES = 6
+#: the walk's states are accepted once max |phi| <= PROJECT_TOL (Gauss-Newton, <= 40 iterations)
+PROJECT_TOL = 1e-13
 
 
-def conserved_directions(model, samples: int = SAMPLES, seed: int = 0) -> np.ndarray:
-    """(q, d) array: a basis of the directions v along which ``model``'s Lagrangian is
+def conserved_directions(model, samples: int = SAMPLES, seed: int = 0,
+                         g0=None) -> np.ndarray:
+    """(q, d) array: a basis of the directions v along which ``model``'s Lagrangian (and its
+    constraint set, if any; g0: a state on the constraints, default the identity) is
     invariant under left translation (so <J, v> is conserved), in reduced row echelon form:
     a conserved component J_i is the row e_i; coefficients within RTOL of an integer are
     that integer. q = 0: nothing is conserved; q = d: l is left-invariant."""
@@ -44,18 +56,73 @@ def conserved_directions(model, samples: int = SAMPLES, seed: int = 0) -> np.nda
                                                       ca.vec(g))])
     expm = ca.Function("exp", [v], [grp.tau("exp", v)])
     hat = ca.Function("hat", [v], [grp.hat(v)])
-    basis = [np.array(hat(e).full()) for e in np.eye(d)]
+    # hat(e_i) has nonzero rows only where e_i acts (a few, on a product group one factor's):
+    # the terms dl/dg_jk (hat(e_i) g)_jk vanish off those rows, so only they are formed
+    basis = []
+    for e in np.eye(d):
+        E = np.array(hat(e).full())
+        rows_i = np.flatnonzero(np.abs(E).sum(axis=1))
+        basis.append((rows_i, E[rows_i]))
     rng = np.random.default_rng(seed)
     rows = []
     for _ in range(d + samples):
         g0 = np.array(expm(rng.uniform(-1.0, 1.0, d)).full())
         G = np.array(grad(g0, rng.standard_normal(d)).full()).reshape(n, n, order="F")
-        terms = [G * (E @ g0) for E in basis]
+        terms = [G[r] * (Er @ g0) for r, Er in basis]
         scale = max(np.abs(t).sum() for t in terms)
         rows.append([t.sum() / scale for t in terms] if scale > 0 else [0.0] * d)
+    if model.constraints:
+        rows += _constraint_rows(model, basis, g0, rng, d + samples)
     _, sv, vt = np.linalg.svd(np.array(rows))
     rank = int((sv > RTOL).sum())
     return _rref(vt[rank:])
+
+
+def _constraint_rows(model, basis, g0, rng, count: int) -> list:
+    """Rows d/ds phi_m(exp(s e_i) g) / max_i |.| at states g of a random walk on phi = 0 from
+    g0 (module docstring), until there are at least ``count`` rows."""
+    import casadi as ca
+
+    from ..derive.constraints import body_jacobian, constraint_function
+    grp = model.group
+    n, d = grp.n, grp.d
+    phi = constraint_function(model)
+    G, v = ca.SX.sym("G", n, n), ca.SX.sym("v", d)
+    jac = ca.Function("dphi_dg", [G], [ca.jacobian(phi(G), ca.vec(G))])
+    Phi = ca.Function("Phi", [G], [body_jacobian(grp, phi, G)])
+    expm = ca.Function("exp", [v], [grp.tau("exp", v)])
+    g = np.eye(n) if g0 is None else np.array(g0, dtype=float).reshape(n, n)
+
+    def onto(g):
+        for _ in range(40):
+            r = np.array(phi(g).full()).ravel()
+            if np.abs(r).max() <= PROJECT_TOL * (1.0 + np.abs(g).max()):
+                return g
+            step = np.linalg.lstsq(np.array(Phi(g).full()), -r, rcond=None)[0]
+            g = g @ np.array(expm(step).full())
+        return None
+
+    g = onto(g)
+    rows: list = []
+    if g is None:
+        raise ValueError("the constraints' symmetry: no state on the constraints was found "
+                         "from the initial g")
+    scale = 0.5
+    while len(rows) < count:
+        P = np.array(Phi(g).full())
+        eta = rng.standard_normal(d)
+        eta -= np.linalg.lstsq(P, P @ eta, rcond=None)[0]
+        new = onto(g @ np.array(expm(scale * eta / max(np.abs(eta).max(), 1e-300)).full()))
+        if new is None:
+            scale *= 0.5
+            continue
+        g = new
+        D = np.array(jac(g).full())
+        rates = np.array([D[:, (r[None, :] + n * np.arange(n)[:, None]).ravel()]
+                          @ (Er @ g).ravel(order="F") for r, Er in basis]).T
+        top = np.abs(rates).max(axis=1)
+        rows += [row / t for row, t in zip(rates, top) if t > 0]
+    return rows
 
 
 def _rref(V: np.ndarray) -> np.ndarray:

@@ -35,8 +35,20 @@ def stalled(it: int, dn: float, dprev: float, zn: float, fresh: bool,
 
 def solve_sparse(kern, z, g, p, hv, tol: float, maxit: int, chord: bool = CHORD):
     """Full Newton from z (a list of floats) on kern.residual(z, g, p, hv) = 0 with kern.linear
-    a sparse solver (hpgen.runtime.sparse). Returns (code, z (list), iterations, last residual
-    inf-norm, Jacobian evaluations), as hpgen.runtime.newton.solve."""
+    a sparse solver (hpgen.runtime.sparse): the chord pass (solve_pass), and if it fails a
+    second pass with J at every iterate from the same z (hpgen_newton.c's
+    hpgen_newton_sparse). Returns (code, z (list), iterations of both passes, last residual
+    inf-norm, Jacobian evaluations of both), as hpgen.runtime.newton.solve."""
+    out = solve_pass(kern, z, g, p, hv, tol, maxit, chord)
+    if not chord or out[0] == OK or out[2] <= 1:     # a first iterate is the same in both
+        return out
+    again = solve_pass(kern, z, g, p, hv, tol, maxit, False)
+    return again[0], again[1], out[2] + again[2], again[3], out[4] + again[4]
+
+
+def solve_pass(kern, z, g, p, hv, tol: float, maxit: int, chord: bool):
+    """One pass of hpgen_newton.c's hpgen_newton_sparse_pass (chord: J once a step, refreshed
+    on a poor rate; else J at every iterate): (code, z, iterations, residual, J evaluations)."""
     from .newton import sparse_converged
     residual, apply = kern.residual, kern.linear.apply
     dprev, jacs, F, kept = _INF, 0, None, None

@@ -39,6 +39,23 @@ def test_conserved_directions_of_the_examples(example, expected):
     assert np.array_equal(V, np.array(expected, dtype=float)), V
 
 
+def _sums(d, blocks):
+    """Rows e_k + e_(6 + k) + ... (one per k in blocks): a component summed over the bodies."""
+    return [[1.0 if i % 6 == k else 0.0 for i in range(d)] for k in blocks]
+
+
+@pytest.mark.parametrize("example, expected", [
+    # pinned at the origin: only the vertical angular momentum of the whole chain, not a link's
+    ("pendulum_chain", _sums(12, [2])),
+    ("four_bar", np.zeros((0, 9))),                    # two pins to the ground: nothing
+    ("spacecraft_panels", _sums(18, range(6))),        # free tree: the total momentum
+])
+def test_constraints_restrict_the_conserved_directions(example, expected):
+    model = load_model(EXAMPLES / f"{example}.yaml")
+    V = conserved_directions(model, g0=model.scene.g0)
+    assert np.array_equal(V, np.array(expected, dtype=float).reshape(-1, V.shape[1])), V
+
+
 SO3_HEAD = "name: m\ngroup: SO3\nparameters: {k: 2.0}\n"
 R2_HEAD = "name: m\ngroup: R2\nparameters: {k: 2.0}\n"
 

@@ -19,7 +19,7 @@ import hpgen
 from hpgen.abi import NO_CONVERGENCE, OK, ROUNDOFF_FLOOR, STALL_MAX, THETA_MAX
 from hpgen.bench.multibody import chain, hpgen_chain
 from hpgen.runtime.newton import Kernels, NewtonMemory, NewtonOptions, solve
-from hpgen.runtime.newton_sparse import solve_sparse, stalled
+from hpgen.runtime.newton_sparse import solve_pass, solve_sparse, stalled
 
 from conftest import EXAMPLES
 
@@ -76,11 +76,49 @@ def test_a_fixed_floor_does_not_end_above_it():
 
 
 def test_noise_above_the_cap_is_no_convergence():
-    """Noise 10 STALL_MAX (1 + |z*|): not taken for round-off (NO_CONVERGENCE, not a result
-    with an error of that size)."""
+    """Noise 10 STALL_MAX (1 + |z*|) in F: the chord pass does not take it for round-off
+    (NO_CONVERGENCE, not a result with an error of that size); the second pass (J at every
+    iterate) stops only where its correction is below the cap."""
     kern, exact, _ = noisy_linear(10 * STALL_MAX)
-    code, *_ = solve_sparse(kern, (exact + 1e-3).tolist(), [], [], [1e-3], 1e-14, 30)
+    z0 = (exact + 1e-3).tolist()
+    code, *_ = solve_pass(kern, z0, [], [], [1e-3], 1e-14, 30, True)
     assert code == NO_CONVERGENCE
+    code, z, it, _, jacs = solve_sparse(kern, z0, [], [], [1e-3], 1e-14, 30)
+    assert jacs > 1 and it > 30                    # both passes ran
+    if code == OK:
+        assert np.abs(np.asarray(z) - exact).max() <= 10 * STALL_MAX * (1 + np.abs(exact).max())
+
+
+def test_a_failed_chord_pass_is_repeated_with_j_at_every_iterate():
+    """The chord pass's J at the start is poor (a fifth of the true one, as at a bad predictor
+    start): its first correction leaves F's domain (|z| > 1e3: F not finite) and the pass fails
+    at its second iterate; the second pass from the same start, with J at every iterate (the
+    true one), converges. Iterations and J evaluations of both passes are counted."""
+    kern0, exact, _ = noisy_linear(0.0)
+    A = np.asarray(kern0.jacobian(None, None, None, None)[0]).reshape(NZ, NZ, order="F")
+    calls = []
+
+    def residual(z, g, p, hv):
+        z = np.asarray(z)
+        F = A @ z - A @ exact
+        return [(F if np.abs(z).max() <= 1e3 else F * np.nan).tolist()]
+
+    def residual_jacobian(z, g, p, hv):
+        calls.append(1)
+        J = A / 5.0 if len(calls) == 1 else A
+        return residual(z, g, p, hv)[0], J.ravel(order="F").tolist()
+    rows, colind = [], [0]
+    for j in range(NZ):
+        rows += np.flatnonzero(A[:, j]).tolist()
+        colind.append(len(rows))
+    kern = Kernels(NZ, residual, None, residual_jacobian, pattern=(colind, rows))
+    z0 = (exact + 300.0).tolist()
+    code, *_ = solve_pass(kern, z0, [], [], [1e-3], 1e-14, 30, True)
+    assert code != OK
+    calls.clear()
+    code, z, it, _, jacs = solve_sparse(kern, z0, [], [], [1e-3], 1e-14, 30)
+    assert code == OK and np.abs(np.asarray(z) - exact).max() <= 1e-10 * np.abs(exact).max()
+    assert jacs == len(calls) >= 2 and it >= 3
 
 
 def test_a_stall_above_the_cap_or_without_contraction_is_not_noise():

@@ -182,7 +182,7 @@ static int hpgen_stalled(long long it, double dn, double dprev, double zn, int f
         && dn <= HPGEN_STALL_MAX * (1.0 + zn);
 }
 
-/* Full Newton of a module with a sparse Newton matrix. HPGEN_SPARSE_CHORD = 1: a chord
+/* One pass of full Newton of a module with a sparse Newton matrix. chord = 1: a chord
    iteration within the step (J and its factors at the step's first iterate; the next iterates
    one residual and one solve each, while they contract; a kept J whose rate
    theta = |dz| / |dz_prev| exceeds HPGEN_THETA_MAX, and is no stall, is evaluated again at
@@ -191,10 +191,10 @@ static int hpgen_stalled(long long it, double dn, double dprev, double zn, int f
    fresh J |dz| <= tol (1 + |z|) and hpgen_sparse_converged (quadratic rate); after a kept J
    hpgen_sparse_converged asked of HPGEN_SIMPLIFIED_TOL tol (the linear rate's bound
    te/(1 - te) |dz|, as simplified Newton's); the round-off stall (hpgen_stalled).
-   Mirrored in hpgen.runtime.newton_sparse.solve_sparse. */
-static int hpgen_newton_sparse(const double* g, const double* p, const double* hv, double* z,
-                               const hpgen_options* o, long long* iters, long long* jacs,
-                               double* rnorm) {
+   Mirrored in hpgen.runtime.newton_sparse.solve_pass. */
+static int hpgen_newton_sparse_pass(const double* g, const double* p, const double* hv,
+                                    double* z, const hpgen_options* o, int chord,
+                                    long long* iters, long long* jacs, double* rnorm) {
     double F[HPGEN_NZ], Fz[HPGEN_NZ], J[HPGEN_LU_SIZE], dprev = HUGE_VAL;
     const double tol = o->tol;
     const long long maxit = o->maxit;
@@ -208,10 +208,10 @@ static int hpgen_newton_sparse(const double* g, const double* p, const double* h
             if (hpgen_newton_fj(z, g, p, hv, F, J)) { code = HPGEN_NONFINITE; break; }
             memcpy(Fz, F, sizeof F);
             evaluated = 1;
-            if (hpgen_lu_factor_solve(J, piv, F, HPGEN_SPARSE_CHORD)) {
+            if (hpgen_lu_factor_solve(J, piv, F, chord)) {
                 code = HPGEN_NONFINITE; break;
             }
-            need_j = !HPGEN_SPARSE_CHORD;
+            need_j = !chord;
             fresh = 1;
         } else {
             if (hpgen_k_residual(z, g, p, hv, F)) { code = HPGEN_NONFINITE; break; }
@@ -239,6 +239,28 @@ static int hpgen_newton_sparse(const double* g, const double* p, const double* h
     *iters = it;
     *jacs += nj;
     *rnorm = evaluated ? hpgen_norm_inf(Fz, HPGEN_NZ) : NAN;
+    return code;
+}
+
+/* The chord pass, and if it fails (a divergent or stalled chord from a poor start: the
+   predictor's extrapolation on a hard step) a second pass with J at every iterate from the same
+   start; iterations and J evaluations of both passes are counted. HPGEN_SPARSE_CHORD = 0: J
+   at every iterate only. Mirrored in hpgen.runtime.newton_sparse.solve_sparse. */
+static int hpgen_newton_sparse(const double* g, const double* p, const double* hv, double* z,
+                               const hpgen_options* o, long long* iters, long long* jacs,
+                               double* rnorm) {
+    double z0[HPGEN_NZ];
+    long long first;
+    int code;
+    if (!HPGEN_SPARSE_CHORD)
+        return hpgen_newton_sparse_pass(g, p, hv, z, o, 0, iters, jacs, rnorm);
+    memcpy(z0, z, sizeof z0);
+    code = hpgen_newton_sparse_pass(g, p, hv, z, o, 1, iters, jacs, rnorm);
+    if (code == HPGEN_OK || *iters <= 1) return code;   /* a first iterate is the same in both */
+    first = *iters;
+    memcpy(z, z0, sizeof z0);
+    code = hpgen_newton_sparse_pass(g, p, hv, z, o, 0, iters, jacs, rnorm);
+    *iters += first;
     return code;
 }
 #else
