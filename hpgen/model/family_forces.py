@@ -48,6 +48,15 @@ def _local_symbol(sym, xi_syms, g_syms, k: int, nb: int, db: int):
     return None
 
 
+def scalar_force(doc: Doc, where: str, value):
+    """A force component from the whitelist walker's value (a SymPy expression, or a Python
+    number for a constant force) as a SymPy expression; an array is refused at ``where``."""
+    if hasattr(value, "shape"):
+        raise doc.error(where, f"expected a scalar, got shape {value.shape}")
+    return (value if isinstance(value, sp.Basic) else
+            sp.Integer(value) if isinstance(value, int) else sp.Float(value))
+
+
 def parse_family_forces(doc: Doc, raw: dict, group, params: dict, inputs, xi_syms, g_syms):
     """(expanded force exprs, their texts, BodyForce) of a ``forces: {for, body}`` mapping."""
     from .bodyterms import _Local, _NotLocal, sorted_data
@@ -101,11 +110,7 @@ def parse_family_forces(doc: Doc, raw: dict, group, params: dict, inputs, xi_sym
             raise doc.error(path, f"body {var}'s force may use only body {var}'s names "
                                   f"({var} itself as the index: xi[{var}], R[{var}], ...) and "
                                   "shared parameters")
-        if hasattr(value, "shape"):
-            raise doc.error(path, f"expected a scalar, got shape {value.shape}")
-        # the walker's value: a SymPy expression, or a Python number for a constant force
-        exprs.append(value if isinstance(value, sp.Basic) else
-                     sp.Integer(value) if isinstance(value, int) else sp.Float(value))
+        exprs.append(scalar_force(doc, path, value))
         index = ev.index
         data.update(ev.data)
     out = []

@@ -63,6 +63,7 @@ def parse_joint_forces(doc: Doc, raw, var: str, family, params: dict, extra: dic
 def _joint_force(doc: Doc, path, entry, var: str, family, params: dict, extra: dict):
     from ..groups import group_from_spec
     from .bodyterms import MAX_SLOTS, _Local, _NotLocal
+    from .family_forces import scalar_force
     from .joints import _integer
     from .families import FamilyGroup
     from .syntax import parse_checked
@@ -116,10 +117,7 @@ def _joint_force(doc: Doc, path, entry, var: str, family, params: dict, extra: d
                 raise doc.error(where, "a joint force may use only the names of the bodies "
                                        f"listed in bodies ({', '.join(map(str, bodies))}), "
                                        "indexed as written there")
-            if hasattr(value, "shape"):
-                raise doc.error(where, f"expected a scalar, got shape {value.shape}")
-            row.append(value if isinstance(value, sp.Basic) else
-                       sp.Integer(value) if isinstance(value, int) else sp.Float(value))
+            row.append(scalar_force(doc, where, value))
         exprs.append(tuple(row))
     instances = []
     for i in range(start, stop):
