@@ -63,7 +63,6 @@ class FamilyParts:
     lag: object
     velocity: object     # (g, p, xi) -> SX d: one Newton step of dl/dxi = p, body by body
     force: object = None  # (G, X, t) -> the product's force (per-body calls), or None
-    quadratic: bool = False  # every body's d2l/dxi2 free of xi: one velocity step is exact
 
 
 def _body_lagrangians(model, body):
@@ -271,12 +270,12 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     for mk in margins[1:]:
         margin = ca.fmin(margin, mk)
     g1 = ca.diagcat(*g1s)
-    lag, velocity, quadratic = _product_lagrangian(model, lags, keys, body, index, ek)
+    lag, velocity = _product_lagrangian(model, lags, keys, body, index, ek)
     force = product_force(st0["force"], model, h, nb, db, N, st0["joint_forces"])
     if not joints:
         eqs = StepEquations(z, tuple(blocks), ca.vertcat(*res), g1, ca.vertcat(*p1s),
                             ca.vertcat(*guesses), xi_hat, margin, ca.vertcat(*charts))
-        return FamilyParts(eqs, lag, velocity, force, quadratic)
+        return FamilyParts(eqs, lag, velocity, force)
 
     nz = nzb
     blocks += [("lambda", nz, nz + m), ("nu", nz + m, nz + 2 * m)]
@@ -311,7 +310,7 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     eqs = StepEquations(z, tuple(blocks), residual, g1,
                         ca.vertcat(*p1s), ca.vertcat(*guesses, S.zeros(2 * m), *extra_guess),
                         xi_hat, margin, ca.vertcat(*charts))
-    return FamilyParts(eqs, lag, velocity, force, quadratic)
+    return FamilyParts(eqs, lag, velocity, force)
 
 
 def _momentum(model, lags, body, ne):
@@ -368,20 +367,17 @@ def hessian_inverse(model, entry, k: int, index):
 
 
 def _product_lagrangian(model, lags, keys, body, index, ek=None):
-    """(lag, velocity, quadratic): l(G, X) of the product as a sum of per-body calls, one
-    Newton step of dl/dxi = p from xi body by body (the Hessian of a separable l is
-    block-diagonal), and whether every body's Hessian is free of xi (then that step is exact;
-    decided on the bodies' own expressions, which the calls of the sum hide from CasADi);
+    """(lag, velocity): l(G, X) of the product as a sum of per-body calls, and one Newton step
+    of dl/dxi = p from xi body by body (the Hessian of a separable l is block-diagonal);
     index: the bodies' index inputs (body_index); ek: an open model's (t_k, params), bound
     into both."""
     nb, db, N = body.n, body.d, len(index)
     G, X, P = ca.SX.sym("g", nb, nb), ca.SX.sym("xi", db), ca.SX.sym("p", db)
     I = index_symbol(model)[0]
     E = ca.SX.sym("e", ek.numel()) if ek is not None else None
-    steps, quadratic = {}, True
+    steps = {}
     for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
         mu = ca.gradient(lag_in(*with_env([G, X, I], E)), X)
-        quadratic = quadratic and not ca.depends_on(ca.jacobian(mu, X), X)
         steps[key] = ca.Function(f"body{c}_velocity_step", with_env([ca.vec(G), P, X, I], E),
                                  [X - ca.solve(ca.jacobian(mu, X), mu - P)], CALL)
 
@@ -395,4 +391,4 @@ def _product_lagrangian(model, lags, keys, body, index, ek=None):
         return ca.vertcat(*[steps[keys[k]](*with_env([
             ca.vec(Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb]), Pp[k * db:(k + 1) * db],
             Xp[k * db:(k + 1) * db], index[k]], ek)) for k in range(N)])
-    return lag, velocity, quadratic
+    return lag, velocity

@@ -171,13 +171,15 @@ class PythonBackend(_Backend):
         raw = self._raw
         rec, vel, w = raw["record"], raw["velocity_step"], self.record_width
         uses_xi, quad = m["record_uses_xi"], m["legendre_quadratic"]
+        stall = self._newton.sparse
         if inputs is None:
-            return lambda g, p, k=0, h=0.0: loop.record_row(rec, vel, w, g, p, uses_xi, quad)
+            return lambda g, p, k=0, h=0.0: loop.record_row(rec, vel, w, g, p, uses_xi, quad,
+                                                            stall)
 
         def row_of(g, p, k=0, h=0.0):
             hv = inputs.at_record(h, k)
             return loop.record_row(lambda *a: rec(*a, hv), lambda *a: vel(*a, hv), w, g, p,
-                                   uses_xi, quad)
+                                   uses_xi, quad, stall)
         return row_of
 
     def record(self, g, p, inputs=None):

@@ -13,6 +13,7 @@ from ..abi import (NONFINITE, OK, PREDICTOR_COEFFICIENTS, PREDICTOR_HISTORY, REC
                    ROUNDOFF_FLOOR, STATUS_FIELDS, VELOCITY_MAXIT, VELOCITY_TOL)
 from .newton import (_INF, _NAN, Kernels, NewtonMemory, NewtonOptions, _floats, _isfinite,
                      all_finite, norm_inf, step_lists)
+from .newton_sparse import stalled
 
 
 #: the offsets z - G each substep of a composed step keeps for its predictor (HPGEN_CH in
@@ -288,11 +289,12 @@ def advance(kern: Kernels, run: Run, h, steps, every, opts: NewtonOptions):
     return steps, recs, st
 
 
-def velocity(velocity_step, g, p, quadratic) -> tuple:
+def velocity(velocity_step, g, p, quadratic, stall=False) -> tuple:
     """(code, xi) with legendre(g, xi) = p, like ``hpgen_velocity`` in C: Newton steps
     velocity_step(g, p, xi) -> [xi1] from xi = 0; one step when ``quadratic``, else until
-    |dxi| <= VELOCITY_TOL (1 + |xi|) or the round-off floor, at most VELOCITY_MAXIT steps;
-    RECORD on failure."""
+    |dxi| <= VELOCITY_TOL (1 + |xi|) or the round-off floor (``stall``, a sparse module's: or
+    the round-off stall, newton_sparse.stalled), at most VELOCITY_MAXIT steps; RECORD on
+    failure."""
     xi, dprev = [0.0] * len(p), _INF
     for it in range(1, VELOCITY_MAXIT + 1):
         x1 = velocity_step(g, p, xi)[0]
@@ -311,15 +313,17 @@ def velocity(velocity_step, g, p, quadratic) -> tuple:
             return OK, xi
         if it > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + xn):
             return OK, xi
+        if stall and stalled(it, dn, dprev, xn, True, False):
+            return OK, xi
         dprev = dn
     return RECORD, xi
 
 
-def record_row(record, velocity_step, width, g, p, uses_xi, quadratic) -> tuple:
+def record_row(record, velocity_step, width, g, p, uses_xi, quadratic, stall=False) -> tuple:
     """(code, row) like ``hpgen_record_row`` in C (raw kernels record and velocity_step; a
-    velocity that does not converge gives a row of ``width`` NaNs)."""
+    velocity that does not converge gives a row of ``width`` NaNs; stall: see velocity)."""
     if uses_xi:
-        code, xi = velocity(velocity_step, g, p, quadratic)
+        code, xi = velocity(velocity_step, g, p, quadratic, stall)
         if code != OK:
             return RECORD, [_NAN] * width
     else:

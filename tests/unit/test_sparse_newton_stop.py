@@ -190,3 +190,24 @@ def test_velocity_from_momentum_at_32_links(cache_dir):
     for g, mu in zip(run.g, run.mu):
         g1, mu1 = integ.step(g, mu, 1e-3)
         assert np.isfinite(mu1).all()
+
+
+def test_a_sparse_modules_record_velocity_stops_at_the_noise():
+    """The record's velocity (Newton on the Legendre map from xi = 0, hpgen_velocity) of an
+    ill-conditioned family lands at the solution plus noise above the fixed floor (here
+    alternating +-1e-9): the fixed tests never end (a NaN record: the pendulum chain at 48
+    links did this at step 0); with the stall (sparse modules) it stops at the noise."""
+    from hpgen.abi import RECORD, ROUNDOFF_FLOOR, VELOCITY_TOL
+    from hpgen.runtime.loop import velocity
+    exact = np.linspace(-10.0, 10.0, 12)
+    assert 2e-9 > max(ROUNDOFF_FLOOR, VELOCITY_TOL) * 11.0
+    calls = []
+
+    def step(g, p, xi):
+        calls.append(1)
+        return [(exact + (-1) ** len(calls) * 1e-9).tolist()]
+    code, _ = velocity(step, None, exact.tolist(), False)
+    assert code == RECORD
+    calls.clear()
+    code, xi = velocity(step, None, exact.tolist(), False, stall=True)
+    assert code == OK and len(calls) == 3 and np.abs(np.asarray(xi) - exact).max() <= 1.01e-9

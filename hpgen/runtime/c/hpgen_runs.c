@@ -389,8 +389,8 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
 
 /* xi with legendre(g, xi) = p: Newton (kernel velocity_step) from xi = 0; one step when l is
    quadratic in xi (then exact), else until |dxi| <= HPGEN_VELOCITY_TOL (1 + |xi|) or the
-   round-off floor, at most HPGEN_VELOCITY_MAXIT iterations (the runtime's
-   Integrator.velocity uses the same test). */
+   round-off floor (a sparse module: or the round-off stall), at most HPGEN_VELOCITY_MAXIT
+   iterations (the runtime's Integrator.velocity uses the same test). */
 #if HPGEN_RECORD_USES_XI
 static int hpgen_velocity(const double* g, const double* p, double* xi HPGEN_OPEN_HV_PARAM) {
     double x1[HPGEN_D], dprev = HUGE_VAL;
@@ -410,6 +410,11 @@ static int hpgen_velocity(const double* g, const double* p, double* xi HPGEN_OPE
         xn = hpgen_norm_inf(xi, HPGEN_D);
         if (dn <= HPGEN_VELOCITY_TOL * (1.0 + xn)) return HPGEN_OK;
         if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + xn)) return HPGEN_OK;
+#if HPGEN_SPARSE
+        /* a family's Legendre map can be ill-conditioned (frames far from their bodies): the
+           refinement stops at its round-off noise (hpgen_stalled, each step's J fresh) */
+        if (hpgen_stalled(it, dn, dprev, xn, 1, 0)) return HPGEN_OK;
+#endif
         dprev = dn;
     }
     return HPGEN_RECORD;
