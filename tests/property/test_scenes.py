@@ -320,6 +320,7 @@ def test_chain_energy_and_vertical_momentum(compile_model):
 #   spacecraft_slew         Gauss 2/cay/exact, h = 0.05,   9.4e-10
 #   underwater_vehicle_drag Gauss 2/cay/exact, h = 0.05,   4.6e-7
 #   damped_pendulum_chain   SV/cay/q=0,        h = 1e-3,   1.2e-4 (N = 4; per-body damping)
+#   joint_damped_chain      SV/cay/q=0,        h = 1e-3,   2.2e-5 (N = 3; damping in the joints)
 SCENE_ENERGY_BOUND = {
     "chain": 1.9e-1,
     "damped_top": 2.1e-6,
@@ -334,6 +335,7 @@ SCENE_ENERGY_BOUND = {
     "pendulum_chain_gravity": 1.3e-3,
     "capsule_chain": 5.1e-7,
     "damped_pendulum_chain": 1.2e-3,
+    "joint_damped_chain": 2.2e-4,
     "spacecraft_panels": 3.0e-6,
     "four_bar": 7.2e-5,
     "rod": 1.4e-6,
