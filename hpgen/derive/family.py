@@ -48,8 +48,8 @@ from ..groups import group_from_spec
 from .action import StepEquations, step_equations
 from .family_open import with_env, body_force_function, body_index, index_symbol, \
     open_layout, product_force, split_step_vector
-from .family_joint_forces import external_forces, joint_force_functions, stage_force, \
-    stage_function
+from .family_joint_forces import external_forces, joint_force_functions, \
+    joint_stage_functions, stage_force, stage_function
 from .lagrangian import to_casadi
 
 CALL = {"never_inline": True, "jac_penalty": 0}
@@ -201,9 +201,11 @@ def _functions(model, tableau, tau: str, rkmk: str):
             e = step_equations(body, lambda G, X, tt, f=lag_in: f(G, X, ib, ca.vertcat(tt, P)),
                                tableau, tau, rkmk, reduced, gb, pb, h_, hb[1], force)
         args = [e.z, gbv, pb, hb, ib] + ([fx] if jforces else [])
+        S = stage_function(e, body, tableau, tau, gb, hb, h_, f"body{c}_stages") \
+            if jforces else None
         steps[cls] = dict(
-            S=stage_function(e, body, tableau, tau, gb, hb, h_, f"body{c}_stages")
-            if jforces else None, joint_forces=jforces,
+            S=S, joint_forces=jforces,
+            JS=joint_stage_functions(model, tableau, S, jforces) if jforces else [],
             nz=e.z.numel(), blocks=e.blocks,
             F=ca.Function(f"body{c}_residual", args, [e.residual], CALL),
             U=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1], CALL),

@@ -98,7 +98,8 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
     bu = _jacobian_function(st["U"], [(0, 0), (0, 2), (1, 0), (1, 2)],
                             f"{st['U'].name()}_blocks")
     hv = parts["hv"]              # the step vector of an open model, else h
-    outs = [*bf.map(N)(Z, G, Q, hv, I), *bu.map(N)(Z, G, Q, hv, I)]
+    ext = (parts["Fext"],) if "Fext" in parts else ()  # forces between bodies
+    outs = [*bf.map(N)(Z, G, Q, hv, I, *ext), *bu.map(N)(Z, G, Q, hv, I, *ext)]
     sp = [bf.sparsity_out(0), bf.sparsity_out(1), *[bu.sparsity_out(k) for k in range(4)]]
 
     def diag(k):
@@ -160,10 +161,14 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
 
     # the chain rule: block products (mapped SX) and sums of Entries (static gathers)
     cache: dict = {}
-    dG1 = assemble([diag(2), times_A(3, nb2)], (nb2 * N, nzc))
+    tE: tuple = ([], [], [])           # the joint forces' terms in F, dg1, dP1
+    if ext:
+        from .family_joint_forces import external_force_terms
+        tE = external_force_terms(parts, N, nzc)
+    dG1 = assemble([diag(2), times_A(3, nb2), *tE[1]], (nb2 * N, nzc))
     tKg = [neg(block_products(xs, ents, dG1, f"joint_kick_dg{q}", cache))
            for q, (xs, ents) in enumerate(kg)]
-    dP1 = assemble([diag(4), times_A(5, db), *tKg, *tB], (db * N, nzc))
+    dP1 = assemble([diag(4), times_A(5, db), *tKg, *tB, *tE[2]], (db * N, nzc))
     vg, vp = vj.map(N)(G1, P1, I, Hinv, *([] if parts["e1"] is None else [parts["e1"]]))
     dV = assemble([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, "vel_dg"),
                    block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1, "vel_dp")],
@@ -174,6 +179,6 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
               enumerate(plan)]
         return [Entries(t.values, t.rows + row0, t.cols) for t in ts]
     dphi = [Entries(t.values / h, t.rows, t.cols) for t in joint_rows(pg, dG1, "phi", zc)]
-    return assemble([diag(0), times_A(1, nzb), *dphi,
+    return assemble([diag(0), times_A(1, nzb), *tE[0], *dphi,
                      *joint_rows(hg, dG1, "hg", zc + m), *joint_rows(hv_, dV, "hv", zc + m)],
                     (nzc, nzc))

@@ -128,3 +128,116 @@ def joint_power_force(model, funs, Gp, Xp, tt, hv, nb: int, db: int, N: int) -> 
             for slot, b in enumerate(bodies):
                 out[b] = out[b] + res[slot]
     return out
+
+
+# --- the mapped form (hpgen.derive.family_map, hpgen.derive.family_jacobian) -----------------
+#
+# Each joint force is folded with the stage states of its slot bodies into one SX function of
+# the slots' unknowns and g blocks, (Z_0, vec g_0, ..., Z_(K-1), vec g_(K-1), hv, i) ->
+# (fext_0, ..., fext_(K-1)) (s d each, stage 0's d entries first), called once through a map
+# over the joints of its range. Body b's fext is the sum over the joints and slots that hold b
+# (products with constant selection matrices); its derivative d fext_b / d Z_t is one block
+# per (joint, slot, slot), placed at (b's fext rows, t's unknowns) of dFext/dz, which enters J
+# through the body step's own blocks dF/dfext, dg1/dfext, dp1/dfext (block products).
+
+
+def joint_stage_functions(model, tableau, S, jforces) -> list:
+    """[(Function(Z_0, vec g_0, ..., hv, i) -> (fext_0, ...), JointForce), ...]: the joint
+    forces ``jforces`` (joint_force_functions) at the stage states that the body stage
+    function ``S`` (stage_function) gives from each slot's unknowns."""
+    m = len(model.inputs)
+    nzb, nb2, H, s = S.size1_in(0), S.size1_in(1), S.size1_in(2), tableau.stages
+    out = []
+    for c, (fun, jf) in enumerate(jforces):
+        K = len(jf.exprs)
+        Zs = [ca.SX.sym(f"z{k}", nzb) for k in range(K)]
+        gs = [ca.SX.sym(f"g{k}", nb2) for k in range(K)]
+        hv, i = ca.SX.sym("h", H), ca.SX.sym("i")
+        u, P = hv[2:2 + m], hv[2 + m:]
+        states = [S(Z, g, hv) for Z, g in zip(Zs, gs)]
+        rows: list = [[] for _ in range(K)]
+        for q in range(s):
+            args = [v for G, X in states for v in (G[:, q], X[:, q])]
+            res = fun(*args, i, ca.vertcat(hv[1] + float(tableau.c[q]) * hv[0], u, P))
+            for slot, f in enumerate([res] if K == 1 else res):
+                rows[slot].append(f)
+        ins = [v for Z, g in zip(Zs, gs) for v in (Z, g)]
+        out.append((ca.Function(f"joint_force{c}_stages", [*ins, hv, i],
+                                [ca.vertcat(*r) for r in rows], CALL), jf))
+    return out
+
+
+def _instance_args(jf, Z, G):
+    """(cols, args, i): the slots' bodies per instance (cols[s][e]), the slots' columns of Z
+    and G interleaved, and the joints' i (1 x instances)."""
+    K = len(jf.exprs)
+    cols = [[b[s] for _, b in jf.instances] for s in range(K)]
+    return cols, [v for c in cols for v in (Z[:, c], G[:, c])], \
+        ca.DM([i for i, _ in jf.instances]).T
+
+
+def mapped_external_forces(stage_funs, Z, G, hv, N: int):
+    """(Fext (s d x N), plan): every body's external stage forces from the mapped joint
+    functions (joint_stage_functions) at the bodies' unknowns Z (nzb x N) and g blocks G;
+    plan: [(Function, slot columns, slot arguments, i), ...] for external_force_terms."""
+    from .family_map import _selection, mapped
+    w = stage_funs[0][0].size1_out(0)
+    total, plan = ca.MX.zeros(w, N), []
+    for fn, jf in stage_funs:
+        cols, args, Ij = _instance_args(jf, Z, G)
+        res = mapped(fn, len(jf.instances))(*args, hv, Ij)
+        for slot, f in enumerate([res] if len(cols) == 1 else res):
+            total = total + ca.mtimes(f, _selection(len(jf.instances), cols[slot], N))
+        plan.append((fn, cols, args, Ij))
+    return total, plan
+
+
+def external_force_terms(parts, N: int, nzc: int):
+    """(F terms, dg1 terms, dp1 terms): the Entries that the joint forces add to J's body
+    rows, to dg1/dz and to dP1/dz (hpgen.derive.family_jacobian), each a block product of
+    the body step's d(.)/dfext with dFext/dz."""
+    from .family_jacobian import _jacobian_function
+    from .sparse_blocks import Entries, assemble, block_products
+    st, Fext, hv = parts["step"], parts["Fext"], parts["hv"]
+    Z, G, Q, I = (parts[k] for k in ("Z", "G", "Q", "I"))
+    nzb, w = st["nz"], Fext.size1()
+    terms = []
+    for fn, cols, args, Ij in parts["external"]:
+        K = len(cols)
+        pairs = [(s, 2 * t) for s in range(K) for t in range(K)]
+        jf = _jacobian_function(fn, pairs, f"{fn.name()}_blocks")
+        out = jf.map(len(cols[0]))(*args, hv, Ij)
+        out = [out] if len(pairs) == 1 else out
+        for k, (s, t2) in enumerate(pairs):
+            places = [(a * w, b * nzb) for a, b in zip(cols[s], cols[t2 // 2])]
+            terms.append(Entries.blocks(out[k], jf.sparsity_out(k), places))
+    D = assemble(terms, (w * N, nzc))
+    ins = (Z, G, Q, hv, I, Fext)
+    bf = _jacobian_function(st["F"], [(0, 5)], f"{st['F'].name()}_fext_blocks")
+    bu = _jacobian_function(st["U"], [(0, 5), (1, 5)], f"{st['U'].name()}_fext_blocks")
+    outs = [bf.map(N)(*ins), *bu.map(N)(*ins)]
+    sps = [bf.sparsity_out(0), *[bu.sparsity_out(k) for k in range(2)]]
+    res = []
+    for q, (M, sp) in enumerate(zip(outs, sps)):
+        a = sp.size1()
+        ents = [(range(u * a, (u + 1) * a), [range(u * w, (u + 1) * w)]) for u in range(N)]
+        res.append([block_products([(M, sp)], ents, D, f"body_fext_d{q}")])
+    return tuple(res)
+
+
+def mapped_joint_power(jforces, G, X, ef):
+    """The joint forces' power, the sum over the joints and slots of <f_s, xi_s>, at the
+    bodies' G (nb^2 x N), X (d x N) and ef = (t, u, params) (MX); jforces:
+    joint_force_functions."""
+    from .family_map import mapped
+    total = 0
+    for fun, jf in jforces:
+        K = len(jf.exprs)
+        ins = [ca.SX.sym(f"a{k}", fun.sparsity_in(k)) for k in range(fun.n_in())]
+        res = fun(*ins)
+        res = [res] if K == 1 else res
+        power = sum((ca.dot(res[s], ins[2 * s + 1]) for s in range(K)), ca.SX(0))
+        fp = ca.Function(f"{fun.name()}_power", ins, [power], CALL)
+        cols, args, Ij = _instance_args(jf, G, X)     # (G, X) per slot, as fun takes
+        total = total + ca.sum2(mapped(fp, len(jf.instances))(*args, Ij, ef))
+    return total

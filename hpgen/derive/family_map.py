@@ -83,9 +83,8 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     hv = h
     h, _, e1 = split_step_vector(model, hv)
     N, db = model.family.count, body.d
-    if len(steps) != 1 or any(f is None for f in vel_funs.values()) \
-            or any(st["joint_forces"] for st in steps.values()):
-        return None              # forces between bodies: family_step's composition
+    if len(steps) != 1 or any(f is None for f in vel_funs.values()):
+        return None
     (cls, st), = steps.items()
     nzb, I = st["nz"], body_indices(model, hv)     # the bodies' index inputs
     Z = ca.reshape(z[:nzb * N], nzb, N)
@@ -113,8 +112,13 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
             L = L + ca.mtimes(imp[s], sel[s])
         plan.append((js, fns, cols, sel, Ij, nu, rows))
     Q = P - L
-    Fr = mapped(st["F"], N)(Z, G, Q, hv, I)
-    G1, P1m = mapped(st["U"], N)(Z, G, Q, hv, I)
+    ext: tuple = ()                  # forces between bodies: the bodies' stage forces
+    if st["JS"]:
+        from .family_joint_forces import mapped_external_forces
+        Fext, external = mapped_external_forces(st["JS"], Z, G, hv, N)
+        ext = (Fext,)
+    Fr = mapped(st["F"], N)(Z, G, Q, hv, I, *ext)
+    G1, P1m = mapped(st["U"], N)(Z, G, Q, hv, I, *ext)
     phis, rows_of = [], []
     for js, fns, cols, sel, Ij, nu, rows in plan:
         out = mapped(fns[1], len(js))(*[G1[:, c] for c in cols], Ij, nu)
@@ -144,6 +148,8 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     parts = {"z": z, "Z": Z, "G": G, "Q": Q, "G1": G1, "P1": P1, "V": V, "h": h, "hv": hv, "e1": e1, "I": I,
              "Hinv": Hinv, "groups": groups_out, "rowoff": rowoff, "perm": perm, "m": m,
              "step": st, "velocity": vel_fn}
+    if ext:
+        parts.update(Fext=ext[0], external=external)
     return eqs, parts
 
 
@@ -206,7 +212,11 @@ def mapped_state_kernels(model, lags, keys, body, record_names, force=None) -> d
                          [ca.dot(force(gvec, X, I, Ef), X)], CALL)
         m = len(model.inputs)
         ef = ca.vertcat(hv[1], hv[2:2 + m], hv[2 + m:])
-        items["power"] = items["work"] = ca.sum2(mapped(fp, N)(G, Xm, Im, ef))
+        power = ca.sum2(mapped(fp, N)(G, Xm, Im, ef))
+        if model.family.local.force.joints:      # and the forces between bodies'
+            from .family_joint_forces import joint_force_functions, mapped_joint_power
+            power = power + mapped_joint_power(joint_force_functions(model, body), G, Xm, ef)
+        items["power"] = items["work"] = power
     res = {"legendre": ([gv, xi], ("g", "xi"), [ca.vec(mu_)], ("mu",)),
            "hessian": ([gv, xi], ("g", "xi"),
                        [ca.sparsity_cast(ca.vec(H_), hcol.sparsity())], ("H",)),

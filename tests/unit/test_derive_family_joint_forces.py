@@ -53,7 +53,7 @@ def test_the_joint_force_is_expanded_onto_both_bodies():
     assert all(m.forces[6 + k] != 0 for k in range(3)) and m.forces[9:12] == (0, 0, 0)
 
 
-@pytest.mark.parametrize("n", [2, 3])
+@pytest.mark.parametrize("n", [2, 3, pytest.param(8, marks=pytest.mark.slow)])
 @pytest.mark.parametrize("tab,rk", SCHEMES)
 @pytest.mark.parametrize("driven", [False, True])
 def test_step_kernels_match_the_expansion(n, tab, rk, driven):
@@ -71,6 +71,22 @@ def test_step_kernels_match_the_expansion(n, tab, rk, driven):
     assert "power" in [name for name, _, _ in fam.record_layout]
     close(evaluate(fam, "record", g, p, xi, hv)[0], evaluate(dense, "record", g, p, xi, hv)[0],
           "record")
+
+
+@pytest.mark.parametrize("tab,rk", SCHEMES)
+def test_the_kernels_do_not_grow_with_the_number_of_bodies(tab, rk):
+    """The joint forces are mapped over the joints (hpgen.derive.family_joint_forces): the
+    step kernels' MX graphs have as many operations at N = 3 as at N = 9 (the composition
+    had one call per body, joint and stage); step_partials, CasADi's Jacobian of the mapped
+    step, aside."""
+    from hpgen.derive.family_kernels import mx_step_kernels
+    counts = []
+    for n in (3, 9):
+        kernels = mx_step_kernels(load_model_text(chain_text(n, True)), resolve_tableau(tab),
+                                  "cay", rk)
+        counts.append({name: f.n_instructions() for name, (f, _, _) in kernels.items()
+                       if name != "step_partials"})
+    assert "record" in counts[0] and counts[0] == counts[1]
 
 
 @pytest.mark.parametrize("text,message", [
@@ -92,15 +108,13 @@ def test_a_joint_force_may_use_only_its_bodies():
 
 
 @pytest.mark.slow
-def test_the_modules_match_the_expansion_and_the_scene_physics(tmp_path):
-    """The C and Python modules (N = 2) run 200 steps like CasADi's evaluation of the
-    expansion; the N = 3 scene (C): the energy recorded every 50 steps decays monotonically
-    and falls by far more than the undamped chain's energy band, energy - work is kept to
-    order 2 in h, and the angular momentum about the vertical through the pin to
-    round-off."""
+@pytest.mark.parametrize("tab,rk", SCHEMES)
+def test_the_modules_match_the_expansion(tab, rk, tmp_path):
+    """The C and Python modules (N = 2; the joint forces mapped over the joints) run 200 steps
+    like CasADi's evaluation of the expansion."""
     import hpgen
     n, c = 2, 0.4
-    _, dense = pair(n, "stormer-verlet", "truncated")
+    _, dense = pair(n, tab, rk)
     g0 = np.eye(4 * n)
     xi0 = np.tile([3.0, 1.0, 0.5, 0.0, 0.0, 0.0], n)
     p0 = evaluate(dense, "legendre", g0.ravel(order="F"), xi0, [1e-3, 0.0, c])[0]
@@ -111,11 +125,19 @@ def test_the_modules_match_the_expansion_and_the_scene_physics(tmp_path):
     out = {}
     for backend in ("c", "python"):
         integ = hpgen.compile(EXAMPLES / "joint_damped_chain.yaml", backend=backend,
-                              cache_dir=tmp_path, parameters={"N": n})
+                              cache_dir=tmp_path, parameters={"N": n}, tableau=tab, rkmk=rk)
         traj = integ.simulate(g0, 1e-3, 200, mu0=p0, params={"c": c})
         out[backend] = np.hstack([traj.g[1:].reshape(200, -1), traj.mu[1:]])
         assert np.abs(out[backend] - ref).max() <= 1e-11, backend
     assert np.abs(out["c"] - out["python"]).max() <= 1e-13
+
+
+@pytest.mark.slow
+def test_the_scene_physics(tmp_path):
+    """The N = 3 scene (C): the energy recorded every 50 steps decays monotonically and
+    falls by far more than the undamped chain's energy band, energy - work is kept to order
+    2 in h, and the angular momentum about the vertical through the pin to round-off."""
+    import hpgen
 
     n = 3
     integ = hpgen.compile(EXAMPLES / "joint_damped_chain.yaml", backend="c", cache_dir=tmp_path)
