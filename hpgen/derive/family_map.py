@@ -83,8 +83,8 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     hv = h
     h, _, e1 = split_step_vector(model, hv)
     N, db = model.family.count, body.d
-    if len(steps) != 1 or any(f is None for f in vel_funs.values()):
-        return None
+    if len(steps) != 1 or not vel_funs or any(f is None for f in vel_funs.values()):
+        return None              # no joints (no node velocity function): the composition
     (cls, st), = steps.items()
     nzb, I = st["nz"], body_indices(model, hv)     # the bodies' index inputs
     Z = ca.reshape(z[:nzb * N], nzb, N)

@@ -73,6 +73,36 @@ def test_step_kernels_match_the_expansion(n, tab, rk, driven):
           "record")
 
 
+FREE = """
+name: free_joint_forces
+group: SO3^N
+parameters: {N: 3, c: 0.1, I: [1.0, 2.0, 3.0]}
+runtime_parameters: [c]
+lagrangian: sum(i, 0.5*dot(w[i], I*w[i]))
+forces:
+  for: i
+  joint: {in: [1, N], bodies: [i - 1, i], force: [["0", "0", "c*(w[i][2] - w[i - 1][2])"],
+                                                  ["0", "0", "-c*(w[i][2] - w[i - 1][2])"]]}
+"""
+
+
+@pytest.mark.parametrize("n", [1, 3])
+def test_a_family_without_constraints(n):
+    """Joint forces between free bodies (no constraints: the per-body composition) and the
+    free family alone: the kernels equal the expansion's."""
+    text = FREE.replace("{N: 3,", "{N: %d," % n)
+    for t in (text, text.split("forces:")[0]):
+        m = load_model_text(t)
+        assert family_local(m)
+        tab = resolve_tableau("stormer-verlet")
+        fam, dense = (derive(m, tab, "cay", "truncated", expand=e) for e in (False, True))
+        rng = np.random.default_rng(5)
+        g = np.eye(3 * n).ravel(order="F")
+        p, z = rng.standard_normal(3 * n), 0.3 * rng.standard_normal(dense.nz)
+        hv = np.array([0.01, 0.37, 0.3])
+        compare_step_kernels(fam, dense, np.arange(dense.nz), z, g, p, hv)
+
+
 @pytest.mark.parametrize("tab,rk", SCHEMES)
 def test_the_kernels_do_not_grow_with_the_number_of_bodies(tab, rk):
     """The joint forces are mapped over the joints (hpgen.derive.family_joint_forces): the
