@@ -196,7 +196,18 @@ def _generic_point(group):
     everywhere (the rows are redundant as written, not only at special configurations)."""
     import casadi as ca
     x = np.random.default_rng(12345).uniform(-0.5, 0.5, group.d)
-    return np.array(ca.evalf(ca.SX(group.tau(group.tau_kinds[0], ca.SX(x)))), dtype=float)
+    kind, parts = group.tau_kinds[0], getattr(group, "parts", None)
+    if not parts:
+        return np.array(ca.evalf(ca.SX(group.tau(kind, ca.SX(x)))), dtype=float)
+    # a product: tau block by block, one numeric function per distinct factor
+    g, funs, row, off = np.zeros((group.n, group.n)), {}, 0, 0
+    for f in parts:
+        if f.name not in funs:
+            X = ca.SX.sym("x", f.d)
+            funs[f.name] = ca.Function("tau", [X], [f.tau(kind, X)])
+        g[row:row + f.n, row:row + f.n] = np.array(funs[f.name](x[off:off + f.d]))
+        row, off = row + f.n, off + f.d
+    return g
 
 
 def _check_rank(doc, constraints, g_symbols, group, g, where: str) -> None:
