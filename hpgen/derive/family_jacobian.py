@@ -23,7 +23,9 @@ Phi_{j,k}(g1)^T nu_j)/d g1,
     dV/dz  = V_g dg1/dz + V_P dP1/dz
     J = [F_Z, F_Q dQ/dz; dphi/dg1 dg1/dz / h; dhid/dg1 dg1/dz + dhid/dV dV/dz]
 
-(Z-blocks block-diagonal over the bodies). The result equals casadi.jacobian of the mapped
+(Z-blocks block-diagonal over the bodies). With forces between bodies the body step also
+takes its stage forces Fext(Z) (hpgen.derive.family_joint_forces.external_force_terms adds
+F_fext, g1_fext, P1m_fext times dFext/dz to J, dg1/dz, dP1/dz). The result equals casadi.jacobian of the mapped
 residual to round-off, with work and memory proportional to the blocks' nonzeros instead of
 CasADi's directional derivatives of the whole mapped step.
 """

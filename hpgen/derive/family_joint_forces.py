@@ -1,6 +1,7 @@
 """Forces between bodies of a family model (hpgen.model.joint_forces: ``forces.joint``) in the
-per-body step: each joint force is one CasADi function of its bodies' stage states, called
-per joint and per stage, its outputs scattered to the bodies.
+per-body step: each joint force is one CasADi function of its bodies' stage states, its
+outputs scattered to the bodies: called per joint and per stage in family_step's composition
+(the SX form), mapped over the joints in the step kernels (the mapped form, below).
 
 The discrete Lagrange-d'Alembert force of stage s (hpgen.derive.action) is evaluated at the
 unvaried stage state (G^s = g_k tau(h Theta^s), Xi^s, t_k + c_s h). A body's step function

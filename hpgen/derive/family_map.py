@@ -6,7 +6,9 @@ momenta into P (db x N), body k's unknowns are column k of Z (nzb x N, the first
 entries of z); each body function is called once through ``Function.map`` over the columns,
 each joint function once per row-block text over its instances (the slot bodies' columns
 gathered by one indexing operation each). The impulses sum_j Phi_{j,k}^T lambda_j reach the
-bodies by products with constant selection matrices. The result is the StepEquations of
+bodies by products with constant selection matrices, and so do the joint forces' stage
+forces (hpgen.derive.family_joint_forces, one mapped call per ``joint:`` entry, an input of
+the body step). The result is the StepEquations of
 hpgen.derive.family.family_step (same unknowns, rows and outputs), used when every body
 shares one Lagrangian and the node velocity is explicit; else None.
 """
