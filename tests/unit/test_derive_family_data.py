@@ -229,3 +229,30 @@ def test_compiled_modules_and_a_sweep_over_one_link_mass(tmp_path):
                                   params={"grav": grav, "m": grid[b], "k": ks})
         assert np.array_equal(res["g"][b], one.g) and np.array_equal(res["mu"][b], one.mu)
     assert np.abs(res["g"][0, -1] - res["g"][2, -1]).max() > 1e-3    # the mass matters
+
+
+@pytest.mark.slow
+def test_compiled_modules_with_fixed_lists(tmp_path):
+    """The C and Python modules of the N = 2 chain with fixed per-body masses and gravity
+    factors (body data, constants of the kernels) run 200 steps like CasADi's evaluation of
+    the expansion."""
+    import hpgen
+    n = 2
+    path = tmp_path / "fixed_chain.yaml"
+    path.write_text(chain_text(n, "[grav]", fixed_m=True))
+    m, fam, dense = pair(n, "stormer-verlet", "truncated", "[grav]", fixed_m=True)
+    assert [s.name for s, _ in m.family.local.data] == ["body:k", "body:m"]
+    g0 = np.eye(4 * n)
+    xi0 = np.tile([3.0, 1.0, 0.5, 0.0, 0.0, 0.0], n)
+    p0 = evaluate(dense, "legendre", g0.ravel(order="F"), xi0, [1e-3, 0.0, 8.0])[0]
+    raw = run(dense, g0.ravel(order="F"), p0, 1e-3, 200, [8.0])
+    ng = (4 * n) ** 2
+    ref = np.array([np.concatenate([r[:ng].reshape(4 * n, 4 * n, order="F").ravel(), r[ng:]])
+                    for r in raw])
+    out = {}
+    for backend in ("c", "python"):
+        integ = hpgen.compile(path, backend=backend, cache_dir=tmp_path)
+        traj = integ.simulate(g0, 1e-3, 200, mu0=p0, params={"grav": 8.0})
+        out[backend] = np.hstack([traj.g[1:].reshape(200, -1), traj.mu[1:]])
+        assert np.abs(out[backend] - ref).max() <= 1e-11, backend
+    assert np.abs(out["c"] - out["python"]).max() <= 1e-13
