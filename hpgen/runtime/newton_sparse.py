@@ -7,8 +7,9 @@ next iterates one residual and one solve each while they contract; a kept J whos
 theta = |dz| / |dz_prev| exceeds THETA_MAX (and that is no round-off stall) is evaluated again
 at the next iterate. Nothing is kept across steps. Stops (inf-norms): |dz| stopped decreasing
 while <= ROUNDOFF_FLOOR (1 + |z|); after a fresh J |dz| <= tol (1 + |z|) and
-hpgen.runtime.newton.sparse_converged (quadratic rate); after a kept J sparse_converged asked
-of SIMPLIFIED_TOL tol (the linear rate's bound); the round-off stall (``stalled``).
+hpgen.runtime.newton.sparse_converged (quadratic rate); after a kept J chord_converged (the
+chord's rate bound; RATE_STOP = False: sparse_converged asked of SIMPLIFIED_TOL tol, simplified
+Newton's bound); the round-off stall (``stalled``).
 """
 from __future__ import annotations
 
@@ -20,6 +21,21 @@ _INF, _NAN = float("inf"), float("nan")
 
 #: the C runtime's HPGEN_SPARSE_CHORD default: J once a step (refreshed on a poor rate)
 CHORD = True
+#: the C runtime's HPGEN_CHORD_RATE_STOP default: a kept J stops on chord_converged
+RATE_STOP = True
+
+
+def chord_converged(it: int, dn: float, dprev: float, zn: float, tol: float) -> bool:
+    """hpgen_newton.c's hpgen_chord_converged: from the second iterate on, the chord's rate
+    theta = |dz| / |dz_prev| < 1 bounds the error left by theta / (1 - theta) |dz|; stop when
+    that is <= tol (1 + |z|) with |dz| <= ROUNDOFF_FLOOR (1 + |z|). The chord's J was evaluated
+    at the step's own start, so its rate is uniform over the directions (no slow mode behind
+    the fast ones, as with a J kept across steps)."""
+    if it < 2:
+        return False
+    th = dn / dprev
+    return (th < 1.0 and dn <= ROUNDOFF_FLOOR * (1.0 + zn)
+            and th / (1.0 - th) * dn <= tol * (1.0 + zn))
 
 
 def stalled(it: int, dn: float, dprev: float, zn: float, fresh: bool,
@@ -75,7 +91,9 @@ def solve_pass(kern, z, g, p, hv, tol: float, maxit: int, chord: bool):
             return OK, z, it, norm_inf(F), jacs
         if fresh and dn <= tol * (1.0 + zn):
             return OK, z, it, norm_inf(F), jacs
-        if sparse_converged(it, dn, dprev, zn, tol if fresh else SIMPLIFIED_TOL * tol, fresh):
+        if (sparse_converged(it, dn, dprev, zn, tol, True) if fresh
+                else chord_converged(it, dn, dprev, zn, tol) if RATE_STOP
+                else sparse_converged(it, dn, dprev, zn, SIMPLIFIED_TOL * tol, False)):
             return OK, z, it, norm_inf(F), jacs
         if stalled(it, dn, dprev, zn, fresh, contracted):
             return OK, z, it, norm_inf(F), jacs

@@ -28,6 +28,24 @@ static int hpgen_sparse_converged(long long it, double dn, double dprev, double 
     return te / (1.0 - te) * dn <= tol * (1.0 + zn);
 }
 
+/* The chord's stop (a J evaluated in this step at an earlier iterate, kept): from the second
+   iterate on, the rate theta_k = |dz_k| / |dz_{k-1}| < 1 bounds the error left in z_k by
+   theta_k / (1 - theta_k) |dz_k| (Hairer-Wanner II, IV.8); stop when that is
+   <= tol (1 + |z|) with |dz_k| <= HPGEN_ROUNDOFF_FLOOR (1 + |z|), rather than pay one more
+   residual and solve to see the next correction at the noise. Unlike a J kept across steps
+   (hpgen_sparse_converged's HPGEN_THETA_FLOOR and HPGEN_SIMPLIFIED_TOL), the chord's J_0 was
+   evaluated at the step's own start z_0: J_0 - J(z) = O(|z - z_0|) in every direction, so no
+   slow mode hides behind the fast ones and the chord's rate, of the order of
+   C |dz_1| (C the curvature of F), is what theta_k measures. Mirrored in
+   hpgen.runtime.newton_sparse.chord_converged. */
+static int hpgen_chord_converged(long long it, double dn, double dprev, double zn, double tol) {
+    double th;
+    if (it < 2) return 0;
+    th = dn / dprev;
+    return th < 1.0 && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)
+        && th / (1.0 - th) * dn <= tol * (1.0 + zn);
+}
+
 /* A sparse module's simplified Newton keeps its J at the round-off noise: from a step's
    third iterate on, once |dz| <= HPGEN_KEEP_J_FLOOR (1 + |z|), a contraction rate above
    HPGEN_THETA_MAX neither refreshes J nor switches to full Newton; the iterates go on with
@@ -189,8 +207,9 @@ static int hpgen_stalled(long long it, double dn, double dprev, double zn, int f
    the next iterate); 0: J at every iterate. Nothing is kept across steps.
    Stops (inf-norms): |dz| stopped decreasing while <= HPGEN_ROUNDOFF_FLOOR (1 + |z|); after a
    fresh J |dz| <= tol (1 + |z|) and hpgen_sparse_converged (quadratic rate); after a kept J
-   hpgen_sparse_converged asked of HPGEN_SIMPLIFIED_TOL tol (the linear rate's bound
-   te/(1 - te) |dz|, as simplified Newton's); the round-off stall (hpgen_stalled).
+   hpgen_chord_converged (the chord's rate bound; HPGEN_CHORD_RATE_STOP = 0:
+   hpgen_sparse_converged asked of HPGEN_SIMPLIFIED_TOL tol, simplified Newton's bound); the
+   round-off stall (hpgen_stalled).
    Mirrored in hpgen.runtime.newton_sparse.solve_pass. */
 static int hpgen_newton_sparse_pass(const double* g, const double* p, const double* hv,
                                     double* z, const hpgen_options* o, int chord,
@@ -228,8 +247,11 @@ static int hpgen_newton_sparse_pass(const double* g, const double* p, const doub
             code = HPGEN_OK; break;
         }
         if (fresh && dn <= tol * (1.0 + zn)) { code = HPGEN_OK; break; }
-        if (hpgen_sparse_converged(it, dn, dprev, zn, fresh ? tol : HPGEN_SIMPLIFIED_TOL * tol,
-                                   fresh)) { code = HPGEN_OK; break; }
+        if (fresh ? hpgen_sparse_converged(it, dn, dprev, zn, tol, 1)
+            : HPGEN_CHORD_RATE_STOP ? hpgen_chord_converged(it, dn, dprev, zn, tol)
+            : hpgen_sparse_converged(it, dn, dprev, zn, HPGEN_SIMPLIFIED_TOL * tol, 0)) {
+            code = HPGEN_OK; break;
+        }
         if (hpgen_stalled(it, dn, dprev, zn, fresh, contracted)) { code = HPGEN_OK; break; }
         if (it > 1 && dn <= HPGEN_THETA_MAX * dprev) contracted = 1;
         else if (it > 1 && !fresh) need_j = 1;
