@@ -121,6 +121,12 @@
 #ifndef HPGEN_CHORD_RATE_STOP
 #define HPGEN_CHORD_RATE_STOP 1
 #endif
+/* 1: a composed step's substeps of the first substep's size share its J (a sparse module's
+   chord, hpgen_run_cstep_then; C only, a build option: it pays at small h only,
+   docs/numerics.md sec. 8); 0 (default): a J at every substep */
+#ifndef HPGEN_COMPOSE_SHARE_J
+#define HPGEN_COMPOSE_SHARE_J 0
+#endif
 /* a sparse module's simplified Newton keeps J at |dz| <= this * (1 + |z|) (hpgen_at_floor) */
 #define HPGEN_KEEP_J_FLOOR 1e-12
 /* simplified Newton: a contraction rate |dz_k| / |dz_{k-1}| above this refreshes the Jacobian
