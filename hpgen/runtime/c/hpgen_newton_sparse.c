@@ -108,11 +108,25 @@ static int hpgen_shared_converged(long long it, double dn, double dprev, double 
         && te / (1.0 - te) * dn <= tol * (1.0 + zn);
 }
 
+/* A pass wanders when a later correction is larger than its first one, above the noise
+   (|dz_k| > |dz_1| and > HPGEN_STALL_MAX (1 + |z|)): from a start inside Newton's basin the
+   corrections shrink from the first one on (Kantorovich: the first correction measures the
+   distance to the root, and the iterates stay within about twice it); corrections that
+   grow leave the start's basin, and where they end is a root of F that need not be the
+   step's (on the capsule chain, Gauss 2 at h = 1e-2, a root with the energy 120 higher).
+   The pass fails (HPGEN_NO_CONVERGENCE) and the next route takes the step: J at every
+   iterate from the same start, then the run's plain warm start (hpgen_run_step). Mirrored
+   in hpgen.runtime.newton_sparse.wanders. */
+static int hpgen_wanders(double dn, double d1, double zn) {
+    return dn > d1 && dn > HPGEN_STALL_MAX * (1.0 + zn);
+}
+
 /* One pass of full Newton of a module with a sparse Newton matrix. chord = 1: a chord
    iteration within the step (J and its factors at the step's first iterate; the next iterates
    one residual and one solve each, while they contract; a kept J whose rate
    theta = |dz| / |dz_prev| exceeds HPGEN_THETA_MAX, and is no stall, is evaluated again at
-   the next iterate); 0: J at every iterate. J, piv: the factors' storage; shared = 1: they
+   the next iterate); 0: J at every iterate. A pass that wanders (hpgen_wanders) fails.
+   J, piv: the factors' storage; shared = 1: they
    hold a J factored at another substep of the same size, which the chord starts with
    (hpgen_shared_converged its stop until J is evaluated here).
    Stops (inf-norms): |dz| stopped decreasing while <= HPGEN_ROUNDOFF_FLOOR (1 + |z|); after a
@@ -125,7 +139,7 @@ static int hpgen_newton_sparse_pass(const double* g, const double* p, const doub
                                     double* z, const hpgen_options* o, int chord, double* J,
                                     int* piv, int shared, long long* iters, long long* jacs,
                                     double* rnorm) {
-    double F[HPGEN_NZ], Fz[HPGEN_NZ], dprev = HUGE_VAL;
+    double F[HPGEN_NZ], Fz[HPGEN_NZ], dprev = HUGE_VAL, d1 = HUGE_VAL;
     const double tol = o->tol;
     const long long maxit = o->maxit;
     long long it, nj = 0;
@@ -154,6 +168,8 @@ static int hpgen_newton_sparse_pass(const double* g, const double* p, const doub
         for (i = 0; i < HPGEN_NZ; ++i) z[i] -= F[i];
         zn = hpgen_norm_inf(z, HPGEN_NZ);
         if (!isfinite(dn) || !isfinite(zn)) { code = HPGEN_NONFINITE; break; }
+        if (it == 1) d1 = dn;
+        else if (hpgen_wanders(dn, d1, zn)) break;
         /* (a shared J's slow modes can read as a stagnation or a stall: not until J is
            evaluated here) */
         if (it > 1 && own && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)) {
