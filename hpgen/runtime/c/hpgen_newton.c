@@ -1,57 +1,7 @@
 /* hpgen's C runtime, part 2: Newton on the step's residual, one step (hpgen_step_core, the
    exported hpgen_step) and the argument checks the runs share. Mirrored in Python by
    hpgen.runtime.newton (the same iteration, tests and results). Included by hpgen_runtime.c
-   after hpgen_linalg.c. */
-
-#if HPGEN_SPARSE
-/* The extra stop of a module with a sparse Newton matrix (many bodies): the error left
-   after the iterate, estimated from the rate theta = |dz| / |dz_prev|, is <= tol (1 + |z|).
-   After an iterate with a fresh J: theta^2 |dz| (quadratic convergence: C |dz|^2 with
-   C = |dz| / |dz_prev|^2, an overestimate once |dz| is round-off), and theta |dz| (the
-   error were the convergence only linear) <= HPGEN_ROUNDOFF_FLOOR (1 + |z|). With a kept J:
-   |dz| <= HPGEN_ROUNDOFF_FLOOR (1 + |z|) and te/(1 - te) |dz| with te = max(theta,
-   HPGEN_THETA_FLOOR) (a linear rate). The round-off in dz of a many-body step is itself about tol (1 + |z|)
-   and grows with the number of bodies, so the dense modules' tests (|dz| <= tol (1 + |z|);
-   a simplified bound HPGEN_SIMPLIFIED_TOL times smaller) end there only when |dz|
-   stagnates, and the stagnation of a stale J looks like a poor contraction that refreshes
-   J. Mirrored in hpgen.runtime.newton.sparse_converged. */
-static int hpgen_sparse_converged(long long it, double dn, double dprev, double zn,
-                                  double tol, int fresh_j) {
-    double th, te;
-    if (it < 2) return 0;
-    th = dn / dprev;
-    if (!(th < 1.0)) return 0;
-    if (fresh_j)
-        return th * dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn) && th * th * dn <= tol * (1.0 + zn);
-    if (!(dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn))) return 0;
-    te = th > HPGEN_THETA_FLOOR ? th : HPGEN_THETA_FLOOR;
-    return te / (1.0 - te) * dn <= tol * (1.0 + zn);
-}
-
-/* A sparse module's simplified Newton keeps its J at the round-off noise: from a step's
-   third iterate on, once |dz| <= HPGEN_KEEP_J_FLOOR (1 + |z|), a contraction rate above
-   HPGEN_THETA_MAX neither refreshes J nor switches to full Newton; the iterates go on with
-   the kept J until a stop test holds (the stagnation test, once |dz| stops decreasing, or
-   hpgen_sparse_converged). The round-off in dz of a many-body step is about tol (1 + |z|)
-   times a factor that grows with the bodies: corrections at that level are noise whose
-   ratio is a random number of order 1, and a fresh J (several residuals' cost, with its
-   factorization) cannot contract noise. The rate of the first two corrections, taken while
-   the start's error dominates, still refreshes an aged J. HPGEN_KEEP_J_FLOOR is 10 times
-   below HPGEN_ROUNDOFF_FLOOR: above it the slow rate of an aged J can pass for noise, and
-   the stagnation test then stops with errors of that size, which the joints' velocity
-   form shows (hpgen.abi.KEEP_J_FLOOR). Mirrored in hpgen.runtime.newton.at_floor. */
-static int hpgen_at_floor(double dn, double zn) {
-    return dn <= HPGEN_KEEP_J_FLOOR * (1.0 + zn);
-}
-
-/* ... and a kept J whose second correction is no smaller than its first does not stop on
-   the stagnation test (the first correction being at the floor): that J may not contract
-   at all, and the error left would be of the floor's size; the rate test refreshes it. */
-#define hpgen_kept_j_diverges(it, fresh) ((it) == 2 && !(fresh))
-#else
-#define hpgen_at_floor(dn, zn) 0
-#define hpgen_kept_j_diverges(it, fresh) 0
-#endif
+   after hpgen_newton_sparse.c (a sparse module's stop tests and chord). */
 
 /* Newton on residual(z, g, p, h) = 0 from z (in/out): z <- z - J^{-1} F.
    Full Newton evaluates J at every iterate. Simplified Newton (o->simplified) keeps the last
@@ -163,109 +113,6 @@ static int hpgen_newton_full(const double* g, const double* p, const double* hv,
 }
 #endif
 
-#if HPGEN_SPARSE
-/* The round-off stall of a module with a sparse Newton matrix (many bodies): the correction
-   dz_k is the round-off noise of the step's solution, and z_k is as close to it as the
-   arithmetic allows, when
-     theta_k = |dz_k| / |dz_{k-1}| > HPGEN_THETA_MAX,  |dz_k| <= HPGEN_STALL_MAX (1 + |z_k|),
-   with a J that contracts: evaluated at z_{k-1} (fresh: Newton's rate near the root is
-   C |dz_{k-1}|, far below THETA_MAX at that size), or one that already contracted in this step
-   (theta <= THETA_MAX once; a J factored in this step keeps its linear rate, which only falls
-   as the iterates approach the root; a J kept from earlier steps does not qualify: its slow
-   modes can surface once its fast ones died). The noise of dz grows with cond(J), so its
-   level is read off the data (where the step's corrections stop contracting); a stall above
-   HPGEN_STALL_MAX (1 + |z|) is not taken for noise. Mirrored in
-   hpgen.runtime.newton_sparse.stalled. */
-static int hpgen_stalled(long long it, double dn, double dprev, double zn, int fresh,
-                         int contracted) {
-    return it > 1 && (fresh || contracted) && dn > HPGEN_THETA_MAX * dprev
-        && dn <= HPGEN_STALL_MAX * (1.0 + zn);
-}
-
-/* One pass of full Newton of a module with a sparse Newton matrix. chord = 1: a chord
-   iteration within the step (J and its factors at the step's first iterate; the next iterates
-   one residual and one solve each, while they contract; a kept J whose rate
-   theta = |dz| / |dz_prev| exceeds HPGEN_THETA_MAX, and is no stall, is evaluated again at
-   the next iterate); 0: J at every iterate. Nothing is kept across steps.
-   Stops (inf-norms): |dz| stopped decreasing while <= HPGEN_ROUNDOFF_FLOOR (1 + |z|); after a
-   fresh J |dz| <= tol (1 + |z|) and hpgen_sparse_converged (quadratic rate); after a kept J
-   hpgen_sparse_converged asked of HPGEN_SIMPLIFIED_TOL tol (the linear rate's bound
-   te/(1 - te) |dz|, as simplified Newton's); the round-off stall (hpgen_stalled).
-   Mirrored in hpgen.runtime.newton_sparse.solve_pass. */
-static int hpgen_newton_sparse_pass(const double* g, const double* p, const double* hv,
-                                    double* z, const hpgen_options* o, int chord,
-                                    long long* iters, long long* jacs, double* rnorm) {
-    double F[HPGEN_NZ], Fz[HPGEN_NZ], J[HPGEN_LU_SIZE], dprev = HUGE_VAL;
-    const double tol = o->tol;
-    const long long maxit = o->maxit;
-    long long it, nj = 0;
-    int i, piv[HPGEN_NZ], evaluated = 0, need_j = 1, fresh = 0, contracted = 0;
-    int code = HPGEN_NO_CONVERGENCE;
-    for (it = 1; it <= maxit; ++it) {
-        double dn, zn;
-        if (need_j) {
-            ++nj;
-            if (hpgen_newton_fj(z, g, p, hv, F, J)) { code = HPGEN_NONFINITE; break; }
-            memcpy(Fz, F, sizeof F);
-            evaluated = 1;
-            if (hpgen_lu_factor_solve(J, piv, F, chord)) {
-                code = HPGEN_NONFINITE; break;
-            }
-            need_j = !chord;
-            fresh = 1;
-        } else {
-            if (hpgen_k_residual(z, g, p, hv, F)) { code = HPGEN_NONFINITE; break; }
-            memcpy(Fz, F, sizeof F);
-            hpgen_lu_apply(J, piv, F);
-            fresh = 0;
-        }
-        dn = hpgen_norm_inf(F, HPGEN_NZ);
-        if (!isfinite(dn) && !hpgen_all_finite(Fz, HPGEN_NZ)) { code = HPGEN_NONFINITE; break; }
-        for (i = 0; i < HPGEN_NZ; ++i) z[i] -= F[i];
-        zn = hpgen_norm_inf(z, HPGEN_NZ);
-        if (!isfinite(dn) || !isfinite(zn)) { code = HPGEN_NONFINITE; break; }
-        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + zn)) {
-            code = HPGEN_OK; break;
-        }
-        if (fresh && dn <= tol * (1.0 + zn)) { code = HPGEN_OK; break; }
-        if (hpgen_sparse_converged(it, dn, dprev, zn, fresh ? tol : HPGEN_SIMPLIFIED_TOL * tol,
-                                   fresh)) { code = HPGEN_OK; break; }
-        if (hpgen_stalled(it, dn, dprev, zn, fresh, contracted)) { code = HPGEN_OK; break; }
-        if (it > 1 && dn <= HPGEN_THETA_MAX * dprev) contracted = 1;
-        else if (it > 1 && !fresh) need_j = 1;
-        dprev = dn;
-    }
-    if (it > maxit) it = maxit;
-    *iters = it;
-    *jacs += nj;
-    *rnorm = evaluated ? hpgen_norm_inf(Fz, HPGEN_NZ) : NAN;
-    return code;
-}
-
-/* The chord pass, and if it fails (a divergent or stalled chord from a poor start: the
-   predictor's extrapolation on a hard step) a second pass with J at every iterate from the same
-   start; iterations and J evaluations of both passes are counted. HPGEN_SPARSE_CHORD = 0: J
-   at every iterate only. Mirrored in hpgen.runtime.newton_sparse.solve_sparse. */
-static int hpgen_newton_sparse(const double* g, const double* p, const double* hv, double* z,
-                               const hpgen_options* o, long long* iters, long long* jacs,
-                               double* rnorm) {
-    double z0[HPGEN_NZ];
-    long long first;
-    int code;
-    if (!HPGEN_SPARSE_CHORD)
-        return hpgen_newton_sparse_pass(g, p, hv, z, o, 0, iters, jacs, rnorm);
-    memcpy(z0, z, sizeof z0);
-    code = hpgen_newton_sparse_pass(g, p, hv, z, o, 1, iters, jacs, rnorm);
-    if (code == HPGEN_OK || *iters <= 1) return code;   /* a first iterate is the same in both */
-    first = *iters;
-    memcpy(z, z0, sizeof z0);
-    code = hpgen_newton_sparse_pass(g, p, hv, z, o, 0, iters, jacs, rnorm);
-    *iters += first;
-    return code;
-}
-#else
-#define hpgen_newton_sparse hpgen_newton_full
-#endif
 
 /* A family module (HPGEN_G_PACKED): g is block-diagonal and the update kernel's variant
    hpgen_k_update_nz writes g_{k+1} as its HPGEN_GNZ structural nonzeros, whose positions in
@@ -329,8 +176,9 @@ static int hpgen_step_solve(const double* g, const double* p, const double* hv, 
     if (o->simplified) {
         code = hpgen_newton(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm);
     } else {
-        *lu_valid = 0;                     /* full Newton keeps no J^{-1} */
-        code = hpgen_newton_sparse(g, p, hv, z, o, iters, jacs, rnorm);
+        /* full Newton keeps no J^{-1} (a sparse module's chord may share its factors
+           between the substeps of a composed step: hpgen_newton_sparse's lu_state) */
+        code = hpgen_newton_sparse(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm);
     }
     /* a Newton failure is reported as such (wherever its last iterate went): DOMAIN is a
        converged solution outside tau's domain only */

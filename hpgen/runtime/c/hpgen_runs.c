@@ -198,7 +198,10 @@ HPGEN_EXPORT int hpgen_run_set_compose(hpgen_run* r, long long cs, const double*
    own offsets z - G at the last min(k, HPGEN_CH) steps (G itself at the first step).
    Simplified Newton keeps J^{-1} across substeps as across steps: its contraction test
    refreshes it when the fraction changed too much (a fresh J at every change of fraction
-   would cost more J evaluations than the test asks for). An open model's substep i has time
+   would cost more J evaluations than the test asks for). A sparse module's full Newton (the
+   chord) built with -DHPGEN_COMPOSE_SHARE_J=1 shares the factors of the first substep's J
+   with the later substeps of the same fraction (Suzuki's p, p, 1 - 4p, p, p: one J for four
+   substeps), nothing across composed steps; by default a J at every substep. An open model's substep i has time
    t0 + (k + cg[0] + ... + cg[i-1]) h and input row k. st->iterations: summed over the
    substeps. On failure the run is back at its state before the step.
    after (NULL in the runs; hpgen_linearize's per-substep derivative): called after each
@@ -211,11 +214,12 @@ static int hpgen_run_cstep_then(hpgen_run* r, const double* hv, const hpgen_opti
                                 hpgen_substep_hook after, void* ctx) {
     double hs[1], g0[HPGEN_GNZ], p0[HPGEN_D], z0[HPGEN_NZ], c = 0.0;
     const long long k = r->k;
-    long long it = 0, i;
+    long long it = 0, i, shared = 0;
     int code;
 #if HPGEN_OPEN
     const double t0 = r->t0;
 #endif
+    (void)shared;
     if (r->cs == 0) {
         code = hpgen_run_step(r, hv, o, full, st, with_g);
         if (code == HPGEN_OK && after && (code = after(ctx, r, 0, HPGEN_RUN_HV(r, hv))) != HPGEN_OK) {
@@ -229,6 +233,14 @@ static int hpgen_run_cstep_then(hpgen_run* r, const double* hv, const hpgen_opti
     for (i = 0; i < r->cs; ++i) {
         hs[0] = r->cg[i] * hv[0];
         r->k = k;
+#if HPGEN_SPARSE
+        /* full Newton: the substeps of the first substep's size share its J's factors
+           (hpgen_newton_sparse's lu_state); a substep of another size keeps them aside */
+        if (!o->simplified && HPGEN_COMPOSE_SHARE_J) {
+            if (i == 0) shared = HPGEN_LU_STORE;
+            r->lu_valid = r->cg[i] == r->cg[0] ? shared : 0;
+        }
+#endif
         if (r->c_have > 0) {
             r->have_prev = r->c_have;
             memcpy(r->dz[0], r->cdz[i][0], r->c_have * sizeof r->dz[0]);
@@ -252,11 +264,21 @@ static int hpgen_run_cstep_then(hpgen_run* r, const double* hv, const hpgen_opti
             memcpy(r->p, p0, sizeof p0);
             memcpy(r->z, z0, sizeof z0);
             r->k = k;
+#if HPGEN_SPARSE
+            if (!o->simplified) r->lu_valid = 0;
+#endif
             return code;
         }
         memcpy(r->cdz[i][0], r->dz[0], HPGEN_CH * sizeof r->dz[0]);
         c += r->cg[i];
+#if HPGEN_SPARSE
+        if (!o->simplified && HPGEN_COMPOSE_SHARE_J && r->cg[i] == r->cg[0])
+            shared = r->lu_valid;
+#endif
     }
+#if HPGEN_SPARSE
+    if (!o->simplified) r->lu_valid = 0;
+#endif
     if (r->c_have < HPGEN_CH) r->c_have += 1;
     st->iterations = it;
     return HPGEN_OK;

@@ -4,6 +4,7 @@
    after the model's kernels (see hpgen_runtime.h); its parts, in dependency order:
 
      hpgen_linalg.c     the Newton matrix: dense LU / cofactors, J^{-1}, norms
+     hpgen_newton_sparse.c  a sparse Newton matrix's stop tests and chord iteration
      hpgen_newton.c     Newton on the step's residual, one step (hpgen_step)
      hpgen_runs.c       a run: predictor, run step, states, sections, record rows
      hpgen_batch.c      batches of runs
@@ -20,6 +21,7 @@ HPGEN_EXPORT void hpgen_dims(long long* out) {
 }
 
 #include "hpgen_linalg.c"
+#include "hpgen_newton_sparse.c"
 #include "hpgen_newton.c"
 #include "hpgen_runs.c"
 #include "hpgen_batch.c"

@@ -116,6 +116,17 @@
 #ifndef HPGEN_SPARSE_CHORD
 #define HPGEN_SPARSE_CHORD 1
 #endif
+/* 1: the chord stops on its rate's error bound (hpgen_chord_converged); 0: on the stricter
+   bound of a kept J (a build may set it to compare) */
+#ifndef HPGEN_CHORD_RATE_STOP
+#define HPGEN_CHORD_RATE_STOP 1
+#endif
+/* 1: a composed step's substeps of the first substep's size share its J (a sparse module's
+   chord, hpgen_run_cstep_then; C only, a build option: it pays at small h only,
+   docs/numerics.md sec. 8); 0 (default): a J at every substep */
+#ifndef HPGEN_COMPOSE_SHARE_J
+#define HPGEN_COMPOSE_SHARE_J 0
+#endif
 /* a sparse module's simplified Newton keeps J at |dz| <= this * (1 + |z|) (hpgen_at_floor) */
 #define HPGEN_KEEP_J_FLOOR 1e-12
 /* simplified Newton: a contraction rate |dz_k| / |dz_{k-1}| above this refreshes the Jacobian
