@@ -4,14 +4,15 @@ against MuJoCo RK4 at several dt (and Pinocchio's RKMK4 where cheap), for each N
 has the smaller energy band at equal cost, by what ratio, and the N where hpgen starts to win.
 
     PYTHONPATH=. python benchmarks/chain_compose_bench.py [--n 10 16 32] [--t T ...]
-        [--runs sv:1e-3,2e-3 suzuki4:1e-2,5e-3 yoshida4:1e-2,5e-3 kahan-li6:2e-2,1e-2]
+        [--runs sv:1e-3,2e-3 suzuki4:1e-2,5e-3 ...]
         [--rk4-dt 5e-4 1e-3 2e-3 4e-3 8e-3] [--pinocchio aba] [--pinocchio-dt 2e-3 4e-3 8e-3]
         [--pinocchio-max-n 16] [--every 10] [--frames centre] [--start random]
         [--newton default] [--error-max-n 16] [--out DIR]
 
 ``--runs``: NAME:H,H,... with NAME ``sv`` (the model's constrained Stormer-Verlet), a
 composition of it (``hpgen list``: yoshida4, suzuki4, yoshida6, kahan-li6) or a Gauss tableau
-(``gauss2``, ``gauss3``: exact RKMK, which keeps their order). Model: hpgen_chain's
+(``gauss2``, ``gauss3``: exact RKMK, which keeps their order); default: default_runs(N)
+(step sizes falling with N, where Newton converges over T). Model: hpgen_chain's
 ``--frames`` (``centre`` examples/capsule_chain.yaml, ``pin`` examples/pendulum_chain.yaml).
 Start ``--start`` (chain.named_joint_state; ``random``: hanging straight down, joint rates
 ~ N(0, 1), seed 0). ``--t``: simulated seconds per N (one value for all, or one per N;
@@ -61,9 +62,18 @@ from hpgen.bench.multibody import chain, equal_cost, hpgen_chain, reference  # n
 from hpgen.runtime.newton import NewtonOptions  # noqa: E402
 
 DEFAULT_N = [10, 16, 32]
-DEFAULT_RUNS = ["sv:1e-3,2e-3", "suzuki4:1e-2,5e-3", "yoshida4:1e-2,5e-3",
-                "kahan-li6:2e-2,1e-2"]
 RK4 = "MuJoCo RK4"
+
+
+def default_runs(n):
+    """hpgen's runs at N = n when --runs is not given: the chain's fastest modes quicken with
+    N, and Newton fails above a step size that falls with N (at N = 32: SV at h = 2e-3,
+    suzuki4 at 5e-3), so the step sizes fall with N."""
+    if n <= 12:
+        return ["sv:1e-3,2e-3", "suzuki4:1e-2,5e-3", "yoshida4:5e-3", "kahan-li6:1e-2"]
+    if n <= 24:
+        return ["sv:1e-3,2e-3", "suzuki4:5e-3,2.5e-3", "kahan-li6:5e-3"]
+    return ["sv:5e-4,1e-3", "suzuki4:2e-3", "kahan-li6:2e-3"]
 
 
 def default_t(n):
@@ -204,7 +214,8 @@ def main(argv=None):
     ap.add_argument("--n", type=int, nargs="+", default=DEFAULT_N)
     ap.add_argument("--t", type=float, nargs="+", default=None,
                     help="simulated seconds per run: one value, or one per N")
-    ap.add_argument("--runs", nargs="+", default=DEFAULT_RUNS, help="NAME:H,H,... (see above)")
+    ap.add_argument("--runs", nargs="+", default=None,
+                    help="NAME:H,H,... (see above); default: default_runs(N)")
     ap.add_argument("--rk4-dt", type=float, nargs="+", default=[5e-4, 1e-3, 2e-3, 4e-3, 8e-3])
     ap.add_argument("--pinocchio", choices=["aba", "crba", "none"], default="aba")
     ap.add_argument("--pinocchio-dt", type=float, nargs="+", default=[2e-3, 4e-3, 8e-3])
@@ -219,7 +230,7 @@ def main(argv=None):
     ap.add_argument("--newton", choices=["default", "full", "simplified"], default="default",
                     help="hpgen's Newton (default: the module's)")
     args = ap.parse_args(argv)
-    runs = [parse_run(text) for text in args.runs]
+    given = None if args.runs is None else [parse_run(text) for text in args.runs]
     ts = [default_t(n) for n in args.n] if args.t is None else (
         args.t * len(args.n) if len(args.t) == 1 else args.t)
     if len(ts) != len(args.n) or args.every < 1:
@@ -253,13 +264,13 @@ def main(argv=None):
         print(f"\nN = {n}, T = {T:g}, {model.name}, start {args.start}, every {args.every}"
               f"\n\n{HEADER}", flush=True)
         rows, check = [], None
-        for name, hs in runs:
+        for name, hs in given or [parse_run(text) for text in default_runs(n)]:
             integ = hpgen.compile(model, parameters={"N": n}, **compile_options(name))
             label = "hpgen SV" if name == "sv" else f"hpgen {name}"
             rows += hpgen_rows(integ, label, spec, args.frames, g0, xi0, hs, T, args.every,
                                ref, newton)
             if check is None:
-                steps = int(min(round(T / hs[0]), 20_000) // args.every * args.every)
+                steps = int(min(round(T / hs[0]), 10_000) // args.every * args.every)
                 check = dict(runner=label, **stream_check(integ, spec, g0, xi0, hs[0], steps,
                                                           args.every, args.frames, newton))
                 print(f"stream check, {label} h = {hs[0]:g}, {steps} steps: one simulate call "

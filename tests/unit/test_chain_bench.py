@@ -106,3 +106,5 @@ def test_compose_bench_parses_runs_and_options():
         with pytest.raises(SystemExit, match="--runs"):
             bench.parse_run(bad)
     assert [bench.default_t(n) for n in (10, 16, 32, 64)] == [100.0, 100.0, 20.0, 5.0]
+    for n in (10, 16, 32):          # every default run is a valid --runs entry
+        assert [bench.parse_run(text)[0] for text in bench.default_runs(n)][0] == "sv"

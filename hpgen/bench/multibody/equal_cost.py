@@ -110,17 +110,20 @@ def plot(panels, path, title="energy band against cost") -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, len(panels), figsize=(4.6 * len(panels), 4.2), squeeze=False)
+    runners = list(dict.fromkeys(r["runner"] for _, _, rows in panels for r in rows))
+    colour = {name: f"C{i % 10}" for i, name in enumerate(runners)}
     for ax, (n, T, rows) in zip(axes[0], panels):
-        for runner in dict.fromkeys(r["runner"] for r in rows):
+        for runner in runners:
             pts = sorted(usable([r for r in rows if r["runner"] == runner]),
                          key=lambda r: r["cost"])
             if pts:
                 ax.loglog([1e3 * r["cost"] for r in pts], [r["band"] for r in pts],
-                          marker="o" if runner.startswith("hpgen") else "s", label=runner)
+                          marker="o" if runner.startswith("hpgen") else "s", label=runner,
+                          color=colour[runner])
         ax.set(xlabel="ms of stepping per simulated s", ylabel="energy band / (E0 - V_rest)",
                title=f"N = {n}, T = {T:g}")
         ax.grid(True, which="both", alpha=0.3)
-    axes[0][0].legend(fontsize=7)
+        ax.legend(fontsize=7)
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
