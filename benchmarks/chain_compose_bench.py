@@ -5,7 +5,7 @@ has the smaller energy band at equal cost, by what ratio, and the N where hpgen 
 
     PYTHONPATH=. python benchmarks/chain_compose_bench.py [--n 10 16 32] [--t T ...]
         [--runs sv:1e-3,2e-3 suzuki4:1e-2,5e-3 ...]
-        [--rk4-dt 5e-4 1e-3 2e-3 4e-3 8e-3] [--pinocchio aba] [--pinocchio-dt 2e-3 4e-3 8e-3]
+        [--rk4-dt 5e-4 1e-3 2e-3 4e-3 8e-3 ...] [--pinocchio aba] [--pinocchio-dt 2e-3 4e-3 8e-3]
         [--pinocchio-max-n 16] [--every 10] [--frames centre] [--start random]
         [--newton default] [--error-max-n 16] [--out DIR]
 
@@ -74,6 +74,12 @@ def default_runs(n):
     if n <= 24:
         return ["sv:1e-3,2e-3", "suzuki4:5e-3,2.5e-3", "kahan-li6:5e-3"]
     return ["sv:5e-4,1e-3", "suzuki4:2e-3", "kahan-li6:2e-3"]
+
+
+def default_rk4_dt(n):
+    """MuJoCo RK4's dt at N = n when --rk4-dt is not given: 5e-4 .. 8e-3, from N = 25 one
+    smaller (2.5e-4: RK4's band there reaches hpgen's) and not 8e-3 (unstable at N = 32)."""
+    return [5e-4, 1e-3, 2e-3, 4e-3, 8e-3] if n <= 24 else [2.5e-4, 5e-4, 1e-3, 2e-3, 4e-3]
 
 
 def default_t(n):
@@ -216,7 +222,8 @@ def main(argv=None):
                     help="simulated seconds per run: one value, or one per N")
     ap.add_argument("--runs", nargs="+", default=None,
                     help="NAME:H,H,... (see above); default: default_runs(N)")
-    ap.add_argument("--rk4-dt", type=float, nargs="+", default=[5e-4, 1e-3, 2e-3, 4e-3, 8e-3])
+    ap.add_argument("--rk4-dt", type=float, nargs="+", default=None,
+                    help="MuJoCo RK4's dt; default: default_rk4_dt(N)")
     ap.add_argument("--pinocchio", choices=["aba", "crba", "none"], default="aba")
     ap.add_argument("--pinocchio-dt", type=float, nargs="+", default=[2e-3, 4e-3, 8e-3])
     ap.add_argument("--pinocchio-max-n", type=int, default=16)
@@ -278,7 +285,8 @@ def main(argv=None):
                       f"{check['stream_us']:.1f} us/step (CPU, best of 2)", flush=True)
         for peer in peers:
             if peer == RK4 or n <= args.pinocchio_max_n:
-                dts = args.rk4_dt if peer == RK4 else args.pinocchio_dt
+                dts = ((args.rk4_dt or default_rk4_dt(n)) if peer == RK4
+                       else args.pinocchio_dt)
                 rows += peer_rows(peer, spec, qpos, qvel, dts, T, args.every)
         rk4 = [r for r in rows if r["runner"] == RK4]
         mine = [r for r in rows if r["runner"].startswith("hpgen") and "cost" in r]
