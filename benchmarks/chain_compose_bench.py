@@ -171,17 +171,21 @@ def peer_rows(peer, spec, qpos, qvel, dts, T, every):
     return rows
 
 
-def stream_check(integ, spec, g0, xi0, h, steps, every, frames, newton=None):
-    """CPU us per step of one simulate(every=steps) call and of hpgen_chain.run (every
-    ``every``-th node streamed) over the same ``steps``: the best of two, alternating."""
+def stream_check(integ, spec, g0, xi0, h, steps, every, newton=None):
+    """CPU us per step of one simulate(every=steps) call and of the stream hpgen_chain.run
+    times (every ``every``-th node, its chunks; no energies) over the same ``steps``: the
+    best of two, alternating."""
     one, streamed = [], []
+    chunk = hpgen_chain.chunk_steps(spec, steps, every)
     for _ in range(2):
         start = time.thread_time()
         integ.simulate(g0, h, steps, xi0=xi0, every=steps, newton=newton)
         one.append(time.thread_time() - start)
-        r = hpgen_chain.run(integ, spec, g0, xi0, h, steps, every=every, newton=newton,
-                            frames=frames)
-        streamed.append(r.cpu_seconds)
+        start = time.thread_time()
+        for _part in integ.stream(g0, h, steps, xi0=xi0, every=every, chunk=chunk,
+                                  newton=newton):
+            pass
+        streamed.append(time.thread_time() - start)
     return dict(h=h, steps=steps, simulate_us=1e6 * min(one) / steps,
                 stream_us=1e6 * min(streamed) / steps)
 
@@ -279,7 +283,7 @@ def main(argv=None):
             if check is None:
                 steps = int(min(round(T / hs[0]), 10_000) // args.every * args.every)
                 check = dict(runner=label, **stream_check(integ, spec, g0, xi0, hs[0], steps,
-                                                          args.every, args.frames, newton))
+                                                          args.every, newton))
                 print(f"stream check, {label} h = {hs[0]:g}, {steps} steps: one simulate call "
                       f"{check['simulate_us']:.1f} us/step, the stream (every {args.every}) "
                       f"{check['stream_us']:.1f} us/step (CPU, best of 2)", flush=True)
