@@ -14,10 +14,11 @@ qvel ~ N(0, 1), seed 0):
   that exceeds ``--budget`` seconds is stopped, and that N and every larger N are skipped (the
   table says so): compile time grows with N, so the run ends there instead of waiting.
 - the long run, ``--steps`` steps of ``--dt`` for hpgen and every peer: time per step (hpgen
-  the C loop's chunks, MuJoCo its rollout calls, Pinocchio its Python step loop), energy band
+  the stream's calls, its C loop recording every 10th node (hpgen_chain.run); MuJoCo its
+  rollout calls; Pinocchio its Python step loop), energy band
   max_k |E_k - E_0| / (E_0 - V_rest) (V_rest: the chain at rest; chain_peers.py's
-  normalisation) over every node for hpgen and every 10th for the peers, and for hpgen the
-  joints' largest position and velocity gaps over every node (chain.constraint_residual).
+  normalisation) over the start and every 10th node for every runner, and for hpgen the
+  joints' largest position and velocity gaps over those nodes (chain.constraint_residual).
 - the work-precision figure ``OUT/chain_wp_N<N>.png`` (and the rows in OUT/chain_bench.json):
   for hpgen at each h of ``--wp-h`` and each peer at the same dt, runs to T = 1: the error at
   T = 1 against the reference (hpgen.bench.multibody.reference: DOP853 at 1e-13 on the
@@ -34,8 +35,6 @@ import os
 import subprocess
 import sys
 import tempfile
-import time
-from typing import NamedTuple
 from pathlib import Path
 
 import numpy as np
@@ -76,36 +75,11 @@ def band(E, spec):
     return float(np.abs(E - E[0]).max() / (E[0] - chain.rest_potential(spec)))
 
 
-class HpgenRun(NamedTuple):
-    """A streamed hpgen run: wall seconds of stepping, the energy at every node (J, potential
-    zero at the pin), the joints' largest (position, velocity) gaps, the final ChainState and
-    the Newton iterations over all steps."""
-    seconds: float
-    energy: np.ndarray
-    gaps: np.ndarray
-    last: chain.ChainState
-    iterations: int
-
-
-def hpgen_run(integ, spec, g0, xi0, h, steps, chunk=20_000, newton=None, frames="pin"):
-    """``steps`` steps of h streamed in chunks (newton: NewtonOptions or None, the module's
-    default; frames: the model's, hpgen_chain's ``"pin"`` or ``"centre"``) -> HpgenRun."""
-    energies, gaps, seconds, iterations = [], np.zeros(2), 0.0, 0
-    stream = integ.stream(g0, h, steps, xi0=xi0, chunk=chunk, newton=newton)
-    last = None
-    while True:
-        start = time.perf_counter()
-        part = next(stream, None)
-        seconds += time.perf_counter() - start
-        if part is None:
-            break
-        iterations += int(part.newton_iterations)
-        states = hpgen_chain.from_hpgen(spec, part.g, part.xi(), frames)
-        energies.append([sum(chain.energy(spec, s)) for s in states])
-        gaps = np.maximum(gaps, np.max([chain.constraint_residual(spec, s) for s in states],
-                                       axis=0))
-        last = states[-1]
-    return HpgenRun(seconds, np.concatenate(energies), gaps, last, iterations)
+def hpgen_run(integ, spec, g0, xi0, h, steps, every=10, newton=None, frames="pin"):
+    """hpgen_chain.run: ``steps`` steps of h, every ``every``-th node recorded and streamed
+    (the stream's calls timed; the energy and the joints' gaps on the records)."""
+    return hpgen_chain.run(integ, spec, g0, xi0, h, steps, every=every, newton=newton,
+                           frames=frames)
 
 
 def peer_run(peer, spec, qpos, qvel, dt, steps):

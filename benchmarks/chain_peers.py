@@ -11,7 +11,7 @@ Start: the chain hanging straight down, joint angular velocities qvel ~ N(0, 1) 
 chain.initial_joint_state). For every N and peer:
 - time per step: MuJoCo the wall time of its rollout calls alone; Pinocchio the Python step
   loop (4 acceleration evaluations, 4 exponential maps and NumPy arithmetic per step) and, in
-  brackets, the share of its 4 acceleration evaluations (what a C loop around Pinocchio could
+  brackets, the CPU time of its 4 acceleration evaluations (what a C loop around Pinocchio could
   not go below);
 - energy band over ``steps`` steps of dt: max_k |E_k - E_0| / (E_0 - V_rest), sampled every 10
   steps, E the total energy and V_rest the potential energy of the chain hanging at rest, so

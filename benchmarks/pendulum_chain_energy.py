@@ -19,7 +19,8 @@ Per (N, start) and model: hpgen runs ``steps`` steps of h (T = steps h), streame
 - drift: max |E_k - E_0| / (E_0 - V_rest) over the first and over the last tenth of the run,
   and the least-squares line through E_k - E_0 over the run: its rise over T, / (E_0 - V_rest);
 - joints: the largest position and velocity gaps over every node (chain.constraint_residual);
-- Newton iterations per step and wall time per step (the stream's stepping alone);
+- Newton iterations per step and wall time per step (the stream's calls alone, recording
+  every node: hpgen_chain.run with every = 1);
 - cond H: the largest condition number of a link's 6 x 6 kinetic metric d2l/dxi2 (body
   inertia in the model's frame).
 MuJoCo RK4 (its C rollout) runs the same T at dt = h and at equal cost per simulated second
@@ -37,9 +38,7 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
-sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from chain_bench import hpgen_run  # noqa: E402
 from hpgen.bench.multibody import chain, hpgen_chain  # noqa: E402
 
 
@@ -102,7 +101,8 @@ def main(argv=None):
             costs = []
             for frames, integ in integs.items():
                 g0, xi0 = hpgen_chain.to_hpgen(spec, s0, frames)
-                r = hpgen_run(integ, spec, g0, xi0, args.h, args.steps, frames=frames)
+                r = hpgen_chain.run(integ, spec, g0, xi0, args.h, args.steps, every=1,
+                                    frames=frames)
                 c = r.seconds / args.steps
                 costs.append(c)
                 extra = (f"{r.gaps[0]:.1e} / {r.gaps[1]:.1e}; {r.iterations / args.steps:.2f}; "

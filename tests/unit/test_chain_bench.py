@@ -97,7 +97,7 @@ def _load(name):
     return module
 
 
-def test_compose_bench_runs_and_equal_cost_interpolation():
+def test_compose_bench_parses_runs_and_options():
     bench = _load("chain_compose_bench")
     assert bench.parse_run("kahan-li6:2e-2,1e-2") == ("kahan-li6", [2e-2, 1e-2])
     assert bench.compile_options("gauss2") == dict(tableau="gauss2", tau="cay", rkmk="exact")
@@ -105,10 +105,6 @@ def test_compose_bench_runs_and_equal_cost_interpolation():
     for bad in ("rk4:1e-3", "sv:", "sv:-1e-3", "suzuki4:x"):
         with pytest.raises(SystemExit, match="--runs"):
             bench.parse_run(bad)
-    rk4 = [dict(cost=c, band=b, stable=True) for c, b in ((0.1, 1e-10), (0.01, 1e-6))]
-    rk4.append(dict(cost=0.001, band=1.0, stable=False))            # unstable: left out
-    # log-log: halfway in log cost is halfway in log band
-    assert bench.rk4_band_at(np.sqrt(0.1 * 0.01), rk4) == pytest.approx(1e-8, rel=1e-12)
-    assert bench.rk4_band_at(0.005, rk4) is None
-    assert bench.rk4_cost_at(1e-8, rk4) == pytest.approx(np.sqrt(0.1 * 0.01), rel=1e-12)
-    assert bench.rk4_cost_at(1e-4, rk4) is None
+    assert [bench.default_t(n) for n in (10, 16, 32, 64)] == [100.0, 100.0, 20.0, 5.0]
+    for n in (10, 16, 32):          # every default run is a valid --runs entry
+        assert [bench.parse_run(text)[0] for text in bench.default_runs(n)][0] == "sv"

@@ -1,7 +1,9 @@
 """The N-link 3-D pendulum chain (capsules, ball joints, the first link pinned to the world)
 as a benchmark scene outside hpgen: its state convention and energy (chain), an independent
 reference solution (reference: reduced Newton-Euler equations, SciPy DOP853), and the peers
-a multibody user would run instead, MuJoCo (mujoco_peer) and Pinocchio (pinocchio_peer).
+a multibody user would run instead, MuJoCo (mujoco_peer) and Pinocchio (pinocchio_peer);
+hpgen's own runs of it (hpgen_chain: the model files' states, the streamed runner) and the
+comparison of runners at equal cost (equal_cost).
 
 The peers need the optional extra ``pip install 'hpgen[peers]'``; they import mujoco /
 pinocchio only when called (:func:`require` raises a one-line HpgenError without them).

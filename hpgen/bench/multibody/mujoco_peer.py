@@ -80,9 +80,12 @@ def model(spec: ChainSpec, dt: float, integrator: str = "RK4"):
 class MujocoRun:
     """A rollout: the final joint state, the energy (kinetic + potential, J; MuJoCo's own
     computation) of the states 0, sample, 2 sample, ... and of the final state at ``times``,
-    the wall time of the rollout calls alone (s). ``stable`` is False when MuJoCo reset the
-    simulation (its reaction to non-finite or huge accelerations: the rollout's clock
-    restarts) or an energy is not finite."""
+    the wall time of the rollout calls alone (s; ``cpu_seconds`` the thread's CPU time of the
+    same calls: the rollout of one run steps in the calling thread), ``observe_seconds`` the
+    CPU time of the energy evaluations (mj_setState + mj_forward per sampled state; not in
+    ``seconds``). ``stable`` is False when MuJoCo reset the simulation (its reaction to
+    non-finite or huge accelerations: the rollout's clock restarts) or an energy is not
+    finite."""
     qpos: np.ndarray
     qvel: np.ndarray
     times: np.ndarray
@@ -90,6 +93,8 @@ class MujocoRun:
     seconds: float
     steps: int
     stable: bool
+    cpu_seconds: float = float("nan")
+    observe_seconds: float = 0.0
 
 
 def run(spec: ChainSpec, qpos, qvel, dt: float, steps: int, integrator: str = "RK4",
@@ -118,15 +123,18 @@ def run(spec: ChainSpec, qpos, qvel, dt: float, steps: int, integrator: str = "R
     d.qpos[:], d.qvel[:] = np.asarray(qpos, dtype=float), np.asarray(qvel, dtype=float)
     mujoco.mj_getState(m, d, state, full)
     marks, energy = [0], [energy_of(state)]
-    done, seconds, reset = 0, 0.0, False
+    done, seconds, cpu, observe, reset = 0, 0.0, 0.0, 0.0, False
     while done < steps:
         k = min(chunk, steps - done)
-        start = time.perf_counter()
+        start, start_cpu = time.perf_counter(), time.thread_time()
         states, _ = rollout.rollout(m, d, state[None], nstep=k)
+        cpu += time.thread_time() - start_cpu
         seconds += time.perf_counter() - start
+        start_cpu = time.thread_time()
         for j in range(sample - 1, k, sample):         # row j: the state after step done+j+1
             marks.append(done + j + 1)
             energy.append(energy_of(states[0, j]))
+        observe += time.thread_time() - start_cpu
         state = states[0, -1].copy()
         done += k
         reset = reset or abs(state[0] - done * dt) > 1e-9 * (1.0 + done * dt)
@@ -136,4 +144,5 @@ def run(spec: ChainSpec, qpos, qvel, dt: float, steps: int, integrator: str = "R
     mujoco.mj_setState(m, d, state, full)
     energy_arr = np.asarray(energy)
     return MujocoRun(d.qpos.copy(), d.qvel.copy(), dt * np.asarray(marks), energy_arr,
-                     seconds, int(steps), not reset and bool(np.isfinite(energy_arr).all()))
+                     seconds, int(steps), not reset and bool(np.isfinite(energy_arr).all()),
+                     cpu, observe)
