@@ -203,7 +203,7 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
     # in xi (hessian free of xi: legendre_quadratic), the runtime's start otherwise
     at0 = lambda e: ca.substitute(e, xi, ca.SX.zeros(d))  # noqa: E731
     xi_obs = at0(vstep(g, p, xi))
-    quadratic = not ca.depends_on(hess, xi)
+    quadratic = fam.quadratic if fam is not None else not ca.depends_on(hess, xi)
     power = None
     if is_open and model.forced:     # the forces' power at a record (t = t_k, u of hv)
         power = lambda G, X: ca.dot(force(G, X, t), X)  # noqa: E731

@@ -63,6 +63,7 @@ class FamilyParts:
     lag: object
     velocity: object     # (g, p, xi) -> SX d: one Newton step of dl/dxi = p, body by body
     force: object = None  # (G, X, t) -> the product's force (per-body calls), or None
+    quadratic: bool = False  # every body's d2l/dxi2 free of xi: ``velocity`` is exact
 
 
 def _body_lagrangians(model, body):
@@ -277,7 +278,7 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     if not joints:
         eqs = StepEquations(z, tuple(blocks), ca.vertcat(*res), g1, ca.vertcat(*p1s),
                             ca.vertcat(*guesses), xi_hat, margin, ca.vertcat(*charts))
-        return FamilyParts(eqs, lag, velocity, force)
+        return FamilyParts(eqs, lag, velocity, force, _quadratic(lags, body))
 
     nz = nzb
     blocks += [("lambda", nz, nz + m), ("nu", nz + m, nz + 2 * m)]
@@ -312,7 +313,19 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     eqs = StepEquations(z, tuple(blocks), residual, g1,
                         ca.vertcat(*p1s), ca.vertcat(*guesses, S.zeros(2 * m), *extra_guess),
                         xi_hat, margin, ca.vertcat(*charts))
-    return FamilyParts(eqs, lag, velocity, force)
+    return FamilyParts(eqs, lag, velocity, force, _quadratic(lags, body))
+
+
+def _quadratic(lags, body) -> bool:
+    """Whether every body class's d2l/dxi2 is free of xi (the Lagrangian is quadratic in
+    the velocity body by body; the product's Hessian, built from call nodes, cannot say)."""
+    for lag_in, _ in lags.values():
+        X = ca.SX.sym("xi", body.d)
+        args = [ca.SX.sym(f"a{k}", lag_in.sparsity_in(k)) for k in range(lag_in.n_in())]
+        args[1] = X
+        if ca.depends_on(ca.hessian(lag_in(*args), X)[0], X):
+            return False
+    return True
 
 
 def _momentum(model, lags, body, ne):

@@ -212,3 +212,17 @@ def test_family_group_sizes_beyond_the_dense_limit_load():
     """SE3^64 (n = 256, d = 384) loads; the product-group limit (64) still holds otherwise."""
     m = chain(64)
     assert (m.group.n, m.group.d) == (256, 384) and m.family.local is not None
+
+
+@pytest.mark.parametrize("extra, quadratic",
+                         [("", True), (" + 0.01*norm2(w[i])*norm2(w[i])", False)])
+def test_family_legendre_quadratic_as_expanded(extra, quadratic):
+    """A family's legendre_quadratic (the record's velocity in one exact step) is the
+    expansion's: read from the bodies' Hessians, where the product's (call nodes) cannot say."""
+    term = "0.5*dot(w[i], J*w[i])"
+    assert CHAIN.count(term) == 1
+    model = load_model_text(CHAIN.replace("{N: 2,", "{N: 3,").replace(term, term + extra))
+    sv = resolve_tableau("stormer-verlet")
+    fam = derive(model, sv, "cay", "truncated")
+    dense = derive(model, sv, "cay", "truncated", expand=True)
+    assert fam.legendre_quadratic is dense.legendre_quadratic is quadratic
