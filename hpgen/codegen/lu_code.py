@@ -1,24 +1,25 @@
 """C code of the static LU's numeric factorization (hpgen.codegen.static_lu), generated at
-compile time: every multiply-add of the left-looking elimination with its storage positions
-as constants, instead of the runtime's loop over the index arrays (hpgen_slu_factor in
-hpgen/runtime/c/hpgen_linalg.c), whose indirect scatters into a dense work column cost most
-of its time.
+compile time: every multiply-add of the elimination with its storage positions as constants,
+instead of the runtime's left-looking loop over the index arrays (hpgen_slu_factor in
+hpgen/runtime/c/hpgen_linalg.c).
 
-Column t of the filled pattern (storage X, compressed columns, 1 / u_tt on the diagonal):
+The code is right-looking, pivot k of P J P^T (storage X: the filled pattern in compressed
+columns, 1 / u_kk on the diagonal):
 
-    cmax = max |X[q]| over the column (J's entries and zeros at the fill)
-    for k in the column's U part, ascending: X[at(t, r)] -= X[s] X[at(t, k)] for the
-        entries s of L(:, k) (row r)
-    pivot test on d = X[diag]; X[diag] = 1 / d; the L part scaled by 1 / d
+    pivot test on d = X[(k, k)] against cmax_k = max |J| over the column's entries;
+    X[(k, k)] = 1 / d; l_i = X[(i, k)] / d for L(:, k) (as a product with 1 / d);
+    X[(i, j)] -= l_i u_j for every i of L(:, k) and j of U(k, :) (u_j = X[(k, j)])
 
-which is the runtime loop's arithmetic operation for operation (the same products and
-differences in the same order; the loop skips a zero multiplier, this code subtracts its zero
-product, which changes at most the sign of a zero), so both give the same factors bit for bit.
+Every entry receives the same products, subtracted in the same order (k ascending), as in the
+runtime's left-looking loop, so both give the same factors bit for bit (the loop skips a zero
+multiplier, this code subtracts its zero product: at most the sign of a zero differs). The
+right-looking order has no chain of dependent updates inside a pivot (its products are
+independent), where the left-looking column is a triangular solve, one update after another.
 
-Columns whose code is the same up to a shift of all their positions by the same amount (the
-bodies and joints of a chain or a tree, eliminated one like the next) are emitted once, as the
-body of a C loop over a base pointer; the rest is straight-line code. The code's length then
-grows with the number of distinct columns, not with N.
+Pivots whose code is the same up to positions that advance by a constant from one to the next
+(the bodies and joints of a chain or a tree, eliminated one like the next) are emitted once,
+as the body of a C loop; the rest is straight-line code. The code's length then grows with
+the number of distinct pivots, not with N.
 """
 from __future__ import annotations
 
@@ -26,7 +27,7 @@ from dataclasses import dataclass
 
 from .static_lu import StaticLU
 
-#: the longest run period (columns) looked for; a chain's body with its joints is 12
+#: the longest run period (pivots) looked for; a chain's body with its joints is 12
 MAX_PERIOD = 64
 #: above this many multiply-adds in the emitted code (after the loops) the runtime's loop is
 #: kept: straight-line code of that size costs more in compile time and instruction cache
@@ -35,119 +36,155 @@ MAX_EMITTED_OPS = 12000
 
 
 @dataclass(frozen=True)
-class Column:
-    """Column t's work in absolute storage positions: c0 (first entry), size (entries),
-    diag (position of the diagonal), ops ((target, l, u): X[target] -= X[l] * X[u])."""
-    c0: int
-    size: int
+class Pivot:
+    """Pivot k's work in absolute storage positions: diag ((k, k)), lower (L(:, k), rows
+    ascending), upper (U(k, :), columns ascending), ops ((target, a, b): X[target] -=
+    l_a u_b, a index into lower, b into upper)."""
+    k: int
     diag: int
+    lower: tuple
+    upper: tuple
     ops: tuple
 
     @property
     def shape(self):
-        """What must agree for two columns to share code (their positions may differ)."""
-        return (self.size, self.diag - self.c0, len(self.ops))
+        """What must agree for two pivots to share code (their positions may differ)."""
+        return (len(self.lower), len(self.upper), tuple((a, b) for _, a, b in self.ops))
 
     def positions(self) -> list[int]:
-        return [self.c0, self.diag] + [q for op in self.ops for q in op]
+        return [self.k, self.diag, *self.lower, *self.upper, *(t for t, _, _ in self.ops)]
 
 
-def columns(lu: StaticLU) -> list[Column]:
-    """The left-looking elimination's work per column."""
+def pivots(lu: StaticLU) -> list[Pivot]:
+    """The right-looking elimination's work per pivot."""
     n = len(lu.perm)
+    where, upper = {}, [[] for _ in range(n)]
+    for j in range(n):
+        for q in range(lu.colptr[j], lu.colptr[j + 1]):
+            where[lu.row[q], j] = q
+            if q < lu.diag[j]:
+                upper[lu.row[q]].append((j, q))      # U(k, j), columns ascending
     out = []
-    for t in range(n):
-        c0, c1, dt = lu.colptr[t], lu.colptr[t + 1], lu.diag[t]
-        at = {lu.row[q]: q for q in range(c0, c1)}
-        ops = []
-        for q in range(c0, dt):
-            k = lu.row[q]
-            for s in range(lu.diag[k] + 1, lu.colptr[k + 1]):
-                ops.append((at[lu.row[s]], s, q))
-        out.append(Column(c0, c1 - c0, dt, tuple(ops)))
+    for k in range(n):
+        lo = range(lu.diag[k] + 1, lu.colptr[k + 1])
+        ops = tuple((where[lu.row[qi], j], a, b) for a, qi in enumerate(lo)
+                    for b, (j, _) in enumerate(upper[k]))
+        out.append(Pivot(k, lu.diag[k], tuple(lo), tuple(q for _, q in upper[k]), ops))
     return out
 
 
-def _block(cols, t, p):
-    return [q for col in cols[t:t + p] for q in col.positions()]
+def _block(steps, t, p):
+    return [q for st in steps[t:t + p] for q in st.positions()]
 
 
-def runs(cols: list[Column], max_period: int = MAX_PERIOD) -> list[tuple[int, int, int]]:
-    """(start, period, repeats) covering the columns: blocks of ``period`` columns repeated
-    (at least twice) with the same shapes and every position advancing by its own constant
-    from one repeat to the next (an affine function of the repeat), else single columns
-    (period 1, repeats 1). Greedy from the left, the longest cover first, the shortest period
-    among equal covers."""
-    n, t, out = len(cols), 0, []
-    shapes = [c.shape for c in cols]
-    while t < n:
-        best = (1, 1)
-        for p in range(1, min(max_period, (n - t) // 2) + 1):
-            if shapes[t + p:t + 2 * p] != shapes[t:t + p]:
+def runs(steps: list[Pivot], max_period: int = MAX_PERIOD,
+         loop_cost: int = 16) -> list[tuple[int, int, int]]:
+    """(start, period, repeats) covering the pivots with the least emitted code: blocks of
+    ``period`` pivots repeated (at least twice) with the same shapes and every position
+    advancing by its own constant from one repeat to the next (an affine function of the
+    repeat), else single pivots (period 1, repeats 1). The cost of a plan is its emitted
+    multiply-adds plus ``loop_cost`` per loop (dynamic programming from the end)."""
+    n = len(steps)
+    ids: dict = {}
+    shape = [ids.setdefault(st.shape, len(ids)) for st in steps]
+    pos = [st.positions() for st in steps]
+    ops = [len(st.ops) + 1 for st in steps]
+    acc = [0]
+    for c in ops:
+        acc.append(acc[-1] + c)
+    # reach[p][t]: the most repeats of the block of p pivots at t
+    reach = {}
+    for p in range(1, min(max_period, n // 2) + 1):
+        same = [shape[s] == shape[s + p] for s in range(n - p)]
+        if not any(same):
+            continue
+        affine = [s + 2 * p < n and same[s] and same[s + p]
+                  and all(c - b == b - a for a, b, c in zip(pos[s], pos[s + p], pos[s + 2 * p]))
+                  for s in range(n - p)]
+        # per residue class mod p, consecutive counts along s, s + p, ...
+        r_same, r_aff = [0] * (n + p), [0] * (n + p)
+        for s in range(n - p - 1, -1, -1):
+            r_same[s] = r_same[s + p] + 1 if same[s] else 0
+            r_aff[s] = r_aff[s + p] + 1 if affine[s] else 0
+        row = [1] * n
+        for t in range(n - 2 * p + 1):
+            # repeats m need, for every s in [t, t + p): same along m - 1 and affine along
+            # m - 2 steps of p from s
+            ms = min(r_same[s] for s in range(t, t + p)) + 1
+            ma = min(r_aff[s] for s in range(t, t + p)) + 2
+            row[t] = min(ms, ma, (n - t) // p)
+        reach[p] = row
+    best = [0] * (n + 1)
+    choice: list = [None] * n
+    for t in range(n - 1, -1, -1):
+        best[t], choice[t] = ops[t] + best[t + 1], (1, 1)
+        for p, row in reach.items():
+            if row[t] < 2:
                 continue
-            b0, b1 = _block(cols, t, p), _block(cols, t + p, p)
-            step = [y - x for x, y in zip(b0, b1)]
-            m, prev = 2, b1
-            while t + (m + 1) * p <= n and shapes[t + m * p:t + (m + 1) * p] == shapes[t:t + p]:
-                nxt = _block(cols, t + m * p, p)
-                if any(y - x != s for x, y, s in zip(prev, nxt, step)):
-                    break
-                m, prev = m + 1, nxt
-            if m * p > best[0] * best[1]:
-                best = (p, m)
-        out.append((t, *best))
-        t += best[0] * best[1]
+            code = acc[t + p] - acc[t] + loop_cost
+            for m in range(2, row[t] + 1):
+                if code + best[t + m * p] < best[t]:
+                    best[t], choice[t] = code + best[t + m * p], (p, m)
+    out, t = [], 0
+    while t < n:
+        p, m = choice[t]
+        out.append((t, p, m))
+        t += p * m
     return out
 
 
-def _column_code(col: Column, ptr) -> list[str]:
-    """C lines of one column, its entries in local variables v<k> (entry c0 + k) from load to
-    store; ptr(k) names the pointer that the k-th of col.positions() is indexed from (the
-    column's own entries share the first's, its c0)."""
-    c0, n = col.c0, col.size
-    base = ptr(0)
-
-    def mine(q):
-        return f"v{q - c0}"
-    lines = ["{", "double " + ", ".join(f"v{k} = {base}[{c0 + k}]" for k in range(n)) + ";",
-             "cmax = 0.0;"]
-    lines += [f"cmax = fabs(v{k}) > cmax ? fabs(v{k}) : cmax;" for k in range(n)]
-    lines += [f"{mine(a)} -= {ptr(3 + 3 * e)}[{b}] * {mine(c)};"
-              for e, (a, b, c) in enumerate(col.ops)]
-    dk = col.diag - c0
-    lines += [f"if (!(fabs(v{dk}) > HPGEN_STATIC_PIVOT_TOL * cmax) || !isfinite(v{dk})) return 1;",
-              f"r = 1.0 / v{dk};"]
-    lines += [f"{base}[{c0 + k}] = v{k};" for k in range(dk)]
-    lines += [f"{base}[{col.diag}] = r;"]
-    lines += [f"{base}[{c0 + k}] = v{k} * r;" for k in range(dk + 1, n)]
-    return lines + ["}"]
+def _pivot_code(st: Pivot, ptr) -> list[str]:
+    """C lines of one pivot, l and u in local variables; ptr(k) names the pointer that the
+    k-th of st.positions() is indexed from (pointers X, cm and their shifted copies)."""
+    nl, nu = len(st.lower), len(st.upper)
+    lines = ["{", f"const double d = {ptr(1, 'X')}[{st.diag}];",
+             f"if (!(fabs(d) > HPGEN_STATIC_PIVOT_TOL * {ptr(0, 'cm')}[{st.k}]) || !isfinite(d))"
+             " return 1;", "r = 1.0 / d;", f"{ptr(1, 'X')}[{st.diag}] = r;"]
+    if st.ops:
+        lines.append("double " + ", ".join(
+            [f"l{a} = {ptr(2 + a, 'X')}[{q}] * r" for a, q in enumerate(st.lower)]
+            + [f"u{b} = {ptr(2 + nl + b, 'X')}[{q}]" for b, q in enumerate(st.upper)]) + ";")
+        lines += [f"{ptr(2 + a, 'X')}[{q}] = l{a};" for a, q in enumerate(st.lower)]
+    else:
+        lines += [f"{ptr(2 + a, 'X')}[{q}] *= r;" for a, q in enumerate(st.lower)]
+    lines += [f"{ptr(2 + nl + nu + e, 'X')}[{t}] -= l{a} * u{b};"
+              for e, (t, a, b) in enumerate(st.ops)]
+    return lines + ["}", "HPGEN_SLU_BARRIER;"]
 
 
 def factor_code(lu: StaticLU) -> str | None:
-    """The body of ``static int hpgen_slu_numeric(double* X)`` (X: J's values scattered into
-    the filled pattern, zeros at the fill; returns 1 on a failed pivot), or None when the
-    code would exceed MAX_EMITTED_OPS multiply-adds."""
-    cols = columns(lu)
-    plan = runs(cols)
-    emitted = sum(len(cols[t + j].ops) for t, p, _ in plan for j in range(p))
+    """The body of ``static int hpgen_slu_numeric(double* X, const double* cm)`` (X: J's
+    values scattered into the filled pattern, zeros at the fill; cm[k]: the pivot test's
+    scale of pivot k; returns 1 on a failed pivot), or None when the code would exceed
+    MAX_EMITTED_OPS multiply-adds."""
+    steps = pivots(lu)
+    plan = runs(steps)
+    emitted = sum(len(steps[t + j].ops) for t, p, _ in plan for j in range(p))
     if emitted > MAX_EMITTED_OPS:
         return None
-    lines = ["double cmax, r;", "int i;"]
+    lines = ["double r;", "int i;"]
     for t, p, m in plan:
         if m == 1:
-            lines.append(f"/* column {t} */")
-            lines += _column_code(cols[t], lambda k: "X")
+            lines.append(f"/* pivot {t} */")
+            lines += _pivot_code(steps[t], lambda k, base: base)
             continue
-        b0, b1 = _block(cols, t, p), _block(cols, t + p, p)
+        b0, b1 = _block(steps, t, p), _block(steps, t + p, p)
         step = [y - x for x, y in zip(b0, b1)]
-        names = {s: f"P{k}" for k, s in enumerate(sorted(set(step)))}
-        lines.append(f"for (i = 0; i < {m}; ++i) {{     /* columns {t} + {p} i + (0..{p - 1}) */")
-        body = [f"double* {v} = X + {s} * i;" for s, v in names.items()]
+        names = {}
         off = 0
         for j in range(p):
-            col = cols[t + j]
-            body += _column_code(col, lambda k, o=off: names[step[o + k]])
-            off += len(col.positions())
+            for k in range(len(steps[t + j].positions())):
+                names.setdefault(("cm" if k == 0 else "X", step[off + k]), None)
+            off += len(steps[t + j].positions())
+        names = {key: f"{key[0]}{q}" for q, key in enumerate(sorted(names))}
+        lines.append(f"for (i = 0; i < {m}; ++i) {{     /* pivots {t} + {p} i + (0..{p - 1}) */")
+        body = [f"{'const ' if base == 'cm' else ''}double* {v} = {base} + {s} * i;"
+                for (base, s), v in names.items()]
+        off = 0
+        for j in range(p):
+            st = steps[t + j]
+            body += _pivot_code(st, lambda k, base, o=off: names[base, step[o + k]])
+            off += len(st.positions())
         lines += ["    " + s for s in body]
         lines.append("}")
     lines.append("(void)i;")

@@ -64,7 +64,8 @@ def sparse_context(step) -> dict | None:
     or more when J is structurally singular); sp_j, sp_v, sp_r: compressed sparsities;
     prinv: the inverse row permutation; pc: the column order; lu: the static LU's analysis
     (hpgen.codegen.static_lu.StaticLU's fields and nnz; code: the numeric factorization's
-    generated C, hpgen.codegen.lu_code, or None; fill: the fill's positions) or None."""
+    generated C, hpgen.codegen.lu_code, or None; fill: the fill's positions; pinv: the
+    inverse of perm) or None."""
     sp = jacobian_sparsity(step)
     if sp is None:
         return None
@@ -77,7 +78,15 @@ def sparse_context(step) -> dict | None:
             "lu": None if lu is None else {
                 "nnz": lu.nnz, "perm": list(lu.perm), "colptr": list(lu.colptr),
                 "row": list(lu.row), "diag": list(lu.diag), "jmap": list(lu.jmap),
-                "code": factor_code(lu), "fill": fill_positions(lu)}}
+                "code": factor_code(lu), "fill": fill_positions(lu),
+                "pinv": _inverse(lu.perm)}}
+
+
+def _inverse(perm) -> list[int]:
+    inv = [0] * len(perm)
+    for t, c in enumerate(perm):
+        inv[c] = t
+    return inv
 
 
 def aux_function(sp):
