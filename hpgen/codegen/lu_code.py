@@ -30,9 +30,11 @@ from .static_lu import StaticLU
 #: the longest run period (pivots) looked for; a chain's body with its joints is 12
 MAX_PERIOD = 64
 #: above this many multiply-adds in the emitted code (after the loops) the runtime's loop is
-#: kept: straight-line code of that size costs more in compile time and instruction cache
-#: than it saves
-MAX_EMITTED_OPS = 12000
+#: kept: the compile time grows with the code (GCC -Og: about 0.2 s per 1000 on a loaded
+#: 2-core machine), the run time of the factorization does not shrink with it
+MAX_EMITTED_OPS = 8000
+#: multiply-adds per generated function
+CHUNK_OPS = 600
 
 
 @dataclass(frozen=True)
@@ -152,44 +154,62 @@ def _pivot_code(st: Pivot, ptr) -> list[str]:
     return lines + ["}", "HPGEN_SLU_BARRIER;"]
 
 
-def factor_code(lu: StaticLU) -> str | None:
-    """The body of ``static int hpgen_slu_numeric(double* X, const double* cm)`` (X: J's
-    values scattered into the filled pattern, zeros at the fill; cm[k]: the pivot test's
-    scale of pivot k; returns 1 on a failed pivot), or None when the code would exceed
-    MAX_EMITTED_OPS multiply-adds."""
+def _run_code(steps, t, p, m) -> list[str]:
+    if m == 1:
+        return [f"/* pivot {t} */"] + _pivot_code(steps[t], lambda k, base: base)
+    b0, b1 = _block(steps, t, p), _block(steps, t + p, p)
+    step = [y - x for x, y in zip(b0, b1)]
+    names: dict = {}
+    off = 0
+    for j in range(p):
+        for k in range(len(steps[t + j].positions())):
+            names.setdefault(("cm" if k == 0 else "X", step[off + k]), None)
+        off += len(steps[t + j].positions())
+    names = {key: f"{key[0]}{q}" for q, key in enumerate(sorted(names))}
+    body = [f"{'const ' if base == 'cm' else ''}double* {v} = {base} + {s} * i;"
+            for (base, s), v in names.items()]
+    off = 0
+    for j in range(p):
+        st = steps[t + j]
+        body += _pivot_code(st, lambda k, base, o=off: names[base, step[o + k]])
+        off += len(st.positions())
+    return ([f"for (i = 0; i < {m}; ++i) {{     /* pivots {t} + {p} i + (0..{p - 1}) */"]
+            + ["    " + s for s in body] + ["}"])
+
+
+def factor_code(lu: StaticLU, chunk: int = CHUNK_OPS) -> str | None:
+    """C definitions ending with ``static int hpgen_slu_numeric(double* X, const double* cm)``
+    (X: J's values scattered into the filled pattern, zeros at the fill; cm[k]: the pivot
+    test's scale of pivot k; returns 1 on a failed pivot), or None when the code would
+    exceed MAX_EMITTED_OPS multiply-adds. The pivots are cut into functions of about
+    ``chunk`` multiply-adds each, called in turn (a compiler's time grows faster than the
+    length of one function)."""
     steps = pivots(lu)
     plan = runs(steps)
     emitted = sum(len(steps[t + j].ops) for t, p, _ in plan for j in range(p))
     if emitted > MAX_EMITTED_OPS:
         return None
-    lines = ["double r;", "int i;"]
-    for t, p, m in plan:
-        if m == 1:
-            lines.append(f"/* pivot {t} */")
-            lines += _pivot_code(steps[t], lambda k, base: base)
-            continue
-        b0, b1 = _block(steps, t, p), _block(steps, t + p, p)
-        step = [y - x for x, y in zip(b0, b1)]
-        names = {}
-        off = 0
-        for j in range(p):
-            for k in range(len(steps[t + j].positions())):
-                names.setdefault(("cm" if k == 0 else "X", step[off + k]), None)
-            off += len(steps[t + j].positions())
-        names = {key: f"{key[0]}{q}" for q, key in enumerate(sorted(names))}
-        lines.append(f"for (i = 0; i < {m}; ++i) {{     /* pivots {t} + {p} i + (0..{p - 1}) */")
-        body = [f"{'const ' if base == 'cm' else ''}double* {v} = {base} + {s} * i;"
-                for (base, s), v in names.items()]
-        off = 0
-        for j in range(p):
-            st = steps[t + j]
-            body += _pivot_code(st, lambda k, base, o=off: names[base, step[o + k]])
-            off += len(st.positions())
-        lines += ["    " + s for s in body]
-        lines.append("}")
-    lines.append("(void)i;")
-    lines.append("return 0;")
-    return "\n".join("    " + s for s in lines)
+    parts: list[list] = [[]]
+    size = 0
+    for run in plan:
+        ops = sum(len(steps[run[0] + j].ops) for j in range(run[1]))
+        if size and size + ops > chunk:
+            parts.append([])
+            size = 0
+        parts[-1].append(run)
+        size += ops
+    out = []
+    for q, part in enumerate(parts):
+        lines = ["double r;", "int i = 0;"]
+        for run in part:
+            lines += _run_code(steps, *run)
+        lines += ["(void)i; (void)r;", "return 0;"]
+        out.append(f"static int hpgen_slu_part{q}(double* X, const double* cm) {{\n"
+                   + "\n".join("    " + s for s in lines) + "\n}\n")
+    calls = " ||\n        ".join(f"hpgen_slu_part{q}(X, cm)" for q in range(len(parts)))
+    out.append("static int hpgen_slu_numeric(double* X, const double* cm) {\n"
+               f"    return {calls};\n}}\n")
+    return "\n".join(out)
 
 
 def fill_positions(lu: StaticLU) -> list[int]:
