@@ -146,3 +146,13 @@ def test_module_runs_equal_the_loop_build(cache_dir):
         runs.append(integ.simulate(sc.g0, sc.h, 300, xi0=sc.xi0))
     np.testing.assert_array_equal(runs[0].g, runs[1].g)
     np.testing.assert_array_equal(runs[0].mu, runs[1].mu)
+
+
+def test_code_beyond_the_cap_keeps_the_loop(monkeypatch):
+    """A pattern whose code would exceed MAX_EMITTED_OPS gets none (the runtime's loop)."""
+    M = chain_kkt(np.random.default_rng(6), 8)
+    colind, row = ccs(M)
+    lu = static_lu(M.shape[0], colind, row)
+    assert lu_code.factor_code(lu) is not None
+    monkeypatch.setattr(lu_code, "MAX_EMITTED_OPS", 10)
+    assert lu_code.factor_code(lu) is None
