@@ -25,6 +25,7 @@ from __future__ import annotations
 import casadi
 
 from .contract import CodegenError, dense_positions
+from .lu_code import factor_code, fill_positions
 from .static_lu import static_lu
 
 #: the CasADi Function whose generated code brings casadi_qr and casadi_qr_solve into
@@ -62,7 +63,9 @@ def sparse_context(step) -> dict | None:
     QR's symbolic analysis. nnz_j, nnz_v, nnz_r: nonzeros of J, V, R; nrow_v: rows of V (nz,
     or more when J is structurally singular); sp_j, sp_v, sp_r: compressed sparsities;
     prinv: the inverse row permutation; pc: the column order; lu: the static LU's analysis
-    (hpgen.codegen.static_lu.StaticLU's fields and nnz) or None."""
+    (hpgen.codegen.static_lu.StaticLU's fields and nnz; code: the numeric factorization's
+    generated C, hpgen.codegen.lu_code, or None; fill: the fill's positions; pinv: the
+    inverse of perm) or None."""
     sp = jacobian_sparsity(step)
     if sp is None:
         return None
@@ -74,7 +77,16 @@ def sparse_context(step) -> dict | None:
             "pc": [int(i) for i in pc],
             "lu": None if lu is None else {
                 "nnz": lu.nnz, "perm": list(lu.perm), "colptr": list(lu.colptr),
-                "row": list(lu.row), "diag": list(lu.diag), "jmap": list(lu.jmap)}}
+                "row": list(lu.row), "diag": list(lu.diag), "jmap": list(lu.jmap),
+                "code": factor_code(lu), "fill": fill_positions(lu),
+                "pinv": _inverse(lu.perm)}}
+
+
+def _inverse(perm) -> list[int]:
+    inv = [0] * len(perm)
+    for t, c in enumerate(perm):
+        inv[c] = t
+    return inv
 
 
 def aux_function(sp):

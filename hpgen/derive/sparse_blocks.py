@@ -86,10 +86,11 @@ def assemble(terms, shape):
 
 
 class Gathered:
-    """Y's rows per entity as dense blocks, shared by the products that read the same rows:
-    block e (kept rows x width) holds Y[rows[e][s][k], cols[e][c]] at (k, c) for the slots'
-    kept local rows k (those with a structural nonzero for some entity; the others are
-    dropped), zeros elsewhere."""
+    """Y's rows per entity as blocks, shared by the products that read the same rows: block e
+    (kept rows x width, of the pattern ``sparsity`` common to all entities: the union of
+    their nonzeros) holds Y[rows[e][s][k], cols[e][c]] at (k, c) for the slots' kept local
+    rows k (those with a structural nonzero for some entity; the others are dropped), zeros
+    where the entity has none."""
 
     def __init__(self, Y, yrows):
         spY = Y.sparsity()
@@ -114,8 +115,17 @@ class Gathered:
                 for c, q in by_row.get(r, []):
                     idx[e, at[c], k] = q
         self.nonzero = idx != zero            # (entity, column, kept row)
-        yv = ca.vertcat(ca.sparsity_cast(Y, ca.Sparsity.dense(zero, 1)), ca.MX.zeros(1, 1))
-        self.blocks = ca.reshape(yv[idx.ravel().tolist()], self.rows, self.width * len(yrows))
+        # the blocks' common pattern: the union of the entities' nonzeros, so that the
+        # products skip the zeros every entity has
+        union = self.nonzero.any(axis=0)
+        cs, rs = np.nonzero(union)            # column-major (CCS) order
+        self.sparsity = ca.Sparsity.triplet(self.rows, self.width, rs.tolist(), cs.tolist())
+        take = idx[:, union].ravel()
+        yv = ca.sparsity_cast(Y, ca.Sparsity.dense(zero, 1))
+        if (take == zero).any():              # an entity without a union entry: a zero
+            yv = ca.vertcat(yv, ca.MX.zeros(1, 1))
+        self.blocks = ca.sparsity_cast(yv[take.tolist()],
+                                       ca.horzcat(*[self.sparsity] * len(yrows)))
 
 
 def _disjoint_slots(Y, yrows) -> bool:
@@ -160,7 +170,7 @@ def block_products(xs, entities, Y, name: str, cache: dict | None = None) -> Ent
             cache[key] = (Y, Gathered(Y, rows_g))  # Y kept alive: its id stays unique
         gys.append(cache[key][1])
     Xs = [ca.SX.sym(f"x{s}", sp) for s, sp in enumerate(sp_x)]
-    Ybs = [ca.SX.sym(f"y{g}", gy.rows, gy.width) for g, gy in enumerate(gys)]
+    Ybs = [ca.SX.sym(f"y{g}", gy.sparsity) for g, gy in enumerate(gys)]
     prods = []
     for grp, gy, Yb in zip(groups, gys, Ybs):
         offs = np.cumsum([0] + [len(k) for k in gy.kept])

@@ -63,6 +63,10 @@ static int hpgen_newton_j(const double* z, const double* g, const double* p, con
 static int hpgen_slu_factor(const double* Jnz, double* X) {
     double x[HPGEN_NZ];
     int t, q, s;
+#if defined(HPGEN_SLU_GENERATED) && !defined(HPGEN_SLU_LOOP)   /* the same arithmetic,
+    generated (hpgen.codegen.lu_code); -DHPGEN_SLU_LOOP keeps this loop (A/B, tests) */
+    if (1) return hpgen_slu_generated(Jnz, X);
+#endif
     memset(x, 0, sizeof x);
     memset(X, 0, HPGEN_SP_NLU * sizeof(double));
     for (q = 0; q < HPGEN_SP_NJ; ++q) X[hpgen_slu_jmap[q]] = Jnz[q];
