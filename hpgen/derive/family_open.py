@@ -7,10 +7,9 @@ Model.runtime_symbols' order) or (t, u, params) (the per-body force, u the contr
 Model.input_symbols' order); the step functions take the whole step vector
 hv = [h, t_k, u, params] of hpgen.abi as their ``h``.
 
-Body data (per-body lists, hpgen.model.bodyterms.LocalTerms.data): a body function's index
-input i is then the column (i, q_i), q_i body i's entries of the data in LocalTerms.data's
-order, taken from hv's params (runtime lists) or numbers (fixed lists); without body data it
-is the number i.
+Body data (runtime per-body lists, hpgen.model.bodyterms.LocalTerms.data): a body function's
+index input i is then the column (i, q_i), q_i body i's entries of the data in
+LocalTerms.data's order, taken from hv's params; without body data it is the number i.
 """
 from __future__ import annotations
 
@@ -50,34 +49,32 @@ def index_symbol(model):
     return I, I[0], {s: I[1 + j] for j, (s, _) in enumerate(data)}
 
 
-def _data_values(model, hv) -> list:
-    """For each body data entry, bodies 0..N-1's values: entries of the params of the step
-    vector hv (a runtime list, Model.runtime_symbols' positions) or numbers (a fixed one)."""
+def _data_positions(model) -> list:
+    """For each body data entry, the positions in Model.runtime_symbols of bodies 0..N-1's
+    values."""
     where = {s: k for k, s in enumerate(model.runtime_symbols)}
-    P = hv[2 + len(model.inputs):] if model.open_system else None
-    return [[v if isinstance(v, float) else P[where[v]] for v in vals]
-            for _, vals in model.family.local.data]
+    return [[where[v] for v in vals] for _, vals in model.family.local.data]
 
 
 def body_index(model, k: int, hv):
-    """Body k's index input: k, or the column (k, q_k) with q_k body k's data (from the
-    params of the step vector hv, or fixed numbers)."""
+    """Body k's index input: k, or the column (k, q_k) with q_k from the params of the step
+    vector hv."""
     if not model.family.local.data:
         return k
-    return ca.vertcat(k, *[vals[k] for vals in _data_values(model, hv)])
+    P = hv[2 + len(model.inputs):]
+    return ca.vertcat(k, *[P[pos[k]] for pos in _data_positions(model)])
 
 
 def body_indices(model, hv):
     """The index inputs of all bodies as columns (1 x N, or (1 + q) x N with body data from
-    the params of the step vector hv or fixed numbers)."""
+    the params of the step vector hv)."""
     N = model.family.count
     I = ca.DM(np.arange(N)).T
     if not model.family.local.data:
         return I
-    vals = _data_values(model, hv)
-    if all(isinstance(v, float) for vs in vals for v in vs):
-        return ca.vertcat(I, ca.DM(vals))
-    return ca.vertcat(I, *[ca.horzcat(*vs) for vs in vals])
+    pos = _data_positions(model)
+    P = hv[2 + len(model.inputs):]
+    return ca.vertcat(I, ca.reshape(P[[p[k] for k in range(N) for p in pos]], len(pos), N))
 
 
 def with_env(args, e):

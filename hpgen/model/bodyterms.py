@@ -9,13 +9,12 @@ Conventions:
   number i). Body i's term in the expanded Lagrangian is ``expr`` with the symbols of body i
   and index = i. A term is local when every body-indexed name in it (xi g R x w v) is indexed
   by the sum variable itself; a parameter indexed by it is a scalar (shared) or a runtime
-  parameter with one entry per body (``m[i]``, ``J[i]``), fixed or in
-  ``runtime_parameters``, body data: body i's entry is the symbol ``body:m`` (``body:J[0]``
-  ... for a vector entry) in ``expr``.
+  parameter with one entry per body (``m[i]``, ``J[i]`` with ``m``, ``J`` in
+  ``runtime_parameters``), body data: body i's entry is the symbol ``body:m`` (``body:J[0]``
+  ... for a vector entry) in ``expr``. A fixed per-body list makes the model expanded.
 - ``LocalTerms.data`` lists the body data: ((symbol, (body 0's value, ..., body N-1's)), ...)
   sorted by the symbol's name, each value a runtime parameter's symbol (hpgen.model.symbols.
-  runtime_symbol) or, for a fixed list, a float; the compiler passes body i's values next to
-  its index.
+  runtime_symbol); the compiler passes body i's values next to its index.
 - A JointTerm is one constraint row block (hpgen.model.constraints.ConstraintSpec) evaluated
   on K local bodies ("slots", K <= MAX_SLOTS, one per distinct body-index expression in the
   text, in order of first use): ``rows`` in the symbols ``g_a_b`` of the K-body product group
@@ -123,14 +122,11 @@ class _Local(_Evaluator):
         return super().subscript(node)
 
     def _body_data(self, node, name: str, value, idx):
-        """``p[i]`` (``p[i, k]``, ...) of a per-body list, runtime or fixed (numbers): body
-        i's entry as body data symbols (module docstring); any other per-body list is not
-        local."""
+        """``p[i]`` (``p[i, k]``, ...) of a runtime per-body list: body i's entry as body data
+        symbols (module docstring); any other per-body list is not local."""
         runtime = all(isinstance(e, sp.Symbol) and e.name.startswith("param:")
                       for e in value.flat)
-        fixed = all(isinstance(e, (int, float)) or (isinstance(e, sp.Basic) and e.is_number)
-                    for e in value.flat)
-        if self.count is None or not (runtime or fixed) or not (
+        if self.count is None or not runtime or not (
                 isinstance(idx[0], ast.Name) and idx[0].id == self.var) \
                 or any(self._uses(n, (self.var,)) for n in idx[1:]):
             raise _NotLocal
@@ -144,8 +140,7 @@ class _Local(_Evaluator):
         for e in np.ndindex(shape):
             s = sp.Symbol("body:" + name + "".join(f"[{a}]" for a in e), real=True)
             syms[e] = s
-            self.data[s] = tuple(value[(k,) + e] if runtime else float(value[(k,) + e])
-                                 for k in range(self.count))
+            self.data[s] = tuple(value[(k,) + e] for k in range(self.count))
         out = syms[rest] if rest else syms
         return out[()] if isinstance(out, np.ndarray) and not out.shape else out
 

@@ -115,8 +115,7 @@ def body_terms_hessian(lag: BodyLagrangian, group, g, runtime: dict):
                 elif s in runtime:
                     mapping[s] = ca.SX(runtime[s])
                 elif name.startswith("body:"):
-                    v = data[s][k]             # a runtime symbol, or a fixed number
-                    mapping[s] = ca.SX(v if isinstance(v, float) else runtime[v])
+                    mapping[s] = ca.SX(runtime[data[s][k]])
             total = total + to_casadi(t.expr, mapping)
     fun = ca.Function("legendre_map", [X], [ca.hessian(total, X)[0]])
     return np.array(fun(np.zeros(group.d)), dtype=float)

@@ -23,12 +23,11 @@ GRAVITY = (EXAMPLES / "pendulum_chain_gravity.yaml").read_text()
 SCHEMES = [("stormer-verlet", "truncated"), ("gauss2", "exact")]
 
 
-def chain_text(n: int, runtime: str = "[grav, m, k]", force: bool = False,
-               fixed_m: bool = False) -> str:
+def chain_text(n: int, runtime: str = "[grav, m, k]", force: bool = False) -> str:
     """The gravity chain with per-body lists m (mass, in d2l/dxi2; one shared number when
-    it is neither runtime nor ``fixed_m``) and k (a gravity factor, not in it); ``force``: a
-    per-body damping with a per-body coefficient c[i]."""
-    ms = [1.0 + 0.25 * i for i in range(n)] if " m" in runtime or fixed_m else 1.25
+    it is not runtime) and k (a gravity factor, not in it); ``force``: a per-body damping
+    with a per-body coefficient c[i]."""
+    ms = [1.0 + 0.25 * i for i in range(n)] if " m" in runtime else 1.25
     ks = [1.0 - 0.1 * i for i in range(n)]
     text = GRAVITY.replace("{N: 4, m: 1.0,", "{N: %d, m: %s, k: %s, c: %s," % (
         n, ms, ks, [0.1 * (i + 1) for i in range(n)]))
@@ -42,8 +41,8 @@ def chain_text(n: int, runtime: str = "[grav, m, k]", force: bool = False,
 
 
 @functools.lru_cache(maxsize=None)
-def pair(n, tab, rk, runtime="[grav, m, k]", force=False, fixed_m=False):
-    m = load_model_text(chain_text(n, runtime, force, fixed_m))
+def pair(n, tab, rk, runtime="[grav, m, k]", force=False):
+    m = load_model_text(chain_text(n, runtime, force))
     assert family_local(m)
     return (m, derive(m, resolve_tableau(tab), "cay", rk),
             derive(m, resolve_tableau(tab), "cay", rk, expand=True))
@@ -56,12 +55,8 @@ def test_body_data_of_the_model():
     assert [str(v) for v in m.family.local.data[1][1]] == ["param:m[0]", "param:m[1]",
                                                            "param:m[2]"]
     assert dict(m.runtime_parameters)["m"] == (3,)
-    # a fixed per-body list is body data too, its values numbers
-    fixed = load_model_text(chain_text(3, "[grav, m]"))
-    assert family_local(fixed)
-    (k, ks), (_, ms) = fixed.family.local.data
-    assert k.name == "body:k" and ks == (1.0, 0.9, 0.8)
-    assert [str(v) for v in ms] == ["param:m[0]", "param:m[1]", "param:m[2]"]
+    # a fixed per-body list stays expanded (its values are frozen into the expansion)
+    assert not family_local(load_model_text(chain_text(3, "[grav, m]")))
 
 
 @pytest.mark.parametrize("n", [2, 3])
@@ -86,82 +81,6 @@ def test_step_kernels_match_the_expansion(n, tab, rk, force):
                        ("record", (g, p, xi, hv)), ("velocity_step", (g, p, xi, hv))):
         for a, b in zip(evaluate(fam, name, *args), evaluate(dense, name, *args)):
             close(a, b, name)
-
-
-@pytest.mark.parametrize("n", [2, 3])
-@pytest.mark.parametrize("tab,rk", SCHEMES)
-def test_fixed_lists_match_the_expansion(n, tab, rk):
-    """A fixed per-body list (k[i], numbers in parameters:) is body data as well, its values
-    constants of the kernels: F, J, update, step_partials and the state kernels agree with
-    the expansion (where the values are frozen into the expanded Lagrangian)."""
-    m, fam, dense = pair(n, tab, rk, "[grav]")
-    assert [s.name for s, _ in m.family.local.data] == ["body:k"]
-    P = permutation(fam, dense, 6, n)
-    g, p, rng = state(n, 29)
-    z = 0.3 * rng.standard_normal(dense.nz)
-    hv = np.array([0.01, 0.37, 7.5])
-    sf, sd = compare_step_kernels(fam, dense, P, z, g, p, hv)
-    close(sf[3], sd[3].reshape(fam.nz, 3, order="F")[P].ravel(order="F"), "FH")
-    close(sf[4], sd[4], "YH")
-    xi = rng.standard_normal(6 * n)
-    for name, args in (("legendre", (g, xi, hv)), ("hessian", (g, xi, hv)),
-                       ("energy", (g, xi, hv)), ("observe", (g, p, hv)),
-                       ("record", (g, p, xi, hv)), ("velocity_step", (g, p, xi, hv))):
-        for a, b in zip(evaluate(fam, name, *args), evaluate(dense, name, *args)):
-            close(a, b, name)
-
-
-@pytest.mark.parametrize("n", [2, 3])
-def test_fixed_lists_in_a_closed_model(n):
-    """A closed chain (no runtime parameters, no t) with fixed per-body masses in d2l/dxi2
-    and gravity factors: derived per body (explicit node velocity) like the expansion, 200
-    steps to round-off."""
-    text = (EXAMPLES / "pendulum_chain.yaml").read_text().replace(
-        "{N: 2, m: 1.0,", "{N: %d, m: %s, k: %s," % (n, [1.0 + 0.25 * i for i in range(n)],
-                                                     [1.0 - 0.1 * i for i in range(n)]))
-    text = text.replace("0.5*m*norm2", "0.5*m[i]*norm2").replace("- m*grav*(",
-                                                                 "- k[i]*m[i]*grav*(")
-    m = load_model_text(text)
-    assert family_local(m) and not m.open_system
-    assert [s.name for s, _ in m.family.local.data] == ["body:k", "body:m"]
-    tab = resolve_tableau("stormer-verlet")
-    fam, dense = (derive(m, tab, "cay", "truncated", expand=e) for e in (False, True))
-    assert "v1" not in [lab for lab, _, _ in fam.unknowns]
-    g0 = np.eye(4 * n).ravel(order="F")
-    p0 = evaluate(dense, "legendre", g0, np.tile([3.0, 1.0, 0.5, 0.0, 0.0, 0.0], n))[0]
-    out = []
-    for step in (fam, dense):
-        g, p, rows = g0, p0, []
-        for _ in range(200):
-            xi = evaluate(step, "velocity_step", g, p, np.zeros(6 * n))[0]
-            z = evaluate(step, "guess", xi, g, p, [1e-3])[0]
-            for _ in range(30):
-                F, J = evaluate(step, "residual_jacobian", z, g, p, [1e-3])
-                dz = np.linalg.solve(J.reshape(step.nz, step.nz, order="F"), F)
-                z = z - dz
-                if np.abs(dz).max() <= 1e-14 * (1 + np.abs(z).max()):
-                    break
-            g, p = evaluate(step, "update", z, g, p, [1e-3])
-            rows.append(np.concatenate([g, p]))
-        out.append(np.array(rows))
-    assert np.abs(out[0] - out[1]).max() <= 1e-12 * (1 + np.abs(out[1]).max())
-
-
-@pytest.mark.parametrize("n", [2, 3])
-def test_fixed_masses_in_the_hessian_match_the_expansion(n):
-    """Fixed per-body masses m[i] enter d2l/dxi2: the family's node velocity stays
-    explicit (each body's inverse from its own masses), the expansion solves for it; 200
-    steps agree to round-off."""
-    m, fam, dense = pair(n, "stormer-verlet", "truncated", "[grav, k]", fixed_m=True)
-    assert [s.name for s, _ in m.family.local.data] == ["body:k", "body:m"]
-    assert "v1" not in [lab for lab, _, _ in fam.unknowns]
-    params = np.concatenate([[6.0], np.linspace(0.8, 1.2, n)])
-    hv = np.concatenate([[1e-3, 0.2], params])
-    g0 = np.eye(4 * n).ravel(order="F")
-    p0 = evaluate(dense, "legendre", g0, np.tile([3.0, 1.0, 0.5, 0.0, 0.0, 0.0], n), hv)[0]
-    a = run(fam, g0, p0, 1e-3, 200, params, t0=0.2)
-    b = run(dense, g0, p0, 1e-3, 200, params, t0=0.2)
-    assert np.abs(a - b).max() <= 1e-12 * (1 + np.abs(b).max())
 
 
 @pytest.mark.parametrize("n", [2, 3])
@@ -229,30 +148,3 @@ def test_compiled_modules_and_a_sweep_over_one_link_mass(tmp_path):
                                   params={"grav": grav, "m": grid[b], "k": ks})
         assert np.array_equal(res["g"][b], one.g) and np.array_equal(res["mu"][b], one.mu)
     assert np.abs(res["g"][0, -1] - res["g"][2, -1]).max() > 1e-3    # the mass matters
-
-
-@pytest.mark.slow
-def test_compiled_modules_with_fixed_lists(tmp_path):
-    """The C and Python modules of the N = 2 chain with fixed per-body masses and gravity
-    factors (body data, constants of the kernels) run 200 steps like CasADi's evaluation of
-    the expansion."""
-    import hpgen
-    n = 2
-    path = tmp_path / "fixed_chain.yaml"
-    path.write_text(chain_text(n, "[grav]", fixed_m=True))
-    m, fam, dense = pair(n, "stormer-verlet", "truncated", "[grav]", fixed_m=True)
-    assert [s.name for s, _ in m.family.local.data] == ["body:k", "body:m"]
-    g0 = np.eye(4 * n)
-    xi0 = np.tile([3.0, 1.0, 0.5, 0.0, 0.0, 0.0], n)
-    p0 = evaluate(dense, "legendre", g0.ravel(order="F"), xi0, [1e-3, 0.0, 8.0])[0]
-    raw = run(dense, g0.ravel(order="F"), p0, 1e-3, 200, [8.0])
-    ng = (4 * n) ** 2
-    ref = np.array([np.concatenate([r[:ng].reshape(4 * n, 4 * n, order="F").ravel(), r[ng:]])
-                    for r in raw])
-    out = {}
-    for backend in ("c", "python"):
-        integ = hpgen.compile(path, backend=backend, cache_dir=tmp_path)
-        traj = integ.simulate(g0, 1e-3, 200, mu0=p0, params={"grav": 8.0})
-        out[backend] = np.hstack([traj.g[1:].reshape(200, -1), traj.mu[1:]])
-        assert np.abs(out[backend] - ref).max() <= 1e-11, backend
-    assert np.abs(out["c"] - out["python"]).max() <= 1e-13
