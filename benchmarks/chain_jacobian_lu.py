@@ -24,8 +24,11 @@ from pathlib import Path
 import numpy as np
 
 import hpgen
-from hpgen.bench.multibody import chain, hpgen_chain
+from hpgen.bench.multibody import hpgen_chain
 from hpgen.runtime.build import DEFAULT_CFLAGS, include_flags
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from chain_step_parts import write_state  # noqa: E402
 
 HARNESS = r"""
 #define _POSIX_C_SOURCE 199309L
@@ -75,13 +78,7 @@ def build(module: Path, src: Path, exe: Path, extra=()) -> None:
 
 
 def run(n: int, model: str, base: Path, work: Path) -> None:
-    integ = hpgen.compile(model, parameters={"N": n})
-    spec = chain.ChainSpec(n)
-    qpos, qvel = chain.initial_joint_state(spec)
-    g0, xi0 = hpgen_chain.to_hpgen(spec, chain.from_joint(spec, qpos, qvel))
-    tr = integ.simulate(g0, 1e-3, 50, xi0=xi0, every=50)
-    state = work / f"state{n}.bin"
-    np.concatenate([np.asarray(tr.g[-1]).ravel(order="F"), np.asarray(tr.mu[-1])]).tofile(state)
+    _, state = write_state(model, n, work)
     src = work / "harness.c"
     src.write_text(HARNESS)
     this, other = module_dir(None, model, n), module_dir(base, model, n)

@@ -76,14 +76,21 @@ int main(int argc, char** argv) {
 """
 
 
-def run(n: int, work: Path) -> str:
-    integ = hpgen.compile(hpgen_chain.MODEL, parameters={"N": n})
+def write_state(model, n: int, work: Path):
+    """The model compiled at N = n, and the path of the state (g column-major, mu; float64)
+    after 50 steps of h = 1e-3 from the benchmark's start, written into ``work``."""
+    integ = hpgen.compile(model, parameters={"N": n})
     spec = chain.ChainSpec(n)
     qpos, qvel = chain.initial_joint_state(spec)
     g0, xi0 = hpgen_chain.to_hpgen(spec, chain.from_joint(spec, qpos, qvel))
     tr = integ.simulate(g0, 1e-3, 50, xi0=xi0, every=50)
     state = work / f"state{n}.bin"
     np.concatenate([np.asarray(tr.g[-1]).ravel(order="F"), np.asarray(tr.mu[-1])]).tofile(state)
+    return integ, state
+
+
+def run(n: int, work: Path) -> str:
+    integ, state = write_state(hpgen_chain.MODEL, n, work)
     module = Path(integ.engine.backend.lib._name).parent
     src, exe = work / "parts.c", work / f"parts{n}"
     src.write_text(HARNESS)

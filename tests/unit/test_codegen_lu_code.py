@@ -14,31 +14,7 @@ from hpgen.codegen.static_lu import static_lu
 
 from conftest import EXAMPLES
 from test_sparse_newton import ccs, chain_scene, kkt, slu_solve
-
-
-def loop_factor(lu, jnz, n):
-    """hpgen_slu_factor of hpgen_linalg.c (the runtime's left-looking loop), operation for
-    operation: the values X, or None at a failed pivot."""
-    X = np.zeros(lu.nnz)
-    X[list(lu.jmap)] = jnz
-    x = np.zeros(n)
-    for t in range(n):
-        c0, c1, dt = lu.colptr[t], lu.colptr[t + 1], lu.diag[t]
-        x[list(lu.row[c0:c1])] = X[c0:c1]
-        cmax = np.abs(X[c0:c1]).max()
-        for q in range(c0, dt):
-            k = lu.row[q]
-            X[q], x[k] = x[k], 0.0
-            for s in range(lu.diag[k] + 1, lu.colptr[k + 1]):
-                x[lu.row[s]] -= X[s] * X[q]
-        d, x[t] = x[t], 0.0
-        if not (abs(d) > STATIC_PIVOT_TOL * cmax and np.isfinite(d)):
-            return None
-        r = 1.0 / d
-        X[dt] = r
-        for q in range(dt + 1, c1):
-            X[q], x[lu.row[q]] = x[lu.row[q]] * r, 0.0
-    return X
+from test_sparse_newton import slu_factor as loop_factor
 
 
 def chain_kkt(rng, n_bodies, d=6, m=3):

@@ -267,7 +267,8 @@ def test_python_sparse_solver():
 # ---- the static LU's analysis (hpgen.codegen.static_lu) -----------------------------------
 
 def slu_factor(lu, jnz, n):
-    """hpgen_slu_factor of hpgen_linalg.c, loop for loop: the values X, or None."""
+    """hpgen_slu_factor of hpgen_linalg.c (the runtime's left-looking loop), operation for
+    operation: the values X, or None at a failed pivot."""
     X = np.zeros(lu.nnz)
     X[list(lu.jmap)] = jnz
     x = np.zeros(n)
@@ -283,9 +284,10 @@ def slu_factor(lu, jnz, n):
         d, x[t] = x[t], 0.0
         if not (abs(d) > STATIC_PIVOT_TOL * cmax and np.isfinite(d)):
             return None
-        X[dt] = 1.0 / d
+        r = 1.0 / d
+        X[dt] = r
         for q in range(dt + 1, c1):
-            X[q], x[lu.row[q]] = x[lu.row[q]] / d, 0.0
+            X[q], x[lu.row[q]] = x[lu.row[q]] * r, 0.0
     return X
 
 
