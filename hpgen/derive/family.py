@@ -50,6 +50,7 @@ from .family_open import with_env, body_force_function, body_index, index_symbol
     open_layout, product_force, split_step_vector
 from .family_joint_forces import external_forces, joint_force_functions, \
     joint_stage_functions, stage_force, stage_function
+from .family_velocity import hessian_inverse, momentum_functions, node_velocity, quadratic
 from .lagrangian import to_casadi
 
 CALL = {"never_inline": True, "jac_penalty": 0}
@@ -217,7 +218,7 @@ def _functions(model, tableau, tau: str, rkmk: str):
 
     joints = family.local.joints
     jfun = _joint_functions(model, body) if joints else {}
-    vel_funs = _node_velocity(model, lags, body, lay) if joints else {}
+    vel_funs = node_velocity(model, lags, body, lay) if joints else {}
     out = (body, lags, keys, steps, jfun, vel_funs)
     _LAST[:] = [model, key, out]
     return out
@@ -278,7 +279,7 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     if not joints:
         eqs = StepEquations(z, tuple(blocks), ca.vertcat(*res), g1, ca.vertcat(*p1s),
                             ca.vertcat(*guesses), xi_hat, margin, ca.vertcat(*charts))
-        return FamilyParts(eqs, lag, velocity, force, _quadratic(lags, body))
+        return FamilyParts(eqs, lag, velocity, force, quadratic(lags, body))
 
     nz = nzb
     blocks += [("lambda", nz, nz + m), ("nu", nz + m, nz + 2 * m)]
@@ -300,7 +301,7 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     else:
         v1 = z[nz + 2 * m:]
         vel = [v1[k * db:(k + 1) * db] for k in range(N)]
-        dl = _momentum(model, lags, body, e1 is not None and e1.numel())
+        dl = momentum_functions(model, lags, body, e1 is not None and e1.numel())
         extra_rows = [dl[keys[k]](*with_env([g1s[k], vel[k], index[k]], e1)) - p1s[k]
                       for k in range(N)]
         extra_guess = [xi_hat]
@@ -313,72 +314,7 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     eqs = StepEquations(z, tuple(blocks), residual, g1,
                         ca.vertcat(*p1s), ca.vertcat(*guesses, S.zeros(2 * m), *extra_guess),
                         xi_hat, margin, ca.vertcat(*charts))
-    return FamilyParts(eqs, lag, velocity, force, _quadratic(lags, body))
-
-
-def _quadratic(lags, body) -> bool:
-    """Whether every body class's d2l/dxi2 is free of xi (the Lagrangian is quadratic in
-    the velocity body by body; the product's Hessian, built from call nodes, cannot say)."""
-    for lag_in, _ in lags.values():
-        X = ca.SX.sym("xi", body.d)
-        args = [ca.SX.sym(f"a{k}", lag_in.sparsity_in(k)) for k in range(lag_in.n_in())]
-        args[1] = X
-        if ca.depends_on(ca.hessian(lag_in(*args), X)[0], X):
-            return False
-    return True
-
-
-def _momentum(model, lags, body, ne):
-    """{class key: Function(g, xi, i[, e]) -> dl/dxi} (call nodes); ne: e's size (0: closed)."""
-    G, X, I = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), index_symbol(model)[0]
-    E = ca.SX.sym("e", ne) if ne else None
-    return {key: ca.Function(f"body{c}_momentum", with_env([G, X, I], E),
-                             [ca.gradient(lag_in(*with_env([G, X, I], E)), X)], CALL)
-            for c, (key, (lag_in, _)) in enumerate(sorted(lags.items()))}
-
-
-def _node_velocity(model, lags, body, lay=None):
-    """{class key: (Function(g (vec), p, i, Hinv (d*d, column-major)[, e]) -> Hinv (p -
-    dl/dxi(g, 0)), Function(i) -> d2l/dxi2, Function(i) -> Hinv or None)}, or None for a
-    class whose d2l/dxi2 depends on g or xi, or on e = (t, params) (lay: open_layout). It
-    may depend on i: its inverse is taken numerically per body, as the expanded step does;
-    when it depends on body data (runtime per-body lists, hpgen.derive.family_open) the
-    third function inverts it symbolically, from the body's index input."""
-    G, X, P = ca.SX.sym("g", body.n, body.n), ca.SX.sym("xi", body.d), ca.SX.sym("p", body.d)
-    I = index_symbol(model)[0]
-    E = ca.SX.sym("e", 1 + lay[1]) if lay is not None else None
-    Hinv = ca.SX.sym("Hinv", body.d, body.d)
-    out = {}
-    for c, (key, (lag_in, _)) in enumerate(sorted(lags.items())):
-        dl = ca.gradient(lag_in(*with_env([G, X, I], E)), X)
-        hess = ca.jacobian(dl, X)
-        if ca.depends_on(hess, ca.vertcat(ca.vec(G), X, *([E] if E is not None else []))):
-            out[key] = None
-            continue
-        vel = ca.mtimes(Hinv, P - ca.substitute(dl, X, ca.SX.zeros(body.d)))
-        inverse = None
-        if I.numel() > 1 and ca.depends_on(hess, I[1:]):
-            inverse = ca.Function(f"body{c}_hessian_inverse", [I],
-                                  [ca.vec(ca.inv(hess))], CALL)
-        out[key] = (ca.Function(f"body{c}_velocity", with_env([ca.vec(G), P, I, ca.vec(Hinv)], E),
-                                [vel], CALL), ca.Function(f"body{c}_hessian", [I], [hess]),
-                    inverse)
-    return out
-
-
-def numeric_index(model, k: int):
-    """Body k's index input with zero body data (for a function that does not read them)."""
-    q = len(model.family.local.data)
-    return k if not q else ca.DM([k] + [0.0] * q)
-
-
-def hessian_inverse(model, entry, k: int, index):
-    """Body k's (d2l/dxi2)^-1, column-major: numerically (a DM) unless it depends on body
-    data (``entry``: a _node_velocity value; ``index``: body k's index input)."""
-    if entry[2] is not None:
-        return entry[2](index)
-    H = np.array(entry[1](numeric_index(model, k)), dtype=float)
-    return ca.DM(np.linalg.inv(H).ravel(order="F"))
+    return FamilyParts(eqs, lag, velocity, force, quadratic(lags, body))
 
 
 def _product_lagrangian(model, lags, keys, body, index, ek=None):

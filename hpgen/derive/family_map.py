@@ -79,7 +79,7 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     (hpgen.derive.family_jacobian): a dict of MX Z, Q, G1, P1, V (columns per body), the
     joint groups, the constants I, Hinv and the joint rows' order), or None. An open model's
     h is its step vector hv (hpgen.abi)."""
-    from .family import hessian_inverse
+    from .family_velocity import hessian_inverse
     from .family_open import body_indices, with_env, split_step_vector
     body, lags, keys, steps, jfun, vel_funs = funcs
     hv = h
