@@ -182,6 +182,9 @@ def mapped_state_kernels(model, lags, keys, body, record_names, force=None) -> d
     vstep = X - ca.solve(H, mu - Ps)
     at0 = lambda e: ca.substitute(e, X, ca.SX.zeros(db))  # noqa: E731
     x0 = at0(vstep)
+    # one more Newton step from x0: the solve of d2l/dxi2 (condition up to ~1e4 on chains
+    # with frames at the pin) leaves ~1e-11 in xi, the refined residual round-off
+    x0 = ca.substitute(vstep, X, x0)
     gvec = ca.vec(Gs)
     fa = ca.Function("body_legendre", with_env([gvec, X, I], E),
                      [mu, ca.densify(ca.vec(H)), ca.dot(mu, X) - lval], CALL)
