@@ -81,9 +81,14 @@ def main(argv=None):
     ap.add_argument("--frames", nargs="+", default=["pin", "centre"], choices=["pin", "centre"])
     ap.add_argument("--start", nargs="+", default=["random", "tilt60"])
     ap.add_argument("--cache-dir", default=None, help="hpgen's build cache (default its own)")
+    ap.add_argument("--newton", choices=["default", "full", "simplified"], default="default",
+                    help="hpgen's Newton (default: the module's)")
     args = ap.parse_args(argv)
     import hpgen
     from hpgen.bench.multibody import mujoco_peer
+    from hpgen.runtime.newton import NewtonOptions
+    newton = None if args.newton == "default" else NewtonOptions(
+        simplified=args.newton == "simplified")
     print("| N | start | runner | dt | steps | us/step | band / (E0 - V_rest) | band / abs(E0) "
           "| first / last tenth; line's rise | joints (pos / vel); it/step; cond H |")
     print("|---|---|---|---|---|---|---|---|---|---|", flush=True)
@@ -102,7 +107,7 @@ def main(argv=None):
             for frames, integ in integs.items():
                 g0, xi0 = hpgen_chain.to_hpgen(spec, s0, frames)
                 r = hpgen_chain.run(integ, spec, g0, xi0, args.h, args.steps, every=1,
-                                    frames=frames)
+                                    newton=newton, frames=frames)
                 c = r.seconds / args.steps
                 costs.append(c)
                 extra = (f"{r.gaps[0]:.1e} / {r.gaps[1]:.1e}; {r.iterations / args.steps:.2f}; "

@@ -167,12 +167,32 @@ def at_floor(dn: float, zn: float) -> bool:
     return dn <= KEEP_J_FLOOR * (1.0 + zn)
 
 
+#: hpgen_newton_sparse.c's HPGEN_SIMPLIFIED_REFRESH: a sparse module's simplified Newton stops
+#: a J evaluated in the step on the chord's rate bound, and drops a J kept from earlier steps
+#: after a step that took more than KEPT_J_ITERATES iterates with it alone
+SIMPLIFIED_REFRESH = True
+#: hpgen_newton_sparse.c's HPGEN_KEPT_J_ITERATES
+KEPT_J_ITERATES = 3
+
+
 def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory):
     """Newton (full or simplified, see the module docstring) from z (a list of floats) on
     kern.residual(z, g, p, hv) = 0: the C runtime's hpgen_newton.
 
     Returns (code, z (list), iterations, last residual inf-norm, Jacobian evaluations).
+    A sparse module's simplified Newton whose step converged with a J kept from earlier steps
+    alone in more than KEPT_J_ITERATES iterates drops that J (memory.lu = None: the next step
+    evaluates J at its first iterate; SIMPLIFIED_REFRESH).
     """
+    out = _iterates(kern, z, g, p, hv, opts, memory)
+    if (SIMPLIFIED_REFRESH and kern.sparse and opts.simplified and out[0] == OK
+            and out[4] == 0 and out[2] > KEPT_J_ITERATES):
+        memory.lu = None
+    return out
+
+
+def _iterates(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory):
+    """solve's iteration (hpgen_newton.c's hpgen_newton_iterates)."""
     residual = kern.residual
     lin, iterate = kern.linear, kern.iterate
     apply, update, finish = lin.apply, lin.update, lin.finish
@@ -180,6 +200,9 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
     stol, sparse = SIMPLIFIED_TOL * tol, kern.sparse
     dprev, jacs, F = _INF, 0, None
     full, fresh = not opts.simplified, False
+    chord_stop = None
+    if sparse and SIMPLIFIED_REFRESH:
+        from .newton_sparse import chord_converged as chord_stop
     if full and sparse:
         # a chord iteration within the step with the round-off stall (newton_sparse)
         from .newton_sparse import solve_sparse
@@ -212,6 +235,7 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
             # a math error or a non-finite value on the way: from this iterate on, the way
             # below (the same values up to there; it then handles the event as C does)
             iterate = None
+        now = False                      # J evaluated at this iterate
         if full or memory.lu is None:
             # F and a fresh J (one evaluation when the module has residual_jacobian)
             memory.lu = None
@@ -222,7 +246,7 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
             dz = res[0]
             if keep:                     # J^{-1} kept only for simplified Newton
                 memory.lu = res[1]
-            fresh = True
+            fresh = now = True
             new = finish(dz, z) if finish is not None else None
         else:
             F = residual(z, g, p, hv)[0]
@@ -248,6 +272,9 @@ def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory)
                 and not (sparse and keep and it == 2 and not fresh)):
             return OK, z, it, norm_inf(F), jacs
         if sparse and sparse_converged(it, dn, dprev, zn, tol, full):
+            return OK, z, it, norm_inf(F), jacs
+        if (chord_stop is not None and not full and fresh and not now
+                and chord_stop(it, dn, dprev, zn, tol)):
             return OK, z, it, norm_inf(F), jacs
         if full:
             # quadratic convergence: the error left after dn <= tol is about C tol^2

@@ -10,13 +10,15 @@
    this step the rest of the step is full Newton (the fallback).
    Converged when |dz| <= tol (1 + |z|), or when |dz| stopped decreasing while
    |dz| <= HPGEN_ROUNDOFF_FLOOR (1 + |z|) (round-off floor); inf-norms; with HPGEN_SPARSE also
-   by hpgen_sparse_converged. Returns a status code. */
-static int hpgen_newton(const double* g, const double* p, const double* hv, double* z,
-                        const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
-                        long long* iters, long long* jacs, double* rnorm) {
+   by hpgen_sparse_converged, and a J evaluated in this step by hpgen_chord_converged
+   (HPGEN_SIMPLIFIED_REFRESH). Returns a status code. */
+static int hpgen_newton_iterates(const double* g, const double* p, const double* hv, double* z,
+                                 const hpgen_options* o, double* lu, int* piv,
+                                 long long* lu_valid, long long* iters, long long* jacs,
+                                 double* rnorm) {
     double F[HPGEN_NZ];
     double dprev = HUGE_VAL;
-    int full = !o->simplified, fresh = 0;
+    int full = !o->simplified, fresh = 0, now;
     long long it;
     int i;
     *iters = 0;
@@ -24,6 +26,7 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
     for (it = 1; it <= o->maxit; ++it) {
         double dn, zn;
         *iters = it;
+        now = 0;                           /* J evaluated at this iterate */
         if (full || !*lu_valid) {
             /* F and a fresh J in one evaluation (their common subexpressions once) */
             *lu_valid = 0;
@@ -33,7 +36,7 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
             if (!isfinite(*rnorm) || hpgen_lu_factor_solve(lu, piv, F, o->simplified))
                 return HPGEN_NONFINITE;
             *lu_valid = o->simplified ? 1 : 0;   /* lu's J^{-1} (or factors) kept or not */
-            fresh = 1;
+            fresh = now = 1;
         } else {
             if (hpgen_k_residual(z, g, p, hv, F)) return HPGEN_NONFINITE;
             *rnorm = hpgen_norm_inf(F, HPGEN_NZ);
@@ -48,6 +51,8 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
             && !hpgen_kept_j_diverges(it, fresh)) return HPGEN_OK;
 #if HPGEN_SPARSE
         if (hpgen_sparse_converged(it, dn, dprev, zn, o->tol, full)) return HPGEN_OK;
+        if (HPGEN_SIMPLIFIED_REFRESH && !full && fresh && !now
+            && hpgen_chord_converged(it, dn, dprev, zn, o->tol)) return HPGEN_OK;
 #endif
         if (full) {
             /* quadratic convergence: the error left after dn <= tol is about C tol^2 */
@@ -70,6 +75,24 @@ static int hpgen_newton(const double* g, const double* p, const double* hv, doub
         dprev = dn;
     }
     return HPGEN_NO_CONVERGENCE;
+}
+
+/* hpgen_newton_iterates; with a sparse J, a step that converged with a J kept from earlier
+   steps alone in more than HPGEN_KEPT_J_ITERATES iterates drops it (HPGEN_SIMPLIFIED_REFRESH,
+   hpgen_newton_sparse.c) */
+static int hpgen_newton(const double* g, const double* p, const double* hv, double* z,
+                        const hpgen_options* o, double* lu, int* piv, long long* lu_valid,
+                        long long* iters, long long* jacs, double* rnorm) {
+    const long long j0 = *jacs;
+    int code = hpgen_newton_iterates(g, p, hv, z, o, lu, piv, lu_valid, iters, jacs, rnorm);
+#if HPGEN_SPARSE
+    if (HPGEN_SIMPLIFIED_REFRESH && code == HPGEN_OK && o->simplified && *jacs == j0
+        && *iters > HPGEN_KEPT_J_ITERATES)
+        *lu_valid = 0;
+#else
+    (void)j0;
+#endif
+    return code;
 }
 
 /* Full Newton (o->simplified = 0): hpgen_newton's iteration, convergence tests and results

@@ -63,6 +63,24 @@ static int hpgen_at_floor(double dn, double zn) {
     return dn <= HPGEN_KEEP_J_FLOOR * (1.0 + zn);
 }
 
+/* A sparse module's simplified Newton (hpgen_newton) with HPGEN_SIMPLIFIED_REFRESH = 1:
+   (a) a J evaluated in this step (at its start or at a refresh) stops, on its later iterates,
+   on the chord's rate bound (hpgen_chord_converged: J - J(z) = O(|z - z_j|) in every
+   direction, no slow mode behind the fast ones), where a J kept from earlier steps keeps
+   the floored bound of hpgen_sparse_converged; (b) a step that converged with a J kept from
+   earlier steps alone, in more than HPGEN_KEPT_J_ITERATES iterates, drops that J: the next
+   step evaluates J at its first iterate. A kept J's rate grows with its age (J - J(z) =
+   O(age h)), and with it the iterates a step needs from the predictor's start; a J
+   refreshed only when its rate exceeds HPGEN_THETA_MAX has wasted two iterates in that step
+   and the slow ones before it. 0: neither (a build may set it to compare). Mirrored in
+   hpgen.runtime.newton (SIMPLIFIED_REFRESH, KEPT_J_ITERATES). */
+#ifndef HPGEN_SIMPLIFIED_REFRESH
+#define HPGEN_SIMPLIFIED_REFRESH 1
+#endif
+#ifndef HPGEN_KEPT_J_ITERATES
+#define HPGEN_KEPT_J_ITERATES 3
+#endif
+
 /* ... and a kept J whose second correction is no smaller than its first does not stop on
    the stagnation test (the first correction being at the floor): that J may not contract
    at all, and the error left would be of the floor's size; the rate test refreshes it. */
