@@ -4,14 +4,16 @@ against MuJoCo RK4 at several dt (and Pinocchio's RKMK4 where cheap), for each N
 has the smaller energy band at equal cost, by what ratio, and the N where hpgen starts to win.
 
     PYTHONPATH=. python benchmarks/chain_compose_bench.py [--n 10 16 32] [--t T ...]
-        [--runs sv:1e-3,2e-3 suzuki4:1e-2,5e-3 ...]
+        [--runs sv@simplified:1e-3,2e-3 suzuki4:1e-2,5e-3 ...]
         [--rk4-dt 5e-4 1e-3 2e-3 4e-3 8e-3 ...] [--pinocchio aba] [--pinocchio-dt 2e-3 4e-3 8e-3]
         [--pinocchio-max-n 16] [--every 10] [--frames centre] [--start random]
         [--newton default] [--error-max-n 16] [--out DIR]
 
-``--runs``: NAME:H,H,... with NAME ``sv`` (the model's constrained Stormer-Verlet), a
+``--runs``: NAME[@NEWTON]:H,H,... with NAME ``sv`` (the model's constrained Stormer-Verlet), a
 composition of it (``hpgen list``: yoshida4, suzuki4, yoshida6, kahan-li6) or a Gauss tableau
-(``gauss2``, ``gauss3``: exact RKMK, which keeps their order); default: default_runs(N)
+(``gauss2``, ``gauss3``: exact RKMK, which keeps their order) and NEWTON ``default`` (the
+module's: the chord on the chain), ``full`` or ``simplified`` (J kept across steps; without
+@NEWTON: ``--newton``'s), e.g. ``sv@simplified:1e-3,2e-3``; default: default_runs(N)
 (step sizes falling with N, where Newton converges over T). Model: hpgen_chain's
 ``--frames`` (``centre`` examples/capsule_chain.yaml, ``pin`` examples/pendulum_chain.yaml).
 Start ``--start`` (chain.named_joint_state; ``random``: hanging straight down, joint rates
@@ -91,19 +93,30 @@ def default_t(n):
     return 100.0 if n <= 16 else 20.0 if n <= 32 else 5.0
 
 
+NEWTONS = ("default", "full", "simplified")
+
+
 def parse_run(text):
-    """(name, [h, ...]) of NAME:H,H,..."""
+    """(name, [h, ...], newton) of NAME[@NEWTON]:H,H,... (newton None: --newton's)."""
     from hpgen.schemes import compositions
-    name, _, hs = text.partition(":")
+    head, _, hs = text.partition(":")
+    name, _, newton = head.partition("@")
     known = ["sv", "gauss2", "gauss3"] + [c.name for c in compositions()]
     try:
         steps = [float(h) for h in hs.split(",")]
     except ValueError:
         steps = []
-    if name not in known or not steps or not all(h > 0 for h in steps):
-        raise SystemExit(f"--runs: expected NAME:H,H,... with NAME one of {', '.join(known)} "
-                         f"and positive step sizes, got {text!r}")
-    return name, steps
+    if (name not in known or not steps or not all(h > 0 for h in steps)
+            or newton not in ("",) + NEWTONS):
+        raise SystemExit(f"--runs: expected NAME[@NEWTON]:H,H,... with NAME one of "
+                         f"{', '.join(known)}, NEWTON one of {', '.join(NEWTONS)} and positive "
+                         f"step sizes, got {text!r}")
+    return name, steps, newton or None
+
+
+def newton_options(name):
+    """NewtonOptions of a NEWTON name (None: the module's default)."""
+    return None if name == "default" else NewtonOptions(simplified=name == "simplified")
 
 
 def compile_options(name):
@@ -242,8 +255,8 @@ def main(argv=None):
     ap.add_argument("--error-max-n", type=int, default=16,
                     help="the error at T = 1 (a DOP853 reference) up to this N")
     ap.add_argument("--out", type=Path, default=Path("bench-chain-compose"))
-    ap.add_argument("--newton", choices=["default", "full", "simplified"], default="default",
-                    help="hpgen's Newton (default: the module's)")
+    ap.add_argument("--newton", choices=NEWTONS, default="default",
+                    help="hpgen's Newton where a run does not name one (default: the module's)")
     args = ap.parse_args(argv)
     given = None if args.runs is None else [parse_run(text) for text in args.runs]
     ts = [default_t(n) for n in args.n] if args.t is None else (
@@ -264,8 +277,6 @@ def main(argv=None):
         except ImportError:
             print("pinocchio is not installed (pip install pin): Pinocchio skipped")
     args.out.mkdir(parents=True, exist_ok=True)
-    newton = None if args.newton == "default" else NewtonOptions(
-        simplified=args.newton == "simplified")
     report = {"frames": args.frames, "start": args.start, "newton": args.newton,
               "every": args.every, "N": []}
     model = hpgen_chain.MODELS[args.frames]
@@ -279,9 +290,12 @@ def main(argv=None):
         print(f"\nN = {n}, T = {T:g}, {model.name}, start {args.start}, every {args.every}"
               f"\n\n{HEADER}", flush=True)
         rows, check = [], None
-        for name, hs in given or [parse_run(text) for text in default_runs(n)]:
+        for name, hs, which in given or [parse_run(text) for text in default_runs(n)]:
             integ = hpgen.compile(model, parameters={"N": n}, **compile_options(name))
-            label = "hpgen SV" if name == "sv" else f"hpgen {name}"
+            which = which or args.newton
+            newton = newton_options(which)
+            label = ("hpgen SV" if name == "sv" else f"hpgen {name}") + (
+                "" if which == "default" else f" ({which})")
             rows += hpgen_rows(integ, label, spec, args.frames, g0, xi0, hs, T, args.every,
                                ref, newton)
             if check is None:

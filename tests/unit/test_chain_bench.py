@@ -99,10 +99,13 @@ def _load(name):
 
 def test_compose_bench_parses_runs_and_options():
     bench = _load("chain_compose_bench")
-    assert bench.parse_run("kahan-li6:2e-2,1e-2") == ("kahan-li6", [2e-2, 1e-2])
+    assert bench.parse_run("kahan-li6:2e-2,1e-2") == ("kahan-li6", [2e-2, 1e-2], None)
+    assert bench.parse_run("sv@simplified:2e-3") == ("sv", [2e-3], "simplified")
+    assert bench.newton_options("simplified").simplified is True
+    assert bench.newton_options("default") is None
     assert bench.compile_options("gauss2") == dict(tableau="gauss2", tau="cay", rkmk="exact")
     assert bench.compile_options("suzuki4") == dict(compose="suzuki4")
-    for bad in ("rk4:1e-3", "sv:", "sv:-1e-3", "suzuki4:x"):
+    for bad in ("rk4:1e-3", "sv:", "sv:-1e-3", "suzuki4:x", "sv@chord:1e-3"):
         with pytest.raises(SystemExit, match="--runs"):
             bench.parse_run(bad)
     assert [bench.default_t(n) for n in (10, 16, 32, 64)] == [100.0, 100.0, 20.0, 5.0]
