@@ -200,9 +200,9 @@ def _iterates(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMem
     stol, sparse = SIMPLIFIED_TOL * tol, kern.sparse
     dprev, jacs, F = _INF, 0, None
     full, fresh = not opts.simplified, False
-    chord_stop = None
-    if sparse and SIMPLIFIED_REFRESH:
-        from .newton_sparse import chord_converged as chord_stop
+    rate_stop = sparse and SIMPLIFIED_REFRESH
+    if rate_stop:
+        from .newton_sparse import chord_converged
     if full and sparse:
         # a chord iteration within the step with the round-off stall (newton_sparse)
         from .newton_sparse import solve_sparse
@@ -273,8 +273,8 @@ def _iterates(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMem
             return OK, z, it, norm_inf(F), jacs
         if sparse and sparse_converged(it, dn, dprev, zn, tol, full):
             return OK, z, it, norm_inf(F), jacs
-        if (chord_stop is not None and not full and fresh and not now
-                and chord_stop(it, dn, dprev, zn, tol)):
+        if (rate_stop and not full and fresh and not now
+                and chord_converged(it, dn, dprev, zn, tol)):
             return OK, z, it, norm_inf(F), jacs
         if full:
             # quadratic convergence: the error left after dn <= tol is about C tol^2
