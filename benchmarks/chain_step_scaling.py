@@ -1,17 +1,21 @@
 """How the step of the N-link pendulum chain (examples/pendulum_chain.yaml: SV / cay /
-truncated, C backend, sparse J) grows with N, for four Newton variants run interleaved in
-one process: the default (a chord iteration within the step: J once a step, again only on a
-poor rate; stops on its rate's error bound), the chord that confirms its stop with one more
-correction (-DHPGEN_CHORD_RATE_STOP=0, the stop before the rate bound), J at every iterate
-(-DHPGEN_SPARSE_CHORD=0) and simplified Newton (J kept across steps,
-NewtonOptions(simplified=True)).
+truncated, C backend, sparse J) grows with N, for Newton variants run interleaved in one
+process: ``chord``, the default (a chord iteration within the step: J once a step, again only
+on a poor rate; stops on its rate's error bound); ``confirm``, the chord that confirms its
+stop with one more correction (-DHPGEN_CHORD_RATE_STOP=0, the stop before the rate bound);
+``every``, J at every iterate (-DHPGEN_SPARSE_CHORD=0); ``simplified``, simplified Newton (J
+kept across steps, NewtonOptions(simplified=True)); ``simplified-k2`` / ``-k4`` with a kept J
+dropped after a step of more than 2 / 4 iterates (-DHPGEN_KEPT_J_ITERATES, default 3);
+``simplified-old`` without the refresh rules (-DHPGEN_SIMPLIFIED_REFRESH=0,
+docs/numerics.md sec. 8).
 
     PYTHONPATH=. python benchmarks/chain_step_scaling.py [--n 8 16 32 64] [--steps 2000]
         [--rounds 3] [--frames pin] [--h 1e-3 ...] [--scheme sv] [--variants chord simplified]
 
 ``--frames centre``: examples/capsule_chain.yaml (link frames at the centres); ``--h``: one
 table per step size; ``--scheme``: ``sv`` or a composition (suzuki4, yoshida4, ...), whose
-it/step and J/step count a composed step's substeps; ``--variants``: a subset of the four.
+it/step and J/step count a composed step's substeps; ``--variants``: which to run (default
+all; the first is the ratios' base).
 
 Every N starts from the chain's joint-space initial state (hpgen.bench.multibody.chain:
 joint velocities N(0, 1), seed fixed) with h = 1e-3 (``--h``); us/step is the best over ``rounds``
