@@ -167,12 +167,10 @@ def at_floor(dn: float, zn: float) -> bool:
     return dn <= KEEP_J_FLOOR * (1.0 + zn)
 
 
-#: hpgen_newton_sparse.c's HPGEN_SIMPLIFIED_REFRESH: a sparse module's simplified Newton stops
-#: a J evaluated in the step on the chord's rate bound, and drops a J kept from earlier steps
-#: after a step that took more than KEPT_J_ITERATES iterates with it alone
-SIMPLIFIED_REFRESH = True
-#: hpgen_newton_sparse.c's HPGEN_KEPT_J_ITERATES
-KEPT_J_ITERATES = 3
+#: hpgen_newton_sparse.c's HPGEN_SIMPLIFIED_REFRESH and HPGEN_KEPT_J_ITERATES: a sparse module's
+#: simplified Newton stops a J evaluated in the step on the chord's rate bound, and drops a J
+#: kept from earlier steps after a step that took more than KEPT_J_ITERATES iterates with it
+SIMPLIFIED_REFRESH, KEPT_J_ITERATES = True, 3
 
 
 def solve(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMemory):
