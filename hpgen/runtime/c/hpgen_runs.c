@@ -79,6 +79,81 @@ static inline void hpgen_predict(const double* G, const double* d, int es, int o
     }
 }
 
+/* The guard's test on a converged step (docs/numerics.md sec. 8): the jump of its offset
+   z - G from the newest one d_0, |(z - G) - d_0|, over the offsets' last change |d_0 - d_1|
+   plus HPGEN_GUARD_FLOOR (1 + |z|) (inf-norms; entry i of offset j at d[j os + i es], of z
+   and G at [i es], as in hpgen_predict). Along a trajectory the offsets change smoothly
+   and the ratio stays O(1); a root of the step equations other than the trajectory's
+   jumps by O(|z|). */
+static double hpgen_guard_ratio(const double* z, const double* G, const double* d, int es,
+                                int os) {
+    double jump = 0.0, change = 0.0, zn = 0.0;
+    int i;
+    for (i = 0; i < HPGEN_NZ; ++i) {
+        const double a = fabs((z[i * es] - G[i * es]) - d[i * es]);
+        const double b = fabs(d[i * es] - d[os + i * es]);
+        const double c = fabs(z[i * es]);
+        if (a > jump) jump = a;
+        if (b > change) change = b;
+        if (c > zn) zn = c;
+    }
+    return jump / (change + HPGEN_GUARD_FLOOR * (1.0 + zn));
+}
+
+#if HPGEN_GUARD_LOG
+/* a measurement build (-DHPGEN_GUARD_LOG=1; benchmarks/guard_ratio.py): the largest guard
+   ratio of the runs' steps in this process since the last call, and the steps the guard
+   solved again; both start again at 0 */
+static double hpgen_guard_log_max;
+static long long hpgen_guard_log_n;
+HPGEN_EXPORT double hpgen_guard_log(long long* n) {
+    const double q = hpgen_guard_log_max;
+    *n = hpgen_guard_log_n;
+    hpgen_guard_log_max = 0.0;
+    hpgen_guard_log_n = 0;
+    return q;
+}
+#endif
+
+/* |(z - G) - d_0|, inf-norm (hpgen_guard_ratio's jump) */
+static double hpgen_guard_jump(const double* z, const double* G, const double* d0) {
+    double jump = 0.0;
+    int i;
+    for (i = 0; i < HPGEN_NZ; ++i) {
+        const double a = fabs((z[i] - G[i]) - d0[i]);
+        if (a > jump) jump = a;
+    }
+    return jump;
+}
+
+/* A step of run r whose root zs (with g1, p1, *it iterations, residual *res) failed the guard
+   (hpgen_guard_ratio > HPGEN_GUARD_RATIO): solved again from G, the start a run without
+   history takes, by full Newton with its own J (the run's kept J^{-1} untouched). The
+   second root replaces the first when its jump from the offsets is less than half the
+   first's (two solutions of one root never swap); then the run's kept J^{-1}, evaluated
+   near the first root, is dropped. Both solves count in st (and st->guarded). */
+static void hpgen_guard_resolve(hpgen_run* r, const double* hv, const hpgen_options* full,
+                                const double* G, double* zs, double* g1, double* p1,
+                                long long* it, double* res, hpgen_status* st, int with_g) {
+    double zb[HPGEN_NZ], gb[HPGEN_GNZ], pb[HPGEN_D], lu[1], rb;
+    long long itb = 0, valid = 0;
+    int piv[1], code;
+    memcpy(zb, G, sizeof zb);
+    code = hpgen_step_core_packed(r->g, r->p, hv, zb, full, lu, piv, &valid, gb, pb, &itb,
+                                  &st->jacobians, &rb, 1, with_g);
+    st->total_iterations += itb;
+    st->guarded += 1;
+    *it += itb;
+    if (code != HPGEN_OK
+        || !(2.0 * hpgen_guard_jump(zb, G, r->dz[0]) < hpgen_guard_jump(zs, G, r->dz[0])))
+        return;
+    memcpy(zs, zb, sizeof zb);
+    if (with_g) memcpy(g1, gb, sizeof gb);
+    memcpy(p1, pb, sizeof pb);
+    *res = rb;
+    r->lu_valid = 0;
+}
+
 #if HPGEN_EXPLICIT
 /* One explicit step of run r (hv the step's vector): z = p_k (the step's unknown, which the
    sections' chart curve reads), (g_{k+1}, p_{k+1}) = update(z, g_k, p_k, hv) (with_g = 0:
@@ -113,7 +188,9 @@ static int hpgen_explicit_step(hpgen_run* r, const double* hv, hpgen_status* st,
    through the last m = min(have_prev, HPGEN_PH) offsets extrapolated one step
    (hpgen_predict: quintic once six exist). The offsets from G_k, not z itself, are
    extrapolated: they are small and smooth where z is not (docs/performance.md, "Newton's
-   start and stop"). */
+   start and stop"). Guard: a step predicted from two or more offsets whose root jumps away
+   from them (hpgen_guard_ratio > HPGEN_GUARD_RATIO) is solved again from G
+   (hpgen_guard_resolve). */
 static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
                           const hpgen_options* full, hpgen_status* st, int with_g) {
     double g1[HPGEN_GNZ], p1[HPGEN_D], zs[HPGEN_NZ], z0[HPGEN_NZ], G[HPGEN_NZ], res;
@@ -169,6 +246,18 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     st->iterations = it;
     st->residual = res;
     if (code != HPGEN_OK) { st->code = code; st->step = r->k; return code; }
+    if (predicted && r->have_prev >= 2) {
+        const double q = hpgen_guard_ratio(zs, G, r->dz[0], 1, HPGEN_NZ);
+#if HPGEN_GUARD_LOG
+        if (q > hpgen_guard_log_max) hpgen_guard_log_max = q;
+        hpgen_guard_log_n += q > HPGEN_GUARD_RATIO;
+#endif
+        if (q > HPGEN_GUARD_RATIO) {
+            hpgen_guard_resolve(r, hv, full, G, zs, g1, p1, &it, &res, st, with_g);
+            st->iterations = it;
+            st->residual = res;
+        }
+    }
     memmove(r->dz[1], r->dz[0], (HPGEN_PH - 1) * sizeof r->dz[0]);
     for (i = 0; i < HPGEN_NZ; ++i) r->dz[0][i] = zs[i] - G[i];
     if (r->have_prev < HPGEN_PH) r->have_prev += 1;
