@@ -248,10 +248,9 @@ PREDICTOR_COEFFICIENTS = tuple(tuple(float((-1) ** i * math.comb(m, i + 1)) for 
 
 #: the guard on an accepted step (hpgen_runs.c, hpgen.runtime.loop): a step predicted from two
 #: or more offsets d_j = z_j - G_j whose root z has |(z - G) - d_0| > GUARD_RATIO
-#: (|d_0 - d_1| + GUARD_FLOOR (1 + |z|)) (inf-norms) is solved again from G. On the capsule
-#: chain (N = 10, 32; SV, suzuki4, gauss2, kahan-li6 at h up to 1e-2) the ratio stays
-#: below 3.7; the wrong root kahan-li6 took at t = 97.58 (h = 1e-2) has 175
-#: (benchmarks/guard_ratio.py). GUARD_FLOOR is STALL_MAX: the largest noise a solution keeps
+#: (|d_0 - d_1| + GUARD_FLOOR (1 + |z|)) (inf-norms) is solved again from G; the threshold
+#: sits well between the ratios of normal runs and of a foreign root (docs/numerics.md sec. 8,
+#: benchmarks/guard_ratio.py). GUARD_FLOOR is STALL_MAX: the largest noise a solution keeps
 GUARD_RATIO = 20.0
 GUARD_FLOOR = STALL_MAX
 
