@@ -246,12 +246,13 @@ PREDICTOR_HISTORY = 6
 PREDICTOR_COEFFICIENTS = tuple(tuple(float((-1) ** i * math.comb(m, i + 1)) for i in range(m))
                                for m in range(1, PREDICTOR_HISTORY + 1))
 
-#: the guard on an accepted step (hpgen_runs.c, hpgen.runtime.loop): a step predicted from two
-#: or more offsets d_j = z_j - G_j whose root z has |(z - G) - d_0| > GUARD_RATIO
-#: (|d_0 - d_1| + GUARD_FLOOR (1 + |z|)) (inf-norms) is solved again from G; the threshold
-#: sits well between the ratios of normal runs and of a foreign root (docs/numerics.md sec. 8,
-#: benchmarks/guard_ratio.py). GUARD_FLOOR is STALL_MAX: the largest noise a solution keeps
-GUARD_RATIO = 20.0
+#: the guard on an accepted step (hpgen_runs.c, hpgen.runtime.guard): a step predicted from
+#: three or more offsets d_j = z_j - G_j whose root z has |(z - G) - d_0| > GUARD_RATIO
+#: (max(|d_0 - d_1|, |d_0 - 2 d_1 + d_2|) + GUARD_FLOOR (1 + |z|)) (inf-norms) is solved
+#: again from G; the threshold sits well between the ratios of normal runs and of a foreign
+#: root (docs/numerics.md sec. 8, benchmarks/guard_ratio.py). GUARD_FLOOR is STALL_MAX: the
+#: largest noise a solution keeps
+GUARD_RATIO = 15.0
 GUARD_FLOOR = STALL_MAX
 
 #: the contract's values the C runtime defines (hpgen/runtime/c/hpgen_runtime.h: macro ->

@@ -11,18 +11,20 @@ from .newton import Kernels, NewtonMemory, NewtonOptions, step_lists
 
 
 def guard_ratio(z, G, dz) -> float:
-    """|(z - G) - dz_0| / (|dz_0 - dz_1| + GUARD_FLOOR (1 + |z|)), inf-norms, like
-    ``hpgen_guard_ratio`` in C (the same operations): the jump of a root's offset from the
-    newest offset over the offsets' last change."""
+    """|(z - G) - dz_0| / (max(|dz_0 - dz_1|, |(dz_0 - dz_1) - (dz_1 - dz_2)|) + GUARD_FLOOR
+    (1 + |z|)), inf-norms, like ``hpgen_guard_ratio`` in C (the same operations): the jump of
+    a root's offset from the newest offset over the offsets' last change and its change."""
     jump = change = zn = 0.0
-    for a, b, x, y in zip(z, G, dz[0], dz[1]):
-        u, v, w = abs((a - b) - x), abs(x - y), abs(a)
+    for a, b, x, y, w in zip(z, G, dz[0], dz[1], dz[2]):
+        u, v, c, m = abs((a - b) - x), abs(x - y), abs((x - y) - (y - w)), abs(a)
         if u > jump:
             jump = u
         if v > change:
             change = v
-        if w > zn:
-            zn = w
+        if c > change:
+            change = c
+        if m > zn:
+            zn = m
     return jump / (change + GUARD_FLOOR * (1.0 + zn))
 
 

@@ -170,7 +170,7 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
 
     Predictor (hpgen_runs.c, hpgen_run_step): z_j = G_j + dz_j with G_j = predictor_base at
     step j's start; the start is G_k plus the polynomial through the last m offsets dz
-    extrapolated one step (predict). Guard: a step predicted from two or more offsets whose
+    extrapolated one step (predict). Guard: a step predicted from three or more offsets whose
     root's offset jumps away from them (guard_ratio > GUARD_RATIO) is solved again from G
     (hpgen.runtime.guard)."""
     if run.inputs is not None:           # an open module: hv = [h, t_k, u_k, params]
@@ -202,7 +202,7 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
                                                    run.memory, False, with_g)
         st["total_iterations"] += it
         st["jacobians"] += jacs
-    if code == OK and opts.predictor and run.have_prev >= 2 and \
+    if code == OK and opts.predictor and run.have_prev >= 3 and \
             guard_ratio(zs, G, dz) > GUARD_RATIO:
         g1, p1, zs, it, r = guard_resolve(kern, run, hv, full, G, (g1, p1, zs, it, r), st,
                                           with_g)

@@ -80,22 +80,24 @@ static inline void hpgen_predict(const double* G, const double* d, int es, int o
 }
 
 /* The guard's test on a converged step (docs/numerics.md sec. 8): the jump of its offset
-   z - G from the newest one d_0, |(z - G) - d_0|, over the offsets' last change |d_0 - d_1|
-   plus HPGEN_GUARD_FLOOR (1 + |z|) (inf-norms; entry i of offset j at d[j os + i es], of z
-   and G at [i es], as in hpgen_predict). Along a trajectory the offsets change smoothly
-   and the ratio stays O(1); a root of the step equations other than the trajectory's
-   jumps by O(|z|). */
+   z - G from the newest one d_0, |(z - G) - d_0|, over the offsets' own variation, the larger
+   of their last change |d_0 - d_1| and its change |d_0 - 2 d_1 + d_2| (which carries the scale
+   where an offset turns), plus HPGEN_GUARD_FLOOR (1 + |z|) (inf-norms; entry i of offset j
+   at d[j os + i es], of z and G at [i es], as in hpgen_predict; three offsets). Along a
+   trajectory the offsets change smoothly and the ratio stays O(1); a root of the step
+   equations other than the trajectory's jumps by O(|z|). */
 static double hpgen_guard_ratio(const double* z, const double* G, const double* d, int es,
                                 int os) {
     double jump = 0.0, change = 0.0, zn = 0.0;
     int i;
     for (i = 0; i < HPGEN_NZ; ++i) {
-        const double a = fabs((z[i * es] - G[i * es]) - d[i * es]);
-        const double b = fabs(d[i * es] - d[os + i * es]);
-        const double c = fabs(z[i * es]);
+        const double d0 = d[i * es], d1 = d[os + i * es], d2 = d[2 * os + i * es];
+        const double a = fabs((z[i * es] - G[i * es]) - d0);
+        const double b = fabs(d0 - d1), c = fabs((d0 - d1) - (d1 - d2)), x = fabs(z[i * es]);
         if (a > jump) jump = a;
         if (b > change) change = b;
-        if (c > zn) zn = c;
+        if (c > change) change = c;
+        if (x > zn) zn = x;
     }
     return jump / (change + HPGEN_GUARD_FLOOR * (1.0 + zn));
 }
@@ -188,7 +190,7 @@ static int hpgen_explicit_step(hpgen_run* r, const double* hv, hpgen_status* st,
    through the last m = min(have_prev, HPGEN_PH) offsets extrapolated one step
    (hpgen_predict: quintic once six exist). The offsets from G_k, not z itself, are
    extrapolated: they are small and smooth where z is not (docs/performance.md, "Newton's
-   start and stop"). Guard: a step predicted from two or more offsets whose root jumps away
+   start and stop"). Guard: a step predicted from three or more offsets whose root jumps away
    from them (hpgen_guard_ratio > HPGEN_GUARD_RATIO) is solved again from G
    (hpgen_guard_resolve). */
 static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
@@ -246,7 +248,7 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     st->iterations = it;
     st->residual = res;
     if (code != HPGEN_OK) { st->code = code; st->step = r->k; return code; }
-    if (predicted && r->have_prev >= 2) {
+    if (predicted && r->have_prev >= 3) {
         const double q = hpgen_guard_ratio(zs, G, r->dz[0], 1, HPGEN_NZ);
 #if HPGEN_GUARD_LOG
         if (q > hpgen_guard_log_max) hpgen_guard_log_max = q;

@@ -137,10 +137,10 @@
 /* ... its error estimate takes the contraction rate as at least this (hpgen.abi.THETA_FLOOR) */
 #define HPGEN_THETA_FLOOR 0.05
 /* the guard on an accepted step (hpgen_guard_ratio in hpgen_runs.c): a root whose offset
-   jumps by more than this times the offsets' last change is solved again (a build may set
-   it, e.g. -DHPGEN_GUARD_RATIO=1e300 turns the guard off) */
+   jumps by more than this times the offsets' variation is solved again (a build may set it,
+   e.g. -DHPGEN_GUARD_RATIO=1e300 turns the guard off) */
 #ifndef HPGEN_GUARD_RATIO
-#define HPGEN_GUARD_RATIO 20.0
+#define HPGEN_GUARD_RATIO 15.0
 #endif
 /* ... the floor of that change, times (1 + |z|): round-off never reaches the ratio */
 #define HPGEN_GUARD_FLOOR 1e-09
