@@ -10,8 +10,9 @@ that the quintic extrapolation lands at G + 0.8 while the newest offset stays th
 run with the guard continues on the trajectory's root (that of the same run without the
 rewrite, to Newton's tolerance), the run without it (C built with
 -DHPGEN_GUARD_RATIO=1e300; Python with loop.GUARD_RATIO = inf) takes the other. The same in
-a composed run (suzuki4), whose substeps keep their own offsets. A run without a rewritten
-history is not re-solved and is bitwise that of the build without the guard.
+a composed run (suzuki4), whose substeps keep their own offsets, and in the lanes (a lane
+over the ratio is handed to the scalar step). A run without a rewritten history is not
+re-solved and is bitwise that of the build without the guard.
 """
 from __future__ import annotations
 
@@ -151,3 +152,33 @@ def test_normal_run_not_resolved_and_bitwise_unchanged():
         runs[key] = p_rec
     assert np.array_equal(runs["c"], runs["off"])
     assert np.array_equal(runs["c"], runs["py"])
+
+
+def test_lanes_hand_a_guarded_lane_to_the_scalar_step():
+    """hpgen_advance_batch_lanes: L runs at the same step, lane 1's history rewritten; the
+    lane over the ratio is stepped by the scalar code (its guard), the others in lanes: each
+    run's state after the step is bitwise that of hpgen_advance on the same run."""
+    import ctypes
+
+    from hpgen.runtime.cstructs import _Options, _Status
+    integ = _integ("c")
+    b, run, opts = _started(integ)
+    eng = integ.engine
+    L, size = b.lanes, b.run_size
+    snap = b.snapshot(run)
+    bad = _misleading(snap, lambda s: _c_rows(s, eng.nz, eng.n, eng.d))["run"]
+    raws = [bad if lane == 1 else snap["run"] for lane in range(L)]
+    buf = np.concatenate(raws).astype(np.uint8)
+    g_rec, p_rec = np.zeros((L, eng.n * eng.n)), np.zeros((L, eng.d))
+    sts = (_Status * L)()
+    o = _Options.of(opts)
+    failed = b.lib.hpgen_advance_batch_lanes(buf.ctypes.data, L, H, 1, 1, ctypes.byref(o), 1,
+                                             g_rec.ctypes.data, p_rec.ctypes.data, sts)
+    assert failed == 0
+    assert [sts[lane].guarded for lane in range(L)] == [int(lane == 1) for lane in range(L)]
+    for lane, raw in enumerate(raws):
+        one = b.restore({"run": raw})
+        _, _, p1, st = b.advance(one, H, 1, 1, opts)
+        assert np.array_equal(p_rec[lane], p1[0]) and st["guarded"] == int(lane == 1)
+        lane_state = b.restore({"run": buf[lane * size:(lane + 1) * size]})
+        assert all(np.array_equal(x, y) for x, y in zip(b.state(lane_state), b.state(one)))
