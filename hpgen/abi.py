@@ -33,7 +33,8 @@ from dataclasses import dataclass
 #:  hpgen_run_set_compose)
 #: (9: hpgen_linearize takes the run and steps it as simulate does, one signature for closed
 #:  and open modules; the first step may take simplified Newton)
-ABI_VERSION = 9
+#: (10: hpgen_status counts the steps the guard solved again, "guarded")
+ABI_VERSION = 10
 #: version of meta.json's layout; the loader refuses any other (recompile the module)
 #: (3: "group", the group's name, e.g. "SO3" or "[SO3, R3]")
 #: (4: "jacobian", the Newton matrix's storage: dense, or sparse with J's CCS pattern)
@@ -175,7 +176,8 @@ MESSAGES = {code: message for code, _, message in STATUS}
 
 #: fields of the C ``hpgen_status`` (ctypes type letter: "q" long long, "d" double), in order
 STATUS_FIELDS = (("code", "q"), ("step", "q"), ("iterations", "q"),
-                 ("total_iterations", "q"), ("residual", "d"), ("jacobians", "q"))
+                 ("total_iterations", "q"), ("residual", "d"), ("jacobians", "q"),
+                 ("guarded", "q"))
 #: fields of the C ``hpgen_options``, in order (hpgen.runtime.newton.NewtonOptions)
 OPTIONS_FIELDS = (("tol", "d"), ("maxit", "q"), ("simplified", "q"), ("predictor", "q"))
 
@@ -244,6 +246,15 @@ PREDICTOR_HISTORY = 6
 PREDICTOR_COEFFICIENTS = tuple(tuple(float((-1) ** i * math.comb(m, i + 1)) for i in range(m))
                                for m in range(1, PREDICTOR_HISTORY + 1))
 
+#: the guard on an accepted step (hpgen_runs.c, hpgen.runtime.guard): a step predicted from
+#: three or more offsets d_j = z_j - G_j whose root z has |(z - G) - d_0| > GUARD_RATIO
+#: (max(|d_0 - d_1|, |d_0 - 2 d_1 + d_2|) + GUARD_FLOOR (1 + |z|)) (inf-norms) is solved
+#: again from G; the threshold sits well between the ratios of normal runs and of a foreign
+#: root (docs/numerics.md sec. 8, benchmarks/guard_ratio.py). GUARD_FLOOR is STALL_MAX: the
+#: largest noise a solution keeps
+GUARD_RATIO = 15.0
+GUARD_FLOOR = STALL_MAX
+
 #: the contract's values the C runtime defines (hpgen/runtime/c/hpgen_runtime.h: macro ->
 #: value, written there as c_literal(value); tests/unit/test_abi.py reads them back)
 C_CONSTANTS = {"HPGEN_ABI": ABI_VERSION, "HPGEN_ROUNDOFF_FLOOR": ROUNDOFF_FLOOR,
@@ -251,7 +262,8 @@ C_CONSTANTS = {"HPGEN_ABI": ABI_VERSION, "HPGEN_ROUNDOFF_FLOOR": ROUNDOFF_FLOOR,
                "HPGEN_THETA_MAX": THETA_MAX, "HPGEN_SIMPLIFIED_TOL": SIMPLIFIED_TOL,
                "HPGEN_THETA_FLOOR": THETA_FLOOR, "HPGEN_VELOCITY_TOL": VELOCITY_TOL,
                "HPGEN_VELOCITY_MAXIT": VELOCITY_MAXIT, "HPGEN_PH": PREDICTOR_HISTORY,
-               "HPGEN_STATIC_PIVOT_TOL": STATIC_PIVOT_TOL}
+               "HPGEN_STATIC_PIVOT_TOL": STATIC_PIVOT_TOL, "HPGEN_GUARD_RATIO": GUARD_RATIO,
+               "HPGEN_GUARD_FLOOR": GUARD_FLOOR}
 
 
 def c_literal(value) -> str:

@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..abi import (NONFINITE, OK, PREDICTOR_COEFFICIENTS, PREDICTOR_HISTORY, RECORD,
-                   ROUNDOFF_FLOOR, STATUS_FIELDS, VELOCITY_MAXIT, VELOCITY_TOL)
+from ..abi import (GUARD_RATIO, NONFINITE, OK, PREDICTOR_COEFFICIENTS, PREDICTOR_HISTORY,
+                   RECORD, ROUNDOFF_FLOOR, STATUS_FIELDS, VELOCITY_MAXIT, VELOCITY_TOL)
+from .guard import guard_ratio, guard_resolve
 from .newton import (_INF, _NAN, Kernels, NewtonMemory, NewtonOptions, _floats, _isfinite,
                      all_finite, norm_inf, step_lists)
 from .newton_sparse import stalled
@@ -169,7 +170,9 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
 
     Predictor (hpgen_runs.c, hpgen_run_step): z_j = G_j + dz_j with G_j = predictor_base at
     step j's start; the start is G_k plus the polynomial through the last m offsets dz
-    extrapolated one step (predict)."""
+    extrapolated one step (predict). Guard: a step predicted from three or more offsets whose
+    root's offset jumps away from them (guard_ratio > GUARD_RATIO) is solved again from G
+    (hpgen.runtime.guard)."""
     if run.inputs is not None:           # an open module: hv = [h, t_k, u_k, params]
         hv = run.inputs.hv(hv[0], run.k)
     if kern.explicit:
@@ -199,6 +202,10 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
                                                    run.memory, False, with_g)
         st["total_iterations"] += it
         st["jacobians"] += jacs
+    if code == OK and opts.predictor and run.have_prev >= 3 and \
+            guard_ratio(zs, G, dz) > GUARD_RATIO:
+        g1, p1, zs, it, r = guard_resolve(kern, run, hv, full, G, (g1, p1, zs, it, r), st,
+                                          with_g)
     st["iterations"], st["residual"] = it, r
     if code != OK:
         st.update(code=code, step=run.k)

@@ -58,7 +58,7 @@ def test_runtime_newton_constants_read_back_bitwise():
     want = [list(c) + [0.0] * (H - len(c)) for c in abi.PREDICTOR_COEFFICIENTS]
     assert [[_bits(x) for x in r] for r in rows] == [[_bits(x) for x in r] for r in want]
     # the record velocity's Newton takes its tolerance and cap from those macros
-    runs = (RUNTIME / "hpgen_runs.c").read_text()
+    runs = (RUNTIME / "hpgen_advance.c").read_text()
     vel = runs[runs.index("static int hpgen_velocity("):]
     vel = vel[:vel.index("\n}\n")]
     assert "it <= HPGEN_VELOCITY_MAXIT; ++it" in vel

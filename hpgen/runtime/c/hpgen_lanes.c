@@ -170,6 +170,13 @@ static void hpgen_advance_lanes(hpgen_run* runs, double h, long long steps, long
                     sjac[l] += jn[l];
                 }
                 hpgen_lanes_finite(g1, p1, ok);
+                /* a root the guard questions: the scalar step's (hpgen_guard_resolve) */
+                for (l = 0; l < HPGEN_L; ++l)
+                    if (o->predictor && (cs == 0 ? s.hp[l] : s.ch[l]) >= 3
+                        && hpgen_guard_ratio(zs + l, G + l, cs == 0 ? &s.dz[0][l]
+                                             : &s.cdz[i][0][l], HPGEN_L, HPGEN_NZ * HPGEN_L)
+                               > HPGEN_GUARD_RATIO)
+                        ok[l] = 0;
                 if (cs > 0)         /* (the plain step's offsets: zs - G at the commit) */
                     for (q = 0; q < HPGEN_NZ * HPGEN_L; ++q) nd[i][q] = zs[q] - G[q];
                 if (i + 1 < ns) {

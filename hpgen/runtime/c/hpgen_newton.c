@@ -261,7 +261,7 @@ static int hpgen_step_core_packed(const double* g, const double* p, const double
 
 static void hpgen_status_init(hpgen_status* st) {
     st->code = HPGEN_OK; st->step = 0; st->iterations = 0; st->total_iterations = 0;
-    st->residual = 0.0; st->jacobians = 0;
+    st->residual = 0.0; st->jacobians = 0; st->guarded = 0;
 }
 
 static int hpgen_options_ok(const hpgen_options* o) {

@@ -1,8 +1,7 @@
-/* hpgen's C runtime, part 3: a run in progress (hpgen_run) and the runs over it: the
-   predictor, one run step, hpgen_advance (states), hpgen_advance_sections (Poincare
-   sections), hpgen_advance_record (record rows) and hpgen_observe. Mirrored in Python by
-   hpgen.runtime.loop (the same order of operations). Included by hpgen_runtime.c after
-   hpgen_newton.c. */
+/* hpgen's C runtime, part 3: a run in progress (hpgen_run) and its step: the predictor, one
+   run step (hpgen_run_step) and the composed step (hpgen_run_cstep). The runs over it are in
+   hpgen_advance.c. Mirrored in Python by hpgen.runtime.loop (the same order of operations).
+   Included by hpgen_runtime.c after hpgen_newton.c. */
 
 /* the step vector the kernels of a run's last step took: the run's own (open), else {h} */
 #if HPGEN_OPEN
@@ -80,6 +79,83 @@ static inline void hpgen_predict(const double* G, const double* d, int es, int o
     }
 }
 
+/* The guard's test on a converged step (docs/numerics.md sec. 8): the jump of its offset
+   z - G from the newest one d_0, |(z - G) - d_0|, over the offsets' own variation, the larger
+   of their last change |d_0 - d_1| and its change |d_0 - 2 d_1 + d_2| (which carries the scale
+   where an offset turns), plus HPGEN_GUARD_FLOOR (1 + |z|) (inf-norms; entry i of offset j
+   at d[j os + i es], of z and G at [i es], as in hpgen_predict; three offsets). Along a
+   trajectory the offsets change smoothly and the ratio stays O(1); a root of the step
+   equations other than the trajectory's jumps by O(|z|). */
+static double hpgen_guard_ratio(const double* z, const double* G, const double* d, int es,
+                                int os) {
+    double jump = 0.0, change = 0.0, zn = 0.0;
+    int i;
+    for (i = 0; i < HPGEN_NZ; ++i) {
+        const double d0 = d[i * es], d1 = d[os + i * es], d2 = d[2 * os + i * es];
+        const double a = fabs((z[i * es] - G[i * es]) - d0);
+        const double b = fabs(d0 - d1), c = fabs((d0 - d1) - (d1 - d2)), x = fabs(z[i * es]);
+        if (a > jump) jump = a;
+        if (b > change) change = b;
+        if (c > change) change = c;
+        if (x > zn) zn = x;
+    }
+    return jump / (change + HPGEN_GUARD_FLOOR * (1.0 + zn));
+}
+
+#if HPGEN_GUARD_LOG
+/* a measurement build (-DHPGEN_GUARD_LOG=1; benchmarks/guard_ratio.py): the largest guard
+   ratio of the runs' steps in this process since the last call, and the steps the guard
+   solved again; both start again at 0 */
+static double hpgen_guard_log_max;
+static long long hpgen_guard_log_n;
+HPGEN_EXPORT double hpgen_guard_log(long long* n) {
+    const double q = hpgen_guard_log_max;
+    *n = hpgen_guard_log_n;
+    hpgen_guard_log_max = 0.0;
+    hpgen_guard_log_n = 0;
+    return q;
+}
+#endif
+
+/* |(z - G) - d_0|, inf-norm (hpgen_guard_ratio's jump) */
+static double hpgen_guard_jump(const double* z, const double* G, const double* d0) {
+    double jump = 0.0;
+    int i;
+    for (i = 0; i < HPGEN_NZ; ++i) {
+        const double a = fabs((z[i] - G[i]) - d0[i]);
+        if (a > jump) jump = a;
+    }
+    return jump;
+}
+
+/* A step of run r whose root zs (with g1, p1, *it iterations, residual *res) failed the guard
+   (hpgen_guard_ratio > HPGEN_GUARD_RATIO): solved again from G, the start a run without
+   history takes, by full Newton with its own J (the run's kept J^{-1} untouched). The
+   second root replaces the first when its jump from the offsets is less than half the
+   first's (two solutions of one root never swap); then the run's kept J^{-1}, evaluated
+   near the first root, is dropped. Both solves count in st (and st->guarded). */
+static void hpgen_guard_resolve(hpgen_run* r, const double* hv, const hpgen_options* full,
+                                const double* G, double* zs, double* g1, double* p1,
+                                long long* it, double* res, hpgen_status* st, int with_g) {
+    double zb[HPGEN_NZ], gb[HPGEN_GNZ], pb[HPGEN_D], lu[1], rb;
+    long long itb = 0, valid = 0;
+    int piv[1], code;
+    memcpy(zb, G, sizeof zb);
+    code = hpgen_step_core_packed(r->g, r->p, hv, zb, full, lu, piv, &valid, gb, pb, &itb,
+                                  &st->jacobians, &rb, 1, with_g);
+    st->total_iterations += itb;
+    st->guarded += 1;
+    *it += itb;
+    if (code != HPGEN_OK
+        || !(2.0 * hpgen_guard_jump(zb, G, r->dz[0]) < hpgen_guard_jump(zs, G, r->dz[0])))
+        return;
+    memcpy(zs, zb, sizeof zb);
+    if (with_g) memcpy(g1, gb, sizeof gb);
+    memcpy(p1, pb, sizeof pb);
+    *res = rb;
+    r->lu_valid = 0;
+}
+
 #if HPGEN_EXPLICIT
 /* One explicit step of run r (hv the step's vector): z = p_k (the step's unknown, which the
    sections' chart curve reads), (g_{k+1}, p_{k+1}) = update(z, g_k, p_k, hv) (with_g = 0:
@@ -114,7 +190,9 @@ static int hpgen_explicit_step(hpgen_run* r, const double* hv, hpgen_status* st,
    through the last m = min(have_prev, HPGEN_PH) offsets extrapolated one step
    (hpgen_predict: quintic once six exist). The offsets from G_k, not z itself, are
    extrapolated: they are small and smooth where z is not (docs/performance.md, "Newton's
-   start and stop"). */
+   start and stop"). Guard: a step predicted from three or more offsets whose root jumps away
+   from them (hpgen_guard_ratio > HPGEN_GUARD_RATIO) is solved again from G
+   (hpgen_guard_resolve). */
 static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o,
                           const hpgen_options* full, hpgen_status* st, int with_g) {
     double g1[HPGEN_GNZ], p1[HPGEN_D], zs[HPGEN_NZ], z0[HPGEN_NZ], G[HPGEN_NZ], res;
@@ -170,6 +248,18 @@ static int hpgen_run_step(hpgen_run* r, const double* hv, const hpgen_options* o
     st->iterations = it;
     st->residual = res;
     if (code != HPGEN_OK) { st->code = code; st->step = r->k; return code; }
+    if (predicted && r->have_prev >= 3) {
+        const double q = hpgen_guard_ratio(zs, G, r->dz[0], 1, HPGEN_NZ);
+#if HPGEN_GUARD_LOG
+        if (q > hpgen_guard_log_max) hpgen_guard_log_max = q;
+        hpgen_guard_log_n += q > HPGEN_GUARD_RATIO;
+#endif
+        if (q > HPGEN_GUARD_RATIO) {
+            hpgen_guard_resolve(r, hv, full, G, zs, g1, p1, &it, &res, st, with_g);
+            st->iterations = it;
+            st->residual = res;
+        }
+    }
     memmove(r->dz[1], r->dz[0], (HPGEN_PH - 1) * sizeof r->dz[0]);
     for (i = 0; i < HPGEN_NZ; ++i) r->dz[0][i] = zs[i] - G[i];
     if (r->have_prev < HPGEN_PH) r->have_prev += 1;
@@ -288,239 +378,3 @@ static int hpgen_run_cstep(hpgen_run* r, const double* hv, const hpgen_options* 
                            const hpgen_options* full, hpgen_status* st, int with_g) {
     return hpgen_run_cstep_then(r, hv, o, full, st, with_g, NULL, NULL);
 }
-
-/* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
-   solution, or from the predictor of hpgen_run_step). The state after global step k is
-   recorded when k % every == 0 into g_rec[j * NN], p_rec[j * D], j = 0, 1, ... (the caller
-   sizes them for the records falling in this call). Stops at the first failed step (the run
-   keeps the last good state). Returns the steps done in this call. */
-HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, long long every,
-                                     const hpgen_options* o, double* g_rec, double* p_rec,
-                                     hpgen_status* st) {
-    double hv[1];
-    long long n, rec = 0;
-    hpgen_options full;
-    hpgen_status_init(st);
-    if (steps < 0 || every < 1 || !hpgen_options_ok(o) || r->g_stale) {
-        st->code = HPGEN_INVALID; return 0;
-    }
-    hv[0] = h;
-    full = *o;
-    full.simplified = 0;
-    for (n = 0; n < steps; ++n) {
-        if (hpgen_run_cstep(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
-        if (r->k % every == 0) {
-            memcpy(g_rec + rec * HPGEN_NN, r->g, sizeof r->g);
-            memcpy(p_rec + rec * HPGEN_D, r->p, sizeof r->p);
-            ++rec;
-        }
-    }
-    st->step = r->k;
-    return steps;
-}
-
-/* A composed run's group element at a section crossing theta h into step k from
-   (g0, p0): one plain step S(theta h) (full Newton from the predictor base G), whose g
-   carries the same O(h^2) accuracy as the crossing's linear p; the run is untouched.
-   Returns the status code. */
-static int hpgen_composed_section_point(const hpgen_run* r, const double* g0, const double* p0,
-                                        double th, long long k, double h,
-                                        const hpgen_options* full, double* g_out) {
-    double z[HPGEN_NZ], p1[HPGEN_D], lu[1], res;
-    long long it, jacs = 0, valid = 0;
-    int piv[1];
-#if HPGEN_OPEN
-    double hv[HPGEN_H];
-    memcpy(hv, r->hv, sizeof hv);
-    hv[1] = r->t0 + (double)k * h;
-#else
-    double hv[1];
-    (void)r; (void)k; (void)h;
-#endif
-    hv[0] = th;
-    hpgen_predictor_base(g0, p0, hv, z);
-    return hpgen_step_core(g0, p0, hv, z, full, lu, piv, &valid, g_out, p1, &it, &jacs, &res,
-                           1, 1);
-}
-
-/* Advance a run by up to `steps` steps of size h, recording the upward crossings of the
-   scene's Poincare section s(g, p) = 0 (kernel section): when s_k < 0 <= s_{k+1}, with
-   theta = s_k / (s_k - s_{k+1}) in (0, 1], record j holds
-     k_rec[j] = k,  t_rec[j] = (k + theta) h,
-     p_rec[j * D] = (1 - theta) p_k + theta p_{k+1}      (linear in the step: O(h^2)),
-     g_rec[j * NN] = g_k tau(theta h xi_{k+1})            (kernel chart_point: on the group;
-                                                           a composed run: S(theta h) of g_k).
-   s of the run's current state is kept in the run, so calls chain (a crossing between two
-   calls is found). Stops after `cap` records (the crossing step included), at a failed step,
-   or after `steps` steps; *n_rec: the records written. Returns the steps done in this call. */
-HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long steps,
-                                              const hpgen_options* o, long long cap,
-                                              double* t_rec, double* g_rec, double* p_rec,
-                                              long long* k_rec, long long* n_rec,
-                                              hpgen_status* st) {
-    double hv[1], g0[HPGEN_NN], p0[HPGEN_D], s1[1], th[1];
-    long long n;
-    int i, code;
-    hpgen_options full;
-    hpgen_status_init(st);
-    *n_rec = 0;
-    if (steps < 0 || cap < 1 || !hpgen_options_ok(o) || r->g_stale) {
-        st->code = HPGEN_INVALID; return 0;
-    }
-    hv[0] = h;
-    full = *o;
-    full.simplified = 0;
-    if (!r->s_valid) {
-        if (hpgen_k_section(r->g, r->p, s1)) { st->code = HPGEN_NONFINITE; return 0; }
-        r->s = s1[0];
-        r->s_valid = 1;
-    }
-    memcpy(g0, r->g, sizeof g0);
-    for (n = 0; n < steps && *n_rec < cap; ++n) {
-        const double s0 = r->s;
-        const long long k = r->k;
-        hpgen_g_copy(r->g, g0);
-        memcpy(p0, r->p, sizeof p0);
-        if (hpgen_run_cstep(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
-        if (hpgen_k_section(r->g, r->p, s1) || !isfinite(s1[0])) {
-            st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
-        }
-        r->s = s1[0];
-        if (s0 < 0.0 && s1[0] >= 0.0) {
-            const long long j = *n_rec;
-            const double theta = s0 / (s0 - s1[0]);
-            th[0] = theta;
-            k_rec[j] = k;
-            t_rec[j] = ((double)k + theta) * h;
-            for (i = 0; i < HPGEN_D; ++i)
-                p_rec[j * HPGEN_D + i] = (1.0 - theta) * p0[i] + theta * r->p[i];
-            if (r->cs > 0) {
-                code = hpgen_composed_section_point(r, g0, p0, theta * h, k, h, &full,
-                                                    g_rec + j * HPGEN_NN);
-                if (code != HPGEN_OK) { st->code = code; st->step = r->k; return n + 1; }
-            } else if (hpgen_k_chart_point(r->z, g0, HPGEN_RUN_HV(r, hv), th,
-                                           g_rec + j * HPGEN_NN)) {
-                st->code = HPGEN_NONFINITE; st->step = r->k; return n + 1;
-            }
-            *n_rec = j + 1;
-        }
-    }
-    st->step = r->k;
-    return n;
-}
-
-/* xi with legendre(g, xi) = p: Newton (kernel velocity_step) from xi = 0; one step when l is
-   quadratic in xi (then exact), else until |dxi| <= HPGEN_VELOCITY_TOL (1 + |xi|) or the
-   round-off floor (a sparse module: or the round-off stall), at most HPGEN_VELOCITY_MAXIT
-   iterations (the runtime's Integrator.velocity uses the same test). */
-#if HPGEN_RECORD_USES_XI
-static int hpgen_velocity(const double* g, const double* p, double* xi HPGEN_OPEN_HV_PARAM) {
-    double x1[HPGEN_D], dprev = HUGE_VAL;
-    int i, it;
-    for (i = 0; i < HPGEN_D; ++i) xi[i] = 0.0;
-    for (it = 1; it <= HPGEN_VELOCITY_MAXIT; ++it) {
-        double dn = 0.0, xn;
-        if (hpgen_k_velocity_step(g, p, xi, HPGEN_OPEN_HV(hv) x1)
-            || !hpgen_all_finite(x1, HPGEN_D))
-            return HPGEN_RECORD;
-        for (i = 0; i < HPGEN_D; ++i) {
-            const double dx = fabs(x1[i] - xi[i]);
-            if (dx > dn) dn = dx;
-            xi[i] = x1[i];
-        }
-        if (HPGEN_LEGENDRE_QUADRATIC) return HPGEN_OK;
-        xn = hpgen_norm_inf(xi, HPGEN_D);
-        if (dn <= HPGEN_VELOCITY_TOL * (1.0 + xn)) return HPGEN_OK;
-        if (it > 1 && dn >= dprev && dn <= HPGEN_ROUNDOFF_FLOOR * (1.0 + xn)) return HPGEN_OK;
-#if HPGEN_SPARSE
-        /* a family's Legendre map can be ill-conditioned (frames far from their bodies): the
-           refinement stops at its round-off noise (hpgen_stalled, each step's J fresh) */
-        if (hpgen_stalled(it, dn, dprev, xn, 1, 0)) return HPGEN_OK;
-#endif
-        dprev = dn;
-    }
-    return HPGEN_RECORD;
-}
-#endif
-
-/* The scene's record row at (g, p) (kernel record; xi by hpgen_velocity when the row uses
-   it): HPGEN_OK, or HPGEN_RECORD when the row is not finite or xi did not converge (then the
-   row is all NaN). */
-static int hpgen_record_row(const double* g, const double* p, double* row HPGEN_OPEN_HV_PARAM) {
-    double xi[HPGEN_D];
-#if HPGEN_RECORD_USES_XI
-    if (hpgen_velocity(g, p, xi HPGEN_OPEN_HV_LAST(hv)) != HPGEN_OK) {
-        int i;
-        for (i = 0; i < HPGEN_W; ++i) row[i] = NAN;
-        return HPGEN_RECORD;
-    }
-#else
-    memset(xi, 0, sizeof xi);
-#endif
-    if (hpgen_k_record(g, p, xi, HPGEN_OPEN_HV(hv) row) || !hpgen_all_finite(row, HPGEN_W))
-        return HPGEN_RECORD;
-    return HPGEN_OK;
-}
-
-/* The record row at (g, p) (the start of a run: record 0). Returns the status code. */
-/* (an open model's takes hv, the step vector at the record's time, [h, t, u, params]) */
-HPGEN_EXPORT int hpgen_record(const double* g, const double* p, double* row HPGEN_OPEN_HV_PARAM) {
-    return hpgen_record_row(g, p, row HPGEN_OPEN_HV_LAST(hv));
-}
-
-/* Advance a run like hpgen_advance, keeping only the scene's record row (W doubles) of the
-   state after global step k when k % every == 0, in rows[j * W], j = 0, 1, ... With
-   HPGEN_SKIP_G (neither the step nor the row use g) g_{k+1} is never formed: the run's g
-   stays g_0 and the run is marked g_stale (hpgen_advance and hpgen_advance_sections then
-   refuse it). The states (p_k, z) are bitwise those of hpgen_advance. A row that is not
-   finite stops the run after its step with code HPGEN_RECORD (the row is written, *n_rec
-   counts it). *n_rec: rows written. Returns the steps done in this call. */
-HPGEN_EXPORT long long hpgen_advance_record(hpgen_run* r, double h, long long steps,
-                                            long long every, const hpgen_options* o,
-                                            double* rows, long long* n_rec, hpgen_status* st) {
-    double hv[1];
-    long long n;
-    hpgen_options full;
-    hpgen_status_init(st);
-    *n_rec = 0;
-    if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
-    hv[0] = h;
-    full = *o;
-    full.simplified = 0;
-    if (HPGEN_SKIP_G) r->g_stale = 1;
-    for (n = 0; n < steps; ++n) {
-        if (hpgen_run_cstep(r, hv, o, &full, st, !HPGEN_SKIP_G) != HPGEN_OK) return n;
-        if (r->k % every == 0) {
-            double* row = rows + *n_rec * HPGEN_W;
-            *n_rec += 1;
-#if HPGEN_OPEN
-            r->hv[1] = r->t0 + (double)r->k * h;      /* the record's time */
-#endif
-            if (hpgen_record_row(r->g, r->p, row HPGEN_OPEN_HV_LAST(r->hv)) != HPGEN_OK) {
-                st->code = HPGEN_RECORD; st->step = r->k; return n + 1;
-            }
-        }
-    }
-    st->step = r->k;
-    return steps;
-}
-
-#if !HPGEN_OPEN
-/* Observables of K records (g_rec[k * NN], p_rec[k * D], as hpgen_advance writes them):
-   kernel observe per record -> xi_out[k * D], E_out[k], m_out[k * D], e_out[k]. Returns the
-   first record whose outputs are not finite, or K. */
-HPGEN_EXPORT long long hpgen_observe(long long K, const double* g_rec, const double* p_rec,
-                                     double* xi_out, double* E_out, double* m_out,
-                                     double* e_out) {
-    long long k;
-    for (k = 0; k < K; ++k) {
-        double* xi = xi_out + k * HPGEN_D;
-        double* m = m_out + k * HPGEN_D;
-        if (hpgen_k_observe(g_rec + k * HPGEN_NN, p_rec + k * HPGEN_D, xi, E_out + k, m,
-                            e_out + k)
-            || !hpgen_all_finite(xi, HPGEN_D) || !isfinite(E_out[k])) return k;
-    }
-    return K;
-}
-#endif
-

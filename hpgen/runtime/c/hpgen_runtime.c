@@ -6,7 +6,8 @@
      hpgen_linalg.c     the Newton matrix: dense LU / cofactors, J^{-1}, norms
      hpgen_newton_sparse.c  a sparse Newton matrix's stop tests and chord iteration
      hpgen_newton.c     Newton on the step's residual, one step (hpgen_step)
-     hpgen_runs.c       a run: predictor, run step, states, sections, record rows
+     hpgen_runs.c       a run: predictor, run step (its guard), composed step
+     hpgen_advance.c    the runs: states, sections, record rows, observables
      hpgen_batch.c      batches of runs
      hpgen_linearize.c  the step's linearization along recorded steps
      hpgen_lanes.c      lane-wise ensembles (models with lane kernels only)
@@ -24,6 +25,7 @@ HPGEN_EXPORT void hpgen_dims(long long* out) {
 #include "hpgen_newton_sparse.c"
 #include "hpgen_newton.c"
 #include "hpgen_runs.c"
+#include "hpgen_advance.c"
 #include "hpgen_batch.c"
 #include "hpgen_linearize.c"
 #include "hpgen_lanes.c"

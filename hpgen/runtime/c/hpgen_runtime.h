@@ -80,7 +80,7 @@
 #endif
 
 /* the version of the exported API (hpgen.abi.ABI_VERSION) */
-#define HPGEN_ABI 9
+#define HPGEN_ABI 10
 #define HPGEN_NN (HPGEN_N * HPGEN_N)
 /* the Newton matrix's storage (doubles): dense, J or J^{-1} column-major; sparse, the static
    LU's values (HPGEN_SP_NLU), the QR factors V | R | beta (HPGEN_NZ) from HPGEN_SP_QR, which
@@ -136,6 +136,18 @@
 #define HPGEN_SIMPLIFIED_TOL 0.01
 /* ... its error estimate takes the contraction rate as at least this (hpgen.abi.THETA_FLOOR) */
 #define HPGEN_THETA_FLOOR 0.05
+/* the guard on an accepted step (hpgen_guard_ratio in hpgen_runs.c): a root whose offset
+   jumps by more than this times the offsets' variation is solved again (a build may set it,
+   e.g. -DHPGEN_GUARD_RATIO=1e300 turns the guard off) */
+#ifndef HPGEN_GUARD_RATIO
+#define HPGEN_GUARD_RATIO 15.0
+#endif
+/* ... the floor of that change, times (1 + |z|): round-off never reaches the ratio */
+#define HPGEN_GUARD_FLOOR 1e-09
+/* 1: export hpgen_guard_log, the largest guard ratio and the re-solves (a measurement build) */
+#ifndef HPGEN_GUARD_LOG
+#define HPGEN_GUARD_LOG 0
+#endif
 /* the velocity xi of a record row: Newton's tolerance and iteration cap */
 #define HPGEN_VELOCITY_TOL 1e-14
 #define HPGEN_VELOCITY_MAXIT 50
@@ -192,6 +204,7 @@ typedef struct hpgen_status {
     long long total_iterations;  /* Newton iterations over all steps */
     double residual;             /* inf-norm of the last residual evaluated */
     long long jacobians;         /* Jacobian evaluations (and LU factorizations), all steps */
+    long long guarded;           /* steps solved again by the guard (hpgen_guard_resolve) */
 } hpgen_status;
 
 /* Runtime Newton settings (no recompilation needed to change them). */
