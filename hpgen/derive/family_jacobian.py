@@ -38,22 +38,29 @@ from .sparse_blocks import Entries, assemble, block_products
 CALL = {"never_inline": True, "jac_penalty": 0}
 
 
-def _jacobian_function(f, pairs, name):
-    """SX Function of f's inputs -> [d out_o / d in_i for (o, i) in pairs] (CasADi's SX AD
-    on f's own expression graph). The blocks of the column outputs come from one factory, so
-    that they share f's forward evaluation and their common subexpressions; a matrix
-    output's blocks one factory each (CasADi's factory refuses several for a matrix)."""
+def _jacobian_function(f, pairs, name, nominal=()):
+    """SX Function of f's inputs -> [d out_o / d in_i for (o, i) in pairs] and then f's
+    outputs ``nominal`` (indices of column outputs; CasADi's SX AD on f's own expression
+    graph). The blocks of the column outputs come from one factory, so that they share f's
+    forward evaluation and their common subexpressions (the nominal outputs are that
+    evaluation's, the same expressions as f's); a matrix output's blocks one factory each
+    (CasADi's factory refuses several for a matrix)."""
     args = [ca.SX.sym(f"a{i}", f.sparsity_in(i)) for i in range(f.n_in())]
     groups: dict = {}
     for o, i in pairs:
         groups.setdefault(("c",) if f.size2_out(o) == 1 else (o, i), []).append((o, i))
+    if nominal:
+        groups.setdefault(("c",), [])
     blocks = {}
     for key, group in groups.items():
+        extra = [("nom", o) for o in nominal] if key == ("c",) else []
+        names = [f"jac:{f.name_out(o)}:{f.name_in(i)}" for o, i in group]
         jf = f.factory(f"{name}_{'_'.join(map(str, key))}", f.name_in(),
-                       [f"jac:{f.name_out(o)}:{f.name_in(i)}" for o, i in group])
+                       names + [f.name_out(o) for _, o in extra])
         out = jf(*args)
-        blocks.update(zip(group, [out] if len(group) == 1 else out))
-    return ca.Function(name, args, [blocks[pair] for pair in pairs], CALL)
+        blocks.update(zip(group + extra, [out] if len(group + extra) == 1 else out))
+    return ca.Function(name, args, [blocks[pair] for pair in pairs]
+                       + [blocks[("nom", o)] for o in nominal], CALL)
 
 
 def _joint_jacobians(fun, K: int, rows: int):
@@ -88,6 +95,22 @@ def _joint_jacobians(fun, K: int, rows: int):
 def assembled_jacobian(model, funcs, parts) -> ca.MX:
     """J (nz x nz, sparse MX) of the mapped step whose intermediates are ``parts``
     (hpgen.derive.family_map.mapped_step_parts); funcs: hpgen.derive.family._functions."""
+    J, old, new = _assembly(model, funcs, parts)
+    return ca.graph_substitute([J], old[1:], new[1:])[0]
+
+
+def residual_and_jacobian(model, funcs, residual, parts) -> tuple:
+    """(F, J): the mapped step's ``residual`` (its StepEquations') and assembled_jacobian,
+    with the body step's forward values (F, g1, P1m) taken from the Jacobian blocks' calls,
+    which evaluate them anyway: the same expressions, one evaluation per body instead of
+    two."""
+    J, old, new = _assembly(model, funcs, parts)
+    F, J = ca.graph_substitute([residual, J], old, new)
+    return F, J
+
+
+def _assembly(model, funcs, parts):
+    """(J, [F, G1, P1m] of parts, the same values from the blocks' calls)."""
     body, _, _, _, jfun, _ = funcs
     joints = model.family.local.joints
     N, db, nb2 = model.family.count, body.d, body.n * body.n
@@ -96,12 +119,14 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
     st = parts["step"]
     nzb = st["nz"]
     zc = nzb * N
-    bf = _jacobian_function(st["F"], [(0, 0), (0, 2)], f"{st['F'].name()}_blocks")
+    bf = _jacobian_function(st["F"], [(0, 0), (0, 2)], f"{st['F'].name()}_blocks", (0,))
     bu = _jacobian_function(st["U"], [(0, 0), (0, 2), (1, 0), (1, 2)],
-                            f"{st['U'].name()}_blocks")
+                            f"{st['U'].name()}_blocks", (0, 1))
     hv = parts["hv"]              # the step vector of an open model, else h
     ext = (parts["Fext"],) if "Fext" in parts else ()  # forces between bodies
-    outs = [*bf.map(N)(Z, G, Q, hv, I, *ext), *bu.map(N)(Z, G, Q, hv, I, *ext)]
+    of, ou = bf.map(N)(Z, G, Q, hv, I, *ext), bu.map(N)(Z, G, Q, hv, I, *ext)
+    outs = [*of[:2], *ou[:4]]
+    forward = ([parts["F"], parts["G1"], parts["P1m"]], [of[2], ou[4], ou[5]])
     sp = [bf.sparsity_out(0), bf.sparsity_out(1), *[bu.sparsity_out(k) for k in range(4)]]
 
     def diag(k):
@@ -181,6 +206,7 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
               enumerate(plan)]
         return [Entries(t.values, t.rows + row0, t.cols) for t in ts]
     dphi = [Entries(t.values / h, t.rows, t.cols) for t in joint_rows(pg, dG1, "phi", zc)]
-    return assemble([diag(0), times_A(1, nzb), *tE[0], *dphi,
-                     *joint_rows(hg, dG1, "hg", zc + m), *joint_rows(hv_, dV, "hv", zc + m)],
-                    (nzc, nzc))
+    J = assemble([diag(0), times_A(1, nzb), *tE[0], *dphi,
+                  *joint_rows(hg, dG1, "hg", zc + m), *joint_rows(hv_, dV, "hv", zc + m)],
+                 (nzc, nzc))
+    return (J, *forward)
