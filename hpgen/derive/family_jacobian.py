@@ -66,7 +66,7 @@ def _jacobian_function(f, pairs, name, nominal=()):
 def _joint_jacobians(fun, K: int, rows: int):
     """(old, new) SX functions of a joint's row-block function ``fun`` (vec g per slot, i) ->
     (phi, Phi_s): old(g_s.., i) -> Phi_s^T per slot; new(g1_s.., i, nu, V_s..) ->
-    dphi/dg1_s per s, d(Phi_s^T nu)/dg1_t per (s, t), Phi_s^T per s, d(sum_s Phi_s V_s)/dg1_s
+    dphi/dg1_s per s, d(Phi_s^T nu)/dg1_t per (s, t), -Phi_s^T per s, d(sum_s Phi_s V_s)/dg1_s
     per s, Phi_s per s."""
     nbb, db = fun.size1_in(0), fun.size2_out(1)
     jf = _jacobian_function(fun, [(0, s) for s in range(K)]
@@ -87,7 +87,7 @@ def _joint_jacobians(fun, K: int, rows: int):
     hid = [sum((vs[s][c] * dPhi[s * K + t][c * rows:(c + 1) * rows, :]
                 for s in range(K) for c in range(db)), ca.SX(rows, nbb)) for t in range(K)]
     outs = (list(dphi) + [kick[s][t] for s in range(K) for t in range(K)]
-            + [out[1 + s].T for s in range(K)] + hid + [out[1 + s] for s in range(K)])
+            + [-out[1 + s].T for s in range(K)] + hid + [out[1 + s] for s in range(K)])
     new = ca.Function(f"{fun.name()}_end_blocks", [*gs, i, nu, *vs], outs, CALL)
     return old, new
 
@@ -149,11 +149,10 @@ def _assembly(model, funcs, parts):
         old, new = _joint_jacobians(jfun[key], K, rows)
         cols = [[joints[j].bodies[s] for j in js] for s in range(K)]
         Ij = ca.DM([joints[j].value for j in js]).T
-        nu_idx = [zc + m + int(rowoff[j]) + r for j in js for r in range(rows)]
-        nu = ca.reshape(parts["z"][nu_idx], rows, len(js))
-        o_old = old.map(len(js))(*[G[:, c] for c in cols], Ij)
+        sl = parts["slots"][key]
+        o_old = old.map(len(js))(*sl["G"], Ij)
         o_old = [o_old] if K == 1 else o_old
-        o_new = new.map(len(js))(*[G1[:, c] for c in cols], Ij, nu, *[V[:, c] for c in cols])
+        o_new = new.map(len(js))(*sl["G1"], Ij, sl["nu"], *sl["V"])
         at = [int(rowoff[j]) for j in js]
         jrows = [range(a, a + rows) for a in at]
 
@@ -164,7 +163,7 @@ def _assembly(model, funcs, parts):
             tA.append(Entries.blocks(o_old[s], old.sparsity_out(s),
                                      [(b * db, a) for b, a in zip(bs, at)]))
             k = K + K * K + s
-            tB.append(Entries.blocks(-o_new[k], new.sparsity_out(k),
+            tB.append(Entries.blocks(o_new[k], new.sparsity_out(k),
                                      [(b * db, zc + m + a) for b, a in zip(bs, at)]))
             # d(Phi_s^T nu)/d g1 of the joint's bodies, into body b(j, s)'s rows of dP1
             kg.append(([out(K + s * K + t) for t in range(K)],
@@ -179,12 +178,10 @@ def _assembly(model, funcs, parts):
         hv_.append(([out(3 * K + K * K + s) for s in range(K)], of_slots(db)))
     A = assemble(tA, (db * N, m))
 
-    def neg(t):
-        return Entries(-t.values, t.rows, t.cols)
-
     def times_A(k, w):                # -(X_body A) at the lambda columns
-        t = block_products(*per_body(outs[k], sp[k], w, db), A, f"{st['F'].name()}_dA{k}")
-        return Entries(-t.values, t.rows, t.cols + zc)
+        t = block_products(*per_body(outs[k], sp[k], w, db), A, f"{st['F'].name()}_dA{k}",
+                           scale=-1.0)
+        return Entries(t.values, t.rows, t.cols + zc)
 
     # the chain rule: block products (mapped SX) and sums of Entries (static gathers)
     cache: dict = {}
@@ -193,7 +190,7 @@ def _assembly(model, funcs, parts):
         from .family_joint_forces import external_force_terms
         tE = external_force_terms(parts, N, nzc)
     dG1 = assemble([diag(2), times_A(3, nb2), *tE[1]], (nb2 * N, nzc))
-    tKg = [neg(block_products(xs, ents, dG1, f"joint_kick_dg{q}", cache))
+    tKg = [block_products(xs, ents, dG1, f"joint_kick_dg{q}", cache, scale=-1.0)
            for q, (xs, ents) in enumerate(kg)]
     dP1 = assemble([diag(4), times_A(5, db), *tKg, *tB, *tE[2]], (db * N, nzc))
     vg, vp = vj.map(N)(G1, P1, I, Hinv, *([] if parts["e1"] is None else [parts["e1"]]))
@@ -201,11 +198,11 @@ def _assembly(model, funcs, parts):
                    block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1, "vel_dp")],
                   (db * N, nzc))
 
-    def joint_rows(plan, Y, what, row0):
-        ts = [block_products(xs, ents, Y, f"joint_{what}{q}", cache) for q, (xs, ents) in
-              enumerate(plan)]
+    def joint_rows(plan, Y, what, row0, scale=None):
+        ts = [block_products(xs, ents, Y, f"joint_{what}{q}", cache, scale) for q, (xs, ents)
+              in enumerate(plan)]
         return [Entries(t.values, t.rows + row0, t.cols) for t in ts]
-    dphi = [Entries(t.values / h, t.rows, t.cols) for t in joint_rows(pg, dG1, "phi", zc)]
+    dphi = joint_rows(pg, dG1, "phi", zc, h)
     J = assemble([diag(0), times_A(1, nzb), *tE[0], *dphi,
                   *joint_rows(hg, dG1, "hg", zc + m), *joint_rows(hv_, dV, "hv", zc + m)],
                  (nzc, nzc))

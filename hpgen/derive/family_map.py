@@ -84,7 +84,8 @@ def mapped_step(model, funcs, G, P, h, z, xi_hat) -> StepEquations | None:
 def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     """(mapped_step's StepEquations, its intermediates for the block-assembled Jacobian
     (hpgen.derive.family_jacobian): a dict of MX Z, Q, F, G1, P1m, P1, V (columns per body), the
-    joint groups, the constants I, Hinv and the joint rows' order), or None. An open model's
+    joint groups and their slots' columns of G, G1, V and their nu (by group), the constants
+    I, Hinv and the joint rows' order), or None. An open model's
     h is its step vector hv (hpgen.abi)."""
     from .family_velocity import hessian_inverse
     from .family_open import body_indices, with_env, split_step_vector
@@ -114,10 +115,11 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
         lam_idx = [int(z.numel() - 2 * m + rowoff[j] + r) for j in js for r in range(rows)]
         lam = ca.reshape(z[lam_idx], rows, len(js))
         nu = ca.reshape(z[[q + m for q in lam_idx]], rows, len(js))
-        imp = mapped(fns[0], len(js))(*[G[:, c] for c in cols], Ij, lam)
+        gs = [G[:, c] for c in cols]
+        imp = mapped(fns[0], len(js))(*gs, Ij, lam)
         imp = [imp] if k == 1 else imp
         kicks += [_at_columns(imp[s], fns[0].sparsity_out(s), cols[s]) for s in range(k)]
-        plan.append((js, fns, cols, Ij, nu, rows))
+        plan.append((key, js, fns, cols, Ij, nu, rows, gs))
     Q = P - assemble(kicks, (db, N))
     ext: tuple = ()                  # forces between bodies: the bodies' stage forces
     if st["JS"]:
@@ -127,8 +129,10 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     Fr = mapped(st["F"], N)(Z, G, Q, hv, I, *ext)
     G1, P1m = mapped(st["U"], N)(Z, G, Q, hv, I, *ext)
     phis, rows_of = [], []
-    for js, fns, cols, Ij, nu, rows in plan:
-        out = mapped(fns[1], len(js))(*[G1[:, c] for c in cols], Ij, nu)
+    slots = {}                       # the slots' columns, each gathered once
+    for key, js, fns, cols, Ij, nu, rows, gs in plan:
+        slots[key] = {"G": gs, "G1": [G1[:, c] for c in cols], "nu": nu}
+        out = mapped(fns[1], len(js))(*slots[key]["G1"], Ij, nu)
         phis.append(out[0] / h)
         ends += [_at_columns(out[1 + s], fns[1].sparsity_out(1 + s), cols[s])
                  for s in range(len(cols))]
@@ -138,8 +142,10 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     Hinv = mapped(inverse, N)(I) if inverse is not None else ca.DM(np.hstack([
         np.array(hessian_inverse(model, vel_funs[cls], k, None)) for k in range(N)]))
     V = mapped(vel_fn, N)(*with_env([G1, P1, I, Hinv], e1))
-    hidden = [mapped(fns[2], len(js))(*[G1[:, c] for c in cols], Ij, *[V[:, c] for c in cols])
-              for js, fns, cols, Ij, nu, rows in plan]
+    hidden = []
+    for key, js, fns, cols, Ij, nu, rows, gs in plan:
+        slots[key]["V"] = [V[:, c] for c in cols]
+        hidden.append(mapped(fns[2], len(js))(*slots[key]["G1"], Ij, *slots[key]["V"]))
     # joint rows back in file order
     order = [(j, r) for js, rows in rows_of for j in js for r in range(rows)]
     perm = np.argsort([rowoff[j] + r for j, r in order], kind="stable")
@@ -153,7 +159,7 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
                         ca.mmin(margins), ca.vec(charts))
     groups_out = [(key, js) for key, js in groups.items()]
     parts = {"z": z, "Z": Z, "G": G, "Q": Q, "F": Fr, "G1": G1, "P1m": P1m, "P1": P1, "V": V, "h": h, "hv": hv, "e1": e1, "I": I,
-             "Hinv": Hinv, "groups": groups_out, "rowoff": rowoff, "perm": perm, "m": m,
+             "Hinv": Hinv, "groups": groups_out, "slots": slots, "rowoff": rowoff, "perm": perm, "m": m,
              "step": st, "velocity": vel_fn}
     if ext:
         parts.update(Fext=ext[0], external=external)

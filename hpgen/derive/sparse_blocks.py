@@ -144,8 +144,11 @@ def _disjoint_slots(Y, yrows) -> bool:
     return True
 
 
-def block_products(xs, entities, Y, name: str, cache: dict | None = None) -> Entries:
-    """Entries of sum_e sum_s X_{e,s} Y[yrows[e][s], :] at rows out[e] (Y a sparse MX).
+def block_products(xs, entities, Y, name: str, cache: dict | None = None,
+                   scale=None) -> Entries:
+    """Entries of sum_e sum_s X_{e,s} Y[yrows[e][s], :] at rows out[e] (Y a sparse MX),
+    negated (scale -1) or divided by the MX scalar ``scale`` inside the mapped product (the
+    same values as negating or dividing its result, without a pass over the entries).
 
     xs[s] = (M, sp): the blocks X_{0,s}, X_{1,s}, ... side by side in M (a map's output),
     each of pattern sp; entities[e] = (out (a rows of C), [yrows[e][s] (b_s rows of Y) per
@@ -180,11 +183,20 @@ def block_products(xs, entities, Y, name: str, cache: dict | None = None) -> Ent
                 prod = prod + ca.mtimes(Xs[s][:, gy.kept[q]],
                                         Yb[int(offs[q]):int(offs[q + 1]), :])
         prods.append(prod)
-    f = ca.Function(name, [*Xs, *Ybs], [ca.horzcat(*prods)], {"never_inline": True})
+    prod = ca.horzcat(*prods)
+    div = [ca.SX.sym("d")] if isinstance(scale, ca.MX) else []
+    if div:
+        prod = prod / div[0]
+    elif scale is not None:
+        assert scale == -1.0
+        prod = -prod
+    f = ca.Function(name, [*Xs, *Ybs, *div], [prod], {"never_inline": True})
     sp_o = f.sparsity_out(0)
     where = {(int(r), int(c)): q for q, (r, c) in enumerate(zip(sp_o.row(), sp_o.get_col()))}
-    out_nz = ca.sparsity_cast(f.map(len(entities))(*[M for M, _ in xs],
-                                                   *[gy.blocks for gy in gys]),
+    args = [*[M for M, _ in xs], *[gy.blocks for gy in gys]]
+    fm = (f.map(f"{name}_map", "serial", len(entities), [len(args)], [])
+          if div else f.map(len(entities)))
+    out_nz = ca.sparsity_cast(fm(*args, *([scale] if div else [])),
                               ca.Sparsity.dense(sp_o.nnz() * len(entities), 1))
     src, rows, cols = [], [], []
     col0 = 0
