@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import casadi as ca
 
-from .sparse_blocks import Entries, assemble, block_products
+from .sparse_blocks import Entries, Sum, assemble, block_products
 
 CALL = {"never_inline": True, "jac_penalty": 0}
 
@@ -176,25 +176,26 @@ def _assembly(model, funcs, parts):
         pg.append(([out(s) for s in range(K)], of_slots(nb2)))
         hg.append(([out(2 * K + K * K + s) for s in range(K)], of_slots(nb2)))
         hv_.append(([out(3 * K + K * K + s) for s in range(K)], of_slots(db)))
-    A = assemble(tA, (db * N, m))
+    A = Sum(tA, (db * N, m))
 
     def times_A(k, w):                # -(X_body A) at the lambda columns
         t = block_products(*per_body(outs[k], sp[k], w, db), A, f"{st['F'].name()}_dA{k}",
                            scale=-1.0)
         return Entries(t.values, t.rows, t.cols + zc)
 
-    # the chain rule: block products (mapped SX) and sums of Entries (static gathers)
+    # the chain rule: block products (mapped SX) and sums of Entries (static gathers; the
+    # intermediates as Sum, read by the products' gathers without being materialized)
     cache: dict = {}
     tE: tuple = ([], [], [])           # the joint forces' terms in F, dg1, dP1
     if ext:
         from .family_joint_forces import external_force_terms
         tE = external_force_terms(parts, N, nzc)
-    dG1 = assemble([diag(2), times_A(3, nb2), *tE[1]], (nb2 * N, nzc))
+    dG1 = Sum([diag(2), times_A(3, nb2), *tE[1]], (nb2 * N, nzc))
     tKg = [block_products(xs, ents, dG1, f"joint_kick_dg{q}", cache, scale=-1.0)
            for q, (xs, ents) in enumerate(kg)]
-    dP1 = assemble([diag(4), times_A(5, db), *tKg, *tB, *tE[2]], (db * N, nzc))
+    dP1 = Sum([diag(4), times_A(5, db), *tKg, *tB, *tE[2]], (db * N, nzc))
     vg, vp = vj.map(N)(G1, P1, I, Hinv, *([] if parts["e1"] is None else [parts["e1"]]))
-    dV = assemble([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, "vel_dg"),
+    dV = Sum([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, "vel_dg"),
                    block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1, "vel_dp")],
                   (db * N, nzc))
 

@@ -60,33 +60,82 @@ def assemble(terms, shape):
     its nonzeros (CCS order) are a gather of the first entry at each position from cat (the
     terms' values one after the other), to which the positions with a k-th entry add it
     (k = 2, 3, ...: a gather and an addition over those positions only)."""
-    terms = [t for t in terms if len(t.rows)]
-    if not terms:
-        return ca.MX(*shape)
-    rows = np.concatenate([t.rows for t in terms])
-    cols = np.concatenate([t.cols for t in terms])
-    key = cols * shape[0] + rows
-    order = np.lexsort((np.arange(len(key)), key))  # CCS order, terms' order within a place
-    ks = key[order]
-    first = np.r_[True, ks[1:] != ks[:-1]]
-    place = np.cumsum(first) - 1                  # position of each entry in the pattern
-    rank = np.arange(len(ks)) - np.flatnonzero(first)[place]
-    unique = ks[first]
-    sp = ca.Sparsity.triplet(shape[0], shape[1], (unique % shape[0]).tolist(),
-                             (unique // shape[0]).tolist())
-    if len(terms) == 1 and rank.max() == 0 and np.array_equal(order, np.arange(len(ks))):
-        return ca.sparsity_cast(terms[0].values, sp)
-    cat = ca.vertcat(*[t.values for t in terms])
-    out = cat[order[rank == 0].tolist()]       # the first entry at each position
-    for k in range(1, int(rank.max()) + 1):    # then the positions with a k-th entry
-        sel = rank == k
-        at = place[sel].tolist()
-        out.nz[at] = out.nz[at] + cat[order[sel].tolist()]
-    return ca.sparsity_cast(out, sp)
+    return Sum(terms, shape).mx()
+
+
+class Sum:
+    """The sum of Entries (as ``assemble``) kept as a source vector and an index: nonzero q
+    (CCS order) of the sum is ``source(...)[index[q]]``. The chain rule's intermediates are
+    read only by Gathered blocks, which gather from the source directly: a sum without
+    repeated positions is never materialized, and the zero the blocks pad with is one more
+    entry of the terms' concatenation instead of a copy of the whole matrix."""
+
+    def __init__(self, terms, shape):
+        terms = [t for t in terms if len(t.rows)]
+        self.terms, self.shape = terms, shape
+        if not terms:
+            self._sp, self.index, self._src = ca.Sparsity(*shape), np.zeros(0, int), {}
+            return
+        rows = np.concatenate([t.rows for t in terms])
+        cols = np.concatenate([t.cols for t in terms])
+        key = cols * shape[0] + rows
+        order = np.lexsort((np.arange(len(key)), key))  # CCS, terms' order within a place
+        ks = key[order]
+        first = np.r_[True, ks[1:] != ks[:-1]]
+        place = np.cumsum(first) - 1                  # position of each entry in the pattern
+        rank = np.arange(len(ks)) - np.flatnonzero(first)[place]
+        unique = ks[first]
+        self._sp = ca.Sparsity.triplet(shape[0], shape[1], (unique % shape[0]).tolist(),
+                                       (unique // shape[0]).tolist())
+        self._plan = (order, place, rank)
+        self._src: dict = {}
+        self.single = (len(terms) == 1 and rank.max() == 0
+                       and np.array_equal(order, np.arange(len(ks))))
+        self.summed = bool(rank.max() > 0)
+        # without sums nonzero q is cat[order[q]]; with sums the materialized vector's q
+        self.index = np.arange(len(unique)) if self.summed else order
+
+    def sparsity(self):
+        return self._sp
+
+    def nnz(self) -> int:
+        return int(self._sp.nnz())
+
+    def source(self, zero: bool):
+        """The MX column the index points into; ``zero``: with a zero entry at its end (at
+        position len(source) - 1), for the blocks' padding."""
+        if not self.terms:
+            return ca.MX.zeros(1, 1)
+        if self.single and not zero:
+            return self.terms[0].values
+        if zero not in self._src:
+            pad = [ca.MX.zeros(1, 1)] if zero else []
+            cat = ca.vertcat(*[t.values for t in self.terms], *pad)
+            if self.summed:
+                order, place, rank = self._plan
+                ext = [len(order)] if zero else []   # the zero stays the last entry
+                out = cat[order[rank == 0].tolist() + ext]  # the first entry at each position
+                for k in range(1, int(rank.max()) + 1):     # then those with a k-th entry
+                    sel = rank == k
+                    at = place[sel].tolist()
+                    out.nz[at] = out.nz[at] + cat[order[sel].tolist()]
+                cat = out
+            self._src[zero] = cat
+        return self._src[zero]
+
+    def mx(self):
+        """The sum as a sparse MX of the pattern."""
+        if not self.terms:
+            return ca.MX(*self.shape)
+        src = self.source(False)
+        if self.single or self.summed:
+            return ca.sparsity_cast(src, self._sp)
+        return ca.sparsity_cast(src[self.index.tolist()], self._sp)
 
 
 class Gathered:
-    """Y's rows per entity as blocks, shared by the products that read the same rows: block e
+    """Y's rows per entity (Y a sparse MX or a Sum) as blocks, shared by the products that
+    read the same rows: block e
     (kept rows x width, of the pattern ``sparsity`` common to all entities: the union of
     their nonzeros) holds Y[rows[e][s][k], cols[e][c]] at (k, c) for the slots' kept local
     rows k (those with a structural nonzero for some entity; the others are dropped), zeros
@@ -121,9 +170,14 @@ class Gathered:
         cs, rs = np.nonzero(union)            # column-major (CCS) order
         self.sparsity = ca.Sparsity.triplet(self.rows, self.width, rs.tolist(), cs.tolist())
         take = idx[:, union].ravel()
-        yv = ca.sparsity_cast(Y, ca.Sparsity.dense(zero, 1))
-        if (take == zero).any():              # an entity without a union entry: a zero
-            yv = ca.vertcat(yv, ca.MX.zeros(1, 1))
+        pad = bool((take == zero).any())      # an entity without a union entry: a zero
+        if isinstance(Y, Sum):                # gathered from the sum's source directly
+            yv = Y.source(pad)
+            take = np.where(take == zero, yv.nnz() - 1, Y.index[np.minimum(take, zero - 1)])
+        else:
+            yv = ca.sparsity_cast(Y, ca.Sparsity.dense(zero, 1))
+            if pad:
+                yv = ca.vertcat(yv, ca.MX.zeros(1, 1))
         self.blocks = ca.sparsity_cast(yv[take.tolist()],
                                        ca.horzcat(*[self.sparsity] * len(yrows)))
 
