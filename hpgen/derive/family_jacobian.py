@@ -181,7 +181,7 @@ def _assembly(model, funcs, parts):
     def times_A(k, w):                # -(X_body A) at the lambda columns
         t = block_products(*per_body(outs[k], sp[k], w, db), A, f"{st['F'].name()}_dA{k}",
                            scale=-1.0)
-        return Entries(t.values, t.rows, t.cols + zc)
+        return t.shifted(0, zc)
 
     # the chain rule: block products (mapped SX) and sums of Entries (static gathers; the
     # intermediates as Sum, read by the products' gathers without being materialized)
@@ -202,7 +202,7 @@ def _assembly(model, funcs, parts):
     def joint_rows(plan, Y, what, row0, scale=None):
         ts = [block_products(xs, ents, Y, f"joint_{what}{q}", cache, scale) for q, (xs, ents)
               in enumerate(plan)]
-        return [Entries(t.values, t.rows + row0, t.cols) for t in ts]
+        return [t.shifted(row0, 0) for t in ts]
     dphi = joint_rows(pg, dG1, "phi", zc, h)
     J = assemble([diag(0), times_A(1, nzb), *tE[0], *dphi,
                   *joint_rows(hg, dG1, "hg", zc + m), *joint_rows(hv_, dV, "hv", zc + m)],

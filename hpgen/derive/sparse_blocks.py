@@ -26,8 +26,25 @@ class Entries:
     so that no sum or concatenation of differently patterned MX (CasADi's project and
     transpose of whole matrices) is generated."""
 
-    def __init__(self, values, rows, cols):
-        self.values, self.rows, self.cols = values, np.asarray(rows), np.asarray(cols)
+    def __init__(self, values, rows, cols, index=None):
+        """``index`` given: the values are values[index] (values an MX column), gathered
+        only where the Entries are used alone; a sum reads them from values directly."""
+        self.base, self.rows, self.cols = values, np.asarray(rows), np.asarray(cols)
+        self.index = (np.arange(len(self.rows)) if index is None
+                      else np.asarray(index, dtype=int))
+        self._values = values if index is None else None
+
+    @property
+    def values(self):
+        if self._values is None:
+            self._values = self.base[self.index.tolist()]
+        return self._values
+
+    def shifted(self, row0: int = 0, col0: int = 0) -> Entries:
+        """The same values at (rows + row0, cols + col0)."""
+        out = Entries(self.base, self.rows + row0, self.cols + col0, self.index)
+        out._values = self._values
+        return out
 
     @classmethod
     def of(cls, M, row0: int = 0, col0: int = 0, scale: float = 1.0):
@@ -64,17 +81,18 @@ def assemble(terms, shape):
 
 
 class Sum:
-    """The sum of Entries (as ``assemble``) kept as a source vector and an index: nonzero q
-    (CCS order) of the sum is ``source(...)[index[q]]``. The chain rule's intermediates are
-    read only by Gathered blocks, which gather from the source directly: a sum without
-    repeated positions is never materialized, and the zero the blocks pad with is one more
-    entry of the terms' concatenation instead of a copy of the whole matrix."""
+    """The sum of Entries (as ``assemble``) kept as source vectors and an index: the terms'
+    values are read from their own sources (the products' outputs: no gather per term), and
+    the chain rule's intermediates, read only by Gathered blocks, are materialized only
+    where a position repeats (the sums); the zero the blocks pad with is one more entry of
+    the sources' concatenation instead of a copy of the whole matrix."""
 
     def __init__(self, terms, shape):
         terms = [t for t in terms if len(t.rows)]
         self.terms, self.shape = terms, shape
+        self._src: dict = {}
         if not terms:
-            self._sp, self.index, self._src = ca.Sparsity(*shape), np.zeros(0, int), {}
+            self._sp = ca.Sparsity(*shape)
             return
         rows = np.concatenate([t.rows for t in terms])
         cols = np.concatenate([t.cols for t in terms])
@@ -88,12 +106,14 @@ class Sum:
         self._sp = ca.Sparsity.triplet(shape[0], shape[1], (unique % shape[0]).tolist(),
                                        (unique // shape[0]).tolist())
         self._plan = (order, place, rank)
-        self._src: dict = {}
-        self.single = (len(terms) == 1 and rank.max() == 0
-                       and np.array_equal(order, np.arange(len(ks))))
         self.summed = bool(rank.max() > 0)
-        # without sums nonzero q is cat[order[q]]; with sums the materialized vector's q
-        self.index = np.arange(len(unique)) if self.summed else order
+        # the distinct sources, and each entry's position in their concatenation
+        bases: dict = {}
+        for t in terms:
+            bases.setdefault(id(t.base), t.base)
+        self._bases = list(bases.values())
+        offset = dict(zip(bases, np.cumsum([0] + [b.nnz() for b in self._bases])))
+        self._at = np.concatenate([offset[id(t.base)] + t.index for t in terms])
 
     def sparsity(self):
         return self._sp
@@ -102,35 +122,38 @@ class Sum:
         return int(self._sp.nnz())
 
     def source(self, zero: bool):
-        """The MX column the index points into; ``zero``: with a zero entry at its end (at
-        position len(source) - 1), for the blocks' padding."""
+        """(v, index): nonzero q of the sum is v[index[q]], v an MX column; ``zero``: v ends
+        with a zero entry (at position v.nnz() - 1), for the blocks' padding."""
         if not self.terms:
-            return ca.MX.zeros(1, 1)
-        if self.single and not zero:
-            return self.terms[0].values
+            return ca.MX.zeros(1, 1), np.zeros(0, int)
         if zero not in self._src:
+            order, place, rank = self._plan
             pad = [ca.MX.zeros(1, 1)] if zero else []
-            cat = ca.vertcat(*[t.values for t in self.terms], *pad)
-            if self.summed:
-                order, place, rank = self._plan
-                ext = [len(order)] if zero else []   # the zero stays the last entry
-                out = cat[order[rank == 0].tolist() + ext]  # the first entry at each position
+            if len(self._bases) == 1 and not pad:
+                cat = self._bases[0]
+            else:
+                cat = ca.vertcat(*self._bases, *pad)
+            at = self._at[order]
+            if not self.summed:
+                self._src[zero] = (cat, at)
+            else:
+                ext = [cat.nnz() - 1] if zero else []       # the zero stays the last entry
+                out = cat[at[rank == 0].tolist() + ext]     # the first entry at each position
                 for k in range(1, int(rank.max()) + 1):     # then those with a k-th entry
                     sel = rank == k
-                    at = place[sel].tolist()
-                    out.nz[at] = out.nz[at] + cat[order[sel].tolist()]
-                cat = out
-            self._src[zero] = cat
+                    q = place[sel].tolist()
+                    out.nz[q] = out.nz[q] + cat[at[sel].tolist()]
+                self._src[zero] = (out, np.arange(self.nnz()))
         return self._src[zero]
 
     def mx(self):
         """The sum as a sparse MX of the pattern."""
         if not self.terms:
             return ca.MX(*self.shape)
-        src = self.source(False)
-        if self.single or self.summed:
+        src, index = self.source(False)
+        if src.nnz() == len(index) and np.array_equal(index, np.arange(len(index))):
             return ca.sparsity_cast(src, self._sp)
-        return ca.sparsity_cast(src[self.index.tolist()], self._sp)
+        return ca.sparsity_cast(src[index.tolist()], self._sp)
 
 
 class Gathered:
@@ -172,8 +195,8 @@ class Gathered:
         take = idx[:, union].ravel()
         pad = bool((take == zero).any())      # an entity without a union entry: a zero
         if isinstance(Y, Sum):                # gathered from the sum's source directly
-            yv = Y.source(pad)
-            take = np.where(take == zero, yv.nnz() - 1, Y.index[np.minimum(take, zero - 1)])
+            yv, at = Y.source(pad)
+            take = np.where(take == zero, yv.nnz() - 1, at[np.minimum(take, zero - 1)])
         else:
             yv = ca.sparsity_cast(Y, ca.Sparsity.dense(zero, 1))
             if pad:
@@ -269,4 +292,4 @@ def block_products(xs, entities, Y, name: str, cache: dict | None = None,
         col0 += gy.width
     if not src:
         return Entries(ca.MX(0, 1), [], [])
-    return Entries(out_nz[src], rows, cols)
+    return Entries(out_nz, rows, cols, src)
