@@ -26,10 +26,12 @@ class Entries:
     so that no sum or concatenation of differently patterned MX (CasADi's project and
     transpose of whole matrices) is generated."""
 
-    def __init__(self, values, rows, cols, index=None):
+    def __init__(self, values, rows, cols, index=None, zero=None):
         """``index`` given: the values are values[index] (values an MX column), gathered
-        only where the Entries are used alone; a sum reads them from values directly."""
+        only where the Entries are used alone; a sum reads them from values directly.
+        ``zero``: a position of values that holds 0 (for the blocks' padding), or None."""
         self.base, self.rows, self.cols = values, np.asarray(rows), np.asarray(cols)
+        self.zero = zero
         self.index = (np.arange(len(self.rows)) if index is None
                       else np.asarray(index, dtype=int))
         self._values = values if index is None else None
@@ -42,7 +44,7 @@ class Entries:
 
     def shifted(self, row0: int = 0, col0: int = 0) -> Entries:
         """The same values at (rows + row0, cols + col0)."""
-        out = Entries(self.base, self.rows + row0, self.cols + col0, self.index)
+        out = Entries(self.base, self.rows + row0, self.cols + col0, self.index, self.zero)
         out._values = self._values
         return out
 
@@ -114,6 +116,9 @@ class Sum:
         self._bases = list(bases.values())
         offset = dict(zip(bases, np.cumsum([0] + [b.nnz() for b in self._bases])))
         self._at = np.concatenate([offset[id(t.base)] + t.index for t in terms])
+        # a zero some source already holds (a product's), else one appended for the padding
+        self._zero = next((int(offset[id(t.base)] + t.zero) for t in terms
+                           if t.zero is not None), None)
 
     def sparsity(self):
         return self._sp
@@ -122,35 +127,37 @@ class Sum:
         return int(self._sp.nnz())
 
     def source(self, zero: bool):
-        """(v, index): nonzero q of the sum is v[index[q]], v an MX column; ``zero``: v ends
-        with a zero entry (at position v.nnz() - 1), for the blocks' padding."""
+        """(v, index, z): nonzero q of the sum is v[index[q]], v an MX column; ``zero``: z a
+        position of v that holds 0, for the blocks' padding (else None)."""
         if not self.terms:
-            return ca.MX.zeros(1, 1), np.zeros(0, int)
+            return ca.MX.zeros(1, 1), np.zeros(0, int), 0
         if zero not in self._src:
             order, place, rank = self._plan
-            pad = [ca.MX.zeros(1, 1)] if zero else []
+            pad = [ca.MX.zeros(1, 1)] if zero and self._zero is None else []
             if len(self._bases) == 1 and not pad:
                 cat = self._bases[0]
             else:
                 cat = ca.vertcat(*self._bases, *pad)
+            z = None if not zero else cat.nnz() - 1 if pad else self._zero
             at = self._at[order]
             if not self.summed:
-                self._src[zero] = (cat, at)
+                self._src[zero] = (cat, at, z)
             else:
-                ext = [cat.nnz() - 1] if zero else []       # the zero stays the last entry
+                ext = [] if z is None else [z]             # the zero becomes the last entry
                 out = cat[at[rank == 0].tolist() + ext]     # the first entry at each position
                 for k in range(1, int(rank.max()) + 1):     # then those with a k-th entry
                     sel = rank == k
                     q = place[sel].tolist()
                     out.nz[q] = out.nz[q] + cat[at[sel].tolist()]
-                self._src[zero] = (out, np.arange(self.nnz()))
+                self._src[zero] = (out, np.arange(self.nnz()), None if z is None
+                                   else self.nnz())
         return self._src[zero]
 
     def mx(self):
         """The sum as a sparse MX of the pattern."""
         if not self.terms:
             return ca.MX(*self.shape)
-        src, index = self.source(False)
+        src, index, _ = self.source(False)
         if src.nnz() == len(index) and np.array_equal(index, np.arange(len(index))):
             return ca.sparsity_cast(src, self._sp)
         return ca.sparsity_cast(src[index.tolist()], self._sp)
@@ -195,8 +202,8 @@ class Gathered:
         take = idx[:, union].ravel()
         pad = bool((take == zero).any())      # an entity without a union entry: a zero
         if isinstance(Y, Sum):                # gathered from the sum's source directly
-            yv, at = Y.source(pad)
-            take = np.where(take == zero, yv.nnz() - 1, at[np.minimum(take, zero - 1)])
+            yv, at, z = Y.source(pad)
+            take = np.where(take == zero, z if pad else 0, at[np.minimum(take, zero - 1)])
         else:
             yv = ca.sparsity_cast(Y, ca.Sparsity.dense(zero, 1))
             if pad:
@@ -267,14 +274,18 @@ def block_products(xs, entities, Y, name: str, cache: dict | None = None,
     elif scale is not None:
         assert scale == -1.0
         prod = -prod
-    f = ca.Function(name, [*Xs, *Ybs, *div], [prod], {"never_inline": True})
-    sp_o = f.sparsity_out(0)
+    sp_o = prod.sparsity()
+    # the nonzeros (CCS order) and a 0 after them: a zero the sums' padding can point to
+    f = ca.Function(name, [*Xs, *Ybs, *div],
+                    [ca.vertcat(ca.sparsity_cast(prod, ca.Sparsity.dense(sp_o.nnz(), 1)),
+                                ca.SX.zeros(1, 1))], {"never_inline": True})
+    stride = sp_o.nnz() + 1
     where = {(int(r), int(c)): q for q, (r, c) in enumerate(zip(sp_o.row(), sp_o.get_col()))}
     args = [*[M for M, _ in xs], *[gy.blocks for gy in gys]]
     fm = (f.map(f"{name}_map", "serial", len(entities), [len(args)], [])
           if div else f.map(len(entities)))
     out_nz = ca.sparsity_cast(fm(*args, *([scale] if div else [])),
-                              ca.Sparsity.dense(sp_o.nnz() * len(entities), 1))
+                              ca.Sparsity.dense(stride * len(entities), 1))
     src, rows, cols = [], [], []
     col0 = 0
     for grp, gy in zip(groups, gys):
@@ -286,10 +297,10 @@ def block_products(xs, entities, Y, name: str, cache: dict | None = None,
             pat = (xpat.astype(int) @ ypat) > 0
             for c in range(len(ecols)):       # C's entries in column-major order per entity
                 for r in np.flatnonzero(pat[:, c]):
-                    src.append(e * sp_o.nnz() + where[int(r), col0 + c])
+                    src.append(e * stride + where[int(r), col0 + c])
                     rows.append(int(out[r]))
                     cols.append(ecols[c])
         col0 += gy.width
     if not src:
         return Entries(ca.MX(0, 1), [], [])
-    return Entries(out_nz, rows, cols, src)
+    return Entries(out_nz, rows, cols, src, stride - 1)
