@@ -27,7 +27,8 @@ Phi_{j,k}(g1)^T nu_j)/d g1,
 takes its stage forces Fext(Z) (hpgen.derive.family_joint_forces.external_force_terms adds
 F_fext, g1_fext, P1m_fext times dFext/dz to J, dg1/dz, dP1/dz). The result equals casadi.jacobian of the mapped
 residual to round-off, with work and memory proportional to the blocks' nonzeros instead of
-CasADi's directional derivatives of the whole mapped step.
+CasADi's directional derivatives of the whole mapped step. In the fused F and J
+(residual_and_jacobian) the body step's forward values come from the blocks' own calls.
 """
 from __future__ import annotations
 

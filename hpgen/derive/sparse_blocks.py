@@ -3,11 +3,13 @@ with static index arrays, so that the generated code moves each nonzero a bounde
 times and multiplies small dense blocks in straight-line SX code.
 
 - ``Entries``: values (a dense MX column) placed at fixed (row, col) positions;
-- ``assemble``: the sparse MX sum of Entries by static gathers;
+- ``assemble``: the sparse MX sum of Entries by static gathers; ``Sum``: the same sum kept
+  as its terms' sources and an index, read in place by the products' gathers;
 - ``block_products``: C = sum over entities e and slots s of X_{e,s} Y[rows_{e,s}, :] at
-  rows out_e, with each X_{e,s} a map's block output and the product one mapped SX function
-  over the entities (Y's rows gathered per entity into a dense block, padded with zeros to
-  the widest entity).
+  rows out_e (negated or divided by a scalar inside the product), with each X_{e,s} a map's
+  block output and the product one mapped SX function over the entities (Y's rows gathered
+  per entity into a dense block, padded with zeros to the widest entity); its Entries point
+  into the map's output.
 
 All index arrays are computed once when the kernel is built; an entity's columns are those
 where its rows of Y have a structural nonzero, and C's pattern is the structural product's
