@@ -16,7 +16,10 @@ from .contract import CodegenError, dense_positions
 from .sparse import AUX_FUNCTION, aux_function, jacobian_sparsity
 
 #: CasADi CodeGenerator options. with_mem False: no memory objects, no static mutable state.
-CG_OPTIONS = {"casadi_real": "double", "casadi_int": "long long int", "with_mem": False,
+#: casadi_int int: the index arrays of CasADi's gathers (a family's F and J move thousands of
+#: entries through them) half the size of long long; every array the runtime hands to
+#: CasADi's code is declared casadi_int.
+CG_OPTIONS = {"casadi_real": "double", "casadi_int": "int", "with_mem": False,
               "verbose": False, "cpp": False, "with_header": False, "main": False,
               "mex": False}
 

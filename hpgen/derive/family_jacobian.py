@@ -27,39 +27,47 @@ Phi_{j,k}(g1)^T nu_j)/d g1,
 takes its stage forces Fext(Z) (hpgen.derive.family_joint_forces.external_force_terms adds
 F_fext, g1_fext, P1m_fext times dFext/dz to J, dg1/dz, dP1/dz). The result equals casadi.jacobian of the mapped
 residual to round-off, with work and memory proportional to the blocks' nonzeros instead of
-CasADi's directional derivatives of the whole mapped step.
+CasADi's directional derivatives of the whole mapped step. In the fused F and J
+(residual_and_jacobian) the body step's forward values come from the blocks' own calls.
 """
 from __future__ import annotations
 
 import casadi as ca
 
-from .sparse_blocks import Entries, assemble, block_products
+from .sparse_blocks import Entries, Sum, assemble, block_products
 
 CALL = {"never_inline": True, "jac_penalty": 0}
 
 
-def _jacobian_function(f, pairs, name):
-    """SX Function of f's inputs -> [d out_o / d in_i for (o, i) in pairs] (CasADi's SX AD
-    on f's own expression graph). The blocks of the column outputs come from one factory, so
-    that they share f's forward evaluation and their common subexpressions; a matrix
-    output's blocks one factory each (CasADi's factory refuses several for a matrix)."""
+def _jacobian_function(f, pairs, name, nominal=()):
+    """SX Function of f's inputs -> [d out_o / d in_i for (o, i) in pairs] and then f's
+    outputs ``nominal`` (indices of column outputs; CasADi's SX AD on f's own expression
+    graph). The blocks of the column outputs come from one factory, so that they share f's
+    forward evaluation and their common subexpressions (the nominal outputs are that
+    evaluation's, the same expressions as f's); a matrix output's blocks one factory each
+    (CasADi's factory refuses several for a matrix)."""
     args = [ca.SX.sym(f"a{i}", f.sparsity_in(i)) for i in range(f.n_in())]
     groups: dict = {}
     for o, i in pairs:
         groups.setdefault(("c",) if f.size2_out(o) == 1 else (o, i), []).append((o, i))
+    if nominal:
+        groups.setdefault(("c",), [])
     blocks = {}
     for key, group in groups.items():
+        extra = [("nom", o) for o in nominal] if key == ("c",) else []
+        names = [f"jac:{f.name_out(o)}:{f.name_in(i)}" for o, i in group]
         jf = f.factory(f"{name}_{'_'.join(map(str, key))}", f.name_in(),
-                       [f"jac:{f.name_out(o)}:{f.name_in(i)}" for o, i in group])
+                       names + [f.name_out(o) for _, o in extra])
         out = jf(*args)
-        blocks.update(zip(group, [out] if len(group) == 1 else out))
-    return ca.Function(name, args, [blocks[pair] for pair in pairs], CALL)
+        blocks.update(zip(group + extra, [out] if len(group + extra) == 1 else out))
+    return ca.Function(name, args, [blocks[pair] for pair in pairs]
+                       + [blocks[("nom", o)] for o in nominal], CALL)
 
 
 def _joint_jacobians(fun, K: int, rows: int):
     """(old, new) SX functions of a joint's row-block function ``fun`` (vec g per slot, i) ->
     (phi, Phi_s): old(g_s.., i) -> Phi_s^T per slot; new(g1_s.., i, nu, V_s..) ->
-    dphi/dg1_s per s, d(Phi_s^T nu)/dg1_t per (s, t), Phi_s^T per s, d(sum_s Phi_s V_s)/dg1_s
+    dphi/dg1_s per s, d(Phi_s^T nu)/dg1_t per (s, t), -Phi_s^T per s, d(sum_s Phi_s V_s)/dg1_s
     per s, Phi_s per s."""
     nbb, db = fun.size1_in(0), fun.size2_out(1)
     jf = _jacobian_function(fun, [(0, s) for s in range(K)]
@@ -80,7 +88,7 @@ def _joint_jacobians(fun, K: int, rows: int):
     hid = [sum((vs[s][c] * dPhi[s * K + t][c * rows:(c + 1) * rows, :]
                 for s in range(K) for c in range(db)), ca.SX(rows, nbb)) for t in range(K)]
     outs = (list(dphi) + [kick[s][t] for s in range(K) for t in range(K)]
-            + [out[1 + s].T for s in range(K)] + hid + [out[1 + s] for s in range(K)])
+            + [-out[1 + s].T for s in range(K)] + hid + [out[1 + s] for s in range(K)])
     new = ca.Function(f"{fun.name()}_end_blocks", [*gs, i, nu, *vs], outs, CALL)
     return old, new
 
@@ -88,6 +96,22 @@ def _joint_jacobians(fun, K: int, rows: int):
 def assembled_jacobian(model, funcs, parts) -> ca.MX:
     """J (nz x nz, sparse MX) of the mapped step whose intermediates are ``parts``
     (hpgen.derive.family_map.mapped_step_parts); funcs: hpgen.derive.family._functions."""
+    J, old, new = _assembly(model, funcs, parts)
+    return ca.graph_substitute([J], old[1:], new[1:])[0]
+
+
+def residual_and_jacobian(model, funcs, residual, parts) -> tuple:
+    """(F, J): the mapped step's ``residual`` (its StepEquations') and assembled_jacobian,
+    with the body step's forward values (F, g1, P1m) taken from the Jacobian blocks' calls,
+    which evaluate them anyway: the same expressions, one evaluation per body instead of
+    two."""
+    J, old, new = _assembly(model, funcs, parts)
+    F, J = ca.graph_substitute([residual, J], old, new)
+    return F, J
+
+
+def _assembly(model, funcs, parts):
+    """(J, [F, G1, P1m] of parts, the same values from the blocks' calls)."""
     body, _, _, _, jfun, _ = funcs
     joints = model.family.local.joints
     N, db, nb2 = model.family.count, body.d, body.n * body.n
@@ -96,12 +120,14 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
     st = parts["step"]
     nzb = st["nz"]
     zc = nzb * N
-    bf = _jacobian_function(st["F"], [(0, 0), (0, 2)], f"{st['F'].name()}_blocks")
+    bf = _jacobian_function(st["F"], [(0, 0), (0, 2)], f"{st['F'].name()}_blocks", (0,))
     bu = _jacobian_function(st["U"], [(0, 0), (0, 2), (1, 0), (1, 2)],
-                            f"{st['U'].name()}_blocks")
+                            f"{st['U'].name()}_blocks", (0, 1))
     hv = parts["hv"]              # the step vector of an open model, else h
     ext = (parts["Fext"],) if "Fext" in parts else ()  # forces between bodies
-    outs = [*bf.map(N)(Z, G, Q, hv, I, *ext), *bu.map(N)(Z, G, Q, hv, I, *ext)]
+    of, ou = bf.map(N)(Z, G, Q, hv, I, *ext), bu.map(N)(Z, G, Q, hv, I, *ext)
+    outs = [*of[:2], *ou[:4]]
+    forward = ([parts["F"], parts["G1"], parts["P1m"]], [of[2], ou[4], ou[5]])
     sp = [bf.sparsity_out(0), bf.sparsity_out(1), *[bu.sparsity_out(k) for k in range(4)]]
 
     def diag(k):
@@ -124,11 +150,10 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
         old, new = _joint_jacobians(jfun[key], K, rows)
         cols = [[joints[j].bodies[s] for j in js] for s in range(K)]
         Ij = ca.DM([joints[j].value for j in js]).T
-        nu_idx = [zc + m + int(rowoff[j]) + r for j in js for r in range(rows)]
-        nu = ca.reshape(parts["z"][nu_idx], rows, len(js))
-        o_old = old.map(len(js))(*[G[:, c] for c in cols], Ij)
+        sl = parts["slots"][key]
+        o_old = old.map(len(js))(*sl["G"], Ij)
         o_old = [o_old] if K == 1 else o_old
-        o_new = new.map(len(js))(*[G1[:, c] for c in cols], Ij, nu, *[V[:, c] for c in cols])
+        o_new = new.map(len(js))(*sl["G1"], Ij, sl["nu"], *sl["V"])
         at = [int(rowoff[j]) for j in js]
         jrows = [range(a, a + rows) for a in at]
 
@@ -139,7 +164,7 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
             tA.append(Entries.blocks(o_old[s], old.sparsity_out(s),
                                      [(b * db, a) for b, a in zip(bs, at)]))
             k = K + K * K + s
-            tB.append(Entries.blocks(-o_new[k], new.sparsity_out(k),
+            tB.append(Entries.blocks(o_new[k], new.sparsity_out(k),
                                      [(b * db, zc + m + a) for b, a in zip(bs, at)]))
             # d(Phi_s^T nu)/d g1 of the joint's bodies, into body b(j, s)'s rows of dP1
             kg.append(([out(K + s * K + t) for t in range(K)],
@@ -152,35 +177,35 @@ def assembled_jacobian(model, funcs, parts) -> ca.MX:
         pg.append(([out(s) for s in range(K)], of_slots(nb2)))
         hg.append(([out(2 * K + K * K + s) for s in range(K)], of_slots(nb2)))
         hv_.append(([out(3 * K + K * K + s) for s in range(K)], of_slots(db)))
-    A = assemble(tA, (db * N, m))
-
-    def neg(t):
-        return Entries(-t.values, t.rows, t.cols)
+    A = Sum(tA, (db * N, m))
 
     def times_A(k, w):                # -(X_body A) at the lambda columns
-        t = block_products(*per_body(outs[k], sp[k], w, db), A, f"{st['F'].name()}_dA{k}")
-        return Entries(-t.values, t.rows, t.cols + zc)
+        t = block_products(*per_body(outs[k], sp[k], w, db), A, f"{st['F'].name()}_dA{k}",
+                           scale=-1.0)
+        return t.shifted(0, zc)
 
-    # the chain rule: block products (mapped SX) and sums of Entries (static gathers)
+    # the chain rule: block products (mapped SX) and sums of Entries (static gathers; the
+    # intermediates as Sum, read by the products' gathers without being materialized)
     cache: dict = {}
     tE: tuple = ([], [], [])           # the joint forces' terms in F, dg1, dP1
     if ext:
         from .family_joint_forces import external_force_terms
         tE = external_force_terms(parts, N, nzc)
-    dG1 = assemble([diag(2), times_A(3, nb2), *tE[1]], (nb2 * N, nzc))
-    tKg = [neg(block_products(xs, ents, dG1, f"joint_kick_dg{q}", cache))
+    dG1 = Sum([diag(2), times_A(3, nb2), *tE[1]], (nb2 * N, nzc))
+    tKg = [block_products(xs, ents, dG1, f"joint_kick_dg{q}", cache, scale=-1.0)
            for q, (xs, ents) in enumerate(kg)]
-    dP1 = assemble([diag(4), times_A(5, db), *tKg, *tB, *tE[2]], (db * N, nzc))
+    dP1 = Sum([diag(4), times_A(5, db), *tKg, *tB, *tE[2]], (db * N, nzc))
     vg, vp = vj.map(N)(G1, P1, I, Hinv, *([] if parts["e1"] is None else [parts["e1"]]))
-    dV = assemble([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, "vel_dg"),
+    dV = Sum([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, "vel_dg"),
                    block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1, "vel_dp")],
                   (db * N, nzc))
 
-    def joint_rows(plan, Y, what, row0):
-        ts = [block_products(xs, ents, Y, f"joint_{what}{q}", cache) for q, (xs, ents) in
-              enumerate(plan)]
-        return [Entries(t.values, t.rows + row0, t.cols) for t in ts]
-    dphi = [Entries(t.values / h, t.rows, t.cols) for t in joint_rows(pg, dG1, "phi", zc)]
-    return assemble([diag(0), times_A(1, nzb), *tE[0], *dphi,
-                     *joint_rows(hg, dG1, "hg", zc + m), *joint_rows(hv_, dV, "hv", zc + m)],
-                    (nzc, nzc))
+    def joint_rows(plan, Y, what, row0, scale=None):
+        ts = [block_products(xs, ents, Y, f"joint_{what}{q}", cache, scale) for q, (xs, ents)
+              in enumerate(plan)]
+        return [t.shifted(row0, 0) for t in ts]
+    dphi = joint_rows(pg, dG1, "phi", zc, h)
+    J = assemble([diag(0), times_A(1, nzb), *tE[0], *dphi,
+                  *joint_rows(hg, dG1, "hg", zc + m), *joint_rows(hv_, dV, "hv", zc + m)],
+                 (nzc, nzc))
+    return (J, *forward)

@@ -82,7 +82,7 @@ def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
     """mx_step_kernels' dict from mapped calls (hpgen.derive.family_map), or None when the
     family does not qualify (several Lagrangian classes, a node velocity that is not
     explicit)."""
-    from .family_jacobian import assembled_jacobian
+    from .family_jacobian import residual_and_jacobian
     from .family_map import mapped, mapped_step, mapped_step_parts
     funcs = _functions(model, tableau, tau, rkmk)
     body, lags, keys, steps, jfun, vel_funs = funcs
@@ -108,7 +108,8 @@ def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
     eqs = out[0]
     col = lambda M: ca.reshape(M, M.numel(), 1)  # noqa: E731
     cast = lambda M: ca.sparsity_cast(ca.vec(M), spcol)  # noqa: E731  (nb^2 x N -> g's)
-    J = col(assembled_jacobian(model, funcs, out[1]))
+    F, J = residual_and_jacobian(model, funcs, eqs.residual, out[1])
+    J = col(J)
     chart_fn, perturb, chart_of = _body_maps(body, tau)
     theta = ca.MX.sym("theta")
     gth = mapped(chart_fn, N)(G, ca.reshape(eqs.chart_step, db, N), theta)
@@ -121,7 +122,7 @@ def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
     parts = _partials(pert.residual, Y, z, s, h, model.open_system)
     parts = ca.substitute(parts, [s, G1ref], [ca.MX.zeros(2 * d), eqs.g1])
     return _step_kernels(eqs, z, gv, p, h, xi_hat, theta, J, cast(eqs.g1), cast(gth),
-                         [col(e) for e in parts])
+                         [col(e) for e in parts], F)
 
 
 def _partials(F, Y, z, s, hv, is_open: bool) -> list:
@@ -131,14 +132,16 @@ def _partials(F, Y, z, s, hv, is_open: bool) -> list:
     return out + [ca.jacobian(F, hv), ca.jacobian(Y, hv)] if is_open else out
 
 
-def _step_kernels(eqs, z, gv, p, h, xi_hat, theta, J, g1, g_theta, partials) -> dict:
+def _step_kernels(eqs, z, gv, p, h, xi_hat, theta, J, g1, g_theta, partials,
+                  F=None) -> dict:
     """{kernel name: (Function, input names, output names)} of the step kernels from the
     family's step equations over MX (hpgen.abi's signatures; g1, g_theta as the contract's
-    flattened g, partials the step_partials outputs Fs, Yz, Ys)."""
+    flattened g, partials the step_partials outputs Fs, Yz, Ys; F: the residual beside J in
+    residual_jacobian, the same values as eqs.residual, default eqs.residual)."""
     step_in = ([z, gv, p, h], ("z", "g", "p", "h"))
     out = {"residual": (step_in, [eqs.residual], ("F",)),
            "jacobian": (step_in, [J], ("J",)),
-           "residual_jacobian": (step_in, [eqs.residual, J], ("F", "J")),
+           "residual_jacobian": (step_in, [eqs.residual if F is None else F, J], ("F", "J")),
            "update": (step_in, [g1, eqs.p1], ("g1", "p1")),
            "guess": (([xi_hat, gv, p, h], ("xi", "g", "p", "h")), [eqs.guess], ("z0",)),
            "margin": (([z, h], ("z", "h")), [eqs.margin], ("m",)),

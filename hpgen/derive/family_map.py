@@ -6,9 +6,9 @@ momenta into P (db x N), body k's unknowns are column k of Z (nzb x N, the first
 entries of z); each body function is called once through ``Function.map`` over the columns,
 each joint function once per row-block text over its instances (the slot bodies' columns
 gathered by one indexing operation each). The impulses sum_j Phi_{j,k}^T lambda_j reach the
-bodies by products with constant selection matrices, and so do the joint forces' stage
-forces (hpgen.derive.family_joint_forces, one mapped call per ``joint:`` entry, an input of
-the body step). The result is the StepEquations of
+bodies by static gathers (hpgen.derive.sparse_blocks.assemble, in the joints' order), the
+joint forces' stage forces (hpgen.derive.family_joint_forces, one mapped call per
+``joint:`` entry, an input of the body step) by products with constant selection matrices. The result is the StepEquations of
 hpgen.derive.family.family_step (same unknowns, rows and outputs), used when every body
 shares one Lagrangian and the node velocity is explicit; else None.
 """
@@ -20,6 +20,7 @@ import casadi as ca
 import numpy as np
 
 from .action import StepEquations
+from .sparse_blocks import Entries, assemble
 
 CALL = {"never_inline": True, "jac_penalty": 0}
 
@@ -67,6 +68,12 @@ def _selection(count: int, cols, N: int):
     return ca.DM(ca.Sparsity.triplet(count, N, list(range(count)), list(cols)), 1.0)
 
 
+def _at_columns(M, sp, cols) -> Entries:
+    """The blocks of M (a map's output, one column block of pattern sp per instance) at the
+    columns cols of a matrix with the blocks' rows: each instance's impulse on its body."""
+    return Entries.blocks(M, sp, [(0, int(c)) for c in cols])
+
+
 def mapped_step(model, funcs, G, P, h, z, xi_hat) -> StepEquations | None:
     """The family step over MX with mapped calls; funcs: hpgen.derive.family._functions;
     G (nb^2 x N), P (db x N), h (1), z (nz) and xi_hat (d) MX."""
@@ -76,8 +83,9 @@ def mapped_step(model, funcs, G, P, h, z, xi_hat) -> StepEquations | None:
 
 def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     """(mapped_step's StepEquations, its intermediates for the block-assembled Jacobian
-    (hpgen.derive.family_jacobian): a dict of MX Z, Q, G1, P1, V (columns per body), the
-    joint groups, the constants I, Hinv and the joint rows' order), or None. An open model's
+    (hpgen.derive.family_jacobian): a dict of MX Z, Q, F, G1, P1m, P1, V (columns per body), the
+    joint groups and their slots' columns of G, G1, V and their nu (by group), the constants
+    I, Hinv and the joint rows' order), or None. An open model's
     h is its step vector hv (hpgen.abi)."""
     from .family_velocity import hessian_inverse
     from .family_open import body_indices, with_env, split_step_vector
@@ -96,24 +104,23 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     groups: dict = {}
     for j, jt in enumerate(joints):
         groups.setdefault((jt.text, jt.index), []).append(j)
-    L, K_ = ca.MX.zeros(db, N), ca.MX.zeros(db, N)
+    kicks, ends = [], []             # the joints' impulses per slot into their bodies' columns
     plan = []
     for key, js in groups.items():
         first = joints[js[0]]
         k, rows = len(first.bodies), len(first.rows)
         fns = _joint_maps(jfun[key], k, rows)
         cols = [[joints[j].bodies[s] for j in js] for s in range(k)]
-        sel = [_selection(len(js), c, N) for c in cols]
         Ij = ca.DM([joints[j].value for j in js]).T
         lam_idx = [int(z.numel() - 2 * m + rowoff[j] + r) for j in js for r in range(rows)]
         lam = ca.reshape(z[lam_idx], rows, len(js))
         nu = ca.reshape(z[[q + m for q in lam_idx]], rows, len(js))
-        imp = mapped(fns[0], len(js))(*[G[:, c] for c in cols], Ij, lam)
+        gs = [G[:, c] for c in cols]
+        imp = mapped(fns[0], len(js))(*gs, Ij, lam)
         imp = [imp] if k == 1 else imp
-        for s in range(k):
-            L = L + ca.mtimes(imp[s], sel[s])
-        plan.append((js, fns, cols, sel, Ij, nu, rows))
-    Q = P - L
+        kicks += [_at_columns(imp[s], fns[0].sparsity_out(s), cols[s]) for s in range(k)]
+        plan.append((key, js, fns, cols, Ij, nu, rows, gs))
+    Q = P - assemble(kicks, (db, N))
     ext: tuple = ()                  # forces between bodies: the bodies' stage forces
     if st["JS"]:
         from .family_joint_forces import mapped_external_forces
@@ -122,19 +129,23 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     Fr = mapped(st["F"], N)(Z, G, Q, hv, I, *ext)
     G1, P1m = mapped(st["U"], N)(Z, G, Q, hv, I, *ext)
     phis, rows_of = [], []
-    for js, fns, cols, sel, Ij, nu, rows in plan:
-        out = mapped(fns[1], len(js))(*[G1[:, c] for c in cols], Ij, nu)
+    slots = {}                       # the slots' columns, each gathered once
+    for key, js, fns, cols, Ij, nu, rows, gs in plan:
+        slots[key] = {"G": gs, "G1": [G1[:, c] for c in cols], "nu": nu}
+        out = mapped(fns[1], len(js))(*slots[key]["G1"], Ij, nu)
         phis.append(out[0] / h)
-        for s in range(len(cols)):
-            K_ = K_ + ca.mtimes(out[1 + s], sel[s])
+        ends += [_at_columns(out[1 + s], fns[1].sparsity_out(1 + s), cols[s])
+                 for s in range(len(cols))]
         rows_of.append((js, rows))
-    P1 = P1m - K_
+    P1 = P1m - assemble(ends, (db, N))
     vel_fn, _, inverse = vel_funs[cls]
     Hinv = mapped(inverse, N)(I) if inverse is not None else ca.DM(np.hstack([
         np.array(hessian_inverse(model, vel_funs[cls], k, None)) for k in range(N)]))
     V = mapped(vel_fn, N)(*with_env([G1, P1, I, Hinv], e1))
-    hidden = [mapped(fns[2], len(js))(*[G1[:, c] for c in cols], Ij, *[V[:, c] for c in cols])
-              for js, fns, cols, sel, Ij, nu, rows in plan]
+    hidden = []
+    for key, js, fns, cols, Ij, nu, rows, gs in plan:
+        slots[key]["V"] = [V[:, c] for c in cols]
+        hidden.append(mapped(fns[2], len(js))(*slots[key]["G1"], Ij, *slots[key]["V"]))
     # joint rows back in file order
     order = [(j, r) for js, rows in rows_of for j in js for r in range(rows)]
     perm = np.argsort([rowoff[j] + r for j, r in order], kind="stable")
@@ -147,8 +158,8 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
                         ca.vertcat(ca.vec(guess), ca.MX.zeros(2 * m)), xi_hat,
                         ca.mmin(margins), ca.vec(charts))
     groups_out = [(key, js) for key, js in groups.items()]
-    parts = {"z": z, "Z": Z, "G": G, "Q": Q, "G1": G1, "P1": P1, "V": V, "h": h, "hv": hv, "e1": e1, "I": I,
-             "Hinv": Hinv, "groups": groups_out, "rowoff": rowoff, "perm": perm, "m": m,
+    parts = {"z": z, "Z": Z, "G": G, "Q": Q, "F": Fr, "G1": G1, "P1m": P1m, "P1": P1, "V": V, "h": h, "hv": hv, "e1": e1, "I": I,
+             "Hinv": Hinv, "groups": groups_out, "slots": slots, "rowoff": rowoff, "perm": perm, "m": m,
              "step": st, "velocity": vel_fn}
     if ext:
         parts.update(Fext=ext[0], external=external)

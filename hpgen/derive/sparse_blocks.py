@@ -3,11 +3,13 @@ with static index arrays, so that the generated code moves each nonzero a bounde
 times and multiplies small dense blocks in straight-line SX code.
 
 - ``Entries``: values (a dense MX column) placed at fixed (row, col) positions;
-- ``assemble``: the sparse MX sum of Entries by static gathers;
+- ``assemble``: the sparse MX sum of Entries by static gathers; ``Sum``: the same sum kept
+  as its terms' sources and an index, read in place by the products' gathers;
 - ``block_products``: C = sum over entities e and slots s of X_{e,s} Y[rows_{e,s}, :] at
-  rows out_e, with each X_{e,s} a map's block output and the product one mapped SX function
-  over the entities (Y's rows gathered per entity into a dense block, padded with zeros to
-  the widest entity).
+  rows out_e (negated or divided by a scalar inside the product), with each X_{e,s} a map's
+  block output and the product one mapped SX function over the entities (Y's rows gathered
+  per entity into a dense block, padded with zeros to the widest entity); its Entries point
+  into the map's output.
 
 All index arrays are computed once when the kernel is built; an entity's columns are those
 where its rows of Y have a structural nonzero, and C's pattern is the structural product's
@@ -26,8 +28,27 @@ class Entries:
     so that no sum or concatenation of differently patterned MX (CasADi's project and
     transpose of whole matrices) is generated."""
 
-    def __init__(self, values, rows, cols):
-        self.values, self.rows, self.cols = values, np.asarray(rows), np.asarray(cols)
+    def __init__(self, values, rows, cols, index=None, zero=None):
+        """``index`` given: the values are values[index] (values an MX column), gathered
+        only where the Entries are used alone; a sum reads them from values directly.
+        ``zero``: a position of values that holds 0 (for the blocks' padding), or None."""
+        self.base, self.rows, self.cols = values, np.asarray(rows), np.asarray(cols)
+        self.zero = zero
+        self.index = (np.arange(len(self.rows)) if index is None
+                      else np.asarray(index, dtype=int))
+        self._values = values if index is None else None
+
+    @property
+    def values(self):
+        if self._values is None:
+            self._values = self.base[self.index.tolist()]
+        return self._values
+
+    def shifted(self, row0: int = 0, col0: int = 0) -> Entries:
+        """The same values at (rows + row0, cols + col0)."""
+        out = Entries(self.base, self.rows + row0, self.cols + col0, self.index, self.zero)
+        out._values = self._values
+        return out
 
     @classmethod
     def of(cls, M, row0: int = 0, col0: int = 0, scale: float = 1.0):
@@ -60,33 +81,93 @@ def assemble(terms, shape):
     its nonzeros (CCS order) are a gather of the first entry at each position from cat (the
     terms' values one after the other), to which the positions with a k-th entry add it
     (k = 2, 3, ...: a gather and an addition over those positions only)."""
-    terms = [t for t in terms if len(t.rows)]
-    if not terms:
-        return ca.MX(*shape)
-    rows = np.concatenate([t.rows for t in terms])
-    cols = np.concatenate([t.cols for t in terms])
-    key = cols * shape[0] + rows
-    order = np.lexsort((np.arange(len(key)), key))  # CCS order, terms' order within a place
-    ks = key[order]
-    first = np.r_[True, ks[1:] != ks[:-1]]
-    place = np.cumsum(first) - 1                  # position of each entry in the pattern
-    rank = np.arange(len(ks)) - np.flatnonzero(first)[place]
-    unique = ks[first]
-    sp = ca.Sparsity.triplet(shape[0], shape[1], (unique % shape[0]).tolist(),
-                             (unique // shape[0]).tolist())
-    if len(terms) == 1 and rank.max() == 0 and np.array_equal(order, np.arange(len(ks))):
-        return ca.sparsity_cast(terms[0].values, sp)
-    cat = ca.vertcat(*[t.values for t in terms])
-    out = cat[order[rank == 0].tolist()]       # the first entry at each position
-    for k in range(1, int(rank.max()) + 1):    # then the positions with a k-th entry
-        sel = rank == k
-        at = place[sel].tolist()
-        out.nz[at] = out.nz[at] + cat[order[sel].tolist()]
-    return ca.sparsity_cast(out, sp)
+    return Sum(terms, shape).mx()
+
+
+class Sum:
+    """The sum of Entries (as ``assemble``) kept as source vectors and an index: the terms'
+    values are read from their own sources (the products' outputs: no gather per term), and
+    the chain rule's intermediates, read only by Gathered blocks, are materialized only
+    where a position repeats (the sums); the zero the blocks pad with is one more entry of
+    the sources' concatenation instead of a copy of the whole matrix."""
+
+    def __init__(self, terms, shape):
+        terms = [t for t in terms if len(t.rows)]
+        self.terms, self.shape = terms, shape
+        self._src: dict = {}
+        if not terms:
+            self._sp = ca.Sparsity(*shape)
+            return
+        rows = np.concatenate([t.rows for t in terms])
+        cols = np.concatenate([t.cols for t in terms])
+        key = cols * shape[0] + rows
+        order = np.lexsort((np.arange(len(key)), key))  # CCS, terms' order within a place
+        ks = key[order]
+        first = np.r_[True, ks[1:] != ks[:-1]]
+        place = np.cumsum(first) - 1                  # position of each entry in the pattern
+        rank = np.arange(len(ks)) - np.flatnonzero(first)[place]
+        unique = ks[first]
+        self._sp = ca.Sparsity.triplet(shape[0], shape[1], (unique % shape[0]).tolist(),
+                                       (unique // shape[0]).tolist())
+        self._plan = (order, place, rank)
+        self.summed = bool(rank.max() > 0)
+        # the distinct sources, and each entry's position in their concatenation
+        bases: dict = {}
+        for t in terms:
+            bases.setdefault(id(t.base), t.base)
+        self._bases = list(bases.values())
+        offset = dict(zip(bases, np.cumsum([0] + [b.nnz() for b in self._bases])))
+        self._at = np.concatenate([offset[id(t.base)] + t.index for t in terms])
+        # a zero some source already holds (a product's), else one appended for the padding
+        self._zero = next((int(offset[id(t.base)] + t.zero) for t in terms
+                           if t.zero is not None), None)
+
+    def sparsity(self):
+        return self._sp
+
+    def nnz(self) -> int:
+        return int(self._sp.nnz())
+
+    def source(self, zero: bool):
+        """(v, index, z): nonzero q of the sum is v[index[q]], v an MX column; ``zero``: z a
+        position of v that holds 0, for the blocks' padding (else None)."""
+        if not self.terms:
+            return ca.MX.zeros(1, 1), np.zeros(0, int), 0
+        if zero not in self._src:
+            order, place, rank = self._plan
+            pad = [ca.MX.zeros(1, 1)] if zero and self._zero is None else []
+            if len(self._bases) == 1 and not pad:
+                cat = self._bases[0]
+            else:
+                cat = ca.vertcat(*self._bases, *pad)
+            z = None if not zero else cat.nnz() - 1 if pad else self._zero
+            at = self._at[order]
+            if not self.summed:
+                self._src[zero] = (cat, at, z)
+            else:
+                ext = [] if z is None else [z]             # the zero becomes the last entry
+                out = cat[at[rank == 0].tolist() + ext]     # the first entry at each position
+                for k in range(1, int(rank.max()) + 1):     # then those with a k-th entry
+                    sel = rank == k
+                    q = place[sel].tolist()
+                    out.nz[q] = out.nz[q] + cat[at[sel].tolist()]
+                self._src[zero] = (out, np.arange(self.nnz()), None if z is None
+                                   else self.nnz())
+        return self._src[zero]
+
+    def mx(self):
+        """The sum as a sparse MX of the pattern."""
+        if not self.terms:
+            return ca.MX(*self.shape)
+        src, index, _ = self.source(False)
+        if src.nnz() == len(index) and np.array_equal(index, np.arange(len(index))):
+            return ca.sparsity_cast(src, self._sp)
+        return ca.sparsity_cast(src[index.tolist()], self._sp)
 
 
 class Gathered:
-    """Y's rows per entity as blocks, shared by the products that read the same rows: block e
+    """Y's rows per entity (Y a sparse MX or a Sum) as blocks, shared by the products that
+    read the same rows: block e
     (kept rows x width, of the pattern ``sparsity`` common to all entities: the union of
     their nonzeros) holds Y[rows[e][s][k], cols[e][c]] at (k, c) for the slots' kept local
     rows k (those with a structural nonzero for some entity; the others are dropped), zeros
@@ -121,9 +202,14 @@ class Gathered:
         cs, rs = np.nonzero(union)            # column-major (CCS) order
         self.sparsity = ca.Sparsity.triplet(self.rows, self.width, rs.tolist(), cs.tolist())
         take = idx[:, union].ravel()
-        yv = ca.sparsity_cast(Y, ca.Sparsity.dense(zero, 1))
-        if (take == zero).any():              # an entity without a union entry: a zero
-            yv = ca.vertcat(yv, ca.MX.zeros(1, 1))
+        pad = bool((take == zero).any())      # an entity without a union entry: a zero
+        if isinstance(Y, Sum):                # gathered from the sum's source directly
+            yv, at, z = Y.source(pad)
+            take = np.where(take == zero, z if pad else 0, at[np.minimum(take, zero - 1)])
+        else:
+            yv = ca.sparsity_cast(Y, ca.Sparsity.dense(zero, 1))
+            if pad:
+                yv = ca.vertcat(yv, ca.MX.zeros(1, 1))
         self.blocks = ca.sparsity_cast(yv[take.tolist()],
                                        ca.horzcat(*[self.sparsity] * len(yrows)))
 
@@ -144,8 +230,11 @@ def _disjoint_slots(Y, yrows) -> bool:
     return True
 
 
-def block_products(xs, entities, Y, name: str, cache: dict | None = None) -> Entries:
-    """Entries of sum_e sum_s X_{e,s} Y[yrows[e][s], :] at rows out[e] (Y a sparse MX).
+def block_products(xs, entities, Y, name: str, cache: dict | None = None,
+                   scale=None) -> Entries:
+    """Entries of sum_e sum_s X_{e,s} Y[yrows[e][s], :] at rows out[e] (Y a sparse MX),
+    negated (scale -1) or divided by the MX scalar ``scale`` inside the mapped product (the
+    same values as negating or dividing its result, without a pass over the entries).
 
     xs[s] = (M, sp): the blocks X_{0,s}, X_{1,s}, ... side by side in M (a map's output),
     each of pattern sp; entities[e] = (out (a rows of C), [yrows[e][s] (b_s rows of Y) per
@@ -180,12 +269,25 @@ def block_products(xs, entities, Y, name: str, cache: dict | None = None) -> Ent
                 prod = prod + ca.mtimes(Xs[s][:, gy.kept[q]],
                                         Yb[int(offs[q]):int(offs[q + 1]), :])
         prods.append(prod)
-    f = ca.Function(name, [*Xs, *Ybs], [ca.horzcat(*prods)], {"never_inline": True})
-    sp_o = f.sparsity_out(0)
+    prod = ca.horzcat(*prods)
+    div = [ca.SX.sym("d")] if isinstance(scale, ca.MX) else []
+    if div:
+        prod = prod / div[0]
+    elif scale is not None:
+        assert scale == -1.0
+        prod = -prod
+    sp_o = prod.sparsity()
+    # the nonzeros (CCS order) and a 0 after them: a zero the sums' padding can point to
+    f = ca.Function(name, [*Xs, *Ybs, *div],
+                    [ca.vertcat(ca.sparsity_cast(prod, ca.Sparsity.dense(sp_o.nnz(), 1)),
+                                ca.SX.zeros(1, 1))], {"never_inline": True})
+    stride = sp_o.nnz() + 1
     where = {(int(r), int(c)): q for q, (r, c) in enumerate(zip(sp_o.row(), sp_o.get_col()))}
-    out_nz = ca.sparsity_cast(f.map(len(entities))(*[M for M, _ in xs],
-                                                   *[gy.blocks for gy in gys]),
-                              ca.Sparsity.dense(sp_o.nnz() * len(entities), 1))
+    args = [*[M for M, _ in xs], *[gy.blocks for gy in gys]]
+    fm = (f.map(f"{name}_map", "serial", len(entities), [len(args)], [])
+          if div else f.map(len(entities)))
+    out_nz = ca.sparsity_cast(fm(*args, *([scale] if div else [])),
+                              ca.Sparsity.dense(stride * len(entities), 1))
     src, rows, cols = [], [], []
     col0 = 0
     for grp, gy in zip(groups, gys):
@@ -197,10 +299,10 @@ def block_products(xs, entities, Y, name: str, cache: dict | None = None) -> Ent
             pat = (xpat.astype(int) @ ypat) > 0
             for c in range(len(ecols)):       # C's entries in column-major order per entity
                 for r in np.flatnonzero(pat[:, c]):
-                    src.append(e * sp_o.nnz() + where[int(r), col0 + c])
+                    src.append(e * stride + where[int(r), col0 + c])
                     rows.append(int(out[r]))
                     cols.append(ecols[c])
         col0 += gy.width
     if not src:
         return Entries(ca.MX(0, 1), [], [])
-    return Entries(out_nz[src], rows, cols)
+    return Entries(out_nz, rows, cols, src, stride - 1)

@@ -76,7 +76,7 @@ def steps():
     return Lazy()
 
 
-@pytest.mark.parametrize("n", [2, 3])
+@pytest.mark.parametrize("n", [2, 3, pytest.param(8, marks=pytest.mark.slow)])
 @pytest.mark.parametrize("tab,rk", SCHEMES)
 def test_residual_jacobian_update_match_the_expansion(steps, n, tab, rk):
     fam, dense = steps[n, tab, rk]

@@ -116,3 +116,86 @@ def test_block_products_equal_the_sparse_product(last):
             X = np.array(ca.densify(ca.DM(sp, xv[s][e * sp.nnz():(e + 1) * sp.nnz()])))
             want[list(out[e])] += X @ Yd[3 * body[e][s]:3 * body[e][s] + 3]
     assert np.abs(got - want).max() <= 1e-14 * np.abs(want).max()
+
+
+def _called(f) -> set:
+    """The names of the functions an MX Function calls (through maps: the mapped ones)."""
+    names = set()
+    for k in range(f.n_instructions()):
+        if f.instruction_id(k) == ca.OP_CALL:
+            g = f.instruction_MX(k).which_function()
+            names.add(g.name())
+            if g.has_function("f"):
+                names.add(g.get_function("f").name())
+    return names
+
+
+@pytest.mark.parametrize("n", [2, 3, pytest.param(8, marks=pytest.mark.slow)])
+@pytest.mark.parametrize("tab,rk", [("stormer-verlet", "truncated"), ("gauss2", "exact")])
+def test_residual_and_jacobian_share_the_forward_evaluation(n, tab, rk):
+    """F and J of residual_and_jacobian are the mapped residual and the assembled J bit for
+    bit, and the body step's forward functions are not called beside their blocks'."""
+    from hpgen.derive.family_jacobian import residual_and_jacobian
+    model = load_model_text(CHAIN.replace("{N: 2,", "{N: %d," % n))
+    funcs = _functions(model, resolve_tableau(tab), "cay", rk)
+    body, steps = funcs[0], funcs[3]
+    st = next(iter(steps.values()))
+    m = sum(len(j.rows) for j in model.family.local.joints)
+    G, P = ca.MX.sym("G", body.n * body.n, n), ca.MX.sym("P", body.d, n)
+    h, z = ca.MX.sym("h"), ca.MX.sym("z", st["nz"] * n + 2 * m)
+    eqs, parts = mapped_step_parts(model, funcs, G, P, h, z, ca.MX.sym("xi", body.d * n))
+    args = [z, G, P, h]
+    F, J = residual_and_jacobian(model, funcs, eqs.residual, parts)
+    shared = ca.Function("shared", args, [F, J])
+    alone = ca.Function("alone", args, [eqs.residual,
+                                        assembled_jacobian(model, funcs, parts)])
+    assert shared.sparsity_out(1) == alone.sparsity_out(1)
+    x = point(n, z.numel(), 5)
+    for a, b in zip(shared(*x), alone(*x)):
+        assert np.array_equal(np.array(a.nonzeros()), np.array(b.nonzeros()))
+    fwd = {st["F"].name() + "_w", st["U"].name() + "_w"}    # their mapped wrappers
+    assert not fwd & _called(shared)
+    assert fwd <= _called(ca.Function("residual", args, [eqs.residual]))
+
+
+@pytest.mark.parametrize("scale", [None, -1.0, "h"])
+def test_block_products_read_a_sum_in_place(scale):
+    """block_products of Y given as a Sum (gathered from the terms' sources, repeated
+    positions added, padding zeros where an entity has no entry) equal those of the same Y
+    materialized, bit for bit, and the dense product; scale -1 negates, an MX divides."""
+    from hpgen.derive.sparse_blocks import Entries, Sum, assemble, block_products
+    rng = np.random.default_rng(7)
+    spx = [ca.Sparsity.lower(3), ca.Sparsity.dense(3, 3)]
+    E = 3
+    Ms = [ca.MX.sym(f"M{s}", ca.horzcat(*[ca.DM(sp, 1.0)] * E).sparsity())
+          for s, sp in enumerate(spx)]
+    # Y (9 x 5) as a sum of two products' Entries and a block, positions overlapping
+    a = ca.MX.sym("a", 6)
+    b = ca.MX.sym("b", ca.horzcat(*[ca.DM(ca.Sparsity.diag(2), 1.0)] * 2).sparsity())
+    terms = [Entries(a, [0, 1, 2, 4, 8, 3], [0, 1, 1, 2, 4, 0], [5, 0, 1, 2, 3, 4]),
+             Entries.blocks(b, ca.Sparsity.diag(2), [(1, 1), (6, 3)]),
+             Entries(a, [0, 7], [0, 4], [1, 2]).shifted(1, 0)]
+    body = [[0, 1], [1, 2], [2, 0]]
+    ents = [(range(3 * e, 3 * e + 3), [range(3 * q, 3 * q + 3) for q in body[e]])
+            for e in range(E)]
+    d = ca.MX.sym("d")
+    sc = d if scale == "h" else scale
+    Ysum = Sum(terms, (9, 5))
+    Ymx = assemble(terms, (9, 5))
+    assert Ysum.sparsity() == Ymx.sparsity()
+    outs = [assemble([block_products(list(zip(Ms, spx)), ents, Y, "bp", scale=sc)], (9, 5))
+            for Y in (Ysum, Ymx)]
+    f = ca.Function("f", [*Ms, a, b, d], [*outs, Ymx])
+    xv = [rng.standard_normal(M.nnz()) for M in Ms]
+    vals = [*[ca.DM(M.sparsity(), v) for M, v in zip(Ms, xv)], rng.standard_normal(6),
+            ca.DM(b.sparsity(), rng.standard_normal(b.nnz())), 0.37]
+    got_sum, got_mx, Yv = f(*vals)
+    assert np.array_equal(np.array(got_sum.nonzeros()), np.array(got_mx.nonzeros()))
+    Yd = np.array(ca.densify(Yv))
+    want = np.zeros((9, 5))
+    for e in range(E):
+        for s, sp in enumerate(spx):
+            X = np.array(ca.densify(ca.DM(sp, xv[s][e * sp.nnz():(e + 1) * sp.nnz()])))
+            want[3 * e:3 * e + 3] += X @ Yd[3 * body[e][s]:3 * body[e][s] + 3]
+    want = -want if scale == -1.0 else want / 0.37 if scale == "h" else want
+    assert np.abs(np.array(ca.densify(got_sum)) - want).max() <= 1e-14 * np.abs(want).max()

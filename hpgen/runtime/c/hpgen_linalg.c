@@ -140,7 +140,7 @@ static void hpgen_lu_apply(const double* A, const int* piv, double* b) {
 static int hpgen_lu_factor_solve(double* A, int* piv, double* b, int keep) {
     double w[HPGEN_SP_NROW], rmax = 0.0, rmin = HUGE_VAL;
     double *V = A + HPGEN_SP_QR, *R = V + HPGEN_SP_NV, *beta = R + HPGEN_SP_NR;
-    const long long* rcol = hpgen_sp_r + 2;
+    const casadi_int* rcol = hpgen_sp_r + 2;
     int c;
     (void)keep;
     if (!hpgen_all_finite(A + HPGEN_J_OFFSET, HPGEN_SP_NJ)) return 1;
