@@ -48,7 +48,7 @@
 #endif
 
 #ifndef casadi_int
-#define casadi_int long long int
+#define casadi_int int
 #endif
 
 /* Add prefix to internal symbols */
