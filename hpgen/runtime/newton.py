@@ -53,12 +53,14 @@ import numpy as np
 
 # status codes and Newton constants: the generated-module contract (hpgen_runtime.h defines
 # the same values)
-from ..abi import (DEFAULT_MAXIT, DEFAULT_TOL, DOMAIN, KEEP_J_FLOOR, NO_CONVERGENCE, NONFINITE,
+from ..abi import (DEFAULT_MAXIT, DEFAULT_TOL, DOMAIN, NO_CONVERGENCE, NONFINITE,
                    OK, REFRESH, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, STALL_MAX, THETA_FLOOR,
                    THETA_MAX)
 # the linear algebra (re-exported: hpgen.runtime.loop, .sparse and the tests import it here)
 from .newton_linalg import (LinearSolver, _isfinite, all_finite, fresh_solve,  # noqa: F401
                             linear_solver, norm_inf)
+# a sparse module's stop tests (re-exported: the tests import them here)
+from .newton_sparse import at_floor, chord_converged, solve_sparse, sparse_converged  # noqa: F401
 
 _INF, _NAN = math.inf, math.nan
 
@@ -135,38 +137,6 @@ class Kernels:
                    pattern)
 
 
-def sparse_converged(it: int, dn: float, dprev: float, zn: float, tol: float,
-                     fresh_j: bool) -> bool:
-    """The extra stop of a module whose Newton matrix is sparse (many bodies), hpgen_newton.c's
-    hpgen_sparse_converged: the error left, estimated from theta = |dz| / |dz_prev|, is
-    <= tol (1 + |z|): after an iterate with a fresh J theta^2 |dz| (quadratic convergence),
-    with theta |dz| <= ROUNDOFF_FLOOR (1 + |z|); with a kept J te/(1 - te) |dz|,
-    te = max(theta, THETA_FLOOR), with |dz| <= ROUNDOFF_FLOOR (1 + |z|).
-    The round-off in dz of a many-body step is itself about tol (1 + |z|) and grows with the
-    number of bodies: the dense modules' tests end there only when |dz| stagnates."""
-    if it < 2:
-        return False
-    th = dn / dprev
-    if not th < 1.0:
-        return False
-    if fresh_j:
-        return th * dn <= ROUNDOFF_FLOOR * (1.0 + zn) and th * th * dn <= tol * (1.0 + zn)
-    if not dn <= ROUNDOFF_FLOOR * (1.0 + zn):
-        return False
-    te = th if th > THETA_FLOOR else THETA_FLOOR
-    return te / (1.0 - te) * dn <= tol * (1.0 + zn)
-
-
-def at_floor(dn: float, zn: float) -> bool:
-    """hpgen_newton.c's hpgen_at_floor: from a step's third iterate on, a sparse module's
-    simplified Newton keeps its J once |dz| <= KEEP_J_FLOOR (1 + |z|) (a rate above
-    THETA_MAX there neither refreshes J nor switches to full Newton; the iterates go on to a
-    stop test): a many-body step's corrections at that level are noise of ratio O(1), which
-    a fresh J cannot contract. The rate of the first two corrections, taken while the
-    start's error dominates, still decides on a refresh."""
-    return dn <= KEEP_J_FLOOR * (1.0 + zn)
-
-
 #: hpgen_newton_sparse.c's HPGEN_SIMPLIFIED_REFRESH and HPGEN_KEPT_J_ITERATES: a sparse module's
 #: simplified Newton stops a J evaluated in the step on the chord's rate bound, and drops a J
 #: kept from earlier steps after a step that took more than KEPT_J_ITERATES iterates with it
@@ -199,11 +169,8 @@ def _iterates(kern: Kernels, z, g, p, hv, opts: NewtonOptions, memory: NewtonMem
     dprev, jacs, F = _INF, 0, None
     full, fresh = not opts.simplified, False
     rate_stop = sparse and SIMPLIFIED_REFRESH
-    if rate_stop:
-        from .newton_sparse import chord_converged
     if full and sparse:
         # a chord iteration within the step with the round-off stall (newton_sparse)
-        from .newton_sparse import solve_sparse
         memory.lu = None
         return solve_sparse(kern, z, g, p, hv, tol, maxit)
     if full and kern.iterate_full is not None:

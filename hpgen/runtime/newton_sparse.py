@@ -13,8 +13,8 @@ Newton's bound); the round-off stall (``stalled``). A pass that wanders (``wande
 """
 from __future__ import annotations
 
-from ..abi import (NO_CONVERGENCE, NONFINITE, OK, ROUNDOFF_FLOOR, SIMPLIFIED_TOL, STALL_MAX,
-                   THETA_MAX)
+from ..abi import (KEEP_J_FLOOR, NO_CONVERGENCE, NONFINITE, OK, ROUNDOFF_FLOOR, SIMPLIFIED_TOL,
+                   STALL_MAX, THETA_FLOOR, THETA_MAX)
 from .newton_linalg import all_finite, fresh_solve, norm_inf
 
 _INF, _NAN = float("inf"), float("nan")
@@ -23,6 +23,38 @@ _INF, _NAN = float("inf"), float("nan")
 CHORD = True
 #: the C runtime's HPGEN_CHORD_RATE_STOP default: a kept J stops on chord_converged
 RATE_STOP = True
+
+
+def sparse_converged(it: int, dn: float, dprev: float, zn: float, tol: float,
+                     fresh_j: bool) -> bool:
+    """The extra stop of a module whose Newton matrix is sparse (many bodies), hpgen_newton.c's
+    hpgen_sparse_converged: the error left, estimated from theta = |dz| / |dz_prev|, is
+    <= tol (1 + |z|): after an iterate with a fresh J theta^2 |dz| (quadratic convergence),
+    with theta |dz| <= ROUNDOFF_FLOOR (1 + |z|); with a kept J te/(1 - te) |dz|,
+    te = max(theta, THETA_FLOOR), with |dz| <= ROUNDOFF_FLOOR (1 + |z|).
+    The round-off in dz of a many-body step is itself about tol (1 + |z|) and grows with the
+    number of bodies: the dense modules' tests end there only when |dz| stagnates."""
+    if it < 2:
+        return False
+    th = dn / dprev
+    if not th < 1.0:
+        return False
+    if fresh_j:
+        return th * dn <= ROUNDOFF_FLOOR * (1.0 + zn) and th * th * dn <= tol * (1.0 + zn)
+    if not dn <= ROUNDOFF_FLOOR * (1.0 + zn):
+        return False
+    te = th if th > THETA_FLOOR else THETA_FLOOR
+    return te / (1.0 - te) * dn <= tol * (1.0 + zn)
+
+
+def at_floor(dn: float, zn: float) -> bool:
+    """hpgen_newton.c's hpgen_at_floor: from a step's third iterate on, a sparse module's
+    simplified Newton keeps its J once |dz| <= KEEP_J_FLOOR (1 + |z|) (a rate above
+    THETA_MAX there neither refreshes J nor switches to full Newton; the iterates go on to a
+    stop test): a many-body step's corrections at that level are noise of ratio O(1), which
+    a fresh J cannot contract. The rate of the first two corrections, taken while the
+    start's error dominates, still decides on a refresh."""
+    return dn <= KEEP_J_FLOOR * (1.0 + zn)
 
 
 def chord_converged(it: int, dn: float, dprev: float, zn: float, tol: float) -> bool:
@@ -73,7 +105,6 @@ def solve_sparse(kern, z, g, p, hv, tol: float, maxit: int, chord: bool = CHORD)
 def solve_pass(kern, z, g, p, hv, tol: float, maxit: int, chord: bool):
     """One pass of hpgen_newton_sparse.c's hpgen_newton_sparse_pass (chord: J once a step, refreshed
     on a poor rate; else J at every iterate): (code, z, iterations, residual, J evaluations)."""
-    from .newton import sparse_converged
     residual, apply = kern.residual, kern.linear.apply
     dprev, d1, jacs, F, kept = _INF, _INF, 0, None, None
     need_j, fresh, contracted = True, False, False
