@@ -128,8 +128,9 @@ def main(argv=None):
                     print(f"compile N = {n} {frames} {tau}:{rkmk}: {type(exc).__name__}: "
                           f"{exc}", flush=True)
                     continue
-                print(f"compile N = {n} {frames} {tau or 'model'}:{rkmk or 'model'}: "
-                      f"{time.perf_counter() - t0:.1f} s", flush=True)
+                chart = f" {tau}:{rkmk}" if tau else ""
+                print(f"compile N = {n} {frames}{chart}: {time.perf_counter() - t0:.1f} s",
+                      flush=True)
         for start in args.start:
             qpos, qvel = chain.named_joint_state(spec, start)
             s0 = chain.from_joint(spec, qpos, qvel)
