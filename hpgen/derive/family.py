@@ -48,8 +48,8 @@ from ..groups import group_from_spec
 from .action import StepEquations, step_equations
 from .family_open import with_env, body_force_function, body_index, index_symbol, \
     open_layout, product_force, split_step_vector
-from .family_joint_forces import external_forces, joint_force_functions, \
-    joint_stage_functions, stage_force, stage_function
+from .family_joint_forces import external_forces, force_components, \
+    joint_force_functions, joint_stage_functions, stage_force, stage_function
 from .family_velocity import hessian_inverse, momentum_functions, node_velocity, quadratic
 from .lagrangian import to_casadi
 
@@ -188,7 +188,8 @@ def _functions(model, tableau, tau: str, rkmk: str):
     fb = body_force_function(model, body)
     jforces = joint_force_functions(model, body) if lay is not None else []
     # with forces between bodies, a body's step takes its external stage forces fext
-    fx = ca.SX.sym("fext", tableau.stages * db) if jforces else None
+    comps = force_components(model) if jforces else ()
+    fx = ca.SX.sym("fext", tableau.stages * len(comps)) if jforces else None
     steps = {}
     for c, (cls, (lag_in, _)) in enumerate(sorted(lags.items())):
         if lay is None:
@@ -198,16 +199,17 @@ def _functions(model, tableau, tau: str, rkmk: str):
             P, u = hb[2 + lay[0]:], hb[2:2 + lay[0]]
             force = None if fb is None else (
                 lambda G, X, tt: fb(ca.vec(G), X, ib, ca.vertcat(tt, u, P)))
-            if jforces:
-                force = stage_force(fb, fx, ib, u, P, db)
+            if jforces:      # a body force of zeros (joint forces only) is left out
+                own = fb if any(e != 0 for e in model.family.local.force.exprs) else None
+                force = stage_force(own, fx, ib, u, P, db, comps)
             e = step_equations(body, lambda G, X, tt, f=lag_in: f(G, X, ib, ca.vertcat(tt, P)),
                                tableau, tau, rkmk, reduced, gb, pb, h_, hb[1], force)
         args = [e.z, gbv, pb, hb, ib] + ([fx] if jforces else [])
         S = stage_function(e, body, tableau, tau, gb, hb, h_, f"body{c}_stages") \
             if jforces else None
         steps[cls] = dict(
-            S=S, joint_forces=jforces,
-            JS=joint_stage_functions(model, tableau, S, jforces) if jforces else [],
+            S=S, joint_forces=jforces, FC=comps,
+            JS=joint_stage_functions(model, tableau, S, jforces, comps) if jforces else [],
             nz=e.z.numel(), blocks=e.blocks,
             F=ca.Function(f"body{c}_residual", args, [e.residual], CALL),
             U=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1], CALL),

@@ -5,11 +5,17 @@ outputs scattered to the bodies: called per joint and per stage in family_step's
 
 The discrete Lagrange-d'Alembert force of stage s (hpgen.derive.action) is evaluated at the
 unvaried stage state (G^s = g_k tau(h Theta^s), Xi^s, t_k + c_s h). A body's step function
-takes, besides its own force, an external stage force ``fext`` (s d: stage 0's d entries
-first) added to it; ``stage_function`` gives the body's stage states from its unknowns (the
-eliminations of hpgen.derive.action, read off the unknowns' block labels), so that body b's
-fext is sum over the joints touching b of the joint function at its bodies' stage states.
-The Jacobian couples the unknowns of the bodies a joint force touches.
+takes, besides its own force, an external stage force ``fext`` added to it; ``stage_function``
+gives the body's stage states from its unknowns (the eliminations of hpgen.derive.action,
+read off the unknowns' block labels), so that body b's fext is sum over the joints touching
+b of the joint function at its bodies' stage states. The Jacobian couples the unknowns of
+the bodies a joint force touches.
+
+fext holds only the force components (indices into the body's d) that some joint force can
+make nonzero (``force_components``: its expression is not identically 0), c of them per
+stage, stage 0's c entries first (s c); the others are structural zeros of the body step.
+A damper's couple (torque only) thus leaves the body step's terms in the linear force out:
+they are most of its derivative code through the Gauss stages' dtau factors.
 """
 from __future__ import annotations
 
@@ -55,17 +61,30 @@ def joint_force_functions(model, body) -> list:
     return out
 
 
-def stage_force(fb, fext, index, u, P, db: int):
+def force_components(model) -> tuple:
+    """The components (0..d-1, ascending) of the body's force that some joint force of
+    ``model`` can make nonzero (an expression not identically 0 in some slot); (0,) when
+    none can."""
+    found = {k for jf in model.family.local.force.joints for row in jf.exprs
+             for k, e in enumerate(row) if e != 0}
+    return tuple(sorted(found)) or (0,)
+
+
+def stage_force(fb, fext, index, u, P, db: int, comps: tuple):
     """The body's stage force for hpgen.derive.action.step_equations: its own force ``fb``
-    (or none) plus stage s's slice of ``fext``; step_equations calls it once per stage, in
-    order."""
+    (or none) plus stage s's entries of ``fext`` at the components ``comps``
+    (force_components); step_equations calls it once per stage, in order."""
     calls: list = []
+    c = len(comps)
 
     def force(G, X, tt):
         s = len(calls)
         calls.append(s)
         own = 0 if fb is None else fb(ca.vec(G), X, index, ca.vertcat(tt, u, P))
-        return own + fext[s * db:(s + 1) * db]
+        f = ca.SX.zeros(db)
+        for j, k in enumerate(comps):
+            f[k] = fext[s * c + j]
+        return own + f
     return force
 
 
@@ -95,13 +114,13 @@ def stage_function(e, body, tableau, tau: str, g, hv, h, name: str):
 
 
 def external_forces(model, tableau, st, zs, Gk, hv, S) -> list:
-    """Body k's fext (s d) for k = 0..N-1 (module docstring): zs body k's unknowns, Gk its
+    """Body k's fext (s c) for k = 0..N-1 (module docstring): zs body k's unknowns, Gk its
     g block, hv the step vector, S the symbol class (SX or MX)."""
-    db = st["S"].size1_out(1)
+    comps = list(st["FC"])
     s, N, m = tableau.stages, len(zs), len(model.inputs)
     h, t, u, P = hv[0], hv[1], hv[2:2 + m], hv[2 + m:]
     states = [st["S"](zs[k], ca.vec(Gk[k]), hv) for k in range(N)]
-    fext = [[S.zeros(db) for _ in range(s)] for _ in range(N)]
+    fext = [[S.zeros(len(comps)) for _ in range(s)] for _ in range(N)]
     for fun, jf in st["joint_forces"]:
         for i, bodies in jf.instances:
             for q in range(s):
@@ -109,7 +128,7 @@ def external_forces(model, tableau, st, zs, Gk, hv, S) -> list:
                 out = fun(*args, i, ca.vertcat(t + float(tableau.c[q]) * h, u, P))
                 out = [out] if len(bodies) == 1 else out
                 for slot, b in enumerate(bodies):
-                    fext[b][q] = fext[b][q] + out[slot]
+                    fext[b][q] = fext[b][q] + out[slot][comps]
     return [ca.vertcat(*f) for f in fext]
 
 
@@ -135,17 +154,18 @@ def joint_power_force(model, funs, Gp, Xp, tt, hv, nb: int, db: int, N: int) -> 
 #
 # Each joint force is folded with the stage states of its slot bodies into one SX function of
 # the slots' unknowns and g blocks, (Z_0, vec g_0, ..., Z_(K-1), vec g_(K-1), hv, i) ->
-# (fext_0, ..., fext_(K-1)) (s d each, stage 0's d entries first), called once through a map
+# (fext_0, ..., fext_(K-1)) (s c each, module docstring), called once through a map
 # over the joints of its range. Body b's fext is the sum over the joints and slots that hold b
 # (products with constant selection matrices); its derivative d fext_b / d Z_t is one block
 # per (joint, slot, slot), placed at (b's fext rows, t's unknowns) of dFext/dz, which enters J
 # through the body step's own blocks dF/dfext, dg1/dfext, dp1/dfext (block products).
 
 
-def joint_stage_functions(model, tableau, S, jforces) -> list:
+def joint_stage_functions(model, tableau, S, jforces, comps: tuple) -> list:
     """[(Function(Z_0, vec g_0, ..., hv, i) -> (fext_0, ...), JointForce), ...]: the joint
     forces ``jforces`` (joint_force_functions) at the stage states that the body stage
-    function ``S`` (stage_function) gives from each slot's unknowns."""
+    function ``S`` (stage_function) gives from each slot's unknowns, their components
+    ``comps`` (force_components) per stage."""
     m = len(model.inputs)
     nzb, nb2, H, s = S.size1_in(0), S.size1_in(1), S.size1_in(2), tableau.stages
     out = []
@@ -161,7 +181,7 @@ def joint_stage_functions(model, tableau, S, jforces) -> list:
             args = [v for G, X in states for v in (G[:, q], X[:, q])]
             res = fun(*args, i, ca.vertcat(hv[1] + float(tableau.c[q]) * hv[0], u, P))
             for slot, f in enumerate([res] if K == 1 else res):
-                rows[slot].append(f)
+                rows[slot].append(f[list(comps)])
         ins = [v for Z, g in zip(Zs, gs) for v in (Z, g)]
         out.append((ca.Function(f"joint_force{c}_stages", [*ins, hv, i],
                                 [ca.vertcat(*r) for r in rows], CALL), jf))
@@ -178,7 +198,7 @@ def _instance_args(jf, Z, G):
 
 
 def mapped_external_forces(stage_funs, Z, G, hv, N: int):
-    """(Fext (s d x N), plan): every body's external stage forces from the mapped joint
+    """(Fext (s c x N), plan): every body's external stage forces from the mapped joint
     functions (joint_stage_functions) at the bodies' unknowns Z (nzb x N) and g blocks G;
     plan: [(Function, slot columns, slot arguments, i), ...] for external_force_terms."""
     from .family_map import _selection, mapped
