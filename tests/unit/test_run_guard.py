@@ -383,3 +383,17 @@ def test_hpgen_run_says_how_many_steps_were_re_solved(tmp_path, cache_dir, capsy
     monkeypatch.setattr(chunked_output, "record_to_npz", counted)
     assert main(argv) == 0
     assert "\n  2 steps re-solved by the wrong-root guard" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("backend", ["c", "python"])
+def test_count_reaches_section_crossings(backend):
+    from hpgen.runtime.engine import RunArgs
+    from hpgen.runtime.sections import Crossings
+    scene = {"h": H, "steps": 20, "initial": {"g": "identity", "xi": [0.2]}, "section": "mu[0]"}
+    integ = hpgen.compile({**MODEL, "scene": scene}, backend=backend)
+    b, run, _ = _started(integ)
+    snap, eng = b.snapshot(run), integ.engine
+    s = eng.prepare(RunArgs(np.eye(2), H, 80, xi0=[0.2], newton=OPTS))
+    bad, ref = (Crossings(eng, s, None, 100).run(eng.restore(state))
+                for state in (_misleading(snap, _rows_of(integ)), snap))
+    assert (bad.guarded, ref.guarded) == (1, 0) and len(bad) == len(ref) >= 1
