@@ -157,7 +157,7 @@ def hpgen_rows(integ, label, spec, frames, g0, xi0, hs, T, every, ref, newton=No
         row = dict(runner=label, h=h, steps=steps, cost=r.cpu_seconds / T, wall=r.seconds / T,
                    observe=r.observe_seconds / T, band=band(r.energy, spec),
                    band_abs=band_abs(r.energy), iterations_per_step=r.iterations / steps,
-                   gaps=r.gaps.tolist(), stable=True)
+                   guarded=r.guarded, gaps=r.gaps.tolist(), stable=True)
         if ref is not None:
             n1 = int(round(1.0 / h))
             tr = integ.simulate(g0, 1.0 / n1, n1, xi0=xi0, every=n1, newton=newton)

@@ -68,7 +68,8 @@ def chain_run(label, n, opts, h, T, cflags):
                             frames="centre")
         E = r.energy
         out = (f"band {np.abs(E - E[0]).max() / abs(E[0]):.2e}  joints "
-               f"{r.gaps[0]:.1e} / {r.gaps[1]:.1e}  {r.iterations / r.steps:.2f} it/step")
+               f"{r.gaps[0]:.1e} / {r.gaps[1]:.1e}  {r.iterations / r.steps:.2f} it/step, "
+               f"the result's guarded {r.guarded}")
     except hpgen.HpgenError as e:
         out = f"failed: {str(e).splitlines()[0][:90]}"
     q, m = guard_log(integ)

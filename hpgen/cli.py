@@ -225,8 +225,16 @@ def cmd_run(args) -> int:
     if summary["momentum_max_change"] is not None and not model.forced:
         print(_momentum_line(model, summary["momentum_max_change"], directions,
                              summary["conserved_max_change"]))
+    if summary["guarded"]:
+        print(_guard_line(summary["guarded"]))
     _plot_run(path, args, integ)
     return 0
+
+
+def _guard_line(n) -> str:
+    """The run's steps the wrong-root guard solved again (docs/numerics.md sec. 8), when any."""
+    return (f"  {n} step{'s' if n != 1 else ''} re-solved by the wrong-root guard (its root "
+            "jumped away from the predictor's offsets)")
 
 
 def _plot_run(path, args, integ=None):
@@ -282,10 +290,11 @@ def _momentum_line(model, change, directions, conserved_change) -> str:
 def _run_sections(integ, model, sc, h, steps, out, args, u=None) -> int:
     """``hpgen run`` of a scene with a ``section``: only the crossings are kept (t, g, mu,
     step; see hpgen.runtime.trajectory.SectionCrossings), saved like a trajectory."""
+    from .runtime import counters
     from .runtime.trajectory import npz_path, run_metadata, write_npz
     def save(cr, error):
         write_npz(path, {"t": cr.t, "g": cr.g, "mu": cr.mu, "step": cr.step,
-                         **run_metadata(integ, h, 1, error is not None, cr.newton_iterations,
+                         **run_metadata(integ, h, 1, error is not None, counters.of(cr),
                                         error)})
 
     t0 = time.perf_counter()
@@ -308,6 +317,8 @@ def _run_sections(integ, model, sc, h, steps, out, args, u=None) -> int:
           + (f"{len(cr)} crossings of the section {sc.section.text!r}" if sc.section else
              f"{len(cr)} samples of the section every_t = {sc.section_every_t:g}")
           + f" -> {path}")
+    if cr.guarded:
+        print(_guard_line(cr.guarded))
     _plot_run(path, args)
     return 0
 

@@ -15,9 +15,11 @@ from types import SimpleNamespace
 import numpy as np
 
 from .errors import ModelError
+from .runtime.counters import NAMES as COUNTER_NAMES
 
-#: arrays of a saved run that are metadata, not records
-META_KEYS = ("h", "every", "partial", "newton_iterations", "error", "module", "hash", "group",
+#: arrays of a saved run that are metadata, not records (the counters: newton_iterations,
+#: guarded, hpgen.runtime.counters; a file of an older hpgen may lack some)
+META_KEYS = ("h", "every", "partial", *COUNTER_NAMES, "error", "module", "hash", "group",
              "forced")
 
 

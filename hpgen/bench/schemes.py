@@ -87,6 +87,7 @@ def hpgen_points(pb, y_ref, schemes, hs, timing, samples, cache_dir=None, log=No
                 return pb.pack(tr.g[-1], tr.mu[-1]), {
                     "steps": steps, "notes": [
                         f"Newton it/step {tr.newton_iterations / steps:.2f}",
+                        f"wrong-root guard re-solves {tr.guarded}",
                         f"simulate prologue (steps = 0) {pro * 1e6:.0f} us"]}
             out.append(measure(pb, y_ref, p, timing, timed, sampled))
     return out

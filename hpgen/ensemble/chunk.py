@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import ArgumentError, ConvergenceError, ModelError
+from ..runtime import counters
 from .members import Members
 
 STATE = ("g", "mu")
@@ -44,13 +45,14 @@ def run_chunk(integ, m: Members, start: int, steps: int, every: int, record,
               threads: int = 1) -> dict:
     """Run the members ``m`` (global indices start, start + 1, ...): a dict of arrays,
     ``arrays`` {name: (b, K, *shape)}, ``failed`` (b,) bool, ``error`` (b,) str,
-    ``samples`` (b,) samples kept, ``steps_done`` (b,), ``newton_iterations`` (b,)."""
+    ``samples`` (b,) samples kept, ``steps_done`` (b,), and per counter of
+    hpgen.runtime.counters (``newton_iterations``, ``guarded``) its (b,) totals."""
     rows, names, shapes = layout(integ, record)
     b, K = len(m), steps // every + 1
     out = {"arrays": {r: np.full((b, K) + shapes[r], np.nan) for r in names},
            "failed": np.zeros(b, dtype=bool), "error": np.full(b, "", dtype=object),
            "samples": np.zeros(b, dtype=np.int64), "steps_done": np.zeros(b, dtype=np.int64),
-           "newton_iterations": np.zeros(b, dtype=np.int64)}
+           **{name: np.zeros(b, dtype=np.int64) for name in counters.NAMES}}
     for hv in dict.fromkeys(m.h.tolist()):            # distinct h, in member order
         idx = np.flatnonzero(m.h == hv)
         try:
@@ -92,7 +94,9 @@ def _store(out, i, run, names, steps):
     K = len(run.t)
     for r in names:
         out["arrays"][r][i, :K] = run[r] if hasattr(run, "arrays") else getattr(run, r)
-    out["samples"][i], out["newton_iterations"][i] = K, run.newton_iterations
+    out["samples"][i] = K
+    for name, n in counters.of(run).items():
+        out[name][i] = n
     out["steps_done"][i] = steps if run.error is None else run.error.step
     if run.error is not None:
         out["failed"][i], out["error"][i] = True, str(run.error)

@@ -104,6 +104,10 @@ def cmd_sweep(args, compile_options) -> int:
           f"{failed} failed -> {out}")
     for i in res.failed.nonzero()[0][:5]:
         print(f"  member {i}: {res.error[i]}")
+    guarded = res.guarded.nonzero()[0]
+    if len(guarded):
+        print(f"  {int(res.guarded.sum())} steps re-solved by the wrong-root guard, in "
+              f"{len(guarded)} members (SweepResult.guarded)")
     return 0
 
 

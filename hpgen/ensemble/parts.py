@@ -4,10 +4,12 @@ The folder holds ``sweep.json`` (the sweep's fingerprint: module content hash, i
 every, record, chunking) and ``chunk-<lo>-<hi>.npz``, one per completed chunk of members
 [lo, hi), written atomically. Each part carries its member range (``part_range``) and the
 fingerprint next to the chunk's arrays (``a:<record>`` (hi - lo, K, *shape) and the
-per-member ``failed``, ``error``, ``samples``, ``steps_done``, ``newton_iterations``). A part
-is used only when it is readable, its range and fingerprint are this chunk's and this
-sweep's, and every array has the expected shape and kind; any other part (damaged, renamed,
-swapped with another, from another sweep, or a foreign .npz) is run again and overwritten.
+per-member ``failed``, ``error``, ``samples``, ``steps_done`` and the run's counters
+``newton_iterations``, ``guarded`` (hpgen.runtime.counters; one that a part of an older
+hpgen lacks reads as 0)). A part is used only when it is readable, its range and fingerprint
+are this chunk's and this sweep's, and every array has the expected shape and kind; any
+other part (damaged, renamed, swapped with another, from another sweep, or a foreign .npz)
+is run again and overwritten.
 
 While a sweep uses the folder it holds an exclusive lock on it (flock on the directory): a
 sweep of another process on the same folder is refused (ModelError) instead of racing the
@@ -28,12 +30,13 @@ import numpy as np
 
 from ..errors import ModelError
 from ..files import atomic_output
+from ..runtime import counters
 
 FINGERPRINT = "sweep.json"
-CHUNK_KEYS = ("failed", "error", "samples", "steps_done", "newton_iterations")
+CHUNK_KEYS = ("failed", "error", "samples", "steps_done", *counters.NAMES)
 #: the kind of each per-member array of a part (numpy dtype kinds)
 _KINDS = {"failed": "b", "error": "U", "samples": "iu", "steps_done": "iu",
-          "newton_iterations": "iu"}
+          **dict.fromkeys(counters.NAMES, "iu")}
 
 
 class Checkpoint:
@@ -94,8 +97,9 @@ class Checkpoint:
             return None
         if not self._valid(bounds, data):
             return None
+        zeros = np.zeros(bounds[1] - bounds[0], dtype=np.int64)
         return {"arrays": {k[2:]: v for k, v in data.items() if k.startswith("a:")},
-                **{k: data[k] for k in CHUNK_KEYS}}
+                **{k: data.get(k, zeros) for k in CHUNK_KEYS}}
 
     def _valid(self, bounds, data: dict) -> bool:
         """The part's range, fingerprint, keys, shapes and kinds are this chunk's."""
@@ -107,6 +111,8 @@ class Checkpoint:
             return False
         for k in CHUNK_KEYS:
             a = data.get(k)
+            if a is None and k in counters.NAMES:         # (a part of an older hpgen)
+                continue
             if a is None or a.shape != (b,) or a.dtype.kind not in _KINDS[k]:
                 return False
         arrays = {k[2:]: v for k, v in data.items() if k.startswith("a:")}

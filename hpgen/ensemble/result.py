@@ -4,7 +4,8 @@ Dimensions: ``member`` (input order, 0..B-1), ``time`` (sample k, at global step
 coordinate ``step``), and the sample's own axes: ``row``, ``col`` for g (n x n), ``component``
 for mu, xi, momentum (d). ``t`` (member, time) = step * h[member]. Per member: ``failed``,
 ``error`` (the error's text, "" when it completed), ``samples`` (samples kept: after a failure
-the rest are NaN), ``steps_done``, ``newton_iterations``.
+the rest are NaN), ``steps_done``, and the run's counters ``newton_iterations``, ``guarded``
+(hpgen.runtime.counters; a sweep saved by an older hpgen without one reads it as 0).
 What tells the members apart is a coordinate of the member dimension: ``h``, the initial
 state (``g0`` and ``xi0`` or ``mu0``) and each swept runtime parameter under its own name
 (``param_<name>`` if the name is taken by a record; the attribute ``params`` lists them,
@@ -28,6 +29,7 @@ import numpy as np
 
 from .. import __version__
 from ..errors import ModelError
+from ..runtime import counters
 
 SUFFIXES = (".npz", ".zarr", ".nc")
 _SCALE_HINT = "install the scale extra: pip install 'hpgen[scale]'"
@@ -36,8 +38,9 @@ _SCALE_HINT = "install the scale extra: pip install 'hpgen[scale]'"
 @dataclass(frozen=True, eq=False)
 class SweepResult:
     """arrays {name: (B, K, *shape)}; step (K,); h, failed, error, samples, steps_done,
-    newton_iterations (B,); initial {"g0": (B, n, n), "xi0" or "mu0": (B, d)}; attrs;
-    params {runtime parameter name: (B, *shape)} of a params sweep ({} without)."""
+    newton_iterations, guarded (steps re-solved by the wrong-root guard) (B,); initial
+    {"g0": (B, n, n), "xi0" or "mu0": (B, d)}; attrs; params {runtime parameter name:
+    (B, *shape)} of a params sweep ({} without)."""
     arrays: dict
     step: np.ndarray
     h: np.ndarray
@@ -47,8 +50,14 @@ class SweepResult:
     steps_done: np.ndarray
     newton_iterations: np.ndarray
     initial: dict
+    #: (B,); None (a result made without it) is zeros
+    guarded: np.ndarray | None = None
     attrs: dict = field(default_factory=dict)
     params: dict = field(default_factory=dict)
+
+    def __post_init__(self):
+        if self.guarded is None:
+            object.__setattr__(self, "guarded", np.zeros(len(self.h), dtype=np.int64))
 
     def __len__(self) -> int:
         return len(self.h)
@@ -128,7 +137,7 @@ class SweepResult:
         return path
 
 
-_PER_MEMBER = ("failed", "error", "samples", "steps_done", "newton_iterations")
+_PER_MEMBER = ("failed", "error", "samples", "steps_done", *counters.NAMES)
 
 
 def _axes(shape) -> tuple:
@@ -180,7 +189,7 @@ def concat(chunks: list, step, h, initial, attrs, params=None) -> SweepResult:
     error = np.array(cat("error"), dtype=str)
     return SweepResult(arrays=arrays, step=step, h=h, failed=cat("failed"), error=error,
                        samples=cat("samples"), steps_done=cat("steps_done"),
-                       newton_iterations=cat("newton_iterations"), initial=initial,
+                       **{name: cat(name) for name in counters.NAMES}, initial=initial,
                        attrs={**attrs, "hpgen_version": __version__},
                        params={k: np.asarray(v) for k, v in (params or {}).items()})
 
@@ -217,6 +226,9 @@ def load(path) -> SweepResult:
 
 def from_arrays(data: dict, attrs: dict) -> SweepResult:
     """A SweepResult from the named arrays and attributes of a saved sweep."""
+    # (a counter a sweep of an older hpgen lacks: zeros)
+    B = len(data["h"]) if "h" in data else 0
+    data = {**{name: np.zeros(B, dtype=np.int64) for name in counters.NAMES}, **data}
     missing = [k for k in ("step", "h", "g0", *_PER_MEMBER) if k not in data]
     if missing or ("xi0" in data) == ("mu0" in data):
         raise ModelError("not a saved hpgen sweep (no " + (missing[0] if missing else "xi0 / "
@@ -225,7 +237,6 @@ def from_arrays(data: dict, attrs: dict) -> SweepResult:
     coord_names = [c for c in str(attrs.pop("params", "")).split(",") if c]
     kind = "xi0" if "xi0" in data else "mu0"
     fixed = {"step", "h", "g0", kind, "t", "member", *_PER_MEMBER, *coord_names}
-    B = len(data["h"])
     arrays = {k: np.asarray(a) for k, a in data.items() if k not in fixed}
     bad = [k for k, a in arrays.items() if a.ndim < 2 or a.shape[:2] != (B, len(data["step"]))]
     if bad:
@@ -240,7 +251,7 @@ def from_arrays(data: dict, attrs: dict) -> SweepResult:
                        error=np.asarray(data["error"]).astype(str),
                        samples=np.asarray(data["samples"]),
                        steps_done=np.asarray(data["steps_done"]),
-                       newton_iterations=np.asarray(data["newton_iterations"]),
+                       **{name: np.asarray(data[name]) for name in counters.NAMES},
                        initial={"g0": np.asarray(data["g0"]), kind: np.asarray(data[kind])},
                        attrs=attrs, params=params)
 

@@ -14,7 +14,7 @@ holds:
   record arrays of the chunk (``np.load`` reads them; ``load_partial`` joins them), and,
   under keys ``state.*``, the run's whole state after the chunk (the backend's snapshot:
   for C the bytes of its ``hpgen_run``: state, Newton start and memory, steps done) with the
-  running totals (chunks, steps done, samples, Newton iterations, energy / momentum change)
+  running totals (chunks, steps done, samples, the run's counters, energy / momentum change)
   and, for a run that records work, the work accumulated so far (hpgen.runtime.work).
 
 Each chunk file is written to a temp file and renamed (atomic): a chunk is committed when
@@ -69,7 +69,8 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     conserved_max_change (max_k |V (m_k - m_0)| per row of ``directions`` V (q, d), the
     conserved directions of hpgen.analysis.symmetry, if given and momentum is recorded),
     balance_max_change (max |(E - W) - (E_0 - W_0)|, a forced model's energy-work balance,
-    if energy and work are recorded).
+    if energy and work are recorded), and the run's counters by name (newton_iterations,
+    guarded: hpgen.runtime.counters; a resumed run's over both runs).
 
     resume: continue the interrupted run in ``partial_dir(out)`` (a fresh run if there is
     none); without it such a folder is refused (ModelError naming it and how to resume).
@@ -131,20 +132,21 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
             if prog.chunks:
                 msg = f"interrupted after {prog.k} of {steps} steps"
                 folder.assemble(path, prog, run_metadata(integ, h, every, True,
-                                                         prog.iterations, msg))
+                                                         prog.counts, msg))
                 saved = path
             else:
                 folder.keep = False
             exc.saved = (saved, prog.samples, prog.k, parts if folder.keep else None)
             raise
         folder.assemble(path, prog, run_metadata(integ, h, every, error is not None,
-                                                 prog.iterations, error))
+                                                 prog.counts, error))
         folder.keep = False
     summary = {"samples": prog.samples, "steps": prog.k, "resumed_at": resumed_at,
                "energy_max_change": prog.change.get("energy"),
                "momentum_max_change": prog.change.get("momentum"),
                "conserved_max_change": prog.change.get("conserved"),
-               "balance_max_change": prog.change.get("balance"), "removed": removed}
+               "balance_max_change": prog.change.get("balance"), "removed": removed,
+               **prog.counts}
     if error is not None:
         error.saved = (path, prog.samples)
         raise error

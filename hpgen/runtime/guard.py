@@ -3,6 +3,12 @@ hpgen_guard_resolve; docs/numerics.md sec. 8) in Python, the same operations: a 
 root's offset z - G jumps away from the run's offsets (guard_ratio > abi.GUARD_RATIO) is
 solved again from G, the start of a run without history, and the root nearer the offsets
 taken. Used by hpgen.runtime.loop's run step. numpy-free: lists of Python floats.
+
+The rule needs three offsets (the ratio's scale is their first and second difference), so a
+run's first three steps are not guarded: step 0 starts from the guess kernel (no offset),
+steps 1 and 2 are predicted from one and two offsets; from step 3 on every accepted step is
+(in a composed run, each substep on its own offsets). The count of re-solved steps reaches
+the results as ``guarded`` (hpgen.runtime.counters).
 """
 from __future__ import annotations
 

@@ -172,7 +172,7 @@ def _run_step(kern: Kernels, run: Run, hv, opts: NewtonOptions, full: NewtonOpti
     step j's start; the start is G_k plus the polynomial through the last m offsets dz
     extrapolated one step (predict). Guard: a step predicted from three or more offsets whose
     root's offset jumps away from them (guard_ratio > GUARD_RATIO) is solved again from G
-    (hpgen.runtime.guard)."""
+    (hpgen.runtime.guard: steps 0, 1, 2 are not), counted in st["guarded"]."""
     if run.inputs is not None:           # an open module: hv = [h, t_k, u_k, params]
         hv = run.inputs.hv(hv[0], run.k)
     if kern.explicit:

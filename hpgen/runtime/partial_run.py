@@ -3,7 +3,8 @@ run's running totals: ``PartialFolder`` creates it (or takes it over to resume),
 against a second writer, commits one chunk file per completed chunk (written to a temp file
 and renamed: a chunk is committed when its file exists), streams the chunks into the final
 ``.npz`` and removes the folder unless the run was interrupted; ``Progress`` holds the
-totals (chunks, steps, samples, Newton iterations, first values and max changes of energy,
+totals (chunks, steps, samples, the run's counters (hpgen.runtime.counters: Newton
+iterations, steps re-solved by the guard), first values and max changes of energy,
 momentum, conserved directions and a forced model's energy-work balance) saved in each
 chunk next to the backend's snapshot of the run. numpy and the standard library only.
 """
@@ -21,6 +22,7 @@ import numpy as np
 
 from ..errors import ModelError
 from ..files import atomic_output, write_file
+from . import counters
 from .checked_npz import is_intact
 from .trajectory import write_npz
 
@@ -54,15 +56,17 @@ def interrupts_deferred():
 
 
 class Progress:
-    """Running totals of a chunked run: chunks, steps done k, samples, Newton iterations,
-    the first samples of energy / momentum and the max change so far of energy, momentum
+    """Running totals of a chunked run: chunks, steps done k, samples, ``counts`` {name:
+    total} of the run's counters (hpgen.runtime.counters; a resumed run's count those of
+    both runs), the first samples of energy / momentum and the max change so far of energy, momentum
     and its projections on ``directions`` ("conserved"); ``state`` the snapshot to continue
     from (a resumed run) and ``work`` the accumulated work's (WorkSum.state; empty when
     the run records no work)."""
     CHANGES = ("energy", "momentum", "conserved", "balance")
 
     def __init__(self, directions=None):
-        self.chunks = self.k = self.samples = self.iterations = 0
+        self.chunks = self.k = self.samples = 0
+        self.counts = dict.fromkeys(counters.NAMES, 0)
         self.first, self.change, self.state = {}, {}, None
         #: a run that records work: the WorkSum's state (hpgen.runtime.work) to continue
         self.work = {}
@@ -73,7 +77,7 @@ class Progress:
         new = Progress(self.directions)
         new.chunks, new.k = self.chunks + 1, k
         new.samples = self.samples + len(rec.t)
-        new.iterations = self.iterations + rec.newton_iterations
+        new.counts = {name: self.counts[name] + n for name, n in counters.of(rec).items()}
         new.first, new.change = dict(self.first), dict(self.change)
         for name in ("energy", "momentum"):
             if name in rec.arrays and len(rec.t):
@@ -95,9 +99,11 @@ class Progress:
         self.change[name] = change if prev is None else np.maximum(prev, change)
 
     def totals(self) -> dict:
-        """The totals as arrays (saved next to the run's state)."""
-        out = {"totals": np.array([self.chunks, self.k, self.samples, self.iterations],
-                                  dtype=np.int64)}
+        """The totals as arrays (saved next to the run's state): "totals" (chunks, k, samples,
+        newton_iterations: the layout an older hpgen reads) and "count_<name>" per counter."""
+        out = {"totals": np.array([self.chunks, self.k, self.samples,
+                                   self.counts["newton_iterations"]], dtype=np.int64)}
+        out.update({f"count_{k}": np.array(v, dtype=np.int64) for k, v in self.counts.items()})
         out.update({f"first_{k}": np.asarray(v) for k, v in self.first.items()})
         out.update({f"change_{k}": np.asarray(v) for k, v in self.change.items()})
         return out
@@ -105,7 +111,12 @@ class Progress:
     @classmethod
     def from_state(cls, arrays: dict) -> "Progress":
         prog = cls()
-        prog.chunks, prog.k, prog.samples, prog.iterations = (int(v) for v in arrays["totals"])
+        prog.chunks, prog.k, prog.samples, iterations = (int(v) for v in arrays["totals"])
+        # (a folder of an older hpgen: no count_*; its Newton iterations are in totals)
+        prog.counts = counters.read({k[len("count_"):]: v for k, v in arrays.items()
+                                     if k.startswith("count_")})
+        if "count_newton_iterations" not in arrays:
+            prog.counts["newton_iterations"] = iterations
         for name in cls.CHANGES:
             if f"first_{name}" in arrays:
                 prog.first[name] = arrays[f"first_{name}"]

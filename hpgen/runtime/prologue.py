@@ -40,6 +40,7 @@ import numpy as np
 
 from .. import abi
 from ..errors import HpgenError
+from . import counters
 from .args import _fits, _int, _step_size
 from .cstructs import _Options, _Status, _addr
 from .engine import DEFECT_MAX
@@ -278,8 +279,8 @@ class Prologue:
         mu = P[:K].copy() if K <= ROWS_MAX else P
         t = plan.times() if plan.t is None else plan.t.view() if not t0 else plan.t
         return Trajectory.made(t=t0 + t if t0 else t, g=gk, mu=mu, h=plan.h,
-                               every=plan.every, newton_iterations=int(st.total_iterations),
-                               jacobians=int(st.jacobians), integrator=self.engine.owner,
+                               every=plan.every, jacobians=int(st.jacobians),
+                               **counters.of_status(st), integrator=self.engine.owner,
                                inputs=inputs)
 
     def _velocity(self, s, is_open) -> bool:

@@ -20,7 +20,7 @@ import numpy as np
 
 from .. import abi
 from ..errors import ModelError, RecordError
-from . import loop
+from . import counters, loop
 from .args import _error, _fits, _int
 from .engine import SLICE_FIRST, Engine, Part, RunArgs, RunHandle, RunStart, Sliced
 from .progress import bar as progress_bar
@@ -43,6 +43,7 @@ class Records:
     error: Any = None
     newton_iterations: int = 0
     jacobians: int = 0
+    guarded: int = 0              # accepted steps the wrong-root guard solved again
     integrator: Any = field(default=None, repr=False, compare=False)
 
     def __post_init__(self):
@@ -51,12 +52,12 @@ class Records:
 
     def save(self, path) -> Path:
         """Write t and the record arrays atomically with the scalars of Trajectory.save (h,
-        every, partial, newton_iterations, error, module, hash, group, forced): .npz (the file
-        ``hpgen run`` writes; ".npz" appended when there is no suffix), .nc, .zarr or a .csv
-        table, by the suffix (hpgen.runtime.save_formats). Returns the path written."""
+        every, partial, newton_iterations, guarded, error, module, hash, group, forced): .npz
+        (the file ``hpgen run`` writes; ".npz" appended when there is no suffix), .nc, .zarr or
+        a .csv table, by the suffix (hpgen.runtime.save_formats). Returns the path written."""
         return save_run(path, {"t": self.t, **self.arrays},
                         run_metadata(self.integrator, self.h, self.every, self.partial,
-                                     self.newton_iterations, self.error))
+                                     counters.of(self), self.error))
 
     def as_quat(self, factor=None) -> np.ndarray:
         """(K, 4) attitudes of the recorded g as unit quaternions [w, x, y, z], scalar first
@@ -123,9 +124,8 @@ def make_records(engine: Engine, rows, st, h, every, first=0, t_start=0.0,
     t = (first + np.arange(len(rows))) * every * h
     rec = Records(t=t_start + t if t_start else t,
                   arrays=split_rows(rows, layout, engine.n), h=h, every=every,
-                  partial=err is not None, error=err,
-                  newton_iterations=int(st["total_iterations"]), jacobians=int(st["jacobians"]),
-                  integrator=engine.owner)
+                  partial=err is not None, error=err, jacobians=int(st["jacobians"]),
+                  **counters.of_status(st), integrator=engine.owner)
     if err is not None:
         err.partial = rec
     return rec
@@ -247,8 +247,8 @@ def _joined(engine: Engine, s: RunStart, got: list, interrupted=False) -> Record
     rec = Records(t=np.concatenate([r.t for r in got]) if got else np.zeros(0),
                   arrays=arrays, h=s.h, every=s.every,
                   partial=interrupted or err is not None, error=err,
-                  newton_iterations=sum(r.newton_iterations for r in got),
-                  jacobians=sum(r.jacobians for r in got), integrator=engine.owner)
+                  jacobians=sum(r.jacobians for r in got), **counters.summed(got),
+                  integrator=engine.owner)
     if err is not None:
         err.partial = rec
     return rec

@@ -11,6 +11,7 @@ import numpy as np
 
 from .. import abi
 from ..errors import ConvergenceError, ModelError
+from . import counters
 from .args import _error, _int, _positive, _step_size
 from .engine import Engine, Part, RunArgs, RunStart
 from .inputs import step_inputs
@@ -55,11 +56,14 @@ class Crossings:
     def run(self, handle=None) -> SectionCrossings:
         """The crossings of the whole run; the error (if any) is set, not raised."""
         s, engine = self.s, self.engine
-        k, iters, err = 0, 0, None
+        k, err = 0, None
+        counts = dict.fromkeys(counters.NAMES, 0)
         for _, _, part in engine.parts(self, s, handle):
             st = part.status
             self.parts.append(part.data)
-            k, iters = k + part.done, iters + int(st["total_iterations"])
+            k = k + part.done
+            for name, n in counters.of_status(st).items():
+                counts[name] += n
             self.found += len(part.data[1])
             if st["code"] != abi.OK:
                 hint = ""
@@ -77,7 +81,7 @@ class Crossings:
         out = SectionCrossings(t=t, g=np.ascontiguousarray(gs),
                                mu=cat(3, (0, d)).reshape(-1, d),
                                step=cat(0, (0,)).astype(np.int64), h=s.h, steps=k,
-                               partial=err is not None, error=err, newton_iterations=iters)
+                               partial=err is not None, error=err, **counts)
         if err is not None:
             err.partial = out
         return out
@@ -146,7 +150,7 @@ def stroboscopic(engine: Engine, a: RunArgs, max_crossings, chunk,
                            mu=cat("mu", (0, engine.d)), step=k, h=h,
                            steps=steps if err is None else int(err.step),
                            partial=err is not None, error=err,
-                           newton_iterations=sum(p.newton_iterations for p in parts))
+                           **counters.summed(parts))
     if err is not None:
         err.partial = out
         raise err

@@ -11,7 +11,7 @@ from dataclasses import replace
 import numpy as np
 
 from .. import abi
-from . import loop
+from . import counters, loop
 from .args import _error, _fits, _int
 from .batch_starts import ExplicitStarts
 from .cbatch import status as cbatch_status
@@ -69,9 +69,8 @@ def records(engine: Engine, g_rec, p_rec, st, h, every, t0, inputs=None) -> Traj
     t = np.arange(0, K * every, every) * h
     traj = Trajectory.made(t=t0 + t if t0 else t, g=g, mu=np.array(p_rec), h=h,
                            every=every, partial=err is not None, error=err,
-                           newton_iterations=int(st["total_iterations"]),
-                           jacobians=int(st["jacobians"]), integrator=engine.owner,
-                           inputs=inputs)
+                           jacobians=int(st["jacobians"]), **counters.of_status(st),
+                           integrator=engine.owner, inputs=inputs)
     if err is not None:
         err.partial = traj
     return traj
@@ -130,7 +129,7 @@ def _joined(engine: Engine, s: RunStart, got: list, t0: float,
     g_rec = np.concatenate([s.g0.reshape(1, -1), *(g for g, _, _ in got)])
     p_rec = np.concatenate([s.mu0.reshape(1, -1), *(p for _, p, _ in got)])
     st = dict(got[-1][2]) if got else loop.new_status()
-    for key in ("total_iterations", "jacobians"):
+    for key in counters.STATUS_TOTALS:
         st[key] = sum(int(part[2][key]) for part in got)
     traj = records(engine, g_rec, p_rec, st, s.h, s.every, t0, s.inputs)
     return replace(traj, partial=True) if interrupted else traj
@@ -173,7 +172,9 @@ def batch_trajectories(engine: Engine, done, g_rec, p_rec, sts, h, every, inputs
     t = np.arange(0, K * every, every) * h
     t = t0 + t if t0 else t
     t.setflags(write=False)
-    codes, its, jacs = sts["code"], sts["total_iterations"], sts["jacobians"]
+    codes = sts["code"]
+    # Trajectory field: the status column of its totals
+    totals = {f: sts[key] for f, key in (("jacobians", "jacobians"), *counters.COUNTERS)}
     base = Trajectory.shared_fields(t=t, h=h, every=every, integrator=engine.owner)
     g_made: list = []
 
@@ -192,12 +193,14 @@ def batch_trajectories(engine: Engine, done, g_rec, p_rec, sts, h, every, inputs
     def member(b: int) -> Trajectory:
         if codes[b] != abi.OK:
             return failed(b)
-        return Trajectory.member(base, g_all()[b], p_rec[b], int(its[b]), int(jacs[b]),
+        return Trajectory.member(base, g_all()[b], p_rec[b],
+                                 {f: int(col[b]) for f, col in totals.items()},
                                  None if inputs is None else inputs[b])
 
     def every_member() -> list:
-        out = Trajectory.members(base, list(g_all()), list(p_rec), its.tolist(),
-                                 jacs.tolist(), [None] * B if inputs is None else inputs)
+        out = Trajectory.members(base, list(g_all()), list(p_rec),
+                                 {f: col.tolist() for f, col in totals.items()},
+                                 [None] * B if inputs is None else inputs)
         for b in np.flatnonzero(codes != abi.OK).tolist():
             out[b] = failed(b)
         return out

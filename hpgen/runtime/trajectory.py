@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from ..files import atomic_output
+from . import counters
 from .save_formats import run_path, save_run
 
 
@@ -29,6 +30,7 @@ class Trajectory:
     error: Any = None             # None or the ConvergenceError that stopped the run
     newton_iterations: int = 0    # total over all steps attempted
     jacobians: int = 0            # Jacobian evaluations (LU factorizations) over all steps
+    guarded: int = 0              # accepted steps the wrong-root guard solved again
     integrator: Any = field(default=None, repr=False, compare=False)
     #: an open module's run inputs (hpgen.runtime.inputs.StepInputs: t0, u, params) or None
     inputs: Any = field(default=None, repr=False, compare=False)
@@ -57,28 +59,32 @@ class Trajectory:
         return {**_DEFAULTS, **shared}
 
     @classmethod
-    def member(cls, base: dict, g, mu, newton_iterations, jacobians, inputs) -> "Trajectory":
+    def member(cls, base: dict, g, mu, counts: dict, inputs) -> "Trajectory":
         """An ensemble member's Trajectory: the fields ``base`` (``shared_fields``), g, mu,
-        newton_iterations, jacobians and inputs, as ``made`` makes it; t, g and mu read-only
+        the totals ``counts`` ({field: int}: newton_iterations, jacobians and the counters of
+        hpgen.runtime.counters) and inputs, as ``made`` makes it; t, g and mu read-only
         already (views of the ensemble's arrays, hpgen.runtime.states.batch_trajectories):
         no flags set."""
         traj = object.__new__(cls)
         d = traj.__dict__
         d.update(base)
-        d.update(g=g, mu=mu, newton_iterations=newton_iterations, jacobians=jacobians,
-                 inputs=inputs, _obs={})
+        d.update(counts)
+        d.update(g=g, mu=mu, inputs=inputs, _obs={})
         return traj
 
     @classmethod
-    def members(cls, base: dict, g, mu, newton_iterations, jacobians, inputs) -> list:
-        """``member`` j = 0, 1, ... of the sequences g, mu, newton_iterations, jacobians,
-        inputs (all members at once: one loop, no call per member)."""
+    def members(cls, base: dict, g, mu, counts: dict, inputs) -> list:
+        """``member`` j = 0, 1, ... of the sequences g, mu, inputs and ``counts`` ({field:
+        sequence}) (all members at once: one loop, no call per member)."""
         new, out = object.__new__, []
-        for gj, mj, it, jac, inp in zip(g, mu, newton_iterations, jacobians, inputs):
+        names = tuple(counts)
+        for gj, mj, inp, cj in zip(g, mu, inputs, zip(*counts.values())):
             traj = new(cls)
             d = traj.__dict__
             d.update(base)
-            d.update(g=gj, mu=mj, newton_iterations=it, jacobians=jac, inputs=inp, _obs={})
+            d.update(g=gj, mu=mj, inputs=inp, _obs={})
+            for name, value in zip(names, cj):
+                d[name] = value
             out.append(traj)
         return out
 
@@ -141,13 +147,13 @@ class Trajectory:
         hpgen.runtime.save_formats).
 
         Arrays t, g, mu (or, if ``arrays`` is given, those: see ``observables``); scalars h,
-        every, partial, newton_iterations; error (message or ""); module, hash, group and
-        forced (whether its model has forces) of the generating module when known. Returns the path written.
+        every, partial, the counters newton_iterations and guarded (hpgen.runtime.counters);
+        error (message or ""); module, hash, group and forced (whether its model has forces)
+        of the generating module when known. Returns the path written.
         """
         data = dict(arrays) if arrays is not None else {"t": self.t, "g": self.g, "mu": self.mu}
         return save_run(path, data, run_metadata(self.integrator, self.h, self.every,
-                                                 self.partial, self.newton_iterations,
-                                                 self.error))
+                                                 self.partial, counters.of(self), self.error))
 
 
 #: the defaults of Trajectory's fields (Trajectory.made; _obs is a new dict each time)
@@ -159,11 +165,12 @@ def npz_path(path) -> Path:
     return run_path(path, (".npz",))
 
 
-def run_metadata(integrator, h, every, partial, newton_iterations, error) -> dict:
-    """The scalars a saved run carries next to its arrays."""
+def run_metadata(integrator, h, every, partial, counts: dict, error) -> dict:
+    """The scalars a saved run carries next to its arrays; counts: {name: total} of the
+    counters (hpgen.runtime.counters.NAMES; one missing is saved as 0)."""
     meta = getattr(integrator, "meta", None) or {}
     return {"h": np.float64(h), "every": np.int64(every), "partial": np.bool_(partial),
-            "newton_iterations": np.int64(newton_iterations),
+            **{name: np.int64(counts.get(name, 0)) for name in counters.NAMES},
             "error": np.str_("" if error is None else str(error)),
             "module": np.str_(meta.get("module", "")), "hash": np.str_(meta.get("hash", "")),
             "group": np.str_(meta.get("group", "")),
@@ -185,7 +192,8 @@ class SectionCrossings:
     ``t`` (K,) = (step + theta) h; ``mu`` (K, d) the node momenta interpolated linearly in
     the step (an O(h^2) estimate of the momentum on the section); ``g`` (K, n, n) the point
     g_k tau(theta h xi_{k+1}) of the step's own chart curve (on the group). ``steps`` is the
-    number of steps run; on a failure partial is True and error is set.
+    number of steps run; on a failure partial is True and error is set; newton_iterations
+    and guarded are the run's counters (hpgen.runtime.counters).
     """
     t: np.ndarray
     g: np.ndarray
@@ -196,6 +204,7 @@ class SectionCrossings:
     partial: bool = False
     error: Any = None
     newton_iterations: int = 0
+    guarded: int = 0
 
     def __post_init__(self):
         for a in (self.t, self.g, self.mu, self.step):

@@ -42,8 +42,8 @@ def test_chunked_file_equals_the_in_memory_one(top, tmp_path, steps, every, chun
     a, b = np.load(path), np.load(whole)
     assert path.name == "chunked.npz" and whole.name == "whole.npz"
     assert sorted(a.files) == sorted(b.files) == sorted(
-        ["t", *NAMES, "h", "every", "partial", "newton_iterations", "error", "module", "hash",
-         "group", "forced"])
+        ["t", *NAMES, "h", "every", "partial", "newton_iterations", "guarded", "error", "module",
+         "hash", "group", "forced"])
     for key in b.files:
         assert np.array_equal(a[key], b[key]), key     # bitwise: the same states and kernels
     # the states are simulate's, bitwise; the observables agree with Trajectory's (kernel

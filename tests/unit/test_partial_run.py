@@ -1,6 +1,7 @@
 """hpgen.runtime.partial_run.interrupts_deferred: a SIGINT that arrives while a chunk or the
 output file is written is delivered after the write, as the KeyboardInterrupt the chunked
-run saves on (raised inside zipfile's writer it became a ValueError and a traceback)."""
+run saves on (raised inside zipfile's writer it became a ValueError and a traceback); and
+Progress's totals, the run's counters among them, saved and read back."""
 from __future__ import annotations
 
 import os
@@ -30,3 +31,19 @@ def test_the_handlers_are_restored():
     with interrupts_deferred():
         assert signal.getsignal(signal.SIGINT) is not before[0]
     assert (signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)) == before
+
+
+def test_progress_counters_round_trip_and_an_older_folder_reads_zero():
+    """Progress.totals keeps "totals" (chunks, k, samples, Newton iterations: what an older
+    hpgen wrote and reads) and one "count_<name>" per counter; an older folder's state (no
+    count_*) resumes with its Newton iterations and the other counters 0."""
+    from hpgen.runtime.partial_run import Progress
+    prog = Progress()
+    prog.chunks, prog.k, prog.samples = 3, 30, 31
+    prog.counts = {"newton_iterations": 70, "guarded": 2}
+    saved = prog.totals()
+    assert saved["totals"].tolist() == [3, 30, 31, 70]
+    back = Progress.from_state(saved)
+    assert (back.chunks, back.k, back.samples, back.counts) == (3, 30, 31, prog.counts)
+    old = Progress.from_state({"totals": saved["totals"]})
+    assert old.counts == {"newton_iterations": 70, "guarded": 0}

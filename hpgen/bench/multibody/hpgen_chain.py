@@ -139,7 +139,8 @@ RECORD_MEMORY = 64e6
 class HpgenRun:
     """A run of :func:`run`: ``times`` (s) and ``energy`` (J, potential zero at the pin) of
     the recorded nodes 0, every, 2 every, ... (and the last); the joints' largest (position,
-    velocity) gaps over them; the final ChainState; Newton iterations over all steps;
+    velocity) gaps over them; the final ChainState; Newton iterations over all steps and
+    ``guarded``, the steps the wrong-root guard solved again (hpgen.runtime.counters);
     ``seconds`` the wall time and ``cpu_seconds`` the thread's CPU time of the stream's calls
     alone; ``observe_seconds`` the CPU time of the record velocity, energy and gaps on the
     recorded nodes (not in ``seconds``)."""
@@ -152,6 +153,7 @@ class HpgenRun:
     seconds: float
     cpu_seconds: float
     observe_seconds: float
+    guarded: int = 0
 
 
 def chunk_steps(spec: ChainSpec, steps: int, every: int, memory: float = RECORD_MEMORY) -> int:
@@ -175,7 +177,8 @@ def run(integ, spec: ChainSpec, g0, xi0, h: float, steps: int, every: int = 10,
     stream = integ.stream(g0, h, steps, xi0=xi0, every=every, chunk=chunk, newton=newton)
     times, energies, gaps = [], [], np.zeros(2)
     seconds = cpu = observe = 0.0
-    iterations, last = 0, None
+    iterations = guarded = 0
+    last = None
     while True:
         start, start_cpu = time.perf_counter(), time.thread_time()
         part = next(stream, None)
@@ -185,6 +188,7 @@ def run(integ, spec: ChainSpec, g0, xi0, h: float, steps: int, every: int = 10,
             break
         start_cpu = time.thread_time()
         iterations += int(part.newton_iterations)
+        guarded += int(part.guarded)
         nodes = node_arrays(spec, part.g, part.xi(), frames)
         times.append(part.t)
         energies.append(node_energy(spec, *nodes))
@@ -194,4 +198,4 @@ def run(integ, spec: ChainSpec, g0, xi0, h: float, steps: int, every: int = 10,
     if last is None:
         raise HpgenError("the stream yielded no records")
     return HpgenRun(np.concatenate(times), np.concatenate(energies), gaps, last, iterations,
-                    int(steps), seconds, cpu, observe)
+                    int(steps), seconds, cpu, observe, guarded)
