@@ -109,7 +109,10 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
     group.require_chart(tau)
     RKMK.check(rkmk, field="integrator.rkmk")
     n, d = group.n, group.d
-    local = not expand and not is_splitting(tableau) and family_local(model)
+    # a splitting scheme on a family: the constrained split (hpgen.derive.family_split,
+    # Newton on the joints' multipliers only); unconstrained, the explicit product step
+    split = is_splitting(tableau)
+    local = not expand and (not split or bool(model.constraints)) and family_local(model)
     # a family's g is block-diagonal: its off-diagonal entries are structural zeros, so
     # products with g stay block by block (the kernels still take all n*n entries)
     g = block_diagonal_symbol(group) if local else ca.SX.sym("g", n, n)
@@ -256,4 +259,4 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
                            model.forced, model.time_dependent) if is_open else None,
         legendre_quadratic=quadratic, record_layout=layout, step_uses_g=step_uses_g,
         record_uses_g=bool(ca.depends_on(row, gf)), record_uses_xi=bool(ca.depends_on(row, xi)),
-        explicit=is_splitting(tableau))
+        explicit=split and fam is None)
