@@ -17,7 +17,8 @@ block diagonal over the factors of the group, each factor one of
 - R<n>: any SPD block;
 
 and V a function of g (and of the runtime parameters) alone. The model must be otherwise
-closed: no forces, control inputs, time dependence or constraints. ``recognise`` returns
+closed: no forces, control inputs, time dependence or constraints (a constrained family
+model's bodies are recognised one by one, recognise_lagrangian, hpgen.derive.family_split). ``recognise`` returns
 the frozen description the flows are built from, or raises ModelError naming what breaks
 the structure (a Lagrangian term where one can be named).
 """
@@ -121,7 +122,9 @@ def recognise(model, lag, params=None) -> SplitStructure:
     """The SplitStructure of ``model`` with l given as ``lag(g, xi)`` (SX in, SX out; the
     runtime parameters, if any, bound to the SX symbol ``params``), or ModelError."""
     if model.constraints:
-        raise _refuse("the model has constraints (use a VPRK tableau)")
+        raise _refuse("the model has constraints and is not derived body by body (split2 "
+                      "takes constraints on a family model with local sums and joints; else "
+                      "use a VPRK tableau)")
     if model.forced:
         raise _refuse("the model has forces (use a VPRK tableau)")
     if model.inputs:
