@@ -27,7 +27,11 @@ family_local) is derived once per body and per joint (hpgen.derive.family): g is
 block-diagonal, the step kernels are composed over MX from per-body and per-joint call
 nodes, the other kernels over SX with calls, and every kernel keeps its outputs' structural
 sparsity (the wrappers scatter them into the contract's dense arrays). ``expand=True``
-derives such a model on the product group instead (the reference for comparisons).
+derives such a model on the product group instead (the reference for comparisons). A
+splitting scheme on a constrained family model is derived this way too, its body step the
+explicit splitting step (hpgen.derive.family_split; the module is not ``explicit``: Newton
+solves the joints' multipliers); unconstrained, a splitting scheme is the explicit step of
+hpgen.splitting on the product group.
 """
 from __future__ import annotations
 

@@ -26,6 +26,10 @@ joint j's rows phi_j(g_a, g_b, ...; i_j) and body-frame Jacobians Phi_{j,a},
 where each joint's (phi_j, Phi_{j,a}, ...) is one call of the function of its row block's
 text (rows with the loop variable i as a numeric input).
 
+A splitting scheme (``tableau: split2`` on a constrained family, hpgen.derive.family_split)
+makes the body step the explicit splitting step, with no unknowns: the step's unknowns are
+then lambda and nu alone.
+
 Unknowns, in this order: every body's step unknowns (body 0's blocks, body 1's, ...; the
 block labels of the expanded step with the body as a suffix, "Xi1[3]"), then ``lambda`` and
 ``nu`` (all constraint rows, file order: the expanded step's blocks, so the multipliers'
