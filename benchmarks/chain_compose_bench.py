@@ -10,8 +10,11 @@ has the smaller energy band at equal cost, by what ratio, and the N where hpgen 
         [--newton default] [--error-max-n 16] [--out DIR]
 
 ``--runs``: NAME[@NEWTON]:H,H,... with NAME ``sv`` (the model's constrained Stormer-Verlet), a
-composition of it (``hpgen list``: yoshida4, suzuki4, yoshida6, kahan-li6) or a Gauss tableau
-(``gauss2``, ``gauss3``: exact RKMK, which keeps their order) and NEWTON ``default`` (the
+composition of it (``hpgen list``: yoshida4, suzuki4, yoshida6, kahan-li6), a Gauss tableau
+(``gauss2``, ``gauss3``: exact RKMK, which keeps their order), the constrained splitting step
+``split2`` (``split2-fasso``; RATTLE around kick / exact free flow / kick, Newton on the
+joints' multipliers only, hpgen.derive.family_split) or a composition of it, ``split2+C``
+(C a composition name: ``split2+suzuki4``), and NEWTON ``default`` (the
 module's: the chord on the chain), ``full`` or ``simplified`` (J kept across steps; without
 @NEWTON: ``--newton``'s), e.g. ``sv@simplified:1e-3,2e-3``; default: default_runs(N)
 (step sizes falling with N, where Newton converges over T). Model: hpgen_chain's
@@ -101,7 +104,10 @@ def parse_run(text):
     from hpgen.schemes import compositions
     head, _, hs = text.partition(":")
     name, _, newton = head.partition("@")
-    known = ["sv", "gauss2", "gauss3"] + [c.name for c in compositions()]
+    comps = [c.name for c in compositions()]
+    known = ["sv", "gauss2", "gauss3"] + comps
+    known += [f"{b}{c}" for b in ("split2", "split2-fasso") for c in [""] + [
+        f"+{c}" for c in comps]]
     try:
         steps = [float(h) for h in hs.split(",")]
     except ValueError:
@@ -109,7 +115,8 @@ def parse_run(text):
     if (name not in known or not steps or not all(h > 0 for h in steps)
             or newton not in ("",) + NEWTONS):
         raise SystemExit(f"--runs: expected NAME[@NEWTON]:H,H,... with NAME one of "
-                         f"{', '.join(known)}, NEWTON one of {', '.join(NEWTONS)} and positive "
+                         f"{', '.join(known[:3 + len(comps)])}, split2[+C], "
+                         f"split2-fasso[+C] (C a composition), NEWTON one of {', '.join(NEWTONS)} and positive "
                          f"step sizes, got {text!r}")
     return name, steps, newton or None
 
@@ -124,6 +131,9 @@ def compile_options(name):
         return {}
     if name.startswith("gauss"):
         return dict(tableau=name, tau="cay", rkmk="exact")
+    if name.startswith("split2"):
+        base, _, comp = name.partition("+")
+        return dict(tableau=base, **({"compose": comp} if comp else {}))
     return dict(compose=name)
 
 

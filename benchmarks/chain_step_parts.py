@@ -3,9 +3,12 @@
 whole runs with full and simplified Newton, in a C program that includes the module's
 kernels.c (static functions are not exported, so ctypes cannot call them).
 
-    PYTHONPATH=. python benchmarks/chain_step_parts.py [--n 8 64]      (N >= 3: a sparse J)
+    PYTHONPATH=. python benchmarks/chain_step_parts.py [--n 8 64] [--frames pin|centre]
+        [--tableau split2]                                          (N >= 3: a sparse J)
 
-Each N: examples/pendulum_chain.yaml compiled (C, sparse J), 50 steps of h = 1e-3 from the
+Each N: examples/pendulum_chain.yaml (``--frames centre``: examples/capsule_chain.yaml)
+compiled (C, sparse J; ``--tableau``: the model's scheme else, e.g. ``split2``, whose
+unknowns are the joints' multipliers only), 50 steps of h = 1e-3 from the
 benchmark's start (hpgen.bench.multibody.chain) give the state; the harness (built with the
 runtime's flags) then advances 20 more steps and times each part at that state, best of 5
 rounds, us per call. Read the parts against each other: the machine's load moves them all.
@@ -76,21 +79,21 @@ int main(int argc, char** argv) {
 """
 
 
-def write_state(model, n: int, work: Path):
+def write_state(model, n: int, work: Path, frames: str = "pin", tableau=None):
     """The model compiled at N = n, and the path of the state (g column-major, mu; float64)
     after 50 steps of h = 1e-3 from the benchmark's start, written into ``work``."""
-    integ = hpgen.compile(model, parameters={"N": n})
+    integ = hpgen.compile(model, parameters={"N": n}, tableau=tableau)
     spec = chain.ChainSpec(n)
     qpos, qvel = chain.initial_joint_state(spec)
-    g0, xi0 = hpgen_chain.to_hpgen(spec, chain.from_joint(spec, qpos, qvel))
+    g0, xi0 = hpgen_chain.to_hpgen(spec, chain.from_joint(spec, qpos, qvel), frames)
     tr = integ.simulate(g0, 1e-3, 50, xi0=xi0, every=50)
     state = work / f"state{n}.bin"
     np.concatenate([np.asarray(tr.g[-1]).ravel(order="F"), np.asarray(tr.mu[-1])]).tofile(state)
     return integ, state
 
 
-def run(n: int, work: Path) -> str:
-    integ, state = write_state(hpgen_chain.MODEL, n, work)
+def run(n: int, work: Path, frames: str = "pin", tableau=None) -> str:
+    integ, state = write_state(hpgen_chain.MODELS[frames], n, work, frames, tableau)
     module = Path(integ.engine.backend.lib._name).parent
     src, exe = work / "parts.c", work / f"parts{n}"
     src.write_text(HARNESS)
@@ -112,11 +115,13 @@ def run(n: int, work: Path) -> str:
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--n", type=int, nargs="+", default=[8, 64])
+    ap.add_argument("--frames", choices=sorted(hpgen_chain.MODELS), default="pin")
+    ap.add_argument("--tableau", default=None, help="default: the model file's")
     a = ap.parse_args()
     print(f"hpgen from {hpgen.__file__}")
     with tempfile.TemporaryDirectory() as tmp:
         for n in a.n:
-            sys.stdout.write(run(n, Path(tmp)))
+            sys.stdout.write(run(n, Path(tmp), a.frames, a.tableau))
             sys.stdout.flush()
     return 0
 

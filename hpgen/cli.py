@@ -154,13 +154,17 @@ def _scheme_line(module_dir, args) -> str:
         ([f"{', '.join(model)} from the model's integrator:"] if model else []) + \
         ([f"{', '.join(default)}: hpgen's default"] if default else [])
     from .schemes import is_splitting
-    if is_splitting(o["tableau"]):     # an explicit composition: no chart map, no RKMK
+    explicit = meta.get("explicit") is True
+    if is_splitting(o["tableau"]) and explicit:  # an explicit composition: no chart, no RKMK
         return f"scheme: splitting {o['tableau']} (explicit; tau and rkmk unused)"
+    if is_splitting(o["tableau"]):     # constrained: Newton on the joints' multipliers
+        src.insert(0, "constrained: the joints' multipliers solved by Newton")
     compose = getattr(args, "compose", None) or section.get("compose")
     if compose is not None:
         from .tableaus.composition import check_base, get_composition
         c = get_composition(compose)
-        check_base(o["tableau"], rkmk=o["rkmk"], step_uses_g=meta["step_uses_g"])
+        check_base(o["tableau"], rkmk=o["rkmk"], step_uses_g=meta["step_uses_g"],
+                   explicit=explicit)
         src.append(f"composed {c.name}: {c.stages} substeps, order {c.order}"
                    f"{' (--compose)' if getattr(args, 'compose', None) else ' (the model)'}")
     return (f"scheme: tableau {o['tableau']}, tau {o['tau']}, rkmk {o['rkmk']} "

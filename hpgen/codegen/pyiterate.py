@@ -37,6 +37,14 @@ def _used_positions(f, arg: int) -> set[int]:
             if f.instruction_id(k) == casadi.OP_INPUT and f.instruction_input(k)[0] == arg}
 
 
+def _no_fused(f) -> bool:
+    """Whether the kernel function f gets no fused iterate: a side effect (OP_PRINTME), or
+    an MX composition of call nodes (a family's step kernels with few unknowns, e.g. a
+    constrained splitting step: kernels.py calls the kernel instead)."""
+    return f.is_a("MXFunction") or any(
+        f.instruction_id(k) == casadi.OP_PRINTME for k in range(f.n_instructions()))
+
+
 def _check(kernel, nz: int, outputs: tuple):
     f = kernel.function
     if tuple(kernel.inputs) != ("z", "g", "p", "h") or tuple(kernel.outputs) != outputs:
@@ -90,9 +98,9 @@ def iterate_source(residual, nz: int) -> str:
     NO_CONVERGENCE once iterate ``maxit`` did neither; z (a list) and rn = |F| of the last
     iterate (F is finite when dz is: a non-finite F_j makes every entry of f F so).
     None: see the module docstring. The source is empty for a residual with a side effect
-    (OP_PRINTME: the kernel runs once per call, in order)."""
+    (OP_PRINTME: the kernel runs once per call, in order) or an MX composition (_no_fused)."""
     f = residual.function
-    if any(f.instruction_id(k) == casadi.OP_PRINTME for k in range(f.n_instructions())):
+    if _no_fused(f):
         return ""
     _check(residual, nz, ("F",))
     floor, theta = float_literal(ROUNDOFF_FLOOR), float_literal(THETA_MAX)
@@ -124,7 +132,7 @@ def full_source(residual_jacobian, nz: int) -> str:
     error, a non-finite F (or a sum of F overflowing), J singular or not finite, a
     non-finite dz or z. Empty source for a kernel with a side effect."""
     f = residual_jacobian.function
-    if any(f.instruction_id(k) == casadi.OP_PRINTME for k in range(f.n_instructions())):
+    if _no_fused(f):
         return ""
     _check(residual_jacobian, nz, ("F", "J"))
     Fs = ", ".join(f"F{i}" for i in range(nz))

@@ -27,7 +27,11 @@ family_local) is derived once per body and per joint (hpgen.derive.family): g is
 block-diagonal, the step kernels are composed over MX from per-body and per-joint call
 nodes, the other kernels over SX with calls, and every kernel keeps its outputs' structural
 sparsity (the wrappers scatter them into the contract's dense arrays). ``expand=True``
-derives such a model on the product group instead (the reference for comparisons).
+derives such a model on the product group instead (the reference for comparisons). A
+splitting scheme on a constrained family model is derived this way too, its body step the
+explicit splitting step (hpgen.derive.family_split; the module is not ``explicit``: Newton
+solves the joints' multipliers); unconstrained, a splitting scheme is the explicit step of
+hpgen.splitting on the product group.
 """
 from __future__ import annotations
 
@@ -109,7 +113,10 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
     group.require_chart(tau)
     RKMK.check(rkmk, field="integrator.rkmk")
     n, d = group.n, group.d
-    local = not expand and not is_splitting(tableau) and family_local(model)
+    # a splitting scheme on a family: the constrained split (hpgen.derive.family_split,
+    # Newton on the joints' multipliers only); unconstrained, the explicit product step
+    split = is_splitting(tableau)
+    local = not expand and (not split or bool(model.constraints)) and family_local(model)
     # a family's g is block-diagonal: its off-diagonal entries are structural zeros, so
     # products with g stay block by block (the kernels still take all n*n entries)
     g = block_diagonal_symbol(group) if local else ca.SX.sym("g", n, n)
@@ -256,4 +263,4 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
                            model.forced, model.time_dependent) if is_open else None,
         legendre_quadratic=quadratic, record_layout=layout, step_uses_g=step_uses_g,
         record_uses_g=bool(ca.depends_on(row, gf)), record_uses_xi=bool(ca.depends_on(row, xi)),
-        explicit=is_splitting(tableau))
+        explicit=split and fam is None)

@@ -26,6 +26,10 @@ joint j's rows phi_j(g_a, g_b, ...; i_j) and body-frame Jacobians Phi_{j,a},
 where each joint's (phi_j, Phi_{j,a}, ...) is one call of the function of its row block's
 text (rows with the loop variable i as a numeric input).
 
+A splitting scheme (``tableau: split2`` on a constrained family, hpgen.derive.family_split)
+makes the body step the explicit splitting step, with no unknowns: the step's unknowns are
+then lambda and nu alone.
+
 Unknowns, in this order: every body's step unknowns (body 0's blocks, body 1's, ...; the
 block labels of the expanded step with the body as a suffix, "Xi1[3]"), then ``lambda`` and
 ``nu`` (all constraint rows, file order: the expanded step's blocks, so the multipliers'
@@ -51,7 +55,9 @@ from .family_open import with_env, body_force_function, body_index, index_symbol
 from .family_joint_forces import external_forces, force_components, \
     joint_force_functions, joint_stage_functions, stage_force, stage_function
 from .family_velocity import hessian_inverse, momentum_functions, node_velocity, quadratic
+from .family_split import split_body_step
 from .lagrangian import to_casadi
+from ..splitting import is_splitting
 
 CALL = {"never_inline": True, "jac_penalty": 0}
 
@@ -166,7 +172,9 @@ def _functions(model, tableau, tau: str, rkmk: str):
     """(body group, lags, keys, steps, joint functions, node velocity functions): the
     per-body and per-joint functions, built once per (model, scheme) and shared by every
     kernel (one CasADi function each, so the generated code has each once)."""
-    key = (tableau.name, tuple(map(tuple, tableau.A)), tau, rkmk)
+    split = is_splitting(tableau)
+    key = (tableau.name, tuple(tableau.halves) if split else tuple(map(tuple, tableau.A)),
+           tau, rkmk)
     if _LAST and _LAST[0] is model and _LAST[1] == key:
         return _LAST[2]
     family = model.family
@@ -192,7 +200,10 @@ def _functions(model, tableau, tau: str, rkmk: str):
     fx = ca.SX.sym("fext", tableau.stages * len(comps)) if jforces else None
     steps = {}
     for c, (cls, (lag_in, _)) in enumerate(sorted(lags.items())):
-        if lay is None:
+        if split:        # the explicit body step of a splitting scheme (no unknowns)
+            e = split_body_step(model, tableau, body, lambda G, X, f=lag_in: f(G, X, ib),
+                                gb, pb, hb, ib, cls, c)
+        elif lay is None:
             e = step_equations(body, lambda G, X, f=lag_in: f(G, X, ib), tableau, tau, rkmk,
                                reduced, gb, pb, hb)
         else:

@@ -161,6 +161,6 @@ def load(path, backend=None, *, cc=None, cflags=None, compose=None) -> Integrato
         from ..tableaus.composition import check_base, get_composition
         composition = get_composition(compose)
         check_base(meta["options"]["tableau"], rkmk=meta["options"]["rkmk"],
-                   step_uses_g=meta["step_uses_g"])
+                   step_uses_g=meta["step_uses_g"], explicit=meta.get("explicit") is True)
         impl.compose = composition.gammas
     return Integrator(meta, impl, module_dir, composition)

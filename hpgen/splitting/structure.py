@@ -17,7 +17,8 @@ block diagonal over the factors of the group, each factor one of
 - R<n>: any SPD block;
 
 and V a function of g (and of the runtime parameters) alone. The model must be otherwise
-closed: no forces, control inputs, time dependence or constraints. ``recognise`` returns
+closed: no forces, control inputs, time dependence or constraints (a constrained family
+model's bodies are recognised one by one, recognise_lagrangian, hpgen.derive.family_split). ``recognise`` returns
 the frozen description the flows are built from, or raises ModelError naming what breaks
 the structure (a Lagrangian term where one can be named).
 """
@@ -79,12 +80,13 @@ def _family(name: str) -> str:
                   "R<n> and products of them)")
 
 
-def _term_breaking(model) -> str:
-    """The first additive term of the model's Lagrangian that is neither free of xi nor a
-    constant quadratic form in xi, as text ('' when none can be singled out)."""
+def _term_breaking(model, expr=None, xs=None) -> str:
+    """The first additive term of the model's Lagrangian (or of the sympy ``expr`` in the
+    symbols ``xs``) that is neither free of xi nor a constant quadratic form in xi, as text
+    ('' when none can be singled out)."""
     import sympy as sp
-    xs = tuple(model.xi_symbols)
-    for term in sp.Add.make_args(model.lagrangian):
+    xs = tuple(model.xi_symbols) if xs is None else tuple(xs)
+    for term in sp.Add.make_args(model.lagrangian if expr is None else expr):
         if not term.free_symbols & set(xs):
             continue
         at0 = {x: 0 for x in xs}
@@ -120,26 +122,38 @@ def recognise(model, lag, params=None) -> SplitStructure:
     """The SplitStructure of ``model`` with l given as ``lag(g, xi)`` (SX in, SX out; the
     runtime parameters, if any, bound to the SX symbol ``params``), or ModelError."""
     if model.constraints:
-        raise _refuse("the model has constraints (use a VPRK tableau)")
+        raise _refuse("the model has constraints and is not derived body by body (split2 "
+                      "takes constraints on a family model with local sums and joints; else "
+                      "use a VPRK tableau)")
     if model.forced:
         raise _refuse("the model has forces (use a VPRK tableau)")
     if model.inputs:
         raise _refuse("the model has control inputs (use a VPRK tableau)")
     if model.time_dependent:
         raise _refuse("the Lagrangian depends on the time t (use a VPRK tableau)")
-    group = model.group
+    return recognise_lagrangian(model.group, lag, params, lambda: _term_breaking(model))
+
+
+def recognise_lagrangian(group, lag, params=None, breaking=None,
+                         where: str = "") -> SplitStructure:
+    """The SplitStructure of l = ``lag(g, xi)`` on ``group`` alone (no model-level checks:
+    a family's body Lagrangian, hpgen.derive.family_split), or ModelError; ``params``: SX
+    symbols l may depend on (runtime parameters, a body index) but M may not; ``breaking()``
+    -> the text of the term that breaks the structure ('' if none); ``where``: a prefix of
+    the message naming what was recognised (a body class)."""
     n, d = group.n, group.d
     g, xi = ca.SX.sym("g", n, n), ca.SX.sym("xi", d)
     L = lag(g, xi)
     H = ca.hessian(L, xi)[0]
     moving = [ca.vec(g), xi] + ([params] if params is not None and params.numel() else [])
+    term = (lambda: breaking() if breaking is not None else "")  # noqa: E731
     if ca.depends_on(H, ca.vertcat(*moving)):
-        term = _term_breaking(model)
-        raise _refuse("d2l/dxi2 is not constant" + (f" (term {term})" if term else ""))
+        t = term()
+        raise _refuse(where + "d2l/dxi2 is not constant" + (f" (term {t})" if t else ""))
     lin = ca.substitute(ca.gradient(L, xi), xi, ca.SX.zeros(d))
-    if not _vanishes(lin, [ca.vec(g)] + moving[2:], model, n):
-        term = _term_breaking(model)
-        raise _refuse("l has a term linear in xi" + (f" ({term})" if term else ""))
+    if not _vanishes(lin, [ca.vec(g)] + moving[2:], None, n):
+        t = term()
+        raise _refuse(where + "l has a term linear in xi" + (f" ({t})" if t else ""))
     M = np.array(ca.evalf(H), dtype=float)
     factors = []
     for lay in group.factors:
@@ -148,15 +162,16 @@ def recognise(model, lag, params=None) -> SplitStructure:
         rest = M[sl, :].copy()
         rest[:, sl] = 0.0
         if np.any(rest):
-            raise _refuse(f"the inertia couples factor {lay.name} (xi[{lay.off}:"
+            raise _refuse(where + f"the inertia couples factor {lay.name} (xi[{lay.off}:"
                           f"{lay.off + lay.d}]) with another factor")
         B = M[sl, sl]
         if np.any(B != B.T) or np.linalg.eigvalsh(B).min() <= 0.0:
-            raise _refuse(f"the inertia of factor {lay.name} is not symmetric positive definite")
+            raise _refuse(where + f"the inertia of factor {lay.name} is not symmetric "
+                          "positive definite")
         axes, moments, tinv = (), (), ()
         if fam in ("SO3", "SE3"):
             if fam == "SE3" and np.any(B[:3, 3:]):
-                raise _refuse("the SE3 inertia couples rotation and translation (block "
+                raise _refuse(where + "the SE3 inertia couples rotation and translation (block "
                               "xi[0:3] x xi[3:6] not zero)")
             axes, moments = _principal(B[:3, :3])
         if fam == "SO2":

@@ -81,12 +81,16 @@ def is_symmetric_tableau(A, b, tol: float = SYMMETRY_TOL) -> bool:
         for i in range(s) for j in range(s))
 
 
-def check_base(tableau: str, *, rkmk: str, step_uses_g: bool) -> None:
+def check_base(tableau: str, *, rkmk: str, step_uses_g: bool, explicit: bool = True) -> None:
     """ModelError (field integrator.compose) unless the module's step S(h) is symmetric,
     S(-h) o S(h) = id: a composition of a non-symmetric step does not raise its order.
     ``tableau`` is the module's catalog name, ``rkmk`` its RKMK constraint, ``step_uses_g``
     meta.json's flag (the residual or the momentum update depends on g: l, a force or a
-    constraint depends on g).
+    constraint depends on g), ``explicit`` meta.json's (False for a splitting scheme on a
+    constrained family model, hpgen.derive.family_split).
+
+    Accepted: a one-stage splitting scheme on a constrained model (RATTLE around the
+    symmetric basic step K(h/2) F(h) K(h/2): symmetric, order 2).
 
     Symmetric, and accepted: a symmetric tableau with rkmk: truncated (the chart maps
     satisfy tau(-x) = tau(x)^-1), provided the stage points g_k tau(h sum_j a_ij Xi_j) seen
@@ -98,6 +102,10 @@ def check_base(tableau: str, *, rkmk: str, step_uses_g: bool) -> None:
     compositions, for the defects measured)."""
     from ..splitting import is_splitting
     from . import TABLEAU_NAMES, get_tableau
+    if is_splitting(tableau) and not explicit:
+        from ..splitting.coefficients import get_splitting
+        if get_splitting(tableau).stages == 1:
+            return
     if is_splitting(tableau):
         raise ModelError(f"the splitting scheme {tableau} is already a composition; compose "
                          "applies to an implicit symmetric tableau", field=FIELD)

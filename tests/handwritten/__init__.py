@@ -15,6 +15,9 @@ in ``tests/regression/test_handwritten.py``.
 - ``vprk``          the general s-stage Lie group VPRK method of the paper's theorem (eqs.
                     lievprk1 - lievprk, q = 0), any tableau, for the heavy top.
 - ``moser_veselov`` the Moser-Veselov discrete rigid body, and what it coincides with.
+- ``rattle_split``  RATTLE around kick / exact symmetric-top flow / kick on the N-link capsule
+                    chain (the reference of ``tests/regression/test_rattle_split.py``; world
+                    momentum, not hpgen's body-frame p: the test converts).
 
 Convention shared by all modules (the regression tests depend on it): hpgen's state momentum
 p_k is the node momentum (discrete Legendre transform at t_k) and NOT the paper's multiplier

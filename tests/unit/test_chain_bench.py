@@ -105,7 +105,13 @@ def test_compose_bench_parses_runs_and_options():
     assert bench.newton_options("default") is None
     assert bench.compile_options("gauss2") == dict(tableau="gauss2", tau="cay", rkmk="exact")
     assert bench.compile_options("suzuki4") == dict(compose="suzuki4")
-    for bad in ("rk4:1e-3", "sv:", "sv:-1e-3", "suzuki4:x", "sv@chord:1e-3"):
+    assert bench.parse_run("split2+suzuki4@simplified:5e-3") == ("split2+suzuki4", [5e-3],
+                                                                  "simplified")
+    assert bench.compile_options("split2") == dict(tableau="split2")
+    assert bench.compile_options("split2-fasso+kahan-li6") == dict(tableau="split2-fasso",
+                                                                   compose="kahan-li6")
+    for bad in ("rk4:1e-3", "sv:", "sv:-1e-3", "suzuki4:x", "sv@chord:1e-3", "split4:1e-3",
+                "split2+rk4:1e-3"):
         with pytest.raises(SystemExit, match="--runs"):
             bench.parse_run(bad)
     assert [bench.default_t(n) for n in (10, 16, 32, 64)] == [100.0, 100.0, 20.0, 5.0]
