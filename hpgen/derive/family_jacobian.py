@@ -121,11 +121,9 @@ def _assembly(model, funcs, parts):
     nzb = st["nz"]
     zc = nzb * N
     bf = _jacobian_function(st["F"], [(0, 0), (0, 2)], f"{st['F'].name()}_blocks", (0,))
-    # a splitting step's g1 differentiated before its Newton-Schulz step (whose derivative
-    # is the identity on the tangent vectors to round-off), its nominal g1 after it
-    uj = st.get("UJ")
-    bu = _jacobian_function(st["U"] if uj is None else uj, [(0, 0), (0, 2), (1, 0), (1, 2)],
-                            f"{st['U'].name()}_blocks", (0, 1) if uj is None else (2, 1))
+    # a splitting step's G1 is its g1 before the Newton-Schulz step (hpgen.derive.family_split)
+    bu = _jacobian_function(st["U"] if st.get("UR") is None else st["UR"],
+                            [(0, 0), (0, 2), (1, 0), (1, 2)], f"{st['U'].name()}_blocks", (0, 1))
     hv = parts["hv"]              # the step vector of an open model, else h
     ext = (parts["Fext"],) if "Fext" in parts else ()  # forces between bodies
     of, ou = bf.map(N)(Z, G, Q, hv, I, *ext), bu.map(N)(Z, G, Q, hv, I, *ext)
