@@ -200,8 +200,9 @@ def _functions(model, tableau, tau: str, rkmk: str):
     fx = ca.SX.sym("fext", tableau.stages * len(comps)) if jforces else None
     steps = {}
     for c, (cls, (lag_in, _)) in enumerate(sorted(lags.items())):
+        raw = None       # a splitting step's g1 before its Newton-Schulz step
         if split:        # the explicit body step of a splitting scheme (no unknowns)
-            e = split_body_step(model, tableau, body, lambda G, X, f=lag_in: f(G, X, ib),
+            e, raw, ns = split_body_step(model, tableau, body, lambda G, X, f=lag_in: f(G, X, ib),
                                 gb, pb, hb, ib, cls, c)
         elif lay is None:
             e = step_equations(body, lambda G, X, f=lag_in: f(G, X, ib), tableau, tau, rkmk,
@@ -224,6 +225,12 @@ def _functions(model, tableau, tau: str, rkmk: str):
             nz=e.z.numel(), blocks=e.blocks,
             F=ca.Function(f"body{c}_residual", args, [e.residual], CALL),
             U=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1], CALL),
+            # a splitting step's update before its Newton-Schulz step on g1 (UR) and that
+            # step (NS, of vec g1) for the mapped step (hpgen.derive.family_split); else None
+            UR=None if raw is None else ca.Function(
+                f"body{c}_update_raw", args, [ca.vec(raw), e.p1], CALL),
+            NS=None if raw is None else ca.Function(
+                f"body{c}_newton_schulz", [gbv], [ca.vec(ns(gb))], CALL),
             M=ca.Function(f"body{c}_margin", [e.z, hb], [e.margin], CALL),
             C=ca.Function(f"body{c}_chart", [e.z, hb], [e.chart_step], CALL),
             Z=ca.Function(f"body{c}_guess", [e.xi_hat, gbv, pb, hb], [e.guess], CALL),

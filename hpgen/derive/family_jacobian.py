@@ -121,8 +121,9 @@ def _assembly(model, funcs, parts):
     nzb = st["nz"]
     zc = nzb * N
     bf = _jacobian_function(st["F"], [(0, 0), (0, 2)], f"{st['F'].name()}_blocks", (0,))
-    bu = _jacobian_function(st["U"], [(0, 0), (0, 2), (1, 0), (1, 2)],
-                            f"{st['U'].name()}_blocks", (0, 1))
+    # a splitting step's G1 is its g1 before the Newton-Schulz step (hpgen.derive.family_split)
+    bu = _jacobian_function(st["U"] if st.get("UR") is None else st["UR"],
+                            [(0, 0), (0, 2), (1, 0), (1, 2)], f"{st['U'].name()}_blocks", (0, 1))
     hv = parts["hv"]              # the step vector of an open model, else h
     ext = (parts["Fext"],) if "Fext" in parts else ()  # forces between bodies
     of, ou = bf.map(N)(Z, G, Q, hv, I, *ext), bu.map(N)(Z, G, Q, hv, I, *ext)
@@ -179,9 +180,9 @@ def _assembly(model, funcs, parts):
         hv_.append(([out(3 * K + K * K + s) for s in range(K)], of_slots(db)))
     A = Sum(tA, (db * N, m))
 
-    def times_A(k, w):                # -(X_body A) at the lambda columns
-        t = block_products(*per_body(outs[k], sp[k], w, db), A, f"{st['F'].name()}_dA{k}",
-                           scale=-1.0)
+    def times_A(k, w):                # -(X_body A) at the lambda columns; A's rows per body
+        t = block_products(*per_body(outs[k], sp[k], w, db), A,  # gathered once (cache)
+                           f"{st['F'].name()}_dA{k}", cache, scale=-1.0)
         return t.shifted(0, zc)
 
     # the chain rule: block products (mapped SX) and sums of Entries (static gathers; the

@@ -83,7 +83,8 @@ def mapped_step(model, funcs, G, P, h, z, xi_hat) -> StepEquations | None:
 
 def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     """(mapped_step's StepEquations, its intermediates for the block-assembled Jacobian
-    (hpgen.derive.family_jacobian): a dict of MX Z, Q, F, G1, P1m, P1, V (columns per body), the
+    (hpgen.derive.family_jacobian): a dict of MX Z, Q, F, G1 (a splitting step's before its
+    Newton-Schulz step), P1m, P1, V (columns per body), the
     joint groups and their slots' columns of G, G1, V and their nu (by group), the constants
     I, Hinv and the joint rows' order), or None. An open model's
     h is its step vector hv (hpgen.abi)."""
@@ -127,7 +128,12 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
         Fext, external = mapped_external_forces(st["JS"], Z, G, hv, N)
         ext = (Fext,)
     Fr = mapped(st["F"], N)(Z, G, Q, hv, I, *ext)
-    G1, P1m = mapped(st["U"], N)(Z, G, Q, hv, I, *ext)
+    if st.get("UR") is None:
+        G1, P1m = mapped(st["U"], N)(Z, G, Q, hv, I, *ext)
+        G1out = G1
+    else:       # a splitting step: its Newton-Schulz step on the output g1 alone
+        G1, P1m = mapped(st["UR"], N)(Z, G, Q, hv, I, *ext)
+        G1out = mapped(st["NS"], N)(G1)
     phis, rows_of = [], []
     slots = {}                       # the slots' columns, each gathered once
     for key, js, fns, cols, Ij, nu, rows, gs in plan:
@@ -154,7 +160,7 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     margins = mapped(st["M"], N)(Z, hv)
     charts = mapped(st["C"], N)(Z, hv)
     guess = mapped(st["Z"], N)(ca.reshape(xi_hat, db, N), G, P, hv)
-    eqs = StepEquations(z, (), ca.vertcat(ca.vec(Fr), phi, hid), G1, ca.vec(P1),
+    eqs = StepEquations(z, (), ca.vertcat(ca.vec(Fr), phi, hid), G1out, ca.vec(P1),
                         ca.vertcat(ca.vec(guess), ca.MX.zeros(2 * m)), xi_hat,
                         ca.mmin(margins), ca.vec(charts))
     groups_out = [(key, js) for key, js in groups.items()]

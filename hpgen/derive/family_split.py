@@ -60,11 +60,17 @@ def _breaking(model, cls) -> str:
     return ""
 
 
-def split_body_step(model, scheme, body, lag, g, p, h, index, cls, c: int) -> StepEquations:
-    """The body step S(h) of class ``cls`` (the sums it has; ``c`` its number) as
-    StepEquations with no unknowns: lag(G, X) the body's l (SX, the index symbol ``index``
-    bound), g (nb x nb), p (db), h (1) SX symbols. ModelError when the body lacks the
-    structure (naming the class and the term)."""
+def split_body_step(model, scheme, body, lag, g, p, h, index, cls, c: int) -> tuple:
+    """(eqs, g1_raw, newton_schulz): the body step S(h) of class ``cls`` (the sums it has;
+    ``c`` its number) as StepEquations with no unknowns, its g1 before the Newton-Schulz
+    step and that step as a map of SX matrices (g1 = newton_schulz(g1_raw)). lag(G, X) the
+    body's l (SX, the index symbol ``index`` bound), g (nb x nb), p (db), h (1) SX symbols.
+    ModelError when the body lacks the structure (naming the class and the term).
+
+    The mapped family step (hpgen.derive.family_map) takes the Newton-Schulz step on g1
+    alone: the joints' rows and end impulses read g1_raw, and the Jacobian blocks
+    differentiate it (the step moves g1 by round-off and its derivative is the identity on
+    the group's tangent vectors to round-off), so neither the residual nor J pays for it."""
     from ..splitting.flows import _force_function, composition, schedule
     from ..splitting.structure import recognise_lagrangian
     check_split_family(model, scheme)
@@ -74,12 +80,13 @@ def split_body_step(model, scheme, body, lag, g, p, h, index, cls, c: int) -> St
     moving = ca.vertcat(ca.vec(g), index)
     kicks = bool(ca.depends_on(force, moving)) or bool(ca.DM(ca.evalf(force)).full().any())
     ops = schedule(structure, scheme, kicks)
-    g1, p1 = composition(structure, body, force, g, ops, g, p, h)
-    g1 = _reorthogonalized(structure, g1)
+    raw, p1 = composition(structure, body, force, g, ops, g, p, h)
+    g1 = _reorthogonalized(structure, raw)
     z = ca.SX.sym("z", 0)
     return StepEquations(z=z, blocks=(), residual=ca.SX(0, 1), g1=g1, p1=p1,
                          guess=ca.SX(0, 1), xi_hat=ca.SX.sym("xi_hat", body.d),
-                         margin=ca.SX(1.0), chart_step=ca.SX.zeros(body.d))
+                         margin=ca.SX(1.0), chart_step=ca.SX.zeros(body.d)), raw, \
+        (lambda G: _reorthogonalized(structure, G))
 
 
 def _reorthogonalized(structure, g1):
