@@ -25,7 +25,10 @@ Phi_{j,k}(g1)^T nu_j)/d g1,
 
 (Z-blocks block-diagonal over the bodies). With forces between bodies the body step also
 takes its stage forces Fext(Z) (hpgen.derive.family_joint_forces.external_force_terms adds
-F_fext, g1_fext, P1m_fext times dFext/dz to J, dg1/dz, dP1/dz). The result equals casadi.jacobian of the mapped
+F_fext, g1_fext, P1m_fext times dFext/dz to J, dg1/dz, dP1/dz). A splitting step (no body
+unknowns, a closed model) composes the hidden rows' dhid/dV dV = Phi_s (V_g dg1 + V_P dP1)
+inside the joints' functions (Phi_s V_g added to dhid/dg1_s, Phi_s V_P times dP1), so that dV
+is not formed. The result equals casadi.jacobian of the mapped
 residual to round-off, with work and memory proportional to the blocks' nonzeros instead of
 CasADi's directional derivatives of the whole mapped step. In the fused F and J
 (residual_and_jacobian) the body step's forward values come from the blocks' own calls.
@@ -64,11 +67,13 @@ def _jacobian_function(f, pairs, name, nominal=()):
                        + [blocks[("nom", o)] for o in nominal], CALL)
 
 
-def _joint_jacobians(fun, K: int, rows: int):
+def _joint_jacobians(fun, K: int, rows: int, vel=None):
     """(old, new) SX functions of a joint's row-block function ``fun`` (vec g per slot, i) ->
     (phi, Phi_s): old(g_s.., i) -> Phi_s^T per slot; new(g1_s.., i, nu, V_s..) ->
     dphi/dg1_s per s, d(Phi_s^T nu)/dg1_t per (s, t), -Phi_s^T per s, d(sum_s Phi_s V_s)/dg1_s
-    per s, Phi_s per s."""
+    per s, Phi_s per s. With ``vel`` (the bodies' velocity blocks, (V_g, V_P) of (g1, P1, i,
+    Hinv)) new also takes P1_s.., i_s.., Hinv_s.. and composes the hidden rows through V:
+    d(sum_s Phi_s V_s)/dg1_s + Phi_s V_g,s per s and Phi_s V_P,s (instead of Phi_s) per s."""
     nbb, db = fun.size1_in(0), fun.size2_out(1)
     jf = _jacobian_function(fun, [(0, s) for s in range(K)]
                             + [(1 + s, t) for s in range(K) for t in range(K)],
@@ -87,9 +92,18 @@ def _joint_jacobians(fun, K: int, rows: int):
                           for c in range(db)]) for t in range(K)] for s in range(K)]
     hid = [sum((vs[s][c] * dPhi[s * K + t][c * rows:(c + 1) * rows, :]
                 for s in range(K) for c in range(db)), ca.SX(rows, nbb)) for t in range(K)]
+    last, extra = [out[1 + s] for s in range(K)], []
+    if vel is not None:
+        extra = [ca.SX.sym(f"{a}{s}", vel.sparsity_in(q)) for q, a in ((1, "p"), (2, "i"),
+                                                                      (3, "hinv"))
+                 for s in range(K)]
+        for s in range(K):
+            vg, vp = vel(gs[s], *extra[s::K])
+            hid[s] = hid[s] + ca.mtimes(out[1 + s], vg)
+            last[s] = ca.mtimes(out[1 + s], vp)
     outs = (list(dphi) + [kick[s][t] for s in range(K) for t in range(K)]
-            + [-out[1 + s].T for s in range(K)] + hid + [out[1 + s] for s in range(K)])
-    new = ca.Function(f"{fun.name()}_end_blocks", [*gs, i, nu, *vs], outs, CALL)
+            + [-out[1 + s].T for s in range(K)] + hid + last)
+    new = ca.Function(f"{fun.name()}_end_blocks", [*gs, i, nu, *vs, *extra], outs, CALL)
     return old, new
 
 
@@ -135,6 +149,13 @@ def _assembly(model, funcs, parts):
         # body t's block at (t a, t b): the map's nonzeros are already in the CCS order
         return Entries.of(ca.sparsity_cast(outs[k], ca.diagcat(*[sp[k]] * N)))
     vj = _jacobian_function(parts["velocity"], [(0, 0), (0, 1)], "body_velocity_blocks")
+    # a splitting step (no unknowns per body): the hidden rows compose Phi V_P in the joints'
+    # functions and read dP1, so that dV is not formed (a closed model: no e1)
+    fold = st.get("UR") is not None and nzb == 0 and parts["e1"] is None
+
+    def body_cols(M, cols):           # the columns of body blocks cols of M (w columns each)
+        w = M.size2() // N
+        return M[:, [c * w + q for c in cols for q in range(w)]]
 
     def brows(u, w):                  # body u's rows in a matrix of w rows per body
         return range(u * w, (u + 1) * w)
@@ -148,13 +169,14 @@ def _assembly(model, funcs, parts):
     for key, js in parts["groups"]:
         first = joints[js[0]]
         K, rows = len(first.bodies), len(first.rows)
-        old, new = _joint_jacobians(jfun[key], K, rows)
+        old, new = _joint_jacobians(jfun[key], K, rows, vj if fold else None)
         cols = [[joints[j].bodies[s] for j in js] for s in range(K)]
         Ij = ca.DM([joints[j].value for j in js]).T
         sl = parts["slots"][key]
         o_old = old.map(len(js))(*sl["G"], Ij)
         o_old = [o_old] if K == 1 else o_old
-        o_new = new.map(len(js))(*sl["G1"], Ij, sl["nu"], *sl["V"])
+        extra = ([body_cols(M, c) for M in (P1, I, Hinv) for c in cols] if fold else [])
+        o_new = new.map(len(js))(*sl["G1"], Ij, sl["nu"], *sl["V"], *extra)
         at = [int(rowoff[j]) for j in js]
         jrows = [range(a, a + rows) for a in at]
 
@@ -196,10 +218,13 @@ def _assembly(model, funcs, parts):
     tKg = [block_products(xs, ents, dG1, f"joint_kick_dg{q}", cache, scale=-1.0)
            for q, (xs, ents) in enumerate(kg)]
     dP1 = Sum([diag(4), times_A(5, db), *tKg, *tB, *tE[2]], (db * N, nzc))
-    vg, vp = vj.map(N)(G1, P1, I, Hinv, *([] if parts["e1"] is None else [parts["e1"]]))
-    dV = Sum([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, "vel_dg"),
-                   block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1, "vel_dp")],
-                  (db * N, nzc))
+    if fold:
+        dV = dP1
+    else:
+        vg, vp = vj.map(N)(G1, P1, I, Hinv, *([] if parts["e1"] is None else [parts["e1"]]))
+        dV = Sum([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, "vel_dg"),
+                  block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1, "vel_dp")],
+                 (db * N, nzc))
 
     def joint_rows(plan, Y, what, row0, scale=None):
         ts = [block_products(xs, ents, Y, f"joint_{what}{q}", cache, scale) for q, (xs, ents)

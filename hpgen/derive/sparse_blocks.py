@@ -204,7 +204,8 @@ class Gathered:
         take = idx[:, union].ravel()
         pad = bool((take == zero).any())      # an entity without a union entry: a zero
         if isinstance(Y, Sum):                # gathered from the sum's source directly
-            yv, at, z = Y.source(pad)
+            # (a sum materialized once, with the zero, for all its readers)
+            yv, at, z = Y.source(pad or Y.summed)
             take = np.where(take == zero, z if pad else 0, at[np.minimum(take, zero - 1)])
         else:
             yv = ca.sparsity_cast(Y, ca.Sparsity.dense(zero, 1))
