@@ -120,7 +120,7 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
                     folder.commit(new, rec, run.snapshot(),
                                   None if work is None else work.state())
                     bar.update(new.k - prog.k)
-                    prog = new       # only once the chunk is committed (an interrupt may come)
+                    prog = new
         except ConvergenceError as exc:
             if exc.partial is None:
                 raise
@@ -128,7 +128,9 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
             folder.write_chunk(prog.chunks - 1, exc.partial)
             error = exc
         except KeyboardInterrupt as exc:
-            saved = None
+            # what is committed, not prog: an interrupt deferred while a chunk was written
+            # is raised as its commit returns, before prog = new
+            prog, saved = folder.progress, None
             if prog.chunks:
                 msg = f"interrupted after {prog.k} of {steps} steps"
                 folder.assemble(path, prog, run_metadata(integ, h, every, True,
