@@ -81,7 +81,8 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     On a failed step the records before it are saved (partial=True) and the
     ConvergenceError is re-raised with ``.saved = (path, samples)``; on KeyboardInterrupt
     the completed chunks are saved (partial=True) and it is re-raised with ``.saved =
-    (path or None, samples, steps done, partial folder)``."""
+    (path or None, samples, steps done, partial folder)``; in both cases with ``.counts``,
+    the run's counters by name over what was saved (the failed step's solves included)."""
     path = npz_path(out)
     parts = partial_dir(path)
     chunk = _int(chunk, "chunk", 1)
@@ -139,6 +140,7 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
             else:
                 folder.keep = False
             exc.saved = (saved, prog.samples, prog.k, parts if folder.keep else None)
+            exc.counts = dict(prog.counts)
             raise
         folder.assemble(path, prog, run_metadata(integ, h, every, error is not None,
                                                  prog.counts, error))
@@ -150,7 +152,7 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
                "balance_max_change": prog.change.get("balance"), "removed": removed,
                **prog.counts}
     if error is not None:
-        error.saved = (path, prog.samples)
+        error.saved, error.counts = (path, prog.samples), dict(prog.counts)
         raise error
     return path, summary
 

@@ -133,6 +133,8 @@ def test_interrupted_right_after_the_first_commit_keeps_it_and_resumes(
     if expected is KeyboardInterrupt:
         saved, samples, k, kept = info.value.saved
         assert (k, kept, samples) == (CHUNK, parts, len(load_partial(saved)["t"]))
+        with np.load(saved) as f:
+            assert info.value.counts["newton_iterations"] == int(f["newton_iterations"]) > 0
         assert getattr(info.value, "signum", signal.SIGINT) == (
             signal.SIGTERM if how == "sigterm-in-commit" else signal.SIGINT)
     path2, summary = record_to_npz(integ, tmp_path / "run", resume=True, **kw)
