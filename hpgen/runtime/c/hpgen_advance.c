@@ -1,7 +1,7 @@
 /* hpgen's C runtime, part 4: the runs over a run's steps (hpgen_runs.c): hpgen_advance
    (states), hpgen_advance_sections (Poincare sections), hpgen_advance_record (record rows,
    with the record's velocity hpgen_velocity) and hpgen_observe. Mirrored in Python by
-   hpgen.runtime.loop (the same order of operations). Included by hpgen_runtime.c after
+   hpgen.runtime.loop and hpgen.runtime.record_row (the same order of operations). Included by hpgen_runtime.c after
    hpgen_runs.c. */
 
 /* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
