@@ -18,7 +18,8 @@ holds:
   and, for a run that records work, the work accumulated so far (hpgen.runtime.work).
 
 Each chunk file is written to a temp file and renamed (atomic): a chunk is committed when
-its file exists, so a kill at any instant leaves a consistent folder (one rename to a new
+its file exists (and counted so by the folder before an interrupt that came during its
+write is delivered), so a kill at any instant leaves a consistent folder (one rename to a new
 name per chunk, no file rewritten; written, not fsync'ed: a killed process loses nothing, a
 power cut may). ``resume=True`` restores the state of the last chunk and continues; the
 final file's arrays are bitwise those of an uninterrupted run (the C run advanced n1 then n2
