@@ -212,6 +212,7 @@ def cmd_run(args) -> int:
                                           directions=directions, u=u,
                                           progress=False if args.no_progress else None)
     except ConvergenceError as e:
+        _print_counters(getattr(e, "counts", {}))        # the failed run's, as on success
         return failed(e, "samples")
     wall = time.perf_counter() - t0
     for old in summary["removed"]:
@@ -229,16 +230,18 @@ def cmd_run(args) -> int:
     if summary["momentum_max_change"] is not None and not model.forced:
         print(_momentum_line(model, summary["momentum_max_change"], directions,
                              summary["conserved_max_change"]))
-    if summary["guarded"]:
-        print(_guard_line(summary["guarded"]))
+    _print_counters(summary)
     _plot_run(path, args, integ)
     return 0
 
 
-def _guard_line(n) -> str:
-    """The run's steps the wrong-root guard solved again (docs/numerics.md sec. 8), when any."""
-    return (f"  {n} step{'s' if n != 1 else ''} re-solved by the wrong-root guard (its root "
-            "jumped away from the predictor's offsets)")
+def _print_counters(counts):
+    """A run's counters ({name: total}, hpgen.runtime.counters; a failed or interrupted
+    run's too): the steps the wrong-root guard solved again (numerics.md sec. 8), if any."""
+    n = counts.get("guarded", 0)
+    if n:
+        print(f"  {n} step{'s' if n != 1 else ''} re-solved by the wrong-root guard (its "
+              "root jumped away from the predictor's offsets)")
 
 
 def _plot_run(path, args, integ=None):
@@ -313,6 +316,7 @@ def _run_sections(integ, model, sc, h, steps, out, args, u=None) -> int:
             raise
         save(cr, e)
         e.saved = (path, len(cr))
+        _print_counters(counters.of(cr))
         return failed(e, "section crossings")
     wall = time.perf_counter() - t0
     save(cr, None)
@@ -321,8 +325,7 @@ def _run_sections(integ, model, sc, h, steps, out, args, u=None) -> int:
           + (f"{len(cr)} crossings of the section {sc.section.text!r}" if sc.section else
              f"{len(cr)} samples of the section every_t = {sc.section_every_t:g}")
           + f" -> {path}")
-    if cr.guarded:
-        print(_guard_line(cr.guarded))
+    _print_counters(counters.of(cr))
     _plot_run(path, args)
     return 0
 
@@ -384,6 +387,7 @@ def main(argv=None) -> int:
         print(f"hpgen: error: {e}", file=sys.stderr)
         return 1
     except KeyboardInterrupt as e:
+        _print_counters(getattr(e, "counts", {}))      # an interrupted run's committed chunks'
         return interrupted(e)
     except BrokenPipeError:
         # the reader of stdout went away (hpgen list | head): stop quietly, as cat does

@@ -28,7 +28,8 @@ takes its stage forces Fext(Z) (hpgen.derive.family_joint_forces.external_force_
 F_fext, g1_fext, P1m_fext times dFext/dz to J, dg1/dz, dP1/dz). A splitting step (no body
 unknowns, a closed model) composes the hidden rows' dhid/dV dV = Phi_s (V_g dg1 + V_P dP1)
 inside the joints' functions (Phi_s V_g added to dhid/dg1_s, Phi_s V_P times dP1), so that dV
-is not formed. The result equals casadi.jacobian of the mapped
+is not formed: the hidden rows' last blocks multiply dW/dz, with W = V (W = P1 in a splitting
+step). The result equals casadi.jacobian of the mapped
 residual to round-off, with work and memory proportional to the blocks' nonzeros instead of
 CasADi's directional derivatives of the whole mapped step. In the fused F and J
 (residual_and_jacobian) the body step's forward values come from the blocks' own calls.
@@ -165,7 +166,7 @@ def _assembly(model, funcs, parts):
 
     nzc = zc + 2 * m                                      # the columns of J
     tA, tB = [], []
-    kg, pg, hg, hv_ = [], [], [], []    # (xs, entities) of the joints' products
+    kg, pg, hg, hw = [], [], [], []     # (xs, entities) of the joints' products
     for key, js in parts["groups"]:
         first = joints[js[0]]
         K, rows = len(first.bodies), len(first.rows)
@@ -199,7 +200,7 @@ def _assembly(model, funcs, parts):
                     for e in range(len(js))]
         pg.append(([out(s) for s in range(K)], of_slots(nb2)))
         hg.append(([out(2 * K + K * K + s) for s in range(K)], of_slots(nb2)))
-        hv_.append(([out(3 * K + K * K + s) for s in range(K)], of_slots(db)))
+        hw.append(([out(3 * K + K * K + s) for s in range(K)], of_slots(db)))
     A = Sum(tA, (db * N, m))
 
     def times_A(k, w):                # -(X_body A) at the lambda columns; A's rows per body
@@ -218,11 +219,11 @@ def _assembly(model, funcs, parts):
     tKg = [block_products(xs, ents, dG1, f"joint_kick_dg{q}", cache, scale=-1.0)
            for q, (xs, ents) in enumerate(kg)]
     dP1 = Sum([diag(4), times_A(5, db), *tKg, *tB, *tE[2]], (db * N, nzc))
-    if fold:
-        dV = dP1
-    else:
+    if fold:                         # the joints' last blocks are Phi V_P: W = P1
+        dW = dP1
+    else:                            # W = V
         vg, vp = vj.map(N)(G1, P1, I, Hinv, *([] if parts["e1"] is None else [parts["e1"]]))
-        dV = Sum([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, "vel_dg"),
+        dW = Sum([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, "vel_dg"),
                   block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1, "vel_dp")],
                  (db * N, nzc))
 
@@ -232,6 +233,6 @@ def _assembly(model, funcs, parts):
         return [t.shifted(row0, 0) for t in ts]
     dphi = joint_rows(pg, dG1, "phi", zc, h)
     J = assemble([diag(0), times_A(1, nzb), *tE[0], *dphi,
-                  *joint_rows(hg, dG1, "hg", zc + m), *joint_rows(hv_, dV, "hv", zc + m)],
+                  *joint_rows(hg, dG1, "hg", zc + m), *joint_rows(hw, dW, "hv", zc + m)],
                  (nzc, nzc))
     return (J, *forward)

@@ -25,6 +25,7 @@ import itertools
 import numpy as np
 
 from . import loop, newton
+from .record_row import record_row
 
 _counter = itertools.count()
 
@@ -173,12 +174,12 @@ class PythonBackend(_Backend):
         uses_xi, quad = m["record_uses_xi"], m["legendre_quadratic"]
         stall = self._newton.sparse
         if inputs is None:
-            return lambda g, p, k=0, h=0.0: loop.record_row(rec, vel, w, g, p, uses_xi, quad,
+            return lambda g, p, k=0, h=0.0: record_row(rec, vel, w, g, p, uses_xi, quad,
                                                             stall)
 
         def row_of(g, p, k=0, h=0.0):
             hv = inputs.at_record(h, k)
-            return loop.record_row(lambda *a: rec(*a, hv), lambda *a: vel(*a, hv), w, g, p,
+            return record_row(lambda *a: rec(*a, hv), lambda *a: vel(*a, hv), w, g, p,
                                    uses_xi, quad, stall)
         return row_of
 

@@ -18,7 +18,8 @@ holds:
   and, for a run that records work, the work accumulated so far (hpgen.runtime.work).
 
 Each chunk file is written to a temp file and renamed (atomic): a chunk is committed when
-its file exists, so a kill at any instant leaves a consistent folder (one rename to a new
+its file exists (and counted so by the folder before an interrupt that came during its
+write is delivered), so a kill at any instant leaves a consistent folder (one rename to a new
 name per chunk, no file rewritten; written, not fsync'ed: a killed process loses nothing, a
 power cut may). ``resume=True`` restores the state of the last chunk and continues; the
 final file's arrays are bitwise those of an uninterrupted run (the C run advanced n1 then n2
@@ -81,7 +82,8 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
     On a failed step the records before it are saved (partial=True) and the
     ConvergenceError is re-raised with ``.saved = (path, samples)``; on KeyboardInterrupt
     the completed chunks are saved (partial=True) and it is re-raised with ``.saved =
-    (path or None, samples, steps done, partial folder)``."""
+    (path or None, samples, steps done, partial folder)``; in both cases with ``.counts``,
+    the run's counters by name over what was saved (the failed step's solves included)."""
     path = npz_path(out)
     parts = partial_dir(path)
     chunk = _int(chunk, "chunk", 1)
@@ -120,7 +122,7 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
                     folder.commit(new, rec, run.snapshot(),
                                   None if work is None else work.state())
                     bar.update(new.k - prog.k)
-                    prog = new       # only once the chunk is committed (an interrupt may come)
+                    prog = new
         except ConvergenceError as exc:
             if exc.partial is None:
                 raise
@@ -128,7 +130,9 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
             folder.write_chunk(prog.chunks - 1, exc.partial)
             error = exc
         except KeyboardInterrupt as exc:
-            saved = None
+            # what is committed, not prog: an interrupt deferred while a chunk was written
+            # is raised as its commit returns, before prog = new
+            prog, saved = folder.progress, None
             if prog.chunks:
                 msg = f"interrupted after {prog.k} of {steps} steps"
                 folder.assemble(path, prog, run_metadata(integ, h, every, True,
@@ -137,6 +141,7 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
             else:
                 folder.keep = False
             exc.saved = (saved, prog.samples, prog.k, parts if folder.keep else None)
+            exc.counts = dict(prog.counts)
             raise
         folder.assemble(path, prog, run_metadata(integ, h, every, error is not None,
                                                  prog.counts, error))
@@ -148,7 +153,7 @@ def record_to_npz(integ, out, g0, h, steps, xi0=None, mu0=None, every=1,
                "balance_max_change": prog.change.get("balance"), "removed": removed,
                **prog.counts}
     if error is not None:
-        error.saved = (path, prog.samples)
+        error.saved, error.counts = (path, prog.samples), dict(prog.counts)
         raise error
     return path, summary
 

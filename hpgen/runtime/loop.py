@@ -1,20 +1,19 @@
 """The run loop of the C runtime's hpgen/runtime/c/hpgen_runs.c in Python (hpgen_run_step,
-hpgen_advance, hpgen_advance_record, hpgen_advance_sections, hpgen_velocity /
-hpgen_record_row): the same order of operations on lists of Python floats with the module's
-raw kernels, so that the Python backend's runs are those of the C backend (bitwise for
-nz <= UNROLL_MAX, see hpgen.runtime.newton). One step is newton.step_lists. numpy and the
-standard library only.
+hpgen_advance, hpgen_advance_record, hpgen_advance_sections): the same order of operations
+on lists of Python floats with the module's raw kernels, so that the Python backend's runs
+are those of the C backend (bitwise for nz <= UNROLL_MAX, see hpgen.runtime.newton). One
+step is newton.step_lists; the record row of advance_record is hpgen.runtime.record_row's.
+numpy and the standard library only.
 """
 from __future__ import annotations
 
 import numpy as np
 
 from ..abi import (GUARD_RATIO, NONFINITE, OK, PREDICTOR_COEFFICIENTS, PREDICTOR_HISTORY,
-                   RECORD, ROUNDOFF_FLOOR, STATUS_FIELDS, VELOCITY_MAXIT, VELOCITY_TOL)
+                   RECORD, STATUS_FIELDS)
 from .guard import guard_ratio, guard_resolve
-from .newton import (_INF, _NAN, Kernels, NewtonMemory, NewtonOptions, _floats, _isfinite,
-                     all_finite, norm_inf, step_lists)
-from .newton_sparse import stalled
+from .newton import (Kernels, NewtonMemory, NewtonOptions, _floats, _isfinite, all_finite,
+                     step_lists)
 
 
 #: the offsets z - G each substep of a composed step keeps for its predictor (HPGEN_CH in
@@ -294,49 +293,6 @@ def advance(kern: Kernels, run: Run, h, steps, every, opts: NewtonOptions):
             recs.append((run.g, run.p))
     st["step"] = run.k
     return steps, recs, st
-
-
-def velocity(velocity_step, g, p, quadratic, stall=False) -> tuple:
-    """(code, xi) with legendre(g, xi) = p, like ``hpgen_velocity`` in C: Newton steps
-    velocity_step(g, p, xi) -> [xi1] from xi = 0; one step when ``quadratic``, else until
-    |dxi| <= VELOCITY_TOL (1 + |xi|) or the round-off floor (``stall``, a sparse module's: or
-    the round-off stall, newton_sparse.stalled), at most VELOCITY_MAXIT steps; RECORD on
-    failure."""
-    xi, dprev = [0.0] * len(p), _INF
-    for it in range(1, VELOCITY_MAXIT + 1):
-        x1 = velocity_step(g, p, xi)[0]
-        if not all_finite(x1):
-            return RECORD, x1
-        dn = 0.0
-        for a, b in zip(x1, xi):
-            dx = abs(a - b)
-            if dx > dn:
-                dn = dx
-        xi = x1
-        if quadratic:
-            return OK, xi
-        xn = norm_inf(xi)
-        if dn <= VELOCITY_TOL * (1.0 + xn):
-            return OK, xi
-        if it > 1 and dn >= dprev and dn <= ROUNDOFF_FLOOR * (1.0 + xn):
-            return OK, xi
-        if stall and stalled(it, dn, dprev, xn, True, False):
-            return OK, xi
-        dprev = dn
-    return RECORD, xi
-
-
-def record_row(record, velocity_step, width, g, p, uses_xi, quadratic, stall=False) -> tuple:
-    """(code, row) like ``hpgen_record_row`` in C (raw kernels record and velocity_step; a
-    velocity that does not converge gives a row of ``width`` NaNs; stall: see velocity)."""
-    if uses_xi:
-        code, xi = velocity(velocity_step, g, p, quadratic, stall)
-        if code != OK:
-            return RECORD, [_NAN] * width
-    else:
-        xi = [0.0] * len(p)
-    row = record(g, p, xi)[0]
-    return (OK if all_finite(row) else RECORD), row
 
 
 def advance_record(kern: Kernels, row_of, run: Run, h, steps, every, opts: NewtonOptions,

@@ -129,10 +129,13 @@ class Progress:
 
 class PartialFolder:
     """``<out>.partial/``: created (or resumed) on entry, locked against a second writer,
-    removed on exit unless ``keep`` (an interrupted or crashed run)."""
+    removed on exit unless ``keep`` (an interrupted or crashed run). ``progress``: the
+    Progress of the last committed chunk (the run's start before the first), set with the
+    commit itself, so that an interrupt delivered as the commit ends sees it."""
 
     def __init__(self, parts: Path, out: Path):
         self.parts, self.out, self.keep, self._lock = parts, out, True, None
+        self.progress = Progress()
 
     def __enter__(self):
         return self
@@ -181,7 +184,8 @@ class PartialFolder:
              "format": PARTIAL_FORMAT, "output": self.out.name, "run": ident,
              "resume": hint}, indent=1, sort_keys=True) + "\n")
         self.keep = False          # nothing worth keeping until the first chunk is committed
-        return Progress()
+        self.progress = Progress()
+        return self.progress
 
     def resume(self, ident, hint) -> Progress:
         self._take_lock()
@@ -212,21 +216,25 @@ class PartialFolder:
         for p in self.parts.glob("chunk_*.npz"):  # chunks after the last committed one
             if p not in files:
                 p.unlink()
-        self.keep = True
+        self.keep, self.progress = True, prog
         return prog
 
-    def write_chunk(self, i, rec, extra=None):
+    def write_chunk(self, i, rec, extra=None, committed: Progress | None = None):
+        """Write chunk file i; ``committed``: the Progress the file commits (a chunk with
+        the run's state), recorded before a deferred interrupt is delivered."""
         with interrupts_deferred():
             write_npz(self.parts / _chunk_name(i), {"t": rec.t, **rec.arrays, **(extra or {})})
+            if committed is not None:
+                self.keep, self.progress = True, committed
 
     def commit(self, prog: Progress, rec, snapshot: dict, work: dict | None = None):
         """Chunk prog.chunks - 1, ``rec`` (folded into prog), is complete: write it with the
         run's state after it (``snapshot``; ``work``: the accumulated work's WorkSum.state,
-        a run that records work) and the totals; its file is the commit."""
+        a run that records work) and the totals; its file is the commit (``progress``
+        becomes prog, the folder is kept)."""
         state = {**prog.totals(), **{f"run_{k}": v for k, v in snapshot.items()},
                  **{f"work_{k}": v for k, v in (work or {}).items()}}
-        self.write_chunk(prog.chunks - 1, rec, {STATE + k: v for k, v in state.items()})
-        self.keep = True
+        self.write_chunk(prog.chunks - 1, rec, {STATE + k: v for k, v in state.items()}, prog)
 
     def assemble(self, path: Path, prog: Progress, meta: dict):
         """Stream the chunk files 0 .. prog.chunks - 1 into the .npz ``path`` (atomically;

@@ -118,20 +118,21 @@ def test_contract_literals_live_in_the_header_only():
 
 def test_python_mirror_takes_the_same_constants():
     from hpgen.codegen import pylinear
-    from hpgen.runtime import loop, newton
+    from hpgen.runtime import loop, newton, record_row
     for name in ("OK", "NO_CONVERGENCE", "NONFINITE", "DOMAIN", "ROUNDOFF_FLOOR",
                  "THETA_MAX", "SIMPLIFIED_TOL", "THETA_FLOOR", "DEFAULT_TOL", "DEFAULT_MAXIT",
                  "REFRESH"):
         assert getattr(newton, name) is getattr(abi, name), name
     assert loop.PREDICTOR_COEFFICIENTS is abi.PREDICTOR_COEFFICIENTS
     assert loop.PREDICTOR_HISTORY is abi.PREDICTOR_HISTORY
-    for name in ("OK", "NONFINITE", "RECORD", "ROUNDOFF_FLOOR"):     # the run loop's
+    for name in ("OK", "NONFINITE", "RECORD"):     # the run loop's
         assert getattr(loop, name) is getattr(abi, name), name
+    for name in ("OK", "RECORD", "ROUNDOFF_FLOOR", "VELOCITY_TOL", "VELOCITY_MAXIT"):
+        assert getattr(record_row, name) is getattr(abi, name), name    # the record row's
     assert pylinear.UNROLL_MAX is abi.UNROLL_MAX
-    assert loop.VELOCITY_TOL is abi.VELOCITY_TOL and loop.VELOCITY_MAXIT is abi.VELOCITY_MAXIT
     assert list(loop.new_status()) == [f for f, _ in abi.STATUS_FIELDS]
     # no bare tolerance or iteration cap left in the Python mirror
-    for mod in (newton, loop):
+    for mod in (newton, loop, record_row):
         tree = ast.parse(open(mod.__file__).read())
         nums = {n.value for n in ast.walk(tree) if isinstance(n, ast.Constant)
                 and type(n.value) in (int, float)}

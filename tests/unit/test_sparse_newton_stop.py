@@ -198,7 +198,7 @@ def test_a_sparse_modules_record_velocity_stops_at_the_noise():
     alternating +-1e-9): the fixed tests never end (a NaN record: the pendulum chain at 48
     links did this at step 0); with the stall (sparse modules) it stops at the noise."""
     from hpgen.abi import RECORD, ROUNDOFF_FLOOR, VELOCITY_TOL
-    from hpgen.runtime.loop import velocity
+    from hpgen.runtime.record_row import velocity
     exact = np.linspace(-10.0, 10.0, 12)
     assert 2e-9 > max(ROUNDOFF_FLOOR, VELOCITY_TOL) * 11.0
     calls = []

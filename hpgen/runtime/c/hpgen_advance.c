@@ -1,8 +1,25 @@
 /* hpgen's C runtime, part 4: the runs over a run's steps (hpgen_runs.c): hpgen_advance
    (states), hpgen_advance_sections (Poincare sections), hpgen_advance_record (record rows,
    with the record's velocity hpgen_velocity) and hpgen_observe. Mirrored in Python by
-   hpgen.runtime.loop (the same order of operations). Included by hpgen_runtime.c after
-   hpgen_runs.c. */
+   hpgen.runtime.loop and hpgen.runtime.record_row (the same order of operations). Included
+   by hpgen_runtime.c after hpgen_runs.c. */
+
+/* The start of a run loop (hpgen.runtime.loop._loop_start): st initialised; 0 with
+   HPGEN_INVALID unless steps >= 0, every >= 1 (a sections run: its cap), the options are
+   valid and, for a loop that needs g (with_g), the run is not g_stale; else 1 with the
+   loop's step vector hv = [h] and the full-Newton options of its first step. */
+static int hpgen_loop_start(const hpgen_run* r, double h, long long steps, long long every,
+                            const hpgen_options* o, int with_g, double* hv,
+                            hpgen_options* full, hpgen_status* st) {
+    hpgen_status_init(st);
+    if (steps < 0 || every < 1 || !hpgen_options_ok(o) || (with_g && r->g_stale)) {
+        st->code = HPGEN_INVALID; return 0;
+    }
+    hv[0] = h;
+    *full = *o;
+    full->simplified = 0;
+    return 1;
+}
 
 /* Advance a run by `steps` steps of size h (warm-started: each Newton starts from the previous
    solution, or from the predictor of hpgen_run_step). The state after global step k is
@@ -15,13 +32,7 @@ HPGEN_EXPORT long long hpgen_advance(hpgen_run* r, double h, long long steps, lo
     double hv[1];
     long long n, rec = 0;
     hpgen_options full;
-    hpgen_status_init(st);
-    if (steps < 0 || every < 1 || !hpgen_options_ok(o) || r->g_stale) {
-        st->code = HPGEN_INVALID; return 0;
-    }
-    hv[0] = h;
-    full = *o;
-    full.simplified = 0;
+    if (!hpgen_loop_start(r, h, steps, every, o, 1, hv, &full, st)) return 0;
     for (n = 0; n < steps; ++n) {
         if (hpgen_run_cstep(r, hv, o, &full, st, 1) != HPGEN_OK) return n;
         if (r->k % every == 0) {
@@ -77,14 +88,8 @@ HPGEN_EXPORT long long hpgen_advance_sections(hpgen_run* r, double h, long long 
     long long n;
     int i, code;
     hpgen_options full;
-    hpgen_status_init(st);
     *n_rec = 0;
-    if (steps < 0 || cap < 1 || !hpgen_options_ok(o) || r->g_stale) {
-        st->code = HPGEN_INVALID; return 0;
-    }
-    hv[0] = h;
-    full = *o;
-    full.simplified = 0;
+    if (!hpgen_loop_start(r, h, steps, cap, o, 1, hv, &full, st)) return 0;
     if (!r->s_valid) {
         if (hpgen_k_section(r->g, r->p, s1)) { st->code = HPGEN_NONFINITE; return 0; }
         r->s = s1[0];
@@ -196,12 +201,8 @@ HPGEN_EXPORT long long hpgen_advance_record(hpgen_run* r, double h, long long st
     double hv[1];
     long long n;
     hpgen_options full;
-    hpgen_status_init(st);
     *n_rec = 0;
-    if (steps < 0 || every < 1 || !hpgen_options_ok(o)) { st->code = HPGEN_INVALID; return 0; }
-    hv[0] = h;
-    full = *o;
-    full.simplified = 0;
+    if (!hpgen_loop_start(r, h, steps, every, o, 0, hv, &full, st)) return 0;
     if (HPGEN_SKIP_G) r->g_stale = 1;
     for (n = 0; n < steps; ++n) {
         if (hpgen_run_cstep(r, hv, o, &full, st, !HPGEN_SKIP_G) != HPGEN_OK) return n;
