@@ -106,6 +106,23 @@ def schedule(structure: SplitStructure, scheme, kicks: bool) -> list:
     return merged
 
 
+def kick_fractions(scheme) -> list:
+    """The times of the kicks of ``scheme``'s schedule (with kicks) as fractions of h, in
+    order: a half phi(c) kicks at its start, phi*(c) at its end (the kinetic flows advance
+    t, the kicks do not), and the two kicks that schedule merges share their time."""
+    out: list = []
+    pos = 0.0
+    for i, c in enumerate(scheme.halves):
+        adjoint = (i % 2 == 1) != scheme.adjoint_first
+        if adjoint:
+            pos += c
+        if not out or out[-1] != pos:
+            out.append(pos)
+        if not adjoint:
+            pos += c
+    return out
+
+
 class _State:
     """The mutable SX state of the composition: per factor its rotation R (or None), its
     translation x (or None) and its momentum slice p."""
@@ -242,8 +259,13 @@ def _drift(st: _State, k: int, t):
     st.p[k] = ca.vertcat(st.p[k][0:3] + t * ca.cross(P, v), P)
 
 
-def _kick(st: _State, group, force, gsym, t):
-    f = ca.substitute(force, ca.vec(gsym), ca.vec(st.g(group.n)))
+def _kick(st: _State, group, force, gsym, t, j: int = 0):
+    """p <- p + t f(g): ``force`` an SX in gsym, or (open models) a callable (G, j) -> f at
+    the j-th kick of the composition (its time, kick_fractions)."""
+    if callable(force):
+        f = force(st.g(group.n), j)
+    else:
+        f = ca.substitute(force, ca.vec(gsym), ca.vec(st.g(group.n)))
     for k, fk in enumerate(st.structure.factors):
         st.p[k] = st.p[k] + t * f[fk.off:fk.off + fk.d]
 
@@ -251,10 +273,12 @@ def _kick(st: _State, group, force, gsym, t):
 def composition(structure, group, force, gsym, ops, g, p, h):
     """(g1, p1): the sub-flows ``ops`` (schedule) applied to (g, p) with step h (SX)."""
     st = _State(structure, g, p)
+    j = 0
     for kind, k, axis, c in ops:
         t = c * h
         if kind == "kick":
-            _kick(st, group, force, gsym, t)
+            _kick(st, group, force, gsym, t, j)
+            j += 1
         elif kind == "rot":
             _rotate(st, k, axis, t)
         elif kind == "free":
