@@ -314,3 +314,34 @@ def splitting_step(model, scheme, lag, g, p, h, params=None):
     def chart(theta):
         return composition(structure, group, force, g, ops, g, z, theta * h)[0]
     return eqs, chart
+
+
+def open_splitting_step(model, scheme, lag_f, force_f, g, p, hv):
+    """splitting_step for a model with forces, control inputs or t (hpgen.abi's step vector
+    hv = [h, t_k, u, params]; lag_f(g, xi, t, params), force_f(g, xi, t, u, params):
+    hpgen.derive.lagrangian.open_functions). Each kick adds -dV(t) + f(g, t, u_k, params) at
+    its own time t_k + c h (kick_fractions: the step's two ends for split2, the forced
+    Stormer-Verlet's discrete forces); f must not depend on xi (recognise)."""
+    group = model.group
+    m = len(model.inputs)
+    h, P, u = hv[0], hv[2 + m:], hv[2:2 + m]
+    t = ca.SX.sym("t")
+    structure = recognise(model, lambda G, X: lag_f(G, X, t, P), ca.vertcat(P, t))
+    f = _force_function(group, lambda G, X: lag_f(G, X, t, P), g) + \
+        force_f(g, ca.SX.zeros(group.d), t, u, P)
+    times = kick_fractions(scheme)
+    at = ca.vertcat(ca.vec(g), t)
+
+    def kick(step):
+        return lambda G, j: ca.substitute(f, at, ca.vertcat(ca.vec(G), hv[1] + times[j] * step))
+    kicks = bool(ca.depends_on(f, ca.vertcat(at, hv))) or bool(ca.DM(ca.evalf(f)).full().any())
+    ops = schedule(structure, scheme, kicks)
+    g1, p1 = composition(structure, group, kick(h), g, ops, g, p, h)
+    z = ca.SX.sym("z", group.d)
+    eqs = StepEquations(z=z, blocks=(("p", 0, group.d),), residual=z - p, g1=g1, p1=p1,
+                        guess=p, xi_hat=ca.SX.sym("xi", group.d), margin=ca.SX(1.0),
+                        chart_step=None)
+
+    def chart(theta):
+        return composition(structure, group, kick(theta * h), g, ops, g, z, theta * h)[0]
+    return eqs, chart
