@@ -9,7 +9,8 @@ time-dependent potential, a per-body force of (t, g, u) and a control input.
   the reduced coordinates with the same loads (hpgen.bench.multibody.reference, ``load``),
   joints at round-off at every node, and order 4 (4.0 +- 0.2) of the suzuki4 composition
   (a symmetric step: the kicks at t_k and t_k + h);
-- the Newton matrix assembled from blocks equals casadi.jacobian of the open step;
+- the Newton matrix assembled from blocks equals casadi.jacobian of the open step, and
+  linearize's input derivative B equals a central difference;
 - a velocity-dependent force and forces between bodies are refused in one line.
 """
 from __future__ import annotations
@@ -103,6 +104,21 @@ def test_forced_order_four_composed(compile_model):
     errs, orders = _errors(integ, (2e-2, 1e-2, 5e-3))
     print("forced split2 + suzuki4 errors", errs, "orders", orders)
     assert np.all(np.abs(orders - 4.0) <= 0.2), (errs, orders)
+
+
+def test_linearize_input_derivative(compile_model):
+    """B = d(eta, dp)_{k+1} / d u_k of the forced split2 step against a central difference
+    in u (step 1e-6: round-off about 1e-16 |p| / 1e-6 ~ 1e-9, truncation 1e-12)."""
+    integ = compile_model(FORCED, parameters={"N": 3}, tableau="split2")
+    g0, xi0 = _start()[2]
+    P, h, eps = {"grav": GRAV}, 1e-3, 1e-6
+    tr = integ.simulate(g0=g0, xi0=xi0, h=h, steps=3, every=1, u=[U], params=P)
+    A, B = integ.linearize(tr, u=[U], params=P)
+    d = A.shape[1] // 2
+    ends = [integ.simulate(g0=g0, xi0=xi0, h=h, steps=1, every=1, u=[U + s], params=P).mu[1]
+            for s in (eps, -eps)]
+    fd = (ends[0] - ends[1]) / (2 * eps)
+    assert np.abs(fd).max() > 1e-4 and np.abs(fd - B[0][d:, 0]).max() <= 1e-8
 
 
 def test_open_split_jacobian_equals_casadi_jacobian():
