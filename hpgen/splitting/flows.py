@@ -5,7 +5,9 @@ p = M xi is H = 1/2 p.M^{-1} p + V(g), and the state (g_k, p_k) is the same as t
 schemes' (p_k the momentum at the node t_k). The exact sub-flows over a time t:
 
 - kick: g fixed, p <- p + t f(g), f(g) = the left-trivialized derivative of l(g, 0) = -V(g)
-  (d/de l(g (I + e eta^), 0) at e = 0 = f(g).eta; from CasADi);
+  (d/de l(g (I + e eta^), 0) at e = 0 = f(g).eta; from CasADi); on an open model also the
+  force f(g, t, u_k, params) (not of xi), both at the kick's time (kick_fractions,
+  open_splitting_step);
 - rotation about a principal axis a (SO3, SE3; moment D), the flow of (a.pi)^2 / (2 D):
   theta = t (a.pi) / D, Q = exp(theta a^), R <- R Q, pi <- Q^T pi (SE3: also P <- Q^T P,
   x fixed);
