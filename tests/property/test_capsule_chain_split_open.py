@@ -8,7 +8,8 @@ time-dependent potential, a per-body force of (t, g, u) and a control input.
 - forces and t: order 2 (2.0 +- 0.1) of the error at T = 0.5 against DOP853 at 1e-13 on
   the reduced coordinates with the same loads (hpgen.bench.multibody.reference, ``load``),
   joints at round-off at every node, and order 4 (4.0 +- 0.2) of the suzuki4 composition
-  (a symmetric step: the kicks at t_k and t_k + h);
+  (a symmetric step: the kicks at t_k and t_k + h); with V free of t the energy-work
+  balance E - W - E0 falls as h^2;
 - the Newton matrix assembled from blocks equals casadi.jacobian of the open step, and
   linearize's input derivative B equals a central difference;
 - a velocity-dependent force and forces between bodies are refused in one line.
@@ -36,6 +37,10 @@ FORCED = TEXT.replace("grav: 9.81,", "grav: 9.81, A: 0.4, om: 3.0, B: 0.3,").rep
     "integrator:", 'runtime_parameters: [grav]\ninputs: [u]\nforces: {for: i, body: '
     '["A*cos(om*t) + u", "0.2*R[i][2, 0]", "0", "0", "0", "0"]}\nintegrator:')
 GRAV, U = 5.0, 0.15
+# the same loads with V free of t: E - W (the forces' work, docs/numerics.md sec. 13) is the
+# conserved balance of the flow
+WORKED = FORCED.replace(" + B*sin(2*t)*x[i][0])", ")").replace(
+    "record: [g, energy, momentum]", "record: [g, energy, momentum, power, work]")
 
 
 def _load(t, R):
@@ -104,6 +109,19 @@ def test_forced_order_four_composed(compile_model):
     errs, orders = _errors(integ, (2e-2, 1e-2, 5e-3))
     print("forced split2 + suzuki4 errors", errs, "orders", orders)
     assert np.all(np.abs(orders - 4.0) <= 0.2), (errs, orders)
+
+
+def test_energy_work_balance_order_two(compile_model):
+    """max |E - W - E0| over T = 1 falls as h^2 (2.0 +- 0.1 per halving)."""
+    integ = compile_model(WORKED, parameters={"N": 3}, tableau="split2")
+    g0, xi0 = _start()[2]
+    bal = []
+    for h in (4e-3, 2e-3, 1e-3):
+        r = integ.record(g0, h, round(1 / h), xi0=xi0, every=1, u=[U], params={"grav": GRAV})
+        bal.append(np.abs(r["energy"] - r["work"] - r["energy"][0]).max())
+    rates = np.log2(np.array(bal[:-1]) / np.array(bal[1:]))
+    print("E - W balance", bal, "rates", rates)
+    assert np.all(np.abs(rates - 2.0) <= 0.1), (bal, rates)
 
 
 def test_linearize_input_derivative(compile_model):
