@@ -39,6 +39,7 @@ import casadi as ca
 
 from ..schemes import RKMK
 from ..splitting import is_splitting, splitting_step
+from ..splitting.flows import open_splitting_step
 from .action import step_equations
 from .constraints import constrain_step, constraint_function
 from .family import block_diagonal_symbol, family_local, family_step
@@ -136,7 +137,11 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
             lag_t = lambda G, X, tt: lag_f(G, X, tt, P)  # noqa: E731
             lag = lambda G, X: lag_f(G, X, t, P)  # noqa: E731  (at t_k: records, energy)
             force = (lambda G, X, tt: force_f(G, X, tt, u, P)) if model.forced else None
-            if is_splitting(tableau):
+            if is_splitting(tableau) and (model.forced or model.inputs
+                                          or model.time_dependent):
+                reduced = False      # kicks at their own times (hpgen.splitting.flows)
+                eqs, chart = open_splitting_step(model, tableau, lag_f, force_f, g, p, hv)
+            elif is_splitting(tableau):
                 reduced = False
                 eqs, chart = splitting_step(model, tableau, lag, g, p, h, P)
             else:

@@ -202,8 +202,9 @@ def _functions(model, tableau, tau: str, rkmk: str):
     for c, (cls, (lag_in, _)) in enumerate(sorted(lags.items())):
         raw = None       # a splitting step's g1 before its Newton-Schulz step
         if split:        # the explicit body step of a splitting scheme (no unknowns)
-            e, raw, ns = split_body_step(model, tableau, body, lambda G, X, f=lag_in: f(G, X, ib),
-                                gb, pb, hb, ib, cls, c)
+            e, raw, ns = split_body_step(
+                model, tableau, body, lambda G, X, E, f=lag_in: f(*with_env([G, X, ib], E)),
+                gb, pb, hb, ib, cls, c)
         elif lay is None:
             e = step_equations(body, lambda G, X, f=lag_in: f(G, X, ib), tableau, tau, rkmk,
                                reduced, gb, pb, hb)

@@ -16,7 +16,15 @@ symplectic on the constraint manifold, order 2; higher order by integrator.compo
 
 Only one-stage schemes (``split2``, ``split2-fasso``) are accepted: a composition inside the
 step would need the constraints at its inner nodes, which the family step imposes only at
-the step's ends. The model must be closed (no forces, inputs, runtime parameters or t).
+the step's ends.
+
+An open model (runtime parameters and t in l_i, a per-body force with the control inputs,
+hpgen.derive.family_open) kicks with -dV_i(t, g_i) + f_i(g_i, t, u_k, params) at the kick's
+time: t_k for the first kick, t_k + h for the last (the forced Stormer-Verlet's discrete
+forces, h/2 at each node). A force that depends on xi would make the kick implicit and is
+refused, as are forces between bodies (a kick of one body that reads its neighbours' g at
+t_k + h) and an inertia that depends on a runtime parameter (the flows' moments are
+numbers).
 
 The body step's chart step (chart_point's curve g tau(theta x), for the scene's Poincare
 sections) would need the unknowns; it is zero here, and a model with ``scene.section`` is
@@ -33,15 +41,25 @@ FIELD = "integrator.tableau"
 
 def check_split_family(model, scheme) -> None:
     """ModelError (integrator.tableau) unless ``scheme`` is a one-stage splitting scheme and
-    ``model`` a closed family model."""
+    ``model``'s forces are kicks: a per-body force of (g, t, u, params), not of xi, and no
+    forces between bodies."""
     if scheme.stages != 1:
         raise ModelError(f"{scheme.name} on a constrained model: the constraints are imposed "
                          "only at the step's ends; use split2 with integrator.compose "
                          "(suzuki4, yoshida4, kahan-li6) for higher order", field=FIELD)
-    if model.open_system:
-        raise ModelError(f"{scheme.name} on a constrained model needs a closed model (no "
-                         "forces, control inputs, runtime parameters or t); use a VPRK "
-                         "tableau", field=FIELD)
+    force = getattr(model.family.local, "force", None) if model.open_system else None
+    if force is not None and force.joints:
+        raise ModelError(f"{scheme.name} on a constrained model takes a per-body force "
+                         "(forces.body), not forces between bodies (forces.joint); use a "
+                         "VPRK tableau", field=FIELD)
+    for k, e in enumerate(force.exprs if force is not None else ()):
+        if any(str(s).startswith("xi_") for s in e.free_symbols):
+            texts = getattr(model, "forces_text", ())      # body 0's entries first
+            text = texts[k].rsplit(" (", 1)[0] if k < len(texts) else str(e)
+            text = text if len(text) <= 40 else text[:37] + "..."
+            raise ModelError(f"{scheme.name} on a constrained model needs forces free of the "
+                             f"velocity (a kick); forces.body[{k}] ({text}) depends on it; "
+                             "use a VPRK tableau", field=FIELD)
     if getattr(getattr(model, "scene", None), "section", None) is not None:
         raise ModelError(f"{scheme.name} on a constrained model does not locate the scene's "
                          "section crossings; use a VPRK tableau", field=FIELD)
@@ -63,22 +81,34 @@ def _breaking(model, cls) -> str:
 def split_body_step(model, scheme, body, lag, g, p, h, index, cls, c: int) -> tuple:
     """(eqs, g1_raw, newton_schulz): the body step S(h) of class ``cls`` (the sums it has;
     ``c`` its number) as StepEquations with no unknowns, its g1 before the Newton-Schulz
-    step and that step as a map of SX matrices (g1 = newton_schulz(g1_raw)). lag(G, X) the
-    body's l (SX, the index symbol ``index`` bound), g (nb x nb), p (db), h (1) SX symbols.
-    ModelError when the body lacks the structure (naming the class and the term).
+    step and that step as a map of SX matrices (g1 = newton_schulz(g1_raw)). lag(G, X, e)
+    the body's l (SX, the index symbol ``index`` bound; e = (t, params) of an open model,
+    None when closed), g (nb x nb), p (db) SX symbols, h the step (1) or an open model's
+    step vector hv = [h, t_k, u, params] (hpgen.derive.family_open). ModelError when the
+    body lacks the structure (naming the class and the term) or a force is not a kick.
 
     The mapped family step (hpgen.derive.family_map) takes the Newton-Schulz step on g1
     alone: the joints' rows and end impulses read g1_raw, and the Jacobian blocks
     differentiate it (the step moves g1 by round-off and its derivative is the identity on
     the group's tangent vectors to round-off), so neither the residual nor J pays for it."""
-    from ..splitting.flows import _force_function, composition, schedule
+    from ..splitting.flows import composition, schedule
     from ..splitting.structure import recognise_lagrangian
     check_split_family(model, scheme)
     where = f"body class {c} (sums {', '.join(map(str, cls))}): "
-    structure = recognise_lagrangian(body, lag, index, lambda: _breaking(model, cls), where)
-    force = _force_function(body, lag, g)
-    moving = ca.vertcat(ca.vec(g), index)
-    kicks = bool(ca.depends_on(force, moving)) or bool(ca.DM(ca.evalf(force)).full().any())
+    if model.open_system:
+        E = ca.SX.sym("e", 1 + len(model.runtime_symbols))
+        structure = recognise_lagrangian(body, lambda G, X: lag(G, X, E),
+                                         ca.vertcat(index, E), lambda: _breaking(model, cls),
+                                         where)
+        force, moving, h = _open_kick(model, scheme, body, lag, g, h, index)
+    else:
+        from ..splitting.flows import _force_function
+        structure = recognise_lagrangian(body, lambda G, X: lag(G, X, None), index,
+                                         lambda: _breaking(model, cls), where)
+        force = _force_function(body, lambda G, X: lag(G, X, None), g)
+        moving = ca.vertcat(ca.vec(g), index)
+    kicks = bool(ca.depends_on(_kick_expr(force, g), moving)) or \
+        bool(ca.DM(ca.evalf(_kick_expr(force, g))).full().any())
     ops = schedule(structure, scheme, kicks)
     raw, p1 = composition(structure, body, force, g, ops, g, p, h)
     g1 = _reorthogonalized(structure, raw)
@@ -87,6 +117,34 @@ def split_body_step(model, scheme, body, lag, g, p, h, index, cls, c: int) -> tu
                          guess=ca.SX(0, 1), xi_hat=ca.SX.sym("xi_hat", body.d),
                          margin=ca.SX(1.0), chart_step=ca.SX.zeros(body.d)), raw, \
         (lambda G: _reorthogonalized(structure, G))
+
+
+def _kick_expr(force, g):
+    """The kick's force as an SX (an open model's callable at its first kick)."""
+    return force(g, 0) if callable(force) else force
+
+
+def _open_kick(model, scheme, body, lag, g, hv, index):
+    """(force, moving, h) of an open model: force(G, j) the kick's force at the j-th kick
+    (time t_k + kick_fractions[j] h: the step's two ends for split2), -dV(t) plus the body's
+    force f(g, t, u_k, params) (the discrete Lagrange-d'Alembert force of Stormer-Verlet's
+    two nodes, h/2 each); the symbols the force may depend on; the step h of hv."""
+    from ..splitting.flows import _force_function, kick_fractions
+    from .family_open import body_force_function, split_step_vector
+    h = split_step_vector(model, hv)[0]
+    m = len(model.inputs)
+    u, P = hv[2:2 + m], hv[2 + m:]
+    t = ca.SX.sym("t")
+    f = _force_function(body, lambda G, X: lag(G, X, ca.vertcat(t, P)), g)
+    fb = body_force_function(model, body)
+    if fb is not None:
+        f = f + fb(ca.vec(g), ca.SX.zeros(body.d), index, ca.vertcat(t, u, P))
+    times = kick_fractions(scheme)
+    at = ca.vertcat(ca.vec(g), t)
+
+    def force(G, j):
+        return ca.substitute(f, at, ca.vertcat(ca.vec(G), hv[1] + times[j] * h))
+    return force, ca.vertcat(ca.vec(g), index, hv), h
 
 
 def _reorthogonalized(structure, g1):

@@ -5,7 +5,9 @@ p = M xi is H = 1/2 p.M^{-1} p + V(g), and the state (g_k, p_k) is the same as t
 schemes' (p_k the momentum at the node t_k). The exact sub-flows over a time t:
 
 - kick: g fixed, p <- p + t f(g), f(g) = the left-trivialized derivative of l(g, 0) = -V(g)
-  (d/de l(g (I + e eta^), 0) at e = 0 = f(g).eta; from CasADi);
+  (d/de l(g (I + e eta^), 0) at e = 0 = f(g).eta; from CasADi); on an open model also the
+  force f(g, t, u_k, params) (not of xi), both at the kick's time (kick_fractions,
+  open_splitting_step);
 - rotation about a principal axis a (SO3, SE3; moment D), the flow of (a.pi)^2 / (2 D):
   theta = t (a.pi) / D, Q = exp(theta a^), R <- R Q, pi <- Q^T pi (SE3: also P <- Q^T P,
   x fixed);
@@ -104,6 +106,23 @@ def schedule(structure: SplitStructure, scheme, kicks: bool) -> list:
         else:
             merged.append(op)
     return merged
+
+
+def kick_fractions(scheme) -> list:
+    """The times of the kicks of ``scheme``'s schedule (with kicks) as fractions of h, in
+    order: a half phi(c) kicks at its start, phi*(c) at its end (the kinetic flows advance
+    t, the kicks do not), and the two kicks that schedule merges share their time."""
+    out: list = []
+    pos = 0.0
+    for i, c in enumerate(scheme.halves):
+        adjoint = (i % 2 == 1) != scheme.adjoint_first
+        if adjoint:
+            pos += c
+        if not out or out[-1] != pos:
+            out.append(pos)
+        if not adjoint:
+            pos += c
+    return out
 
 
 class _State:
@@ -242,8 +261,13 @@ def _drift(st: _State, k: int, t):
     st.p[k] = ca.vertcat(st.p[k][0:3] + t * ca.cross(P, v), P)
 
 
-def _kick(st: _State, group, force, gsym, t):
-    f = ca.substitute(force, ca.vec(gsym), ca.vec(st.g(group.n)))
+def _kick(st: _State, group, force, gsym, t, j: int = 0):
+    """p <- p + t f(g): ``force`` an SX in gsym, or (open models) a callable (G, j) -> f at
+    the j-th kick of the composition (its time, kick_fractions)."""
+    if callable(force):
+        f = force(st.g(group.n), j)
+    else:
+        f = ca.substitute(force, ca.vec(gsym), ca.vec(st.g(group.n)))
     for k, fk in enumerate(st.structure.factors):
         st.p[k] = st.p[k] + t * f[fk.off:fk.off + fk.d]
 
@@ -251,10 +275,12 @@ def _kick(st: _State, group, force, gsym, t):
 def composition(structure, group, force, gsym, ops, g, p, h):
     """(g1, p1): the sub-flows ``ops`` (schedule) applied to (g, p) with step h (SX)."""
     st = _State(structure, g, p)
+    j = 0
     for kind, k, axis, c in ops:
         t = c * h
         if kind == "kick":
-            _kick(st, group, force, gsym, t)
+            _kick(st, group, force, gsym, t, j)
+            j += 1
         elif kind == "rot":
             _rotate(st, k, axis, t)
         elif kind == "free":
@@ -289,4 +315,35 @@ def splitting_step(model, scheme, lag, g, p, h, params=None):
 
     def chart(theta):
         return composition(structure, group, force, g, ops, g, z, theta * h)[0]
+    return eqs, chart
+
+
+def open_splitting_step(model, scheme, lag_f, force_f, g, p, hv):
+    """splitting_step for a model with forces, control inputs or t (hpgen.abi's step vector
+    hv = [h, t_k, u, params]; lag_f(g, xi, t, params), force_f(g, xi, t, u, params):
+    hpgen.derive.lagrangian.open_functions). Each kick adds -dV(t) + f(g, t, u_k, params) at
+    its own time t_k + c h (kick_fractions: the step's two ends for split2, the forced
+    Stormer-Verlet's discrete forces); f must not depend on xi (recognise)."""
+    group = model.group
+    m = len(model.inputs)
+    h, P, u = hv[0], hv[2 + m:], hv[2:2 + m]
+    t = ca.SX.sym("t")
+    structure = recognise(model, lambda G, X: lag_f(G, X, t, P), ca.vertcat(P, t))
+    f = _force_function(group, lambda G, X: lag_f(G, X, t, P), g) + \
+        force_f(g, ca.SX.zeros(group.d), t, u, P)
+    times = kick_fractions(scheme)
+    at = ca.vertcat(ca.vec(g), t)
+
+    def kick(step):
+        return lambda G, j: ca.substitute(f, at, ca.vertcat(ca.vec(G), hv[1] + times[j] * step))
+    kicks = bool(ca.depends_on(f, ca.vertcat(at, hv))) or bool(ca.DM(ca.evalf(f)).full().any())
+    ops = schedule(structure, scheme, kicks)
+    g1, p1 = composition(structure, group, kick(h), g, ops, g, p, h)
+    z = ca.SX.sym("z", group.d)
+    eqs = StepEquations(z=z, blocks=(("p", 0, group.d),), residual=z - p, g1=g1, p1=p1,
+                        guess=p, xi_hat=ca.SX.sym("xi", group.d), margin=ca.SX(1.0),
+                        chart_step=None)
+
+    def chart(theta):
+        return composition(structure, group, kick(theta * h), g, ops, g, z, theta * h)[0]
     return eqs, chart

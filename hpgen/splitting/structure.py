@@ -16,9 +16,10 @@ block diagonal over the factors of the group, each factor one of
 - SO2: M = (I,);
 - R<n>: any SPD block;
 
-and V a function of g (and of the runtime parameters) alone. The model must be otherwise
-closed: no forces, control inputs, time dependence or constraints (a constrained family
-model's bodies are recognised one by one, recognise_lagrangian, hpgen.derive.family_split). ``recognise`` returns
+and V a function of g (and of the runtime parameters and t) alone; forces may depend on
+(g, t, u, params) but not on xi (they join -dV in the kicks, hpgen.splitting.flows). No
+constraints (a constrained family model's bodies are recognised one by one,
+recognise_lagrangian, hpgen.derive.family_split). ``recognise`` returns
 the frozen description the flows are built from, or raises ModelError naming what breaks
 the structure (a Lagrangian term where one can be named).
 """
@@ -120,17 +121,18 @@ def _principal(block: np.ndarray):
 
 def recognise(model, lag, params=None) -> SplitStructure:
     """The SplitStructure of ``model`` with l given as ``lag(g, xi)`` (SX in, SX out; the
-    runtime parameters, if any, bound to the SX symbol ``params``), or ModelError."""
+    runtime parameters and t, if any, bound to the SX symbols ``params``), or ModelError."""
     if model.constraints:
         raise _refuse("the model has constraints and is not derived body by body (split2 "
                       "takes constraints on a family model with local sums and joints; else "
                       "use a VPRK tableau)")
-    if model.forced:
-        raise _refuse("the model has forces (use a VPRK tableau)")
-    if model.inputs:
-        raise _refuse("the model has control inputs (use a VPRK tableau)")
-    if model.time_dependent:
-        raise _refuse("the Lagrangian depends on the time t (use a VPRK tableau)")
+    texts = getattr(model, "forces_text", ())
+    for k, e in enumerate(model.forces if model.forced else ()):
+        if any(str(s).startswith("xi_") for s in e.free_symbols):
+            text = texts[k] if k < len(texts) else str(e)
+            text = text if len(text) <= 40 else text[:37] + "..."
+            raise _refuse(f"forces[{k}] ({text}) depends on the velocity; the kicks take "
+                          "forces of (g, t, u, params) only (use a VPRK tableau)")
     return recognise_lagrangian(model.group, lag, params, lambda: _term_breaking(model))
 
 

@@ -275,13 +275,13 @@ def test_explicit_batch_start_checks_like_simulate(compile_model):
                                            ("turntable", "linear in xi"),
                                            ("four_bar", "constraints"),
                                            ("pendulum_chain", "body class 0 (sums 0): d2l/dxi2"),
-                                           ("damped_pendulum_chain", "closed model"),
+                                           ("damped_pendulum_chain", "forces free of the velocity"),
                                            ("capsule_chain:split4-suzuki",
                                             "only at the step's ends; use split2 with "
                                             "integrator.compose")])
 def test_refused_with_one_line(compile_model, example, words):
     """The last three: constrained family models (hpgen.derive.family_split), whose bodies
-    need the structure one by one, a closed model and a one-stage scheme."""
+    need the structure one by one, forces that are kicks and a one-stage scheme."""
     example, _, tab = example.partition(":")
     with pytest.raises(ModelError) as e:
         compile_model(EXAMPLES / f"{example}.yaml", tableau=tab or "split2", backend="python")

@@ -26,6 +26,9 @@ solves it in O(N). Only omega' is kept; x'' and the joint forces F are by-produc
 Baumgarte terms are needed since positions are never integrated; the only drift is of the
 quaternions' norm (R is computed from Q / |Q|), which :func:`solve` reports.
 
+An optional load(t, R) adds external forces (world, at the centres) and torques (body) to
+the right sides of Newton's and Euler's equations (a forced chain).
+
 Nothing here comes from MuJoCo, Pinocchio or hpgen's derivation.
 """
 from __future__ import annotations
@@ -55,8 +58,10 @@ class ChainDynamics:
 
     :meth:`accelerations` gives (x'', omega', F) for rotations and angular velocities."""
 
-    def __init__(self, spec: ChainSpec):
+    def __init__(self, spec: ChainSpec, load=None):
         from scipy.linalg import solve_banded
+
+        self.load = load
 
         self._solve_banded = solve_banded
         self.spec = spec
@@ -97,8 +102,9 @@ class ChainDynamics:
             for c in range(3):
                 ab[BAND + row + r - col - c, col + c] = block[r, c]
 
-    def accelerations(self, R: np.ndarray, omega: np.ndarray):
-        """(x'' (N,3) world, omega' (N,3) body, F (N,3) world joint forces)."""
+    def accelerations(self, R: np.ndarray, omega: np.ndarray, t: float = 0.0):
+        """(x'' (N,3) world, omega' (N,3) body, F (N,3) world joint forces); with a load, its
+        force (world) and torque (body) at time t added to Newton's and Euler's sides."""
         spec, n = self.spec, self.spec.n
         ab = self.template.copy()
         lever_force = -self.ahat @ np.swapaxes(R, 1, 2)        # -a^ R_i^T
@@ -114,6 +120,10 @@ class ChainDynamics:
         rhs[:, 3:6] = -cross(omega, Jw)
         rhs[:, 6:9] = -centripetal
         rhs[1:, 6:9] -= centripetal[:-1]
+        if self.load is not None:
+            force, torque = self.load(t, R)
+            rhs[:, 0:3] += force
+            rhs[:, 3:6] += torque
         sol = self._solve_banded((BAND, BAND), ab, rhs.reshape(-1), overwrite_ab=True,
                            check_finite=False).reshape(n, 9)
         return sol[:, 0:3], sol[:, 3:6], sol[:, 6:9]
@@ -123,7 +133,7 @@ class ChainDynamics:
         Q = y[:4 * n].reshape(n, 4)
         omega = y[4 * n:].reshape(n, 3)
         R = quat_to_matrix(Q)
-        _, domega, _ = self.accelerations(R, omega)
+        _, domega, _ = self.accelerations(R, omega, t)
         w, u = Q[:, :1], Q[:, 1:]
         dQ = 0.5 * np.concatenate([-np.sum(u * omega, axis=1, keepdims=True),
                                    w * omega + cross(u, omega)], axis=1)
@@ -156,14 +166,15 @@ def unpack(spec: ChainSpec, y: np.ndarray) -> ChainState:
 
 
 def solve(spec: ChainSpec, qpos: np.ndarray, qvel: np.ndarray, times,
-          rtol: float = 1e-13, atol: float = 1e-13) -> ReferenceSolution:
+          rtol: float = 1e-13, atol: float = 1e-13, load=None) -> ReferenceSolution:
     """Integrate from joint coordinates (qpos, qvel) (MuJoCo's convention) at t = 0 to each
-    of ``times`` (increasing, > 0) with DOP853 at (rtol, atol)."""
+    of ``times`` (increasing, > 0) with DOP853 at (rtol, atol). ``load(t, R)`` -> (force
+    (N,3) world at the centres, torque (N,3) body): external loads besides gravity."""
     from scipy.integrate import solve_ivp
 
     times = np.atleast_1d(np.asarray(times, dtype=float))
     y0 = pack(spec, from_joint(spec, qpos, qvel))
-    sol = solve_ivp(ChainDynamics(spec), (0.0, float(times[-1])), y0, method="DOP853",
+    sol = solve_ivp(ChainDynamics(spec, load), (0.0, float(times[-1])), y0, method="DOP853",
                     t_eval=times, rtol=rtol, atol=atol)
     if not sol.success:
         raise HpgenError(f"DOP853 failed on the {spec.n}-link chain: {sol.message}; "
