@@ -55,7 +55,7 @@ from .family_open import with_env, body_force_function, body_index, index_symbol
 from .family_joint_forces import external_forces, force_components, \
     joint_force_functions, joint_stage_functions, stage_force, stage_function
 from .family_velocity import hessian_inverse, momentum_functions, node_velocity, quadratic
-from .family_potentials import potential_force_functions, product_potential
+from .family_potentials import inline_forces, potential_force_functions, product_potential
 from .family_split import split_body_step
 from .lagrangian import to_casadi
 from ..splitting import is_splitting
@@ -226,9 +226,12 @@ def _functions(model, tableau, tau: str, rkmk: str):
         args = [e.z, gbv, pb, hb, ib] + ([fx] if jforces else [])
         S = stage_function(e, body, tableau, tau, gb, hb, h_, f"body{c}_stages") \
             if jforces else None
+        inline = (stage_function(e, body, tableau, tau, gb, hb, h_, f"body{c}_stages_inline",
+                                 {}), inline_forces(pforces)) if pforces else None
         steps[cls] = dict(
             S=S, joint_forces=jforces, power_forces=jpower, FC=comps,
-            JS=joint_stage_functions(model, tableau, S, jforces, comps) if jforces else [],
+            JS=joint_stage_functions(model, tableau, S, jforces, comps, inline) if jforces
+            else [],
             nz=e.z.numel(), blocks=e.blocks,
             F=ca.Function(f"body{c}_residual", args, [e.residual], CALL),
             U=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1], CALL),

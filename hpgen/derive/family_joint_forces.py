@@ -100,9 +100,10 @@ def stage_force(fb, fext, index, u, P, db: int, comps: tuple):
     return force
 
 
-def stage_function(e, body, tableau, tau: str, g, hv, h, name: str):
+def stage_function(e, body, tableau, tau: str, g, hv, h, name: str, opts=CALL):
     """Function(z, vec g, hv) -> (vec G^s per column (n^2 x s), Xi^s per column (d x s)) of a
-    body's step ``e`` (hpgen.derive.action.StepEquations) from its unknowns."""
+    body's step ``e`` (hpgen.derive.action.StepEquations) from its unknowns; ``opts`` the
+    Function's options (a call node by default, {} to be inlined where it is called)."""
     s, d = tableau.stages, body.d
     A, c = np.array(tableau.A, dtype=float), [float(x) for x in tableau.c]
     blk = {lab: e.z[a:b] for lab, a, b in e.blocks}
@@ -122,7 +123,7 @@ def stage_function(e, body, tableau, tau: str, g, hv, h, name: str):
         X = [blk[f"Xi{i + 1}"] for i in range(s)]
         Th = [blk[f"Theta{i + 1}"] for i in range(s)]
     G = [ca.vec(ca.mtimes(g, body.tau(tau, h * t))) for t in Th]
-    return ca.Function(name, [e.z, ca.vec(g), hv], [ca.horzcat(*G), ca.horzcat(*X)], CALL)
+    return ca.Function(name, [e.z, ca.vec(g), hv], [ca.horzcat(*G), ca.horzcat(*X)], opts)
 
 
 def external_forces(model, tableau, st, zs, Gk, hv, S) -> list:
@@ -173,11 +174,14 @@ def joint_power_force(model, funs, Gp, Xp, tt, hv, nb: int, db: int, N: int) -> 
 # through the body step's own blocks dF/dfext, dg1/dfext, dp1/dfext (block products).
 
 
-def joint_stage_functions(model, tableau, S, jforces, comps: tuple) -> list:
+def joint_stage_functions(model, tableau, S, jforces, comps: tuple, inline=None) -> list:
     """[(Function(Z_0, vec g_0, ..., hv, i) -> (fext_0, ...), JointForce), ...]: the joint
     forces ``jforces`` (joint_force_functions) at the stage states that the body stage
     function ``S`` (stage_function) gives from each slot's unknowns, their components
-    ``comps`` (force_components) per stage."""
+    ``comps`` (force_components) per stage. ``inline``: None, or (the stage function
+    without call-node options, {force Function: its inlinable copy}): those forces (joint
+    potentials) are inlined with their stage states into one SX graph, whose Jacobian
+    blocks are then symbolic instead of forward sweeps through the calls."""
     m = len(model.inputs)
     nzb, nb2, H, s = S.size1_in(0), S.size1_in(1), S.size1_in(2), tableau.stages
     out = []
@@ -187,7 +191,10 @@ def joint_stage_functions(model, tableau, S, jforces, comps: tuple) -> list:
         gs = [ca.SX.sym(f"g{k}", nb2) for k in range(K)]
         hv, i = ca.SX.sym("h", H), ca.SX.sym("i")
         _, t, u, P = _environment(hv, m)
-        states = [S(Z, g, hv) for Z, g in zip(Zs, gs)]
+        flat = inline is not None and fun in inline[1]
+        if flat:
+            fun = inline[1][fun]
+        states = [(inline[0] if flat else S)(Z, g, hv) for Z, g in zip(Zs, gs)]
         rows: list = [[] for _ in range(K)]
         for q in range(s):
             args = [v for G, X in states for v in (G[:, q], X[:, q])]

@@ -17,7 +17,10 @@ unvaried stage states): the step is the expanded step of the same Lagrangian, no
 approximation of it. The energy (<dl/dxi, xi> - l) gets -l_j, the Legendre map nothing.
 
 A potential's ``exprs`` (PotentialForce, as a JointForce's: K tuples of d entries, here the
-SX force components) say which components can be nonzero (force_components).
+SX force components) say which components can be nonzero (force_components). Each force
+Function has an inlinable copy (inline_forces) that the mapped step's stage function takes
+in place of the call (family_joint_forces.joint_stage_functions), so that its Jacobian
+blocks are one symbolic SX graph.
 """
 from __future__ import annotations
 
@@ -38,6 +41,13 @@ class PotentialForce:
 
 
 _LAST: list = []
+#: each force Function -> its copy without call-node options (inlined where it is called)
+_INLINE: dict = {}
+
+
+def inline_forces(pforces) -> dict:
+    """{force Function: its inlinable copy} of potential_force_functions' ``pforces``."""
+    return {f: _INLINE[f] for f, _ in pforces}
 
 
 def potential_functions(model, body) -> list:
@@ -52,6 +62,7 @@ def potential_functions(model, body) -> list:
     nb, db = body.n, body.d
     m, nP = len(model.inputs), len(model.runtime_symbols)
     out = []
+    _INLINE.clear()
     for c, pot in enumerate(pots):
         K = len(pot.instances[0][1]) if pot.instances else 1
         Gs = [ca.SX.sym(f"g{s}", nb, nb) for s in range(K)]
@@ -72,6 +83,7 @@ def potential_functions(model, body) -> list:
         fs = [ca.substitute(ca.gradient(varied, e), ca.vertcat(*etas), zero) for e in etas]
         args = [v for G, X in zip(Gs, Xs) for v in (ca.vec(G), X)]
         force = ca.Function(f"potential_force{c}", [*args, I, Ef], fs, CALL)
+        _INLINE[force] = ca.Function(f"potential_force{c}_inline", [*args, I, Ef], fs)
         gins = [ca.vec(G) for G in Gs]
         if model.open_system:
             Ee = ca.SX.sym("e", 1 + nP)
