@@ -145,3 +145,22 @@ def test_the_modules_match_the_expansion(tmp_path):
         rec = integ.record(G0, H, 200, mu0=p0, every=50)
         assert np.abs(rec["energy"][1:] - np.ravel(energy)).max() <= 1e-14, backend
     assert np.abs(out["c"] - out["python"]).max() <= 1e-13
+
+
+def test_a_runtime_parameter_in_the_potential():
+    """EI a runtime parameter (an open model: the potential's force and energy take it from
+    the step vector): 100 steps and the energy at EI = 0.08 agree with the expansion."""
+    from tests.unit.test_derive_family_open import run as run_open
+    n = 3
+    m = load_model_text(rod_text(n).replace("integrator:", "runtime_parameters: [EI]\n"
+                                                           "integrator:"))
+    assert family_local(m) and m.open_system and m.family.local.potentials
+    tab = resolve_tableau("stormer-verlet")
+    fam, dense = (derive(m, tab, "cay", "truncated", expand=e) for e in (False, True))
+    g0, xi0 = bent(n)
+    hv = np.array([H, 0.0, 0.08])
+    ea, eb = (evaluate(s, "energy", g0, xi0, hv)[0] for s in (fam, dense))
+    assert np.abs(ea - eb).max() <= 1e-15
+    p0 = evaluate(dense, "legendre", g0, xi0, hv)[0]
+    a, b = run_open(fam, g0, p0, H, 100, [0.08]), run_open(dense, g0, p0, H, 100, [0.08])
+    assert np.abs(a - b).max() <= 1e-13
