@@ -117,7 +117,8 @@ def derive(model, tableau, tau: str, rkmk: str, jacobian=None,
     # a splitting scheme on a family: the constrained split (hpgen.derive.family_split,
     # Newton on the joints' multipliers only); unconstrained, the explicit product step
     split = is_splitting(tableau)
-    local = not expand and (not split or bool(model.constraints)) and family_local(model)
+    local = not expand and (not split or bool(model.constraints)) and family_local(model) \
+        and not (split and model.family.local.potentials)   # a split body step has no fext
     # a family's g is block-diagonal: its off-diagonal entries are structural zeros, so
     # products with g stay block by block (the kernels still take all n*n entries)
     g = block_diagonal_symbol(group) if local else ca.SX.sym("g", n, n)

@@ -55,6 +55,7 @@ from .family_open import with_env, body_force_function, body_index, index_symbol
 from .family_joint_forces import external_forces, force_components, \
     joint_force_functions, joint_stage_functions, stage_force, stage_function
 from .family_velocity import hessian_inverse, momentum_functions, node_velocity, quadratic
+from .family_potentials import inline_forces, potential_force_functions, product_potential
 from .family_split import split_body_step
 from .lagrangian import to_casadi
 from ..splitting import is_splitting
@@ -143,7 +144,8 @@ def family_local(model) -> bool:
     """True when ``model`` is derived body by body: a family model whose Lagrangian sums and
     joints are local (hpgen.model.bodyterms); runtime parameters and t may enter the
     Lagrangian (not the joints), forces and control inputs only through a per-body force
-    (``forces: {for: i, body: [...]}``, hpgen.model.family_forces). Otherwise it is
+    (``forces: {for: i, body: [...]}``, hpgen.model.family_forces); a sum over a few bodies'
+    configurations is a joint potential (hpgen.derive.family_potentials). Otherwise it is
     expanded."""
     family = getattr(model, "family", None)
     if family is None or family.local is None:
@@ -194,9 +196,12 @@ def _functions(model, tableau, tau: str, rkmk: str):
     h_, _, _ = split_step_vector(model, hb)
     gbv = ca.vec(gb)
     fb = body_force_function(model, body)
-    jforces = joint_force_functions(model, body) if lay is not None else []
-    # with forces between bodies, a body's step takes its external stage forces fext
-    comps = force_components(model) if jforces else ()
+    jpower = joint_force_functions(model, body) if lay is not None else []
+    # with forces between bodies (joint potentials' included, hpgen.derive.
+    # family_potentials), a body's step takes its external stage forces fext
+    pforces = potential_force_functions(model, body)
+    jforces = jpower + pforces
+    comps = force_components(model, pforces) if jforces else ()
     fx = ca.SX.sym("fext", tableau.stages * len(comps)) if jforces else None
     steps = {}
     for c, (cls, (lag_in, _)) in enumerate(sorted(lags.items())):
@@ -206,23 +211,28 @@ def _functions(model, tableau, tau: str, rkmk: str):
                 model, tableau, body, lambda G, X, E, f=lag_in: f(*with_env([G, X, ib], E)),
                 gb, pb, hb, ib, cls, c)
         elif lay is None:
+            force = stage_force(None, fx, ib, None, None, db, comps) if jforces else None
             e = step_equations(body, lambda G, X, f=lag_in: f(G, X, ib), tableau, tau, rkmk,
-                               reduced, gb, pb, hb)
+                               reduced, gb, pb, hb, None, force)
         else:
             P, u = hb[2 + lay[0]:], hb[2:2 + lay[0]]
             force = None if fb is None else (
                 lambda G, X, tt: fb(ca.vec(G), X, ib, ca.vertcat(tt, u, P)))
             if jforces:      # a body force of zeros (joint forces only) is left out
-                own = fb if any(e != 0 for e in model.family.local.force.exprs) else None
+                own = fb if fb is not None and any(
+                    e != 0 for e in model.family.local.force.exprs) else None
                 force = stage_force(own, fx, ib, u, P, db, comps)
             e = step_equations(body, lambda G, X, tt, f=lag_in: f(G, X, ib, ca.vertcat(tt, P)),
                                tableau, tau, rkmk, reduced, gb, pb, h_, hb[1], force)
         args = [e.z, gbv, pb, hb, ib] + ([fx] if jforces else [])
         S = stage_function(e, body, tableau, tau, gb, hb, h_, f"body{c}_stages") \
             if jforces else None
+        inline = (stage_function(e, body, tableau, tau, gb, hb, h_, f"body{c}_stages_inline",
+                                 {}), inline_forces(pforces)) if pforces else None
         steps[cls] = dict(
-            S=S, joint_forces=jforces, FC=comps,
-            JS=joint_stage_functions(model, tableau, S, jforces, comps) if jforces else [],
+            S=S, joint_forces=jforces, power_forces=jpower, FC=comps,
+            JS=joint_stage_functions(model, tableau, S, jforces, comps, inline) if jforces
+            else [],
             nz=e.z.numel(), blocks=e.blocks,
             F=ca.Function(f"body{c}_residual", args, [e.residual], CALL),
             U=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1], CALL),
@@ -296,7 +306,7 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
         margin = ca.fmin(margin, mk)
     g1 = ca.diagcat(*g1s)
     lag, velocity = _product_lagrangian(model, lags, keys, body, index, ek)
-    force = product_force(st0["force"], model, h, nb, db, N, st0["joint_forces"])
+    force = product_force(st0["force"], model, h, nb, db, N, st0["power_forces"])
     if not joints:
         eqs = StepEquations(z, tuple(blocks), ca.vertcat(*res), g1, ca.vertcat(*p1s),
                             ca.vertcat(*guesses), xi_hat, margin, ca.vertcat(*charts))
@@ -357,6 +367,8 @@ def _product_lagrangian(model, lags, keys, body, index, ek=None):
         terms = [lags[keys[k]][1](*with_env([Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb],
                                           Xp[k * db:(k + 1) * db], index[k]], ek))
                  for k in range(N)]
+        if model.family.local.potentials:        # the joint potentials' terms
+            return ca.sum1(ca.vertcat(*terms)) + product_potential(model, body, Gp, ek)
         return ca.sum1(ca.vertcat(*terms))
 
     def velocity(Gp, Pp, Xp):

@@ -61,13 +61,25 @@ def joint_force_functions(model, body) -> list:
     return out
 
 
-def force_components(model) -> tuple:
+def force_components(model, potentials=()) -> tuple:
     """The components (0..d-1, ascending) of the body's force that some joint force of
-    ``model`` can make nonzero (an expression not identically 0 in some slot); (0,) when
-    none can."""
-    found = {k for jf in model.family.local.force.joints for row in jf.exprs
+    ``model`` or joint potential's force (``potentials``: hpgen.derive.family_potentials.
+    potential_force_functions) can make nonzero (an expression not identically 0 in some
+    slot); (0,) when none can."""
+    bf = model.family.local.force
+    found = {k for jf in (bf.joints if bf is not None else ()) for row in jf.exprs
              for k, e in enumerate(row) if e != 0}
+    found |= {k for _, pf in potentials for row in pf.exprs
+              for k, e in enumerate(row) if not e.is_zero()}
     return tuple(sorted(found)) or (0,)
+
+
+def _environment(hv, m: int):
+    """(h, t_k, u, params) of the step vector hv; a closed model's hv is h alone (a joint
+    potential's force, hpgen.derive.family_potentials): t_k = 0, no u nor params."""
+    if hv.numel() == 1:
+        return hv[0], 0, ca.DM(0, 1), ca.DM(0, 1)
+    return hv[0], hv[1], hv[2:2 + m], hv[2 + m:]
 
 
 def stage_force(fb, fext, index, u, P, db: int, comps: tuple):
@@ -88,9 +100,10 @@ def stage_force(fb, fext, index, u, P, db: int, comps: tuple):
     return force
 
 
-def stage_function(e, body, tableau, tau: str, g, hv, h, name: str):
+def stage_function(e, body, tableau, tau: str, g, hv, h, name: str, opts=CALL):
     """Function(z, vec g, hv) -> (vec G^s per column (n^2 x s), Xi^s per column (d x s)) of a
-    body's step ``e`` (hpgen.derive.action.StepEquations) from its unknowns."""
+    body's step ``e`` (hpgen.derive.action.StepEquations) from its unknowns; ``opts`` the
+    Function's options (a call node by default, {} to be inlined where it is called)."""
     s, d = tableau.stages, body.d
     A, c = np.array(tableau.A, dtype=float), [float(x) for x in tableau.c]
     blk = {lab: e.z[a:b] for lab, a, b in e.blocks}
@@ -110,7 +123,7 @@ def stage_function(e, body, tableau, tau: str, g, hv, h, name: str):
         X = [blk[f"Xi{i + 1}"] for i in range(s)]
         Th = [blk[f"Theta{i + 1}"] for i in range(s)]
     G = [ca.vec(ca.mtimes(g, body.tau(tau, h * t))) for t in Th]
-    return ca.Function(name, [e.z, ca.vec(g), hv], [ca.horzcat(*G), ca.horzcat(*X)], CALL)
+    return ca.Function(name, [e.z, ca.vec(g), hv], [ca.horzcat(*G), ca.horzcat(*X)], opts)
 
 
 def external_forces(model, tableau, st, zs, Gk, hv, S) -> list:
@@ -118,7 +131,7 @@ def external_forces(model, tableau, st, zs, Gk, hv, S) -> list:
     g block, hv the step vector, S the symbol class (SX or MX)."""
     comps = list(st["FC"])
     s, N, m = tableau.stages, len(zs), len(model.inputs)
-    h, t, u, P = hv[0], hv[1], hv[2:2 + m], hv[2 + m:]
+    h, t, u, P = _environment(hv, m)
     states = [st["S"](zs[k], ca.vec(Gk[k]), hv) for k in range(N)]
     fext = [[S.zeros(len(comps)) for _ in range(s)] for _ in range(N)]
     for fun, jf in st["joint_forces"]:
@@ -161,11 +174,14 @@ def joint_power_force(model, funs, Gp, Xp, tt, hv, nb: int, db: int, N: int) -> 
 # through the body step's own blocks dF/dfext, dg1/dfext, dp1/dfext (block products).
 
 
-def joint_stage_functions(model, tableau, S, jforces, comps: tuple) -> list:
+def joint_stage_functions(model, tableau, S, jforces, comps: tuple, inline=None) -> list:
     """[(Function(Z_0, vec g_0, ..., hv, i) -> (fext_0, ...), JointForce), ...]: the joint
     forces ``jforces`` (joint_force_functions) at the stage states that the body stage
     function ``S`` (stage_function) gives from each slot's unknowns, their components
-    ``comps`` (force_components) per stage."""
+    ``comps`` (force_components) per stage. ``inline``: None, or (the stage function
+    without call-node options, {force Function: its inlinable copy}): those forces (joint
+    potentials) are inlined with their stage states into one SX graph, whose Jacobian
+    blocks are then symbolic instead of forward sweeps through the calls."""
     m = len(model.inputs)
     nzb, nb2, H, s = S.size1_in(0), S.size1_in(1), S.size1_in(2), tableau.stages
     out = []
@@ -174,12 +190,15 @@ def joint_stage_functions(model, tableau, S, jforces, comps: tuple) -> list:
         Zs = [ca.SX.sym(f"z{k}", nzb) for k in range(K)]
         gs = [ca.SX.sym(f"g{k}", nb2) for k in range(K)]
         hv, i = ca.SX.sym("h", H), ca.SX.sym("i")
-        u, P = hv[2:2 + m], hv[2 + m:]
-        states = [S(Z, g, hv) for Z, g in zip(Zs, gs)]
+        _, t, u, P = _environment(hv, m)
+        flat = inline is not None and fun in inline[1]
+        if flat:
+            fun = inline[1][fun]
+        states = [(inline[0] if flat else S)(Z, g, hv) for Z, g in zip(Zs, gs)]
         rows: list = [[] for _ in range(K)]
         for q in range(s):
             args = [v for G, X in states for v in (G[:, q], X[:, q])]
-            res = fun(*args, i, ca.vertcat(hv[1] + float(tableau.c[q]) * hv[0], u, P))
+            res = fun(*args, i, ca.vertcat(t + float(tableau.c[q]) * hv[0], u, P))
             for slot, f in enumerate([res] if K == 1 else res):
                 rows[slot].append(f[list(comps)])
         ins = [v for Z, g in zip(Zs, gs) for v in (Z, g)]

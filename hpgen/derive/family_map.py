@@ -225,7 +225,11 @@ def mapped_state_kernels(model, lags, keys, body, record_names, force=None) -> d
     if hv is not None:               # the momentum map without the mapped call's hv input
         fm = ca.Function("body_momentum_map", [gvec, Ps], [body.momentum_map(Gs, Ps)], CALL)
         m_ = mapped(fm, N)(G, Pm)
-    energy, defect = ca.sum2(E_), ca.mmax(e_)
+    energy, defect, E0 = ca.sum2(E_), ca.mmax(e_), ca.sum2(E0_)
+    if model.family.local.potentials:        # -l_j of the joint potentials
+        from .family_potentials import mapped_potential
+        lpot = mapped_potential(model, body, G, ek)
+        energy, E0 = energy - lpot, E0 - lpot
     items = {"g": gv, "mu": p, "xi": xi, "energy": energy, "momentum": ca.vec(m_),
              "defect": defect}
     if force is not None:            # <f, xi> at t_k, body by body
@@ -245,7 +249,7 @@ def mapped_state_kernels(model, lags, keys, body, record_names, force=None) -> d
            "energy": ([gv, xi], ("g", "xi"), [energy], ("E",)),
            "momentum": ([gv, p], ("g", "p"), [ca.vec(m_)], ("m",)),
            "defect": ([gv], ("g",), [defect], ("e",)),
-           "observe": ([gv, p], ("g", "p"), [ca.vec(x0_), ca.sum2(E0_), ca.vec(m_), defect],
+           "observe": ([gv, p], ("g", "p"), [ca.vec(x0_), E0, ca.vec(m_), defect],
                        ("xi", "E", "m", "e")),
            "velocity_step": ([gv, p, xi], ("g", "p", "xi"), [ca.vec(v_)], ("xi1",))}
     if all(nm in items for nm in record_names):

@@ -22,8 +22,16 @@ Conventions:
   ``bodies`` are the family's bodies that fill the slots for this row block, ``value`` the
   loop variable's value (0 without one). Row blocks with the same ``text`` share their rows
   (the compiler derives one function per text).
-- ``local_terms`` returns None when some part is not local (a term coupling two bodies, a
-  per-body parameter list, a non-sum Lagrangian term): the model is then compiled expanded.
+- A JointPotential is a sum whose term involves K <= MAX_SLOTS bodies (slots in order of
+  first use, as a JointTerm's) through their configurations only (no xi, w, v of any body, no
+  t, no body data): ``expr`` is ``sign * term`` (its part of l: -V for a potential energy V)
+  in the K-slot product's ``g_a_b`` and ``index``; ``instances`` ((i, (body in slot 0, ...)),
+  ...) over the sum's range. The compiler derives it once and enters it as the conservative
+  joint force f_s = d/deta l_j(.., g_s (I + eta^), ..) at eta = 0 (hpgen.derive.
+  family_potentials).
+- ``local_terms`` returns None when some part is not local (a term coupling two bodies'
+  velocities, a per-body parameter list, a non-sum Lagrangian term): the model is then
+  compiled expanded.
 """
 from __future__ import annotations
 
@@ -62,6 +70,13 @@ class JointTerm:
 
 
 @dataclass(frozen=True)
+class JointPotential:
+    expr: object                   # sympy scalar in the K-slot g_a_b and index
+    index: object                  # sympy Symbol of the sum variable
+    instances: tuple               # ((i, (body, ...)), ...)
+
+
+@dataclass(frozen=True)
 class LocalTerms:
     bodies: tuple                  # BodyTerm per Lagrangian sum, file order
     joints: tuple                  # JointTerm per ConstraintSpec, file order
@@ -70,6 +85,8 @@ class LocalTerms:
     force: object = None
     #: the body data (module docstring): ((symbol, per-body values), ...), sorted by name
     data: tuple = ()
+    #: the JointPotential of each sum coupling a few bodies' configurations, file order
+    potentials: tuple = ()
 
 
 class _NotLocal(Exception):
@@ -170,6 +187,24 @@ def _body_term(family: BodyFamily, fsum, params: dict, data: dict, work=None) ->
     return BodyTerm(fsum.sign * value, ev.index, fsum.start, fsum.stop)
 
 
+def _potential(family: BodyFamily, fsum, params: dict) -> JointPotential:
+    """The JointPotential of the sum ``fsum`` (module docstring), else _NotLocal."""
+    ev = _Local(family.body, MAX_SLOTS, params, fsum.variable, ("xi",), count=family.count)
+    value = ev.walk(parse_checked(fsum.term).body)
+    if hasattr(value, "shape") or ev.data or not ev.slots or any(
+            str(s).startswith("xi_") for s in sp.sympify(value).free_symbols):
+        raise _NotLocal
+    K = len(ev.slots)
+    expr = sp.sympify(fsum.sign * value)
+    instances = []
+    for i in range(fsum.start, fsum.stop):
+        bodies = ev.bodies_at(i)
+        if len(set(bodies)) != K or not all(0 <= b < family.count for b in bodies):
+            raise _NotLocal
+        instances.append((i, bodies))
+    return JointPotential(expr, ev.index, tuple(instances))
+
+
 def sorted_data(data: dict) -> tuple:
     """LocalTerms.data of {body data symbol: per-body values}."""
     return tuple(sorted(data.items(), key=lambda kv: kv[0].name))
@@ -208,10 +243,19 @@ def local_terms(family: BodyFamily | None, constraints, params: dict) -> LocalTe
     if family is None or family.rest is not None or not family.sums:
         return None
     data: dict = {}
+    bodies, potentials = [], []
     try:
-        bodies = tuple(_body_term(family, s, params, data) for s in family.sums)
+        for s in family.sums:
+            try:
+                bodies.append(_body_term(family, s, params, data))
+            except _NotLocal:
+                potentials.append(_potential(family, s, params))
         joints = _joint_terms(family, constraints, params)
     except (_NotLocal, ModelError):
         return None
-    return LocalTerms(bodies, joints, max((len(j.bodies) for j in joints), default=1),
-                      data=sorted_data(data))
+    if not bodies:
+        return None
+    slots = [len(j.bodies) for j in joints] + [len(p.instances[0][1]) for p in potentials
+                                               if p.instances]
+    return LocalTerms(tuple(bodies), joints, max(slots, default=1), data=sorted_data(data),
+                      potentials=tuple(potentials))

@@ -59,7 +59,7 @@ class BodyFamily:
     sums: tuple = ()
     rest: str | None = None
     #: the sums and joints evaluated once for a generic body (hpgen.model.bodyterms.LocalTerms),
-    #: None when some term couples bodies (the model is then compiled expanded)
+    #: None when some term couples bodies' velocities (the model is then compiled expanded)
     local: object = None
 
 
