@@ -42,6 +42,7 @@ import os
 import re
 import shlex
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -292,7 +293,8 @@ def _run(cmds, jobs: int = 1) -> None:
                 cmd = pending.pop(0)
                 try:
                     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE,
-                                            stderr=subprocess.PIPE, text=True)
+                                            stderr=subprocess.PIPE, text=True,
+                                            start_new_session=_SESSIONS)
                 except FileNotFoundError:
                     raise BuildError("C compiler not found", command=cmd) from None
                 except OSError as exc:
@@ -302,11 +304,28 @@ def _run(cmds, jobs: int = 1) -> None:
             try:
                 _, err = proc.communicate(timeout=_TIMEOUT)
             except subprocess.TimeoutExpired:
+                _kill(proc)
                 raise BuildError(f"C compiler timed out after {_TIMEOUT} s", command=cmd) from None
             if proc.returncode != 0:
                 raise BuildError(f"C compilation failed (exit status {proc.returncode})",
                                  command=cmd, stderr=err)
     finally:
         for _, proc in running:
+            _kill(proc)
+
+
+#: each compiler command in its own process group (POSIX), so that _kill reaches the
+#: driver's children (cc1, as): killing the driver alone left cc1 compiling for minutes
+_SESSIONS = hasattr(os, "killpg")
+
+
+def _kill(proc: subprocess.Popen) -> None:
+    """Stop a compiler command and every process of its group, and reap it."""
+    try:
+        if _SESSIONS:
+            os.killpg(proc.pid, signal.SIGKILL)
+        else:
             proc.kill()
-            proc.wait()
+    except (ProcessLookupError, PermissionError):
+        pass
+    proc.communicate()

@@ -6,8 +6,10 @@ from __future__ import annotations
 
 import ctypes
 import json
+import os
 import shutil
 import subprocess
+import time
 
 import pytest
 
@@ -62,3 +64,29 @@ def test_runtime_sources_are_the_shipped_files():
     for name in names:
         if name not in ("hpgen_runtime.c", "hpgen_runtime.h"):
             assert f'#include "{name}"' in included, name
+
+
+@pytest.mark.skipif(not hasattr(os, "killpg"), reason="process groups are POSIX")
+def test_a_timed_out_compiler_is_stopped_with_its_children(tmp_path, monkeypatch):
+    """A compiler driver that times out is stopped together with the processes it started
+    (cc's cc1 and as): the BuildError names the timeout and no child keeps running."""
+    pidfile = tmp_path / "child.pid"
+    monkeypatch.setattr(build, "_TIMEOUT", 1)
+    cmd = ["sh", "-c", f"sleep 60 & echo $! > {pidfile}; wait"]
+    with pytest.raises(build.BuildError, match="timed out after 1 s"):
+        build._run([cmd])
+    child = int(pidfile.read_text())
+    for _ in range(50):                 # SIGKILL is delivered asynchronously
+        if not _alive(child):
+            break
+        time.sleep(0.02)
+    assert not _alive(child)
+
+
+def _alive(pid: int) -> bool:
+    """Whether process ``pid`` exists and is not a zombie."""
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            return f.read().split(") ")[1][0] != "Z"
+    except FileNotFoundError:
+        return False
