@@ -134,12 +134,13 @@ def test_kernels_do_not_grow_with_the_bodies(example):
     assert sizes[3] == sizes[6]
 
 
-def run(step, g, p, h, steps, params, t0=0.0):
-    """``steps`` steps with CasADi's evaluation of ``step``'s kernels (Newton, dense solve)."""
+def run(step, g, p, h, steps, params, t0=0.0, closed=False):
+    """``steps`` steps with CasADi's evaluation of ``step``'s kernels (Newton, dense solve);
+    the step vector [h, t_k, params], or [h] for a closed model."""
     nz, out = step.nz, []
     for k in range(steps):
-        hv = np.concatenate([[h, t0 + k * h], params])
-        xi = evaluate(step, "velocity_step", g, p, np.zeros(len(p)), hv)[0]
+        hv = np.array([h]) if closed else np.concatenate([[h, t0 + k * h], params])
+        xi = evaluate(step, "velocity_step", g, p, np.zeros(len(p)), *([] if closed else [hv]))[0]
         z = evaluate(step, "guess", xi, g, p, hv)[0]
         for _ in range(30):
             F, J = evaluate(step, "residual_jacobian", z, g, p, hv)

@@ -16,6 +16,7 @@ from hpgen.model import load_model_text
 from hpgen.tableaus import resolve_tableau
 from tests.conftest import EXAMPLES
 from tests.unit.test_derive_family import evaluate
+from tests.unit.test_derive_family_open import run as run_kernels
 
 ROD = (EXAMPLES / "rod.yaml").read_text()
 H = 5e-4
@@ -50,20 +51,8 @@ def bent(n: int):
 
 
 def run(step, g, p, steps):
-    """``steps`` steps with CasADi's evaluation of ``step``'s kernels (Newton, dense solve)."""
-    nz, out, hv = step.nz, [], np.array([H])
-    for _ in range(steps):
-        xi = evaluate(step, "velocity_step", g, p, np.zeros(len(p)))[0]
-        z = evaluate(step, "guess", xi, g, p, hv)[0]
-        for _ in range(30):
-            F, J = evaluate(step, "residual_jacobian", z, g, p, hv)
-            dz = np.linalg.solve(J.reshape(nz, nz, order="F"), F)
-            z = z - dz
-            if np.abs(dz).max() <= 1e-14 * (1 + np.abs(z).max()):
-                break
-        g, p = evaluate(step, "update", z, g, p, hv)
-        out.append(np.concatenate([g, p]))
-    return np.array(out)
+    """``steps`` steps of the closed rod with CasADi's evaluation of ``step``'s kernels."""
+    return run_kernels(step, g, p, H, steps, [], closed=True)
 
 
 def test_the_rods_energy_is_a_joint_potential():
