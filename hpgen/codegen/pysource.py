@@ -135,25 +135,44 @@ def callee_name(fn) -> str:
     return "_call_" + fn.name()
 
 
-def _callees(f) -> dict:
-    """{instruction index: called casadi.Function} of f's OP_CALL instructions."""
-    ks = [k for k in range(f.n_instructions()) if f.instruction_id(k) == casadi.OP_CALL]
-    if not ks:
-        return {}
-    nodes = f.instructions_sx()
-    return {k: nodes[k].which_function() for k in ks}
+def instructions(f) -> list:
+    """[(op, inputs, outputs)] of f's SX algorithm, one entry per instruction (each call
+    goes through SWIG: a printer decodes a function once and passes the list on)."""
+    iid, iin, iout = f.instruction_id, f.instruction_input, f.instruction_output
+    return [(iid(k), iin(k), iout(k)) for k in range(f.n_instructions())]
 
 
-def safe_lines(kernel, nonzeros: bool = False) -> list[str]:
+#: {id(f): (f, its callees)}: _callees is asked for every kernel again by callee_functions
+_CALLEES: dict = {}
+
+
+def _callees(f, instrs=None) -> dict:
+    """{instruction index: called casadi.Function} of f's OP_CALL instructions (``instrs``:
+    f's instructions when the caller has decoded them)."""
+    hit = _CALLEES.get(id(f))
+    if hit is not None and hit[0] is f:
+        return hit[1]
+    if instrs is None:
+        ks = [k for k in range(f.n_instructions()) if f.instruction_id(k) == casadi.OP_CALL]
+    else:
+        ks = [k for k, (op, _, _) in enumerate(instrs) if op == casadi.OP_CALL]
+    nodes = f.instructions_sx() if ks else None
+    calls = {k: nodes[k].which_function() for k in ks}
+    if len(_CALLEES) >= 256:
+        _CALLEES.clear()
+    _CALLEES[id(f)] = (f, calls)
+    return calls
+
+
+def safe_lines(kernel, nonzeros: bool = False, instrs=None) -> list[str]:
     """The safe body: one statement per instruction, outputs into ``r<i> = [0.0] * numel``
     (a callee's, ``nonzeros``: its arguments are their nonzeros)."""
     f = kernel.function
     ins, outs = _io_positions(f, nonzeros)
-    calls = _callees(f)
+    instrs = instructions(f) if instrs is None else instrs
+    calls = _callees(f, instrs)
     lines = [f"r{i} = [0.0] * {_numel(f, i, True, nonzeros)}" for i in range(f.n_out())]
-    for k in range(f.n_instructions()):
-        op = f.instruction_id(k)
-        i_in, i_out = f.instruction_input(k), f.instruction_output(k)
+    for k, (op, i_in, i_out) in enumerate(instrs):
         if op == casadi.OP_CALL:
             targets = [f"w{o}" if o >= 0 else "_" for o in i_out]
             lines.append(", ".join(targets) + ("," if len(targets) == 1 else "") + " = "
@@ -199,7 +218,8 @@ def exact_reciprocal(c) -> float | None:
     return r if abs(r) >= 2.2250738585072014e-308 and math.isfinite(r) else None
 
 
-def fast_lines(kernel, bound: bool = False, nonzeros: bool = False) -> tuple[list[str], bool]:
+def fast_lines(kernel, bound: bool = False, nonzeros: bool = False,
+               instrs=None) -> tuple[list[str], bool]:
     """The fast body and whether it contains an operation that may raise.
 
     bound: the body of a loop (hpgen.codegen.pyiterate) instead of a function: the inputs
@@ -210,7 +230,8 @@ def fast_lines(kernel, bound: bool = False, nonzeros: bool = False) -> tuple[lis
     it may raise (the callee's own safe body runs then, inside the call)."""
     f = kernel.function
     ins, outs = _io_positions(f, nonzeros)
-    calls = _callees(f)
+    instrs = instructions(f) if instrs is None else instrs
+    calls = _callees(f, instrs)
     vals: list[_Value] = []
     slot: dict[int, int] = {}                 # CasADi work slot -> its current value
     inputs: dict[tuple[int, int], int] = {}   # (argument, dense position) -> value
@@ -223,9 +244,7 @@ def fast_lines(kernel, bound: bool = False, nonzeros: bool = False) -> tuple[lis
         vals.append(v)
         return len(vals) - 1
 
-    for k in range(f.n_instructions()):
-        op = f.instruction_id(k)
-        i_in, i_out = f.instruction_input(k), f.instruction_output(k)
+    for k, (op, i_in, i_out) in enumerate(instrs):
         if op == casadi.OP_INPUT:
             key = (i_in[0], ins[i_in[0]][i_in[1]])
             if key not in inputs:
@@ -352,15 +371,16 @@ def kernel_lines(kernel, nonzeros: bool = False) -> list[str]:
     """Body statements (unindented) of the Python function for one kernel, after the input
     conversion that the template prints; they leave the outputs in lists ``r<i>``."""
     f = kernel.function
-    if any(f.instruction_id(k) == casadi.OP_PRINTME for k in range(f.n_instructions())):
-        return safe_lines(kernel, nonzeros)   # a side effect: run once, in order
-    fast, raising = fast_lines(kernel, nonzeros=nonzeros)
+    instrs = instructions(f)
+    if any(op == casadi.OP_PRINTME for op, _, _ in instrs):
+        return safe_lines(kernel, nonzeros, instrs)   # a side effect: run once, in order
+    fast, raising = fast_lines(kernel, nonzeros=nonzeros, instrs=instrs)
     if not raising:
         return fast
     return (["try:"] + ["    " + s for s in fast]
             + ["except (ArithmeticError, ValueError):",
                "    # a zero divisor or a math domain/range error: recompute with C semantics"]
-            + ["    " + s for s in safe_lines(kernel, nonzeros)])
+            + ["    " + s for s in safe_lines(kernel, nonzeros, instrs)])
 
 
 def py_kernel_context(kernel) -> dict:

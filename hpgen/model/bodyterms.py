@@ -187,13 +187,16 @@ def _body_term(family: BodyFamily, fsum, params: dict, data: dict, work=None) ->
     return BodyTerm(fsum.sign * value, ev.index, fsum.start, fsum.stop)
 
 
-def _potential(family: BodyFamily, fsum, params: dict) -> JointPotential:
-    """The JointPotential of the sum ``fsum`` (module docstring), else _NotLocal."""
+def _potential(family: BodyFamily, fsum, params: dict, work=None) -> JointPotential:
+    """The JointPotential of the sum ``fsum`` (module docstring), else _NotLocal (the
+    evaluator's work appended to the list ``work`` when given)."""
     ev = _Local(family.body, MAX_SLOTS, params, fsum.variable, ("xi",), count=family.count)
     value = ev.walk(parse_checked(fsum.term).body)
     if hasattr(value, "shape") or ev.data or not ev.slots or any(
             str(s).startswith("xi_") for s in sp.sympify(value).free_symbols):
         raise _NotLocal
+    if work is not None:
+        work.append(ev.work)
     K = len(ev.slots)
     expr = sp.sympify(fsum.sign * value)
     instances = []

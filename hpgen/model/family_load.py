@@ -16,8 +16,10 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class BodyLagrangian:
-    """The Lagrangian as the sum of its BodyTerms (hpgen.model.bodyterms) over their ranges;
-    ``data``: {body data symbol: per-body runtime symbols}."""
+    """The Lagrangian as the sum of its BodyTerms (hpgen.model.bodyterms) over their ranges,
+    without its joint potentials (configuration only: no part of d2l/dxi2, all that the
+    loader's checks and the projection read); ``data``: {body data symbol: per-body runtime
+    symbols}."""
     terms: tuple
     data: dict
 
@@ -54,7 +56,7 @@ def local_lagrangian(group, text, exact: dict, lag_params: dict, refused: dict):
     """(family with its sums, BodyLagrangian, xi_symbols, g_symbols) when the family's
     Lagrangian can stay unexpanded, else None; ``exact``: the parameters as written, ``lag_params``: as the
     Lagrangian's evaluator takes them (runtime ones as symbols)."""
-    from .bodyterms import _body_term
+    from .bodyterms import _body_term, _NotLocal, _potential
     from .evaluator import MAX_WORK, _group_names
     from .expr import MAX_TREE, _final_checks
     from .families import family_of, with_sums
@@ -73,7 +75,13 @@ def local_lagrangian(group, text, exact: dict, lag_params: dict, refused: dict):
         for s in family.sums:
             if not 0 <= s.start <= s.stop <= family.count:
                 return None
-            term = _body_term(family, s, lag_params, data, work)
+            try:
+                term = _body_term(family, s, lag_params, data, work)
+            except _NotLocal:      # a joint potential: no xi, so no part of d2l/dxi2
+                expr = _potential(family, s, lag_params, work).expr
+                _final_checks(expr, ())
+                size += (s.stop - s.start) * _tree_size(expr)
+                continue
             terms.append(term)
             xis = [x for x in term.expr.free_symbols if str(x).startswith("xi_")]
             depends = _final_checks(term.expr, xis) or depends
@@ -93,6 +101,16 @@ def body_terms_hessian(lag: BodyLagrangian, group, g, runtime: dict):
     t = 0, runtime parameters (and body data) at their defaults ``runtime``."""
     import casadi as ca
     import numpy as np
+    X = ca.SX.sym("xi", group.d)
+    total = body_terms_sx(lag, group, X, lambda r, c: ca.SX(float(g[r][c])), runtime)
+    fun = ca.Function("legendre_map", [X], [ca.hessian(total, X)[0]])
+    return np.array(fun(np.zeros(group.d)), dtype=float)
+
+
+def body_terms_sx(lag: BodyLagrangian, group, X, entry, runtime: dict):
+    """The BodyLagrangian ``lag`` as a casadi SX at t = 0: xi = X (d), g's entry (r, c) =
+    ``entry(r, c)``, runtime parameters (and body data) at ``runtime``."""
+    import casadi as ca
 
     from ..derive.lagrangian import to_casadi
     from ..groups import group_from_spec
@@ -100,7 +118,6 @@ def body_terms_hessian(lag: BodyLagrangian, group, g, runtime: dict):
     body = group_from_spec(group.family.body)
     nb, db = body.n, body.d
     data = lag.data
-    X = ca.SX.sym("xi", group.d)
     total = ca.SX(0)
     for t in lag.terms:
         for k in range(t.start, t.stop):
@@ -111,14 +128,13 @@ def body_terms_hessian(lag: BodyLagrangian, group, g, runtime: dict):
                     mapping[s] = X[k * db + int(name[3:])]
                 elif name.startswith("g_"):
                     a, b = map(int, name[2:].split("_"))
-                    mapping[s] = ca.SX(float(g[k * nb + a][k * nb + b]))
+                    mapping[s] = entry(k * nb + a, k * nb + b)
                 elif s in runtime:
                     mapping[s] = ca.SX(runtime[s])
                 elif name.startswith("body:"):
                     mapping[s] = ca.SX(runtime[data[s][k]])
             total = total + to_casadi(t.expr, mapping)
-    fun = ca.Function("legendre_map", [X], [ca.hessian(total, X)[0]])
-    return np.array(fun(np.zeros(group.d)), dtype=float)
+    return total
 
 
 def _tree_size(expr) -> int:

@@ -225,10 +225,8 @@ def build_model(doc: Doc, text: str) -> Model:
                                         (checked, xi_syms, dict(zip(rsyms, rdefaults))))
     if scene is not None and (constraints or scene.project):
         from .constraints import check_initial
-        if scene.project and lag is None:     # the projection's metric: the full l
-            lag = build()
-        scene = check_initial(doc, constraints, g_syms, group, scene,
-                              (lag, xi_syms, dict(zip(rsyms, rdefaults))))
+        scene = check_initial(doc, constraints, g_syms, group, scene,      # its metric: l's
+                              (checked, xi_syms, dict(zip(rsyms, rdefaults))))
     if family is not None:
         from dataclasses import replace
         from .bodyterms import local_terms

@@ -47,10 +47,13 @@ class InitialProjection:
 
 
 def casadi_maps(constraints, g_symbols, group, lagrangian, xi_symbols, fixed):
-    """casadi.Function (g, xi) -> (phi, Phi, H) (module docstring)."""
+    """casadi.Function (g, xi) -> (phi, Phi, H) (module docstring); ``lagrangian`` a sympy
+    l or a BodyLagrangian (hpgen.model.family_load: a family's, its joint potentials left
+    out, they do not enter H)."""
     import casadi as ca
 
     from ..derive.lagrangian import to_casadi
+    from .symbols import TIME_SYMBOL
     n, d = group.n, group.d
     G, X, eta = ca.SX.sym("g", n, n), ca.SX.sym("xi", d), ca.SX.sym("eta", d)
     gmap = {s: G[i, j] for i, row in enumerate(g_symbols) for j, s in enumerate(row)}
@@ -58,9 +61,14 @@ def casadi_maps(constraints, g_symbols, group, lagrangian, xi_symbols, fixed):
     phi = ca.vertcat(*rows)
     varied = ca.substitute(phi, G, ca.mtimes(G, ca.SX.eye(n) + group.hat(eta)))
     Phi = ca.substitute(ca.jacobian(varied, eta), eta, ca.SX.zeros(d))
-    lag = lagrangian.xreplace(fixed)
-    mapping = {**gmap, **{s: X[k] for k, s in enumerate(xi_symbols)}}
-    H = ca.hessian(to_casadi(lag, mapping), X)[0]
+    from .family_load import BodyLagrangian, body_terms_sx
+    if isinstance(lagrangian, BodyLagrangian):      # a family loaded body by body
+        runtime = {s: v for s, v in fixed.items() if s is not TIME_SYMBOL}
+        l_sx = body_terms_sx(lagrangian, group, X, lambda r, c: G[r, c], runtime)
+    else:
+        mapping = {**gmap, **{s: X[k] for k, s in enumerate(xi_symbols)}}
+        l_sx = to_casadi(lagrangian.xreplace(fixed), mapping)
+    H = ca.hessian(l_sx, X)[0]
     return ca.Function("projection", [G, X], [phi, Phi, H])
 
 

@@ -62,3 +62,20 @@ forces: {{for: i, body: ["u", "0", "0"]}}
 """
     with pytest.raises(ModelError, match=message):
         load_model_text(text)
+
+
+def test_a_joint_potential_stays_unexpanded_and_the_projection_is_the_full_ls():
+    """The rod's bending/twisting sum (a joint potential) no longer makes the loader expand
+    l; its initial.project (metric from the body terms) is bitwise the full l's."""
+    from hpgen.model.projection import project
+    from hpgen.model.symbols import TIME_SYMBOL
+    rod = (EXAMPLES / "rod.yaml").read_text().replace("{N: 2,", "{N: 3,")
+    m = load_model_text(rod)
+    assert m.lagrangian_expr is None and len(m.family.local.potentials) == 1
+    head, rest = rod.split("constraints:\n")
+    raw = load_model_text(head + rest[rest.index("integrator:"):].replace(
+        "    project: true\n", ""))                   # the initial state as written
+    g, xi, note = project(m.constraints, m.g_symbols, m.group, m.lagrangian, m.xi_symbols,
+                          {TIME_SYMBOL: 0}, raw.scene.g0, raw.scene.xi0)
+    assert note.iterations > 0 and note == m.scene.projection
+    assert np.array_equal(g, np.array(m.scene.g0)) and np.array_equal(xi, m.scene.xi0)
