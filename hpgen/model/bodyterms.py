@@ -192,13 +192,15 @@ def _potential(family: BodyFamily, fsum, params: dict, work=None) -> JointPotent
     evaluator's work appended to the list ``work`` when given)."""
     ev = _Local(family.body, MAX_SLOTS, params, fsum.variable, ("xi",), count=family.count)
     value = ev.walk(parse_checked(fsum.term).body)
-    if hasattr(value, "shape") or ev.data or not ev.slots or any(
-            str(s).startswith("xi_") for s in sp.sympify(value).free_symbols):
+    if hasattr(value, "shape") or ev.data or not ev.slots:
+        raise _NotLocal
+    value = value if isinstance(value, sp.Basic) else sp.Float(float(value))
+    if any(str(s).startswith("xi_") for s in value.free_symbols):
         raise _NotLocal
     if work is not None:
         work.append(ev.work)
     K = len(ev.slots)
-    expr = sp.sympify(fsum.sign * value)
+    expr = fsum.sign * value
     instances = []
     for i in range(fsum.start, fsum.stop):
         bodies = ev.bodies_at(i)
