@@ -2,19 +2,18 @@
 with CasADi call nodes.
 
 For a body-separable Lagrangian l = sum_i l_i(g_i, xi_i; i) (hpgen.model.bodyterms: every sum
-term local to its body, the body index i a numeric input) the unconstrained step of the
-product group is N independent steps: body i's stage equations involve its own unknowns z_i,
-(g_i, p_i) and h only (the chart maps and the action sum of a product split factor by
-factor). Each is derived once as a SX Function of (z_i, g_i, p_i, h, i) with the options
-``never_inline`` (a call node where it is used) and ``jac_penalty`` 0 (CasADi differentiates
-a call through the callee's own Jacobian function, derived once, instead of one directional
-derivative per seed). The step kernels (hpgen.derive.family_kernels) compose the calls over MX, where a
-call passes whole vectors; family_step composes them over SX as well (the SX kernels' and
-the tests' form). Bodies whose Lagrangians differ (sums over different ranges) get one
-function per distinct set of sums ("class"). An open model (runtime parameters and t in the
-sums, a per-body force with the control inputs) gives its body functions the environment
-(t, params) and its step functions the step vector hv as their h (hpgen.derive.family_open);
-body i's force enters body i's step only.
+term local to its body, the body index i a numeric input) the unconstrained step of the product
+group is N independent steps: body i's stage equations involve its own unknowns z_i, (g_i, p_i)
+and h only (the chart maps and the action sum of a product split factor by factor). Each is
+derived once as a SX Function of (z_i, g_i, p_i, h, i) with the options of
+hpgen.derive.family_calls (a call node where it is used, differentiated through its own
+Jacobian function, its derivative functions calls too). The step kernels
+(hpgen.derive.family_kernels) compose the calls over MX, where a call passes whole vectors;
+family_step composes them over SX as well (the SX kernels' and the tests' form). Bodies whose
+Lagrangians differ (sums over different ranges) get one function per distinct set of sums
+("class"). An open model (runtime parameters and t in the sums, a per-body force with the
+control inputs) gives its body functions the environment (t, params) and its step functions the
+step vector hv as their h (hpgen.derive.family_open); body i's force enters body i's step only.
 
 Constraints (hpgen.derive.constraints, docs/numerics.md sec. 14) decompose by joint: with
 joint j's rows phi_j(g_a, g_b, ...; i_j) and body-frame Jacobians Phi_{j,a},
@@ -59,8 +58,7 @@ from .family_potentials import inline_forces, potential_force_functions, product
 from .family_split import split_body_step
 from .lagrangian import to_casadi
 from ..splitting import is_splitting
-
-CALL = {"never_inline": True, "jac_penalty": 0}
+from .family_calls import CALL
 
 
 @dataclass(frozen=True)

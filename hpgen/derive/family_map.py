@@ -21,8 +21,7 @@ import numpy as np
 
 from .action import StepEquations
 from .sparse_blocks import Entries, assemble
-
-CALL = {"never_inline": True, "jac_penalty": 0}
+from .family_calls import CALL
 
 
 # f -> its MX wrapper, alive as long as f: every mapped call of one function object in a

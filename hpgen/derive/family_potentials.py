@@ -29,8 +29,7 @@ from dataclasses import dataclass
 import casadi as ca
 
 from .lagrangian import to_casadi
-
-CALL = {"never_inline": True, "jac_penalty": 0}
+from .family_calls import CALL
 
 
 @dataclass(frozen=True)
