@@ -2,19 +2,18 @@
 with CasADi call nodes.
 
 For a body-separable Lagrangian l = sum_i l_i(g_i, xi_i; i) (hpgen.model.bodyterms: every sum
-term local to its body, the body index i a numeric input) the unconstrained step of the
-product group is N independent steps: body i's stage equations involve its own unknowns z_i,
-(g_i, p_i) and h only (the chart maps and the action sum of a product split factor by
-factor). Each is derived once as a SX Function of (z_i, g_i, p_i, h, i) with the options
-``never_inline`` (a call node where it is used) and ``jac_penalty`` 0 (CasADi differentiates
-a call through the callee's own Jacobian function, derived once, instead of one directional
-derivative per seed). The step kernels (hpgen.derive.family_kernels) compose the calls over MX, where a
-call passes whole vectors; family_step composes them over SX as well (the SX kernels' and
-the tests' form). Bodies whose Lagrangians differ (sums over different ranges) get one
-function per distinct set of sums ("class"). An open model (runtime parameters and t in the
-sums, a per-body force with the control inputs) gives its body functions the environment
-(t, params) and its step functions the step vector hv as their h (hpgen.derive.family_open);
-body i's force enters body i's step only.
+term local to its body, the body index i a numeric input) the unconstrained step of the product
+group is N independent steps: body i's stage equations involve its own unknowns z_i, (g_i, p_i)
+and h only (the chart maps and the action sum of a product split factor by factor). Each is
+derived once as a SX Function of (z_i, g_i, p_i, h, i) with the options of
+hpgen.derive.family_calls (a call node where it is used, differentiated through its own
+Jacobian function, its derivative functions calls too). The step kernels
+(hpgen.derive.family_kernels) compose the calls over MX, where a call passes whole vectors;
+family_step composes them over SX as well (the SX kernels' and the tests' form). Bodies whose
+Lagrangians differ (sums over different ranges) get one function per distinct set of sums
+("class"). An open model (runtime parameters and t in the sums, a per-body force with the
+control inputs) gives its body functions the environment (t, params) and its step functions the
+step vector hv as their h (hpgen.derive.family_open); body i's force enters body i's step only.
 
 Constraints (hpgen.derive.constraints, docs/numerics.md sec. 14) decompose by joint: with
 joint j's rows phi_j(g_a, g_b, ...; i_j) and body-frame Jacobians Phi_{j,a},
@@ -55,12 +54,11 @@ from .family_open import with_env, body_force_function, body_index, index_symbol
 from .family_joint_forces import external_forces, force_components, \
     joint_force_functions, joint_stage_functions, stage_force, stage_function
 from .family_velocity import hessian_inverse, momentum_functions, node_velocity, quadratic
-from .family_potentials import inline_forces, potential_force_functions, product_potential
+from .family_potentials import inline_forces, potential_functions, product_potential
 from .family_split import split_body_step
 from .lagrangian import to_casadi
 from ..splitting import is_splitting
-
-CALL = {"never_inline": True, "jac_penalty": 0}
+from .family_calls import CALL
 
 
 @dataclass(frozen=True)
@@ -199,7 +197,8 @@ def _functions(model, tableau, tau: str, rkmk: str):
     jpower = joint_force_functions(model, body) if lay is not None else []
     # with forces between bodies (joint potentials' included, hpgen.derive.
     # family_potentials), a body's step takes its external stage forces fext
-    pforces = potential_force_functions(model, body)
+    pots = potential_functions(model, body)
+    pforces = [(f, pf) for _, f, pf in pots]
     jforces = jpower + pforces
     comps = force_components(model, pforces) if jforces else ()
     fx = ca.SX.sym("fext", tableau.stages * len(comps)) if jforces else None
@@ -245,7 +244,7 @@ def _functions(model, tableau, tau: str, rkmk: str):
             M=ca.Function(f"body{c}_margin", [e.z, hb], [e.margin], CALL),
             C=ca.Function(f"body{c}_chart", [e.z, hb], [e.chart_step], CALL),
             Z=ca.Function(f"body{c}_guess", [e.xi_hat, gbv, pb, hb], [e.guess], CALL),
-            force=fb)
+            force=fb, potentials=pots)
 
     joints = family.local.joints
     jfun = _joint_functions(model, body) if joints else {}
@@ -305,7 +304,7 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     for mk in margins[1:]:
         margin = ca.fmin(margin, mk)
     g1 = ca.diagcat(*g1s)
-    lag, velocity = _product_lagrangian(model, lags, keys, body, index, ek)
+    lag, velocity = _product_lagrangian(model, lags, keys, body, index, ek, st0["potentials"])
     force = product_force(st0["force"], model, h, nb, db, N, st0["power_forces"])
     if not joints:
         eqs = StepEquations(z, tuple(blocks), ca.vertcat(*res), g1, ca.vertcat(*p1s),
@@ -348,11 +347,11 @@ def family_step(model, tableau, tau: str, rkmk: str, g, p, h, z=None) -> FamilyP
     return FamilyParts(eqs, lag, velocity, force, quadratic(lags, body))
 
 
-def _product_lagrangian(model, lags, keys, body, index, ek=None):
+def _product_lagrangian(model, lags, keys, body, index, ek=None, pots=()):
     """(lag, velocity): l(G, X) of the product as a sum of per-body calls, and one Newton step
     of dl/dxi = p from xi body by body (the Hessian of a separable l is block-diagonal);
     index: the bodies' index inputs (body_index); ek: an open model's (t_k, params), bound
-    into both."""
+    into both; pots: the joint potentials' functions (potential_functions)."""
     nb, db, N = body.n, body.d, len(index)
     G, X, P = ca.SX.sym("g", nb, nb), ca.SX.sym("xi", db), ca.SX.sym("p", db)
     I = index_symbol(model)[0]
@@ -367,8 +366,8 @@ def _product_lagrangian(model, lags, keys, body, index, ek=None):
         terms = [lags[keys[k]][1](*with_env([Gp[k * nb:(k + 1) * nb, k * nb:(k + 1) * nb],
                                           Xp[k * db:(k + 1) * db], index[k]], ek))
                  for k in range(N)]
-        if model.family.local.potentials:        # the joint potentials' terms
-            return ca.sum1(ca.vertcat(*terms)) + product_potential(model, body, Gp, ek)
+        if pots:        # the joint potentials' terms
+            return ca.sum1(ca.vertcat(*terms)) + product_potential(pots, body, Gp, ek)
         return ca.sum1(ca.vertcat(*terms))
 
     def velocity(Gp, Pp, Xp):

@@ -39,8 +39,7 @@ from __future__ import annotations
 import casadi as ca
 
 from .sparse_blocks import Entries, Sum, assemble, block_products
-
-CALL = {"never_inline": True, "jac_penalty": 0}
+from .family_calls import CALL
 
 
 def _jacobian_function(f, pairs, name, nominal=()):

@@ -23,8 +23,7 @@ import casadi as ca
 import numpy as np
 
 from .lagrangian import to_casadi
-
-CALL = {"never_inline": True, "jac_penalty": 0}
+from .family_calls import CALL
 
 
 def joint_force_functions(model, body) -> list:
@@ -64,7 +63,7 @@ def joint_force_functions(model, body) -> list:
 def force_components(model, potentials=()) -> tuple:
     """The components (0..d-1, ascending) of the body's force that some joint force of
     ``model`` or joint potential's force (``potentials``: hpgen.derive.family_potentials.
-    potential_force_functions) can make nonzero (an expression not identically 0 in some
+    potential_functions) can make nonzero (an expression not identically 0 in some
     slot); (0,) when none can."""
     bf = model.family.local.force
     found = {k for jf in (bf.joints if bf is not None else ()) for row in jf.exprs

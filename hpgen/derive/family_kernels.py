@@ -50,8 +50,9 @@ def mx_step_kernels(model, tableau, tau: str, rkmk: str) -> dict:
         from .family_map import mapped_state_kernels
         from .record_kernel import record_names
         _, lags, keys, steps, _, _ = _functions(model, tableau, tau, rkmk)
-        state = mapped_state_kernels(model, lags, keys, body, record_names(model),
-                                     next(iter(steps.values()))["force"])
+        st = next(iter(steps.values()))
+        state = mapped_state_kernels(model, lags, keys, body, record_names(model), st["force"],
+                                     st["potentials"])
         return {**mapped, **(state or {})}
     g = ca.reshape(gv, n, n)
     eqs = family_step(model, tableau, tau, rkmk, g, p, h).eqs

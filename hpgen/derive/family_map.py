@@ -21,8 +21,7 @@ import numpy as np
 
 from .action import StepEquations
 from .sparse_blocks import Entries, assemble
-
-CALL = {"never_inline": True, "jac_penalty": 0}
+from .family_calls import CALL
 
 
 # f -> its MX wrapper, alive as long as f: every mapped call of one function object in a
@@ -172,7 +171,8 @@ def mapped_step_parts(model, funcs, G, P, h, z, xi_hat):
     return eqs, parts
 
 
-def mapped_state_kernels(model, lags, keys, body, record_names, force=None) -> dict | None:
+def mapped_state_kernels(model, lags, keys, body, record_names, force=None,
+                         pots=()) -> dict | None:
     """{kernel name: (Function over MX, input names, output names)} for legendre, hessian,
     energy, momentum, defect, observe, velocity_step and (when the scene records only g, mu,
     xi, energy, momentum, defect) record: one mapped call of a per-body function each, the
@@ -180,7 +180,8 @@ def mapped_state_kernels(model, lags, keys, body, record_names, force=None) -> d
     Lagrangian. An open model's kernels of hpgen.abi.OPEN_EXTRA take its step vector hv as a
     last input ``h`` (their t is t_k); with ``force`` (the per-body force, hpgen.derive.
     family_open.body_force_function) the record may hold power and work, <f, xi> summed over
-    the bodies."""
+    the bodies; pots: the joint potentials' functions (family_potentials.potential_functions).
+    """
     from ..abi import OPEN_EXTRA
     from .family_open import body_indices, index_symbol, with_env, open_layout, \
         split_step_vector
@@ -226,9 +227,9 @@ def mapped_state_kernels(model, lags, keys, body, record_names, force=None) -> d
         fm = ca.Function("body_momentum_map", [gvec, Ps], [body.momentum_map(Gs, Ps)], CALL)
         m_ = mapped(fm, N)(G, Pm)
     energy, defect, E0 = ca.sum2(E_), ca.mmax(e_), ca.sum2(E0_)
-    if model.family.local.potentials:        # -l_j of the joint potentials
+    if pots:        # -l_j of the joint potentials
         from .family_potentials import mapped_potential
-        lpot = mapped_potential(model, body, G, ek)
+        lpot = mapped_potential(pots, G, ek)
         energy, E0 = energy - lpot, E0 - lpot
     items = {"g": gv, "mu": p, "xi": xi, "energy": energy, "momentum": ca.vec(m_),
              "defect": defect}

@@ -17,8 +17,7 @@ import casadi as ca
 import numpy as np
 
 from .lagrangian import to_casadi
-
-CALL = {"never_inline": True, "jac_penalty": 0}
+from .family_calls import CALL
 
 
 def open_layout(model):

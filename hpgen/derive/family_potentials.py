@@ -18,19 +18,20 @@ approximation of it. The energy (<dl/dxi, xi> - l) gets -l_j, the Legendre map n
 
 A potential's ``exprs`` (PotentialForce, as a JointForce's: K tuples of d entries, here the
 SX force components) say which components can be nonzero (force_components). Each force
-Function has an inlinable copy (inline_forces) that the mapped step's stage function takes
-in place of the call (family_joint_forces.joint_stage_functions), so that its Jacobian
-blocks are one symbolic SX graph.
+Function has an inlinable copy (PotentialForce.inline) that the mapped step's stage function
+takes in place of the call (family_joint_forces.joint_stage_functions), so that its Jacobian
+blocks are one symbolic SX graph. The functions are built once per model and scheme by their
+caller (hpgen.derive.family._functions, which keeps them with the body steps) and passed to
+the functions below: one CasADi function each in the generated code.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import casadi as ca
 
 from .lagrangian import to_casadi
-
-CALL = {"never_inline": True, "jac_penalty": 0}
+from .family_calls import CALL
 
 
 @dataclass(frozen=True)
@@ -38,31 +39,24 @@ class PotentialForce:
     exprs: tuple                   # K tuples of d SX scalars: the slots' forces
     index: object                  # sympy Symbol of the sum variable
     instances: tuple               # ((i, (body, ...)), ...)
-
-
-_LAST: list = []
-#: each force Function -> its copy without call-node options (inlined where it is called)
-_INLINE: dict = {}
+    #: the force Function's copy without call-node options (inlined where it is called)
+    inline: object = field(default=None, compare=False, repr=False)
 
 
 def inline_forces(pforces) -> dict:
-    """{force Function: its inlinable copy} of potential_force_functions' ``pforces``."""
-    return {f: _INLINE[f] for f, _ in pforces}
+    """{force Function: its inlinable copy} of ``pforces``, (force Function, PotentialForce)
+    pairs of potential_functions."""
+    return {f: pf.inline for f, pf in pforces}
 
 
 def potential_functions(model, body) -> list:
     """[(energy Function(vec g_0, ..., vec g_(K-1), i[, e]) -> l_j, e = (t, params) when the
     model is open; force Function as joint_force_functions'; PotentialForce), ...] of the
-    model's joint potentials, built once per model (one CasADi function each)."""
+    model's joint potentials, new CasADi functions on each call."""
     pots = model.family.local.potentials
-    if not pots:
-        return []
-    if _LAST and _LAST[0] is model:
-        return _LAST[1]
     nb, db = body.n, body.d
     m, nP = len(model.inputs), len(model.runtime_symbols)
     out = []
-    _INLINE.clear()
     for c, pot in enumerate(pots):
         K = len(pot.instances[0][1]) if pot.instances else 1
         Gs = [ca.SX.sym(f"g{s}", nb, nb) for s in range(K)]
@@ -83,7 +77,7 @@ def potential_functions(model, body) -> list:
         fs = [ca.substitute(ca.gradient(varied, e), ca.vertcat(*etas), zero) for e in etas]
         args = [v for G, X in zip(Gs, Xs) for v in (ca.vec(G), X)]
         force = ca.Function(f"potential_force{c}", [*args, I, Ef], fs, CALL)
-        _INLINE[force] = ca.Function(f"potential_force{c}_inline", [*args, I, Ef], fs)
+        inline = ca.Function(f"potential_force{c}_inline", [*args, I, Ef], fs)
         gins = [ca.vec(G) for G in Gs]
         if model.open_system:
             Ee = ca.SX.sym("e", 1 + nP)
@@ -92,34 +86,28 @@ def potential_functions(model, body) -> list:
         else:
             energy = ca.Function(f"potential{c}", [*gins, I], [lj], CALL)
         exprs = tuple(tuple(f[k] for k in range(db)) for f in fs)
-        out.append((energy, force, PotentialForce(exprs, pot.index, pot.instances)))
-    _LAST[:] = [model, out]
+        out.append((energy, force, PotentialForce(exprs, pot.index, pot.instances, inline)))
     return out
 
 
-def potential_force_functions(model, body) -> list:
-    """[(force Function, PotentialForce), ...]: the joint potentials as joint forces."""
-    return [(f, pf) for _, f, pf in potential_functions(model, body)]
-
-
-def product_potential(model, body, Gp, ek=None):
-    """sum_j l_j at the product's Gp (n x n) and the environment ek = (t, params) of an open
-    model (else None): one call per instance."""
+def product_potential(pots, body, Gp, ek=None):
+    """sum_j l_j of potential_functions' ``pots`` at the product's Gp (n x n) and the
+    environment ek = (t, params) of an open model (else None): one call per instance."""
     nb = body.n
     total = 0
-    for energy, _, pf in potential_functions(model, body):
+    for energy, _, pf in pots:
         for i, bodies in pf.instances:
             args = [ca.vec(Gp[b * nb:(b + 1) * nb, b * nb:(b + 1) * nb]) for b in bodies]
             total = total + energy(*args, i, *([] if ek is None else [ek]))
     return total
 
 
-def mapped_potential(model, body, G, ek=None):
-    """sum_j l_j at the bodies' G (nb^2 x N, MX) and ek (open models), one mapped call per
-    potential."""
+def mapped_potential(pots, G, ek=None):
+    """sum_j l_j of potential_functions' ``pots`` at the bodies' G (nb^2 x N, MX) and ek
+    (open models), one mapped call per potential."""
     from .family_map import mapped
     total = 0
-    for energy, _, pf in potential_functions(model, body):
+    for energy, _, pf in pots:
         K = len(pf.exprs)
         cols = [[b[s] for _, b in pf.instances] for s in range(K)]
         Ij = ca.DM([i for i, _ in pf.instances]).T

@@ -9,8 +9,7 @@ import casadi as ca
 import numpy as np
 
 from .family_open import index_symbol, with_env
-
-CALL = {"never_inline": True, "jac_penalty": 0}
+from .family_calls import CALL
 
 
 def quadratic(lags, body) -> bool:

@@ -138,6 +138,23 @@ def test_step_kernels_do_not_grow_with_the_bodies():
     assert sizes[3]["residual"] < 200
 
 
+def test_step_partials_call_the_derivatives_of_the_callees():
+    """The SX form of the chain's step_partials (what the Python printer walks,
+    hpgen.codegen.pycallees.as_sx) calls the Jacobian functions of the body and joint
+    functions (their derivative functions are never_inline, hpgen.derive.family_calls) instead
+    of inlining a copy of them per body: the printed kernels.py has each once."""
+    from hpgen.codegen.pycallees import as_sx, callee_functions
+    s = derive(chain(3), resolve_tableau("stormer-verlet"), "cay", "truncated")
+    kernel = s.kernel("step_partials")
+    called = {name for name, _ in callee_functions([kernel])}
+    assert {"_call_jac_body0_residual", "_call_jac_body0_update",
+            "_call_jac_joint0_impulse"} <= called
+    size = {fn.name(): fn.n_instructions() for _, fn in callee_functions([kernel])}
+    # a copy of the body's residual and update Jacobians per body would alone take this many
+    inlined = 3 * (size["jac_body0_residual"] + size["jac_body0_update"])
+    assert as_sx(kernel).function.n_instructions() < inlined
+
+
 def run(step, P, g, p, h, steps):
     """``steps`` steps with CasADi's evaluation of ``step``'s kernels (Newton, dense solve)."""
     nz = step.nz
