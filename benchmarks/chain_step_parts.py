@@ -4,14 +4,16 @@ whole runs with full and simplified Newton, in a C program that includes the mod
 kernels.c (static functions are not exported, so ctypes cannot call them).
 
     PYTHONPATH=. python benchmarks/chain_step_parts.py [--n 8 64] [--frames pin|centre]
-        [--tableau split2]                                          (N >= 3: a sparse J)
+        [--tableau split2] [--model FILE --u 0.15 --param grav=5]   (N >= 3: a sparse J)
 
 Each N: examples/pendulum_chain.yaml (``--frames centre``: examples/capsule_chain.yaml)
 compiled (C, sparse J; ``--tableau``: the model's scheme else, e.g. ``split2``, whose
 unknowns are the joints' multipliers only), 50 steps of h = 1e-3 from the
 benchmark's start (hpgen.bench.multibody.chain) give the state; the harness (built with the
 runtime's flags) then advances 20 more steps and times each part at that state, best of 5
-rounds, us per call. Read the parts against each other: the machine's load moves them all.
+rounds, us per call. ``--model``: another chain model file in the frames' layout; an open one
+(forces, inputs, runtime parameters, t) runs with the inputs ``--u`` held and the runtime
+parameters ``--param`` (their defaults else), its parts timed at t = 0.05. Read the parts against each other: the machine's load moves them all.
 """
 from __future__ import annotations
 
@@ -40,15 +42,25 @@ int main(int argc, char** argv) {
     static double g1[HPGEN_NN], p1[HPGEN_D], G[HPGEN_NZ], m[1];
     static double grec[HPGEN_NN * 2], prec[HPGEN_D * 2];
     int piv[HPGEN_NZ];
+#if HPGEN_OPEN
+    static double hv[HPGEN_H];      /* [h, t, u, params]: from the state file */
+#else
     double hv[1] = {1e-3};
+#endif
     hpgen_options o = {1e-14, 50, 0, 1}, os_ = {1e-14, 50, 1, 1};
     hpgen_status st;
     FILE* f = fopen(argv[1], "rb");
     long long steps = 2000, n;
     if (!f || fread(g, 8, HPGEN_NN, f) != HPGEN_NN || fread(p, 8, HPGEN_D, f) != HPGEN_D) return 1;
+#if HPGEN_OPEN
+    if (fread(hv, 8, HPGEN_H, f) != HPGEN_H) return 1;
+#endif
     fclose(f);
     hpgen_predictor_base(g, p, hv, z);
     hpgen_run_init(&R, g, p, z);
+#if HPGEN_OPEN
+    hpgen_run_set_inputs(&R, hv[1], hv + 2, 1, hv + 2 + HPGEN_M);
+#endif
     hpgen_advance(&R, 1e-3, 20, 1000, &o, grec, prec, &st);
     memcpy(g, R.g, sizeof g); memcpy(p, R.p, sizeof p); memcpy(z, R.z, sizeof z);
     printf("N=%d nz=%d NJ=%d NLU=%d\n", HPGEN_N / 4, HPGEN_NZ, HPGEN_SP_NJ, HPGEN_SP_NLU);
@@ -79,21 +91,31 @@ int main(int argc, char** argv) {
 """
 
 
-def write_state(model, n: int, work: Path, frames: str = "pin", tableau=None):
-    """The model compiled at N = n, and the path of the state (g column-major, mu; float64)
-    after 50 steps of h = 1e-3 from the benchmark's start, written into ``work``."""
+def write_state(model, n: int, work: Path, frames: str = "pin", tableau=None, u=(),
+                params=None):
+    """The model compiled at N = n, and the path of the state (g column-major, mu; float64;
+    an open model's step vector [h, t, u, params] after them) after 50 steps of h = 1e-3
+    from the benchmark's start, written into ``work``."""
     integ = hpgen.compile(model, parameters={"N": n}, tableau=tableau)
     spec = chain.ChainSpec(n)
     qpos, qvel = chain.initial_joint_state(spec)
     g0, xi0 = hpgen_chain.to_hpgen(spec, chain.from_joint(spec, qpos, qvel), frames)
-    tr = integ.simulate(g0, 1e-3, 50, xi0=xi0, every=50)
+    lay = integ.meta.get("open")
+    kw = {} if lay is None else {"u": list(u) or None, "params": params or None}
+    tr = integ.simulate(g0, 1e-3, 50, xi0=xi0, every=50, **kw)
     state = work / f"state{n}.bin"
-    np.concatenate([np.asarray(tr.g[-1]).ravel(order="F"), np.asarray(tr.mu[-1])]).tofile(state)
+    hv = [] if lay is None else [1e-3, 0.05, *u, *[
+        (params or {}).get(name, d) for (name, _), d in zip(lay["runtime_parameters"],
+                                                            lay["defaults"])]]
+    np.concatenate([np.asarray(tr.g[-1]).ravel(order="F"), np.asarray(tr.mu[-1]),
+                    np.asarray(hv, dtype=float)]).tofile(state)
     return integ, state
 
 
-def run(n: int, work: Path, frames: str = "pin", tableau=None) -> str:
-    integ, state = write_state(hpgen_chain.MODELS[frames], n, work, frames, tableau)
+def run(n: int, work: Path, frames: str = "pin", tableau=None, model=None, u=(),
+        params=None) -> str:
+    integ, state = write_state(model or hpgen_chain.MODELS[frames], n, work, frames, tableau,
+                               u, params)
     module = Path(integ.engine.backend.lib._name).parent
     src, exe = work / "parts.c", work / f"parts{n}"
     src.write_text(HARNESS)
@@ -117,11 +139,16 @@ def main() -> int:
     ap.add_argument("--n", type=int, nargs="+", default=[8, 64])
     ap.add_argument("--frames", choices=sorted(hpgen_chain.MODELS), default="pin")
     ap.add_argument("--tableau", default=None, help="default: the model file's")
+    ap.add_argument("--model", default=None, help="default: the frames' chain example")
+    ap.add_argument("--u", type=float, nargs="*", default=[], help="an open model's inputs")
+    ap.add_argument("--param", nargs="*", default=[], metavar="NAME=VALUE",
+                    help="an open model's runtime parameters (default: their defaults)")
     a = ap.parse_args()
+    params = {k: float(v) for k, v in (q.split("=", 1) for q in a.param)}
     print(f"hpgen from {hpgen.__file__}")
     with tempfile.TemporaryDirectory() as tmp:
         for n in a.n:
-            sys.stdout.write(run(n, Path(tmp), a.frames, a.tableau))
+            sys.stdout.write(run(n, Path(tmp), a.frames, a.tableau, a.model, a.u, params))
             sys.stdout.flush()
     return 0
 

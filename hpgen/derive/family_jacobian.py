@@ -26,11 +26,12 @@ Phi_{j,k}(g1)^T nu_j)/d g1,
 (Z-blocks block-diagonal over the bodies). With forces between bodies the body step also
 takes its stage forces Fext(Z) (hpgen.derive.family_joint_forces.external_force_terms adds
 F_fext, g1_fext, P1m_fext times dFext/dz to J, dg1/dz, dP1/dz). A splitting step (no body
-unknowns, a closed model) composes the hidden rows' dhid/dV dV = Phi_s (V_g dg1 + V_P dP1)
-inside the joints' functions (Phi_s V_g added to dhid/dg1_s, Phi_s V_P times dP1), so that dV
-is not formed: the hidden rows' last blocks multiply dW/dz, with W = V (W = P1 in a splitting
-step). The result equals casadi.jacobian of the mapped
-residual to round-off, with work and memory proportional to the blocks' nonzeros instead of
+unknowns) composes the hidden rows' dhid/dV dV = Phi_s (V_g dg1 + V_P dP1) inside the joints'
+functions (Phi_s V_g added to dhid/dg1_s, Phi_s V_P times dP1; an open model's environment e1
+at the step's end, an input of V, is one more input of those functions, shared by the
+slots), so that dV is not formed: the hidden rows' last blocks multiply dW/dz, with W = V
+(W = P1 in a splitting step). The result equals casadi.jacobian of the mapped residual to
+round-off, with work and memory proportional to the blocks' nonzeros instead of
 CasADi's directional derivatives of the whole mapped step. In the fused F and J
 (residual_and_jacobian) the body step's forward values come from the blocks' own calls.
 """
@@ -72,7 +73,8 @@ def _joint_jacobians(fun, K: int, rows: int, vel=None):
     (phi, Phi_s): old(g_s.., i) -> Phi_s^T per slot; new(g1_s.., i, nu, V_s..) ->
     dphi/dg1_s per s, d(Phi_s^T nu)/dg1_t per (s, t), -Phi_s^T per s, d(sum_s Phi_s V_s)/dg1_s
     per s, Phi_s per s. With ``vel`` (the bodies' velocity blocks, (V_g, V_P) of (g1, P1, i,
-    Hinv)) new also takes P1_s.., i_s.., Hinv_s.. and composes the hidden rows through V:
+    Hinv[, e1])) new also takes P1_s.., i_s.., Hinv_s.. (and an open model's environment e1,
+    one input shared by the slots) and composes the hidden rows through V:
     d(sum_s Phi_s V_s)/dg1_s + Phi_s V_g,s per s and Phi_s V_P,s (instead of Phi_s) per s."""
     nbb, db = fun.size1_in(0), fun.size2_out(1)
     jf = _jacobian_function(fun, [(0, s) for s in range(K)]
@@ -92,18 +94,19 @@ def _joint_jacobians(fun, K: int, rows: int, vel=None):
                           for c in range(db)]) for t in range(K)] for s in range(K)]
     hid = [sum((vs[s][c] * dPhi[s * K + t][c * rows:(c + 1) * rows, :]
                 for s in range(K) for c in range(db)), ca.SX(rows, nbb)) for t in range(K)]
-    last, extra = [out[1 + s] for s in range(K)], []
+    last, extra, env = [out[1 + s] for s in range(K)], [], []
     if vel is not None:
         extra = [ca.SX.sym(f"{a}{s}", vel.sparsity_in(q)) for q, a in ((1, "p"), (2, "i"),
                                                                       (3, "hinv"))
                  for s in range(K)]
+        env = [ca.SX.sym("e1", vel.sparsity_in(4))] if vel.n_in() > 4 else []
         for s in range(K):
-            vg, vp = vel(gs[s], *extra[s::K])
+            vg, vp = vel(gs[s], *extra[s::K], *env)
             hid[s] = hid[s] + ca.mtimes(out[1 + s], vg)
             last[s] = ca.mtimes(out[1 + s], vp)
     outs = (list(dphi) + [kick[s][t] for s in range(K) for t in range(K)]
             + [-out[1 + s].T for s in range(K)] + hid + last)
-    new = ca.Function(f"{fun.name()}_end_blocks", [*gs, i, nu, *vs, *extra], outs, CALL)
+    new = ca.Function(f"{fun.name()}_end_blocks", [*gs, i, nu, *vs, *extra, *env], outs, CALL)
     return old, new
 
 
@@ -150,8 +153,9 @@ def _assembly(model, funcs, parts):
         return Entries.of(ca.sparsity_cast(outs[k], ca.diagcat(*[sp[k]] * N)))
     vj = _jacobian_function(parts["velocity"], [(0, 0), (0, 1)], "body_velocity_blocks")
     # a splitting step (no unknowns per body): the hidden rows compose Phi V_P in the joints'
-    # functions and read dP1, so that dV is not formed (a closed model: no e1)
-    fold = st.get("UR") is not None and nzb == 0 and parts["e1"] is None
+    # functions and read dP1, so that dV is not formed (an open model's e1 passed through)
+    fold = st.get("UR") is not None and nzb == 0
+    env = [] if parts["e1"] is None else [parts["e1"]]   # one column, repeated by the maps
 
     def body_cols(M, cols):           # the columns of body blocks cols of M (w columns each)
         w = M.size2() // N
@@ -175,7 +179,7 @@ def _assembly(model, funcs, parts):
         sl = parts["slots"][key]
         o_old = old.map(len(js))(*sl["G"], Ij)
         o_old = [o_old] if K == 1 else o_old
-        extra = ([body_cols(M, c) for M in (P1, I, Hinv) for c in cols] if fold else [])
+        extra = ([body_cols(M, c) for M in (P1, I, Hinv) for c in cols] + env if fold else [])
         o_new = new.map(len(js))(*sl["G1"], Ij, sl["nu"], *sl["V"], *extra)
         at = [int(rowoff[j]) for j in js]
         jrows = [range(a, a + rows) for a in at]
@@ -221,7 +225,7 @@ def _assembly(model, funcs, parts):
     if fold:                         # the joints' last blocks are Phi V_P: W = P1
         dW = dP1
     else:                            # W = V
-        vg, vp = vj.map(N)(G1, P1, I, Hinv, *([] if parts["e1"] is None else [parts["e1"]]))
+        vg, vp = vj.map(N)(G1, P1, I, Hinv, *env)
         dW = Sum([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, "vel_dg"),
                   block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1, "vel_dp")],
                  (db * N, nzc))

@@ -84,6 +84,13 @@ def with_env(args, e):
 def body_force_function(model, body):
     """Function(vec g, xi, i, e) -> the body's force (d) of a per-body ``forces:``, e = (t, u,
     params) (Model.input_symbols', Model.runtime_symbols' orders); None without one."""
+    out = body_force_expression(model, body)
+    return None if out is None else ca.Function("body_force", *out, CALL)
+
+
+def body_force_expression(model, body):
+    """([vec g, xi, i, e], [f]): body_force_function's inputs and output as SX (for a caller
+    that inlines the force into its own expression); None without a per-body force."""
     from ..model.symbols import TIME_SYMBOL
     bf = model.family.local.force
     if bf is None:
@@ -104,7 +111,7 @@ def body_force_function(model, body):
                 a, b = map(int, name[2:].split("_"))
                 mapping[sym] = G[a, b]
     f = ca.vertcat(*[to_casadi(e, mapping) for e in bf.exprs])
-    return ca.Function("body_force", [ca.vec(G), X, I, E], [f], CALL)
+    return [ca.vec(G), X, I, E], [f]
 
 
 def product_force(fb, model, hv, nb, db, N, joint_forces=()):

@@ -130,15 +130,16 @@ def _open_kick(model, scheme, body, lag, g, hv, index):
     force f(g, t, u_k, params) (the discrete Lagrange-d'Alembert force of Stormer-Verlet's
     two nodes, h/2 each); the symbols the force may depend on; the step h of hv."""
     from ..splitting.flows import _force_function, kick_fractions
-    from .family_open import body_force_function, split_step_vector
+    from .family_open import body_force_expression, split_step_vector
     h = split_step_vector(model, hv)[0]
     m = len(model.inputs)
     u, P = hv[2:2 + m], hv[2 + m:]
     t = ca.SX.sym("t")
     f = _force_function(body, lambda G, X: lag(G, X, ca.vertcat(t, P)), g)
-    fb = body_force_function(model, body)
-    if fb is not None:
-        f = f + fb(ca.vec(g), ca.SX.zeros(body.d), index, ca.vertcat(t, u, P))
+    fb = body_force_expression(model, body)
+    if fb is not None:       # inlined, not a call: the step's Jacobian sees the force's zeros
+        f = f + ca.substitute(fb[1], fb[0], [ca.vec(g), ca.SX.zeros(body.d), index,
+                                             ca.vertcat(t, u, P)])[0]
     times = kick_fractions(scheme)
     at = ca.vertcat(ca.vec(g), t)
 

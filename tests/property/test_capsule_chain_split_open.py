@@ -10,7 +10,9 @@ time-dependent potential, a per-body force of (t, g, u) and a control input.
   joints at round-off at every node, and order 4 (4.0 +- 0.2) of the suzuki4 composition
   (a symmetric step: the kicks at t_k and t_k + h); with V free of t the energy-work
   balance E - W - E0 falls as h^2;
-- the Newton matrix assembled from blocks equals casadi.jacobian of the open step, and
+- the Newton matrix assembled from blocks (the hidden rows folded through the velocity, e1
+  passed through: no dV; the body force inlined in the kicks) equals casadi.jacobian of the
+  open step, and
   linearize's input derivative B equals a central difference;
 - a velocity-dependent force and forces between bodies are refused in one line.
 """
@@ -161,6 +163,13 @@ def test_open_split_jacobian_equals_casadi_jacobian():
             [0.01, 0.3, 0.15, 5.0]]
     A, R = (np.array(ca.densify(f(*args))) for f in (fa, fr))
     assert np.abs(A - R).max() <= 1e-13 * (1.0 + np.abs(R).max())
+    # the hidden rows fold Phi V_P into the joints' blocks (e1 passed through): no dV
+    called = {fa.instruction_MX(k).which_function().name() for k in range(fa.n_instructions())
+              if fa.instruction_id(k) == ca.OP_CALL}
+    assert not any("velocity_blocks" in c or "vel_d" in c for c in called), called
+    # the kicks' body force is inlined in the body update (its Jacobian blocks see through it)
+    ur = next(iter(funcs[3].values()))["UR"]
+    assert ca.OP_CALL not in {ur.instruction_id(k) for k in range(ur.n_instructions())}
 
 
 @pytest.mark.parametrize("example,words", [

@@ -71,6 +71,39 @@ def test_split_jacobian_equals_casadi_jacobian():
     assert np.abs(A - R).max() <= 1e-13 * (1.0 + np.abs(R).max())
 
 
+def test_joint_blocks_fold_the_velocity_with_its_environment():
+    """The joints' end blocks with the velocity folded in (hpgen.derive.family_jacobian.
+    _joint_jacobians) at a velocity that reads an environment e1 (one input shared by the
+    slots): the hidden rows' blocks are the total derivatives of sum_s Phi_s(g) V(g_s, p_s,
+    i_s, Hinv_s, e1) in g_s and p_s, to round-off (a toy joint of two slots, random point)."""
+    from hpgen.derive.family_jacobian import _jacobian_function, _joint_jacobians
+    K, rows, db = 2, 2, 2
+    gs, i = [ca.SX.sym(f"g{s}", 3) for s in range(K)], ca.SX.sym("i")
+    Phi = [ca.vertcat(ca.horzcat(ca.cos(g[0]), g[1] * g[2]), ca.horzcat(i * g[2], ca.sin(g[1])))
+           for g in gs]
+    phi = ca.vertcat(gs[0][0] * gs[1][1] - ca.sin(gs[0][2]), gs[1][0] ** 2 + i)
+    fun = ca.Function("toy", [*gs, i], [phi, *Phi])
+    g, p, ib, hinv, e = (ca.SX.sym(a, n) for a, n in (("g", 3), ("p", db), ("ib", 1),
+                                                        ("hinv", db * db), ("e", 2)))
+    v = ca.mtimes(ca.reshape(hinv, db, db), p - ca.vertcat(e[0] * g[0] ** 2, ca.sin(e[1] * g[1])))
+    vel = ca.Function("velocity", [g, p, ib, hinv, e], [v + ib * e[1]])
+    _, new = _joint_jacobians(fun, K, rows, _jacobian_function(vel, [(0, 0), (0, 1)], "vb"))
+    ps, ibs, hs = ([ca.SX.sym(f"{a}{s}", n) for s in range(K)]
+                   for a, n in (("p", db), ("ib", 1), ("h", db * db)))
+    vs = [vel(gs[s], ps[s], ibs[s], hs[s], e) for s in range(K)]
+    H = sum((ca.mtimes(Phi[s], vs[s]) for s in range(K)), ca.SX(rows, 1))
+    want = [ca.jacobian(H, x) for x in (*gs, *ps)]
+    nu = ca.SX.sym("nu", rows)
+    got = new(*gs, i, nu, *vs, *ps, *ibs, *hs, e)[2 * K + K * K:]
+    x = [*gs, i, nu, *ps, *ibs, *hs, e]
+    f = ca.Function("f", x, [ca.densify(y) for y in (*got, *want)])
+    rng = np.random.default_rng(2)
+    vals = [rng.standard_normal(a.numel()) for a in x]
+    out = [np.array(y) for y in f(*vals)]
+    for a, b in zip(out[:2 * K], out[2 * K:]):
+        assert np.abs(b).max() > 0.1 and np.abs(a - b).max() <= 1e-14 * np.abs(b).max()
+
+
 def test_assembled_jacobian_does_not_grow_with_the_bodies():
     sizes = [functions(n, "stormer-verlet", "truncated")[0].n_instructions() for n in (3, 6)]
     assert sizes[0] == sizes[1]
