@@ -187,13 +187,13 @@ def _functions(model, tableau, tau: str, rkmk: str):
     # one body's step per class, derived once; its h input is the step vector of an open
     # model (hpgen.abi: [h, t_k, u, params])
     lay = open_layout(model)
-    H = 1 if lay is None else 2 + lay[0] + lay[1]
     gb, pb = ca.SX.sym("g", nb, nb), ca.SX.sym("p", db)
     ib = index_symbol(model)[0]
-    hb = ca.SX.sym("h") if lay is None else ca.SX.sym("h", H)
+    hb = ca.SX.sym("h", 1 if lay is None else 2 + lay[0] + lay[1])
     h_, _, _ = split_step_vector(model, hb)
     gbv = ca.vec(gb)
     fb = body_force_function(model, body)
+    fs = body_force_function(model, body, inline=True)
     jpower = joint_force_functions(model, body) if lay is not None else []
     # with forces between bodies (joint potentials' included, hpgen.derive.
     # family_potentials), a body's step takes its external stage forces fext
@@ -215,10 +215,10 @@ def _functions(model, tableau, tau: str, rkmk: str):
                                reduced, gb, pb, hb, None, force)
         else:
             P, u = hb[2 + lay[0]:], hb[2:2 + lay[0]]
-            force = None if fb is None else (
-                lambda G, X, tt: fb(ca.vec(G), X, ib, ca.vertcat(tt, u, P)))
+            force = None if fs is None else (
+                lambda G, X, tt: fs(ca.vec(G), X, ib, ca.vertcat(tt, u, P)))
             if jforces:      # a body force of zeros (joint forces only) is left out
-                own = fb if fb is not None and any(
+                own = fs if fs is not None and any(
                     e != 0 for e in model.family.local.force.exprs) else None
                 force = stage_force(own, fx, ib, u, P, db, comps)
             e = step_equations(body, lambda G, X, tt, f=lag_in: f(G, X, ib, ca.vertcat(tt, P)),
@@ -235,8 +235,8 @@ def _functions(model, tableau, tau: str, rkmk: str):
             nz=e.z.numel(), blocks=e.blocks,
             F=ca.Function(f"body{c}_residual", args, [e.residual], CALL),
             U=ca.Function(f"body{c}_update", args, [ca.vec(e.g1), e.p1], CALL),
-            # a splitting step's update before its Newton-Schulz step on g1 (UR) and that
-            # step (NS, of vec g1) for the mapped step (hpgen.derive.family_split); else None
+            # a splitting step's update before its Newton-Schulz step on g1 (UR), that step
+            # (NS, of vec g1), for the mapped step (hpgen.derive.family_split); else None
             UR=None if raw is None else ca.Function(
                 f"body{c}_update_raw", args, [ca.vec(raw), e.p1], CALL),
             NS=None if raw is None else ca.Function(

@@ -81,11 +81,17 @@ def with_env(args, e):
     return [*args, e] if e is not None else list(args)
 
 
-def body_force_function(model, body):
+def body_force_function(model, body, inline: bool = False):
     """Function(vec g, xi, i, e) -> the body's force (d) of a per-body ``forces:``, e = (t, u,
-    params) (Model.input_symbols', Model.runtime_symbols' orders); None without one."""
+    params) (Model.input_symbols', Model.runtime_symbols' orders); None without one. A call
+    node (hpgen.derive.family_calls), or with ``inline`` a plain SX Function, whose call on SX
+    arguments is its expression: a step's Jacobian then sees through the force instead of
+    calling its forward derivative once per direction."""
     out = body_force_expression(model, body)
-    return None if out is None else ca.Function("body_force", *out, CALL)
+    if out is None:
+        return None
+    return ca.Function("body_force_inline", *out) if inline else \
+        ca.Function("body_force", *out, CALL)
 
 
 def body_force_expression(model, body):

@@ -307,3 +307,36 @@ def test_linearize_of_the_damped_chain_module_against_differences(tmp_path):
         e[j] = eps
         fd = (out(mu=mu0 + e) - out(mu=mu0 - e)) / (2 * eps)
         assert np.abs(A[0][:, d + j] - fd).max() <= 1e-6 * scale
+
+
+@pytest.mark.parametrize("tab,rk", SCHEMES)
+def test_the_body_force_is_inlined_in_the_body_step(tab, rk):
+    """The per-body force (of w, v, R, t, u, c) enters the body step's residual and update as
+    its expression, not a call node (their Jacobians see through it), the record's force stays
+    a call, and the Newton matrix assembled from the blocks equals casadi.jacobian of the
+    mapped step of the damped chain (N = 3) at a random point."""
+    import casadi as ca
+    from hpgen.derive.family import _functions
+    from hpgen.derive.family_jacobian import assembled_jacobian
+    from hpgen.derive.family_map import mapped_step_parts
+    n = 3
+    m = load_model_text(DAMPED.replace("{N: 4,", "{N: %d," % n).replace(
+        '"-c*w[i][2]", "0"', '"-c*w[i][2]*(i + 1)", "-0.1*v[i][0]*R[i][2, 2]*sin(t)"'))
+    funcs = _functions(m, resolve_tableau(tab), "cay", rk)
+    body, st = funcs[0], next(iter(funcs[3].values()))
+    for f in (st["F"], st["U"]):
+        assert ca.OP_CALL not in {f.instruction_id(k) for k in range(f.n_instructions())}
+    assert st["force"].name() == "body_force"
+    nj = sum(len(j.rows) for j in m.family.local.joints)
+    G, P = ca.MX.sym("G", body.n * body.n, n), ca.MX.sym("P", body.d, n)
+    hv, z = ca.MX.sym("h", 4), ca.MX.sym("z", st["nz"] * n + 2 * nj)
+    eqs, parts = mapped_step_parts(m, funcs, G, P, hv, z, ca.MX.sym("xi", body.d * n))
+    fa = ca.Function("a", [z, G, P, hv], [assembled_jacobian(m, funcs, parts)])
+    fr = ca.Function("r", [z, G, P, hv], [ca.jacobian(eqs.residual, z)])
+    g, p, rng = state(n, 17)
+    Gv = g.reshape(4 * n, 4 * n, order="F")
+    Gv = np.stack([Gv[4 * k:4 * k + 4, 4 * k:4 * k + 4].ravel(order="F") for k in range(n)], 1)
+    args = [0.3 * rng.standard_normal(z.numel()), Gv, p.reshape(6, n, order="F"),
+            [0.01, 0.37, 0.8, 0.3]]
+    A, R = (np.array(ca.densify(f(*args))) for f in (fa, fr))
+    close(A, R, "J")
