@@ -216,7 +216,7 @@ def _assembly(model, funcs, parts, with_s: bool = False):
 
     def times_A(k, w):                # -(X_body A) at the lambda columns; A's rows per body
         t = block_products(*per_body(outs[k], sp[k], w, db), A,  # gathered once (cache)
-                           f"{st['F'].name()}_dA{k}", cache, scale=-1.0)
+                           f"{st['F'].name()}_dA{k}{sx}", cache, scale=-1.0)
         return t.shifted(0, zc)
 
     # the chain rule: block products (mapped SX) and sums of Entries (static gathers; the
@@ -232,19 +232,19 @@ def _assembly(model, funcs, parts, with_s: bool = False):
                      nzc, cache)
         tE = tuple(a + b for a, b in zip(tE, tS))
     dG1 = Sum([diag(2), times_A(3, nb2), *tE[1]], (nb2 * N, ncol))
-    tKg = [block_products(xs, ents, dG1, f"joint_kick_dg{q}", cache, scale=-1.0)
+    tKg = [block_products(xs, ents, dG1, f"joint_kick_dg{q}{sx}", cache, scale=-1.0)
            for q, (xs, ents) in enumerate(kg)]
     dP1 = Sum([diag(4), times_A(5, db), *tKg, *tB, *tE[2]], (db * N, ncol))
     if fold:                         # the joints' last blocks are Phi V_P: W = P1
         dW = dP1
     else:                            # W = V
         vg, vp = vj.map(N)(G1, P1, I, Hinv, *env)
-        dW = Sum([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, "vel_dg"),
-                  block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1, "vel_dp")],
+        dW = Sum([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, f"vel_dg{sx}"),
+                  block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1, f"vel_dp{sx}")],
                  (db * N, ncol))
 
     def joint_rows(plan, Y, what, row0, scale=None):
-        ts = [block_products(xs, ents, Y, f"joint_{what}{q}", cache, scale) for q, (xs, ents)
+        ts = [block_products(xs, ents, Y, f"joint_{what}{q}{sx}", cache, scale) for q, (xs, ents)
               in enumerate(plan)]
         return [t.shifted(row0, 0) for t in ts]
     dphi = joint_rows(pg, dG1, "phi", zc, h)
