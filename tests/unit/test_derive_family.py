@@ -158,6 +158,24 @@ def test_step_partials_are_assembled_blockwise():
     assert per_body[0] < 2 * per_body[1]
 
 
+def test_callees_of_one_name_are_one_function():
+    """The Python printer keys the callees by name (hpgen.codegen.pycallees): over all the
+    chain's kernels (J's and step_partials' block products read differently shaped
+    intermediates) every name is one function."""
+    from hpgen.codegen.pycallees import _callees, as_sx
+    s = derive(chain(3), resolve_tableau("stormer-verlet"), "cay", "truncated")
+    seen: dict = {}
+    stack = [as_sx(k).function for k in s.kernels]
+    while stack:
+        for fn in _callees(stack.pop()).values():
+            sx = fn.expand() if fn.is_a("MXFunction") else fn
+            text = sx.serialize()
+            if text not in seen.setdefault(fn.name(), set()):
+                seen[fn.name()].add(text)
+                stack.append(sx)
+    assert all(len(v) == 1 for v in seen.values()), [k for k, v in seen.items() if len(v) > 1]
+
+
 def run(step, P, g, p, h, steps):
     """``steps`` steps with CasADi's evaluation of ``step``'s kernels (Newton, dense solve)."""
     nz = step.nz
