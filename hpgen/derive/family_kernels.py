@@ -38,7 +38,8 @@ def mx_step_kernels(model, tableau, tau: str, rkmk: str) -> dict:
     callees' own Jacobians (``jac_penalty`` 0): the generated C has the per-body functions
     once and a few lines per call. Outputs keep their structural sparsity. On the mapped
     path J (jacobian, residual_jacobian) is assembled from per-body and per-joint blocks
-    (hpgen.derive.family_jacobian), O(N) work."""
+    (hpgen.derive.family_jacobian), O(N) work, and so is a closed model's step_partials
+    (hpgen.derive.family_partials)."""
     n, d = model.group.n, model.group.d
     body = group_from_spec(model.family.body)
     nb, N = body.n, model.family.count
