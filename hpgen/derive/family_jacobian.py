@@ -235,20 +235,24 @@ def _assembly(model, funcs, parts, with_s: bool = False):
     tKg = [block_products(xs, ents, dG1, f"joint_kick_dg{q}{sx}", cache, scale=-1.0)
            for q, (xs, ents) in enumerate(kg)]
     dP1 = Sum([diag(4), times_A(5, db), *tKg, *tB, *tE[2]], (db * N, ncol))
+    # with s, the rows of F in the columns s alone (Fs; their z columns are J's kernel's)
+    dG1r, dP1r = (dG1.columns_from(nzc), dP1.columns_from(nzc)) if with_s else (dG1, dP1)
     if fold:                         # the joints' last blocks are Phi V_P: W = P1
-        dW = dP1
+        dW = dP1r
     else:                            # W = V
         vg, vp = vj.map(N)(G1, P1, I, Hinv, *env)
-        dW = Sum([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, f"vel_dg{sx}"),
-                  block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1, f"vel_dp{sx}")],
-                 (db * N, ncol))
+        dW = Sum([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1r,
+                                 f"vel_dg{sx}"),
+                  block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1r,
+                                 f"vel_dp{sx}")], (db * N, ncol))
 
     def joint_rows(plan, Y, what, row0, scale=None):
         ts = [block_products(xs, ents, Y, f"joint_{what}{q}{sx}", cache, scale) for q, (xs, ents)
               in enumerate(plan)]
         return [t.shifted(row0, 0) for t in ts]
-    dphi = joint_rows(pg, dG1, "phi", zc, h)
-    J = assemble([diag(0), times_A(1, nzb), *tE[0], *dphi,
-                  *joint_rows(hg, dG1, "hg", zc + m), *joint_rows(hw, dW, "hv", zc + m)],
-                 (nzc, ncol))
+    dphi = joint_rows(pg, dG1r, "phi", zc, h)
+    body = ([t.columns_from(nzc) for t in tE[0]] if with_s
+            else [diag(0), times_A(1, nzb), *tE[0]])
+    J = assemble([*body, *dphi, *joint_rows(hg, dG1r, "hg", zc + m),
+                  *joint_rows(hw, dW, "hv", zc + m)], (nzc, ncol))
     return (J, *forward, dG1, dP1) if with_s else (J, *forward)
