@@ -127,8 +127,9 @@ def residual_and_jacobian(model, funcs, residual, parts) -> tuple:
     return F, J
 
 
-def _assembly(model, funcs, parts):
-    """(J, [F, G1, P1m] of parts, the same values from the blocks' calls)."""
+def _assembly(model, funcs, parts, with_s: bool = False):
+    """(J, [F, G1, P1m] of parts, the same values from the blocks' calls); ``with_s``: the
+    columns (z, eta, dp) (hpgen.derive.family_partials), and dG1, dP1 (Sums) after those."""
     body, _, _, _, jfun, _ = funcs
     joints = model.family.local.joints
     N, db, nb2 = model.family.count, body.d, body.n * body.n
@@ -137,16 +138,22 @@ def _assembly(model, funcs, parts):
     st = parts["step"]
     nzb = st["nz"]
     zc = nzb * N
-    bf = _jacobian_function(st["F"], [(0, 0), (0, 2)], f"{st['F'].name()}_blocks", (0,))
+    sx = "_s" if with_s else ""     # with s: the body step's blocks in g too (appended)
+    bf = _jacobian_function(st["F"], [(0, 0), (0, 2)] + [(0, 1)] * with_s,
+                            f"{st['F'].name()}_blocks{sx}", (0,))
     # a splitting step's G1 is its g1 before the Newton-Schulz step (hpgen.derive.family_split)
     bu = _jacobian_function(st["U"] if st.get("UR") is None else st["UR"],
-                            [(0, 0), (0, 2), (1, 0), (1, 2)], f"{st['U'].name()}_blocks", (0, 1))
+                            [(0, 0), (0, 2), (1, 0), (1, 2)] + [(0, 1), (1, 1)] * with_s,
+                            f"{st['U'].name()}_blocks{sx}", (0, 1))
     hv = parts["hv"]              # the step vector of an open model, else h
     ext = (parts["Fext"],) if "Fext" in parts else ()  # forces between bodies
     of, ou = bf.map(N)(Z, G, Q, hv, I, *ext), bu.map(N)(Z, G, Q, hv, I, *ext)
-    outs = [*of[:2], *ou[:4]]
-    forward = ([parts["F"], parts["G1"], parts["P1m"]], [of[2], ou[4], ou[5]])
-    sp = [bf.sparsity_out(0), bf.sparsity_out(1), *[bu.sparsity_out(k) for k in range(4)]]
+    nf, nu_ = 2 + with_s, 4 + 2 * with_s
+    outs = [*of[:nf], *ou[:nu_]]
+    forward = ([parts["F"], parts["G1"], parts["P1m"]], [of[nf], ou[nu_], ou[nu_ + 1]])
+    sp = [bf.sparsity_out(k) for k in range(nf)] + [bu.sparsity_out(k) for k in range(nu_)]
+    if with_s:                        # outs: F_Z, F_Q, g1_Z, g1_Q, P1m_Z, P1m_Q, F_g, g1_g, P1m_g
+        outs, sp = ([v[0], v[1], v[3], v[4], v[5], v[6], v[2], v[7], v[8]] for v in (outs, sp))
 
     def diag(k):
         # body t's block at (t a, t b): the map's nonzeros are already in the CCS order
@@ -168,6 +175,7 @@ def _assembly(model, funcs, parts):
         return [(M, sp)], [(brows(u, w_out), [brows(u, w_in)]) for u in range(N)]
 
     nzc = zc + 2 * m                                      # the columns of J
+    ncol = nzc + 2 * N * db if with_s else nzc
     tA, tB = [], []
     kg, pg, hg, hw = [], [], [], []     # (xs, entities) of the joints' products
     for key, js in parts["groups"]:
@@ -208,7 +216,7 @@ def _assembly(model, funcs, parts):
 
     def times_A(k, w):                # -(X_body A) at the lambda columns; A's rows per body
         t = block_products(*per_body(outs[k], sp[k], w, db), A,  # gathered once (cache)
-                           f"{st['F'].name()}_dA{k}", cache, scale=-1.0)
+                           f"{st['F'].name()}_dA{k}{sx}", cache, scale=-1.0)
         return t.shifted(0, zc)
 
     # the chain rule: block products (mapped SX) and sums of Entries (static gathers; the
@@ -218,24 +226,33 @@ def _assembly(model, funcs, parts):
     if ext:
         from .family_joint_forces import external_force_terms
         tE = external_force_terms(parts, N, nzc)
-    dG1 = Sum([diag(2), times_A(3, nb2), *tE[1]], (nb2 * N, nzc))
-    tKg = [block_products(xs, ents, dG1, f"joint_kick_dg{q}", cache, scale=-1.0)
+    if with_s:                         # the terms in the columns s (eta, dp)
+        from .family_partials import s_terms
+        tS = s_terms(model, funcs, parts, outs[6:], sp[6:], outs[1::2][:3], sp[1::2][:3],
+                     nzc, cache)
+        tE = tuple(a + b for a, b in zip(tE, tS))
+    dG1 = Sum([diag(2), times_A(3, nb2), *tE[1]], (nb2 * N, ncol))
+    tKg = [block_products(xs, ents, dG1, f"joint_kick_dg{q}{sx}", cache, scale=-1.0)
            for q, (xs, ents) in enumerate(kg)]
-    dP1 = Sum([diag(4), times_A(5, db), *tKg, *tB, *tE[2]], (db * N, nzc))
+    dP1 = Sum([diag(4), times_A(5, db), *tKg, *tB, *tE[2]], (db * N, ncol))
+    # with s, the rows of F in the columns s alone (Fs; their z columns are J's kernel's)
+    dG1r, dP1r = (dG1.columns_from(nzc), dP1.columns_from(nzc)) if with_s else (dG1, dP1)
     if fold:                         # the joints' last blocks are Phi V_P: W = P1
-        dW = dP1
+        dW = dP1r
     else:                            # W = V
         vg, vp = vj.map(N)(G1, P1, I, Hinv, *env)
-        dW = Sum([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1, "vel_dg"),
-                  block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1, "vel_dp")],
-                 (db * N, nzc))
+        dW = Sum([block_products(*per_body(vg, vj.sparsity_out(0), db, nb2), dG1r,
+                                 f"vel_dg{sx}"),
+                  block_products(*per_body(vp, vj.sparsity_out(1), db, db), dP1r,
+                                 f"vel_dp{sx}")], (db * N, ncol))
 
     def joint_rows(plan, Y, what, row0, scale=None):
-        ts = [block_products(xs, ents, Y, f"joint_{what}{q}", cache, scale) for q, (xs, ents)
+        ts = [block_products(xs, ents, Y, f"joint_{what}{q}{sx}", cache, scale) for q, (xs, ents)
               in enumerate(plan)]
         return [t.shifted(row0, 0) for t in ts]
-    dphi = joint_rows(pg, dG1, "phi", zc, h)
-    J = assemble([diag(0), times_A(1, nzb), *tE[0], *dphi,
-                  *joint_rows(hg, dG1, "hg", zc + m), *joint_rows(hw, dW, "hv", zc + m)],
-                 (nzc, nzc))
-    return (J, *forward)
+    dphi = joint_rows(pg, dG1r, "phi", zc, h)
+    body = ([t.columns_from(nzc) for t in tE[0]] if with_s
+            else [diag(0), times_A(1, nzb), *tE[0]])
+    J = assemble([*body, *dphi, *joint_rows(hg, dG1r, "hg", zc + m),
+                  *joint_rows(hw, dW, "hv", zc + m)], (nzc, ncol))
+    return (J, *forward, dG1, dP1) if with_s else (J, *forward)

@@ -38,7 +38,8 @@ def mx_step_kernels(model, tableau, tau: str, rkmk: str) -> dict:
     callees' own Jacobians (``jac_penalty`` 0): the generated C has the per-body functions
     once and a few lines per call. Outputs keep their structural sparsity. On the mapped
     path J (jacobian, residual_jacobian) is assembled from per-body and per-joint blocks
-    (hpgen.derive.family_jacobian), O(N) work."""
+    (hpgen.derive.family_jacobian), O(N) work, and so is a closed model's step_partials
+    (hpgen.derive.family_partials)."""
     n, d = model.group.n, model.group.d
     body = group_from_spec(model.family.body)
     nb, N = body.n, model.family.count
@@ -114,14 +115,18 @@ def _mapped_kernels(model, tableau, tau, rkmk, gv, p, h) -> dict | None:
     chart_fn, perturb, chart_of = _body_maps(body, tau)
     theta = ca.MX.sym("theta")
     gth = mapped(chart_fn, N)(G, ca.reshape(eqs.chart_step, db, N), theta)
-    eta, dp = ca.MX.sym("eta", d), ca.MX.sym("dp", d)
-    G_s = mapped(perturb, N)(G, ca.reshape(eta, db, N))
-    pert = mapped_step(model, funcs, G_s, P + ca.reshape(dp, db, N), h, z, xi_hat)
-    G1ref = ca.MX.sym("g1ref", nb * nb, N)
-    Y = ca.vertcat(ca.vec(mapped(chart_of, N)(G1ref, pert.g1)), pert.p1)
-    s = ca.vertcat(eta, dp)
-    parts = _partials(pert.residual, Y, z, s, h, model.open_system)
-    parts = ca.substitute(parts, [s, G1ref], [ca.MX.zeros(2 * d), eqs.g1])
+    if model.open_system:            # the partials in the step vector too: casadi.jacobian
+        eta, dp = ca.MX.sym("eta", d), ca.MX.sym("dp", d)
+        G_s = mapped(perturb, N)(G, ca.reshape(eta, db, N))
+        pert = mapped_step(model, funcs, G_s, P + ca.reshape(dp, db, N), h, z, xi_hat)
+        G1ref = ca.MX.sym("g1ref", nb * nb, N)
+        Y = ca.vertcat(ca.vec(mapped(chart_of, N)(G1ref, pert.g1)), pert.p1)
+        s = ca.vertcat(eta, dp)
+        parts = _partials(pert.residual, Y, z, s, h, True)
+        parts = ca.substitute(parts, [s, G1ref], [ca.MX.zeros(2 * d), eqs.g1])
+    else:                            # blockwise, like J (hpgen.derive.family_partials)
+        from .family_partials import assembled_partials
+        parts = assembled_partials(model, funcs, out[1])
     return _step_kernels(eqs, z, gv, p, h, xi_hat, theta, J, cast(eqs.g1), cast(gth),
                          [col(e) for e in parts], F)
 

@@ -50,6 +50,14 @@ class Entries:
         out._values = self._values
         return out
 
+    def columns_from(self, c0: int) -> Entries:
+        """The entries in the columns c0, c0 + 1, ... (the same positions and values)."""
+        keep = self.cols >= c0
+        if keep.all():
+            return self
+        return Entries(self.base, self.rows[keep], self.cols[keep], self.index[keep],
+                       self.zero)
+
     @classmethod
     def of(cls, M, row0: int = 0, col0: int = 0, scale: float = 1.0):
         """The structural nonzeros of the sparse MX M, shifted by (row0, col0), times scale
@@ -121,6 +129,10 @@ class Sum:
         # a zero some source already holds (a product's), else one appended for the padding
         self._zero = next((int(offset[id(t.base)] + t.zero) for t in terms
                            if t.zero is not None), None)
+
+    def columns_from(self, c0: int) -> Sum:
+        """The sum's entries in the columns c0, c0 + 1, ... (the same shape)."""
+        return Sum([t.columns_from(c0) for t in self.terms], self.shape)
 
     def sparsity(self):
         return self._sp
