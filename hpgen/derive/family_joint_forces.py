@@ -236,9 +236,8 @@ def external_force_terms(parts, N: int, nzc: int):
     rows, to dg1/dz and to dP1/dz (hpgen.derive.family_jacobian), each a block product of
     the body step's d(.)/dfext with dFext/dz."""
     from .family_jacobian import _jacobian_function
-    from .sparse_blocks import Entries, assemble, block_products
+    from .sparse_blocks import Entries, assemble
     st, Fext, hv = parts["step"], parts["Fext"], parts["hv"]
-    Z, G, Q, I = (parts[k] for k in ("Z", "G", "Q", "I"))
     nzb, w = st["nz"], Fext.size1()
     terms = []
     for fn, cols, args, Ij in parts["external"]:
@@ -251,17 +250,27 @@ def external_force_terms(parts, N: int, nzc: int):
             places = [(a * w, b * nzb) for a, b in zip(cols[s], cols[t2 // 2])]
             terms.append(Entries.blocks(out[k], jf.sparsity_out(k), places))
     D = assemble(terms, (w * N, nzc))
-    ins = (Z, G, Q, hv, I, Fext)
-    bf = _jacobian_function(st["F"], [(0, 5)], f"{st['F'].name()}_fext_blocks")
-    bu = _jacobian_function(st["U"], [(0, 5), (1, 5)], f"{st['U'].name()}_fext_blocks")
+    return tuple([t] for t in body_fext_products(parts, N, D, "fext", "body_fext_d"))
+
+
+def body_fext_products(parts, N: int, D, tag: str, name: str, cache=None) -> list:
+    """[F term, dg1 term, dP1m term]: the body step's d(F, g1, P1m)/dfext (SX Jacobian
+    blocks named <step>_<tag>_blocks, mapped over the bodies) times D = dFext/d(columns),
+    one block product each, named name + 0, 1, 2."""
+    from .family_jacobian import _jacobian_function
+    from .sparse_blocks import block_products
+    st, Fext, w = parts["step"], parts["Fext"], parts["Fext"].size1()
+    ins = (parts["Z"], parts["G"], parts["Q"], parts["hv"], parts["I"], Fext)
+    bf = _jacobian_function(st["F"], [(0, 5)], f"{st['F'].name()}_{tag}_blocks")
+    bu = _jacobian_function(st["U"], [(0, 5), (1, 5)], f"{st['U'].name()}_{tag}_blocks")
     outs = [bf.map(N)(*ins), *bu.map(N)(*ins)]
     sps = [bf.sparsity_out(0), *[bu.sparsity_out(k) for k in range(2)]]
     res = []
     for q, (M, sp) in enumerate(zip(outs, sps)):
         a = sp.size1()
         ents = [(range(u * a, (u + 1) * a), [range(u * w, (u + 1) * w)]) for u in range(N)]
-        res.append([block_products([(M, sp)], ents, D, f"body_fext_d{q}")])
-    return tuple(res)
+        res.append(block_products([(M, sp)], ents, D, f"{name}{q}", cache))
+    return res
 
 
 def mapped_joint_power(jforces, G, X, ef):

@@ -26,6 +26,7 @@ import casadi as ca
 import numpy as np
 
 from .family_calls import CALL
+from .family_joint_forces import body_fext_products
 from .sparse_blocks import Entries, Sum, assemble, block_products
 
 
@@ -99,7 +100,7 @@ def _external_s_terms(parts, N: int, dG, ncol: int, cache: dict) -> list:
     """The joint forces' terms (F, dg1, dP1m) in s: the body step's d(.)/dfext times
     dFext/dg dG/ds (hpgen.derive.family_joint_forces' stage forces, slot inputs (Z_t, G_t))."""
     from .family_jacobian import _jacobian_function
-    st, Fext, hv = parts["step"], parts["Fext"], parts["hv"]
+    Fext, hv = parts["Fext"], parts["hv"]
     w, nb2 = Fext.size1(), parts["G"].size1()
     terms = []
     for q, (fn, cols, args, Ij) in enumerate(parts["external"]):
@@ -114,17 +115,7 @@ def _external_s_terms(parts, N: int, dG, ncol: int, cache: dict) -> list:
                     for e in range(len(cols[0]))]
             terms.append(block_products(xs, ents, dG, f"joint_force_dg{q}_{s}", cache))
     D = Sum(terms, (w * N, ncol))
-    ins = (parts["Z"], parts["G"], parts["Q"], hv, parts["I"], Fext)
-    bf = _jacobian_function(st["F"], [(0, 5)], f"{st['F'].name()}_fext_s_blocks")
-    bu = _jacobian_function(st["U"], [(0, 5), (1, 5)], f"{st['U'].name()}_fext_s_blocks")
-    outs = [bf.map(N)(*ins), *bu.map(N)(*ins)]
-    sps = [bf.sparsity_out(0), *[bu.sparsity_out(k) for k in range(2)]]
-    res = []
-    for k, (M, sp) in enumerate(zip(outs, sps)):
-        a = sp.size1()
-        ents = [(_brows(u, a), [_brows(u, w)]) for u in range(N)]
-        res.append(block_products([(M, sp)], ents, D, f"body_fext_ds{k}", cache))
-    return res
+    return body_fext_products(parts, N, D, "fext_s", "body_fext_ds", cache)
 
 
 def _chart_jacobian(body, st):
